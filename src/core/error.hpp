@@ -1,0 +1,80 @@
+#pragma once
+/// Error types and checking macros.
+///
+/// - `InputError`: bad input (case file, mesh file, command line). Carries the place (file, line,
+///   column, key path) and the rule broken; the command line turns it into exit status 2.
+/// - `SolverError`: the numerical solution failed (exit status 1, last converged state kept).
+/// - `Error`: anything else (a bug or an environment failure).
+/// - `FE_CHECK(cond, msg)`: always on, for admissibility of input and files; throws `Error`.
+/// - `FE_ASSERT(cond)`: debug builds only, for internal invariants.
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace plisse {
+
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Where in the user's input something is. Line and column are 1-based; 0 means unknown.
+struct InputPlace {
+  std::string file;  ///< file name as given by the user, or "--set" / "command line"
+  int line = 0;
+  int column = 0;
+  std::string key;  ///< dotted key path, e.g. "material.c1" or "boundary[2].surface"
+};
+
+class InputError : public Error {
+ public:
+  InputError(InputPlace place, std::string rule)
+      : Error(format(place, rule)), place_(std::move(place)), rule_(std::move(rule)) {}
+  const InputPlace& place() const { return place_; }
+  const std::string& rule() const { return rule_; }
+
+  /// "file:line:column: key 'a.b': rule" with the parts that are known.
+  static std::string format(const InputPlace& place, const std::string& rule) {
+    std::ostringstream out;
+    if (!place.file.empty()) {
+      out << place.file;
+      if (place.line > 0) out << ':' << place.line;
+      if (place.line > 0 && place.column > 0) out << ':' << place.column;
+      out << ": ";
+    }
+    if (!place.key.empty()) out << "key '" << place.key << "': ";
+    out << rule;
+    return out.str();
+  }
+
+ private:
+  InputPlace place_;
+  std::string rule_;
+};
+
+class SolverError : public Error {
+ public:
+  using Error::Error;
+};
+
+}  // namespace plisse
+
+#define FE_CHECK(cond, msg)                                                                   \
+  do {                                                                                        \
+    if (!(cond)) {                                                                            \
+      std::ostringstream fe_check_stream_;                                                    \
+      fe_check_stream_ << msg;                                                                \
+      throw ::plisse::Error(fe_check_stream_.str());                                          \
+    }                                                                                         \
+  } while (false)
+
+#ifdef NDEBUG
+#define FE_ASSERT(cond) ((void)0)
+#else
+#define FE_ASSERT(cond)                                                                       \
+  do {                                                                                        \
+    if (!(cond))                                                                              \
+      throw ::plisse::Error(std::string("internal error: assertion failed: ") + #cond + " at " + \
+                            __FILE__ + ":" + std::to_string(__LINE__));                       \
+  } while (false)
+#endif

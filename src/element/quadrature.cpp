@@ -1,0 +1,1 @@
+// quadrature rules: filled in by the element work

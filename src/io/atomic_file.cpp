@@ -1,0 +1,1 @@
+// atomic file writing: filled in by the output work

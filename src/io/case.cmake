@@ -1,0 +1,1 @@
+set(PLISSE_IO_CASE_SOURCES case.cpp)

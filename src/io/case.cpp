@@ -1,0 +1,1 @@
+// case file parser: filled in by the case-file work

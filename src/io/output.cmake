@@ -1,0 +1,1 @@
+set(PLISSE_IO_OUTPUT_SOURCES atomic_file.cpp)

@@ -1,0 +1,1 @@
+// material registry: filled in by the materials work

@@ -1,0 +1,73 @@
+#pragma once
+/// Generated meshes (through the Gmsh API): cube, spherical shell, airbag, sheet.
+///
+/// The options of each kind are declared once in `mesh_kinds()` (key, unit, range, help, default);
+/// the case-file parser (`mesh:` section) and `plisse mesh KIND --key value` both read that table,
+/// so input keys, command-line options and documentation cannot disagree.
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/parameter.hpp"
+#include "mesh/mesh.hpp"
+
+namespace plisse {
+
+/// Which part of a symmetric body is meshed. The kept part is x >= 0 (sym_x), z >= 0 (sym_z) and
+/// y >= 0 (sym_y): half keeps z >= 0, quarter keeps x >= 0 and z >= 0, octant keeps all three.
+/// y is the polar axis of shells (the paper's die moves along -y).
+enum class Symmetry { full, half, quarter, octant };
+
+/// All generator inputs. Which members a kind uses is declared in `mesh_kinds()`.
+struct MeshGenerationSpec {
+  std::string kind;  ///< "cube" | "spherical-shell" | "airbag" | "sheet"
+  // cube: [0, edge]^3
+  double edge = 5.0;   ///< [mm]
+  int divisions = 4;   ///< element divisions per edge
+  // spherical-shell: inner radius, wall thickness
+  double inner_radius = 10.0;  ///< [mm]
+  // airbag: oblate closed shell, equatorial radius and total height of the mid-surface
+  double radius = 50.0;  ///< [mm]
+  double height = 20.0;  ///< [mm]
+  // sheet: [0, length] x [0, width] x [0, thickness]
+  double length = 50.0;  ///< [mm]
+  double width = 50.0;   ///< [mm]
+  // shared by shell, airbag, sheet
+  double thickness = 1.0;     ///< wall/sheet thickness [mm]
+  int layers = 3;             ///< tetrahedra through the thickness (exactly)
+  double element_size = 1.0;  ///< target in-surface element size [mm]
+  Symmetry symmetry = Symmetry::full;  ///< shell and airbag only
+};
+
+/// One declared generator option. Exactly one of the three member pointers is set.
+struct MeshOption {
+  std::string key;   ///< input key (snake_case); on the command line with dashes
+  std::string unit;  ///< "mm", "-"
+  std::string help;
+  double MeshGenerationSpec::*real = nullptr;
+  int MeshGenerationSpec::*integer = nullptr;
+  Symmetry MeshGenerationSpec::*symmetry = nullptr;
+  Range range = Range::any();  ///< for real and integer options
+};
+
+struct MeshKind {
+  std::string name;  ///< as in `generate: NAME` and `plisse mesh NAME`
+  std::string help;  ///< one line: geometry and tags
+  std::vector<MeshOption> options;
+};
+
+/// The declared kinds and their options (the only registry of generator names and keys).
+const std::vector<MeshKind>& mesh_kinds();
+/// The kind called `name`, or nullptr.
+const MeshKind* find_mesh_kind(const std::string& name);
+/// "full" | "half" | "quarter" | "octant" -> Symmetry; nullopt for anything else.
+std::optional<Symmetry> parse_symmetry(const std::string& text);
+std::string to_string(Symmetry s);
+
+/// Generates the mesh described by `spec`. Precondition: the values satisfy the declared ranges
+/// (callers validate input against `mesh_kinds()` and report InputError); cross-option rules
+/// (e.g. thickness < inner_radius) are checked here and reported as InputError with the key.
+Mesh generate_mesh(const MeshGenerationSpec& spec);
+
+}  // namespace plisse

@@ -1,0 +1,1 @@
+#include "mesh/gmsh_io.hpp"

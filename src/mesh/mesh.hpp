@@ -1,0 +1,35 @@
+#pragma once
+/// Tetrahedral mesh with named boundary tags.
+///
+/// Linear tetrahedra (4 corner nodes) with optional second-order edge nodes (Gmsh's 10-node
+/// tetrahedron). Boundary triangles carry named tags (Gmsh physical groups of dimension 2);
+/// tetrahedra may carry named volume tags (physical groups of dimension 3).
+/// Node numbering is 0-based and contiguous. Coordinates are in mm.
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace plisse {
+
+struct Mesh {
+  std::vector<Vec3d> nodes;                  ///< reference coordinates [mm]
+  std::vector<std::array<int, 4>> tets;      ///< corner nodes, positively oriented (det > 0)
+  std::vector<std::array<int, 6>> tet_edge_nodes;  ///< second order only: Gmsh edge order
+                                                   ///< (01, 12, 20, 30, 32, 31); else empty
+  std::vector<std::array<int, 3>> triangles;       ///< boundary triangles (corner nodes)
+  std::vector<std::array<int, 3>> triangle_edge_nodes;  ///< second order only: (01, 12, 20)
+  /// Surface tags: name -> indices into `triangles`. A triangle may be in several tags.
+  std::map<std::string, std::vector<int>> surface_tags;
+  /// Volume tags: name -> indices into `tets`.
+  std::map<std::string, std::vector<int>> volume_tags;
+
+  int n_nodes() const { return static_cast<int>(nodes.size()); }
+  int n_tets() const { return static_cast<int>(tets.size()); }
+  int order() const { return tet_edge_nodes.empty() ? 1 : 2; }
+  bool has_surface(const std::string& name) const { return surface_tags.count(name) != 0; }
+};
+
+}  // namespace plisse
