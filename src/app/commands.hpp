@@ -8,5 +8,6 @@ namespace plisse::app {
 void add_run_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_mesh_command(CLI::App& app);
+void add_materials_command(CLI::App& app);
 
 }  // namespace plisse::app

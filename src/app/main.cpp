@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   plisse::app::add_run_command(app);
   plisse::app::add_check_command(app);
   plisse::app::add_mesh_command(app);
+  plisse::app::add_materials_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
