@@ -1,0 +1,211 @@
+#pragma once
+/// A plisse case: the typed, validated contents of a case file (YAML).
+///
+/// Keys of the file are the member names below (STYLE.md section 2). Every value that refers to
+/// the user's input keeps its InputPlace, so later checks (tags against the mesh, material rules)
+/// can name the file, line, column and key. The parser (`parse_case_file`) fills and validates
+/// everything that can be checked without the mesh; `check_case_against_mesh` does the rest.
+///
+/// Units: mm, MPa, s, tonne/mm^3 (so accelerations are mm/s^2, forces N).
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/types.hpp"
+#include "mesh/generate.hpp"
+#include "mesh/mesh.hpp"
+
+namespace plisse {
+
+/// A reference to a tagged surface of the mesh, with where it was named.
+struct SurfaceRef {
+  std::string name;
+  InputPlace place;
+};
+
+/// Linear time ramp: factor 0 for t <= start, 1 for t >= end, linear between (end > start >= 0).
+/// A load "held constant" after its ramp keeps factor 1.
+struct Ramp {
+  double start = 0.0;  ///< [s]
+  double end = 1.0;    ///< [s]; default: the case's solver.end_time
+  double factor(double t) const {
+    if (t <= start) return 0.0;
+    if (t >= end) return 1.0;
+    return (t - start) / (end - start);
+  }
+};
+
+struct MeshSection {
+  std::optional<std::string> file;            ///< `file:` resolved against the case directory
+  std::optional<MeshGenerationSpec> generate;  ///< `generate: KIND` plus the kind's options
+  InputPlace place;                            ///< where `mesh:` is
+};
+
+struct MaterialSection {
+  std::string model;                     ///< registry name, e.g. "neo-hookean"
+  std::map<std::string, double> params;  ///< validated against the material registry
+  std::map<std::string, InputPlace> param_places;
+  bool exact_incompressibility = true;   ///< `incompressibility: exact | nearly`
+  double bulk_modulus = 0.0;             ///< [MPa], > 0, required when nearly incompressible
+  double density = 0.0;                  ///< [tonne/mm^3], >= 0 (gravity loads)
+  InputPlace place;
+};
+
+enum class BoundaryType { fixed, symmetry, displacement };
+
+/// Dirichlet condition on the nodes of a tagged surface.
+struct BoundaryCondition {
+  BoundaryType type = BoundaryType::fixed;
+  std::string name;  ///< optional, unique; the reaction force on the surface is reported in the
+                     ///< history as `force_x:<name>`, `force_y:<name>`, `force_z:<name>`
+  SurfaceRef surface;
+  /// `displacement` only: prescribed components [mm] at the end of the ramp; an empty optional
+  /// (`~`/null in YAML) leaves that component free.
+  std::array<std::optional<double>, 3> value{};
+  Ramp ramp;
+  InputPlace place;
+};
+
+enum class LoadType { pressure, gravity };
+
+struct Load {
+  LoadType type = LoadType::pressure;
+  std::string name;     ///< unique; history column `pressure:<name>`
+  SurfaceRef surface;   ///< pressure only
+  double value = 0.0;   ///< pressure [MPa], positive pushes against the body's outward normal
+  Vec3d acceleration = Vec3d::Zero();  ///< gravity only [mm/s^2], e.g. [0, -9810, 0]
+  Ramp ramp;
+  InputPlace place;
+};
+
+enum class CavityControl { volume, gas };
+
+/// A closed (or closed by symmetry planes) surface enclosing a fluid region.
+struct Cavity {
+  std::string name;  ///< history columns `volume:<name>`, `pressure:<name>`
+  SurfaceRef surface;
+  CavityControl control = CavityControl::volume;
+  double volume_ratio = 1.0;      ///< volume: V(end of ramp) / V0, > 0
+  double initial_pressure = 0.0;  ///< gas: gauge pressure at t = 0 [MPa], >= 0
+  double mass_ratio = 1.0;        ///< gas: gas mass at end of ramp / initial mass, > 0
+  double ambient_pressure = 0.1;  ///< gas: absolute ambient pressure [MPa], > 0
+  Ramp ramp;
+  InputPlace place;
+};
+
+enum class DieShape { plane, sphere, cylinder };
+enum class ContactKind { frictionless, sticking };
+
+/// A rigid analytic die with prescribed motion.
+struct Die {
+  std::string name;  ///< history columns `force_x:<name>` ...
+  DieShape shape = DieShape::plane;
+  Vec3d point = Vec3d::Zero();   ///< plane: a point; sphere/cylinder: centre / a point on the axis
+  Vec3d normal = Vec3d::UnitY();  ///< plane: unit normal pointing towards the body (normalised)
+  Vec3d axis = Vec3d::UnitZ();    ///< cylinder: axis direction (normalised)
+  double radius = 0.0;            ///< sphere, cylinder [mm], > 0
+  ContactKind contact = ContactKind::frictionless;
+  std::optional<SurfaceRef> region;  ///< sticking: glued from the start on this tag
+  std::optional<SurfaceRef> surface;  ///< candidate contact surface (default: whole boundary)
+  Vec3d displacement = Vec3d::Zero();  ///< `move.displacement` [mm] at the end of the ramp
+  Ramp ramp;                           ///< `move.ramp`
+  double penalty = 0.0;    ///< [MPa/mm]; 0: chosen from the material and mesh
+  double tolerance = 1e-3;  ///< allowed penetration [mm], > 0
+  InputPlace place;
+};
+
+/// A named point reported as ux/uy/uz columns (nearest node).
+struct Probe {
+  std::string name;
+  Vec3d point = Vec3d::Zero();
+  InputPlace place;
+};
+
+enum class Scheme { total_lagrangian, incremental };
+enum class LineSearch { bt, basic, l2, cp };
+
+struct NewtonSettings {
+  double rtol = 1e-8;        ///< relative residual tolerance, in (0, 1)
+  double atol = 1e-10;       ///< absolute residual tolerance [N], >= 0
+  int max_iterations = 25;   ///< >= 1
+  LineSearch line_search = LineSearch::bt;
+};
+
+struct StabilitySettings {
+  bool check = false;          ///< inertia of the tangent at every converged step
+  bool branch_switch = false;  ///< perturb along the critical mode when stability is lost
+  int modes = 4;               ///< eigenmodes computed at an instability, >= 1
+  double imperfection = 0.0;   ///< amplitude / wall thickness, >= 0
+  std::string imperfection_kind = "random";  ///< random | mode
+  int seed = 1;                ///< random imperfection seed
+};
+
+struct SolverSettings {
+  Scheme scheme = Scheme::total_lagrangian;
+  double end_time = 1.0;       ///< [s], > 0
+  int steps = 10;              ///< initial number of steps (initial step = end_time/steps), >= 1
+  int max_steps = 10000;       ///< >= 1
+  double min_step = 1e-8;      ///< smallest step as a fraction of end_time, in (0, 1]
+  double max_step = 1.0;       ///< largest step as a fraction of end_time, in (0, 1]
+  double growth = 1.5;         ///< step growth after easy steps, >= 1
+  double cutback = 0.5;        ///< step reduction after a failure, in (0, 1)
+  int easy_iterations = 4;     ///< a step is easy when Newton takes at most this many iterations
+  double viscosity = 0.0;      ///< viscous stabilisation [MPa s], >= 0
+  NewtonSettings newton;
+  StabilitySettings stability;
+  std::string petsc_options;   ///< extra PETSc options, e.g. "-ksp_type preonly -pc_type lu"
+};
+
+struct WrinkleSettings {
+  char axis = 'y';                    ///< 'x' | 'y' | 'z'
+  std::vector<double> rings_deg;      ///< latitudes [deg] in [-90, 90]
+  double threshold = 0.1;             ///< wrinkled when amplitude > threshold * thickness, > 0
+  bool enabled() const { return !rings_deg.empty(); }
+};
+
+struct OutputSettings {
+  int every = 1;                 ///< VTU every N converged steps (the last one always), >= 1
+  bool deformed = false;         ///< write deformed coordinates instead of reference ones
+  /// Optional 'x' | 'y' | 'z': adds a history column `stretch` = volume average of F along that
+  /// axis (the columns `cauchy_xx` ... `cauchy_xz`, deformed-volume averages, are always there).
+  std::optional<char> stretch_axis;
+  WrinkleSettings wrinkles;
+};
+
+struct Case {
+  std::string path;       ///< the case file as given
+  std::string directory;  ///< its directory (relative paths in the case resolve against it)
+  std::string title;      ///< optional one-line description
+  MeshSection mesh;
+  MaterialSection material;
+  std::vector<BoundaryCondition> boundary;
+  std::vector<Load> loads;
+  std::vector<Cavity> cavities;
+  std::vector<Die> dies;
+  std::vector<Probe> probes;
+  SolverSettings solver;
+  OutputSettings output;
+};
+
+/// Parses and validates `path`. `overrides` are "key.path=value" strings from `--set`
+/// (e.g. "mesh.layers=4", "loads[0].value=1e-3", "dies[0].move.displacement=[0,-5,0]"): each
+/// replaces or adds the value at that path before validation; the value is read as YAML.
+/// Throws InputError naming file, line, column, key path and the rule broken.
+Case parse_case_file(const std::string& path, const std::vector<std::string>& overrides = {});
+
+/// Same, from text (tests); `name` stands for the file name in messages.
+Case parse_case_string(const std::string& text, const std::string& name,
+                       const std::vector<std::string>& overrides = {});
+
+/// Reads or generates the case's mesh (InputError on failure, naming the case's mesh key).
+Mesh load_case_mesh(const Case& c);
+
+/// Checks everything that needs the mesh: every SurfaceRef names an existing, non-empty surface
+/// tag; symmetry surfaces are planar; the mesh passes check_mesh. Throws InputError at the place of
+/// the offending key.
+void check_case_against_mesh(const Case& c, const Mesh& mesh);
+
+}  // namespace plisse
