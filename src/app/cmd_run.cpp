@@ -1,18 +1,24 @@
-#include <iostream>
-#include <string>
+#include <memory>
 
 #include "app/commands.hpp"
-#include "core/error.hpp"
+#include "app/run_case.hpp"
 
 namespace plisse::app {
 
 void add_run_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("run", "Run a case: solve and write the run directory");
-  auto case_file = std::make_shared<std::string>();
-  cmd->add_option("case", *case_file, "Case file (YAML)")->required();
-  cmd->callback([case_file] {
-    throw SolverError("plisse run: the solver is not available yet in this build");
-  });
+  auto options = std::make_shared<RunOptions>();
+  cmd->add_option("case", options->case_file, "Case file (YAML)")->required();
+  cmd->add_option("-o,--output", options->output_directory,
+                  "Run directory (default: runs/<case file name without .yaml>)");
+  cmd->add_option("--set", options->overrides,
+                  "Override a case value, e.g. --set mesh.layers=4 (repeatable)")
+      ->take_all()
+      ->allow_extra_args(false);
+  cmd->add_option("--petsc", options->petsc_options,
+                  "PETSc options, e.g. --petsc \"-snes_monitor -ksp_view\" (repeatable)")
+      ->allow_extra_args(false);
+  cmd->callback([options] { run_case(*options); });
 }
 
 }  // namespace plisse::app

@@ -1,0 +1,259 @@
+#include "app/run_case.hpp"
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "core/error.hpp"
+#include "io/case.hpp"
+#include "io/history_writer.hpp"
+#include "io/json_file.hpp"
+#include "io/pvd_writer.hpp"
+#include "io/run_directory.hpp"
+#include "io/run_log.hpp"
+#include "io/vtu_writer.hpp"
+#include "material/registry.hpp"
+#include "physics/dirichlet.hpp"
+#include "solver/load_stepper.hpp"
+#include "solver/petsc_session.hpp"
+
+namespace plisse::app {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// Peak resident memory of this process [MiB].
+double peak_memory_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;  // Linux reports KiB
+}
+
+int nearest_node(const Mesh& mesh, const Vec3d& point) {
+  int best = 0;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (int v = 0; v < mesh.n_nodes(); ++v)
+    if (const double d = (mesh.nodes[v] - point).squaredNorm(); d < best_distance) {
+      best_distance = d;
+      best = v;
+    }
+  return best;
+}
+
+/// The history columns beyond the standard ones, and how to fill them.
+struct HistoryColumns {
+  std::vector<std::string> names;
+  std::vector<const BoundaryCondition*> reaction_conditions;
+  std::vector<int> probe_nodes;
+};
+
+HistoryColumns history_columns(const Case& c, const Mesh& mesh) {
+  HistoryColumns h;
+  if (c.output.stretch_axis) h.names.push_back("stretch");
+  for (const char* s : {"stretch_x", "stretch_y", "stretch_z"}) h.names.push_back(s);
+  for (const char* s : {"cauchy_xx", "cauchy_yy", "cauchy_zz", "cauchy_xy", "cauchy_yz", "cauchy_xz"})
+    h.names.push_back(s);
+  for (const auto& bc : c.boundary) {
+    if (bc.name.empty()) continue;
+    h.reaction_conditions.push_back(&bc);
+    for (const char* axis : {"x", "y", "z"}) h.names.push_back(std::string("force_") + axis + ":" + bc.name);
+  }
+  for (const auto& probe : c.probes) {
+    h.probe_nodes.push_back(nearest_node(mesh, probe.point));
+    for (const char* axis : {"x", "y", "z"}) h.names.push_back(std::string("u") + axis + ":" + probe.name);
+  }
+  h.names.push_back("volume");
+  h.names.push_back("min_J");
+  return h;
+}
+
+/// Point and cell fields of the contract for one converged state.
+void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model,
+                    const std::vector<double>& previous_state, double dt) {
+  const Mesh& mesh = model.mesh();
+  const int n = mesh.n_nodes();
+  const auto& x = model.state();
+  VtuField displacement{"displacement", 3, std::vector<double>(3 * n)};
+  VtuField velocity{"velocity", 3, std::vector<double>(3 * n)};
+  VtuField pressure{"pressure", 1, std::vector<double>(n)};
+  std::vector<Vec3d> points(mesh.nodes);
+  for (int v = 0; v < n; ++v) {
+    for (int k = 0; k < 3; ++k) {
+      const double u = x[DofMap::dof(v, k)];
+      displacement.values[3 * v + k] = u;
+      velocity.values[3 * v + k] = dt > 0 ? (u - previous_state[DofMap::dof(v, k)]) / dt : 0.0;
+      if (c.output.deformed) points[v][k] += u;
+    }
+    pressure.values[v] = x[DofMap::dof(v, 3)];
+  }
+  const auto fields = model.element_fields();
+  const int n_cells = mesh.n_tets();
+  VtuField cauchy{"cauchy_stress", 6, std::vector<double>(6 * n_cells)};
+  VtuField von_mises{"von_mises", 1, std::vector<double>(n_cells)};
+  VtuField jacobian{"J", 1, std::vector<double>(n_cells)};
+  for (int e = 0; e < n_cells; ++e) {
+    const Mat3d& s = fields[e].cauchy;
+    const double vtk_order[6] = {s(0, 0), s(1, 1), s(2, 2), s(0, 1), s(1, 2), s(0, 2)};
+    std::copy(vtk_order, vtk_order + 6, cauchy.values.begin() + 6 * e);
+    von_mises.values[e] = fields[e].von_mises;
+    jacobian.values[e] = fields[e].J;
+  }
+  write_vtu(file, mesh, points, {displacement, velocity, pressure}, {cauchy, von_mises, jacobian});
+}
+
+}  // namespace
+
+void run_case(const RunOptions& options) {
+  const auto t_start = Clock::now();
+  const Case c = parse_case_file(options.case_file, options.overrides);
+  const fs::path out_dir = options.output_directory.empty()
+                               ? fs::path("runs") / fs::path(options.case_file).stem()
+                               : fs::path(options.output_directory);
+
+  auto t0 = Clock::now();
+  const Mesh mesh = load_case_mesh(c);
+  check_case_against_mesh(c, mesh);
+  const double time_mesh = seconds_since(t0);
+
+  // Everything that can be rejected is checked before the run directory is touched.
+  std::map<std::string, double> params = c.material.params;
+  AnyMaterial material = make_material(c.material.model, params);
+  const std::vector<ConstrainedComponent> constraints = collect_constraints(c, mesh);
+
+  RunDirectory dir(out_dir);
+  RunLog log(dir.log_file());
+  log.info("plisse run " + options.case_file + (c.title.empty() ? "" : "  (" + c.title + ")"));
+  log.info("output: " + dir.path().string());
+  for (const auto& o : options.overrides) log.info("  --set " + o);
+
+  PetscSession petsc({c.solver.petsc_options});
+  for (const auto& o : options.petsc_options) PetscSession::insert_options(o);
+
+  t0 = Clock::now();
+  MixedModel model(mesh, material,
+                   c.material.exact_incompressibility ? 0.0 : 1.0 / c.material.bulk_modulus,
+                   constraints);
+  LoadStepper stepper(model, c.solver);
+  const double time_setup = seconds_since(t0);
+  {
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "mesh: %d nodes, %d tetrahedra; unknowns: %d (%d pressure), %zu constrained",
+                  mesh.n_nodes(), mesh.n_tets(), model.n_free(), model.dofs().n_free_pressure(),
+                  constraints.size());
+    log.info(line);
+  }
+
+  HistoryColumns columns = history_columns(c, mesh);
+  HistoryWriter history(dir.history_file(), columns.names);
+  PvdWriter pvd(dir.pvd_file());
+  double time_output = 0.0;
+  std::vector<double> previous_state = model.state();
+  int last_written = -1;
+  StepInfo last_step;
+
+  auto write_output = [&](const StepInfo& info) {
+    const auto t_out = Clock::now();
+    const std::string name = dir.step_file_name(info.step);
+    write_step_vtu(dir.path() / name, c, model, previous_state, info.dt);
+    pvd.add(info.time, name);
+    last_written = info.step;
+    time_output += seconds_since(t_out);
+  };
+
+  auto on_step = [&](const StepInfo& info) {
+    const auto t_out = Clock::now();
+    const BodyAverages avg = model.averages();
+    std::vector<double> row = {double(info.step), info.time, info.load_factor,
+                               double(info.newton_iterations), info.residual_norm};
+    if (c.output.stretch_axis) {
+      const int a = *c.output.stretch_axis - 'x';
+      row.push_back(avg.F(a, a));
+    }
+    for (int k = 0; k < 3; ++k) row.push_back(avg.F(k, k));
+    for (auto [i, j] : {std::pair{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}})
+      row.push_back(avg.cauchy(i, j));
+    for (const BoundaryCondition* bc : columns.reaction_conditions) {
+      const Vec3d f = model.reaction(mesh.surface_tags.at(bc->surface.name));
+      for (int k = 0; k < 3; ++k) row.push_back(f[k]);
+    }
+    for (int node : columns.probe_nodes)
+      for (int k = 0; k < 3; ++k) row.push_back(model.state()[DofMap::dof(node, k)]);
+    row.push_back(avg.volume);
+    double min_J = std::numeric_limits<double>::infinity();
+    for (const auto& f : model.element_fields()) min_J = std::min(min_J, f.J);
+    row.push_back(min_J);
+    history.add_row(row);
+    time_output += seconds_since(t_out);
+    if (info.step % c.output.every == 0 || info.load_factor >= 1.0) write_output(info);
+    previous_state = model.state();
+    last_step = info;
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "step %4d  t %.5g  load %.4f  dt %.3g  newton %2d  |R| %.3e%s  elapsed %.1fs",
+                  info.step, info.time, info.load_factor, info.dt, info.newton_iterations,
+                  info.residual_norm, info.cutbacks ? "  (after cut-back)" : "",
+                  seconds_since(t_start));
+    log.info(line);
+    log.flush();
+  };
+
+  const SteppingResult result = stepper.run(on_step, [&](const std::string& s) { log.warn(s); });
+  if (last_step.step > 0 && last_written != last_step.step) write_output(last_step);
+
+  nlohmann::json summary;
+  summary["case"] = options.case_file;
+  summary["title"] = c.title;
+  summary["completed"] = result.completed;
+  if (!result.completed) summary["failure"] = result.failure;
+  summary["nodes"] = mesh.n_nodes();
+  summary["elements"] = mesh.n_tets();
+  summary["dofs"] = model.dofs().n_dofs();
+  summary["free_dofs"] = model.n_free();
+  summary["pressure_dofs"] = model.dofs().n_free_pressure();
+  summary["steps"] = result.steps;
+  summary["newton_iterations"] = result.newton_iterations;
+  summary["cutbacks"] = result.cutbacks;
+  summary["final_time"] = last_step.time;
+  summary["wall_time"] = {{"mesh", time_mesh},
+                          {"setup", time_setup},
+                          {"assembly", stepper.times().assembly},
+                          {"linear_solve", stepper.times().linear_solve},
+                          {"output", time_output},
+                          {"total", seconds_since(t_start)}};
+  summary["peak_memory_mib"] = peak_memory_mib();
+  if (!history.rows().empty()) {
+    nlohmann::json final_values;
+    for (size_t i = 0; i < history.columns().size(); ++i)
+      final_values[history.columns()[i]] = history.rows().back()[i];
+    summary["final"] = final_values;
+  }
+  write_json_file(dir.summary_file(), summary);
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "%s: %d steps, %d Newton iterations, %d cut-backs, %.2fs (assembly %.2fs, "
+                "linear solve %.2fs, output %.2fs), peak memory %.0f MiB",
+                result.completed ? "done" : "stopped", result.steps, result.newton_iterations,
+                result.cutbacks, seconds_since(t_start), stepper.times().assembly,
+                stepper.times().linear_solve, time_output, peak_memory_mib());
+  log.info(line);
+  if (!result.completed) {
+    log.error(result.failure);
+    log.flush();
+    throw SolverError(result.failure + " (last converged step " + std::to_string(last_step.step) +
+                      " at t = " + std::to_string(last_step.time) + " is written in " +
+                      dir.path().string() + ")");
+  }
+  log.flush();
+}
+
+}  // namespace plisse::app

@@ -1,0 +1,29 @@
+#pragma once
+/// Dirichlet conditions (fixed, prescribed, symmetry) turned into constrained displacement
+/// components of nodes.
+#include <vector>
+
+#include "io/case.hpp"
+#include "mesh/mesh.hpp"
+
+namespace plisse {
+
+/// One constrained displacement component: u_component(node, t) = value * ramp.factor(t).
+struct ConstrainedComponent {
+  int node = 0;
+  int component = 0;  ///< 0, 1, 2 = x, y, z
+  double value = 0.0;  ///< [mm] at the end of the ramp
+  Ramp ramp;
+  double at(double t) const { return value * ramp.factor(t); }
+};
+
+/// The normal axis (0, 1, 2) of a planar, coordinate-aligned tagged surface, or -1 when the surface
+/// is not a plane normal to x, y or z (relative tolerance `tol` on the triangle normals).
+int coordinate_plane_axis(const Mesh& mesh, const std::vector<int>& triangles, double tol = 1e-8);
+
+/// All constrained components of the case, one per (node, component). A node where two
+/// conditions prescribe different motions of the same component is an InputError at the later
+/// condition. Symmetry surfaces must be coordinate planes (x, y or z = const).
+std::vector<ConstrainedComponent> collect_constraints(const Case& c, const Mesh& mesh);
+
+}  // namespace plisse

@@ -1,0 +1,93 @@
+#include "solver/load_stepper.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace plisse {
+
+LoadStepper::LoadStepper(MixedModel& model, const SolverSettings& settings)
+    : model_(model), settings_(settings), newton_(model, settings.newton) {}
+
+SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_step,
+                                const std::function<void(const std::string&)>& log) {
+  SteppingResult result;
+  const double end = settings_.end_time;
+  const double min_dt = settings_.min_step * end;
+  const double max_dt = settings_.max_step * end;
+  double dt = std::min(end / settings_.steps, max_dt);
+  double t = 0.0, previous_dt = 0.0;
+  int cutbacks_this_step = 0;
+  model_.apply_constraints(0.0);
+  model_.save_converged();
+  std::vector<double> previous_state = model_.converged_state();
+  char line[256];
+  while (t < end * (1.0 - 1e-12)) {
+    if (result.steps >= settings_.max_steps) {
+      result.failure = "reached solver.max_steps = " + std::to_string(settings_.max_steps) +
+                       " at time " + std::to_string(t);
+      return result;
+    }
+    const double t_new = (t + dt > end * (1.0 - 1e-9)) ? end : t + dt;
+    const double step = t_new - t;
+    // Predictor: extrapolate the last increment (secant), then impose the new boundary values.
+    if (previous_dt > 0.0) {
+      const double s = step / previous_dt;
+      const auto& now = model_.converged_state();
+      auto& x = model_.state();
+      for (size_t i = 0; i < x.size(); ++i) x[i] = now[i] + s * (now[i] - previous_state[i]);
+    }
+    model_.apply_constraints(t_new);
+    NewtonResult newton;
+    std::string failure;
+    try {
+      newton = newton_.solve();
+      if (!newton.converged)
+        failure = newton.status.ok ? "Newton did not converge (" + newton.reason + ")"
+                                   : "element " + std::to_string(newton.status.worst_element) +
+                                         " inverted or its bubble did not converge (min J " +
+                                         std::to_string(newton.status.min_J) + ")";
+    } catch (const Error& e) {
+      failure = e.what();
+    }
+    result.newton_iterations += newton.iterations;
+    if (!failure.empty()) {
+      model_.restore_converged();
+      ++result.cutbacks;
+      ++cutbacks_this_step;
+      const double new_dt = step * settings_.cutback;
+      std::snprintf(line, sizeof line, "  step %d: t = %.6g failed after %d iterations: ",
+                    result.steps + 1, t_new, newton.iterations);
+      if (new_dt < min_dt) {
+        result.failure = std::string(line) + failure + "; step " + std::to_string(new_dt) +
+                         " below the minimum " + std::to_string(min_dt);
+        return result;
+      }
+      log(std::string(line) + failure + "; cutting the step to " + std::to_string(new_dt));
+      dt = new_dt;
+      continue;
+    }
+    previous_state = model_.converged_state();
+    model_.save_converged();
+    previous_dt = step;
+    t = t_new;
+    ++result.steps;
+    StepInfo info;
+    info.step = result.steps;
+    info.time = t;
+    info.dt = step;
+    info.load_factor = t / end;
+    info.newton_iterations = newton.iterations;
+    info.residual_norm = newton.residual_norm;
+    info.residual_history = newton.residual_history;
+    info.cutbacks = cutbacks_this_step;
+    cutbacks_this_step = 0;
+    on_step(info);
+    if (newton.iterations <= settings_.easy_iterations) dt = std::min(step * settings_.growth, max_dt);
+    else dt = step;
+  }
+  result.completed = true;
+  return result;
+}
+
+}  // namespace plisse

@@ -1,0 +1,214 @@
+#include "solver/mixed_model.hpp"
+
+#include <algorithm>
+#include <array>
+#include <set>
+
+#include "solver/petsc_call.hpp"
+
+namespace plisse {
+namespace {
+/// Keeps the first failed element, or else the one with the smallest J.
+void track(AssemblyStatus& status, const mini::ElementStatus& s, int e) {
+  if (!status.ok) return;
+  if (!s.ok || s.min_J < status.min_J) {
+    status.ok = s.ok;
+    status.min_J = s.min_J;
+    status.worst_element = e;
+  }
+}
+}  // namespace
+
+MixedModel::MixedModel(const Mesh& mesh, AnyMaterial material, double inverse_bulk_modulus,
+                       std::vector<ConstrainedComponent> constraints)
+    : mesh_(mesh),
+      material_(std::move(material)),
+      inverse_bulk_modulus_(inverse_bulk_modulus),
+      constraints_(std::move(constraints)),
+      dofs_(mesh.n_nodes(), constraints_),
+      state_(static_cast<size_t>(DofMap::kPerNode) * mesh.n_nodes(), 0.0),
+      bubble_(mesh.n_tets(), mini::BubbleVec::Zero()),
+      full_residual_(state_.size(), 0.0) {
+  geometry_.reserve(mesh.n_tets());
+  for (const auto& tet : mesh.tets)
+    geometry_.push_back(mini::compute_tet_geometry(
+        {mesh.nodes[tet[0]], mesh.nodes[tet[1]], mesh.nodes[tet[2]], mesh.nodes[tet[3]]}));
+  save_converged();
+}
+
+void MixedModel::apply_constraints(double t) {
+  for (const auto& c : constraints_) state_[DofMap::dof(c.node, c.component)] = c.at(t);
+}
+
+void MixedModel::get_free(Vec x) const {
+  PetscScalar* a = nullptr;
+  PLISSE_PETSC(VecGetArray(x, &a));
+  for (int d = 0; d < dofs_.n_dofs(); ++d)
+    if (const int eq = dofs_.equation(d); eq >= 0) a[eq] = state_[d];
+  PLISSE_PETSC(VecRestoreArray(x, &a));
+}
+
+void MixedModel::set_free(Vec x) {
+  const PetscScalar* a = nullptr;
+  PLISSE_PETSC(VecGetArrayRead(x, &a));
+  for (int d = 0; d < dofs_.n_dofs(); ++d)
+    if (const int eq = dofs_.equation(d); eq >= 0) state_[d] = a[eq];
+  PLISSE_PETSC(VecRestoreArrayRead(x, &a));
+}
+
+void MixedModel::element_dofs(int e, std::array<int, mini::kDof>& full) const {
+  const auto& tet = mesh_.tets[e];
+  for (int a = 0; a < mini::kNodes; ++a) {
+    for (int k = 0; k < 3; ++k) full[3 * a + k] = DofMap::dof(tet[a], k);
+    full[mini::kDofU + a] = DofMap::dof(tet[a], 3);
+  }
+}
+
+mini::ElemVec MixedModel::gather(const std::array<int, mini::kDof>& full) const {
+  mini::ElemVec x;
+  for (int i = 0; i < mini::kDof; ++i) x[i] = state_[full[i]];
+  return x;
+}
+
+AssemblyStatus MixedModel::assemble_residual(Vec f) {
+  AssemblyStatus status;
+  std::fill(full_residual_.begin(), full_residual_.end(), 0.0);
+  std::visit(
+      [&](const auto& material) {
+        std::array<int, mini::kDof> full;
+        mini::ElemVec r;
+        for (int e = 0; e < mesh_.n_tets(); ++e) {
+          element_dofs(e, full);
+          const mini::ElementStatus s =
+              mini::assemble_mini(geometry_[e], gather(full), material, inverse_bulk_modulus_,
+                                  bubble_[e], r, nullptr);
+          track(status, s, e);
+          for (int i = 0; i < mini::kDof; ++i) full_residual_[full[i]] += r[i];
+        }
+      },
+      material_);
+  PetscScalar* a = nullptr;
+  PLISSE_PETSC(VecGetArray(f, &a));
+  for (int d = 0; d < dofs_.n_dofs(); ++d)
+    if (const int eq = dofs_.equation(d); eq >= 0) a[eq] = full_residual_[d];
+  PLISSE_PETSC(VecRestoreArray(f, &a));
+  return status;
+}
+
+AssemblyStatus MixedModel::assemble_tangent(Mat K) {
+  AssemblyStatus status;
+  PLISSE_PETSC(MatZeroEntries(K));
+  std::visit(
+      [&](const auto& material) {
+        std::array<int, mini::kDof> full;
+        std::array<PetscInt, mini::kDof> rows;
+        mini::ElemVec r;
+        mini::ElemMat k;
+        Eigen::Matrix<double, mini::kDof, mini::kDof, Eigen::RowMajor> k_row;
+        for (int e = 0; e < mesh_.n_tets(); ++e) {
+          element_dofs(e, full);
+          const mini::ElementStatus s = mini::assemble_mini(
+              geometry_[e], gather(full), material, inverse_bulk_modulus_, bubble_[e], r, &k);
+          track(status, s, e);
+          for (int i = 0; i < mini::kDof; ++i) rows[i] = dofs_.equation(full[i]);
+          k_row = k;  // PETSc takes row-major blocks; negative indices (constrained) are skipped
+          PLISSE_PETSC(MatSetValues(K, mini::kDof, rows.data(), mini::kDof, rows.data(),
+                                    k_row.data(), ADD_VALUES));
+        }
+      },
+      material_);
+  PLISSE_PETSC(MatAssemblyBegin(K, MAT_FINAL_ASSEMBLY));
+  PLISSE_PETSC(MatAssemblyEnd(K, MAT_FINAL_ASSEMBLY));
+  return status;
+}
+
+Mat MixedModel::create_matrix() const {
+  // Exact nonzeros per free row: the free dofs of all nodes sharing a tet with the row's node.
+  const int n_nodes = mesh_.n_nodes();
+  std::vector<std::set<int>> neighbours(n_nodes);
+  for (const auto& tet : mesh_.tets)
+    for (int a : tet)
+      for (int b : tet) neighbours[a].insert(b);
+  std::vector<int> free_per_node(n_nodes, 0);
+  for (int v = 0; v < n_nodes; ++v)
+    for (int k = 0; k < DofMap::kPerNode; ++k) free_per_node[v] += dofs_.equation(DofMap::dof(v, k)) >= 0;
+  std::vector<PetscInt> nnz(dofs_.n_free(), 0);
+  for (int v = 0; v < n_nodes; ++v) {
+    int count = 0;
+    for (int w : neighbours[v]) count += free_per_node[w];
+    for (int k = 0; k < DofMap::kPerNode; ++k)
+      if (const int eq = dofs_.equation(DofMap::dof(v, k)); eq >= 0) nnz[eq] = count;
+  }
+  Mat K = nullptr;
+  PLISSE_PETSC(MatCreateSeqAIJ(PETSC_COMM_SELF, dofs_.n_free(), dofs_.n_free(), 0, nnz.data(), &K));
+  PLISSE_PETSC(MatSetOption(K, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  PLISSE_PETSC(MatSetOption(K, MAT_SYMMETRIC, PETSC_TRUE));
+  PLISSE_PETSC(MatSetOption(K, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
+  return K;
+}
+
+void MixedModel::save_converged() {
+  converged_state_ = state_;
+  converged_bubble_ = bubble_;
+}
+
+void MixedModel::restore_converged() {
+  state_ = converged_state_;
+  bubble_ = converged_bubble_;
+}
+
+Vec3d MixedModel::reaction(const std::vector<int>& triangles) const {
+  std::set<int> nodes;
+  for (int t : triangles)
+    for (int v : mesh_.triangles[t]) nodes.insert(v);
+  Vec3d force = Vec3d::Zero();
+  for (int v : nodes)
+    for (int k = 0; k < 3; ++k)
+      if (dofs_.equation(DofMap::dof(v, k)) < 0) force[k] += full_residual_[DofMap::dof(v, k)];
+  return force;
+}
+
+std::vector<mini::ElementFields> MixedModel::element_fields() const {
+  std::vector<mini::ElementFields> out(mesh_.n_tets());
+  std::visit(
+      [&](const auto& material) {
+        std::array<int, mini::kDof> full;
+        for (int e = 0; e < mesh_.n_tets(); ++e) {
+          element_dofs(e, full);
+          out[e] = mini::compute_element_fields(geometry_[e], gather(full), material, bubble_[e]);
+        }
+      },
+      material_);
+  return out;
+}
+
+BodyAverages MixedModel::averages() const {
+  BodyAverages avg;
+  avg.F.setZero();
+  double reference_volume = 0.0;
+  const auto fields = element_fields();
+  for (int e = 0; e < mesh_.n_tets(); ++e) {
+    const auto& tet = mesh_.tets[e];
+    const Vec3d X0 = mesh_.nodes[tet[0]];
+    Mat3d dX, dx;
+    for (int a = 1; a < 4; ++a) {
+      dX.col(a - 1) = mesh_.nodes[tet[a]] - X0;
+      dx.col(a - 1) = dX.col(a - 1);
+      for (int k = 0; k < 3; ++k)
+        dx(k, a - 1) += state_[DofMap::dof(tet[a], k)] - state_[DofMap::dof(tet[0], k)];
+    }
+    const double V0 = dX.determinant() / 6.0;
+    // The bubble vanishes on the element boundary, so the mean of F over the tet is the F of its
+    // linear part: F_mean = dx dX^-1 (divergence theorem).
+    avg.F += V0 * dx * dX.inverse();
+    const double v = fields[e].J * V0;
+    avg.cauchy += v * fields[e].cauchy;
+    avg.volume += v;
+    reference_volume += V0;
+  }
+  avg.F /= reference_volume;
+  if (avg.volume > 0) avg.cauchy /= avg.volume;
+  return avg;
+}
+
+}  // namespace plisse

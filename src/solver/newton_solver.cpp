@@ -1,0 +1,117 @@
+#include "solver/newton_solver.hpp"
+
+#include <chrono>
+
+#include "solver/petsc_call.hpp"
+
+namespace plisse {
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+const char* line_search_type(LineSearch ls) {
+  switch (ls) {
+    case LineSearch::bt: return SNESLINESEARCHBT;
+    case LineSearch::basic: return SNESLINESEARCHBASIC;
+    case LineSearch::l2: return SNESLINESEARCHL2;
+    case LineSearch::cp: return SNESLINESEARCHCP;
+  }
+  return SNESLINESEARCHBT;
+}
+}  // namespace
+
+NewtonSolver::NewtonSolver(MixedModel& model, const NewtonSettings& settings) : model_(model) {
+  const PetscInt n = model.n_free();
+  PLISSE_PETSC(VecCreateSeq(PETSC_COMM_SELF, n, &x_));
+  PLISSE_PETSC(VecDuplicate(x_, &r_));
+  K_ = model.create_matrix();
+  PLISSE_PETSC(SNESCreate(PETSC_COMM_SELF, &snes_));
+  PLISSE_PETSC(SNESSetType(snes_, SNESNEWTONLS));
+  PLISSE_PETSC(SNESSetFunction(snes_, r_, &NewtonSolver::form_function, this));
+  PLISSE_PETSC(SNESSetJacobian(snes_, K_, K_, &NewtonSolver::form_jacobian, this));
+  // stol = 0: convergence is judged on the residual only.
+  PLISSE_PETSC(SNESSetTolerances(snes_, settings.atol, settings.rtol, 0.0, settings.max_iterations,
+                                 PETSC_DEFAULT));
+  SNESLineSearch ls = nullptr;
+  PLISSE_PETSC(SNESGetLineSearch(snes_, &ls));
+  PLISSE_PETSC(SNESLineSearchSetType(ls, line_search_type(settings.line_search)));
+  KSP ksp = nullptr;
+  PC pc = nullptr;
+  PLISSE_PETSC(SNESGetKSP(snes_, &ksp));
+  PLISSE_PETSC(KSPSetType(ksp, KSPPREONLY));
+  PLISSE_PETSC(KSPGetPC(ksp, &pc));
+  // The tangent is symmetric indefinite (saddle point): MUMPS LDL^T (sym = 2).
+  PLISSE_PETSC(PCSetType(pc, PCCHOLESKY));
+  PLISSE_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  history_.assign(settings.max_iterations + 1, 0.0);
+  PLISSE_PETSC(SNESSetConvergenceHistory(snes_, history_.data(), nullptr,
+                                         static_cast<PetscInt>(history_.size()), PETSC_TRUE));
+  PLISSE_PETSC(SNESSetFromOptions(snes_));
+}
+
+NewtonSolver::~NewtonSolver() {
+  SNESDestroy(&snes_);
+  MatDestroy(&K_);
+  VecDestroy(&r_);
+  VecDestroy(&x_);
+}
+
+PetscErrorCode NewtonSolver::form_function(SNES snes, Vec x, Vec f, void* context) {
+  auto* self = static_cast<NewtonSolver*>(context);
+  try {
+    const auto t0 = std::chrono::steady_clock::now();
+    self->model_.set_free(x);
+    self->last_status_ = self->model_.assemble_residual(f);
+    self->times_.assembly += seconds_since(t0);
+    // An inverted element: let the line search backtrack, or SNES stop with a domain error.
+    if (!self->last_status_.ok) PetscCall(SNESSetFunctionDomainError(snes));
+  } catch (...) {
+    self->error_ = std::current_exception();
+    return PETSC_ERR_LIB;
+  }
+  return 0;
+}
+
+PetscErrorCode NewtonSolver::form_jacobian(SNES, Vec x, Mat J, Mat, void* context) {
+  auto* self = static_cast<NewtonSolver*>(context);
+  try {
+    const auto t0 = std::chrono::steady_clock::now();
+    self->model_.set_free(x);
+    self->model_.assemble_tangent(J);
+    self->times_.assembly += seconds_since(t0);
+  } catch (...) {
+    self->error_ = std::current_exception();
+    return PETSC_ERR_LIB;
+  }
+  return 0;
+}
+
+NewtonResult NewtonSolver::solve() {
+  NewtonResult result;
+  error_ = nullptr;
+  model_.get_free(x_);
+  const double assembly_before = times_.assembly;
+  const auto t0 = std::chrono::steady_clock::now();
+  const PetscErrorCode code = SNESSolve(snes_, nullptr, x_);
+  const double elapsed = seconds_since(t0);
+  times_.linear_solve += elapsed - (times_.assembly - assembly_before);
+  if (error_) std::rethrow_exception(error_);
+  PLISSE_PETSC(code);
+  model_.set_free(x_);
+  SNESConvergedReason reason;
+  PLISSE_PETSC(SNESGetConvergedReason(snes_, &reason));
+  PetscInt its = 0, n_history = 0;
+  PLISSE_PETSC(SNESGetIterationNumber(snes_, &its));
+  PetscReal* h = nullptr;
+  PLISSE_PETSC(SNESGetConvergenceHistory(snes_, &h, nullptr, &n_history));
+  result.residual_history.assign(h, h + n_history);
+  result.converged = reason > 0 && last_status_.ok;
+  result.iterations = static_cast<int>(its);
+  result.residual_norm = result.residual_history.empty() ? 0.0 : result.residual_history.back();
+  result.reason = SNESConvergedReasons[reason];
+  result.status = last_status_;
+  return result;
+}
+
+}  // namespace plisse

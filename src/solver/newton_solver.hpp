@@ -1,0 +1,57 @@
+#pragma once
+/// Newton-Raphson with line search on a MixedModel through PETSc's SNES, with a direct solver
+/// (MUMPS; Cholesky-type LDL^T for the symmetric tangent) by default. Every option can be
+/// overridden with PETSc's own options (-snes_*, -ksp_*, -pc_*, -mat_mumps_*).
+#include <petscsnes.h>
+
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "io/case.hpp"
+#include "solver/mixed_model.hpp"
+
+namespace plisse {
+
+struct NewtonResult {
+  bool converged = false;
+  int iterations = 0;
+  double residual_norm = 0.0;
+  std::vector<double> residual_history;  ///< ||R|| at the start and after each iteration
+  std::string reason;                    ///< PETSc's converged/diverged reason, in words
+  AssemblyStatus status;                 ///< of the last residual evaluation
+};
+
+/// Wall time spent per phase [s], accumulated over all solves.
+struct PhaseTimes {
+  double assembly = 0.0;      ///< residual and tangent assembly
+  double linear_solve = 0.0;  ///< factorisation and triangular solves (SNES time minus assembly)
+};
+
+class NewtonSolver {
+ public:
+  NewtonSolver(MixedModel& model, const NewtonSettings& settings);
+  ~NewtonSolver();
+  NewtonSolver(const NewtonSolver&) = delete;
+  NewtonSolver& operator=(const NewtonSolver&) = delete;
+
+  /// Solves R(x) = 0 from the model's current state (constrained values already applied).
+  /// On return the model holds the last iterate, converged or not.
+  NewtonResult solve();
+  const PhaseTimes& times() const { return times_; }
+
+ private:
+  static PetscErrorCode form_function(SNES snes, Vec x, Vec f, void* context);
+  static PetscErrorCode form_jacobian(SNES snes, Vec x, Mat J, Mat P, void* context);
+
+  MixedModel& model_;
+  SNES snes_ = nullptr;
+  Vec x_ = nullptr, r_ = nullptr;
+  Mat K_ = nullptr;
+  std::vector<PetscReal> history_;
+  std::exception_ptr error_;
+  AssemblyStatus last_status_;
+  PhaseTimes times_;
+};
+
+}  // namespace plisse

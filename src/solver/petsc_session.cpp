@@ -1,0 +1,57 @@
+#include "solver/petsc_session.hpp"
+
+#include <petscsys.h>
+
+#include <sstream>
+
+#include "solver/petsc_call.hpp"
+
+namespace plisse {
+
+namespace detail {
+void throw_petsc_error(PetscErrorCode code, const char* call, const char* file, int line) {
+  const char* text = nullptr;
+  PetscErrorMessage(code, &text, nullptr);
+  std::ostringstream out;
+  out << "PETSc error " << code << " (" << (text ? text : "unknown") << ") in " << call << " at "
+      << file << ':' << line;
+  throw Error(out.str());
+}
+}  // namespace detail
+
+PetscSession::PetscSession(const std::vector<std::string>& options) {
+  PetscBool initialized = PETSC_FALSE;
+  PLISSE_PETSC(PetscInitialized(&initialized));
+  if (!initialized) {
+    int argc = 0;
+    char** argv = nullptr;
+    PLISSE_PETSC(PetscInitialize(&argc, &argv, nullptr, nullptr));
+    // PETSc's own error printing would duplicate our messages; errors come back as codes.
+    PLISSE_PETSC(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
+    owns_ = true;
+  }
+  for (const auto& o : options) insert_options(o);
+}
+
+PetscSession::~PetscSession() {
+  if (owns_) PetscFinalize();
+}
+
+void PetscSession::insert_options(const std::string& options) {
+  if (options.empty()) return;
+  PLISSE_PETSC(PetscOptionsInsertString(nullptr, options.c_str()));
+}
+
+int PetscSession::rank() {
+  PetscMPIInt r = 0;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &r);
+  return r;
+}
+
+int PetscSession::size() {
+  PetscMPIInt s = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &s);
+  return s;
+}
+
+}  // namespace plisse
