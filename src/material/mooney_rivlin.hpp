@@ -1,7 +1,7 @@
 #pragma once
 /// Mooney-Rivlin model, isochoric part (the pressure term lives in the element).
-///   W = c1 (Ī1 - 3) + c2 (Ī2 - 3)      [paper, Table 1; Holzapfel, Nonlinear Solid Mechanics,
-///                                       2000, eq. 6.148 with the isochoric invariants]
+///   W = c1 (Ī1 - 3) + c2 (Ī2 - 3)      [paper, Table 1 and eq. 7; isochoric split: Holzapfel,
+///                                       Nonlinear Solid Mechanics, 2000, ch. 6]
 ///   small-strain shear modulus mu = 2 (c1 + c2) (materials.md, M13)
 /// Admissible parameters (registry): c1 >= 0, c2 >= 0, c1 + c2 > 0. In incompressible uniaxial
 /// tension sigma = 2 (λ² - 1/λ)(c1 + c2/λ) (M14): c1 < 0 makes the stress fall at large stretch

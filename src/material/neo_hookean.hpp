@@ -1,7 +1,7 @@
 #pragma once
 /// Neo-Hookean model, isochoric part (the pressure term lives in the element).
 ///   W = c1 (Ī1 - 3)          [paper, Table 1; isochoric split: Holzapfel, Nonlinear Solid
-///                             Mechanics, 2000, sec. 6.4]
+///                             Mechanics, 2000, ch. 6]
 ///   small-strain shear modulus mu = 2 c1 (materials.md, M13)
 #include "core/types.hpp"
 #include "material/isochoric_invariants.hpp"
