@@ -1,1 +1,157 @@
-// atomic file writing: filled in by the output work
+#include "io/atomic_file.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <system_error>
+#include <utility>
+
+#include "core/error.hpp"
+
+namespace plisse {
+namespace {
+
+std::string reason(int error_number) { return std::generic_category().message(error_number); }
+
+[[noreturn]] void fail(const char* action, const std::filesystem::path& path, int error_number) {
+  throw Error(std::string("cannot ") + action + " '" + path.string() + "': " + reason(error_number));
+}
+
+/// ".<name>.tmp.<pid>.<n>" beside the target: same directory, hence same file system, which
+/// rename(2) needs to be atomic. pid and a process-wide counter keep concurrent writers apart.
+std::filesystem::path temporary_name(const std::filesystem::path& target) {
+  static std::atomic<unsigned long> counter{0};
+  // Appended piecewise: GCC 12 gives a false -Wrestrict on `"." + std::string` (GCC bug 105329).
+  std::string name(1, '.');
+  name += target.filename().string();
+  name += ".tmp.";
+  name += std::to_string(static_cast<long>(::getpid()));
+  name += '.';
+  name += std::to_string(counter.fetch_add(1));
+  return target.parent_path() / name;
+}
+
+/// Writes all bytes, retrying on partial writes and EINTR. Returns 0 or the errno.
+int write_all(int fd, const char* data, std::size_t n_bytes) {
+  while (n_bytes > 0) {
+    const ssize_t written = ::write(fd, data, n_bytes);
+    if (written < 0) {
+      if (errno == EINTR) continue;
+      return errno;
+    }
+    data += written;
+    n_bytes -= static_cast<std::size_t>(written);
+  }
+  return 0;
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
+  FE_CHECK(!target_.empty() && target_.has_filename(),
+           "cannot write '" << target_.string() << "': not a file name");
+  temporary_ = temporary_name(target_);
+  fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd_ < 0) {
+    const int error_number = errno;
+    temporary_.clear();
+    fail("write", target_, error_number);
+  }
+  buffer_.reserve(kBufferBytes);
+}
+
+AtomicFile::~AtomicFile() { discard(); }
+
+AtomicFile::AtomicFile(AtomicFile&& other) noexcept
+    : target_(std::move(other.target_)),
+      temporary_(std::exchange(other.temporary_, {})),
+      fd_(std::exchange(other.fd_, -1)),
+      buffer_(std::move(other.buffer_)) {}
+
+AtomicFile& AtomicFile::operator=(AtomicFile&& other) noexcept {
+  if (this != &other) {
+    discard();
+    target_ = std::move(other.target_);
+    temporary_ = std::exchange(other.temporary_, {});
+    fd_ = std::exchange(other.fd_, -1);
+    buffer_ = std::move(other.buffer_);
+  }
+  return *this;
+}
+
+void AtomicFile::write(const void* data, std::size_t n_bytes) {
+  FE_CHECK(fd_ >= 0, "cannot write '" << target_.string() << "': file is already closed");
+  const char* bytes = static_cast<const char*>(data);
+  if (buffer_.size() + n_bytes <= kBufferBytes) {
+    buffer_.append(bytes, n_bytes);
+    return;
+  }
+  flush_buffer();
+  if (n_bytes < kBufferBytes) {
+    buffer_.append(bytes, n_bytes);
+  } else if (const int error_number = write_all(fd_, bytes, n_bytes); error_number != 0) {
+    fail("write", target_, error_number);
+  }
+}
+
+void AtomicFile::flush_buffer() {
+  if (const int error_number = write_all(fd_, buffer_.data(), buffer_.size()); error_number != 0)
+    fail("write", target_, error_number);
+  buffer_.clear();
+}
+
+void AtomicFile::commit() {
+  FE_CHECK(fd_ >= 0, "cannot write '" << target_.string() << "': file is already closed");
+  flush_buffer();
+  // close() reports deferred write errors (e.g. NFS, disk full); check it before renaming.
+  const int fd = std::exchange(fd_, -1);
+  if (::close(fd) != 0) {
+    const int error_number = errno;
+    ::unlink(temporary_.c_str());
+    temporary_.clear();
+    fail("write", target_, error_number);
+  }
+  if (::rename(temporary_.c_str(), target_.c_str()) != 0) {
+    const int error_number = errno;
+    ::unlink(temporary_.c_str());
+    temporary_.clear();
+    fail("replace", target_, error_number);
+  }
+  temporary_.clear();
+}
+
+void AtomicFile::discard() noexcept {
+  if (fd_ >= 0) ::close(std::exchange(fd_, -1));
+  if (!temporary_.empty()) ::unlink(temporary_.c_str());
+  temporary_.clear();
+}
+
+std::string read_file(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw InputError({path.string(), 0, 0, ""}, "cannot read: " + reason(errno));
+  std::string content;
+  char chunk[1 << 16];
+  while (true) {
+    const ssize_t n = ::read(fd, chunk, sizeof chunk);
+    if (n == 0) break;
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const int error_number = errno;
+      ::close(fd);
+      throw InputError({path.string(), 0, 0, ""}, "cannot read: " + reason(error_number));
+    }
+    content.append(chunk, static_cast<std::size_t>(n));
+  }
+  ::close(fd);
+  return content;
+}
+
+void write_file_atomically(const std::filesystem::path& target, std::string_view content) {
+  AtomicFile file(target);
+  file.write(content);
+  file.commit();
+}
+
+}  // namespace plisse

@@ -1,0 +1,71 @@
+#pragma once
+/// Atomic replacement of a file: write everything to a temporary file in the target's directory,
+/// then rename(2) it over the target. rename within one file system is atomic (POSIX), so a reader
+/// (ParaView, a plotting script) or a run killed mid-write sees either the old file whole or the
+/// new file whole, never a truncated one. Every file of a run directory is written this way.
+///
+/// Guarantee and limit: this protects against the process dying (kill, crash, exception). It does
+/// not fsync, so after a power loss the newest version may be lost; the previous one survives.
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace plisse {
+
+/// Writes `content` to `target` atomically (see file comment). The temporary file
+/// `.<name>.tmp.<pid>.<n>` lives beside the target and is removed on failure. Creates a new file
+/// with mode 0666 & ~umask; an existing target is replaced whole (its old mode is not kept).
+/// Throws plisse::Error naming the path and the system's reason (strerror) when anything fails;
+/// the target is then untouched.
+void write_file_atomically(const std::filesystem::path& target, std::string_view content);
+
+/// The whole content of the file at `path`, for the readers of run-directory files (history,
+/// collection, JSON). A run directory is user input to `plisse wrinkles DIR` and restarts, so a
+/// missing or unreadable file throws plisse::InputError (file = path, rule = "cannot read: "
+/// followed by the system's reason).
+std::string read_file(const std::filesystem::path& path);
+
+/// Streams a file's content to a temporary file and puts it in place on `commit()`, for content
+/// too large to hold twice in memory (VTU). Destroying an AtomicFile without a successful commit
+/// removes the temporary file and leaves the target as it was. Not copyable; movable.
+///
+///   AtomicFile file(dir / "step_0001.vtu");
+///   file.write(header);
+///   file.write(bytes, n_bytes);
+///   file.commit();
+class AtomicFile {
+ public:
+  /// Creates the temporary file beside `target`. Throws plisse::Error (path, strerror) if it
+  /// cannot, e.g. the directory is missing or not writable.
+  explicit AtomicFile(std::filesystem::path target);
+  ~AtomicFile();
+  AtomicFile(AtomicFile&& other) noexcept;
+  AtomicFile& operator=(AtomicFile&& other) noexcept;
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  /// Appends bytes (buffered). Precondition: not committed. Throws plisse::Error on a write error.
+  void write(const void* data, std::size_t n_bytes);
+  void write(std::string_view text) { write(text.data(), text.size()); }
+
+  /// Flushes, closes and renames the temporary file over the target. After a successful commit
+  /// the object is finished: further writes throw. Throws plisse::Error (path, strerror).
+  void commit();
+
+  const std::filesystem::path& target() const { return target_; }
+  /// The temporary file being written (empty once committed or discarded).
+  const std::filesystem::path& temporary() const { return temporary_; }
+
+ private:
+  void flush_buffer();
+  void discard() noexcept;
+
+  std::filesystem::path target_;
+  std::filesystem::path temporary_;
+  int fd_ = -1;
+  std::string buffer_;  ///< pending bytes, written to fd_ when it passes kBufferBytes
+  static constexpr std::size_t kBufferBytes = std::size_t{1} << 16;
+};
+
+}  // namespace plisse

@@ -1,0 +1,151 @@
+#include "io/history_writer.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <set>
+#include <utility>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+
+namespace plisse {
+namespace {
+
+/// Shortest text that reads back to the same double (std::to_chars round-trip guarantee).
+void append_number(std::string& out, double value) {
+  char text[32];
+  const auto result = std::to_chars(text, text + sizeof text, value);
+  out.append(text, result.ptr);
+}
+
+void append_row(std::string& out, std::span<const double> values) {
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i > 0) out += ',';
+    append_number(out, values[i]);
+  }
+  out += '\n';
+}
+
+std::vector<std::string> split_commas(std::string_view line) {
+  std::vector<std::string> parts;
+  std::size_t begin = 0;
+  while (true) {
+    const std::size_t comma = line.find(',', begin);
+    parts.emplace_back(line.substr(begin, comma - begin));
+    if (comma == std::string_view::npos) return parts;
+    begin = comma + 1;
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>& HistoryWriter::standard_columns() {
+  static const std::vector<std::string> kColumns = {"step", "time", "load_factor",
+                                                    "newton_iterations", "residual_norm"};
+  return kColumns;
+}
+
+HistoryWriter::HistoryWriter(std::filesystem::path path,
+                             const std::vector<std::string>& extra_columns)
+    : path_(std::move(path)) {
+  table_.columns = standard_columns();
+  table_.columns.insert(table_.columns.end(), extra_columns.begin(), extra_columns.end());
+  std::set<std::string_view> seen;
+  for (const std::string& name : table_.columns) {
+    FE_CHECK(!name.empty(), "history '" << path_.string() << "': empty column name");
+    FE_CHECK(name.find_first_of(",\"\r\n") == std::string::npos,
+             "history '" << path_.string() << "': column name '" << name
+                         << "' contains ',', '\"' or a line break");
+    FE_CHECK(seen.insert(name).second,
+             "history '" << path_.string() << "': column '" << name << "' appears twice");
+  }
+  format_all();
+  write_file_atomically(path_, text_);
+}
+
+HistoryWriter HistoryWriter::reopen(std::filesystem::path path) {
+  HistoryTable table = read_history(path);
+  const std::vector<std::string>& standard = standard_columns();
+  const bool starts_with_standard =
+      table.columns.size() >= standard.size() &&
+      std::equal(standard.begin(), standard.end(), table.columns.begin());
+  if (!starts_with_standard)
+    throw InputError({path.string(), 1, 0, ""},
+                     "a plisse history must start with the columns "
+                     "step,time,load_factor,newton_iterations,residual_norm");
+  HistoryWriter writer;
+  writer.path_ = std::move(path);
+  writer.table_ = std::move(table);
+  writer.format_all();
+  return writer;
+}
+
+void HistoryWriter::add_row(std::span<const double> values) {
+  FE_CHECK(values.size() == n_columns(), "history '" << path_.string() << "': row has "
+                                                     << values.size() << " values for "
+                                                     << n_columns() << " columns");
+  std::string text = text_;
+  append_row(text, values);
+  write_file_atomically(path_, text);
+  text_ = std::move(text);
+  table_.rows.emplace_back(values.begin(), values.end());
+}
+
+void HistoryWriter::keep_first_rows(std::size_t n_rows) {
+  if (n_rows < table_.rows.size()) table_.rows.resize(n_rows);
+  format_all();
+  write_file_atomically(path_, text_);
+}
+
+std::optional<std::size_t> HistoryWriter::column_index(std::string_view name) const {
+  for (std::size_t i = 0; i < table_.columns.size(); ++i)
+    if (table_.columns[i] == name) return i;
+  return std::nullopt;
+}
+
+void HistoryWriter::format_all() {
+  text_.clear();
+  for (std::size_t i = 0; i < table_.columns.size(); ++i) {
+    if (i > 0) text_ += ',';
+    text_ += table_.columns[i];
+  }
+  text_ += '\n';
+  for (const std::vector<double>& row : table_.rows) append_row(text_, row);
+}
+
+HistoryTable read_history(const std::filesystem::path& path) {
+  const std::string text = read_file(path);
+  HistoryTable table;
+  int line_number = 0;
+  for (std::size_t begin = 0; begin < text.size();) {
+    const std::size_t newline = std::min(text.find('\n', begin), text.size());
+    std::string line = text.substr(begin, newline - begin);
+    begin = newline + 1;
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line_number == 1) {
+      table.columns = split_commas(line);
+      continue;
+    }
+    if (line.empty()) continue;
+    const std::vector<std::string> fields = split_commas(line);
+    if (fields.size() != table.columns.size())
+      throw InputError({path.string(), line_number, 0, ""},
+                       "row has " + std::to_string(fields.size()) + " values for " +
+                           std::to_string(table.columns.size()) + " columns");
+    std::vector<double>& row = table.rows.emplace_back(fields.size());
+    std::size_t column = 1;  // 1-based character column of fields[i] in the line
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+      const std::string& text = fields[i];
+      const auto parsed = std::from_chars(text.data(), text.data() + text.size(), row[i]);
+      if (text.empty() || parsed.ec != std::errc() || parsed.ptr != text.data() + text.size())
+        throw InputError({path.string(), line_number, static_cast<int>(column), table.columns[i]},
+                         "'" + text + "' is not a number");
+      column += text.size() + 1;
+    }
+  }
+  if (line_number == 0) throw InputError({path.string(), 0, 0, ""}, "empty history file");
+  return table;
+}
+
+}  // namespace plisse

@@ -1,0 +1,71 @@
+#include "io/run_log.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <ostream>
+#include <utility>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+
+namespace plisse {
+
+RunLog::RunLog(std::filesystem::path log_file, std::ostream* out, std::ostream* err)
+    : log_file_(std::move(log_file)), out_(out), err_(err), start_(std::chrono::steady_clock::now()) {}
+
+RunLog::RunLog(std::filesystem::path log_file) : RunLog(std::move(log_file), &std::cout, &std::cerr) {}
+
+RunLog::~RunLog() {
+  try {
+    flush();
+  } catch (const std::exception& e) {
+    if (err_ != nullptr) *err_ << "warning: " << e.what() << '\n';
+  }
+}
+
+void RunLog::info(std::string_view message) { add("", message, out_); }
+void RunLog::warn(std::string_view message) { add("warning: ", message, err_); }
+void RunLog::error(std::string_view message) { add("error: ", message, err_); }
+
+double RunLog::elapsed_seconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+void RunLog::add(std::string_view prefix, std::string_view message, std::ostream* echo) {
+  char stamp[32];
+  std::snprintf(stamp, sizeof stamp, "[%7.1fs] ", elapsed_seconds());
+  std::lock_guard lock(mutex_);
+  std::size_t begin = 0;
+  do {
+    const std::size_t newline = std::min(message.find('\n', begin), message.size());
+    const std::string_view line = message.substr(begin, newline - begin);
+    if (echo != nullptr) *echo << prefix << line << '\n';
+    text_ += stamp;
+    text_ += prefix;
+    text_ += line;
+    text_ += '\n';
+    begin = newline + 1;
+  } while (begin < message.size());
+  if (echo != nullptr) echo->flush();
+}
+
+void RunLog::flush() {
+  if (log_file_.empty()) return;
+  // Writing under the lock keeps concurrent flushes in order: the newest text lands last.
+  std::lock_guard lock(mutex_);
+  write_file_atomically(log_file_, text_);
+}
+
+std::vector<std::string> RunLog::lines() const {
+  std::lock_guard lock(mutex_);
+  std::vector<std::string> result;
+  for (std::size_t begin = 0; begin < text_.size();) {
+    const std::size_t newline = text_.find('\n', begin);
+    result.push_back(text_.substr(begin, newline - begin));
+    begin = newline + 1;
+  }
+  return result;
+}
+
+}  // namespace plisse

@@ -1,0 +1,78 @@
+#pragma once
+/// VTU (VTK XML UnstructuredGrid) writer for ParaView and other VTK readers.
+///
+/// Format (VTK file formats, "XML File Formats": UnstructuredGrid): version 1.0, byte order
+/// LittleEndian, header_type UInt64, one piece, every data array in a single
+/// <AppendedData encoding="raw"> block; each array there is a UInt64 byte count followed by the
+/// raw little-endian values. Points are Float64, connectivity and offsets Int64, types UInt8,
+/// fields Float64. The file is written atomically (io/atomic_file.hpp).
+///
+/// Field component conventions (what ParaView expects):
+///   1 component  scalar
+///   3 components vector (x, y, z)
+///   6 components symmetric tensor in VTK order xx, yy, zz, xy, yz, xz
+///   9 components full tensor, row-major: T(i, j) at component 3 i + j
+/// Values are stored point-major (or cell-major): all components of point 0, then of point 1...
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/types.hpp"
+#include "mesh/mesh.hpp"
+
+namespace plisse {
+
+/// VTK cell type ids (vtkCellType.h) of the cells plisse writes. Node order is VTK's.
+enum class VtkCellType : std::uint8_t {
+  kTriangle = 5,             ///< 3 nodes
+  kTetra = 10,               ///< 4 nodes
+  kQuadraticTriangle = 22,   ///< 6 nodes: corners, then edges 01, 12, 20 (same as Gmsh)
+  kQuadraticTetra = 24,      ///< 10 nodes: corners, then edges 01, 12, 20, 03, 13, 23
+};
+
+/// Number of nodes of one cell of `type`.
+int n_cell_nodes(VtkCellType type);
+
+/// `text` with the XML special characters & < > " ' replaced by entities, for attribute values
+/// (field names here, file names in io/pvd_writer).
+std::string escape_xml(std::string_view text);
+
+/// A named point or cell field. Owns its values: n_components values per point (or cell),
+/// point-major, Float64; n_components is 1, 3, 6 or 9 (see the file comment for their order).
+struct VtuField {
+  std::string name;   ///< shown in ParaView; unique among the point (resp. cell) fields
+  int n_components = 1;
+  std::vector<double> values;
+};
+
+/// Writes one piece whose cells all have `type`. `connectivity` lists n_cell_nodes(type) node
+/// indices (0-based, into `points`, VTK node order) per cell. `points` [mm] are whatever the
+/// caller wants shown: reference or deformed coordinates. Checks every size and index before
+/// writing (plisse::Error on violation; no file is written then); throws plisse::Error naming the
+/// path when the file cannot be written. An existing file at `path` is replaced atomically.
+void write_vtu(const std::filesystem::path& path, std::span<const Vec3d> points, VtkCellType type,
+               std::span<const int> connectivity, const std::vector<VtuField>& point_fields,
+               const std::vector<VtuField>& cell_fields);
+
+/// Linear tetrahedra (VTK_TETRA), corner order as in Mesh::tets.
+void write_vtu(const std::filesystem::path& path, std::span<const Vec3d> points,
+               std::span<const std::array<int, 4>> tets, const std::vector<VtuField>& point_fields,
+               const std::vector<VtuField>& cell_fields);
+
+/// Triangles (VTK_TRIANGLE), e.g. a surface piece for wrinkle metrics.
+void write_vtu(const std::filesystem::path& path, std::span<const Vec3d> points,
+               std::span<const std::array<int, 3>> triangles,
+               const std::vector<VtuField>& point_fields, const std::vector<VtuField>& cell_fields);
+
+/// The tetrahedra of `mesh`: VTK_TETRA for a linear mesh, VTK_QUADRATIC_TETRA for a 10-node mesh
+/// (edge nodes reordered from Gmsh's 01, 12, 20, 30, 32, 31 to VTK's 01, 12, 20, 03, 13, 23).
+/// `points` replaces mesh.nodes (e.g. deformed positions) and must have mesh.n_nodes() entries.
+void write_vtu(const std::filesystem::path& path, const Mesh& mesh,
+               std::span<const Vec3d> points, const std::vector<VtuField>& point_fields,
+               const std::vector<VtuField>& cell_fields);
+
+}  // namespace plisse

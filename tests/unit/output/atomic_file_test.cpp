@@ -1,0 +1,102 @@
+#include "io/atomic_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "output_test_support.hpp"
+
+namespace plisse {
+namespace {
+
+using test::contents;
+using test::entries;
+using test::ScratchDir;
+
+TEST(AtomicFile, WritesContentExactlyAndLeavesNoTemporaryFile) {
+  const ScratchDir dir;
+  const std::string content = std::string("line 1\nline 2\n") + '\0' + "binary\xff";
+  write_file_atomically(dir / "a.txt", content);
+  EXPECT_EQ(contents(dir / "a.txt"), content);
+  EXPECT_EQ(entries(dir.path()), std::set<std::string>{"a.txt"});
+}
+
+TEST(AtomicFile, ReplacesALongerExistingFileWhole) {
+  const ScratchDir dir;
+  write_file_atomically(dir / "a.txt", std::string(100000, 'x'));
+  write_file_atomically(dir / "a.txt", "short");
+  EXPECT_EQ(contents(dir / "a.txt"), "short");  // no tail of the old content
+  EXPECT_EQ(entries(dir.path()), std::set<std::string>{"a.txt"});
+}
+
+TEST(AtomicFile, TargetKeepsOldContentUntilCommit) {
+  const ScratchDir dir;
+  write_file_atomically(dir / "a.vtu", "old");
+  std::string expected;
+  AtomicFile file(dir / "a.vtu");
+  for (int i = 0; i < 1000; ++i) {  // small pieces through the buffer, then one large piece
+    const std::string piece = "piece " + std::to_string(i) + "\n";
+    file.write(piece);
+    expected += piece;
+  }
+  const std::string large(300000, 'y');
+  file.write(large.data(), large.size());
+  expected += large;
+  EXPECT_EQ(contents(dir / "a.vtu"), "old");  // a reader during the write sees the old file
+  EXPECT_EQ(entries(dir.path()).size(), 2u);  // target and the temporary beside it
+  EXPECT_EQ(file.temporary().parent_path(), dir.path());
+  file.commit();
+  EXPECT_EQ(contents(dir / "a.vtu"), expected);
+  EXPECT_EQ(entries(dir.path()), std::set<std::string>{"a.vtu"});
+  EXPECT_THROW(file.write("more"), Error);
+}
+
+TEST(AtomicFile, AbandonedWriteRemovesTemporaryAndKeepsOldFile) {
+  const ScratchDir dir;
+  write_file_atomically(dir / "a.csv", "old,content\n");
+  {
+    AtomicFile file(dir / "a.csv");
+    file.write("new,par");
+  }  // destroyed without commit, as when an exception unwinds
+  EXPECT_EQ(contents(dir / "a.csv"), "old,content\n");
+  EXPECT_EQ(entries(dir.path()), std::set<std::string>{"a.csv"});
+}
+
+TEST(AtomicFile, MovedFileCommitsOnce) {
+  const ScratchDir dir;
+  AtomicFile first(dir / "a.txt");
+  first.write("abc");
+  AtomicFile second(std::move(first));
+  second.commit();
+  EXPECT_EQ(contents(dir / "a.txt"), "abc");
+  EXPECT_EQ(entries(dir.path()), std::set<std::string>{"a.txt"});
+}
+
+TEST(AtomicFile, UnwritableLocationThrowsErrorWithPathAndReason) {
+  const ScratchDir dir;
+  const std::filesystem::path target = dir / "missing" / "a.txt";
+  try {
+    write_file_atomically(target, "x");
+    FAIL() << "no exception";
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(target.string()), std::string::npos) << message;
+    EXPECT_NE(message.find("No such file or directory"), std::string::npos) << message;
+  }
+  EXPECT_TRUE(entries(dir.path()).empty());
+}
+
+TEST(AtomicFile, ReadFileReturnsContentAndReportsMissingFileAsInputError) {
+  const ScratchDir dir;
+  write_file_atomically(dir / "a.txt", "content\n");
+  EXPECT_EQ(read_file(dir / "a.txt"), "content\n");
+  try {
+    read_file(dir / "b.txt");
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.place().file, (dir / "b.txt").string());
+    EXPECT_NE(e.rule().find("No such file or directory"), std::string::npos) << e.rule();
+  }
+}
+
+}  // namespace
+}  // namespace plisse
