@@ -5,7 +5,8 @@
 /// ("error: ...") on stderr. log.txt: every line prefixed with the wall time elapsed since the
 /// log was created, "[   12.3s] message". log.txt is rewritten atomically on flush() (the solver
 /// calls it after each step and at exit; the destructor calls it too), so it is never truncated.
-/// A multi-line message becomes several lines, each prefixed. Thread-safe.
+/// A multi-line message becomes several lines, each prefixed. Thread-safe. In a distributed run
+/// only one rank (rank 0) should own a RunLog with a file: ranks do not coordinate here.
 #include <chrono>
 #include <filesystem>
 #include <iosfwd>

@@ -4,6 +4,7 @@
 #include <bit>
 #include <set>
 #include <string_view>
+#include <utility>
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -178,6 +179,35 @@ std::string escape_xml(std::string_view text) {
     }
   }
   return out;
+}
+
+VtuField make_scalar_field(std::string name, std::span<const double> values) {
+  return {std::move(name), 1, std::vector<double>(values.begin(), values.end())};
+}
+
+VtuField make_vector_field(std::string name, std::span<const Vec3d> vectors) {
+  VtuField field{std::move(name), 3, {}};
+  field.values.reserve(3 * vectors.size());
+  for (const Vec3d& v : vectors) field.values.insert(field.values.end(), {v(0), v(1), v(2)});
+  return field;
+}
+
+VtuField make_symmetric_tensor_field(std::string name, std::span<const Mat3d> tensors) {
+  VtuField field{std::move(name), 6, {}};
+  field.values.reserve(6 * tensors.size());
+  for (const Mat3d& T : tensors)
+    field.values.insert(field.values.end(),
+                        {T(0, 0), T(1, 1), T(2, 2), T(0, 1), T(1, 2), T(0, 2)});
+  return field;
+}
+
+VtuField make_tensor_field(std::string name, std::span<const Mat3d> tensors) {
+  VtuField field{std::move(name), 9, {}};
+  field.values.reserve(9 * tensors.size());
+  for (const Mat3d& T : tensors)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) field.values.push_back(T(i, j));
+  return field;
 }
 
 int n_cell_nodes(VtkCellType type) {

@@ -49,6 +49,15 @@ struct VtuField {
   std::vector<double> values;
 };
 
+/// Field builders that put components in VTK's order (file comment), so callers cannot mix it up.
+VtuField make_scalar_field(std::string name, std::span<const double> values);
+VtuField make_vector_field(std::string name, std::span<const Vec3d> vectors);
+/// Symmetric tensors (e.g. Cauchy stress [MPa]) as xx, yy, zz, xy, yz, xz. Reads the upper
+/// triangle; the caller guarantees symmetry.
+VtuField make_symmetric_tensor_field(std::string name, std::span<const Mat3d> tensors);
+/// Full tensors (e.g. F) row-major: T(0,0), T(0,1), T(0,2), T(1,0), ...
+VtuField make_tensor_field(std::string name, std::span<const Mat3d> tensors);
+
 /// Writes one piece whose cells all have `type`. `connectivity` lists n_cell_nodes(type) node
 /// indices (0-based, into `points`, VTK node order) per cell. `points` [mm] are whatever the
 /// caller wants shown: reference or deformed coordinates. Checks every size and index before

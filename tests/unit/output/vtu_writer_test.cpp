@@ -149,6 +149,38 @@ TEST(VtuWriter, LinearMeshAndTriangleSurfaceGiveTheirCellTypes) {
   expect_same_values(surface["cell_data"]["wrinkle_state"][0], state);
 }
 
+TEST(VtuWriter, FieldBuildersUseVtkComponentOrder) {
+  const ScratchDir dir;
+  const std::vector<Vec3d> points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  Mat3d sigma;  // symmetric, every entry distinct
+  sigma << 11, 12, 13,
+           12, 22, 23,
+           13, 23, 33;
+  Mat3d F;
+  F << 1.1, 0.2, 0.3,
+       0.4, 1.5, 0.6,
+       0.7, 0.8, 1.9;
+  const std::vector<Mat3d> stresses = {sigma}, gradients = {F};
+  const std::vector<double> J = {F.determinant()};
+  write_vtu(dir / "a.vtu", points, std::vector<std::array<int, 4>>{{0, 1, 2, 3}},
+            {make_vector_field("displacement", points)},
+            {make_symmetric_tensor_field("cauchy_stress", stresses),
+             make_tensor_field("F", gradients), make_scalar_field("J", J)});
+  const nlohmann::json read = read_with_python("vtu", dir / "a.vtu");
+  ASSERT_FALSE(read.is_null());
+  const auto row = [](const nlohmann::json& values) {
+    std::vector<double> out;
+    for (const auto& x : values) out.push_back(from_hex(x));
+    return out;
+  };
+  EXPECT_EQ(row(read["cell_data"]["cauchy_stress"][0][0]),
+            (std::vector<double>{11, 22, 33, 12, 23, 13}));  // xx, yy, zz, xy, yz, xz
+  EXPECT_EQ(row(read["cell_data"]["F"][0][0]),
+            (std::vector<double>{1.1, 0.2, 0.3, 0.4, 1.5, 0.6, 0.7, 0.8, 1.9}));  // row-major
+  EXPECT_EQ(row(read["cell_data"]["J"][0][0]), J);
+  EXPECT_EQ(row(read["point_data"]["displacement"][3]), (std::vector<double>{0, 0, 1}));
+}
+
 TEST(VtuWriter, FieldNamesWithXmlCharactersAreEscaped) {
   const ScratchDir dir;
   const std::vector<Vec3d> points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
