@@ -65,9 +65,22 @@ const MeshKind* find_mesh_kind(const std::string& name);
 std::optional<Symmetry> parse_symmetry(const std::string& text);
 std::string to_string(Symmetry s);
 
-/// Generates the mesh described by `spec`. Precondition: the values satisfy the declared ranges
-/// (callers validate input against `mesh_kinds()` and report InputError); cross-option rules
-/// (e.g. thickness < inner_radius) are checked here and reported as InputError with the key.
+/// Generates the mesh described by `spec` (docs/meshes.md). Callers validate input against
+/// `mesh_kinds()` first to report their own place; `generate_mesh` calls `validate_mesh_spec`
+/// again, so an invalid spec never reaches the generators. Every tetrahedron is positively
+/// oriented; boundary triangles have the outward normal by the right-hand rule.
 Mesh generate_mesh(const MeshGenerationSpec& spec);
+
+/// Checks `spec` without generating: the kind is known (key "mesh.generate"), each option of the
+/// kind is in its declared range, the cross-option rules hold (e.g. airbag thickness below the
+/// smallest radius of curvature of the mid-surface) and the estimated size is at most
+/// kMaxGeneratedTets. Throws InputError with InputPlace key "mesh.<key>" and the rule.
+void validate_mesh_spec(const MeshGenerationSpec& spec);
+
+/// Estimated number of tetrahedra `generate_mesh(spec)` makes (exact for cube and sheet).
+double estimate_n_tets(const MeshGenerationSpec& spec);
+
+/// Largest accepted estimated mesh size (tetrahedra).
+inline constexpr double kMaxGeneratedTets = 20e6;
 
 }  // namespace plisse

@@ -1,1 +1,453 @@
 #include "mesh/gmsh_io.hpp"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numeric>
+#include <unordered_map>
+#include <vector>
+
+#include "core/error.hpp"
+#include "mesh/gmsh_session.hpp"
+#include "mesh/topology.hpp"
+
+namespace plisse {
+namespace {
+
+// Gmsh element type numbers (Gmsh reference manual, "MSH file format", element types).
+constexpr int kTri3 = 2, kTet4 = 4, kTri6 = 9, kTet10 = 11, kPoint = 15;
+
+std::string element_type_name(int type) {
+  std::string name;
+  int dim = 0, order = 0, n_nodes = 0, n_primary = 0;
+  std::vector<double> local;
+  gmsh::model::mesh::getElementProperties(type, name, dim, order, n_nodes, local, n_primary);
+  return name;
+}
+
+InputError file_error(const std::string& path, const std::string& rule) {
+  return InputError(InputPlace{path, 0, 0, ""}, rule);
+}
+
+/// Hash of a small array of node indices (for duplicate detection).
+struct ArrayHash {
+  template <std::size_t N> std::size_t operator()(const std::array<int, N>& a) const {
+    std::size_t h = 1469598103934665603ull;
+    for (int v : a) h = (h ^ static_cast<std::size_t>(v)) * 1099511628211ull;
+    return h;
+  }
+};
+
+/// Elements of one Gmsh type read from the whole model, in increasing element tag, with
+/// repeated elements (same corner set) merged.
+template <int NCorner, int NNode> struct ElementBlock {
+  std::vector<std::array<int, NNode>> nodes;                 ///< corners first, Gmsh order
+  std::unordered_map<std::size_t, int> index_of_tag;         ///< Gmsh element tag -> index
+  int n_duplicates = 0;
+};
+
+template <int NCorner, int NNode>
+ElementBlock<NCorner, NNode> read_block(int type, const std::unordered_map<std::size_t, int>& node_index,
+                                        const std::string& path) {
+  ElementBlock<NCorner, NNode> block;
+  std::vector<std::size_t> tags, node_tags;
+  gmsh::model::mesh::getElementsByType(type, tags, node_tags, -1);
+  if (node_tags.size() != tags.size() * NNode)
+    throw file_error(path, "inconsistent element data for " + element_type_name(type));
+  std::vector<std::size_t> order(tags.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tags[a] < tags[b]; });
+  std::unordered_map<std::array<int, NCorner>, int, ArrayHash> by_corners;
+  by_corners.reserve(tags.size());
+  block.index_of_tag.reserve(tags.size());
+  for (std::size_t e : order) {
+    std::array<int, NNode> n{};
+    for (int k = 0; k < NNode; ++k) {
+      const auto it = node_index.find(node_tags[e * NNode + static_cast<std::size_t>(k)]);
+      if (it == node_index.end())
+        throw file_error(path, element_type_name(type) + " element " + std::to_string(tags[e]) +
+                                   " references a node that is not in the file");
+      n[static_cast<std::size_t>(k)] = it->second;
+    }
+    std::array<int, NCorner> key{};
+    std::copy_n(n.begin(), NCorner, key.begin());
+    std::sort(key.begin(), key.end());
+    const auto [it, inserted] = by_corners.emplace(key, static_cast<int>(block.nodes.size()));
+    if (inserted)
+      block.nodes.push_back(n);
+    else
+      ++block.n_duplicates;
+    block.index_of_tag[tags[e]] = it->second;
+  }
+  return block;
+}
+
+/// Adds the elements of `type` on Gmsh entity (dim, entity) to `indices` via `index_of_tag`.
+void collect_group(int type, int entity, const std::unordered_map<std::size_t, int>& index_of_tag,
+                   std::vector<int>& indices) {
+  std::vector<std::size_t> tags, node_tags;
+  gmsh::model::mesh::getElementsByType(type, tags, node_tags, entity);
+  for (std::size_t t : tags) {
+    const auto it = index_of_tag.find(t);
+    if (it != index_of_tag.end()) indices.push_back(it->second);
+  }
+}
+
+void sort_unique(std::vector<int>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+/// Orients every triangle that is a boundary face of the tetrahedra like that face (outward).
+int orient_triangles_outward(Mesh& mesh) {
+  const auto faces = compute_boundary_faces(mesh);
+  std::unordered_map<std::array<int, 3>, std::size_t, ArrayHash> face_of;
+  face_of.reserve(faces.size());
+  for (std::size_t i = 0; i < faces.size(); ++i) face_of.emplace(sorted_face(faces[i].nodes), i);
+  int n_flipped = 0;
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    auto& tri = mesh.triangles[i];
+    const auto it = face_of.find(sorted_face(tri));
+    if (it == face_of.end()) continue;
+    const auto& out = faces[it->second].nodes;
+    // Same orientation iff tri is a cyclic rotation of out.
+    const bool same = (tri == out) || (tri == std::array<int, 3>{out[1], out[2], out[0]}) ||
+                      (tri == std::array<int, 3>{out[2], out[0], out[1]});
+    if (same) continue;
+    std::swap(tri[1], tri[2]);
+    // Corners (0, 1, 2) -> (0, 2, 1): edges (01, 12, 20) become (02, 21, 10) = old (2, 1, 0).
+    if (!mesh.triangle_edge_nodes.empty()) std::swap(mesh.triangle_edge_nodes[i][0], mesh.triangle_edge_nodes[i][2]);
+    ++n_flipped;
+  }
+  return n_flipped;
+}
+
+Mesh read_model(const std::string& path, GmshReadInfo& info) {
+  Mesh mesh;
+  // Element types present: refuse what plisse cannot use, naming the type.
+  std::vector<int> types3, types2;
+  gmsh::model::mesh::getElementTypes(types3, 3, -1);
+  gmsh::model::mesh::getElementTypes(types2, 2, -1);
+  for (int type : types3)
+    if (type != kTet4 && type != kTet10)
+      throw file_error(path, "unsupported volume element type '" + element_type_name(type) + "' (Gmsh type " +
+                                 std::to_string(type) +
+                                 "): plisse reads tetrahedra only (4 or 10 nodes); re-mesh the volume with "
+                                 "tetrahedra");
+  for (int type : types2)
+    if (type != kTri3 && type != kTri6)
+      throw file_error(path, "unsupported surface element type '" + element_type_name(type) + "' (Gmsh type " +
+                                 std::to_string(type) + "): boundary elements must be triangles (3 or 6 nodes)");
+  const bool has4 = std::count(types3.begin(), types3.end(), kTet4) > 0;
+  const bool has10 = std::count(types3.begin(), types3.end(), kTet10) > 0;
+  if (!has4 && !has10) throw file_error(path, "the file contains no tetrahedra");
+  if (has4 && has10) throw file_error(path, "the file mixes 4-node and 10-node tetrahedra; use one order");
+  const bool has_tri6 = std::count(types2.begin(), types2.end(), kTri6) > 0;
+  const bool has_tri3 = std::count(types2.begin(), types2.end(), kTri3) > 0;
+  if (has_tri6 && (has4 || has_tri3))
+    throw file_error(path, "6-node triangles need 10-node tetrahedra and no 3-node triangles");
+
+  // Nodes, renumbered by increasing Gmsh tag.
+  std::vector<std::size_t> node_tags;
+  std::vector<double> coords, parametric;
+  gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
+  std::vector<std::size_t> order(node_tags.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return node_tags[a] < node_tags[b]; });
+  std::unordered_map<std::size_t, int> node_index;
+  node_index.reserve(node_tags.size());
+  mesh.nodes.reserve(node_tags.size());
+  for (std::size_t i : order) {
+    if (!node_index.emplace(node_tags[i], static_cast<int>(mesh.nodes.size())).second)
+      continue;  // a node listed by two entities (boundary nodes) is the same node
+    mesh.nodes.emplace_back(coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]);
+  }
+
+  // Tetrahedra and triangles.
+  std::unordered_map<std::size_t, int> tet_of_tag, tri_of_tag;
+  if (has4) {
+    auto block = read_block<4, 4>(kTet4, node_index, path);
+    mesh.tets = std::move(block.nodes);
+    tet_of_tag = std::move(block.index_of_tag);
+    info.n_duplicate_elements += block.n_duplicates;
+  } else {
+    auto block = read_block<4, 10>(kTet10, node_index, path);
+    for (const auto& n : block.nodes) {
+      mesh.tets.push_back({n[0], n[1], n[2], n[3]});
+      mesh.tet_edge_nodes.push_back({n[4], n[5], n[6], n[7], n[8], n[9]});
+    }
+    tet_of_tag = std::move(block.index_of_tag);
+    info.n_duplicate_elements += block.n_duplicates;
+  }
+  if (has_tri6) {
+    auto block = read_block<3, 6>(kTri6, node_index, path);
+    for (const auto& n : block.nodes) {
+      mesh.triangles.push_back({n[0], n[1], n[2]});
+      mesh.triangle_edge_nodes.push_back({n[3], n[4], n[5]});
+    }
+    tri_of_tag = std::move(block.index_of_tag);
+    info.n_duplicate_elements += block.n_duplicates;
+  } else if (has_tri3) {
+    auto block = read_block<3, 3>(kTri3, node_index, path);
+    mesh.triangles = std::move(block.nodes);
+    tri_of_tag = std::move(block.index_of_tag);
+    info.n_duplicate_elements += block.n_duplicates;
+  }
+  if (has10 && has_tri3) {
+    // Linear triangles on a quadratic mesh: take their edge nodes from the tetrahedra.
+    std::map<std::pair<int, int>, int> mid;
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+      for (std::size_t e = 0; e < 6; ++e) {
+        const int a = mesh.tets[t][static_cast<std::size_t>(kTetEdges[e][0])];
+        const int b = mesh.tets[t][static_cast<std::size_t>(kTetEdges[e][1])];
+        mid[{std::min(a, b), std::max(a, b)}] = mesh.tet_edge_nodes[t][e];
+      }
+    for (const auto& tri : mesh.triangles) {
+      std::array<int, 3> edge{};
+      for (int e = 0; e < 3; ++e) {
+        const int a = tri[static_cast<std::size_t>(e)], b = tri[static_cast<std::size_t>((e + 1) % 3)];
+        const auto it = mid.find({std::min(a, b), std::max(a, b)});
+        if (it == mid.end())
+          throw file_error(path, "a 3-node triangle on a 10-node tetrahedral mesh is not on a tetrahedron edge");
+        edge[static_cast<std::size_t>(e)] = it->second;
+      }
+      mesh.triangle_edge_nodes.push_back(edge);
+    }
+  }
+
+  // Physical groups -> tags.
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, -1);
+  for (const auto& [dim, tag] : groups) {
+    if (dim != 2 && dim != 3) continue;
+    std::string name;
+    gmsh::model::getPhysicalName(dim, tag, name);
+    if (name == kUntaggedGroupName) continue;
+    if (name.empty()) name = std::to_string(dim) + ":" + std::to_string(tag);
+    std::vector<int> entities;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+    auto& indices = dim == 2 ? mesh.surface_tags[name] : mesh.volume_tags[name];
+    for (int entity : entities) {
+      if (dim == 3)
+        collect_group(has4 ? kTet4 : kTet10, entity, tet_of_tag, indices);
+      else
+        collect_group(has_tri6 ? kTri6 : kTri3, entity, tri_of_tag, indices);
+    }
+    sort_unique(indices);
+  }
+
+  // Orientation (see the header: a numbering convention in a reference mesh).
+  for (int t = 0; t < mesh.n_tets(); ++t)
+    if (tet_signed_volume(mesh, t) < 0.0) {
+      flip_tet(mesh, t);
+      ++info.n_flipped_tets;
+    }
+  info.n_flipped_triangles = orient_triangles_outward(mesh);
+  return mesh;
+}
+
+/// Per element: the indices (into `names`) of the tags containing it, and the tag names.
+struct Signatures {
+  std::vector<int> of_element;                 ///< signature id per element
+  std::vector<std::vector<int>> name_ids;      ///< per signature id: sorted name indices
+  std::vector<std::string> names;
+};
+
+Signatures compute_signatures(const std::map<std::string, std::vector<int>>& tags, std::size_t n_elements,
+                              const char* what) {
+  Signatures s;
+  std::vector<std::vector<int>> per_element(n_elements);
+  for (const auto& [name, indices] : tags) {
+    const int id = static_cast<int>(s.names.size());
+    s.names.push_back(name);
+    for (int i : indices) {
+      FE_CHECK(i >= 0 && static_cast<std::size_t>(i) < n_elements,
+               "write_gmsh: tag '" << name << "' lists " << what << " " << i << " out of range");
+      per_element[static_cast<std::size_t>(i)].push_back(id);
+    }
+  }
+  std::map<std::vector<int>, int> id_of;
+  s.of_element.resize(n_elements);
+  for (std::size_t e = 0; e < n_elements; ++e) {
+    auto& sig = per_element[e];
+    std::sort(sig.begin(), sig.end());
+    sig.erase(std::unique(sig.begin(), sig.end()), sig.end());
+    const auto [it, inserted] = id_of.emplace(sig, static_cast<int>(s.name_ids.size()));
+    if (inserted) s.name_ids.push_back(sig);
+    s.of_element[e] = it->second;
+  }
+  return s;
+}
+
+/// A run of consecutive elements with the same signature, stored as one discrete Gmsh entity
+/// (runs keep the element order through v2 files, whose writer renumbers elements entity by
+/// entity).
+struct Run {
+  int entity;
+  int signature;
+  std::size_t begin, end;
+};
+
+std::vector<Run> make_runs(int dim, const Signatures& s) {
+  std::vector<Run> runs;
+  for (std::size_t e = 0; e < s.of_element.size(); ++e) {
+    if (runs.empty() || s.of_element[e] != runs.back().signature)
+      runs.push_back({gmsh::model::addDiscreteEntity(dim), s.of_element[e], e, e + 1});
+    else
+      runs.back().end = e + 1;
+  }
+  return runs;
+}
+
+/// Physical groups of dimension `dim` from the runs; in v2 files untagged runs join the group
+/// kUntaggedGroupName so that Gmsh writes them.
+void add_groups(int dim, const Signatures& s, const std::vector<Run>& runs, bool keep_untagged) {
+  for (std::size_t id = 0; id < s.names.size(); ++id) {
+    std::vector<int> entities;
+    for (const auto& run : runs) {
+      const auto& sig = s.name_ids[static_cast<std::size_t>(run.signature)];
+      if (std::binary_search(sig.begin(), sig.end(), static_cast<int>(id))) entities.push_back(run.entity);
+    }
+    if (entities.empty()) continue;
+    const int group = gmsh::model::addPhysicalGroup(dim, entities);
+    gmsh::model::setPhysicalName(dim, group, s.names[id]);
+  }
+  if (!keep_untagged) return;
+  std::vector<int> untagged;
+  for (const auto& run : runs)
+    if (s.name_ids[static_cast<std::size_t>(run.signature)].empty()) untagged.push_back(run.entity);
+  if (untagged.empty()) return;
+  const int group = gmsh::model::addPhysicalGroup(dim, untagged);
+  gmsh::model::setPhysicalName(dim, group, kUntaggedGroupName);
+}
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+}  // namespace
+
+Mesh read_gmsh(const std::string& path) {
+  GmshReadInfo info;
+  return read_gmsh(path, info);
+}
+
+Mesh read_gmsh(const std::string& path, GmshReadInfo& info) {
+  info = GmshReadInfo{};
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw file_error(path, "mesh file not found");
+  if (!std::filesystem::is_regular_file(path, ec)) throw file_error(path, "not a regular file");
+  if (!std::ifstream(path).good()) throw file_error(path, "cannot open the mesh file for reading");
+  GmshSession session;
+  try {
+    gmsh::open(path);
+    session.check_input(path, "cannot read the mesh file");
+    Mesh mesh = read_model(path, info);
+    session.check_input(path, "cannot read the mesh file");
+    return mesh;
+  } catch (const Error&) {
+    throw;
+  } catch (const std::string& message) {  // Gmsh throws strings when AbortOnError is set
+    throw file_error(path, "cannot read the mesh file: " + message);
+  } catch (const std::exception& e) {
+    throw file_error(path, std::string("cannot read the mesh file: ") + e.what());
+  }
+}
+
+void write_gmsh(const Mesh& mesh, const std::string& path, double version, bool binary) {
+  if (!ends_with(path, ".msh"))
+    throw file_error(path, "the mesh file name must end in .msh (Gmsh picks the format from the extension)");
+  const bool v2 = version == 2.2;
+  FE_CHECK(v2 || version == 4.1, "write_gmsh: version must be 2.2 or 4.1 (got " << version << ")");
+  FE_CHECK(!mesh.tets.empty(), "write_gmsh: the mesh has no tetrahedra");
+  const bool second = mesh.order() == 2;
+  FE_CHECK(!second || mesh.tet_edge_nodes.size() == mesh.tets.size(), "write_gmsh: tet_edge_nodes size");
+  FE_CHECK(!second || mesh.triangle_edge_nodes.size() == mesh.triangles.size(),
+           "write_gmsh: triangle_edge_nodes size");
+  const auto n_nodes = static_cast<std::size_t>(mesh.n_nodes());
+  std::vector<char> used(n_nodes, 0);
+  auto use = [&](int node) {
+    FE_CHECK(node >= 0 && static_cast<std::size_t>(node) < n_nodes, "write_gmsh: node index " << node << " out of range");
+    used[static_cast<std::size_t>(node)] = 1;
+  };
+  for (const auto& t : mesh.tets) for (int n : t) use(n);
+  for (const auto& t : mesh.tet_edge_nodes) for (int n : t) use(n);
+  for (const auto& t : mesh.triangles) for (int n : t) use(n);
+  for (const auto& t : mesh.triangle_edge_nodes) for (int n : t) use(n);
+
+  const Signatures tet_sig = compute_signatures(mesh.volume_tags, mesh.tets.size(), "tetrahedron");
+  const Signatures tri_sig = compute_signatures(mesh.surface_tags, mesh.triangles.size(), "triangle");
+
+  GmshSession session;
+  try {
+    gmsh::model::add("plisse");
+    const auto tet_runs = make_runs(3, tet_sig);
+    const auto tri_runs = make_runs(2, tri_sig);
+
+    // All nodes live on the first volume entity; tags are index + 1.
+    std::vector<std::size_t> node_tags(n_nodes);
+    std::vector<double> coords(3 * n_nodes);
+    for (std::size_t i = 0; i < n_nodes; ++i) {
+      node_tags[i] = i + 1;
+      for (int c = 0; c < 3; ++c) coords[3 * i + static_cast<std::size_t>(c)] = mesh.nodes[i][c];
+    }
+    gmsh::model::mesh::addNodes(3, tet_runs.front().entity, node_tags, coords);
+
+    // Element tags: tetrahedra 1..n_tets, then triangles, then (v2) points, in mesh order.
+    std::size_t next_tag = 1;
+    for (const auto& run : tet_runs) {
+      std::vector<std::size_t> tags, nodes;
+      for (std::size_t e = run.begin; e < run.end; ++e) {
+        tags.push_back(next_tag++);
+        for (int n : mesh.tets[e]) nodes.push_back(static_cast<std::size_t>(n) + 1);
+        if (second) for (int n : mesh.tet_edge_nodes[e]) nodes.push_back(static_cast<std::size_t>(n) + 1);
+      }
+      gmsh::model::mesh::addElementsByType(run.entity, second ? kTet10 : kTet4, tags, nodes);
+    }
+    for (const auto& run : tri_runs) {
+      std::vector<std::size_t> tags, nodes;
+      for (std::size_t e = run.begin; e < run.end; ++e) {
+        tags.push_back(next_tag++);
+        for (int n : mesh.triangles[e]) nodes.push_back(static_cast<std::size_t>(n) + 1);
+        if (second) for (int n : mesh.triangle_edge_nodes[e]) nodes.push_back(static_cast<std::size_t>(n) + 1);
+      }
+      gmsh::model::mesh::addElementsByType(run.entity, second ? kTri6 : kTri3, tags, nodes);
+    }
+    add_groups(3, tet_sig, tet_runs, v2);
+    add_groups(2, tri_sig, tri_runs, v2);
+    if (v2) {
+      // Gmsh's v2 writer only writes nodes of written elements: keep unused nodes as points.
+      std::vector<std::size_t> tags, nodes;
+      for (std::size_t i = 0; i < n_nodes; ++i)
+        if (!used[i]) {
+          tags.push_back(next_tag++);
+          nodes.push_back(i + 1);
+        }
+      if (!tags.empty()) {
+        const int entity = gmsh::model::addDiscreteEntity(0);
+        gmsh::model::mesh::addElementsByType(entity, kPoint, tags, nodes);
+        const int group = gmsh::model::addPhysicalGroup(0, {entity});
+        gmsh::model::setPhysicalName(0, group, kUntaggedGroupName);
+      }
+    }
+    session.check_internal("write_gmsh: building the Gmsh model");
+    gmsh::option::setNumber("Mesh.MshFileVersion", version);
+    gmsh::option::setNumber("Mesh.Binary", binary ? 1 : 0);
+    // v4: SaveAll writes every element and keeps the physical groups in $Entities. v2: SaveAll
+    // would write physical tag 0 for every element, so only grouped elements are written.
+    gmsh::option::setNumber("Mesh.SaveAll", v2 ? 0 : 1);
+    gmsh::option::setNumber("Mesh.SaveParametric", 0);
+    gmsh::write(path);
+    session.check_input(path, "cannot write the mesh file");
+  } catch (const Error&) {
+    throw;
+  } catch (const std::string& message) {
+    throw file_error(path, "cannot write the mesh file: " + message);
+  }
+}
+
+}  // namespace plisse

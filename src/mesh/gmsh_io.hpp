@@ -1,18 +1,49 @@
 #pragma once
 /// Reading and writing Gmsh `.msh` files through the Gmsh SDK (v2 and v4, ASCII and binary).
+///
+/// Conventions of the Mesh produced by `read_gmsh` (docs/meshes.md, "Your own mesh"):
+/// - nodes are all nodes of the file, renumbered 0..n-1 in increasing Gmsh node tag; nodes that no
+///   tetrahedron uses are kept (check_mesh warns about them);
+/// - tetrahedra and triangles are in increasing Gmsh element tag; an element repeated with the
+///   same nodes (as Gmsh's v2 writer does for an element in several physical groups) is kept once
+///   and belongs to all those groups;
+/// - tetrahedra numbered with negative volume are renumbered (corners 1 and 2 swapped, edge nodes
+///   accordingly): in a reference mesh the sign is only a numbering convention, so the reader
+///   normalises it; degenerate (zero-volume) tetrahedra are left for check_mesh to report;
+/// - boundary triangles are oriented with the outward normal by the right-hand rule (a triangle
+///   that is not a boundary face of the tetrahedra keeps the file's orientation);
+/// - physical groups of dimension 0 and 1, and the group "plisse:untagged" that `write_gmsh`
+///   adds to v2 files, are ignored.
 #include <string>
 
 #include "mesh/mesh.hpp"
 
 namespace plisse {
 
+/// Name of the physical groups `write_gmsh` adds to v2 files to keep untagged elements and
+/// unused nodes (Gmsh's v2 writer drops elements outside physical groups); `read_gmsh` skips it.
+inline constexpr const char* kUntaggedGroupName = "plisse:untagged";
+
+/// What `read_gmsh` normalised (for log messages).
+struct GmshReadInfo {
+  int n_flipped_tets = 0;           ///< tetrahedra renumbered to positive orientation
+  int n_flipped_triangles = 0;      ///< boundary triangles turned to the outward orientation
+  int n_duplicate_elements = 0;     ///< repeated tetrahedra/triangles merged
+};
+
 /// Reads a tetrahedral mesh. Physical groups of dimension 2 become surface tags, of dimension 3
 /// volume tags (unnamed groups are called "<dim>:<tag>"). Linear and second-order (10-node)
 /// tetrahedra are read; other volume element types, a missing or unreadable file and a mesh
 /// without tetrahedra are reported as InputError naming the file.
 Mesh read_gmsh(const std::string& path);
+/// Same, and reports what was normalised in `info`.
+Mesh read_gmsh(const std::string& path, GmshReadInfo& info);
 
-/// Writes `mesh` with its tags as physical groups. `version` is 2.2 or 4.1.
+/// Writes `mesh` with its tags as physical groups. `version` is 2.2 or 4.1. The file name must end
+/// in ".msh" (InputError otherwise; also when the file cannot be written).
+/// Round trip through `read_gmsh`: nodes, tetrahedra, triangles and non-empty tags come back
+/// identical, coordinates bit for bit in binary files and to Gmsh's 16 significant digits in
+/// ASCII files. Empty tags are not written (Gmsh stores no empty physical group).
 void write_gmsh(const Mesh& mesh, const std::string& path, double version = 4.1, bool binary = false);
 
 }  // namespace plisse

@@ -10,14 +10,27 @@ namespace plisse {
 struct MeshReport {
   std::vector<std::string> errors;    ///< the mesh cannot be used (each names the element/tag)
   std::vector<std::string> warnings;  ///< usable but suspicious
-  double min_volume = 0.0;            ///< smallest tetrahedron volume [mm^3]
-  double max_aspect_ratio = 0.0;      ///< largest (longest edge / inradius) / (2 sqrt 6)
+  double min_volume = 0.0;            ///< smallest (signed) tetrahedron volume [mm^3]
+  double max_aspect_ratio = 0.0;      ///< largest (longest edge / inradius) / (2 sqrt 6); 1 if regular
+  int n_unused_nodes = 0;             ///< nodes used by no tetrahedron (corner or edge node)
+  int n_boundary_faces = 0;           ///< faces of exactly one tetrahedron
   bool ok() const { return errors.empty(); }
 };
 
-/// Checks: inverted or degenerate tetrahedra, unused nodes, missing or empty tags among
-/// `required_tags`, boundary triangles not on the boundary of the tetrahedra, and non-manifold
-/// boundary edges (shared by other than two boundary faces).
+/// Aspect ratio above which check_mesh warns (a regular tetrahedron has 1; thin-wall meshes with
+/// a few layers through the thickness typically stay below 20).
+inline constexpr double kAspectRatioWarning = 100.0;
+
+/// Checks, in this order (each problem is one message naming the element, node, edge or tag;
+/// at most 10 messages per kind, then a count):
+/// - errors: node indices out of range; inverted tetrahedra (volume < 0) and degenerate ones
+///   (|volume| <= 1e-12 (longest edge)^3), with index and volume; second-order edge nodes that
+///   differ between tetrahedra sharing an edge; tags listing indices out of range;
+///   `required_tags` missing or empty (surface or volume tags); triangles that are no face of
+///   any tetrahedron; non-manifold boundary edges (edges of the tetrahedral boundary shared by
+///   other than two boundary faces, e.g. two tetrahedra touching along one edge only);
+/// - warnings: nodes used by no tetrahedron; triangles that are interior faces (between two
+///   tetrahedra); aspect ratio above kAspectRatioWarning.
 MeshReport check_mesh(const Mesh& mesh, const std::vector<std::string>& required_tags = {});
 
 }  // namespace plisse

@@ -1,0 +1,59 @@
+#include "mesh/box_mesh.hpp"
+
+#include "core/error.hpp"
+#include "mesh/boundary_tags.hpp"
+
+namespace plisse {
+
+Mesh make_box_mesh(const Vec3d& extent, const std::array<int, 3>& cells) {
+  const int nx = cells[0], ny = cells[1], nz = cells[2];
+  FE_CHECK(nx >= 1 && ny >= 1 && nz >= 1, "make_box_mesh: cell counts must be >= 1");
+  Mesh mesh;
+  auto coordinate = [](double length, int i, int n) { return i == n ? length : length * i / n; };
+  auto node = [&](int i, int j, int k) { return i + (nx + 1) * (j + (ny + 1) * k); };
+  mesh.nodes.reserve(static_cast<std::size_t>((nx + 1) * (ny + 1) * (nz + 1)));
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i)
+        mesh.nodes.emplace_back(coordinate(extent.x(), i, nx), coordinate(extent.y(), j, ny),
+                                coordinate(extent.z(), k, nz));
+  // The six axis permutations (a, b, c); odd ones give negatively oriented paths, fixed below.
+  static constexpr std::array<std::array<int, 3>, 6> kPermutations = {
+      {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
+  mesh.tets.reserve(static_cast<std::size_t>(6 * nx * ny * nz));
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        for (const auto& p : kPermutations) {
+          std::array<int, 3> corner = {i, j, k};
+          std::array<int, 4> tet{};
+          tet[0] = node(corner[0], corner[1], corner[2]);
+          for (int s = 0; s < 3; ++s) {
+            ++corner[static_cast<std::size_t>(p[static_cast<std::size_t>(s)])];
+            tet[static_cast<std::size_t>(s + 1)] = node(corner[0], corner[1], corner[2]);
+          }
+          mesh.tets.push_back(tet);
+        }
+  orient_generated_tets(mesh, "box mesh");
+
+  enum Side { kLeft, kRight, kFront, kBack, kBottom, kTop };
+  const std::vector<std::vector<std::string>> side_tags = {{"left", "sym_x"}, {"right"}, {"front", "sym_y"},
+                                                           {"back"},          {"bottom", "sym_z"}, {"top"}};
+  tag_boundary(mesh, side_tags, [&](const BoundaryFace& f) {
+    auto all = [&](int axis, double value) {
+      for (int n : f.nodes)
+        if (mesh.nodes[static_cast<std::size_t>(n)][axis] != value) return false;
+      return true;
+    };
+    if (all(0, 0.0)) return static_cast<int>(kLeft);
+    if (all(0, extent.x())) return static_cast<int>(kRight);
+    if (all(1, 0.0)) return static_cast<int>(kFront);
+    if (all(1, extent.y())) return static_cast<int>(kBack);
+    if (all(2, 0.0)) return static_cast<int>(kBottom);
+    if (all(2, extent.z())) return static_cast<int>(kTop);
+    return -1;
+  });
+  return mesh;
+}
+
+}  // namespace plisse

@@ -1,0 +1,19 @@
+#pragma once
+/// Structured tetrahedral mesh of a box (cube and sheet generators).
+#include <array>
+
+#include "core/types.hpp"
+#include "mesh/mesh.hpp"
+
+namespace plisse {
+
+/// [0, extent.x] x [0, extent.y] x [0, extent.z] with `cells` hexahedral cells per direction, each
+/// cut into the 6 tetrahedra around its main diagonal (Kuhn / Freudenthal subdivision: tet
+/// (a, b, c) for each permutation of the axes follows corner 000 -> +e_a -> +e_b -> +e_c = 111).
+/// All cells are cut alike, so neighbouring cells share their face diagonals (conforming).
+/// Nodes on the faces x = 0, x = extent.x etc. have that coordinate exactly.
+/// Tags: left x = 0, right x = Lx, front y = 0, back y = Ly, bottom z = 0, top z = Lz, and
+/// sym_x = left, sym_y = front, sym_z = bottom. All tetrahedra positive; 6 nx ny nz of them.
+Mesh make_box_mesh(const Vec3d& extent, const std::array<int, 3>& cells);
+
+}  // namespace plisse

@@ -1,0 +1,188 @@
+#include "mesh/spheroid_surface.hpp"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <numbers>
+#include <unordered_map>
+
+#include "core/error.hpp"
+#include "mesh/gmsh_session.hpp"
+
+namespace plisse {
+
+namespace {
+
+/// True if all corners of `tri` lie on one cut plane (coordinate exactly 0). Stacking prisms on
+/// such a triangle would give tetrahedra of zero volume inside the plane.
+bool is_flat(const SurfaceTriangulation& s, const std::array<int, 3>& tri, const std::array<bool, 3>& planes) {
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!planes[static_cast<std::size_t>(axis)]) continue;
+    if (std::all_of(tri.begin(), tri.end(), [&](int n) { return s.nodes[static_cast<std::size_t>(n)][axis] == 0.0; }))
+      return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+void orient_and_repair_surface(SurfaceTriangulation& s, const std::array<bool, 3>& planes,
+                               const std::function<Vec3d(const Vec3d&)>& normal) {
+  auto node = [&](int n) -> const Vec3d& { return s.nodes[static_cast<std::size_t>(n)]; };
+  auto facing = [&](const std::array<int, 3>& t) {  // cosine between triangle and surface normals
+    const Vec3d area = (node(t[1]) - node(t[0])).cross(node(t[2]) - node(t[0]));
+    const Vec3d n = normal(node(t[0])) + normal(node(t[1])) + normal(node(t[2]));
+    return area.dot(n) / (area.norm() * n.norm());
+  };
+  std::vector<std::size_t> flat;
+  for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+    if (is_flat(s, s.triangles[t], planes)) {
+      flat.push_back(t);
+      continue;
+    }
+    if (facing(s.triangles[t]) < 0.0) std::swap(s.triangles[t][1], s.triangles[t][2]);
+  }
+  if (flat.empty()) return;
+  std::map<std::pair<int, int>, std::vector<std::size_t>> edge_triangles;
+  auto edge = [](int p, int q) { return std::make_pair(std::min(p, q), std::max(p, q)); };
+  for (std::size_t t = 0; t < s.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      edge_triangles[edge(s.triangles[t][static_cast<std::size_t>(k)],
+                          s.triangles[t][static_cast<std::size_t>((k + 1) % 3)])]
+          .push_back(t);
+  for (std::size_t i : flat) {
+    bool repaired = false;
+    for (int k = 0; k < 3 && !repaired; ++k) {
+      const auto tri = s.triangles[i];
+      const int u = tri[static_cast<std::size_t>(k)], v = tri[static_cast<std::size_t>((k + 1) % 3)],
+                b = tri[static_cast<std::size_t>((k + 2) % 3)];
+      const auto& users = edge_triangles[edge(u, v)];
+      if (users.size() != 2) continue;
+      const std::size_t j = users[0] == i ? users[1] : users[0];
+      if (is_flat(s, s.triangles[j], planes)) continue;
+      // Rotate the neighbour to (c, a, d) with {c, a} = {u, v}.
+      auto other = s.triangles[j];
+      while (other[2] == u || other[2] == v) std::rotate(other.begin(), other.begin() + 1, other.end());
+      const int c = other[0], a = other[1], d = other[2];
+      const std::array<int, 3> first = {b, a, d}, second = {d, c, b};
+      if (is_flat(s, first, planes) || is_flat(s, second, planes)) continue;
+      if (facing(first) < 0.1 || facing(second) < 0.1) continue;
+      for (const auto& [old_tri, new_tri] : {std::pair{i, first}, std::pair{j, second}}) {
+        for (int m = 0; m < 3; ++m) {
+          auto& list = edge_triangles[edge(s.triangles[old_tri][static_cast<std::size_t>(m)],
+                                           s.triangles[old_tri][static_cast<std::size_t>((m + 1) % 3)])];
+          list.erase(std::remove(list.begin(), list.end(), old_tri), list.end());
+        }
+        s.triangles[old_tri] = new_tri;
+      }
+      for (std::size_t t : {i, j})
+        for (int m = 0; m < 3; ++m)
+          edge_triangles[edge(s.triangles[t][static_cast<std::size_t>(m)],
+                              s.triangles[t][static_cast<std::size_t>((m + 1) % 3)])]
+              .push_back(t);
+      repaired = true;
+    }
+    FE_CHECK(repaired, "spheroid surface: a surface triangle lies in a symmetry plane and could not be "
+                       "repaired; try a smaller element_size");
+  }
+}
+
+double spheroid_area(double a, double b) {
+  const double e2 = 1.0 - (b * b) / (a * a);
+  if (e2 < 1e-12) return 4.0 * std::numbers::pi * a * a;  // sphere: limit of the formula
+  const double e = std::sqrt(e2);
+  return 2.0 * std::numbers::pi * a * a * (1.0 + (1.0 - e2) / e * std::atanh(e));
+}
+
+double kept_fraction(Symmetry symmetry) {
+  switch (symmetry) {
+    case Symmetry::full: return 1.0;
+    case Symmetry::half: return 0.5;
+    case Symmetry::quarter: return 0.25;
+    case Symmetry::octant: return 0.125;
+  }
+  return 1.0;
+}
+
+SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetry symmetry) {
+  FE_CHECK(a > 0.0 && b > 0.0 && h > 0.0, "mesh_spheroid_surface: sizes must be positive");
+  const auto planes = cut_planes(symmetry);
+  const double big = 2.0 * std::max(a, b);
+  const double tolerance = 1e-9 * big;  // Gmsh places curve nodes within round-off of the plane
+  GmshSession session;
+  SurfaceTriangulation surface;
+  try {
+    gmsh::model::add("spheroid");
+    const int volume = gmsh::model::occ::addSphere(0.0, 0.0, 0.0, a);
+    if (b != a) gmsh::model::occ::dilate({{3, volume}}, 0.0, 0.0, 0.0, 1.0, b / a, 1.0);
+    if (symmetry != Symmetry::full) {
+      const double x0 = planes[0] ? 0.0 : -big, y0 = planes[1] ? 0.0 : -big, z0 = planes[2] ? 0.0 : -big;
+      const int box = gmsh::model::occ::addBox(x0, y0, z0, big - x0, big - y0, big - z0);
+      gmsh::vectorpair kept;
+      std::vector<gmsh::vectorpair> kept_map;
+      gmsh::model::occ::intersect({{3, volume}}, {{3, box}}, kept, kept_map);
+    }
+    gmsh::model::occ::synchronize();
+    session.check_internal("spheroid geometry");
+    gmsh::option::setNumber("Mesh.MeshSizeMax", h);
+    gmsh::option::setNumber("Mesh.MeshSizeMin", 0.0);
+    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 12);
+    gmsh::model::mesh::generate(2);
+    session.check_internal("spheroid surface meshing");
+
+    // Curved surfaces only: the flat cut faces have all their nodes on a cut plane (judged from
+    // the nodes: OpenCASCADE bounding boxes are padded by tolerances).
+    gmsh::vectorpair surfaces;
+    gmsh::model::getEntities(surfaces, 2);
+    std::unordered_map<std::size_t, int> index;
+    for (const auto& [dim, tag] : surfaces) {
+      std::vector<std::size_t> node_tags, element_tags, element_nodes;
+      std::vector<double> coords, parametric;
+      gmsh::model::mesh::getNodes(node_tags, coords, parametric, 2, tag, /*includeBoundary=*/true, false);
+      bool flat = false;
+      for (int axis = 0; axis < 3; ++axis) {
+        if (!planes[static_cast<std::size_t>(axis)]) continue;
+        bool all_on_plane = true;
+        for (std::size_t i = 0; i < node_tags.size(); ++i)
+          all_on_plane = all_on_plane && std::abs(coords[3 * i + static_cast<std::size_t>(axis)]) < tolerance;
+        flat = flat || all_on_plane;
+      }
+      if (flat) continue;
+      for (std::size_t i = 0; i < node_tags.size(); ++i) {
+        if (!index.emplace(node_tags[i], static_cast<int>(surface.nodes.size())).second) continue;
+        surface.nodes.emplace_back(coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]);
+      }
+      gmsh::model::mesh::getElementsByType(2, element_tags, element_nodes, tag);
+      for (std::size_t e = 0; e < element_tags.size(); ++e)
+        surface.triangles.push_back({index.at(element_nodes[3 * e]), index.at(element_nodes[3 * e + 1]),
+                                     index.at(element_nodes[3 * e + 2])});
+    }
+    session.check_internal("spheroid surface mesh");
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw Error(std::string("spheroid surface: ") + e.what());
+  } catch (const std::string& message) {
+    throw Error("spheroid surface: Gmsh: " + message);
+  }
+  FE_CHECK(!surface.triangles.empty(), "spheroid surface: Gmsh produced no triangles");
+  for (auto& p : surface.nodes) {
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!planes[static_cast<std::size_t>(axis)]) continue;
+      if (std::abs(p[axis]) < tolerance) p[axis] = 0.0;
+      FE_CHECK(p[axis] >= 0.0, "spheroid surface: node outside the kept part (coordinate " << axis << " = "
+                                                                                            << p[axis] << ")");
+    }
+    const double s = std::sqrt(p.x() * p.x() / (a * a) + p.y() * p.y() / (b * b) + p.z() * p.z() / (a * a));
+    p /= s;
+  }
+  orient_and_repair_surface(surface, planes, [&](const Vec3d& p) {
+    return Vec3d(p.x() / (a * a), p.y() / (b * b), p.z() / (a * a));
+  });
+  return surface;
+}
+
+}  // namespace plisse

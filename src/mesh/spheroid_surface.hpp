@@ -1,0 +1,41 @@
+#pragma once
+/// Triangulation of a (partial) sphere or oblate spheroid with Gmsh (shell and airbag generators).
+#include <array>
+#include <functional>
+
+#include "mesh/generate.hpp"
+#include "mesh/layered_shell.hpp"
+
+namespace plisse {
+
+/// Triangulates the part kept by `symmetry` (see Symmetry) of the spheroid
+///   x^2/a^2 + y^2/b^2 + z^2/a^2 = 1     (a: equatorial radius in the x-z plane, b: polar
+///                                         semi-axis along y; a sphere when a = b)
+/// with target edge length `h` [mm], through Gmsh's OpenCASCADE kernel (a sphere, scaled along y,
+/// intersected with the kept box) and its default 2-D mesher. Nodes are then put exactly on the
+/// surface by radial scaling, p <- p / sqrt(x^2/a^2 + y^2/b^2 + z^2/a^2); nodes on a cut plane
+/// first get that coordinate set to exactly 0 (they are within round-off of it), which the
+/// scaling keeps. Throws Error if Gmsh fails.
+SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetry symmetry);
+
+/// Orients the triangles of `surface` along the surface normal `normal(p)` (Gmsh orients each
+/// OpenCASCADE face on its own), then repairs triangles whose three corners lie on one cut plane
+/// of `planes` (x = 0, y = 0, z = 0; coordinate exactly 0). A 2-D mesher can make those where the
+/// cut curve bends strongly over one element, and prisms stacked on them would be flat. Each is
+/// repaired by flipping the edge it shares with a non-flat neighbour: with the neighbour written
+/// (c, a, d) along the normal and b the flat triangle's third corner, the pair becomes
+/// (b, a, d), (d, c, b). A flip is kept only if both new triangles face along the normal (cosine
+/// > 0.1, so the quadrilateral c, b, a, d is convex) and neither is flat; throws Error if a flat
+/// triangle cannot be repaired.
+void orient_and_repair_surface(SurfaceTriangulation& surface, const std::array<bool, 3>& planes,
+                               const std::function<Vec3d(const Vec3d&)>& normal);
+
+/// Area of the full oblate spheroid (a >= b) [mm^2]:
+///   A = 2 pi a^2 (1 + (1 - e^2)/e atanh e),  e^2 = 1 - b^2/a^2   (4 pi a^2 when e = 0).
+double spheroid_area(double a, double b);
+
+/// Fraction of a body symmetric about the three coordinate planes that `symmetry` keeps
+/// (1, 1/2, 1/4, 1/8).
+double kept_fraction(Symmetry symmetry);
+
+}  // namespace plisse

@@ -1,0 +1,58 @@
+#include "mesh/topology.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace plisse {
+
+double tet_signed_volume(const Mesh& mesh, int t) {
+  const auto& n = mesh.tets[static_cast<std::size_t>(t)];
+  return six_signed_volume(mesh.nodes[n[0]], mesh.nodes[n[1]], mesh.nodes[n[2]], mesh.nodes[n[3]]) /
+         6.0;
+}
+
+void flip_tet(Mesh& mesh, int t) {
+  const auto i = static_cast<std::size_t>(t);
+  std::swap(mesh.tets[i][1], mesh.tets[i][2]);
+  if (!mesh.tet_edge_nodes.empty()) {
+    // Corners (0, 1, 2, 3) -> (0, 2, 1, 3): edges (01, 12, 20, 30, 32, 31) become
+    // (02, 21, 10, 30, 31, 32), i.e. old edges (2, 1, 0, 3, 5, 4).
+    auto& e = mesh.tet_edge_nodes[i];
+    std::swap(e[0], e[2]);
+    std::swap(e[4], e[5]);
+  }
+}
+
+std::vector<BoundaryFace> compute_boundary_faces(const Mesh& mesh) {
+  struct Entry {
+    std::array<int, 3> key;
+    int tet;
+    int local_face;
+  };
+  std::vector<Entry> all;
+  all.reserve(4 * mesh.tets.size());
+  for (int t = 0; t < mesh.n_tets(); ++t) {
+    const auto& n = mesh.tets[static_cast<std::size_t>(t)];
+    for (int k = 0; k < 4; ++k) {
+      const auto& f = kTetFaces[static_cast<std::size_t>(k)];
+      all.push_back({sorted_face({n[f[0]], n[f[1]], n[f[2]]}), t, k});
+    }
+  }
+  std::sort(all.begin(), all.end(), [](const Entry& a, const Entry& b) {
+    return a.key != b.key ? a.key < b.key : a.tet < b.tet;
+  });
+  std::vector<BoundaryFace> faces;
+  for (std::size_t i = 0; i < all.size();) {
+    std::size_t j = i + 1;
+    while (j < all.size() && all[j].key == all[i].key) ++j;
+    if (j - i == 1) {
+      const auto& n = mesh.tets[static_cast<std::size_t>(all[i].tet)];
+      const auto& f = kTetFaces[static_cast<std::size_t>(all[i].local_face)];
+      faces.push_back({{n[f[0]], n[f[1]], n[f[2]]}, all[i].tet, all[i].local_face});
+    }
+    i = j;
+  }
+  return faces;
+}
+
+}  // namespace plisse
