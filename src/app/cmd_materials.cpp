@@ -15,7 +15,8 @@ std::string materials_text() {
   out << "Material models (isochoric energy W(Ī1, Ī2); units MPa). Use in a case file as\n"
       << "  material: {model: NAME, KEY: VALUE, ...}\n";
   for (const auto& m : material_models()) {
-    out << '\n' << m.name << "\n  " << m.formula << "\n  shear modulus: " << m.shear_modulus << '\n';
+    out << '\n'
+        << m.name << "\n  " << m.formula << "\n  shear modulus: " << m.shear_modulus << '\n';
     for (const auto& p : m.params) {
       std::ostringstream def;
       if (p.default_value) {
@@ -23,8 +24,8 @@ std::string materials_text() {
       } else {
         def << "required";
       }
-      out << "  " << p.name << " [" << p.unit << "] " << p.range.describe() << ", " << def.str() << ": "
-          << p.help << '\n';
+      out << "  " << p.name << " [" << p.unit << "] " << p.range.describe() << ", " << def.str()
+          << ": " << p.help << '\n';
     }
     for (const auto& r : m.rules) out << "  rule: " << r.statement << '\n';
   }

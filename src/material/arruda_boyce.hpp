@@ -1,5 +1,6 @@
 #pragma once
-/// Arruda-Boyce (eight-chain) model, five-term series, isochoric part (pressure term in the element).
+/// Arruda-Boyce (eight-chain) model, five-term series, isochoric part (pressure term in the
+/// element).
 ///   W = mu sum_{i=1..5} alpha_i / lambda_m^(2i-2) (Ī1^i - 3^i),
 ///   alpha = (1/2, 1/20, 11/1050, 19/7000, 519/673750)
 ///     [Arruda & Boyce, J. Mech. Phys. Solids 41 (1993) 389; series as in Holzapfel, Nonlinear
@@ -42,7 +43,7 @@ struct ArrudaBoyce {
     const double beta = 1.0 / (lambda_m * lambda_m);
     InvariantDerivatives d;
     double power = 1.0, power3 = 1.0, scale = mu;  // Ī1^(i-1), 3^(i-1), mu beta^(i-1)
-    double power_m2 = 0.0;                           // Ī1^(i-2)
+    double power_m2 = 0.0;                         // Ī1^(i-2)
     for (int i = 1; i <= 5; ++i) {
       const double c = scale * kAlpha[i - 1];
       d.W += c * (power * I1bar - power3 * 3.0);

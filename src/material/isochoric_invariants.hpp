@@ -34,9 +34,9 @@ template <class T> IsochoricInvariants<T> compute_isochoric_invariants(const Mat
 /// Everything at one point that the response needs, computed once (double only).
 struct IsochoricKinematics {
   Mat3d F;
-  Mat3d G;         ///< F^{-T} = (1/J) cof F
-  Mat3d C;         ///< F^T F
-  double J = 1.0;  ///< det F > 0
+  Mat3d G;             ///< F^{-T} = (1/J) cof F
+  Mat3d C;             ///< F^T F
+  double J = 1.0;      ///< det F > 0
   double J_m23 = 1.0;  ///< J^{-2/3}
   double I1 = 3.0;
   double I2 = 3.0;
@@ -65,7 +65,8 @@ struct InvariantDerivatives {
 ///   A = W_1 d²Ī1/dF² + W_2 d²Ī2/dF² + W_11 dĪ1⊗dĪ1 + W_12 (dĪ1⊗dĪ2 + dĪ2⊗dĪ1) + W_22 dĪ2⊗dĪ2.
 /// A is symmetric (it is a Hessian). The Ī2 terms are skipped when W_2 = W_12 = W_22 = 0 exactly.
 /// No heap; safe to call concurrently.
-PointResponse compute_isochoric_response(const IsochoricKinematics& k, const InvariantDerivatives& d);
+PointResponse compute_isochoric_response(const IsochoricKinematics& kin,
+                                         const InvariantDerivatives& d);
 
 /// The whole evaluation for a model that provides
 ///   InvariantDerivatives invariant_derivatives(double I1bar, double I2bar) const;

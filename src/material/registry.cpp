@@ -23,18 +23,19 @@ template <class Model> struct BoundParam {
   double Model::*member;
 };
 
-template <class Model>
-BoundParam<Model> param(std::string name, double Model::*member, Range range, std::string unit,
-                        std::string help, std::optional<double> default_value = std::nullopt) {
-  return {ParamSpec{std::move(name), range, std::move(unit), std::move(help), default_value}, member};
+template <class Model> BoundParam<Model> param(std::string name, double Model::*member, Range range,
+                                               std::string unit, std::string help,
+                                               std::optional<double> default_value = std::nullopt) {
+  return {ParamSpec{std::move(name), range, std::move(unit), std::move(help), default_value},
+          member};
 }
 
 struct ModelText {
   std::string name, formula, shear_modulus, reference, note;
 };
 
-template <class Model>
-MaterialModelInfo add(ModelText text, std::vector<BoundParam<Model>> params, std::vector<CrossRule> rules = {}) {
+template <class Model> MaterialModelInfo add(ModelText text, std::vector<BoundParam<Model>> params,
+                                             std::vector<CrossRule> rules = {}) {
   MaterialModelInfo info;
   info.name = std::move(text.name);
   info.formula = std::move(text.formula);
@@ -56,7 +57,8 @@ std::vector<MaterialModelInfo> register_materials() {
   std::vector<MaterialModelInfo> models;
   models.push_back(add<NeoHookean>(
       {"neo-hookean", "W = c1 (Ī1 - 3)", "mu = 2 c1", "paper (Daanouni et al. 2009), Table 1", ""},
-      {param("c1", &NeoHookean::c1, Range::positive(), "MPa", "Ī1 coefficient, half the shear modulus")}));
+      {param("c1", &NeoHookean::c1, Range::positive(), "MPa",
+             "Ī1 coefficient, half the shear modulus")}));
   models.push_back(add<MooneyRivlin>(
       {"mooney-rivlin", "W = c1 (Ī1 - 3) + c2 (Ī2 - 3)", "mu = 2 (c1 + c2)",
        "paper (Daanouni et al. 2009), Table 1 and eq. 7",
@@ -65,22 +67,26 @@ std::vector<MaterialModelInfo> register_materials() {
        "compression; such a material instability would be mistaken for wrinkling."},
       {param("c1", &MooneyRivlin::c1, Range::non_negative(), "MPa", "Ī1 coefficient"),
        param("c2", &MooneyRivlin::c2, Range::non_negative(), "MPa", "Ī2 coefficient")},
-      {CrossRule{"c1", "c1 + c2 must be > 0", {"c1", "c2"},
-                 [](const MaterialValues& v) { return v.at("c1") + v.at("c2") > 0.0; }}}));
-  models.push_back(add<Fung>(
-      {"fung", "W = mu / (2 gamma) (exp(gamma (Ī1 - 3)) - 1)", "mu",
-       "paper (Daanouni et al. 2009), Table 1", ""},
-      {param("mu", &Fung::mu, Range::positive(), "MPa", "small-strain shear modulus"),
-       param("gamma", &Fung::gamma, Range::positive(), "-", "exponential stiffening coefficient")}));
+      {CrossRule{"c1", "c1 + c2 must be > 0", {"c1", "c2"}, [](const MaterialValues& v) {
+                   return v.at("c1") + v.at("c2") > 0.0;
+                 }}}));
+  models.push_back(
+      add<Fung>({"fung", "W = mu / (2 gamma) (exp(gamma (Ī1 - 3)) - 1)", "mu",
+                 "paper (Daanouni et al. 2009), Table 1", ""},
+                {param("mu", &Fung::mu, Range::positive(), "MPa", "small-strain shear modulus"),
+                 param("gamma", &Fung::gamma, Range::positive(), "-",
+                       "exponential stiffening coefficient")}));
   models.push_back(add<Yeoh>(
       {"yeoh", "W = c1 (Ī1 - 3) + c2 (Ī1 - 3)^2 + c3 (Ī1 - 3)^3", "mu = 2 c1",
        "Yeoh, Rubber Chem. Technol. 66 (1993) 754",
        "dW/dĪ1 = c1 + 2 c2 x + 3 c3 x^2 must stay positive for all x = Ī1 - 3 >= 0; a negative "
        "c2 is allowed when c2^2 < 3 c1 c3."},
-      {param("c1", &Yeoh::c1, Range::positive(), "MPa", "linear coefficient, half the shear modulus"),
+      {param("c1", &Yeoh::c1, Range::positive(), "MPa",
+             "linear coefficient, half the shear modulus"),
        param("c2", &Yeoh::c2, Range::any(), "MPa", "quadratic coefficient", 0.0),
        param("c3", &Yeoh::c3, Range::non_negative(), "MPa", "cubic coefficient", 0.0)},
-      {CrossRule{"c2", "c2 must be >= 0 or c2^2 < 3 c1 c3 (dW/dĪ1 > 0 for all Ī1 >= 3)",
+      {CrossRule{"c2",
+                 "c2 must be >= 0 or c2^2 < 3 c1 c3 (dW/dĪ1 > 0 for all Ī1 >= 3)",
                  {"c1", "c2", "c3"},
                  [](const MaterialValues& v) {
                    const double c1 = v.at("c1"), c2 = v.at("c2"), c3 = v.at("c3");
@@ -89,7 +95,8 @@ std::vector<MaterialModelInfo> register_materials() {
   models.push_back(add<Gent>(
       {"gent", "W = -mu jm / 2 ln(1 - (Ī1 - 3) / jm)", "mu",
        "Gent, Rubber Chem. Technol. 69 (1996) 59",
-       "Defined for Ī1 - 3 < jm only: a trial state at or past the limit makes the evaluation throw "
+       "Defined for Ī1 - 3 < jm only: a trial state at or past the limit makes the evaluation "
+       "throw "
        "an inadmissible-deformation solver error (the step is rejected), never a silent NaN. "
        "jm -> infinity gives neo-Hookean with c1 = mu/2."},
       {param("mu", &Gent::mu, Range::positive(), "MPa", "small-strain shear modulus"),
@@ -124,7 +131,8 @@ const MaterialModelInfo* find_material_model(const std::string& name) {
   return nullptr;
 }
 
-std::vector<ParamViolation> validate_material(const std::string& model, const MaterialValues& values) {
+std::vector<ParamViolation> validate_material(const std::string& model,
+                                              const MaterialValues& values) {
   std::vector<ParamViolation> out;
   const MaterialModelInfo* info = find_material_model(model);
   if (info == nullptr) {
@@ -138,7 +146,9 @@ std::vector<ParamViolation> validate_material(const std::string& model, const Ma
   for (const auto& [key, value] : values) {
     bool known = false;
     for (const auto& p : info->params) known = known || p.name == key;
-    if (!known) out.push_back({key, "unknown parameter for model '" + model + "' (parameters: " + names + ")"});
+    if (!known)
+      out.push_back(
+          {key, "unknown parameter for model '" + model + "' (parameters: " + names + ")"});
   }
   MaterialValues complete;
   bool all_valid = out.empty();
@@ -165,7 +175,8 @@ std::vector<ParamViolation> validate_material(const std::string& model, const Ma
   for (const auto& rule : info->rules) {
     if (rule.holds(complete)) continue;
     std::string got;
-    for (const auto& name : rule.involves) got += (got.empty() ? "" : ", ") + name + " = " + number(complete.at(name));
+    for (const auto& name : rule.involves)
+      got += (got.empty() ? "" : ", ") + name + " = " + number(complete.at(name));
     out.push_back({rule.key, rule.statement + " (got " + got + ")"});
   }
   return out;
@@ -201,17 +212,21 @@ std::string material_name(const AnyMaterial& material) {
 std::string materials_markdown() {
   std::ostringstream md;
   md << "# Material models\n\n"
-     << "<!-- Generated by `plisse materials --markdown` from src/material/registry.cpp; do not edit:\n"
+     << "<!-- Generated by `plisse materials --markdown` from src/material/registry.cpp; do not "
+        "edit:\n"
      << "     a unit test fails when this file and the registry disagree. -->\n\n"
-     << "Isotropic hyperelastic models for incompressible or nearly incompressible membranes. Each\n"
+     << "Isotropic hyperelastic models for incompressible or nearly incompressible membranes. "
+        "Each\n"
      << "model gives the isochoric part of the strain energy W(Ī1, Ī2), with Ī1 = J^(-2/3) I1 and\n"
      << "Ī2 = J^(-4/3) I2 the invariants of C = FᵀF with the volume change removed; the pressure\n"
-     << "term -p J F⁻ᵀ belongs to the mixed element, not to the material. Stresses and tangents are\n"
+     << "term -p J F⁻ᵀ belongs to the mixed element, not to the material. Stresses and tangents "
+        "are\n"
      << "derived from W in shared code: see [theory/materials.md](theory/materials.md).\n\n"
      << "Units: mm, MPa, s, tonne/mm³. In a case file the model goes under `material:` with its\n"
      << "name as `model:` and its parameters as keys, for example\n\n"
      << "```yaml\nmaterial: {model: mooney-rivlin, c1: 0.0030, c2: 0.0003}\n```\n\n"
-     << "A parameter without a default is required; values must be finite and within the range shown.\n"
+     << "A parameter without a default is required; values must be finite and within the range "
+        "shown.\n"
      << "`plisse materials` prints the same table in the terminal.\n";
   for (const auto& m : material_models()) {
     md << "\n## " << m.name << "\n\n"
@@ -223,8 +238,8 @@ std::string materials_markdown() {
     md << "\n| key | unit | range | default | meaning |\n|---|---|---|---|---|\n";
     for (const auto& p : m.params) {
       md << "| `" << p.name << "` | " << p.unit << " | " << p.range.describe() << " | "
-         << (p.default_value ? number(*p.default_value) : std::string("required")) << " | " << p.help
-         << " |\n";
+         << (p.default_value ? number(*p.default_value) : std::string("required")) << " | "
+         << p.help << " |\n";
     }
   }
   return md.str();

@@ -35,8 +35,8 @@ struct ParamViolation {
 
 /// A rule between parameters, checked once every parameter is present and in range.
 struct CrossRule {
-  std::string key;        ///< parameter the violation is reported against
-  std::string statement;  ///< e.g. "c1 + c2 must be > 0"
+  std::string key;                    ///< parameter the violation is reported against
+  std::string statement;              ///< e.g. "c1 + c2 must be > 0"
   std::vector<std::string> involves;  ///< parameters whose values the message quotes
   std::function<bool(const MaterialValues&)> holds;  ///< gets every parameter (defaults filled in)
 };
@@ -64,7 +64,8 @@ const MaterialModelInfo* find_material_model(const std::string& name);
 /// Every problem with `values` for `model`: unknown model, unknown key, missing required key,
 /// non-finite or out-of-range value, broken cross rule (checked only when all values are valid).
 /// Empty when the model can be built.
-std::vector<ParamViolation> validate_material(const std::string& model, const MaterialValues& values);
+std::vector<ParamViolation> validate_material(const std::string& model,
+                                              const MaterialValues& values);
 
 /// The model with the given parameters; omitted optional parameters take their defaults.
 /// Precondition: validate_material(model, values) is empty; throws plisse::Error listing the

@@ -1,7 +1,7 @@
 #pragma once
 /// Yeoh model, isochoric part (the pressure term lives in the element).
-///   W = c1 (Ī1 - 3) + c2 (Ī1 - 3)^2 + c3 (Ī1 - 3)^3     [Yeoh, Rubber Chem. Technol. 66 (1993) 754]
-///   small-strain shear modulus mu = 2 c1 (materials.md, M13)
+///   W = c1 (Ī1 - 3) + c2 (Ī1 - 3)^2 + c3 (Ī1 - 3)^3     [Yeoh, Rubber Chem. Technol. 66 (1993)
+///   754] small-strain shear modulus mu = 2 c1 (materials.md, M13)
 /// Admissible parameters (registry): c1 > 0, c3 >= 0 and W_1 = c1 + 2 c2 x + 3 c3 x^2 > 0 for all
 /// x = Ī1 - 3 >= 0, i.e. c2 >= 0 or c2^2 < 3 c1 c3 (a negative c2, as in Yeoh's own fits, is
 /// allowed when c3 keeps the stiffness positive).

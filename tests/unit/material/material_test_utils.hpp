@@ -56,7 +56,8 @@ inline double observed_order(const std::vector<double>& err) {
 /// cube test's uniaxial stretch 5 (rotated), an equibiaxial stretch 3 and a volume change.
 inline std::vector<Mat3d> test_deformations() {
   std::vector<Mat3d> out;
-  for (unsigned seed = 1; seed <= 6; ++seed) out.push_back(random_deformation(seed, seed <= 3 ? 0.2 : 0.5));
+  for (unsigned seed = 1; seed <= 6; ++seed)
+    out.push_back(random_deformation(seed, seed <= 3 ? 0.2 : 0.5));
   const double l = 5.0;
   out.push_back(random_rotation(7) * Vec3d(1 / std::sqrt(l), 1 / std::sqrt(l), l).asDiagonal());
   out.push_back(Vec3d(3.0, 3.0, 1.0 / 9.0).asDiagonal() * random_rotation(8));

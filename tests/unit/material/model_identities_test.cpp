@@ -3,8 +3,8 @@
 // symmetric tangent, zero energy and stress in the reference state and the small-strain limit.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <Eigen/Core>
+#include <cmath>
 #include <unsupported/Eigen/AutoDiff>  // after Eigen/Core, which it needs
 
 #include "material/inadmissible_deformation.hpp"
@@ -25,8 +25,12 @@ struct CoupledTestModel {
   }
   InvariantDerivatives invariant_derivatives(double I1bar, double I2bar) const {
     const double x = I1bar - 3.0, y = I2bar - 3.0;
-    return {c * x + d * y + a * x * y + b * y * y + e * x * x, c + a * y + 2 * e * x, d + a * x + 2 * b * y,
-            2 * e, a, 2 * b};
+    return {c * x + d * y + a * x * y + b * y * y + e * x * x,
+            c + a * y + 2 * e * x,
+            d + a * x + 2 * b * y,
+            2 * e,
+            a,
+            2 * b};
   }
   PointResponse evaluate(const Mat3d& F) const { return evaluate_isochoric(*this, F); }
   double shear_modulus() const { return 2.0 * (c + d); }
@@ -49,7 +53,8 @@ template <class M> class ModelIdentities : public ::testing::Test {
   double W(const Mat3d& F) const { return model.evaluate(F).W; }
   Mat3d P(const Mat3d& F) const { return model.evaluate(F).P; }
 };
-using Models = ::testing::Types<NeoHookean, MooneyRivlin, Fung, Yeoh, Gent, ArrudaBoyce, CoupledTestModel>;
+using Models =
+    ::testing::Types<NeoHookean, MooneyRivlin, Fung, Yeoh, Gent, ArrudaBoyce, CoupledTestModel>;
 TYPED_TEST_SUITE(ModelIdentities, Models);
 
 TYPED_TEST(ModelIdentities, StressMatchesCentralDifferencesOfEnergy) {
@@ -83,7 +88,8 @@ TYPED_TEST(ModelIdentities, TangentMatchesCentralDifferencesOfStress) {
   }
 }
 
-// Taylor test (STYLE.md section 8): the central-difference error of a correct derivative falls as h^2.
+// Taylor test (STYLE.md section 8): the central-difference error of a correct derivative falls as
+// h^2.
 TYPED_TEST(ModelIdentities, DerivativesConvergeAtSecondOrder) {
   const std::vector<Mat3d> deformations = test::test_deformations();
   for (std::size_t n = 0; n < deformations.size(); ++n) {
@@ -124,7 +130,8 @@ TYPED_TEST(ModelIdentities, DualNumbersGiveTheSameEnergyStressAndTangent) {
     EXPECT_NEAR(W.value(), r.W, 1e-13 * std::max(1.0, std::abs(r.W)));
     const Vec9d P_vec = Eigen::Map<const Vec9d>(r.P.data());
     EXPECT_LT((W.derivatives() - P_vec).cwiseAbs().maxCoeff(), 1e-12 * P_vec.cwiseAbs().maxCoeff())
-        << "F =\n" << F;
+        << "F =\n"
+        << F;
     const Dual2 W2 = this->model.energy(Fdd);
     Mat9d A_ad;
     for (int k = 0; k < 9; ++k) A_ad.col(k) = W2.derivatives()(k).derivatives();
@@ -148,7 +155,7 @@ TYPED_TEST(ModelIdentities, TangentAtIdentityIsDeviatoricLinearElasticity) {
       for (int k = 0; k < 3; ++k)
         for (int l = 0; l < 3; ++l)
           expected(i + 3 * j, k + 3 * l) = mu * ((i == k) * (j == l) + (i == l) * (j == k)) -
-                                            2.0 * mu / 3.0 * (i == j) * (k == l);
+                                           2.0 * mu / 3.0 * (i == j) * (k == l);
   EXPECT_LT(max_abs(this->model.evaluate(Mat3d::Identity()).A - expected), 1e-14 * mu);
 }
 
@@ -156,7 +163,8 @@ TYPED_TEST(ModelIdentities, SmallStrainSimpleShearGivesTheShearModulus) {
   const double eps = 1e-6;
   Mat3d F = Mat3d::Identity();
   F(0, 1) = eps;  // x displaced along y: simple shear of amount eps
-  EXPECT_NEAR(this->P(F)(0, 1) / eps, this->model.shear_modulus(), 1e-8 * this->model.shear_modulus());
+  EXPECT_NEAR(this->P(F)(0, 1) / eps, this->model.shear_modulus(),
+              1e-8 * this->model.shear_modulus());
 }
 
 TYPED_TEST(ModelIdentities, FrameIndifferentIsotropicAndIsochoric) {
@@ -165,13 +173,13 @@ TYPED_TEST(ModelIdentities, FrameIndifferentIsotropicAndIsochoric) {
     const PointResponse r = this->model.evaluate(F);
     const double tol_W = 1e-12 * std::max(std::abs(r.W), 1e-3 * this->model.shear_modulus());
     const PointResponse rQ = this->model.evaluate(Q * F);
-    EXPECT_NEAR(rQ.W, r.W, tol_W);                                           // W(QF) = W(F)
-    EXPECT_LT(max_abs(rQ.P - Q * r.P), 1e-12 * max_abs(r.P));                // P(QF) = Q P(F)
-    EXPECT_NEAR(this->W(F * Q), r.W, tol_W);                                  // W(FQ) = W(F)
-    EXPECT_LT(max_abs(this->P(F * Q) - r.P * Q), 1e-12 * max_abs(r.P));       // P(FQ) = P(F) Q
+    EXPECT_NEAR(rQ.W, r.W, tol_W);                                       // W(QF) = W(F)
+    EXPECT_LT(max_abs(rQ.P - Q * r.P), 1e-12 * max_abs(r.P));            // P(QF) = Q P(F)
+    EXPECT_NEAR(this->W(F * Q), r.W, tol_W);                             // W(FQ) = W(F)
+    EXPECT_LT(max_abs(this->P(F * Q) - r.P * Q), 1e-12 * max_abs(r.P));  // P(FQ) = P(F) Q
     for (const double a : {0.6, 1.7}) {
-      EXPECT_NEAR(this->W(a * F), r.W, tol_W);                                // W(aF) = W(F)
-      EXPECT_LT(max_abs(a * this->P(a * F) - r.P), 1e-12 * max_abs(r.P));    // P(aF) = P(F) / a
+      EXPECT_NEAR(this->W(a * F), r.W, tol_W);                             // W(aF) = W(F)
+      EXPECT_LT(max_abs(a * this->P(a * F) - r.P), 1e-12 * max_abs(r.P));  // P(aF) = P(F) / a
     }
   }
 }
@@ -195,7 +203,9 @@ TYPED_TEST(ModelIdentities, InvertedElementIsReportedNotNaN) {
 TEST(Gent, PastTheExtensibilityLimitIsReported) {
   const Gent gent{1.0, 10.0};
   // Uniaxial λ: Ī1 - 3 = λ² + 2/λ - 3; λ = 3.6 gives 10.52 > jm = 10, λ = 3.3 gives 8.50 < 10.
-  const auto uniaxial = [](double l) { return Mat3d(Vec3d(1 / std::sqrt(l), 1 / std::sqrt(l), l).asDiagonal()); };
+  const auto uniaxial = [](double l) {
+    return Mat3d(Vec3d(1 / std::sqrt(l), 1 / std::sqrt(l), l).asDiagonal());
+  };
   EXPECT_TRUE(std::isfinite(gent.evaluate(uniaxial(3.3)).W));
   EXPECT_THROW(gent.evaluate(uniaxial(3.6)), InadmissibleDeformation);
   try {

@@ -1,5 +1,7 @@
 // The material registry: every violation path names the right key with the rule in words; valid
 // input builds the right model; docs/materials.md is exactly what the registry generates.
+#include "material/registry.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,12 +11,12 @@
 #include <sstream>
 
 #include "core/error.hpp"
-#include "material/registry.hpp"
 
 namespace plisse {
 namespace {
 
-void expect_one(const std::vector<ParamViolation>& v, const std::string& key, const std::string& rule) {
+void expect_one(const std::vector<ParamViolation>& v, const std::string& key,
+                const std::string& rule) {
   std::string all;
   for (const auto& x : v) all += x.key + ": " + x.rule + "; ";
   ASSERT_EQ(v.size(), 1u) << all;
@@ -23,9 +25,10 @@ void expect_one(const std::vector<ParamViolation>& v, const std::string& key, co
 }
 
 TEST(MaterialRegistry, UnknownModelIsReportedAgainstTheModelKey) {
-  expect_one(validate_material("rubber", {{"c1", 1.0}}), "model",
-             "unknown material model 'rubber' (known: neo-hookean, mooney-rivlin, fung, yeoh, gent, "
-             "arruda-boyce)");
+  expect_one(
+      validate_material("rubber", {{"c1", 1.0}}), "model",
+      "unknown material model 'rubber' (known: neo-hookean, mooney-rivlin, fung, yeoh, gent, "
+      "arruda-boyce)");
   EXPECT_EQ(find_material_model("rubber"), nullptr);
 }
 
@@ -40,18 +43,20 @@ TEST(MaterialRegistry, MissingRequiredParameterIsReported) {
 }
 
 TEST(MaterialRegistry, NonFiniteValuesAreRejected) {
-  expect_one(validate_material("neo-hookean", {{"c1", std::numeric_limits<double>::quiet_NaN()}}), "c1",
-             "must be a finite number (got nan)");
-  expect_one(validate_material("neo-hookean", {{"c1", std::numeric_limits<double>::infinity()}}), "c1",
-             "must be a finite number (got inf)");
+  expect_one(validate_material("neo-hookean", {{"c1", std::numeric_limits<double>::quiet_NaN()}}),
+             "c1", "must be a finite number (got nan)");
+  expect_one(validate_material("neo-hookean", {{"c1", std::numeric_limits<double>::infinity()}}),
+             "c1", "must be a finite number (got inf)");
 }
 
 TEST(MaterialRegistry, OutOfRangeValuesNameTheRule) {
   expect_one(validate_material("neo-hookean", {{"c1", -1.0}}), "c1", "must be > 0 (got -1)");
-  expect_one(validate_material("mooney-rivlin", {{"c1", 1.0}, {"c2", -2.0}}), "c2", "must be >= 0 (got -2)");
+  expect_one(validate_material("mooney-rivlin", {{"c1", 1.0}, {"c2", -2.0}}), "c2",
+             "must be >= 0 (got -2)");
   expect_one(validate_material("arruda-boyce", {{"mu", 1.0}, {"lambda_m", 1.0}}), "lambda_m",
              "must be > 1 (got 1)");
-  expect_one(validate_material("yeoh", {{"c1", 1.0}, {"c3", -0.1}}), "c3", "must be >= 0 (got -0.1)");
+  expect_one(validate_material("yeoh", {{"c1", 1.0}, {"c3", -0.1}}), "c3",
+             "must be >= 0 (got -0.1)");
   expect_one(validate_material("gent", {{"mu", 1.0}, {"jm", 0.0}}), "jm", "must be > 0 (got 0)");
 }
 
@@ -59,8 +64,10 @@ TEST(MaterialRegistry, CrossRulesQuoteTheValuesInvolved) {
   expect_one(validate_material("mooney-rivlin", {{"c1", 0.0}, {"c2", 0.0}}), "c1",
              "c1 + c2 must be > 0 (got c1 = 0, c2 = 0)");
   expect_one(validate_material("yeoh", {{"c1", 1.0}, {"c2", -2.0}, {"c3", 0.1}}), "c2",
-             "c2 must be >= 0 or c2^2 < 3 c1 c3 (dW/dĪ1 > 0 for all Ī1 >= 3) (got c1 = 1, c2 = -2, c3 = 0.1)");
-  EXPECT_TRUE(validate_material("yeoh", {{"c1", 1.0}, {"c2", -0.5}, {"c3", 0.1}}).empty());  // 0.25 < 0.3
+             "c2 must be >= 0 or c2^2 < 3 c1 c3 (dW/dĪ1 > 0 for all Ī1 >= 3) (got c1 = 1, c2 = -2, "
+             "c3 = 0.1)");
+  EXPECT_TRUE(
+      validate_material("yeoh", {{"c1", 1.0}, {"c2", -0.5}, {"c3", 0.1}}).empty());  // 0.25 < 0.3
 }
 
 TEST(MaterialRegistry, SeveralProblemsAreAllReportedAndCrossRulesWaitForValidValues) {
@@ -110,7 +117,8 @@ TEST(MaterialRegistry, EveryAlternativeIsRegisteredOnceWithMatchingName) {
     EXPECT_TRUE(indices.insert(m.variant_index).second) << m.name;
     EXPECT_EQ(find_material_model(m.name), &m);
     EXPECT_FALSE(m.params.empty());
-    for (const auto& p : m.params) EXPECT_FALSE(p.unit.empty() || p.help.empty()) << m.name << '.' << p.name;
+    for (const auto& p : m.params)
+      EXPECT_FALSE(p.unit.empty() || p.help.empty()) << m.name << '.' << p.name;
   }
   EXPECT_EQ(indices.size(), std::variant_size_v<AnyMaterial>);
 }
@@ -122,7 +130,8 @@ TEST(MaterialRegistry, CommittedManualEqualsGeneratedText) {
   std::stringstream text;
   text << in.rdbuf();
   EXPECT_EQ(text.str(), materials_markdown())
-      << "docs/materials.md is out of date: regenerate it with `plisse materials --markdown > docs/materials.md`";
+      << "docs/materials.md is out of date: regenerate it with `plisse materials --markdown > "
+         "docs/materials.md`";
 }
 
 }  // namespace

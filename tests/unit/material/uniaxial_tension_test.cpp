@@ -24,7 +24,8 @@ double I1_uniaxial(double l) { return l * l + 2.0 / l; }
 TEST(UniaxialTension, NeoHookeanMatchesPaperClosedForm) {
   const NeoHookean m{0.0033};
   for (const double l : kStretches) {
-    const double expected = 2 * m.c1 * (l * l - 1 / l);  // paper, Table 1 with B = diag(1/λ, 1/λ, λ²)
+    const double expected =
+        2 * m.c1 * (l * l - 1 / l);  // paper, Table 1 with B = diag(1/λ, 1/λ, λ²)
     EXPECT_NEAR(stress_difference(m, l), expected, 1e-12 * std::abs(expected)) << "λ = " << l;
   }
 }
@@ -32,7 +33,8 @@ TEST(UniaxialTension, NeoHookeanMatchesPaperClosedForm) {
 TEST(UniaxialTension, MooneyRivlinMatchesPaperEquation7) {
   const MooneyRivlin m{0.0030, 0.0007};
   for (const double l : kStretches) {
-    const double expected = 2 * m.c1 * (l * l - 1 / l) - 2 * m.c2 * (1 / (l * l) - l);  // eq. 7, L/L0 = λ
+    const double expected =
+        2 * m.c1 * (l * l - 1 / l) - 2 * m.c2 * (1 / (l * l) - l);  // eq. 7, L/L0 = λ
     EXPECT_NEAR(stress_difference(m, l), expected, 1e-12 * std::abs(expected)) << "λ = " << l;
   }
 }
@@ -55,9 +57,10 @@ TEST(UniaxialTension, YeohGentArrudaBoyceMatchClosedForms) {
     const double e_yeoh = 2 * g * (yeoh.c1 + 2 * yeoh.c2 * x + 3 * yeoh.c3 * x * x);
     const double e_gent = g * gent.mu / (1 - x / gent.jm);
     const double I1 = I1_uniaxial(l), b = 1 / (ab.lambda_m * ab.lambda_m);
-    const double e_ab = 2 * g * ab.mu *
-                        (1.0 / 2 + 2.0 / 20 * b * I1 + 3 * 11.0 / 1050 * b * b * I1 * I1 +
-                         4 * 19.0 / 7000 * std::pow(b * I1, 3) + 5 * 519.0 / 673750 * std::pow(b * I1, 4));
+    const double e_ab =
+        2 * g * ab.mu *
+        (1.0 / 2 + 2.0 / 20 * b * I1 + 3 * 11.0 / 1050 * b * b * I1 * I1 +
+         4 * 19.0 / 7000 * std::pow(b * I1, 3) + 5 * 519.0 / 673750 * std::pow(b * I1, 4));
     EXPECT_NEAR(stress_difference(yeoh, l), e_yeoh, 1e-12 * std::abs(e_yeoh)) << "λ = " << l;
     EXPECT_NEAR(stress_difference(gent, l), e_gent, 1e-12 * std::abs(e_gent)) << "λ = " << l;
     EXPECT_NEAR(stress_difference(ab, l), e_ab, 1e-12 * std::abs(e_ab)) << "λ = " << l;
