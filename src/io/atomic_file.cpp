@@ -16,7 +16,8 @@ namespace {
 std::string reason(int error_number) { return std::generic_category().message(error_number); }
 
 [[noreturn]] void fail(const char* action, const std::filesystem::path& path, int error_number) {
-  throw Error(std::string("cannot ") + action + " '" + path.string() + "': " + reason(error_number));
+  throw Error(std::string("cannot ") + action + " '" + path.string() +
+              "': " + reason(error_number));
 }
 
 /// ".<name>.tmp.<pid>.<n>" beside the target: same directory, hence same file system, which

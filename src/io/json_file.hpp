@@ -7,7 +7,6 @@
 /// the file stays valid JSON for every reader; a reader therefore gets null where the run had a
 /// NaN or an infinite value and must treat null as "not a finite number".
 #include <filesystem>
-
 #include <nlohmann/json.hpp>
 
 namespace plisse {

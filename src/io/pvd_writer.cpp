@@ -62,8 +62,9 @@ void PvdWriter::add(double time, const std::string& file) {
 void PvdWriter::write() const {
   std::string xml;
   xml += "<?xml version=\"1.0\"?>\n";
-  xml += "<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\" "
-         "header_type=\"UInt64\">\n";
+  xml +=
+      "<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\" "
+      "header_type=\"UInt64\">\n";
   xml += "  <Collection>\n";
   for (const PvdEntry& e : entries_)
     xml += "    <DataSet timestep=\"" + shortest(e.time) + "\" group=\"\" part=\"0\" file=\"" +

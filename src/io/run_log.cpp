@@ -12,9 +12,13 @@
 namespace plisse {
 
 RunLog::RunLog(std::filesystem::path log_file, std::ostream* out, std::ostream* err)
-    : log_file_(std::move(log_file)), out_(out), err_(err), start_(std::chrono::steady_clock::now()) {}
+    : log_file_(std::move(log_file)),
+      out_(out),
+      err_(err),
+      start_(std::chrono::steady_clock::now()) {}
 
-RunLog::RunLog(std::filesystem::path log_file) : RunLog(std::move(log_file), &std::cout, &std::cerr) {}
+RunLog::RunLog(std::filesystem::path log_file)
+    : RunLog(std::move(log_file), &std::cout, &std::cerr) {}
 
 RunLog::~RunLog() {
   try {

@@ -13,13 +13,14 @@ namespace plisse {
 namespace {
 
 // The appended block holds the host's bytes as they are; the header declares LittleEndian.
-static_assert(std::endian::native == std::endian::little, "VTU writer assumes a little-endian host");
+static_assert(std::endian::native == std::endian::little,
+              "VTU writer assumes a little-endian host");
 // Points are written straight from memory as 3 contiguous Float64 per point.
 static_assert(sizeof(Vec3d) == 3 * sizeof(double), "Vec3d must be 3 packed doubles");
 
-/// For each VTK edge slot of a 10-node tetrahedron, the Gmsh edge slot holding that node: Gmsh's edges 01,12,20,30,32,31 become VTK's
-/// 01,12,20,03,13,23, i.e. the last two are swapped (Gmsh manual, "Node ordering"; VTK
-/// vtkQuadraticTetra documentation).
+/// For each VTK edge slot of a 10-node tetrahedron, the Gmsh edge slot holding that node.
+/// Gmsh's edges 01, 12, 20, 30, 32, 31 become VTK's 01, 12, 20, 03, 13, 23: the last two swap
+/// (Gmsh reference manual, "Node ordering"; VTK, vtkQuadraticTetra class documentation).
 constexpr std::array<int, 6> kGmshEdgeOfVtkEdge = {0, 1, 2, 3, 5, 4};
 
 void check_fields(const std::filesystem::path& path, const std::vector<VtuField>& fields,
@@ -31,17 +32,17 @@ void check_fields(const std::filesystem::path& path, const std::vector<VtuField>
                           [](char c) { return static_cast<unsigned char>(c) < 0x20; }),
              "VTU '" << path.string() << "': " << kind << " field name '" << f.name
                      << "' contains a control character");
-    FE_CHECK(names.insert(f.name).second,
-             "VTU '" << path.string() << "': two " << kind << " fields are named '" << f.name << "'");
-    FE_CHECK(f.n_components == 1 || f.n_components == 3 || f.n_components == 6 ||
-                 f.n_components == 9,
-             "VTU '" << path.string() << "': " << kind << " field '" << f.name << "' has "
-                     << f.n_components << " components; must be 1, 3, 6 or 9");
+    FE_CHECK(names.insert(f.name).second, "VTU '" << path.string() << "': two " << kind
+                                                  << " fields are named '" << f.name << "'");
+    FE_CHECK(
+        f.n_components == 1 || f.n_components == 3 || f.n_components == 6 || f.n_components == 9,
+        "VTU '" << path.string() << "': " << kind << " field '" << f.name << "' has "
+                << f.n_components << " components; must be 1, 3, 6 or 9");
     FE_CHECK(f.values.size() == n_entities * static_cast<std::size_t>(f.n_components),
              "VTU '" << path.string() << "': " << kind << " field '" << f.name << "' has "
                      << f.values.size() << " values; expected " << n_entities << " " << kind
-                     << "s x " << f.n_components << " components = "
-                     << n_entities * static_cast<std::size_t>(f.n_components));
+                     << "s x " << f.n_components
+                     << " components = " << n_entities * static_cast<std::size_t>(f.n_components));
   }
 }
 
@@ -59,14 +60,15 @@ class AppendedLayout {
   std::uint64_t end_ = 0;
 };
 
-void write_block_header(AtomicFile& file, std::uint64_t n_bytes) { file.write(&n_bytes, sizeof n_bytes); }
+void write_block_header(AtomicFile& file, std::uint64_t n_bytes) {
+  file.write(&n_bytes, sizeof n_bytes);
+}
 
 /// Writes one piece. `node(c, k)` gives node k (VTK order) of cell c; it is called twice per
 /// node (check, then write), so the connectivity is never copied whole.
 template <class NodeOf>
-void write_piece(const std::filesystem::path& path, std::span<const Vec3d> points,
-                 VtkCellType type, std::size_t n_cells, const NodeOf& node,
-                 const std::vector<VtuField>& point_fields,
+void write_piece(const std::filesystem::path& path, std::span<const Vec3d> points, VtkCellType type,
+                 std::size_t n_cells, const NodeOf& node, const std::vector<VtuField>& point_fields,
                  const std::vector<VtuField>& cell_fields) {
   const std::size_t n_points = points.size();
   const int nodes_per_cell = n_cell_nodes(type);
@@ -84,8 +86,9 @@ void write_piece(const std::filesystem::path& path, std::span<const Vec3d> point
   AppendedLayout layout;
   std::string xml;
   xml += "<?xml version=\"1.0\"?>\n";
-  xml += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-         "header_type=\"UInt64\">\n";
+  xml +=
+      "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+      "header_type=\"UInt64\">\n";
   xml += "  <UnstructuredGrid>\n";
   xml += "    <Piece NumberOfPoints=\"" + std::to_string(n_points) + "\" NumberOfCells=\"" +
          std::to_string(n_cells) + "\">\n";
@@ -102,9 +105,10 @@ void write_piece(const std::filesystem::path& path, std::span<const Vec3d> point
   declare_fields("PointData", point_fields);
   declare_fields("CellData", cell_fields);
   const std::uint64_t points_offset = layout.add(n_points * 3 * sizeof(double));
-  xml += "      <Points>\n        <DataArray type=\"Float64\" Name=\"Points\" "
-         "NumberOfComponents=\"3\" format=\"appended\" offset=\"" +
-         std::to_string(points_offset) + "\"/>\n      </Points>\n";
+  xml +=
+      "      <Points>\n        <DataArray type=\"Float64\" Name=\"Points\" "
+      "NumberOfComponents=\"3\" format=\"appended\" offset=\"" +
+      std::to_string(points_offset) + "\"/>\n      </Points>\n";
   const std::uint64_t connectivity_offset = layout.add(n_connectivity * sizeof(std::int64_t));
   const std::uint64_t offsets_offset = layout.add(n_cells * sizeof(std::int64_t));
   const std::uint64_t types_offset = layout.add(n_cells * sizeof(std::uint8_t));
@@ -170,12 +174,23 @@ std::string escape_xml(std::string_view text) {
   out.reserve(text.size());
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -196,8 +211,7 @@ VtuField make_symmetric_tensor_field(std::string name, std::span<const Mat3d> te
   VtuField field{std::move(name), 6, {}};
   field.values.reserve(6 * tensors.size());
   for (const Mat3d& T : tensors)
-    field.values.insert(field.values.end(),
-                        {T(0, 0), T(1, 1), T(2, 2), T(0, 1), T(1, 2), T(0, 2)});
+    field.values.insert(field.values.end(), {T(0, 0), T(1, 1), T(2, 2), T(0, 1), T(1, 2), T(0, 2)});
   return field;
 }
 
@@ -212,10 +226,14 @@ VtuField make_tensor_field(std::string name, std::span<const Mat3d> tensors) {
 
 int n_cell_nodes(VtkCellType type) {
   switch (type) {
-    case VtkCellType::kTriangle: return 3;
-    case VtkCellType::kTetra: return 4;
-    case VtkCellType::kQuadraticTriangle: return 6;
-    case VtkCellType::kQuadraticTetra: return 10;
+    case VtkCellType::kTriangle:
+      return 3;
+    case VtkCellType::kTetra:
+      return 4;
+    case VtkCellType::kQuadraticTriangle:
+      return 6;
+    case VtkCellType::kQuadraticTetra:
+      return 10;
   }
   throw Error("unknown VTK cell type " + std::to_string(static_cast<int>(type)));
 }
@@ -227,31 +245,35 @@ void write_vtu(const std::filesystem::path& path, std::span<const Vec3d> points,
   FE_CHECK(connectivity.size() % nodes_per_cell == 0,
            "VTU '" << path.string() << "': connectivity has " << connectivity.size()
                    << " entries, not a multiple of " << nodes_per_cell << " nodes per cell");
-  write_piece(path, points, type, connectivity.size() / nodes_per_cell,
-              [&](std::size_t c, int k) { return connectivity[c * nodes_per_cell + k]; },
-              point_fields, cell_fields);
+  write_piece(
+      path, points, type, connectivity.size() / nodes_per_cell,
+      [&](std::size_t c, int k) { return connectivity[c * nodes_per_cell + k]; }, point_fields,
+      cell_fields);
 }
 
 void write_vtu(const std::filesystem::path& path, std::span<const Vec3d> points,
                std::span<const std::array<int, 4>> tets, const std::vector<VtuField>& point_fields,
                const std::vector<VtuField>& cell_fields) {
-  write_piece(path, points, VtkCellType::kTetra, tets.size(),
-              [&](std::size_t c, int k) { return tets[c][k]; }, point_fields, cell_fields);
+  write_piece(
+      path, points, VtkCellType::kTetra, tets.size(),
+      [&](std::size_t c, int k) { return tets[c][k]; }, point_fields, cell_fields);
 }
 
 void write_vtu(const std::filesystem::path& path, std::span<const Vec3d> points,
                std::span<const std::array<int, 3>> triangles,
-               const std::vector<VtuField>& point_fields, const std::vector<VtuField>& cell_fields) {
-  write_piece(path, points, VtkCellType::kTriangle, triangles.size(),
-              [&](std::size_t c, int k) { return triangles[c][k]; }, point_fields, cell_fields);
+               const std::vector<VtuField>& point_fields,
+               const std::vector<VtuField>& cell_fields) {
+  write_piece(
+      path, points, VtkCellType::kTriangle, triangles.size(),
+      [&](std::size_t c, int k) { return triangles[c][k]; }, point_fields, cell_fields);
 }
 
-void write_vtu(const std::filesystem::path& path, const Mesh& mesh,
-               std::span<const Vec3d> points, const std::vector<VtuField>& point_fields,
+void write_vtu(const std::filesystem::path& path, const Mesh& mesh, std::span<const Vec3d> points,
+               const std::vector<VtuField>& point_fields,
                const std::vector<VtuField>& cell_fields) {
-  FE_CHECK(points.size() == mesh.nodes.size(),
-           "VTU '" << path.string() << "': " << points.size() << " points given for a mesh of "
-                   << mesh.nodes.size() << " nodes");
+  FE_CHECK(points.size() == mesh.nodes.size(), "VTU '" << path.string() << "': " << points.size()
+                                                       << " points given for a mesh of "
+                                                       << mesh.nodes.size() << " nodes");
   if (mesh.order() == 1) {
     write_vtu(path, points, std::span<const std::array<int, 4>>(mesh.tets), point_fields,
               cell_fields);
@@ -260,11 +282,12 @@ void write_vtu(const std::filesystem::path& path, const Mesh& mesh,
   FE_CHECK(mesh.tet_edge_nodes.size() == mesh.tets.size(),
            "VTU '" << path.string() << "': mesh has " << mesh.tets.size() << " tetrahedra but "
                    << mesh.tet_edge_nodes.size() << " edge-node lists");
-  write_piece(path, points, VtkCellType::kQuadraticTetra, mesh.tets.size(),
-              [&](std::size_t c, int k) {
-                return k < 4 ? mesh.tets[c][k] : mesh.tet_edge_nodes[c][kGmshEdgeOfVtkEdge[k - 4]];
-              },
-              point_fields, cell_fields);
+  write_piece(
+      path, points, VtkCellType::kQuadraticTetra, mesh.tets.size(),
+      [&](std::size_t c, int k) {
+        return k < 4 ? mesh.tets[c][k] : mesh.tet_edge_nodes[c][kGmshEdgeOfVtkEdge[k - 4]];
+      },
+      point_fields, cell_fields);
 }
 
 }  // namespace plisse

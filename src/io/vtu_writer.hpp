@@ -28,10 +28,10 @@ namespace plisse {
 
 /// VTK cell type ids (vtkCellType.h) of the cells plisse writes. Node order is VTK's.
 enum class VtkCellType : std::uint8_t {
-  kTriangle = 5,             ///< 3 nodes
-  kTetra = 10,               ///< 4 nodes
-  kQuadraticTriangle = 22,   ///< 6 nodes: corners, then edges 01, 12, 20 (same as Gmsh)
-  kQuadraticTetra = 24,      ///< 10 nodes: corners, then edges 01, 12, 20, 03, 13, 23
+  kTriangle = 5,            ///< 3 nodes
+  kTetra = 10,              ///< 4 nodes
+  kQuadraticTriangle = 22,  ///< 6 nodes: corners, then edges 01, 12, 20 (same as Gmsh)
+  kQuadraticTetra = 24,     ///< 10 nodes: corners, then edges 01, 12, 20, 03, 13, 23
 };
 
 /// Number of nodes of one cell of `type`.
@@ -44,7 +44,7 @@ std::string escape_xml(std::string_view text);
 /// A named point or cell field. Owns its values: n_components values per point (or cell),
 /// point-major, Float64; n_components is 1, 3, 6 or 9 (see the file comment for their order).
 struct VtuField {
-  std::string name;   ///< shown in ParaView; unique among the point (resp. cell) fields
+  std::string name;  ///< shown in ParaView; unique among the point (resp. cell) fields
   int n_components = 1;
   std::vector<double> values;
 };
@@ -80,8 +80,7 @@ void write_vtu(const std::filesystem::path& path, std::span<const Vec3d> points,
 /// The tetrahedra of `mesh`: VTK_TETRA for a linear mesh, VTK_QUADRATIC_TETRA for a 10-node mesh
 /// (edge nodes reordered from Gmsh's 01, 12, 20, 30, 32, 31 to VTK's 01, 12, 20, 03, 13, 23).
 /// `points` replaces mesh.nodes (e.g. deformed positions) and must have mesh.n_nodes() entries.
-void write_vtu(const std::filesystem::path& path, const Mesh& mesh,
-               std::span<const Vec3d> points, const std::vector<VtuField>& point_fields,
-               const std::vector<VtuField>& cell_fields);
+void write_vtu(const std::filesystem::path& path, const Mesh& mesh, std::span<const Vec3d> points,
+               const std::vector<VtuField>& point_fields, const std::vector<VtuField>& cell_fields);
 
 }  // namespace plisse

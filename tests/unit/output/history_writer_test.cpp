@@ -21,8 +21,8 @@ using test::ScratchDir;
 
 std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
 
-const std::vector<std::string> kExtra = {"pressure:gas", "volume:cavity", "force_y:punch",
-                                         "ux:inner", "negative_pivots", "stable"};
+const std::vector<std::string> kExtra = {"pressure:gas", "volume:cavity",   "force_y:punch",
+                                         "ux:inner",     "negative_pivots", "stable"};
 
 /// Rows with values that lose bits under any fixed-precision printing.
 std::vector<std::vector<double>> tricky_rows() {

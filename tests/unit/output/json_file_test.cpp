@@ -22,8 +22,9 @@ TEST(JsonFile, SummaryRoundTripsExactly) {
       {"elements", 7890},
       {"wall_time_s", {{"assembly", 1.0 / 3.0}, {"solve", 0.1}}},
       {"peak_memory_mb", 512.25},
-      {"wrinkles", nlohmann::json::array({{{"ring_deg", 30}, {"count", 14}, {"amplitude_mm", 1e-3}},
-                                          {{"ring_deg", 45}, {"count", 12}, {"amplitude_mm", 2.5e-4}}})},
+      {"wrinkles",
+       nlohmann::json::array({{{"ring_deg", 30}, {"count", 14}, {"amplitude_mm", 1e-3}},
+                              {{"ring_deg", 45}, {"count", 12}, {"amplitude_mm", 2.5e-4}}})},
       {"case", "balloon \"quarter\" \u00e9"}};
   write_json_file(dir / "summary.json", summary);
   EXPECT_EQ(entries(dir.path()), std::set<std::string>{"summary.json"});

@@ -3,18 +3,17 @@
 /// and the independent Python reader (read_output.py, run with Debian's /usr/bin/python3).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <string>
-#include <unistd.h>
-
-#include <nlohmann/json.hpp>
 
 namespace plisse::test {
 
@@ -62,8 +61,8 @@ inline std::string contents(const std::filesystem::path& file) {
 /// (ADD_FAILURE, returns null) if the script exits with an error.
 inline nlohmann::json read_with_python(const std::string& kind, const std::filesystem::path& file) {
   const std::string command = std::string("/usr/bin/python3 '") + PLISSE_SOURCE_DIR +
-                              "/tests/unit/output/read_output.py' " + kind + " '" +
-                              file.string() + "'";
+                              "/tests/unit/output/read_output.py' " + kind + " '" + file.string() +
+                              "'";
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) {
     ADD_FAILURE() << "cannot run: " << command;
@@ -71,7 +70,8 @@ inline nlohmann::json read_with_python(const std::string& kind, const std::files
   }
   std::string output;
   char buffer[4096];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) output.append(buffer, n);
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;)
+    output.append(buffer, n);
   const int status = ::pclose(pipe);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     ADD_FAILURE() << "'" << command << "' failed (status " << status << "), output: " << output;

@@ -25,8 +25,8 @@ TEST(PvdWriter, CollectionIsValidXmlAfterEveryStep) {
   EXPECT_EQ(read["type"], "Collection");
   EXPECT_TRUE(read["datasets"].empty());
 
-  const std::vector<PvdEntry> steps = {{0.0, "step_0000.vtu"}, {0.1, "step_0001.vtu"},
-                                       {1.0 / 3.0, "step_0002.vtu"}};
+  const std::vector<PvdEntry> steps = {
+      {0.0, "step_0000.vtu"}, {0.1, "step_0001.vtu"}, {1.0 / 3.0, "step_0002.vtu"}};
   for (std::size_t i = 0; i < steps.size(); ++i) {
     pvd.add(steps[i].time, steps[i].file);
     read = read_with_python("pvd", path);

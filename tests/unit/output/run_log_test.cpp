@@ -29,8 +29,9 @@ TEST(RunLog, EchoesToTerminalStreamsAndWritesTimedLinesOnFlush) {
     log.error("Newton diverged\nlast converged step kept");
   }  // destructor flushes
   EXPECT_EQ(out.str(), "step 1 converged in 4 iterations\n");
-  EXPECT_EQ(err.str(),
-            "warning: negative pivots: 3\nerror: Newton diverged\nerror: last converged step kept\n");
+  EXPECT_EQ(
+      err.str(),
+      "warning: negative pivots: 3\nerror: Newton diverged\nerror: last converged step kept\n");
 
   const std::string text = contents(path);
   const std::regex line(R"(\[ *[0-9]+\.[0-9]s\] (.*))");
@@ -42,10 +43,9 @@ TEST(RunLog, EchoesToTerminalStreamsAndWritesTimedLinesOnFlush) {
     EXPECT_EQ(l.find("[   "), 0u) << "width 7 for the seconds: " << l;
     messages.push_back(match[1]);
   }
-  EXPECT_EQ(messages, (std::vector<std::string>{"step 1 converged in 4 iterations",
-                                                "warning: negative pivots: 3",
-                                                "error: Newton diverged",
-                                                "error: last converged step kept"}));
+  EXPECT_EQ(messages, (std::vector<std::string>{
+                          "step 1 converged in 4 iterations", "warning: negative pivots: 3",
+                          "error: Newton diverged", "error: last converged step kept"}));
   EXPECT_EQ(entries(dir.path()), std::set<std::string>{"log.txt"});
 }
 

@@ -42,8 +42,11 @@ void expect_same_values(const nlohmann::json& read, const VtuField& field) {
 
 TEST(VtuWriter, TwoTetsWithFieldsReadBackExactlyByMeshio) {
   const ScratchDir dir;
-  const std::vector<Vec3d> points = {{0.1, 0.0, 0.0}, {1.0 / 3.0, 0.0, 0.0}, {0.0, 1.0, 0.0},
-                                     {0.0, 0.0, 1.0}, {1.0, 1.0, 1.0 + 1e-12}};
+  const std::vector<Vec3d> points = {{0.1, 0.0, 0.0},
+                                     {1.0 / 3.0, 0.0, 0.0},
+                                     {0.0, 1.0, 0.0},
+                                     {0.0, 0.0, 1.0},
+                                     {1.0, 1.0, 1.0 + 1e-12}};
   const std::vector<std::array<int, 4>> tets = {{0, 1, 2, 3}, {1, 2, 4, 3}};
   const std::vector<VtuField> point_fields = {{"displacement", 3, field_values(5, 3, 0)},
                                               {"pressure", 1, field_values(5, 1, 7)}};
@@ -88,14 +91,14 @@ TEST(VtuWriter, QuadraticTetUsesVtkEdgeOrder) {
   Mesh mesh;
   mesh.nodes.resize(10);
   const std::array<int, 4> corners = {9, 2, 5, 0};
-  const std::array<Vec3d, 4> corner_xyz = {
-      Vec3d{0.0, 0.0, 0.0}, Vec3d{2.0, 0.1, 0.0}, Vec3d{0.3, 1.7, 0.0}, Vec3d{0.2, 0.4, 1.1}};
+  const std::array<Vec3d, 4> corner_xyz = {Vec3d{0.0, 0.0, 0.0}, Vec3d{2.0, 0.1, 0.0},
+                                           Vec3d{0.3, 1.7, 0.0}, Vec3d{0.2, 0.4, 1.1}};
   for (int k = 0; k < 4; ++k) mesh.nodes[corners[k]] = corner_xyz[k];
-  const std::array<std::array<int, 2>, 6> gmsh_edges = {{{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}}};
+  const std::array<std::array<int, 2>, 6> gmsh_edges = {
+      {{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}}};
   const std::array<int, 6> edge_nodes = {4, 7, 1, 8, 3, 6};
   for (int e = 0; e < 6; ++e)
-    mesh.nodes[edge_nodes[e]] =
-        0.5 * (corner_xyz[gmsh_edges[e][0]] + corner_xyz[gmsh_edges[e][1]]);
+    mesh.nodes[edge_nodes[e]] = 0.5 * (corner_xyz[gmsh_edges[e][0]] + corner_xyz[gmsh_edges[e][1]]);
   mesh.tets = {corners};
   mesh.tet_edge_nodes = {edge_nodes};
   ASSERT_EQ(mesh.order(), 2);
@@ -110,7 +113,8 @@ TEST(VtuWriter, QuadraticTetUsesVtkEdgeOrder) {
   // Gmsh's last two edges (32, 31) swap to VTK's (13, 23).
   EXPECT_EQ(cell, (std::vector<int>{9, 2, 5, 0, 4, 7, 1, 8, 6, 3}));
   // Geometric check of VTK's order: node 4 + j is the midpoint of VTK edge j.
-  const std::array<std::array<int, 2>, 6> vtk_edges = {{{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}}};
+  const std::array<std::array<int, 2>, 6> vtk_edges = {
+      {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}}};
   const auto xyz = [&](int node) {
     return Vec3d(from_hex(read["points"][node][0]), from_hex(read["points"][node][1]),
                  from_hex(read["points"][node][2]));
@@ -153,13 +157,9 @@ TEST(VtuWriter, FieldBuildersUseVtkComponentOrder) {
   const ScratchDir dir;
   const std::vector<Vec3d> points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   Mat3d sigma;  // symmetric, every entry distinct
-  sigma << 11, 12, 13,
-           12, 22, 23,
-           13, 23, 33;
+  sigma << 11, 12, 13, 12, 22, 23, 13, 23, 33;
   Mat3d F;
-  F << 1.1, 0.2, 0.3,
-       0.4, 1.5, 0.6,
-       0.7, 0.8, 1.9;
+  F << 1.1, 0.2, 0.3, 0.4, 1.5, 0.6, 0.7, 0.8, 1.9;
   const std::vector<Mat3d> stresses = {sigma}, gradients = {F};
   const std::vector<double> J = {F.determinant()};
   write_vtu(dir / "a.vtu", points, std::vector<std::array<int, 4>>{{0, 1, 2, 3}},
@@ -211,15 +211,15 @@ TEST(VtuWriter, InconsistentInputThrowsAndWritesNothing) {
   EXPECT_NE(message_of({{"displacement", 3, std::vector<double>(11)}}, {}, tets)
                 .find("'displacement' has 11 values; expected 4 points x 3 components = 12"),
             std::string::npos);
-  EXPECT_NE(message_of({}, {{"stress", 2, std::vector<double>(2)}}, tets)
-                .find("must be 1, 3, 6 or 9"),
-            std::string::npos);
+  EXPECT_NE(
+      message_of({}, {{"stress", 2, std::vector<double>(2)}}, tets).find("must be 1, 3, 6 or 9"),
+      std::string::npos);
   EXPECT_NE(message_of({}, {}, {{0, 1, 2, 4}}).find("refers to node 4, outside [0, 4)"),
             std::string::npos);
-  EXPECT_NE(message_of({{"p", 1, std::vector<double>(4)}, {"p", 1, std::vector<double>(4)}}, {},
-                       tets)
-                .find("two point fields are named 'p'"),
-            std::string::npos);
+  EXPECT_NE(
+      message_of({{"p", 1, std::vector<double>(4)}, {"p", 1, std::vector<double>(4)}}, {}, tets)
+          .find("two point fields are named 'p'"),
+      std::string::npos);
   Mesh mesh;
   mesh.nodes = points;
   mesh.tets = tets;
