@@ -1,7 +1,106 @@
+// `plisse check CASE.yaml [--set key.path=value ...]`: validates a case and its mesh without
+// solving (DESIGN.md, interface contract) and prints a short summary. Problems are thrown as
+// InputError, which main() reports with file, line, column and key and exit status 2.
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
 #include "app/commands.hpp"
+#include "io/case.hpp"
+#include "material/registry.hpp"
+#include "mesh/quality.hpp"
 
 namespace plisse::app {
+namespace {
 
-void add_check_command(CLI::App& app) { app.add_subcommand("check", "(not yet available)"); }
+struct CheckOptions {
+  std::string case_file;
+  std::vector<std::string> overrides;
+};
+
+std::string number(double v) {
+  std::ostringstream out;
+  out.precision(6);
+  out << v;
+  return out.str();
+}
+
+/// "1 die", "3 dies".
+std::string count(std::size_t n, const std::string& one, const std::string& many = {}) {
+  return std::to_string(n) + " " + (n == 1 ? one : (many.empty() ? one + "s" : many));
+}
+
+std::string material_line(const MaterialSection& m) {
+  std::string out = m.model + ":";
+  const MaterialModelInfo* info = find_material_model(m.model);
+  bool first = true;
+  for (const auto& [key, value] : m.params) {
+    std::string unit;
+    if (info)
+      for (const ParamSpec& p : info->params)
+        if (p.name == key && p.unit != "-") unit = " " + p.unit;
+    out += (first ? " " : ", ") + key + " = " + number(value) + unit;
+    first = false;
+  }
+  out += m.exact_incompressibility ? "; exactly incompressible"
+                                   : "; nearly incompressible, bulk modulus " +
+                                         number(m.bulk_modulus) + " MPa";
+  if (m.density > 0.0) out += "; density " + number(m.density) + " tonne/mm^3";
+  return out;
+}
+
+void check_case(const CheckOptions& options) {
+  const Case c = parse_case_file(options.case_file, options.overrides);
+  const Mesh mesh = load_case_mesh(c);
+  check_case_against_mesh(c, mesh);
+  const MeshReport report = check_mesh(mesh);
+
+  std::ostream& out = std::cout;
+  out << "plisse check: " << c.path << ": valid\n";
+  if (!c.title.empty()) out << "  title     " << c.title << '\n';
+  out << "  material  " << material_line(c.material) << '\n';
+  out << "  mesh      "
+      << (c.mesh.file ? "file " + *c.mesh.file : "generated " + c.mesh.generate->kind) << ": "
+      << mesh.n_nodes() << " nodes, " << mesh.n_tets() << " tetrahedra"
+      << (mesh.order() == 2 ? " (second order)" : "") << '\n';
+  out << "            surface tags:";
+  bool first = true;
+  for (const auto& [name, triangles] : mesh.surface_tags) {
+    out << (first ? " " : ", ") << name << " (" << triangles.size() << " triangles)";
+    first = false;
+  }
+  out << (mesh.surface_tags.empty() ? " none\n" : "\n");
+  out << "            quality: smallest volume " << number(report.min_volume)
+      << " mm^3, largest aspect ratio " << number(report.max_aspect_ratio) << ", "
+      << count(report.warnings.size(), "warning") << '\n';
+  for (std::size_t i = 0; i < report.warnings.size() && i < 5; ++i)
+    out << "            warning: " << report.warnings[i] << '\n';
+  out << "  case      " << count(c.boundary.size(), "boundary condition") << ", "
+      << count(c.loads.size(), "load") << ", " << count(c.cavities.size(), "cavity", "cavities")
+      << ", " << count(c.dies.size(), "die") << ", " << count(c.probes.size(), "probe") << '\n';
+  out << "  solver    "
+      << (c.solver.scheme == Scheme::total_lagrangian ? "total-lagrangian" : "incremental")
+      << ", end_time " << number(c.solver.end_time) << " s, " << c.solver.steps
+      << " initial steps (at most " << c.solver.max_steps << "), Newton rtol "
+      << number(c.solver.newton.rtol) << ", at most " << c.solver.newton.max_iterations
+      << " iterations" << (c.solver.stability.check ? ", stability check on" : "") << '\n';
+}
+
+}  // namespace
+
+void add_check_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "check", "Validate a case file and its mesh without solving (exit 0 when valid, 2 if not)");
+  auto options = std::make_shared<CheckOptions>();
+  cmd->add_option("case", options->case_file, "Case file (YAML)")->required();
+  cmd->add_option("--set", options->overrides,
+                  "Override a case value before validation, e.g. --set mesh.layers=4, "
+                  "--set loads[0].value=1e-3 (repeatable)")
+      ->take_all()
+      ->allow_extra_args(false);
+  cmd->callback([options] { check_case(*options); });
+}
 
 }  // namespace plisse::app

@@ -42,6 +42,9 @@ struct MeshSection {
   std::optional<std::string> file;            ///< `file:` resolved against the case directory
   std::optional<MeshGenerationSpec> generate;  ///< `generate: KIND` plus the kind's options
   InputPlace place;                            ///< where `mesh:` is
+  InputPlace file_place;                       ///< where the `file:` value is (file meshes)
+  /// Generated meshes: where each given option is, by key ("layers"); "generate" for the kind.
+  std::map<std::string, InputPlace> option_places;
 };
 
 struct MaterialSection {

@@ -1,0 +1,150 @@
+// The checks of a case that need its mesh: loading or generating the mesh with errors placed at
+// the case's `mesh:` keys, surface tags named by the case, planar symmetry surfaces, mesh quality.
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <filesystem>
+#include <set>
+
+#include "io/case.hpp"
+#include "io/case_reader.hpp"
+#include "mesh/gmsh_io.hpp"
+#include "mesh/quality.hpp"
+
+namespace plisse {
+namespace {
+
+using case_detail::format_number;
+
+/// Symmetry surfaces may deviate from their best-fit plane by this fraction of their mean edge
+/// length: far below any discretisation of a curved surface (a sphere of radius R meshed with
+/// edges h has sagitta ~ h^2 / (8 R), i.e. 1e-3 h only when h < 0.008 R, and its nodes span the
+/// whole cap), far above the round-off of coordinates written to a .msh file.
+constexpr double kPlanarityTolerance = 1e-3;
+
+std::string mesh_name(const Case& c) {
+  if (c.mesh.file) return "mesh file '" + *c.mesh.file + "'";
+  return "the generated " + (c.mesh.generate ? c.mesh.generate->kind : std::string()) + " mesh";
+}
+
+std::string tag_list(const Mesh& mesh) {
+  if (mesh.surface_tags.empty()) return "the mesh has no surface tags (Gmsh physical groups of dimension 2)";
+  std::string out = "available surface tags: ";
+  bool first = true;
+  for (const auto& [name, triangles] : mesh.surface_tags) {
+    out += (first ? "" : ", ") + name + " (" + std::to_string(triangles.size()) + " triangles)";
+    first = false;
+  }
+  return out;
+}
+
+void check_surface(const Case& c, const Mesh& mesh, const SurfaceRef& ref) {
+  const auto tag = mesh.surface_tags.find(ref.name);
+  if (tag == mesh.surface_tags.end()) {
+    std::vector<std::string> names;
+    for (const auto& [name, triangles] : mesh.surface_tags) names.push_back(name);
+    std::string rule = "no surface tag '" + ref.name + "' in " + mesh_name(c);
+    if (const auto guess = case_detail::closest_match(ref.name, names))
+      rule += " (did you mean '" + *guess + "'?)";
+    throw InputError(ref.place, rule + "; " + tag_list(mesh));
+  }
+  if (tag->second.empty())
+    throw InputError(ref.place, "surface tag '" + ref.name + "' of " + mesh_name(c) +
+                                    " has no triangles; " + tag_list(mesh));
+}
+
+/// Largest distance of the tag's nodes from their least-squares plane, and the tolerance for it.
+std::pair<double, double> planarity(const Mesh& mesh, const std::vector<int>& triangles) {
+  std::set<int> nodes;
+  double edge_sum = 0.0;
+  for (int t : triangles) {
+    const auto& tri = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      nodes.insert(tri[k]);
+      edge_sum += (mesh.nodes[tri[(k + 1) % 3]] - mesh.nodes[tri[k]]).norm();
+    }
+  }
+  const double mean_edge = edge_sum / (3.0 * static_cast<double>(triangles.size()));
+  Vec3d centroid = Vec3d::Zero();
+  for (int v : nodes) centroid += mesh.nodes[v];
+  centroid /= static_cast<double>(nodes.size());
+  Mat3d covariance = Mat3d::Zero();
+  for (int v : nodes) {
+    const Vec3d d = mesh.nodes[v] - centroid;
+    covariance += d * d.transpose();
+  }
+  // The best-fit plane's normal is the eigenvector of the smallest eigenvalue (ascending order).
+  const Eigen::SelfAdjointEigenSolver<Mat3d> eigen(covariance);
+  const Vec3d normal = eigen.eigenvectors().col(0);
+  double deviation = 0.0;
+  for (int v : nodes) deviation = std::max(deviation, std::abs(normal.dot(mesh.nodes[v] - centroid)));
+  return {deviation, kPlanarityTolerance * mean_edge};
+}
+
+}  // namespace
+
+Mesh load_case_mesh(const Case& c) {
+  namespace fs = std::filesystem;
+  if (c.mesh.file) {
+    const std::string& path = *c.mesh.file;
+    std::error_code ec;
+    const std::string note = c.directory.empty()
+                                 ? std::string()
+                                 : " (relative paths are read from the case file's directory)";
+    if (!fs::exists(path, ec))
+      throw InputError(c.mesh.file_place, "mesh file '" + path + "' does not exist" + note);
+    if (fs::is_directory(path, ec))
+      throw InputError(c.mesh.file_place, "'" + path + "' is a directory, not a mesh file");
+    return read_gmsh(path);  // its errors name the mesh file
+  }
+  if (!c.mesh.generate) throw InputError(c.mesh.place, "no mesh file and nothing to generate");
+  try {
+    return generate_mesh(*c.mesh.generate);
+  } catch (const InputError& e) {
+    // The generator names the option ("mesh.thickness") but not the case file: place the error at
+    // that key's line, or at `mesh:` when the option took its default.
+    if (!e.place().file.empty()) throw;
+    InputPlace place = c.mesh.place;
+    const std::string& key = e.place().key;
+    const std::string prefix = "mesh.";
+    const std::string option = key.rfind(prefix, 0) == 0 ? key.substr(prefix.size()) : key;
+    if (const auto it = c.mesh.option_places.find(option); it != c.mesh.option_places.end())
+      place = it->second;
+    place.key = key.empty() ? c.mesh.place.key : prefix + option;
+    throw InputError(place, e.rule());
+  }
+}
+
+void check_case_against_mesh(const Case& c, const Mesh& mesh) {
+  for (const BoundaryCondition& bc : c.boundary) check_surface(c, mesh, bc.surface);
+  for (const Load& load : c.loads)
+    if (load.type == LoadType::pressure) check_surface(c, mesh, load.surface);
+  for (const Cavity& cavity : c.cavities) check_surface(c, mesh, cavity.surface);
+  for (const Die& die : c.dies) {
+    if (die.region) check_surface(c, mesh, *die.region);
+    if (die.surface) check_surface(c, mesh, *die.surface);
+  }
+
+  for (const BoundaryCondition& bc : c.boundary) {
+    if (bc.type != BoundaryType::symmetry) continue;
+    const auto [deviation, tolerance] = planarity(mesh, mesh.surface_tags.at(bc.surface.name));
+    if (deviation > tolerance)
+      throw InputError(bc.surface.place,
+                       "symmetry surface '" + bc.surface.name + "' is not planar: its nodes lie up to " +
+                           format_number(deviation) + " mm from their best-fit plane (tolerance " +
+                           format_number(tolerance) + " mm = " + format_number(kPlanarityTolerance) +
+                           " x mean edge length)");
+  }
+
+  const MeshReport report = check_mesh(mesh);
+  if (!report.ok()) {
+    const InputPlace place = c.mesh.file ? InputPlace{*c.mesh.file, 0, 0, ""} : c.mesh.place;
+    const std::size_t shown = std::min<std::size_t>(report.errors.size(), 5);
+    std::string rule = (c.mesh.file ? "the mesh" : mesh_name(c)) + " fails its check: ";
+    for (std::size_t i = 0; i < shown; ++i) rule += (i ? "; " : "") + report.errors[i];
+    if (report.errors.size() > shown)
+      rule += "; and " + std::to_string(report.errors.size() - shown) + " more";
+    throw InputError(place, rule);
+  }
+}
+
+}  // namespace plisse
