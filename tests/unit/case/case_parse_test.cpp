@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "case_test_util.hpp"
 #include "io/case.hpp"
@@ -278,6 +280,37 @@ TEST(CaseParse, EveryExampleParses) {
     ++n;
   }
   EXPECT_GT(n, 0);
+}
+
+}  // namespace
+}  // namespace plisse
+
+namespace plisse {
+namespace {
+
+/// The first ```yaml block after `heading` in docs/case-file.md.
+std::string documented_example(const std::string& heading) {
+  std::ifstream in(std::string(PLISSE_SOURCE_DIR) + "/docs/case-file.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string doc = text.str();
+  const std::size_t at = doc.find(heading);
+  const std::size_t begin = doc.find("```yaml\n", at);
+  const std::size_t end = doc.find("```\n", begin + 8);
+  if (at == std::string::npos || begin == std::string::npos || end == std::string::npos) return {};
+  return doc.substr(begin + 8, end - begin - 8);
+}
+
+TEST(CaseParse, DocumentedCompleteExampleIsValidAgainstItsMesh) {
+  const std::string example = documented_example("## Complete example");
+  ASSERT_FALSE(example.empty());
+  const Case c = parse_case_string(example, "docs/case-file.md");
+  EXPECT_EQ(c.mesh.generate->kind, "spherical-shell");
+  EXPECT_EQ(c.mesh.generate->symmetry, Symmetry::quarter);
+  EXPECT_EQ(c.dies[0].ramp.start, 0.2);
+  EXPECT_EQ(c.loads[0].ramp.end, 0.2);
+  const Mesh mesh = load_case_mesh(c);
+  EXPECT_NO_THROW(check_case_against_mesh(c, mesh));
 }
 
 }  // namespace
