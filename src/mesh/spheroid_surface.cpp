@@ -110,31 +110,33 @@ double kept_fraction(Symmetry symmetry) {
 SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetry symmetry) {
   FE_CHECK(a > 0.0 && b > 0.0 && h > 0.0, "mesh_spheroid_surface: sizes must be positive");
   const auto planes = cut_planes(symmetry);
-  const double big = 2.0 * std::max(a, b);
-  const double tolerance = 1e-9 * big;  // Gmsh places curve nodes within round-off of the plane
+  const double tolerance = 1e-9 * std::max(a, b);  // cut-plane nodes are within round-off of it
   GmshSession session;
   SurfaceTriangulation surface;
   try {
     gmsh::model::add("spheroid");
-    const int volume = gmsh::model::occ::addSphere(0.0, 0.0, 0.0, a);
-    if (b != a) gmsh::model::occ::dilate({{3, volume}}, 0.0, 0.0, 0.0, 1.0, b / a, 1.0);
-    if (symmetry != Symmetry::full) {
-      const double x0 = planes[0] ? 0.0 : -big, y0 = planes[1] ? 0.0 : -big, z0 = planes[2] ? 0.0 : -big;
-      const int box = gmsh::model::occ::addBox(x0, y0, z0, big - x0, big - y0, big - z0);
-      gmsh::vectorpair kept;
-      std::vector<gmsh::vectorpair> kept_map;
-      gmsh::model::occ::intersect({{3, volume}}, {{3, box}}, kept, kept_map);
-    }
+    // Meridian in the x-y plane (x >= 0), from the south pole (0, -b) over the equator (a, 0) to
+    // the north pole (0, b); from the equator only when y >= 0 is kept. OpenCASCADE wants the
+    // ellipse's x radius strictly larger than its y radius, hence a circle when a = b.
+    const double first = planes[1] ? 0.0 : -0.5 * std::numbers::pi, last = 0.5 * std::numbers::pi;
+    const int meridian = a == b ? gmsh::model::occ::addCircle(0.0, 0.0, 0.0, a, -1, first, last)
+                                : gmsh::model::occ::addEllipse(0.0, 0.0, 0.0, a, b, -1, first, last);
+    // Swept about -y, so that x turns towards +z: x = r cos(phi), z = r sin(phi), phi in
+    // [0, sweep]. Quarter and octant keep x, z >= 0, half z >= 0, full everything.
+    const double sweep = symmetry == Symmetry::full   ? 2.0 * std::numbers::pi
+                         : symmetry == Symmetry::half ? std::numbers::pi
+                                                      : 0.5 * std::numbers::pi;
+    gmsh::vectorpair swept;
+    gmsh::model::occ::revolve({{1, meridian}}, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, sweep, swept);
     gmsh::model::occ::synchronize();
     session.check_internal("spheroid geometry");
     gmsh::option::setNumber("Mesh.MeshSizeMax", h);
     gmsh::option::setNumber("Mesh.MeshSizeMin", 0.0);
+    // At least 12 elements per 2 pi radius of curvature: resolves the rim of a flat airbag.
     gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 12);
     gmsh::model::mesh::generate(2);
     session.check_internal("spheroid surface meshing");
 
-    // Curved surfaces only: the flat cut faces have all their nodes on a cut plane (judged from
-    // the nodes: OpenCASCADE bounding boxes are padded by tolerances).
     gmsh::vectorpair surfaces;
     gmsh::model::getEntities(surfaces, 2);
     std::unordered_map<std::size_t, int> index;
@@ -142,15 +144,6 @@ SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetr
       std::vector<std::size_t> node_tags, element_tags, element_nodes;
       std::vector<double> coords, parametric;
       gmsh::model::mesh::getNodes(node_tags, coords, parametric, 2, tag, /*includeBoundary=*/true, false);
-      bool flat = false;
-      for (int axis = 0; axis < 3; ++axis) {
-        if (!planes[static_cast<std::size_t>(axis)]) continue;
-        bool all_on_plane = true;
-        for (std::size_t i = 0; i < node_tags.size(); ++i)
-          all_on_plane = all_on_plane && std::abs(coords[3 * i + static_cast<std::size_t>(axis)]) < tolerance;
-        flat = flat || all_on_plane;
-      }
-      if (flat) continue;
       for (std::size_t i = 0; i < node_tags.size(); ++i) {
         if (!index.emplace(node_tags[i], static_cast<int>(surface.nodes.size())).second) continue;
         surface.nodes.emplace_back(coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]);
