@@ -97,17 +97,16 @@ void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model
   }
   const auto fields = model.element_fields();
   const int n_cells = mesh.n_tets();
-  VtuField cauchy{"cauchy_stress", 6, std::vector<double>(6 * n_cells)};
-  VtuField von_mises{"von_mises", 1, std::vector<double>(n_cells)};
-  VtuField jacobian{"J", 1, std::vector<double>(n_cells)};
+  std::vector<Mat3d> cauchy(n_cells);
+  std::vector<double> von_mises(n_cells), jacobian(n_cells);
   for (int e = 0; e < n_cells; ++e) {
-    const Mat3d& s = fields[e].cauchy;
-    const double vtk_order[6] = {s(0, 0), s(1, 1), s(2, 2), s(0, 1), s(1, 2), s(0, 2)};
-    std::copy(vtk_order, vtk_order + 6, cauchy.values.begin() + 6 * e);
-    von_mises.values[e] = fields[e].von_mises;
-    jacobian.values[e] = fields[e].J;
+    cauchy[e] = fields[e].cauchy;
+    von_mises[e] = fields[e].von_mises;
+    jacobian[e] = fields[e].J;
   }
-  write_vtu(file, mesh, points, {displacement, velocity, pressure}, {cauchy, von_mises, jacobian});
+  write_vtu(file, mesh, points, {displacement, velocity, pressure},
+            {make_symmetric_tensor_field("cauchy_stress", cauchy),
+             make_scalar_field("von_mises", von_mises), make_scalar_field("J", jacobian)});
 }
 
 }  // namespace
@@ -130,9 +129,9 @@ void run_case(const RunOptions& options) {
   const std::vector<ConstrainedComponent> constraints = collect_constraints(c, mesh);
 
   RunDirectory dir(out_dir);
-  RunLog log(dir.log_file());
+  RunLog log(dir.log_txt());
   log.info("plisse run " + options.case_file + (c.title.empty() ? "" : "  (" + c.title + ")"));
-  log.info("output: " + dir.path().string());
+  log.info("output: " + dir.directory().string());
   for (const auto& o : options.overrides) log.info("  --set " + o);
 
   PetscSession petsc({c.solver.petsc_options});
@@ -154,8 +153,8 @@ void run_case(const RunOptions& options) {
   }
 
   HistoryColumns columns = history_columns(c, mesh);
-  HistoryWriter history(dir.history_file(), columns.names);
-  PvdWriter pvd(dir.pvd_file());
+  HistoryWriter history(dir.history_csv(), columns.names);
+  PvdWriter pvd(dir.solution_pvd());
   double time_output = 0.0;
   std::vector<double> previous_state = model.state();
   int last_written = -1;
@@ -164,7 +163,7 @@ void run_case(const RunOptions& options) {
   auto write_output = [&](const StepInfo& info) {
     const auto t_out = Clock::now();
     const std::string name = dir.step_file_name(info.step);
-    write_step_vtu(dir.path() / name, c, model, previous_state, info.dt);
+    write_step_vtu(dir.directory() / name, c, model, previous_state, info.dt);
     pvd.add(info.time, name);
     last_written = info.step;
     time_output += seconds_since(t_out);
@@ -237,7 +236,7 @@ void run_case(const RunOptions& options) {
       final_values[history.columns()[i]] = history.rows().back()[i];
     summary["final"] = final_values;
   }
-  write_json_file(dir.summary_file(), summary);
+  write_json_file(dir.summary_json(), summary);
   char line[256];
   std::snprintf(line, sizeof line,
                 "%s: %d steps, %d Newton iterations, %d cut-backs, %.2fs (assembly %.2fs, "
@@ -251,7 +250,7 @@ void run_case(const RunOptions& options) {
     log.flush();
     throw SolverError(result.failure + " (last converged step " + std::to_string(last_step.step) +
                       " at t = " + std::to_string(last_step.time) + " is written in " +
-                      dir.path().string() + ")");
+                      dir.directory().string() + ")");
   }
   log.flush();
 }

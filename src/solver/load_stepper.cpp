@@ -18,7 +18,7 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
   double dt = std::min(end / settings_.steps, max_dt);
   double t = 0.0, previous_dt = 0.0;
   int cutbacks_this_step = 0;
-  model_.apply_constraints(0.0);
+  model_.set_time(0.0);
   model_.save_converged();
   std::vector<double> previous_state = model_.converged_state();
   char line[256];
@@ -28,7 +28,11 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
                        " at time " + std::to_string(t);
       return result;
     }
-    const double t_new = (t + dt > end * (1.0 - 1e-9)) ? end : t + dt;
+    // Land on end_time without a sliver: take the rest when it fits, halve it when it is less
+    // than two steps.
+    const double remaining = end - t;
+    if (remaining > dt && remaining < 2.0 * dt) dt = 0.5 * remaining;
+    const double t_new = (remaining <= dt * (1.0 + 1e-9)) ? end : t + dt;
     const double step = t_new - t;
     // Predictor: extrapolate the last increment (secant), then impose the new boundary values.
     if (previous_dt > 0.0) {
@@ -37,7 +41,7 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
       auto& x = model_.state();
       for (size_t i = 0; i < x.size(); ++i) x[i] = now[i] + s * (now[i] - previous_state[i]);
     }
-    model_.apply_constraints(t_new);
+    model_.set_time(t_new);
     NewtonResult newton;
     std::string failure;
     try {

@@ -36,8 +36,16 @@ MixedModel::MixedModel(const Mesh& mesh, AnyMaterial material, double inverse_bu
   save_converged();
 }
 
-void MixedModel::apply_constraints(double t) {
+void MixedModel::set_time(double t) {
+  time_ = t;
   for (const auto& c : constraints_) state_[DofMap::dof(c.node, c.component)] = c.at(t);
+}
+
+void MixedModel::set_external_force(std::vector<double> force, Ramp ramp) {
+  FE_CHECK(force.size() == state_.size(), "external force has " << force.size()
+                                              << " entries, the model " << state_.size() << " dofs");
+  external_force_ = std::move(force);
+  external_ramp_ = ramp;
 }
 
 void MixedModel::get_free(Vec x) const {
@@ -87,6 +95,10 @@ AssemblyStatus MixedModel::assemble_residual(Vec f) {
         }
       },
       material_);
+  if (!external_force_.empty()) {
+    const double factor = external_ramp_.factor(time_);
+    for (size_t d = 0; d < full_residual_.size(); ++d) full_residual_[d] -= factor * external_force_[d];
+  }
   PetscScalar* a = nullptr;
   PLISSE_PETSC(VecGetArray(f, &a));
   for (int d = 0; d < dofs_.n_dofs(); ++d)

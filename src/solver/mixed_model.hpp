@@ -43,8 +43,14 @@ class MixedModel {
   /// Full state, kPerNode values per node (ux, uy, uz, p).
   const std::vector<double>& state() const { return state_; }
   std::vector<double>& state() { return state_; }
-  /// Sets the constrained components to their prescribed values at time t.
-  void apply_constraints(double t);
+  /// Moves to time t: the constrained components take their prescribed values at t and the
+  /// external forces their ramped magnitude.
+  void set_time(double t);
+  double time() const { return time_; }
+
+  /// Fixed external nodal forces [N] on the full dofs (zero on pressure dofs), applied as
+  /// ramp.factor(t) * force; the residual is internal minus external force. Replaces earlier ones.
+  void set_external_force(std::vector<double> force, Ramp ramp);
 
   /// Copies the free dofs of the state into `x`, or from `x` into the state.
   void get_free(Vec x) const;
@@ -84,6 +90,9 @@ class MixedModel {
   std::vector<double> state_, converged_state_;
   std::vector<mini::BubbleVec> bubble_, converged_bubble_;
   std::vector<double> full_residual_;
+  std::vector<double> external_force_;
+  Ramp external_ramp_;
+  double time_ = 0.0;
 };
 
 }  // namespace plisse
