@@ -307,7 +307,7 @@ Cavity read_cavity(const Field& field, Reader& reader) {
 Vec3d unit_vector(const Field& f) {
   const Vec3d v = f.vec3();
   const double norm = v.norm();
-  if (!(norm > 0.0) || !std::isfinite(norm)) f.fail("must be a non-zero direction, got [0, 0, 0]");
+  if (!(norm > 0.0) || !std::isfinite(norm)) f.fail("must be a non-zero direction (its length is 0)");
   return v / norm;
 }
 
@@ -431,14 +431,21 @@ OutputSettings read_output(const Field& field) {
 
 Case parse_case_string(const std::string& text, const std::string& name,
                        const std::vector<std::string>& overrides) {
-  YAML::Node root;
+  std::vector<YAML::Node> documents;
   try {
-    root = YAML::Load(text);
+    documents = YAML::LoadAll(text);
   } catch (const YAML::Exception& e) {
     const bool marked = !e.mark.is_null();
     throw InputError({name, marked ? e.mark.line + 1 : 0, marked ? e.mark.column + 1 : 0, ""},
                      "YAML syntax error: " + e.msg);
   }
+  if (documents.size() > 1) {
+    const YAML::Mark m = documents[1].Mark();
+    throw InputError({name, m.is_null() ? 0 : m.line + 1, m.is_null() ? 0 : m.column + 1, ""},
+                     "a case file holds one YAML document, this is a second one (remove the '---' "
+                     "line before it or split the file)");
+  }
+  YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
   if (!root.IsDefined() || root.IsNull()) throw InputError({name, 0, 0, ""}, "the case file is empty");
   if (!root.IsMap())
     throw InputError({name, root.Mark().line + 1, root.Mark().column + 1, ""},

@@ -63,11 +63,13 @@ std::vector<PathStep> parse_path(const std::string& path, const std::string& tex
 
 std::string path_string(const std::vector<PathStep>& steps, std::size_t n) {
   std::string out;
+  // Appended piecewise: GCC 12 warns (-Wrestrict, falsely) on "literal" + std::string here.
   for (std::size_t i = 0; i < n; ++i) {
-    if (steps[i].is_index)
-      out += "[" + std::to_string(steps[i].index) + "]";
-    else
-    {
+    if (steps[i].is_index) {
+      out += '[';
+      out += std::to_string(steps[i].index);
+      out += ']';
+    } else {
       if (!out.empty()) out += '.';
       out += steps[i].key;
     }

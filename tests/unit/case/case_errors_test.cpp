@@ -34,6 +34,9 @@ TEST(CaseErrors, MissingEmptyAndNonMapFiles) {
   EXPECT_INPUT_ERROR(case_error("# only a comment\n\n"), "case.yaml", 0, 0, "", "is empty");
   EXPECT_INPUT_ERROR(case_error("- mesh\n- material\n"), "case.yaml", 1, 1, "",
                      "expected a map of sections");
+  EXPECT_INPUT_ERROR(case_error(kMinimalCase + "---\nmesh: {generate: sheet}\n"), "case.yaml", 4, 1, "",
+                     "a case file holds one YAML document");
+  EXPECT_NO_THROW(parse_case_string("---\n" + kMinimalCase, "case.yaml"));
 }
 
 TEST(CaseErrors, UnknownKeysListTheAllowedOnesAndSuggestTypos) {
