@@ -14,6 +14,9 @@
 #include "mesh_test_util.hpp"
 
 namespace plisse {
+
+void PrintTo(Symmetry s, std::ostream* out) { *out << to_string(s); }  // for test names (ADL)
+
 namespace {
 
 using test::mesh_volume;
@@ -94,6 +97,8 @@ struct ShellCase {
   std::vector<std::string> sym_tags;
 };
 
+void PrintTo(const ShellCase& c, std::ostream* out) { *out << to_string(c.symmetry); }
+
 class GenerateShell : public ::testing::TestWithParam<ShellCase> {};
 
 TEST_P(GenerateShell, ExactLayersPlanesAndVolume) {
@@ -150,7 +155,8 @@ TEST_P(GenerateShell, ExactLayersPlanesAndVolume) {
   // exactly ((R + t)^3 / R^3 - 1) times the volume of the cones from the origin to the inner
   // triangles (to round-off), and that polyhedron lies inside the sphere: its relative volume
   // deficit eps is the chordal error, about (h/R)^2 / 4 for triangles of edge h (sagitta
-  // h^2/(8R) averaged over a triangle, times 3 for a volume). Bound used: 0 < eps < 0.5 (h/R)^2.
+  // h^2/(8R) averaged over a triangle, times 3 for a volume; measured 0.2 to 0.35 (h/R)^2 as
+  // Gmsh's edges vary around h). Bound used: 0 < eps < 0.5 (h/R)^2.
   double inner_cones = 0.0;
   for (int tri : mesh.surface_tags.at("inner")) {
     const auto& n = mesh.triangles[static_cast<std::size_t>(tri)];

@@ -57,6 +57,8 @@ struct Format {
   bool binary;
 };
 
+void PrintTo(const Format& f, std::ostream* out) { *out << "v" << f.version << (f.binary ? " binary" : " ASCII"); }
+
 class GmshRoundTrip : public ::testing::TestWithParam<Format> {};
 
 TEST_P(GmshRoundTrip, NodesElementsAndTagsComeBackIdentical) {
