@@ -44,9 +44,9 @@ std::string material_line(const MaterialSection& m) {
     out += (first ? " " : ", ") + key + " = " + number(value) + unit;
     first = false;
   }
-  out += m.exact_incompressibility ? "; exactly incompressible"
-                                   : "; nearly incompressible, bulk modulus " +
-                                         number(m.bulk_modulus) + " MPa";
+  out += m.exact_incompressibility
+             ? "; exactly incompressible"
+             : "; nearly incompressible, bulk modulus " + number(m.bulk_modulus) + " MPa";
   if (m.density > 0.0) out += "; density " + number(m.density) + " tonne/mm^3";
   return out;
 }

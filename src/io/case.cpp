@@ -22,8 +22,8 @@ using case_detail::FieldMap;
 using case_detail::format_number;
 using case_detail::join;
 
-const Range kFraction{0.0, 1.0, true, false};      // (0, 1]
-const Range kOpenUnit{0.0, 1.0, true, true};       // (0, 1)
+const Range kFraction{0.0, 1.0, true, false};  // (0, 1]
+const Range kOpenUnit{0.0, 1.0, true, true};   // (0, 1)
 const Range kLatitude = Range::closed(-90.0, 90.0);
 
 const std::vector<std::pair<std::string, BoundaryType>> kBoundaryTypes{
@@ -40,15 +40,18 @@ const std::vector<std::pair<std::string, ContactKind>> kContactKinds{
     {"frictionless", ContactKind::frictionless}, {"sticking", ContactKind::sticking}};
 const std::vector<std::pair<std::string, Scheme>> kSchemes{
     {"total-lagrangian", Scheme::total_lagrangian}, {"incremental", Scheme::incremental}};
-const std::vector<std::pair<std::string, LineSearch>> kLineSearches{
-    {"bt", LineSearch::bt}, {"basic", LineSearch::basic}, {"l2", LineSearch::l2}, {"cp", LineSearch::cp}};
-const std::vector<std::pair<std::string, bool>> kIncompressibility{{"exact", true}, {"nearly", false}};
+const std::vector<std::pair<std::string, LineSearch>> kLineSearches{{"bt", LineSearch::bt},
+                                                                    {"basic", LineSearch::basic},
+                                                                    {"l2", LineSearch::l2},
+                                                                    {"cp", LineSearch::cp}};
+const std::vector<std::pair<std::string, bool>> kIncompressibility{{"exact", true},
+                                                                   {"nearly", false}};
 const std::vector<std::pair<std::string, std::string>> kImperfectionKinds{{"random", "random"},
                                                                           {"mode", "mode"}};
 const std::vector<std::pair<std::string, char>> kAxes{{"x", 'x'}, {"y", 'y'}, {"z", 'z'}};
 
-const std::vector<std::string> kSections{"title",    "mesh",  "material", "boundary", "loads",
-                                         "cavities", "dies",  "probes",   "solver",   "output"};
+const std::vector<std::string> kSections{"title",    "mesh", "material", "boundary", "loads",
+                                         "cavities", "dies", "probes",   "solver",   "output"};
 
 /// State shared while reading one case: ramp default and the names already used.
 struct Reader {
@@ -58,7 +61,9 @@ struct Reader {
   /// "pressure:<name>", ...) must not collide.
   std::map<std::string, std::pair<std::string, InputPlace>> names;
 
-  std::string unique_name(const FieldMap& entry) { return unique_name(entry.require("name"), entry); }
+  std::string unique_name(const FieldMap& entry) {
+    return unique_name(entry.require("name"), entry);
+  }
 
   std::string unique_name(const Field& f, const FieldMap& entry) {
     const std::string name = f.name();
@@ -111,8 +116,10 @@ MeshSection read_mesh(const Field& field, const std::string& directory) {
   const auto file = m.find("file"), generate = m.find("generate");
   if (file && generate) generate->fail_at_key("give either 'file' or 'generate', not both");
   if (!file && !generate)
-    throw InputError(s.place, "needs either 'file: PATH' (a Gmsh .msh file) or 'generate: KIND' "
-                              "(one of: " + join(kind_names()) + ")");
+    throw InputError(s.place,
+                     "needs either 'file: PATH' (a Gmsh .msh file) or 'generate: KIND' "
+                     "(one of: " +
+                         join(kind_names()) + ")");
   std::vector<std::string> all_options;
   for (const MeshKind& k : mesh_kinds())
     for (const MeshOption& o : k.options) all_options.push_back(o.key);
@@ -187,8 +194,9 @@ MaterialSection read_material(const Field& field) {
   s.exact_incompressibility = m.choice("incompressibility", true, kIncompressibility);
   const auto bulk = m.find("bulk_modulus");
   if (s.exact_incompressibility && bulk)
-    bulk->fail_at_key("bulk_modulus applies only with 'incompressibility: nearly' (exact "
-                      "incompressibility has an infinite bulk modulus)");
+    bulk->fail_at_key(
+        "bulk_modulus applies only with 'incompressibility: nearly' (exact "
+        "incompressibility has an infinite bulk modulus)");
   if (!s.exact_incompressibility) {
     if (!bulk) {
       InputPlace p = m.find("incompressibility")->place();
@@ -242,8 +250,9 @@ BoundaryCondition read_boundary(const Field& field, Reader& reader) {
 
   const Field value = m.require("value");
   if (!value.node().IsSequence() || value.node().size() != 3)
-    value.fail("expected a list of 3 displacements [ux, uy, uz] in mm, ~ for a free component, got " +
-               value.describe());
+    value.fail(
+        "expected a list of 3 displacements [ux, uy, uz] in mm, ~ for a free component, got " +
+        value.describe());
   const std::vector<Field> items = value.items();
   bool any = false;
   for (int k = 0; k < 3; ++k) {
@@ -307,7 +316,8 @@ Cavity read_cavity(const Field& field, Reader& reader) {
 Vec3d unit_vector(const Field& f) {
   const Vec3d v = f.vec3();
   const double norm = v.norm();
-  if (!(norm > 0.0) || !std::isfinite(norm)) f.fail("must be a non-zero direction (its length is 0)");
+  if (!(norm > 0.0) || !std::isfinite(norm))
+    f.fail("must be a non-zero direction (its length is 0)");
   return v / norm;
 }
 
@@ -318,8 +328,8 @@ Die read_die(const Field& field, Reader& reader) {
   const Field shape = m.require("shape");
   d.shape = shape.choice(kDieShapes);
   d.contact = m.choice("contact", ContactKind::frictionless, kContactKinds);
-  std::vector<std::string> allowed{"name", "shape", "point", "contact", "surface", "move",
-                                   "penalty", "tolerance"};
+  std::vector<std::string> allowed{"name",    "shape", "point",   "contact",
+                                   "surface", "move",  "penalty", "tolerance"};
   if (d.shape == DieShape::plane) allowed.push_back("normal");
   if (d.shape == DieShape::cylinder) allowed.push_back("axis");
   if (d.shape != DieShape::plane) allowed.push_back("radius");
@@ -404,8 +414,9 @@ SolverSettings read_solver(const Field& field) {
     ss.seed = st.integer("seed", ss.seed, Range::at_least(0));
     if (ss.branch_switch && !ss.check)
       st.find("branch_switch")
-          ->fail("branch_switch needs 'check: true' (the instability it switches at is found by "
-                 "the stability check)");
+          ->fail(
+              "branch_switch needs 'check: true' (the instability it switches at is found by "
+              "the stability check)");
   }
   return s;
 }
@@ -446,7 +457,8 @@ Case parse_case_string(const std::string& text, const std::string& name,
                      "line before it or split the file)");
   }
   YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
-  if (!root.IsDefined() || root.IsNull()) throw InputError({name, 0, 0, ""}, "the case file is empty");
+  if (!root.IsDefined() || root.IsNull())
+    throw InputError({name, 0, 0, ""}, "the case file is empty");
   if (!root.IsMap())
     throw InputError({name, root.Mark().line + 1, root.Mark().column + 1, ""},
                      "expected a map of sections (mesh:, material:, ...) at the top level");

@@ -27,7 +27,8 @@ std::string mesh_name(const Case& c) {
 }
 
 std::string tag_list(const Mesh& mesh) {
-  if (mesh.surface_tags.empty()) return "the mesh has no surface tags (Gmsh physical groups of dimension 2)";
+  if (mesh.surface_tags.empty())
+    return "the mesh has no surface tags (Gmsh physical groups of dimension 2)";
   std::string out = "available surface tags: ";
   bool first = true;
   for (const auto& [name, triangles] : mesh.surface_tags) {
@@ -76,7 +77,8 @@ std::pair<double, double> planarity(const Mesh& mesh, const std::vector<int>& tr
   const Eigen::SelfAdjointEigenSolver<Mat3d> eigen(covariance);
   const Vec3d normal = eigen.eigenvectors().col(0);
   double deviation = 0.0;
-  for (int v : nodes) deviation = std::max(deviation, std::abs(normal.dot(mesh.nodes[v] - centroid)));
+  for (int v : nodes)
+    deviation = std::max(deviation, std::abs(normal.dot(mesh.nodes[v] - centroid)));
   return {deviation, kPlanarityTolerance * mean_edge};
 }
 
@@ -129,10 +131,10 @@ void check_case_against_mesh(const Case& c, const Mesh& mesh) {
     const auto [deviation, tolerance] = planarity(mesh, mesh.surface_tags.at(bc.surface.name));
     if (deviation > tolerance)
       throw InputError(bc.surface.place,
-                       "symmetry surface '" + bc.surface.name + "' is not planar: its nodes lie up to " +
-                           format_number(deviation) + " mm from their best-fit plane (tolerance " +
-                           format_number(tolerance) + " mm = " + format_number(kPlanarityTolerance) +
-                           " x mean edge length)");
+                       "symmetry surface '" + bc.surface.name +
+                           "' is not planar: its nodes lie up to " + format_number(deviation) +
+                           " mm from their best-fit plane (tolerance " + format_number(tolerance) +
+                           " mm = " + format_number(kPlanarityTolerance) + " x mean edge length)");
   }
 
   const MeshReport report = check_mesh(mesh);

@@ -80,11 +80,16 @@ std::string path_string(const std::vector<PathStep>& steps, std::size_t n) {
 std::string kind_of(const YAML::Node& node) {
   if (!node.IsDefined()) return "missing";
   switch (node.Type()) {
-    case YAML::NodeType::Null: return "empty";
-    case YAML::NodeType::Scalar: return "a single value";
-    case YAML::NodeType::Sequence: return "a list";
-    case YAML::NodeType::Map: return "a map";
-    default: return "undefined";
+    case YAML::NodeType::Null:
+      return "empty";
+    case YAML::NodeType::Scalar:
+      return "a single value";
+    case YAML::NodeType::Sequence:
+      return "a list";
+    case YAML::NodeType::Map:
+      return "a map";
+    default:
+      return "undefined";
   }
 }
 
@@ -124,14 +129,16 @@ void assign(YAML::Node node, const std::vector<PathStep>& steps, std::size_t i,
 
 }  // namespace
 
-std::vector<std::string> apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides) {
+std::vector<std::string> apply_overrides(YAML::Node& root,
+                                         const std::vector<std::string>& overrides) {
   std::vector<std::string> paths;
   for (const std::string& text : overrides) {
     const std::size_t eq = text.find('=');
     if (eq == std::string::npos)
       fail("", "malformed override '" + text + "': expected key.path=value, e.g. mesh.layers=4");
     const std::string path = trim(text.substr(0, eq));
-    if (path.empty()) fail("", "malformed override '" + text + "': the key path before '=' is empty");
+    if (path.empty())
+      fail("", "malformed override '" + text + "': the key path before '=' is empty");
     const std::vector<PathStep> steps = parse_path(path, text);
     const std::string canonical = path_string(steps, steps.size());
     YAML::Node value;

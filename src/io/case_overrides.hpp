@@ -17,6 +17,7 @@ namespace plisse::case_detail {
 /// "loads[0].value"), in order. Throws InputError with file "--set" for a malformed override, a
 /// value that is not valid YAML, a path through something that is not a map or list, or an index
 /// out of range.
-std::vector<std::string> apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides);
+std::vector<std::string> apply_overrides(YAML::Node& root,
+                                         const std::vector<std::string>& overrides);
 
 }  // namespace plisse::case_detail

@@ -185,8 +185,10 @@ std::string Field::name() const {
   if (s.empty()) fail("a name must not be empty");
   for (char ch : s)
     if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '.'))
-      fail("a name may contain only letters, digits, '_', '-' and '.' (it becomes an output "
-           "column header), got '" + s + "'");
+      fail(
+          "a name may contain only letters, digits, '_', '-' and '.' (it becomes an output "
+          "column header), got '" +
+          s + "'");
   return s;
 }
 
@@ -236,9 +238,9 @@ FieldMap::FieldMap(const Field& self) : self_(self) {
     for (const auto& [other, first] : entries_)
       if (other == name) {
         const InputPlace p = first.key_place();
-        field.fail_at_key("key given twice" +
-                          (p.line > 0 ? " (first at line " + std::to_string(p.line) + ")"
-                                      : std::string()));
+        field.fail_at_key(
+            "key given twice" +
+            (p.line > 0 ? " (first at line " + std::to_string(p.line) + ")" : std::string()));
       }
     entries_.emplace_back(name, std::move(field));
   }
@@ -254,9 +256,10 @@ Field FieldMap::require(const std::string& key) const {
   if (auto f = find(key)) return *f;
   InputPlace p = self_.key_place();
   p.key = child_path(self_.path(), key);
-  throw InputError(p, "required value is missing" +
-                          (self_.path().empty() ? std::string()
-                                                : " (add '" + key + ":' to '" + self_.path() + "')"));
+  throw InputError(
+      p, "required value is missing" + (self_.path().empty()
+                                            ? std::string()
+                                            : " (add '" + key + ":' to '" + self_.path() + "')"));
 }
 
 void FieldMap::check_keys(const std::vector<std::string>& allowed, const std::string& variant,
@@ -265,10 +268,12 @@ void FieldMap::check_keys(const std::vector<std::string>& allowed, const std::st
     if (std::find(allowed.begin(), allowed.end(), name) != allowed.end()) continue;
     const std::string list = allowed.empty() ? "none" : join(allowed);
     if (std::find(other_variants.begin(), other_variants.end(), name) != other_variants.end())
-      field.fail_at_key("'" + name + "' does not apply to " + variant + "; allowed keys here: " + list);
+      field.fail_at_key("'" + name + "' does not apply to " + variant +
+                        "; allowed keys here: " + list);
     std::string rule = "unknown key '" + name + "'";
     if (!self_.path().empty()) rule += " in '" + self_.path() + "'";
-    if (const auto guess = closest_match(name, allowed)) rule += " (did you mean '" + *guess + "'?)";
+    if (const auto guess = closest_match(name, allowed))
+      rule += " (did you mean '" + *guess + "'?)";
     rule += "; allowed keys" + (variant.empty() ? std::string() : " for " + variant) + ": " + list;
     field.fail_at_key(rule);
   }

@@ -107,7 +107,8 @@ class Field {
   std::string describe() const;
 
  private:
-  [[noreturn]] void fail_choice(const std::string& word, const std::vector<std::string>& names) const;
+  [[noreturn]] void fail_choice(const std::string& word,
+                                const std::vector<std::string>& names) const;
   std::string scalar_for_number(const char* what) const;
 
   const Source* source_;

@@ -33,11 +33,13 @@ InputError load_error(const Case& c) {
   return InputError({}, "(no error)");
 }
 
-const std::string kCube = "mesh: {generate: cube, edge: 1.0, divisions: 2}\n"
-                          "material: {model: neo-hookean, c1: 0.1}\n";
+const std::string kCube =
+    "mesh: {generate: cube, edge: 1.0, divisions: 2}\n"
+    "material: {model: neo-hookean, c1: 0.1}\n";
 
 TEST(CaseMesh, CompleteCaseMatchesItsGeneratedCube) {
-  const Case c = parse_case_file(std::string(PLISSE_SOURCE_DIR) + "/tests/data/cases/complete.yaml");
+  const Case c =
+      parse_case_file(std::string(PLISSE_SOURCE_DIR) + "/tests/data/cases/complete.yaml");
   const Mesh mesh = load_case_mesh(c);
   EXPECT_EQ(mesh.n_tets(), 6 * 2 * 2 * 2);  // the cube generator splits each of 2^3 cells into 6
   EXPECT_NO_THROW(check_case_against_mesh(c, mesh));
@@ -67,7 +69,8 @@ TEST(CaseMesh, EveryKindOfSurfaceReferenceIsChecked) {
       {"cavities: [{name: c, surface: inner}]\n", "cavities[0].surface"},
       {"dies: [{name: d, shape: sphere, point: [0, 0, 0], radius: 1, surface: inner}]\n",
        "dies[0].surface"},
-      {"dies: [{name: d, shape: sphere, point: [0, 0, 0], radius: 1, contact: sticking, region: inner}]\n",
+      {"dies: [{name: d, shape: sphere, point: [0, 0, 0], radius: 1, contact: sticking, region: "
+       "inner}]\n",
        "dies[0].region"}};
   for (const auto& [text, key] : cases) {
     const Case c = parse_case_string(kCube + text, "case.yaml");
@@ -80,7 +83,8 @@ TEST(CaseMesh, EveryKindOfSurfaceReferenceIsChecked) {
 }
 
 TEST(CaseMesh, EmptyTagIsRefused) {
-  const Case c = parse_case_string(kCube + "boundary: [{type: fixed, surface: nothing}]\n", "case.yaml");
+  const Case c =
+      parse_case_string(kCube + "boundary: [{type: fixed, surface: nothing}]\n", "case.yaml");
   Mesh mesh = load_case_mesh(c);
   mesh.surface_tags["nothing"] = {};
   EXPECT_INPUT_ERROR(mesh_error(c, mesh), "case.yaml", 3, 35, "boundary[0].surface",
@@ -104,12 +108,14 @@ TEST(CaseMesh, SymmetrySurfacesMustBePlanar) {
   // A plane a little off-axis is still a plane: shear the cube so x = 0 becomes tilted.
   Mesh tilted = load_case_mesh(c);
   for (Vec3d& x : tilted.nodes) x.x() += 0.3 * x.z();
-  const Case only_sym = parse_case_string(kCube + "boundary: [{type: symmetry, surface: sym_x}]\n", "c.yaml");
+  const Case only_sym =
+      parse_case_string(kCube + "boundary: [{type: symmetry, surface: sym_x}]\n", "c.yaml");
   EXPECT_NO_THROW(check_case_against_mesh(only_sym, tilted));
 }
 
 TEST(CaseMesh, MeshCheckErrorsNameTheMeshFile) {
-  Case c = parse_case_string("mesh: {file: bad.msh}\nmaterial: {model: neo-hookean, c1: 1}\n", "case.yaml");
+  Case c = parse_case_string("mesh: {file: bad.msh}\nmaterial: {model: neo-hookean, c1: 1}\n",
+                             "case.yaml");
   Mesh mesh;
   mesh.nodes = {Vec3d(0, 0, 0), Vec3d(1, 0, 0), Vec3d(0, 1, 0), Vec3d(0, 0, 1)};
   mesh.tets = {{0, 2, 1, 3}};  // negative orientation
@@ -121,8 +127,9 @@ TEST(CaseMesh, MeshCheckErrorsNameTheMeshFile) {
 }
 
 TEST(CaseMesh, MissingMeshFileIsReportedAtTheFileKey) {
-  const Case c = parse_case_string("mesh:\n  file: meshes/none.msh\nmaterial: {model: neo-hookean, c1: 1}\n",
-                                   "some/dir/case.yaml");
+  const Case c =
+      parse_case_string("mesh:\n  file: meshes/none.msh\nmaterial: {model: neo-hookean, c1: 1}\n",
+                        "some/dir/case.yaml");
   const InputError e = load_error(c);
   EXPECT_INPUT_ERROR(e, "some/dir/case.yaml", 2, 9, "mesh.file", "does not exist");
   EXPECT_NE(e.rule().find("some/dir/meshes/none.msh"), std::string::npos) << e.rule();
@@ -157,7 +164,8 @@ TEST(CaseMesh, GeneratorErrorsArePlacedAtTheOptionOrTheMeshKey) {
   EXPECT_INPUT_ERROR(load_error(given), "case.yaml", 4, 17, "mesh.element_size", "");
   // The same rule broken by a default value: placed at `mesh:`.
   const Case defaulted = parse_case_string(
-      "material: {model: neo-hookean, c1: 1}\nmesh: {generate: spherical-shell, inner_radius: 0.5}\n",
+      "material: {model: neo-hookean, c1: 1}\nmesh: {generate: spherical-shell, inner_radius: "
+      "0.5}\n",
       "case.yaml");
   EXPECT_INPUT_ERROR(load_error(defaulted), "case.yaml", 2, 1, "mesh.element_size", "");
 }

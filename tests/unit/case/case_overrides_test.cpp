@@ -10,13 +10,13 @@ namespace {
 using test::case_error;
 
 const std::string kCase =
-    "mesh: {generate: cube, edge: 1.0, divisions: 1}\n"                       // 1
-    "material: {model: neo-hookean, c1: 0.1}\n"                               // 2
-    "loads:\n"                                                                // 3
-    "  - {type: pressure, name: p, surface: top, value: 1.0e-3}\n"            // 4
-    "dies:\n"                                                                 // 5
-    "  - {name: d, shape: plane, point: [0, 0, 2], normal: [0, 0, -1],\n"     // 6
-    "     move: {displacement: [0, 0, -1], ramp: [0, 1]}}\n";                 // 7
+    "mesh: {generate: cube, edge: 1.0, divisions: 1}\n"                    // 1
+    "material: {model: neo-hookean, c1: 0.1}\n"                            // 2
+    "loads:\n"                                                             // 3
+    "  - {type: pressure, name: p, surface: top, value: 1.0e-3}\n"         // 4
+    "dies:\n"                                                              // 5
+    "  - {name: d, shape: plane, point: [0, 0, 2], normal: [0, 0, -1],\n"  // 6
+    "     move: {displacement: [0, 0, -1], ramp: [0, 1]}}\n";              // 7
 
 Case parse(const std::vector<std::string>& overrides) {
   return parse_case_string(kCase, "case.yaml", overrides);
@@ -67,8 +67,8 @@ TEST(CaseOverrides, ValuesAreValidatedAfterTheOverride) {
                      "expected an integer, got '2.5'");
   EXPECT_INPUT_ERROR(case_error(kCase, {"dies[0].move.displacement=[0, 1]"}), "--set", 0, 0,
                      "dies[0].move.displacement", "expected a list of 3 numbers");
-  EXPECT_INPUT_ERROR(case_error(kCase, {"material={model: mooney-rivlin, c1: 1, c2: -2}"}), "--set", 0, 0,
-                     "material.c2", "must be >= 0 (got -2)");
+  EXPECT_INPUT_ERROR(case_error(kCase, {"material={model: mooney-rivlin, c1: 1, c2: -2}"}), "--set",
+                     0, 0, "material.c2", "must be >= 0 (got -2)");
   // An error elsewhere in the file still names its line.
   EXPECT_INPUT_ERROR(case_error(kCase + "probes: [{name: q, point: [0, 0]}]\n", {"solver.steps=3"}),
                      "case.yaml", 8, 27, "probes[0].point", "expected a list of 3 numbers");
@@ -77,7 +77,8 @@ TEST(CaseOverrides, ValuesAreValidatedAfterTheOverride) {
 TEST(CaseOverrides, MalformedOverrides) {
   EXPECT_INPUT_ERROR(case_error(kCase, {"mesh.layers"}), "--set", 0, 0, "",
                      "malformed override 'mesh.layers': expected key.path=value");
-  EXPECT_INPUT_ERROR(case_error(kCase, {"=3"}), "--set", 0, 0, "", "the key path before '=' is empty");
+  EXPECT_INPUT_ERROR(case_error(kCase, {"=3"}), "--set", 0, 0, "",
+                     "the key path before '=' is empty");
   EXPECT_INPUT_ERROR(case_error(kCase, {"loads[x].value=1"}), "--set", 0, 0, "loads[x].value",
                      "the list index '[x]' must be a non-negative integer");
   EXPECT_INPUT_ERROR(case_error(kCase, {"loads[-1].value=1"}), "--set", 0, 0, "loads[-1].value",

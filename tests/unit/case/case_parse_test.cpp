@@ -176,14 +176,15 @@ TEST(CaseParse, MinimalCaseTakesTheDocumentedDefaults) {
 }
 
 TEST(CaseParse, RampsDefaultToTheWholeRun) {
-  const Case c = parse_case_string(test::kMinimalCase +
-                                       "solver: {end_time: 3.5}\n"
-                                       "loads: [{type: pressure, name: p, surface: top, value: 1}]\n"
-                                       "dies:\n"
-                                       "  - {name: d, shape: plane, point: [0, 0, 2], normal: [0, 0, -1],\n"
-                                       "     move: {displacement: [0, 0, -1]}}\n"
-                                       "boundary: [{type: displacement, surface: top, value: [0, 0, 1]}]\n",
-                                   "case.yaml");
+  const Case c =
+      parse_case_string(test::kMinimalCase +
+                            "solver: {end_time: 3.5}\n"
+                            "loads: [{type: pressure, name: p, surface: top, value: 1}]\n"
+                            "dies:\n"
+                            "  - {name: d, shape: plane, point: [0, 0, 2], normal: [0, 0, -1],\n"
+                            "     move: {displacement: [0, 0, -1]}}\n"
+                            "boundary: [{type: displacement, surface: top, value: [0, 0, 1]}]\n",
+                        "case.yaml");
   EXPECT_EQ(c.loads[0].ramp.start, 0.0);
   EXPECT_EQ(c.loads[0].ramp.end, 3.5);
   EXPECT_EQ(c.dies[0].ramp.start, 0.0);
@@ -238,8 +239,8 @@ TEST(CaseParse, FlowAndBlockStylesGiveTheSameCase) {
 }
 
 TEST(CaseParse, MaterialDefaultsFromTheRegistryAreFilledIn) {
-  const Case c = parse_case_string(
-      "mesh: {generate: cube}\nmaterial: {model: yeoh, c1: 0.1}\n", "case.yaml");
+  const Case c =
+      parse_case_string("mesh: {generate: cube}\nmaterial: {model: yeoh, c1: 0.1}\n", "case.yaml");
   EXPECT_EQ(c.material.params.at("c1"), 0.1);
   EXPECT_EQ(c.material.params.at("c2"), 0.0);  // registry default
   EXPECT_EQ(c.material.params.at("c3"), 0.0);
@@ -247,15 +248,16 @@ TEST(CaseParse, MaterialDefaultsFromTheRegistryAreFilledIn) {
 }
 
 TEST(CaseParse, MeshFileResolvesAgainstTheCaseDirectory) {
-  const Case c = parse_case_string("mesh: {file: meshes/b.msh}\nmaterial: {model: neo-hookean, c1: 1}\n",
-                                   "cases/run1/case.yaml");
+  const Case c =
+      parse_case_string("mesh: {file: meshes/b.msh}\nmaterial: {model: neo-hookean, c1: 1}\n",
+                        "cases/run1/case.yaml");
   EXPECT_EQ(c.directory, "cases/run1");
   EXPECT_EQ(std::filesystem::path(*c.mesh.file), std::filesystem::path("cases/run1/meshes/b.msh"));
   EXPECT_EQ(c.mesh.file_place.line, 1);
   EXPECT_EQ(c.mesh.file_place.column, 14);
   EXPECT_EQ(c.mesh.file_place.key, "mesh.file");
-  const Case abs = parse_case_string("mesh: {file: /data/b.msh}\nmaterial: {model: neo-hookean, c1: 1}\n",
-                                     "cases/case.yaml");
+  const Case abs = parse_case_string(
+      "mesh: {file: /data/b.msh}\nmaterial: {model: neo-hookean, c1: 1}\n", "cases/case.yaml");
   EXPECT_EQ(*abs.mesh.file, "/data/b.msh");
 }
 
@@ -274,7 +276,8 @@ TEST(CaseParse, YamlSpellingsOfBooleansAndNumbers) {
 
 TEST(CaseParse, EveryExampleParses) {
   int n = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(PLISSE_SOURCE_DIR) + "/examples")) {
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(PLISSE_SOURCE_DIR) + "/examples")) {
     if (entry.path().extension() != ".yaml") continue;
     EXPECT_NO_THROW(parse_case_file(entry.path().string())) << entry.path();
     ++n;
