@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <set>
+#include <sstream>
 
 #include "core/error.hpp"
 #include "mesh/generate.hpp"
@@ -326,6 +328,32 @@ TEST(MeshKinds, EveryOptionIsDeclaredCompletely) {
   for (Symmetry s : {Symmetry::full, Symmetry::half, Symmetry::quarter, Symmetry::octant})
     EXPECT_EQ(parse_symmetry(to_string(s)), s);
   EXPECT_FALSE(parse_symmetry("third").has_value());
+}
+
+TEST(MeshKinds, DocumentedInMeshesMd) {
+  // docs/meshes.md has, in the section "## `KIND`", one table row per option starting
+  // "| `key` | `--key` | unit | default | range |", all taken from mesh_kinds().
+  std::ifstream in(std::string(PLISSE_SOURCE_DIR) + "/docs/meshes.md");
+  ASSERT_TRUE(in.good());
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string doc = buffer.str();
+  const MeshGenerationSpec defaults;
+  for (const auto& kind : mesh_kinds()) {
+    const auto begin = doc.find("## `" + kind.name + "`");
+    ASSERT_NE(begin, std::string::npos) << kind.name;
+    const std::string section = doc.substr(begin, doc.find("\n## ", begin + 1) - begin);
+    for (const auto& o : kind.options) {
+      std::string flag = o.key;
+      std::replace(flag.begin(), flag.end(), '_', '-');
+      std::ostringstream row;
+      row << "| `" << o.key << "` | `--" << flag << "` | " << o.unit << " | ";
+      if (o.real) row << defaults.*o.real << " | " << o.range.describe() << " |";
+      if (o.integer) row << defaults.*o.integer << " | " << o.range.describe() << " |";
+      if (o.symmetry) row << to_string(defaults.*o.symmetry) << " | full, half, quarter, octant |";
+      EXPECT_NE(section.find(row.str()), std::string::npos) << "docs/meshes.md lacks the row: " << row.str();
+    }
+  }
 }
 
 }  // namespace
