@@ -1,1 +1,0 @@
-// quadrature rules: filled in by the element work

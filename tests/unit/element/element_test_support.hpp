@@ -1,0 +1,59 @@
+#pragma once
+/// Helpers shared by the element unit tests: random distorted tetrahedra and states, and the
+/// observed order of a sequence of finite-difference errors.
+#include <array>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "core/types.hpp"
+#include "element/mini.hpp"
+
+namespace plisse::test {
+
+/// A positively oriented, visibly distorted tetrahedron (edge lengths ~ `size` [mm], aspect up to
+/// ~3), different for each seed.
+inline std::array<Vec3d, 4> random_tet(unsigned seed, double size = 2.0) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  std::array<Vec3d, 4> X = {Vec3d(0, 0, 0), Vec3d(1, 0, 0), Vec3d(0, 1, 0), Vec3d(0, 0, 1)};
+  for (auto& x : X) x += Vec3d(jitter(rng), jitter(rng), jitter(rng));
+  const Mat3d stretch = (Vec3d(1.0, 0.6, 1.4)).asDiagonal();
+  const Vec3d shift(jitter(rng) + 3.0, jitter(rng) - 1.0, jitter(rng));
+  for (auto& x : X) x = size * (stretch * x + shift);
+  if ((X[1] - X[0]).cross(X[2] - X[0]).dot(X[3] - X[0]) < 0) std::swap(X[2], X[3]);
+  return X;
+}
+
+/// A random element state: nodal displacements uniform in ±`u_fraction` × element size [mm],
+/// nodal pressures uniform in ±`p_scale` [MPa].
+inline mini::ElemVec random_state(unsigned seed, const mini::TetGeometry& g, double u_fraction,
+                                  double p_scale) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  mini::ElemVec x;
+  for (int i = 0; i < mini::kDofU; ++i) x(i) = u_fraction * g.size * unit(rng);
+  for (int a = 0; a < mini::kDofP; ++a) x(mini::dof_p(a)) = p_scale * unit(rng);
+  return x;
+}
+
+/// log2 slope between the last two errors of a sequence taken with h halved each time.
+inline double observed_order(const std::vector<double>& errors) {
+  const std::size_t n = errors.size();
+  return std::log2(errors[n - 2] / errors[n - 1]);
+}
+
+/// Nodal displacements of the homogeneous deformation x = F0 X + c at the corners X (pressures 0).
+inline mini::ElemVec homogeneous_state(const std::array<Vec3d, 4>& X, const Mat3d& F0,
+                                       const Vec3d& c = Vec3d::Zero()) {
+  mini::ElemVec x = mini::ElemVec::Zero();
+  for (int a = 0; a < 4; ++a) x.segment<3>(mini::dof_u(a, 0)) = (F0 - Mat3d::Identity()) * X[a] + c;
+  return x;
+}
+
+/// The rotation by `angle` about the unit `axis`.
+inline Mat3d rotation(const Vec3d& axis, double angle) {
+  return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+}
+
+}  // namespace plisse::test
