@@ -11,6 +11,8 @@
 #include "io/case.hpp"
 #include "material/registry.hpp"
 #include "mesh/quality.hpp"
+#include "physics/dirichlet.hpp"
+#include "app/run_case.hpp"
 
 namespace plisse::app {
 namespace {
@@ -55,6 +57,9 @@ void check_case(const CheckOptions& options) {
   const Case c = parse_case_file(options.case_file, options.overrides);
   const Mesh mesh = load_case_mesh(c);
   check_case_against_mesh(c, mesh);
+  // The same rules `plisse run` applies before solving (symmetry planes, conflicting conditions).
+  collect_constraints(c, mesh);
+  check_solver_support(c, mesh);
   const MeshReport report = check_mesh(mesh);
 
   std::ostream& out = std::cout;

@@ -111,6 +111,25 @@ void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model
 
 }  // namespace
 
+void check_solver_support(const Case& c, const Mesh& mesh) {
+  if (mesh.order() != 1)
+    throw InputError(c.mesh.file ? c.mesh.file_place : c.mesh.place,
+                     "the mesh has second-order (10-node) tetrahedra; the MINI element needs "
+                     "linear ones (a quadratic element is planned)");
+  const auto unsupported = [](const InputPlace& place, const std::string& what) {
+    throw InputError(place, what + " are not supported by the solver yet");
+  };
+  if (!c.loads.empty()) unsupported(c.loads.front().place, "loads (pressure, gravity)");
+  if (!c.cavities.empty()) unsupported(c.cavities.front().place, "cavities");
+  if (!c.dies.empty()) unsupported(c.dies.front().place, "rigid dies");
+  if (c.solver.scheme != Scheme::total_lagrangian)
+    throw InputError({c.path, 0, 0, "solver.scheme"},
+                     "only the total-lagrangian scheme is available yet");
+  if (c.solver.stability.check)
+    throw InputError({c.path, 0, 0, "solver.stability.check"},
+                     "stability checks are not available yet");
+}
+
 void run_case(const RunOptions& options) {
   const auto t_start = Clock::now();
   const Case c = parse_case_file(options.case_file, options.overrides);
@@ -121,6 +140,7 @@ void run_case(const RunOptions& options) {
   auto t0 = Clock::now();
   const Mesh mesh = load_case_mesh(c);
   check_case_against_mesh(c, mesh);
+  check_solver_support(c, mesh);
   const double time_mesh = seconds_since(t0);
 
   // Everything that can be rejected is checked before the run directory is touched.
@@ -223,10 +243,14 @@ void run_case(const RunOptions& options) {
   summary["newton_iterations"] = result.newton_iterations;
   summary["cutbacks"] = result.cutbacks;
   summary["final_time"] = last_step.time;
+  const PhaseTimes times = stepper.times();
+  summary["factorisations"] = times.factorisations;
   summary["wall_time"] = {{"mesh", time_mesh},
                           {"setup", time_setup},
-                          {"assembly", stepper.times().assembly},
-                          {"linear_solve", stepper.times().linear_solve},
+                          {"assembly", times.assembly},
+                          {"linear_solve", times.linear_solve},
+                          {"factorisation", times.factorisation},
+                          {"triangular_solve", times.triangular_solve},
                           {"output", time_output},
                           {"total", seconds_since(t_start)}};
   summary["peak_memory_mib"] = peak_memory_mib();
@@ -242,8 +266,8 @@ void run_case(const RunOptions& options) {
                 "%s: %d steps, %d Newton iterations, %d cut-backs, %.2fs (assembly %.2fs, "
                 "linear solve %.2fs, output %.2fs), peak memory %.0f MiB",
                 result.completed ? "done" : "stopped", result.steps, result.newton_iterations,
-                result.cutbacks, seconds_since(t_start), stepper.times().assembly,
-                stepper.times().linear_solve, time_output, peak_memory_mib());
+                result.cutbacks, seconds_since(t_start), times.assembly, times.linear_solve,
+                time_output, peak_memory_mib());
   log.info(line);
   if (!result.completed) {
     log.error(result.failure);

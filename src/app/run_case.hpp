@@ -3,6 +3,9 @@
 #include <string>
 #include <vector>
 
+#include "io/case.hpp"
+#include "mesh/mesh.hpp"
+
 namespace plisse::app {
 
 struct RunOptions {
@@ -11,6 +14,10 @@ struct RunOptions {
   std::vector<std::string> overrides;    ///< --set key.path=value
   std::vector<std::string> petsc_options;  ///< --petsc "-snes_monitor ..."
 };
+
+/// Rejects (InputError) what the case file allows but this build cannot solve yet, naming the
+/// key: second-order meshes, loads, cavities, dies and the incremental scheme.
+void check_solver_support(const Case& c, const Mesh& mesh);
 
 /// Runs the case. Returns normally when the run reached its end time; throws InputError for bad
 /// input (nothing is solved) and SolverError when the solver stopped early (the last converged

@@ -41,7 +41,7 @@ class LoadStepper {
   /// `log` receives progress lines.
   SteppingResult run(const std::function<void(const StepInfo&)>& on_step,
                      const std::function<void(const std::string&)>& log);
-  const PhaseTimes& times() const { return newton_.times(); }
+  PhaseTimes times() const { return newton_.times(); }
 
  private:
   MixedModel& model_;

@@ -1,6 +1,7 @@
 #include "solver/newton_solver.hpp"
 
 #include <chrono>
+#include <string>
 
 #include "solver/petsc_call.hpp"
 
@@ -22,6 +23,10 @@ const char* line_search_type(LineSearch ls) {
 }  // namespace
 
 NewtonSolver::NewtonSolver(MixedModel& model, const NewtonSettings& settings) : model_(model) {
+  // The event log splits the linear-solver time into factorisation and triangular solves.
+  PetscBool logging = PETSC_FALSE;
+  PLISSE_PETSC(PetscLogIsActive(&logging));
+  if (!logging) PLISSE_PETSC(PetscLogDefaultBegin());
   const PetscInt n = model.n_free();
   PLISSE_PETSC(VecCreateSeq(PETSC_COMM_SELF, n, &x_));
   PLISSE_PETSC(VecDuplicate(x_, &r_));
@@ -85,6 +90,23 @@ PetscErrorCode NewtonSolver::form_jacobian(SNES, Vec x, Mat J, Mat, void* contex
     return PETSC_ERR_LIB;
   }
   return 0;
+}
+
+PhaseTimes NewtonSolver::times() const {
+  PhaseTimes t = times_;
+  const auto event_time = [](const char* name, int* count) {
+    PetscLogEvent event = 0;
+    PetscEventPerfInfo info{};
+    if (PetscLogEventGetId(name, &event) != 0 || PetscLogEventGetPerfInfo(0, event, &info) != 0)
+      return 0.0;
+    if (count) *count += info.count;
+    return static_cast<double>(info.time);
+  };
+  for (const char* name : {"MatCholFctrSym", "MatCholFctrNum", "MatLUFactorSym", "MatLUFactorNum"})
+    t.factorisation += event_time(name, std::string(name).find("Num") != std::string::npos
+                                            ? &t.factorisations : nullptr);
+  t.triangular_solve = event_time("MatSolve", nullptr);
+  return t;
 }
 
 NewtonResult NewtonSolver::solve() {

@@ -24,8 +24,11 @@ struct NewtonResult {
 
 /// Wall time spent per phase [s], accumulated over all solves.
 struct PhaseTimes {
-  double assembly = 0.0;      ///< residual and tangent assembly
-  double linear_solve = 0.0;  ///< factorisation and triangular solves (SNES time minus assembly)
+  double assembly = 0.0;       ///< residual and tangent assembly
+  double linear_solve = 0.0;   ///< everything in SNES but assembly: factorisation, solves, line search
+  double factorisation = 0.0;  ///< symbolic and numeric factorisation (PETSc's event log)
+  double triangular_solve = 0.0;  ///< forward/backward substitution (PETSc's event log)
+  int factorisations = 0;      ///< numeric factorisations
 };
 
 class NewtonSolver {
@@ -38,7 +41,8 @@ class NewtonSolver {
   /// Solves R(x) = 0 from the model's current state (constrained values already applied).
   /// On return the model holds the last iterate, converged or not.
   NewtonResult solve();
-  const PhaseTimes& times() const { return times_; }
+  /// Wall time per phase; the factorisation and solve parts read PETSc's event log.
+  PhaseTimes times() const;
 
  private:
   static PetscErrorCode form_function(SNES snes, Vec x, Vec f, void* context);
