@@ -160,7 +160,8 @@ TEST(MiniElement, TangentIsSymmetric) {
   for (unsigned seed = 1; seed <= 5; ++seed) {
     const ConvergedState c = converged_state(seed, MooneyRivlin{0.6 * kC1, 0.4 * kC1},
                                              inverse_bulk_modulus);
-    const auto D = unknown_scales(c.g).asDiagonal();
+    const ElemVec scale = unknown_scales(c.g);
+    const auto D = scale.asDiagonal();
     const ElemMat K = D * c.K * D;
     EXPECT_LT((K - K.transpose()).norm(), 1e-13 * K.norm()) << "seed " << seed;
   }
@@ -229,7 +230,8 @@ TEST(MiniElement, BubbleSolveConvergesAndIsIndependentOfTheWarmStart) {
   const ElementStatus s_cold = assemble_mini(c.g, c.x, mat, 0.0, cold, r_cold, nullptr);
   EXPECT_EQ(s_warm.bubble_iterations, 1);
   EXPECT_LE(s_cold.bubble_iterations, 6);
-  const auto D = unknown_scales(c.g).asDiagonal();
+  const ElemVec scale = unknown_scales(c.g);
+  const auto D = scale.asDiagonal();
   EXPECT_LT((D * (r_warm - r_cold)).norm(), 1e-12 * (D * c.r).norm());
   EXPECT_LT((warm - cold).norm(), 1e-10 * c.g.size);
 }
