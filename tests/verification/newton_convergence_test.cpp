@@ -1,0 +1,130 @@
+// Newton's method on the condensed MINI system converges quadratically near the solution: the
+// tangent assembled by MixedModel is the exact derivative of its residual, bubble condensation
+// included (docs/verification/newton.md).
+//
+// Problem: the unit cube, bottom face fixed, top face moved in ONE step by (0.3, 0.15, 0.4) mm
+// (shear 30 % and 15 %, stretch 40 %), sides free. The deformation is far from homogeneous (the
+// bottom cannot contract), so every element and the bubbles take part, and Newton needs several
+// iterations from u = 0, p = 0.
+//
+// Measure: the observed order q_k = log(r_k+1 / r_k) / log(r_k / r_k-1) of consecutive residual
+// norms. It is asserted on the LAST triple whose newest residual is still above round-off:
+//  - earlier triples belong to the global phase (line search, pre-asymptotic), where the order is
+//    not yet 2 and says nothing about the tangent;
+//  - a residual at round-off is noise (the floating-point residual of the exact discrete solution),
+//    so a triple ending there would under-report the order.
+// The round-off floor is measured, not guessed: Newton is run with full steps (no line search, the
+// method the quadratic-convergence theorem is about) and a tolerance it cannot meet, for a fixed
+// number of iterations, so the history ends on a plateau where the residual is noise (~1e-15 r_0:
+// eps = 2.2e-16 times the cancellation in the element sums). The noise level is the largest of the
+// last kPlateau residuals (the test checks they are all below 1e-12 r_0, i.e. Newton converged),
+// and the floor is 3 times that: a residual above it is perturbed by at most 1/3, which moves the
+// order by at most log(4/3) / log(r_k-1 / r_k) < 0.05 once r_k-1 / r_k > 300, as it is in the
+// quadratic phase. With an exact tangent the asymptotic order is 2; an inconsistent tangent (e.g. a
+// missing geometric or bubble term) gives a linear rate, order ~1.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <set>
+#include <string>
+
+#include "mesh/generate.hpp"
+#include "solver/mixed_model.hpp"
+#include "solver/newton_solver.hpp"
+
+namespace plisse {
+namespace {
+
+constexpr std::ptrdiff_t kPlateau = 4;  ///< trailing residuals that define the noise level
+
+struct NewtonCase {
+  std::string title;
+  std::string model;
+  MaterialValues values;
+  double inverse_bulk_modulus;  ///< 1/κ [1/MPa]
+};
+
+/// Observed orders of all triples (r_k-1, r_k, r_k+1) with r_k+1 above the floor, in order.
+std::vector<double> observed_orders(const std::vector<double>& r, double floor) {
+  std::vector<double> orders;
+  for (std::size_t k = 1; k + 1 < r.size(); ++k)
+    if (r[k + 1] > floor && r[k] < r[k - 1] && r[k + 1] < r[k])
+      orders.push_back(std::log(r[k + 1] / r[k]) / std::log(r[k] / r[k - 1]));
+  return orders;
+}
+
+void expect_quadratic_convergence(const NewtonCase& c) {
+  MeshGenerationSpec spec;
+  spec.kind = "cube";
+  spec.edge = 1.0;
+  spec.divisions = 4;
+  const Mesh mesh = generate_mesh(spec);
+  const Vec3d top_motion(0.3, 0.15, 0.4);  // [mm]
+  std::vector<ConstrainedComponent> constraints;
+  auto constrain = [&](const std::string& tag, const Vec3d& value) {
+    std::set<int> nodes;
+    for (int t : mesh.surface_tags.at(tag))
+      for (int v : mesh.triangles[t]) nodes.insert(v);
+    for (int v : nodes)
+      for (int k = 0; k < 3; ++k) constraints.push_back({v, k, value(k), Ramp{0.0, 1.0}});
+  };
+  constrain("bottom", Vec3d::Zero());
+  constrain("top", top_motion);
+  MixedModel model(mesh, make_material(c.model, c.values), c.inverse_bulk_modulus, constraints);
+  model.set_time(1.0);  // the whole motion in one step, from u = 0, p = 0 inside
+
+  NewtonSettings settings;
+  settings.rtol = 1e-30;  // unreachable: iterate into the round-off plateau
+  settings.atol = 0.0;
+  settings.max_iterations = 12;
+  settings.line_search = LineSearch::basic;
+  NewtonSolver newton(model, settings);
+  const NewtonResult result = newton.solve();
+
+  const std::vector<double>& r = result.residual_history;
+  std::cout << c.title << ": " << result.iterations << " iterations (" << result.reason << ")\n";
+  char line[160];
+  for (std::size_t k = 0; k < r.size(); ++k) {
+    const double order = (k >= 1 && k + 1 < r.size())
+                             ? std::log(r[k + 1] / r[k]) / std::log(r[k] / r[k - 1])
+                             : std::nan("");
+    std::snprintf(line, sizeof line, "  k = %2zu  |R| = %.3e  |R|/|R0| = %.3e  order(k-1,k,k+1) = %.2f\n",
+                  k, r[k], r[k] / r[0], order);
+    std::cout << line;
+  }
+  ASSERT_GT(r.size(), kPlateau + 4) << c.title;
+  const double noise = *std::max_element(r.end() - kPlateau, r.end());
+  ASSERT_LE(noise, 1e-12 * r.front()) << c.title << ": Newton did not converge";
+  const auto first_below = std::find_if(r.begin(), r.end(), [&](double v) { return v < 1e-8 * r.front(); });
+  ASSERT_GE(first_below - r.begin(), 4) << c.title << ": the start is too close for a meaningful test";
+  const double floor = 3.0 * noise;
+  const std::vector<double> orders = observed_orders(r, floor);
+  ASSERT_FALSE(orders.empty()) << c.title << ": no triple above the round-off floor";
+  std::cout << "  asserted order (last triple above " << floor << "): " << orders.back() << "\n";
+  EXPECT_GE(orders.back(), 1.8) << c.title;
+}
+
+TEST(NewtonConvergence, NeoHookeanExactIncompressibilityIsQuadratic) {
+  expect_quadratic_convergence({"neo-Hookean, exact", "neo-hookean", {{"c1", 0.5}}, 0.0});
+}
+
+TEST(NewtonConvergence, NeoHookeanNearIncompressibilityIsQuadratic) {
+  expect_quadratic_convergence(
+      {"neo-Hookean, kappa = 100 mu", "neo-hookean", {{"c1", 0.5}}, 1.0 / 100.0});
+}
+
+TEST(NewtonConvergence, MooneyRivlinExactIncompressibilityIsQuadratic) {
+  expect_quadratic_convergence(
+      {"Mooney-Rivlin, exact", "mooney-rivlin", {{"c1", 0.4}, {"c2", 0.1}}, 0.0});
+}
+
+TEST(NewtonConvergence, MooneyRivlinNearIncompressibilityIsQuadratic) {
+  expect_quadratic_convergence({"Mooney-Rivlin, kappa = 100 mu", "mooney-rivlin",
+                                {{"c1", 0.4}, {"c2", 0.1}}, 1.0 / 100.0});
+}
+
+}  // namespace
+}  // namespace plisse
