@@ -62,10 +62,11 @@ bool assemble_mini_uncondensed(const TetGeometry& g, const ElemVec& x_e, const M
 
 /// Condensed residual and tangent of one element in the 16 nodal unknowns x_e.
 ///
-/// Solves r_b(x_e, b) = 0 by Newton's method (C1), warm-started from `bubble`, to the tolerance
-/// (C2); then returns r_e = r_x(x_e, b*) (linearised at the last iterate, C3) and, if K_e is
-/// given, the Schur complement K_e = K_xx - K_xb K_bb⁻¹ K_bx (C4), which is the exact derivative
-/// dr_e/dx_e by the implicit function theorem (C5).
+/// Solves r_b(x_e, b) = 0 by Newton's method (C1), warm-started from `bubble` (or from 0 if the
+/// warm start gives det F <= 0; steps into det F <= 0 are halved), to the tolerance (C2); then
+/// returns r_e = r_x(x_e, b*) (linearised at the last iterate, C3) and, if K_e is given, the Schur
+/// complement K_e = K_xx - K_xb K_bb⁻¹ K_bx (C4), which is the exact derivative dr_e/dx_e by the
+/// implicit function theorem (C5).
 ///   inverse_bulk_modulus: 1/κ [1/MPa], 0 for exact incompressibility.
 ///   bubble: in, warm start [mm]; out, converged b* (unchanged when the status is not ok).
 ///   r_e [N for u rows, mm³ for p rows], K_e: outputs, overwritten; K_e == nullptr: residual only.
@@ -78,11 +79,29 @@ ElementStatus assemble_mini(const TetGeometry& g, const ElemVec& x_e, const Mate
   const NodalState s = gather_nodal_state(g, x_e);
   ElementStatus status;
   BubbleVec b = bubble;
+  BubbleVec b_previous = b;             // last admissible iterate
+  BubbleVec delta = BubbleVec::Zero();  // step taken from it
+  int halvings = 0;
   MiniLocalSystem sys;
   for (int iteration = 1; iteration <= kMaxBubbleIterations; ++iteration) {
     status.bubble_iterations = iteration;
     MiniIntegrals sums(g, K_e != nullptr);
-    if (!detail::integrate_points(g, s, b, mat, sums, status.min_J)) break;
+    if (!detail::integrate_points(g, s, b, mat, sums, status.min_J)) {
+      // Safeguards (C1): an inadmissible warm start is replaced by b = 0 (x_e may have moved
+      // far since it was stored); a Newton step into det F <= 0 is halved, up to
+      // kMaxBubbleHalvings.
+      if (iteration == 1 && !b.isZero(0.0)) {
+        b.setZero();
+        b_previous = b;
+        continue;
+      }
+      if (iteration == 1 || halvings == kMaxBubbleHalvings) break;
+      ++halvings;
+      delta *= 0.5;
+      b = b_previous + delta;
+      continue;
+    }
+    halvings = 0;
     sums.bubble_block(sys);
     const BubbleStep step = compute_bubble_step(sys, g.size);
     if (!step.ok) break;
@@ -92,7 +111,9 @@ ElementStatus assemble_mini(const TetGeometry& g, const ElemVec& x_e, const Mate
       bubble = b + step.delta;
       return status;
     }
-    b += step.delta;
+    b_previous = b;
+    delta = step.delta;
+    b += delta;
   }
   status.ok = false;
   r_e.setZero();
@@ -136,8 +157,8 @@ double compute_element_energy(const TetGeometry& g, const ElemVec& x_e, const Ma
   for (int q = 0; q < kQuadPoints; ++q) {
     const PointKinematics k = compute_point_kinematics(g, s, bubble, q);
     if (!(k.J > 0.0)) return std::numeric_limits<double>::quiet_NaN();
-    energy += g.weight[q] * (mat.evaluate(k.F).W - k.p * k.J_minus_1 -
-                             0.5 * inverse_bulk_modulus * k.p * k.p);
+    energy += g.weight[q] *
+              (mat.evaluate(k.F).W - k.p * k.J_minus_1 - 0.5 * inverse_bulk_modulus * k.p * k.p);
   }
   return energy;
 }

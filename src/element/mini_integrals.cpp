@@ -74,8 +74,8 @@ void MiniIntegrals::add_point(int q, const PointKinematics& k, const PointRespon
   r_b_.noalias() += w * (P_total * gb);     // (R2)
   force_scale_ += w * P_total.norm() * gb.norm();
   const Eigen::Matrix<double, 9, 3> AG = contract_columns(m.A, gb);
-  AG_sum_ += w * AG;                             // (K2), material part
-  K_bb_ += w * contract_rows(AG, gb);            // (K3)
+  AG_sum_ += w * AG;                                                  // (K2), material part
+  K_bb_ += w * contract_rows(AG, gb);                                 // (K3)
   pF_cross_g_sum_.noalias() += (w * k.p) * (k.F * cross_matrix(gb));  // (K2), pressure part
   const Vec3d cof_g = k.cof * gb;
   for (int a = 0; a < kNodes; ++a) {
@@ -83,8 +83,8 @@ void MiniIntegrals::add_point(int q, const PointKinematics& k, const PointRespon
     J_minus_1_N_(a) += (w * N[a]) * k.J_minus_1;  // (R3)
   }
   if (with_K_xx_) {
-    A_sum_ += w * m.A;             // (K1), material part
-    pF_sum_ += (w * k.p) * k.F;    // (K1), pressure part
+    A_sum_ += w * m.A;                                                 // (K1), material part
+    pF_sum_ += (w * k.p) * k.F;                                        // (K1), pressure part
     for (int a = 0; a < kNodes; ++a) cof_N_[a] += (w * N[a]) * k.cof;  // (K4)
   }
 }
@@ -120,7 +120,8 @@ void MiniIntegrals::coupled_blocks(const NodalState& s, double inverse_bulk_modu
       const Vec3d coupling = -(cof_N_[b] * Ga);                         // (K4)
       sys.K_xx.block<3, 1>(dof_u(a, 0), dof_p(b)) = coupling;
       sys.K_xx.block<1, 3>(dof_p(b), dof_u(a, 0)) = coupling.transpose();
-      sys.K_xx(dof_p(a), dof_p(b)) = -inverse_bulk_modulus * V / 20.0 * (a == b ? 2.0 : 1.0);  // (K6)
+      sys.K_xx(dof_p(a), dof_p(b)) =
+          -inverse_bulk_modulus * V / 20.0 * (a == b ? 2.0 : 1.0);  // (K6)
     }
   }
 }

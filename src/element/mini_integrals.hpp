@@ -35,11 +35,11 @@ PointKinematics compute_point_kinematics(const TetGeometry& g, const NodalState&
 /// The uncondensed element system in (x_e, b): residuals and the tangent blocks (eqs. R1-R3,
 /// K1-K6). K_bx = K_xbᵀ (the tangent is a Hessian), so only K_xb is stored.
 struct MiniLocalSystem {
-  ElemVec r_x;           ///< (R1), (R3) [N], [mm^3]
-  BubbleVec r_b;         ///< (R2) [N]
-  ElemBubbleMat K_xb;    ///< (K2), (K5)
-  Mat3d K_bb;            ///< (K3) [N/mm]
-  ElemMat K_xx;          ///< (K1), (K4), (K6); only filled when asked for
+  ElemVec r_x;             ///< (R1), (R3) [N], [mm^3]
+  BubbleVec r_b;           ///< (R2) [N]
+  ElemBubbleMat K_xb;      ///< (K2), (K5)
+  Mat3d K_bb;              ///< (K3) [N/mm]
+  ElemMat K_xx;            ///< (K1), (K4), (K6); only filled when asked for
   double force_scale = 0;  ///< f_e of eq. (C2) [N]
 };
 
@@ -58,23 +58,23 @@ class MiniIntegrals {
  private:
   const TetGeometry& g_;
   bool with_K_xx_;
-  Mat3d P_sum_ = Mat3d::Zero();                  // Σ w (P - p cof F)
-  BubbleVec r_b_ = BubbleVec::Zero();            // Σ w (P - p cof F) g
-  Eigen::Matrix<double, 9, 3> AG_sum_ = Eigen::Matrix<double, 9, 3>::Zero();  // Σ w A·g
-  Mat3d K_bb_ = Mat3d::Zero();                   // Σ w g·A·g
-  Mat3d pF_cross_g_sum_ = Mat3d::Zero();         // Σ w p F [g]_×
+  Mat3d P_sum_ = Mat3d::Zero();        // Σ w (P - p cof F)
+  BubbleVec r_b_ = BubbleVec::Zero();  // Σ w (P - p cof F) g
+  Eigen::Matrix<double, 9, 3> AG_sum_ = Eigen::Matrix<double, 9, 3>::Zero();   // Σ w A·g
+  Mat3d K_bb_ = Mat3d::Zero();                                                 // Σ w g·A·g
+  Mat3d pF_cross_g_sum_ = Mat3d::Zero();                                       // Σ w p F [g]_×
   Eigen::Matrix<double, 3, 4> cof_g_N_ = Eigen::Matrix<double, 3, 4>::Zero();  // Σ w N_a cof g
-  Eigen::Vector4d J_minus_1_N_ = Eigen::Vector4d::Zero();  // Σ w N_a (J - 1)
-  double force_scale_ = 0;                       // Σ w |P - p cof F| |g|
-  Mat9d A_sum_;                                  // Σ w A          (K_xx only)
-  Mat3d pF_sum_;                                 // Σ w p F        (K_xx only)
-  std::array<Mat3d, 4> cof_N_;                   // Σ w N_a cof F  (K_xx only)
+  Eigen::Vector4d J_minus_1_N_ = Eigen::Vector4d::Zero();                      // Σ w N_a (J - 1)
+  double force_scale_ = 0;      // Σ w |P - p cof F| |g|
+  Mat9d A_sum_;                 // Σ w A          (K_xx only)
+  Mat3d pF_sum_;                // Σ w p F        (K_xx only)
+  std::array<Mat3d, 4> cof_N_;  // Σ w N_a cof F  (K_xx only)
 };
 
 /// One Newton step of the local bubble problem r_b(x, b) = 0 at fixed x (eqs. C1-C2).
 struct BubbleStep {
-  bool ok = false;         ///< false: K_bb singular or not finite
-  bool converged = false;  ///< |r_b| <= kBubbleTolerance f_e before the step
+  bool ok = false;                      ///< false: K_bb singular or not finite
+  bool converged = false;               ///< |r_b| <= kBubbleTolerance f_e before the step
   BubbleVec delta = BubbleVec::Zero();  ///< Δb = -K_bb⁻¹ r_b [mm]
   Mat3d K_bb_inverse = Mat3d::Zero();
 };
@@ -83,6 +83,8 @@ struct BubbleStep {
 inline constexpr double kBubbleTolerance = 1e-10;
 /// Most element evaluations of one bubble solve before it is reported as failed.
 inline constexpr int kMaxBubbleIterations = 20;
+/// Most successive halvings of a bubble Newton step that leads to det F <= 0.
+inline constexpr int kMaxBubbleHalvings = 4;
 
 BubbleStep compute_bubble_step(const MiniLocalSystem& sys, double element_size);
 

@@ -26,19 +26,19 @@ constexpr int dof_p(int a) { return kDofU + a; }
 
 /// Outcome of one element evaluation.
 struct ElementStatus {
-  bool ok = true;  ///< false when J <= 0 at a quadrature point or the bubble solve failed; then
-                   ///< r_e / K_e are zero and not meaningful, and the solver cuts the load step
+  bool ok = true;    ///< false when J <= 0 at a quadrature point or the bubble solve failed; then
+                     ///< r_e / K_e are zero and not meaningful, and the solver cuts the load step
   double min_J = 1;  ///< smallest J = det F over the quadrature points (last evaluation)
   int bubble_iterations = 0;  ///< element evaluations made by the local bubble Newton solve
 };
 
 /// Volume averages over one tetrahedron (for output).
 struct ElementFields {
-  Mat3d cauchy;       ///< (1/V) ∫ σ dV,  σ = J⁻¹ P Fᵀ - p I  [MPa]
-  double J;           ///< (1/V) ∫ det F dV  [-]
-  double von_mises;   ///< sqrt(3/2 dev σ̄ : dev σ̄) of the averaged Cauchy stress σ̄  [MPa]
-  double pressure;    ///< (1/V) ∫ p_h dV  [MPa], the element's pressure unknown (positive in
-                      ///< compression); not -tr σ̄ / 3, which differs by the isochoric part
+  Mat3d cauchy;      ///< (1/V) ∫ σ dV,  σ = J⁻¹ P Fᵀ - p I  [MPa]
+  double J;          ///< (1/V) ∫ det F dV  [-]
+  double von_mises;  ///< sqrt(3/2 dev σ̄ : dev σ̄) of the averaged Cauchy stress σ̄  [MPa]
+  double pressure;   ///< (1/V) ∫ p_h dV  [MPa], the element's pressure unknown (positive in
+                     ///< compression); not -tr σ̄ / 3, which differs by the isochoric part
 };
 
 }  // namespace plisse::mini

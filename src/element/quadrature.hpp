@@ -4,7 +4,7 @@
 /// A rule maps  ∫_T f dV  ≈  V Σ_q w_q f(L^q),  with Σ_q w_q = 1 (weights are fractions of the
 /// volume V) and L^q = (L_0, L_1, L_2, L_3) the barycentric coordinates of point q.
 /// All rules here are invariant under the 24 permutations of the vertices and have positive weights
-/// (docs/theory/mixed_up.md, section "Quadrature", Q1-Q4, explains which rule the MINI kernel uses).
+/// (docs/theory/mixed_up.md, section 5, Q1-Q5, explains which rule the MINI kernel uses).
 #include <array>
 
 namespace plisse {
@@ -12,7 +12,7 @@ namespace plisse {
 template <int N>
 struct TetQuadrature {
   static constexpr int n_points = N;
-  int degree = 0;                                  ///< polynomials of total degree <= degree are exact
+  int degree = 0;  ///< polynomials of total degree <= degree are exact
   std::array<std::array<double, 4>, N> points{};  ///< barycentric coordinates, each row sums to 1
   std::array<double, N> weights{};                ///< fractions of the volume, sum to 1, all > 0
 };

@@ -21,8 +21,8 @@ inline constexpr int kQuadPoints = TetQuadrature<4>::n_points;
 /// Geometry of one tetrahedron in the reference configuration. Plain data, owned by the caller
 /// (one per element, computed by compute_tet_geometry); read-only in the kernels.
 struct TetGeometry {
-  double volume = 0.0;  ///< V [mm^3], > 0
-  double size = 0.0;    ///< h_e: longest edge [mm]; length scale of tolerances and tests
+  double volume = 0.0;            ///< V [mm^3], > 0
+  double size = 0.0;              ///< h_e: longest edge [mm]; length scale of tolerances and tests
   std::array<Vec3d, 4> grad_N{};  ///< Grad N_a = Grad L_a [1/mm], constant; Σ_a Grad N_a = 0
   std::array<Vec3d, kQuadPoints> grad_bubble{};  ///< Grad N_b at the quadrature points [1/mm]
   std::array<double, kQuadPoints> weight{};      ///< w_q V [mm^3]; Σ_q = V

@@ -1,9 +1,10 @@
 // The MINI (P1+/P1) element kernel: residual = gradient of the energy, condensed tangent = exact
 // derivative of the condensed residual (finite differences, observed order 2), symmetry, rigid
 // motions, homogeneous states, the bubble solve, closed-form stresses and failure reporting.
+#include "element/mini.hpp"
+
 #include <gtest/gtest.h>
 
-#include "element/mini.hpp"
 #include "element_test_support.hpp"
 #include "material/fung.hpp"
 #include "material/mooney_rivlin.hpp"
@@ -38,8 +39,7 @@ ConvergedState converged_state(unsigned seed, const Material& mat, double invers
     ConvergedState c;
     c.g = compute_tet_geometry(test::random_tet(seed + 1000 * attempt));
     c.x = test::random_state(seed + 1000 * attempt, c.g, 0.3, kC1);
-    const ElementStatus s =
-        assemble_mini(c.g, c.x, mat, inverse_bulk_modulus, c.bubble, c.r, &c.K);
+    const ElementStatus s = assemble_mini(c.g, c.x, mat, inverse_bulk_modulus, c.bubble, c.r, &c.K);
     if (s.ok && s.min_J >= 0.25) return c;
   }
 }
@@ -158,8 +158,8 @@ TEST(MiniElement, CondensedResidualIsGradientOfCondensedEnergy) {
 TEST(MiniElement, TangentIsSymmetric) {
   const double inverse_bulk_modulus = 1.0 / (100.0 * kC1);
   for (unsigned seed = 1; seed <= 5; ++seed) {
-    const ConvergedState c = converged_state(seed, MooneyRivlin{0.6 * kC1, 0.4 * kC1},
-                                             inverse_bulk_modulus);
+    const ConvergedState c =
+        converged_state(seed, MooneyRivlin{0.6 * kC1, 0.4 * kC1}, inverse_bulk_modulus);
     const ElemVec scale = unknown_scales(c.g);
     const auto D = scale.asDiagonal();
     const ElemMat K = D * c.K * D;
@@ -234,6 +234,25 @@ TEST(MiniElement, BubbleSolveConvergesAndIsIndependentOfTheWarmStart) {
   const auto D = scale.asDiagonal();
   EXPECT_LT((D * (r_warm - r_cold)).norm(), 1e-12 * (D * c.r).norm());
   EXPECT_LT((warm - cold).norm(), 1e-10 * c.g.size);
+}
+
+TEST(MiniElement, InadmissibleWarmStartIsReplaced) {
+  // A stored bubble that inverts the element at the current x_e (e.g. after a large global step)
+  // must not make the element fail: the solve restarts from b = 0 (mixed_up.md, C1).
+  const NeoHookean mat{kC1};
+  const ConvergedState c = converged_state(4, mat, 0.0);
+  BubbleVec b = c.bubble + BubbleVec(3.0, -2.0, 4.0) * c.g.size;
+  ElemVec r;
+  ElemMat K;
+  MiniLocalSystem probe;
+  ASSERT_FALSE(assemble_mini_uncondensed(c.g, c.x, mat, 0.0, b, probe, false));  // det F <= 0
+  const ElementStatus s = assemble_mini(c.g, c.x, mat, 0.0, b, r, &K);
+  ASSERT_TRUE(s.ok);
+  EXPECT_LT((b - c.bubble).norm(), 1e-10 * c.g.size);
+  const ElemVec scale = unknown_scales(c.g);
+  const auto D = scale.asDiagonal();
+  EXPECT_LT((D * (r - c.r)).norm(), 1e-12 * (D * c.r).norm());
+  EXPECT_LT((D * (K - c.K) * D).norm(), 1e-9 * (D * c.K * D).norm());
 }
 
 TEST(MiniElement, InvertedStateIsReportedNotThrown) {

@@ -47,8 +47,8 @@ long allocations_during_kernels(const Material& mat) {
   BubbleVec b = BubbleVec::Zero();
   counting = true;
   allocations = 0;
-  const ElementStatus s1 = assemble_mini(g, x, mat, 0.0, b, r, &K);           // several iterations
-  const ElementStatus s2 = assemble_mini(g, x, mat, 1e-3, b, r, nullptr);     // residual only
+  const ElementStatus s1 = assemble_mini(g, x, mat, 0.0, b, r, &K);        // several iterations
+  const ElementStatus s2 = assemble_mini(g, x, mat, 1e-3, b, r, nullptr);  // residual only
   const ElementFields f = compute_element_fields(g, x, mat, b);
   counting = false;
   EXPECT_TRUE(s1.ok && s2.ok);

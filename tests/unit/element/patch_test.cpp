@@ -91,16 +91,16 @@ std::vector<double> assemble_patch(const PatchMesh& m, const Mat3d& F0, double p
 /// (deformed area / 3 per corner: N_a integrates to a third of a triangle).
 std::vector<Vec3d> traction_forces(const PatchMesh& m, const Mat3d& F0, const Mat3d& sigma) {
   std::vector<Vec3d> force(m.nodes.size(), Vec3d::Zero());
-  const std::array<std::array<int, 4>, 4> faces = {{{1, 2, 3, 0}, {0, 2, 3, 1}, {0, 1, 3, 2},
-                                                    {0, 1, 2, 3}}};  // 3 corners + opposite
+  const std::array<std::array<int, 4>, 4> faces = {
+      {{1, 2, 3, 0}, {0, 2, 3, 1}, {0, 1, 3, 2}, {0, 1, 2, 3}}};  // 3 corners + opposite
   for (const auto& tet : m.tets)
     for (const auto& f : faces) {
       const int n0 = tet[f[0]], n1 = tet[f[1]], n2 = tet[f[2]];
       bool on_cube_face = false;  // all three corners on one face of the cube
       for (int axis = 0; axis < 3; ++axis)
         for (double side : {0.0, 1.0})
-          on_cube_face = on_cube_face || (m.nodes[n0](axis) == side &&
-                                          m.nodes[n1](axis) == side && m.nodes[n2](axis) == side);
+          on_cube_face = on_cube_face || (m.nodes[n0](axis) == side && m.nodes[n1](axis) == side &&
+                                          m.nodes[n2](axis) == side);
       if (!on_cube_face) continue;
       const Vec3d x0 = F0 * m.nodes[n0], x1 = F0 * m.nodes[n1], x2 = F0 * m.nodes[n2];
       Vec3d area_normal = 0.5 * (x1 - x0).cross(x2 - x0);  // |.| = deformed area
@@ -115,8 +115,7 @@ void expect_patch_test_passes(const Material& mat, const Mat3d& F0, double p,
                               double inverse_bulk_modulus) {
   const PatchMesh m = distorted_cube(3, 17);
   double largest_bubble = 0.0;
-  const std::vector<double> r =
-      assemble_patch(m, F0, p, mat, inverse_bulk_modulus, largest_bubble);
+  const std::vector<double> r = assemble_patch(m, F0, p, mat, inverse_bulk_modulus, largest_bubble);
   EXPECT_LT(largest_bubble, 1e-13);
   const double J = F0.determinant();
   const Mat3d sigma = mat.evaluate(F0).P * F0.transpose() / J - p * Mat3d::Identity();

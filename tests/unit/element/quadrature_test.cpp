@@ -1,11 +1,12 @@
 // Quadrature rules of the element folder: weights, symmetry and exactness of the stated degree on a
 // distorted tetrahedron, against exact integrals computed in barycentric monomials.
+#include "element/quadrature.hpp"
+
 #include <gtest/gtest.h>
 
 #include <map>
 
 #include "element/bubble.hpp"
-#include "element/quadrature.hpp"
 #include "element/tet_geometry.hpp"
 #include "element_test_support.hpp"
 

@@ -1,10 +1,11 @@
 // Reference geometry of the MINI tetrahedron: shape-function gradients, partition of unity,
 // the bubble and its integrals, and rejection of inverted elements.
+#include "element/tet_geometry.hpp"
+
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
 #include "element/bubble.hpp"
-#include "element/tet_geometry.hpp"
 #include "element_test_support.hpp"
 
 namespace plisse::mini {
