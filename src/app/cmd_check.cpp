@@ -59,7 +59,6 @@ void check_case(const CheckOptions& options) {
   check_case_against_mesh(c, mesh);
   // The same rules `plisse run` applies before solving (symmetry planes, conflicting conditions).
   collect_constraints(c, mesh);
-  check_solver_support(c, mesh);
   const MeshReport report = check_mesh(mesh);
 
   std::ostream& out = std::cout;
@@ -82,6 +81,8 @@ void check_case(const CheckOptions& options) {
       << count(report.warnings.size(), "warning") << '\n';
   for (std::size_t i = 0; i < report.warnings.size() && i < 5; ++i)
     out << "            warning: " << report.warnings[i] << '\n';
+  for (const InputError& e : unsupported_features(c, mesh))
+    std::cerr << "plisse check: warning: " << e.what() << " (plisse run refuses this case)\n";
   out << "  case      " << count(c.boundary.size(), "boundary condition") << ", "
       << count(c.loads.size(), "load") << ", " << count(c.cavities.size(), "cavity", "cavities")
       << ", " << count(c.dies.size(), "die") << ", " << count(c.probes.size(), "probe") << '\n';

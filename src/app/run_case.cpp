@@ -111,23 +111,25 @@ void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model
 
 }  // namespace
 
-void check_solver_support(const Case& c, const Mesh& mesh) {
+std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh) {
+  std::vector<InputError> out;
   if (mesh.order() != 1)
-    throw InputError(c.mesh.file ? c.mesh.file_place : c.mesh.place,
+    out.emplace_back(c.mesh.file ? c.mesh.file_place : c.mesh.place,
                      "the mesh has second-order (10-node) tetrahedra; the MINI element needs "
                      "linear ones (a quadratic element is planned)");
-  const auto unsupported = [](const InputPlace& place, const std::string& what) {
-    throw InputError(place, what + " are not supported by the solver yet");
+  const auto unsupported = [&](const InputPlace& place, const std::string& what) {
+    out.emplace_back(place, what + " are not supported by the solver yet");
   };
   if (!c.loads.empty()) unsupported(c.loads.front().place, "loads (pressure, gravity)");
   if (!c.cavities.empty()) unsupported(c.cavities.front().place, "cavities");
   if (!c.dies.empty()) unsupported(c.dies.front().place, "rigid dies");
   if (c.solver.scheme != Scheme::total_lagrangian)
-    throw InputError({c.path, 0, 0, "solver.scheme"},
+    out.emplace_back(InputPlace{c.path, 0, 0, "solver.scheme"},
                      "only the total-lagrangian scheme is available yet");
   if (c.solver.stability.check)
-    throw InputError({c.path, 0, 0, "solver.stability.check"},
+    out.emplace_back(InputPlace{c.path, 0, 0, "solver.stability.check"},
                      "stability checks are not available yet");
+  return out;
 }
 
 void run_case(const RunOptions& options) {
@@ -140,7 +142,8 @@ void run_case(const RunOptions& options) {
   auto t0 = Clock::now();
   const Mesh mesh = load_case_mesh(c);
   check_case_against_mesh(c, mesh);
-  check_solver_support(c, mesh);
+  if (const auto unsupported = unsupported_features(c, mesh); !unsupported.empty())
+    throw unsupported.front();
   const double time_mesh = seconds_since(t0);
 
   // Everything that can be rejected is checked before the run directory is touched.

@@ -15,9 +15,10 @@ struct RunOptions {
   std::vector<std::string> petsc_options;  ///< --petsc "-snes_monitor ..."
 };
 
-/// Rejects (InputError) what the case file allows but this build cannot solve yet, naming the
-/// key: second-order meshes, loads, cavities, dies and the incremental scheme.
-void check_solver_support(const Case& c, const Mesh& mesh);
+/// What the case file allows but this build cannot solve yet (second-order meshes, loads,
+/// cavities, dies, the incremental scheme, stability checks), each as an InputError naming the
+/// key. `plisse run` refuses the first; `plisse check` lists them as warnings.
+std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh);
 
 /// Runs the case. Returns normally when the run reached its end time; throws InputError for bad
 /// input (nothing is solved) and SolverError when the solver stopped early (the last converged

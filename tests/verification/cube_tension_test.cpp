@@ -20,7 +20,7 @@ struct CubeCase {
 
 void expect_closed_form(const CubeCase& c) {
   const auto dir = test::scratch_directory(c.example);
-  const int status = test::run_plisse(test::example(c.example) + " -o " + dir.string(),
+  const int status = test::run_plisse("run " + test::example(c.example) + " -o " + dir.string(),
                                       dir.string() + ".log");
   ASSERT_EQ(status, 0) << "see " << dir.string() << ".log";
   const HistoryTable h = read_history(dir / "history.csv");
