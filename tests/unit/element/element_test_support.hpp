@@ -56,4 +56,48 @@ inline Mat3d rotation(const Vec3d& axis, double angle) {
   return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
 }
 
+/// A small tetrahedral mesh for multi-element tests.
+struct PatchMesh {
+  std::vector<Vec3d> nodes;              ///< [mm]
+  std::vector<std::array<int, 4>> tets;  // positively oriented
+  std::vector<bool> on_boundary;
+};
+
+/// [0, 1]³ split into n³ cells of 6 tetrahedra each (along each cell's main diagonal); interior
+/// nodes moved randomly by up to 0.2 of a cell so that no element is a scaled copy of another.
+inline PatchMesh distorted_cube(int n, unsigned seed) {
+  PatchMesh m;
+  auto id = [n](int i, int j, int k) { return i + (n + 1) * (j + (n + 1) * k); };
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> jitter(-0.2 / n, 0.2 / n);
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        const bool boundary = i == 0 || j == 0 || k == 0 || i == n || j == n || k == n;
+        Vec3d x(double(i) / n, double(j) / n, double(k) / n);
+        if (!boundary) x += Vec3d(jitter(rng), jitter(rng), jitter(rng));
+        m.nodes.push_back(x);
+        m.on_boundary.push_back(boundary);
+      }
+  const std::array<std::array<int, 3>, 6> orders = {
+      {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        for (const auto& order : orders) {
+          std::array<int, 3> c = {i, j, k};
+          std::array<int, 4> tet;
+          tet[0] = id(c[0], c[1], c[2]);
+          for (int step = 0; step < 3; ++step) {
+            ++c[order[step]];
+            tet[step + 1] = id(c[0], c[1], c[2]);
+          }
+          const auto& X = m.nodes;
+          if ((X[tet[1]] - X[tet[0]]).cross(X[tet[2]] - X[tet[0]]).dot(X[tet[3]] - X[tet[0]]) < 0)
+            std::swap(tet[2], tet[3]);
+          m.tets.push_back(tet);
+        }
+  return m;
+}
+
 }  // namespace plisse::test

@@ -5,7 +5,6 @@
 
 #include <array>
 #include <map>
-#include <random>
 #include <vector>
 
 #include "element/mini.hpp"
@@ -16,54 +15,11 @@
 namespace plisse::mini {
 namespace {
 
-struct PatchMesh {
-  std::vector<Vec3d> nodes;
-  std::vector<std::array<int, 4>> tets;  // positively oriented
-  std::vector<bool> on_boundary;
-};
-
-/// [0, 1]³ split into n³ cells of 6 tetrahedra each (along each cell's main diagonal); interior
-/// nodes moved randomly by up to 0.2 of a cell so that no element is a scaled copy of another.
-PatchMesh distorted_cube(int n, unsigned seed) {
-  PatchMesh m;
-  auto id = [n](int i, int j, int k) { return i + (n + 1) * (j + (n + 1) * k); };
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> jitter(-0.2 / n, 0.2 / n);
-  for (int k = 0; k <= n; ++k)
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i) {
-        const bool boundary = i == 0 || j == 0 || k == 0 || i == n || j == n || k == n;
-        Vec3d x(double(i) / n, double(j) / n, double(k) / n);
-        if (!boundary) x += Vec3d(jitter(rng), jitter(rng), jitter(rng));
-        m.nodes.push_back(x);
-        m.on_boundary.push_back(boundary);
-      }
-  const std::array<std::array<int, 3>, 6> orders = {
-      {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        for (const auto& order : orders) {
-          std::array<int, 3> c = {i, j, k};
-          std::array<int, 4> tet;
-          tet[0] = id(c[0], c[1], c[2]);
-          for (int step = 0; step < 3; ++step) {
-            ++c[order[step]];
-            tet[step + 1] = id(c[0], c[1], c[2]);
-          }
-          const auto& X = m.nodes;
-          if ((X[tet[1]] - X[tet[0]]).cross(X[tet[2]] - X[tet[0]]).dot(X[tet[3]] - X[tet[0]]) < 0)
-            std::swap(tet[2], tet[3]);
-          m.tets.push_back(tet);
-        }
-  return m;
-}
-
 /// Assembles the condensed residual over the mesh at x = F0 X + c with uniform nodal pressure p.
 /// Returns the global residual (4 values per node: u_x, u_y, u_z, p) and, in largest_bubble, the
 /// largest |b| / h_e.
 template <class Material>
-std::vector<double> assemble_patch(const PatchMesh& m, const Mat3d& F0, double p,
+std::vector<double> assemble_patch(const test::PatchMesh& m, const Mat3d& F0, double p,
                                    const Material& mat, double inverse_bulk_modulus,
                                    double& largest_bubble) {
   std::vector<double> residual(4 * m.nodes.size(), 0.0);
@@ -89,7 +45,7 @@ std::vector<double> assemble_patch(const PatchMesh& m, const Mat3d& F0, double p
 
 /// Σ over the boundary faces at each node of ∫ N_a σ n da on the deformed configuration
 /// (deformed area / 3 per corner: N_a integrates to a third of a triangle).
-std::vector<Vec3d> traction_forces(const PatchMesh& m, const Mat3d& F0, const Mat3d& sigma) {
+std::vector<Vec3d> traction_forces(const test::PatchMesh& m, const Mat3d& F0, const Mat3d& sigma) {
   std::vector<Vec3d> force(m.nodes.size(), Vec3d::Zero());
   const std::array<std::array<int, 4>, 4> faces = {
       {{1, 2, 3, 0}, {0, 2, 3, 1}, {0, 1, 3, 2}, {0, 1, 2, 3}}};  // 3 corners + opposite
@@ -113,7 +69,7 @@ std::vector<Vec3d> traction_forces(const PatchMesh& m, const Mat3d& F0, const Ma
 template <class Material>
 void expect_patch_test_passes(const Material& mat, const Mat3d& F0, double p,
                               double inverse_bulk_modulus) {
-  const PatchMesh m = distorted_cube(3, 17);
+  const test::PatchMesh m = test::distorted_cube(3, 17);
   double largest_bubble = 0.0;
   const std::vector<double> r = assemble_patch(m, F0, p, mat, inverse_bulk_modulus, largest_bubble);
   EXPECT_LT(largest_bubble, 1e-13);
