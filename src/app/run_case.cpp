@@ -18,6 +18,7 @@
 #include "io/vtu_writer.hpp"
 #include "material/registry.hpp"
 #include "physics/dirichlet.hpp"
+#include "physics/terms.hpp"
 #include "solver/load_stepper.hpp"
 #include "solver/petsc_session.hpp"
 
@@ -56,8 +57,10 @@ struct HistoryColumns {
   std::vector<int> probe_nodes;
 };
 
-HistoryColumns history_columns(const Case& c, const Mesh& mesh) {
+HistoryColumns history_columns(const Case& c, const Mesh& mesh, const MixedModel& model) {
   HistoryColumns h;
+  for (const auto& term : model.terms())
+    for (const auto& name : term->history_columns()) h.names.push_back(name);
   if (c.output.stretch_axis) h.names.push_back("stretch");
   for (const char* s : {"stretch_x", "stretch_y", "stretch_z"}) h.names.push_back(s);
   for (const char* s : {"cauchy_xx", "cauchy_yy", "cauchy_zz", "cauchy_xy", "cauchy_yz", "cauchy_xz"})
@@ -120,7 +123,6 @@ std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh) {
   const auto unsupported = [&](const InputPlace& place, const std::string& what) {
     out.emplace_back(place, what + " are not supported by the solver yet");
   };
-  if (!c.loads.empty()) unsupported(c.loads.front().place, "loads (pressure, gravity)");
   if (!c.cavities.empty()) unsupported(c.cavities.front().place, "cavities");
   if (!c.dies.empty()) unsupported(c.dies.front().place, "rigid dies");
   if (c.solver.scheme != Scheme::total_lagrangian)
@@ -163,7 +165,7 @@ void run_case(const RunOptions& options) {
   t0 = Clock::now();
   MixedModel model(mesh, material,
                    c.material.exact_incompressibility ? 0.0 : 1.0 / c.material.bulk_modulus,
-                   constraints);
+                   constraints, make_terms(c, mesh, constraints));
   LoadStepper stepper(model, c.solver);
   const double time_setup = seconds_since(t0);
   {
@@ -175,7 +177,7 @@ void run_case(const RunOptions& options) {
     log.info(line);
   }
 
-  HistoryColumns columns = history_columns(c, mesh);
+  HistoryColumns columns = history_columns(c, mesh, model);
   HistoryWriter history(dir.history_csv(), columns.names);
   PvdWriter pvd(dir.solution_pvd());
   double time_output = 0.0;
@@ -197,6 +199,8 @@ void run_case(const RunOptions& options) {
     const BodyAverages avg = model.averages();
     std::vector<double> row = {double(info.step), info.time, info.load_factor,
                                double(info.newton_iterations), info.residual_norm};
+    for (const auto& term : model.terms())
+      for (double v : term->history_values(info.time, model.state())) row.push_back(v);
     if (c.output.stretch_axis) {
       const int a = *c.output.stretch_axis - 'x';
       row.push_back(avg.F(a, a));

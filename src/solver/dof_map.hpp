@@ -1,28 +1,34 @@
 #pragma once
-/// Numbering of the unknowns: four per node (ux, uy, uz, p). Constrained displacement components are
-/// eliminated from the algebraic system: only free dofs get an equation number.
+/// Numbering of the unknowns: four per node (ux, uy, uz, p), then the global unknowns of the model
+/// terms (physics/model_term.hpp). Constrained displacement components are eliminated from the
+/// algebraic system: only free dofs get an equation number.
 #include <vector>
 
 #include "physics/dirichlet.hpp"
+#include "physics/model_term.hpp"
 
 namespace plisse {
 
 class DofMap {
  public:
-  static constexpr int kPerNode = 4;  ///< ux, uy, uz, p
-  DofMap(int n_nodes, const std::vector<ConstrainedComponent>& constrained);
+  static constexpr int kPerNode = kValuesPerNode;  ///< ux, uy, uz, p
+  DofMap(int n_nodes, int n_global, const std::vector<ConstrainedComponent>& constrained);
 
   /// Index of component `comp` (0..2 displacement, 3 pressure) of `node` in the full state.
   static int dof(int node, int comp) { return kPerNode * node + comp; }
   int n_dofs() const { return static_cast<int>(equation_.size()); }
   int n_free() const { return n_free_; }
   int n_free_pressure() const { return n_free_pressure_; }
+  int n_nodes() const { return n_nodes_; }
+  /// Full-state index of global unknown k (after all nodal values).
+  int global_dof(int k) const { return kPerNode * n_nodes_ + k; }
   /// Equation number of a full-state dof, or -1 when it is constrained.
   int equation(int dof) const { return equation_[dof]; }
   const std::vector<int>& equations() const { return equation_; }
 
  private:
   std::vector<int> equation_;
+  int n_nodes_ = 0;
   int n_free_ = 0;
   int n_free_pressure_ = 0;
 };

@@ -17,18 +17,57 @@ void track(AssemblyStatus& status, const mini::ElementStatus& s, int e) {
     status.worst_element = e;
   }
 }
+int count_global_unknowns(const std::vector<std::unique_ptr<ModelTerm>>& terms) {
+  int n = 0;
+  for (const auto& term : terms) n += term->n_global_unknowns();
+  return n;
+}
+
+/// Tangent entries by full-state index into the free-dof PETSc matrix.
+class EquationSink : public TangentSink {
+ public:
+  EquationSink(Mat K, const DofMap& dofs) : K_(K), dofs_(dofs) {}
+  void add(std::span<const int> rows, std::span<const int> cols,
+           std::span<const double> values) override {
+    rows_.resize(rows.size());
+    cols_.resize(cols.size());
+    for (size_t i = 0; i < rows.size(); ++i) rows_[i] = dofs_.equation(rows[i]);
+    for (size_t j = 0; j < cols.size(); ++j) cols_[j] = dofs_.equation(cols[j]);
+    PLISSE_PETSC(MatSetValues(K_, static_cast<PetscInt>(rows.size()), rows_.data(),
+                              static_cast<PetscInt>(cols.size()), cols_.data(), values.data(),
+                              ADD_VALUES));
+  }
+
+ private:
+  Mat K_;
+  const DofMap& dofs_;
+  std::vector<PetscInt> rows_, cols_;
+};
 }  // namespace
 
+bool MixedModel::symmetric() const {
+  for (const auto& term : terms_)
+    if (!term->symmetric()) return false;
+  return true;
+}
+
 MixedModel::MixedModel(const Mesh& mesh, AnyMaterial material, double inverse_bulk_modulus,
-                       std::vector<ConstrainedComponent> constraints)
+                       std::vector<ConstrainedComponent> constraints,
+                       std::vector<std::unique_ptr<ModelTerm>> terms)
     : mesh_(mesh),
       material_(std::move(material)),
       inverse_bulk_modulus_(inverse_bulk_modulus),
       constraints_(std::move(constraints)),
-      dofs_(mesh.n_nodes(), constraints_),
-      state_(static_cast<size_t>(DofMap::kPerNode) * mesh.n_nodes(), 0.0),
+      terms_(std::move(terms)),
+      dofs_(mesh.n_nodes(), count_global_unknowns(terms_), constraints_),
+      state_(dofs_.n_dofs(), 0.0),
       bubble_(mesh.n_tets(), mini::BubbleVec::Zero()),
       full_residual_(state_.size(), 0.0) {
+  int next_global = 0;
+  for (auto& term : terms_) {
+    term->set_first_global_dof(dofs_.global_dof(next_global));
+    next_global += term->n_global_unknowns();
+  }
   geometry_.reserve(mesh.n_tets());
   for (const auto& tet : mesh.tets)
     geometry_.push_back(mini::compute_tet_geometry(
@@ -95,6 +134,7 @@ AssemblyStatus MixedModel::assemble_residual(Vec f) {
         }
       },
       material_);
+  for (auto& term : terms_) term->assemble(time_, state_, full_residual_, nullptr);
   if (!external_force_.empty()) {
     const double factor = external_ramp_.factor(time_);
     for (size_t d = 0; d < full_residual_.size(); ++d) full_residual_[d] -= factor * external_force_[d];
@@ -129,6 +169,12 @@ AssemblyStatus MixedModel::assemble_tangent(Mat K) {
         }
       },
       material_);
+  if (!terms_.empty()) {
+    // Terms add residual and tangent together; their residual part is discarded here.
+    std::vector<double> scratch(state_.size(), 0.0);
+    EquationSink sink(K, dofs_);
+    for (auto& term : terms_) term->assemble(time_, state_, scratch, &sink);
+  }
   PLISSE_PETSC(MatAssemblyBegin(K, MAT_FINAL_ASSEMBLY));
   PLISSE_PETSC(MatAssemblyEnd(K, MAT_FINAL_ASSEMBLY));
   return status;
@@ -151,22 +197,32 @@ Mat MixedModel::create_matrix() const {
     for (int k = 0; k < DofMap::kPerNode; ++k)
       if (const int eq = dofs_.equation(DofMap::dof(v, k)); eq >= 0) nnz[eq] = count;
   }
+  // Couplings of the terms beyond the elements (an upper bound: duplicates only over-allocate).
+  std::vector<std::pair<int, int>> couplings;
+  for (const auto& term : terms_) term->add_couplings(couplings);
+  for (const auto& [row, col] : couplings)
+    if (dofs_.equation(row) >= 0 && dofs_.equation(col) >= 0) ++nnz[dofs_.equation(row)];
+  for (PetscInt& n : nnz) n = std::min<PetscInt>(std::max<PetscInt>(n, 1), dofs_.n_free());
   Mat K = nullptr;
   PLISSE_PETSC(MatCreateSeqAIJ(PETSC_COMM_SELF, dofs_.n_free(), dofs_.n_free(), 0, nnz.data(), &K));
   PLISSE_PETSC(MatSetOption(K, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
-  PLISSE_PETSC(MatSetOption(K, MAT_SYMMETRIC, PETSC_TRUE));
-  PLISSE_PETSC(MatSetOption(K, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
+  if (symmetric()) {
+    PLISSE_PETSC(MatSetOption(K, MAT_SYMMETRIC, PETSC_TRUE));
+    PLISSE_PETSC(MatSetOption(K, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
+  }
   return K;
 }
 
 void MixedModel::save_converged() {
   converged_state_ = state_;
   converged_bubble_ = bubble_;
+  for (auto& term : terms_) term->accept_step(state_);
 }
 
 void MixedModel::restore_converged() {
   state_ = converged_state_;
   bubble_ = converged_bubble_;
+  for (auto& term : terms_) term->reject_step();
 }
 
 Vec3d MixedModel::reaction(const std::vector<int>& triangles) const {

@@ -5,12 +5,14 @@
 #include <petscmat.h>
 #include <petscvec.h>
 
+#include <memory>
 #include <vector>
 
 #include "element/mini.hpp"
 #include "material/registry.hpp"
 #include "mesh/mesh.hpp"
 #include "physics/dirichlet.hpp"
+#include "physics/model_term.hpp"
 #include "solver/dof_map.hpp"
 
 namespace plisse {
@@ -32,15 +34,21 @@ struct BodyAverages {
 class MixedModel {
  public:
   /// Borrows `mesh` (must outlive the model). `inverse_bulk_modulus` is 1/κ, 0 for exact
-  /// incompressibility.
+  /// incompressibility. `terms` (loads, ...) are owned by the model; their global unknowns follow
+  /// the nodal values in the full state, in the order given.
   MixedModel(const Mesh& mesh, AnyMaterial material, double inverse_bulk_modulus,
-             std::vector<ConstrainedComponent> constraints);
+             std::vector<ConstrainedComponent> constraints,
+             std::vector<std::unique_ptr<ModelTerm>> terms = {});
+
+  const std::vector<std::unique_ptr<ModelTerm>>& terms() const { return terms_; }
+  /// True when the tangent is symmetric (all terms symmetric): LDL^T applies.
+  bool symmetric() const;
 
   const Mesh& mesh() const { return mesh_; }
   const DofMap& dofs() const { return dofs_; }
   int n_free() const { return dofs_.n_free(); }
 
-  /// Full state, kPerNode values per node (ux, uy, uz, p).
+  /// Full state: kPerNode values per node (ux, uy, uz, p), then the terms' global unknowns.
   const std::vector<double>& state() const { return state_; }
   std::vector<double>& state() { return state_; }
   /// Moves to time t: the constrained components take their prescribed values at t and the
@@ -85,6 +93,7 @@ class MixedModel {
   AnyMaterial material_;
   double inverse_bulk_modulus_;
   std::vector<ConstrainedComponent> constraints_;
+  std::vector<std::unique_ptr<ModelTerm>> terms_;
   DofMap dofs_;
   std::vector<mini::TetGeometry> geometry_;
   std::vector<double> state_, converged_state_;

@@ -46,8 +46,9 @@ NewtonSolver::NewtonSolver(MixedModel& model, const NewtonSettings& settings) : 
   PLISSE_PETSC(SNESGetKSP(snes_, &ksp));
   PLISSE_PETSC(KSPSetType(ksp, KSPPREONLY));
   PLISSE_PETSC(KSPGetPC(ksp, &pc));
-  // The tangent is symmetric indefinite (saddle point): MUMPS LDL^T (sym = 2).
-  PLISSE_PETSC(PCSetType(pc, PCCHOLESKY));
+  // A symmetric tangent is indefinite (saddle point): MUMPS LDL^T (sym = 2). Follower loads on
+  // open surfaces make it unsymmetric: LU.
+  PLISSE_PETSC(PCSetType(pc, model.symmetric() ? PCCHOLESKY : PCLU));
   PLISSE_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
   history_.assign(settings.max_iterations + 1, 0.0);
   PLISSE_PETSC(SNESSetConvergenceHistory(snes_, history_.data(), nullptr,

@@ -1,0 +1,59 @@
+#pragma once
+/// Contributions to the discrete problem beyond the elements: surface loads, body forces, cavities,
+/// contact. A term sees the full state vector of the model (DESIGN.md layout below), adds to the
+/// residual and to the tangent, and may own global scalar unknowns (e.g. a cavity's pressure).
+///
+/// Full-state layout: kValuesPerNode values per node (ux, uy, uz, p), then the global unknowns of
+/// all terms, in the order the terms were added to the model.
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace plisse {
+
+inline constexpr int kValuesPerNode = 4;
+inline int node_dof(int node, int component) { return kValuesPerNode * node + component; }
+
+/// Receives tangent entries by full-state index; the solver maps them to its equations and drops
+/// those of constrained components.
+class TangentSink {
+ public:
+  virtual ~TangentSink() = default;
+  /// Adds the dense block `values` (row-major, rows.size() x cols.size()).
+  virtual void add(std::span<const int> rows, std::span<const int> cols,
+                   std::span<const double> values) = 0;
+};
+
+class ModelTerm {
+ public:
+  virtual ~ModelTerm() = default;
+
+  /// Global scalar unknowns this term owns.
+  virtual int n_global_unknowns() const { return 0; }
+  /// Called once by the model with the full-state index of this term's first global unknown.
+  virtual void set_first_global_dof(int /*dof*/) {}
+  /// Tangent couplings beyond those of the elements (row, column), by full-state index.
+  virtual void add_couplings(std::vector<std::pair<int, int>>& /*pairs*/) const {}
+  /// False when the term's tangent is not symmetric (the solver then uses LU instead of LDL^T).
+  virtual bool symmetric() const { return true; }
+
+  /// Adds the term's residual at time t and full state x to `residual`, and its tangent
+  /// (d residual / d x) to `tangent` when that is not null.
+  virtual void assemble(double t, std::span<const double> x, std::span<double> residual,
+                        TangentSink* tangent) = 0;
+
+  /// A step converged at state x (update history such as glued contact points) / was abandoned.
+  virtual void accept_step(std::span<const double> /*x*/) {}
+  virtual void reject_step() {}
+
+  /// Named history columns and their values at (t, x).
+  virtual std::vector<std::string> history_columns() const { return {}; }
+  virtual std::vector<double> history_values(double /*t*/, std::span<const double> /*x*/) const {
+    return {};
+  }
+};
+
+}  // namespace plisse

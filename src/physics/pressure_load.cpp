@@ -1,0 +1,86 @@
+#include "physics/pressure_load.hpp"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "physics/surface.hpp"
+
+namespace plisse {
+namespace {
+
+/// [v]x, the matrix of the cross product: [v]x w = v x w.
+Mat3d skew(const Vec3d& v) {
+  Mat3d s;
+  s << 0, -v[2], v[1], v[2], 0, -v[0], -v[1], v[0], 0;
+  return s;
+}
+
+}  // namespace
+
+bool pressure_stiffness_is_symmetric(const Mesh& mesh,
+                                     const std::vector<std::array<int, 3>>& triangles,
+                                     const std::vector<ConstrainedComponent>& constraints) {
+  std::map<std::pair<int, int>, int> edge_count;
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      ++edge_count[{std::min(a, b), std::max(a, b)}];
+    }
+  std::set<std::pair<int, int>> constrained;
+  for (const auto& c : constraints) constrained.insert({c.node, c.component});
+  const auto fixed = [&](int v) {
+    return constrained.count({v, 0}) && constrained.count({v, 1}) && constrained.count({v, 2});
+  };
+  for (const auto& [edge, count] : edge_count) {
+    if (count != 1) continue;  // interior edge
+    const auto [a, b] = edge;
+    bool ok = fixed(a) && fixed(b);
+    for (int k = 0; k < 3 && !ok; ++k)
+      ok = constrained.count({a, k}) && constrained.count({b, k}) &&
+           mesh.nodes[a][k] == mesh.nodes[b][k];
+    if (!ok) return false;
+  }
+  return true;
+}
+
+PressureLoad::PressureLoad(const Mesh& mesh, std::string name, const std::string& surface,
+                           double value, Ramp ramp,
+                           const std::vector<ConstrainedComponent>& constraints)
+    : mesh_(mesh),
+      name_(std::move(name)),
+      triangles_(outward_triangles(mesh, surface)),
+      value_(value),
+      ramp_(ramp),
+      symmetric_(pressure_stiffness_is_symmetric(mesh, triangles_, constraints)) {}
+
+void PressureLoad::assemble(double t, std::span<const double> x, std::span<double> residual,
+                            TangentSink* tangent) {
+  const double p = pressure(t);
+  if (p == 0.0) return;
+  // External nodal force of a linear triangle: f_a = -p/6 (x1 - x0) x (x2 - x0) for each corner
+  // (loads.md, L2); the residual is internal minus external force.
+  std::array<int, 9> dofs;
+  Eigen::Matrix<double, 9, 9, Eigen::RowMajor> k;
+  for (const auto& tri : triangles_) {
+    std::array<Vec3d, 3> xs;
+    for (int a = 0; a < 3; ++a) {
+      xs[a] = mesh_.nodes[tri[a]];
+      for (int i = 0; i < 3; ++i) {
+        dofs[3 * a + i] = node_dof(tri[a], i);
+        xs[a][i] += x[dofs[3 * a + i]];
+      }
+    }
+    const Vec3d c = (xs[1] - xs[0]).cross(xs[2] - xs[0]);
+    for (int a = 0; a < 3; ++a)
+      for (int i = 0; i < 3; ++i) residual[dofs[3 * a + i]] += p * c[i] / 6.0;
+    if (!tangent) continue;
+    // dc/dx0 = [x2 - x1]x, dc/dx1 = [x0 - x2]x, dc/dx2 = [x1 - x0]x   (loads.md, L3)
+    const std::array<Mat3d, 3> dc = {skew(xs[2] - xs[1]), skew(xs[0] - xs[2]), skew(xs[1] - xs[0])};
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) k.block<3, 3>(3 * a, 3 * b) = (p / 6.0) * dc[b];
+    tangent->add(dofs, dofs, std::span<const double>(k.data(), 81));
+  }
+}
+
+}  // namespace plisse

@@ -1,0 +1,48 @@
+#pragma once
+/// Follower pressure on a tagged surface: the traction -p n acts on the deformed surface, with its
+/// consistent load stiffness (docs/theory/loads.md).
+#include <array>
+#include <string>
+#include <vector>
+
+#include "io/case.hpp"
+#include "physics/dirichlet.hpp"
+#include "physics/model_term.hpp"
+
+namespace plisse {
+
+class PressureLoad : public ModelTerm {
+ public:
+  /// `value` [MPa] at the end of `ramp`; positive pushes against the body's outward normal (on a
+  /// balloon's `inner` surface it inflates). Borrows `mesh`. `constraints` decide whether the load
+  /// stiffness is symmetric (see pressure_stiffness_is_symmetric).
+  PressureLoad(const Mesh& mesh, std::string name, const std::string& surface, double value,
+               Ramp ramp, const std::vector<ConstrainedComponent>& constraints);
+
+  bool symmetric() const override { return symmetric_; }
+  void assemble(double t, std::span<const double> x, std::span<double> residual,
+                TangentSink* tangent) override;
+  std::vector<std::string> history_columns() const override { return {"pressure:" + name_}; }
+  std::vector<double> history_values(double t, std::span<const double>) const override {
+    return {pressure(t)};
+  }
+  double pressure(double t) const { return value_ * ramp_.factor(t); }
+
+ private:
+  const Mesh& mesh_;
+  std::string name_;
+  std::vector<std::array<int, 3>> triangles_;  ///< outward oriented
+  double value_;
+  Ramp ramp_;
+  bool symmetric_;
+};
+
+/// The load stiffness of a follower pressure is symmetric when the loaded surface is closed, or
+/// when each edge of its boundary lies in a symmetry plane whose normal displacement is
+/// constrained at both ends (or both end nodes are fixed): the boundary term
+/// p (du x dv) . dx then vanishes (docs/theory/loads.md, L5).
+bool pressure_stiffness_is_symmetric(const Mesh& mesh,
+                                     const std::vector<std::array<int, 3>>& triangles,
+                                     const std::vector<ConstrainedComponent>& constraints);
+
+}  // namespace plisse

@@ -1,0 +1,26 @@
+#include "physics/terms.hpp"
+
+#include "physics/body_force.hpp"
+#include "physics/pressure_load.hpp"
+
+namespace plisse {
+
+std::vector<std::unique_ptr<ModelTerm>> make_terms(const Case& c, const Mesh& mesh,
+                                                   const std::vector<ConstrainedComponent>& constraints) {
+  std::vector<std::unique_ptr<ModelTerm>> terms;
+  for (const Load& load : c.loads) {
+    switch (load.type) {
+      case LoadType::pressure:
+        terms.push_back(std::make_unique<PressureLoad>(mesh, load.name, load.surface.name,
+                                                       load.value, load.ramp, constraints));
+        break;
+      case LoadType::gravity:
+        terms.push_back(std::make_unique<BodyForce>(
+            mesh, load.name, c.material.density * load.acceleration, load.ramp));
+        break;
+    }
+  }
+  return terms;
+}
+
+}  // namespace plisse

@@ -1,0 +1,120 @@
+// Follower pressure: the tangent is the derivative of the residual (central differences), the
+// resultant of a closed surface vanishes, and the symmetry rule for open surfaces holds.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "mesh/generate.hpp"
+#include "physics/pressure_load.hpp"
+#include "physics/surface.hpp"
+
+namespace plisse {
+namespace {
+
+/// Collects tangent entries into a dense matrix over the full state.
+class DenseSink : public TangentSink {
+ public:
+  explicit DenseSink(int n) : K(Eigen::MatrixXd::Zero(n, n)) {}
+  void add(std::span<const int> rows, std::span<const int> cols,
+           std::span<const double> values) override {
+    for (size_t i = 0; i < rows.size(); ++i)
+      for (size_t j = 0; j < cols.size(); ++j) K(rows[i], cols[j]) += values[i * cols.size() + j];
+  }
+  Eigen::MatrixXd K;
+};
+
+Mesh small_cube() {
+  MeshGenerationSpec spec;
+  spec.kind = "cube";
+  spec.edge = 2.0;
+  spec.divisions = 2;
+  return generate_mesh(spec);
+}
+
+std::vector<double> random_state(int n, unsigned seed, double scale) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-scale, scale);
+  std::vector<double> x(n);
+  for (double& v : x) v = u(rng);
+  return x;
+}
+
+Eigen::VectorXd residual(PressureLoad& load, double t, const std::vector<double>& x) {
+  std::vector<double> r(x.size(), 0.0);
+  load.assemble(t, x, r, nullptr);
+  return Eigen::Map<Eigen::VectorXd>(r.data(), r.size());
+}
+
+TEST(PressureLoad, TangentIsDerivativeOfResidualOnAnOpenSurface) {
+  const Mesh mesh = small_cube();
+  PressureLoad load(mesh, "p", "top", 0.7, Ramp{0.0, 1.0}, {});
+  EXPECT_FALSE(load.symmetric());  // free edges: the load stiffness is not symmetric
+  const int n = kValuesPerNode * mesh.n_nodes();
+  const auto x = random_state(n, 3, 0.2);
+  DenseSink sink(n);
+  std::vector<double> r(n, 0.0);
+  load.assemble(1.0, x, r, &sink);
+  const double h = 1e-6;
+  double max_error = 0.0, scale = sink.K.cwiseAbs().maxCoeff();
+  for (int j = 0; j < n; ++j) {
+    auto xp = x, xm = x;
+    xp[j] += h;
+    xm[j] -= h;
+    const Eigen::VectorXd fd = (residual(load, 1.0, xp) - residual(load, 1.0, xm)) / (2 * h);
+    max_error = std::max(max_error, (fd - sink.K.col(j)).cwiseAbs().maxCoeff());
+  }
+  // The residual is quadratic in x, so central differences are exact up to round-off.
+  EXPECT_LT(max_error, 1e-8 * scale);
+  EXPECT_GT((sink.K - sink.K.transpose()).cwiseAbs().maxCoeff(), 1e-3 * scale);
+}
+
+TEST(PressureLoad, ClosedSurfaceHasZeroResultantAndSymmetricStiffness) {
+  Mesh mesh = small_cube();
+  std::vector<int> all;
+  for (const char* face : {"left", "right", "front", "back", "bottom", "top"})
+    for (int t : mesh.surface_tags.at(face)) all.push_back(t);
+  mesh.surface_tags["all"] = all;
+  PressureLoad load(mesh, "p", "all", 0.3, Ramp{0.0, 1.0}, {});
+  EXPECT_TRUE(load.symmetric());
+  const int n = kValuesPerNode * mesh.n_nodes();
+  const auto x = random_state(n, 5, 0.3);
+  DenseSink sink(n);
+  std::vector<double> r(n, 0.0);
+  load.assemble(1.0, x, r, &sink);
+  Vec3d resultant = Vec3d::Zero();
+  for (int v = 0; v < mesh.n_nodes(); ++v)
+    for (int i = 0; i < 3; ++i) resultant[i] += r[node_dof(v, i)];
+  EXPECT_LT(resultant.norm(), 1e-13);  // uniform pressure on a closed surface: no net force
+  EXPECT_LT((sink.K - sink.K.transpose()).cwiseAbs().maxCoeff(),
+            1e-13 * sink.K.cwiseAbs().maxCoeff());
+}
+
+TEST(PressureLoad, ResultantOnAFlatFaceIsPressureTimesArea) {
+  const Mesh mesh = small_cube();
+  PressureLoad load(mesh, "p", "top", 0.25, Ramp{0.0, 2.0}, {});
+  const int n = kValuesPerNode * mesh.n_nodes();
+  const std::vector<double> x(n, 0.0);
+  std::vector<double> r(n, 0.0);
+  load.assemble(1.0, x, r, nullptr);  // half-way up the ramp: p = 0.125 MPa
+  double fz = 0.0;
+  for (int v = 0; v < mesh.n_nodes(); ++v) fz += r[node_dof(v, 2)];
+  // Residual = internal - external; the external force on the top face (outward +z) is -p A.
+  EXPECT_NEAR(fz, 0.125 * 4.0, 1e-14);
+}
+
+TEST(PressureLoad, SymmetryPlanesCloseTheBoundaryOfAnOpenSurface) {
+  const Mesh mesh = small_cube();
+  const auto top = outward_triangles(mesh, "top");
+  std::vector<ConstrainedComponent> constraints;
+  for (int v : surface_nodes(top)) {
+    const Vec3d& X = mesh.nodes[v];
+    for (int k = 0; k < 2; ++k)
+      if (X[k] == 0.0 || X[k] == 2.0) constraints.push_back({v, k, 0.0, Ramp{}});
+  }
+  EXPECT_TRUE(pressure_stiffness_is_symmetric(mesh, top, constraints));
+  constraints.pop_back();
+  EXPECT_FALSE(pressure_stiffness_is_symmetric(mesh, top, constraints));
+}
+
+}  // namespace
+}  // namespace plisse
