@@ -371,7 +371,8 @@ Probe read_probe(const Field& field, Reader& reader) {
 SolverSettings read_solver(const Field& field) {
   const FieldMap m = field.map();
   m.check_keys({"scheme", "end_time", "steps", "max_steps", "min_step", "max_step", "growth",
-                "cutback", "easy_iterations", "viscosity", "newton", "stability", "petsc_options"});
+                "cutback", "easy_iterations", "viscosity", "max_augmentations", "newton", "stability",
+                "petsc_options"});
   SolverSettings s;
   s.scheme = m.choice("scheme", s.scheme, kSchemes);
   s.end_time = m.real("end_time", s.end_time, Range::positive());
@@ -383,6 +384,8 @@ SolverSettings read_solver(const Field& field) {
   s.cutback = m.real("cutback", s.cutback, kOpenUnit);
   s.easy_iterations = m.integer("easy_iterations", s.easy_iterations, Range::at_least(1));
   s.viscosity = m.real("viscosity", s.viscosity, Range::non_negative());
+  s.max_augmentations =
+      m.integer("max_augmentations", s.max_augmentations, Range::at_least(0));
   if (const auto f = m.find("petsc_options"); f && !f->is_null()) s.petsc_options = f->text();
   if (s.min_step > s.max_step)
     (m.has("min_step") ? *m.find("min_step") : *m.find("max_step"))

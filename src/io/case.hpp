@@ -157,6 +157,7 @@ struct SolverSettings {
   double cutback = 0.5;        ///< step reduction after a failure, in (0, 1)
   int easy_iterations = 4;     ///< a step is easy when Newton takes at most this many iterations
   double viscosity = 0.0;      ///< viscous stabilisation [MPa s], >= 0
+  int max_augmentations = 20;  ///< multiplier updates per step (augmented Lagrangian contact)
   NewtonSettings newton;
   StabilitySettings stability;
   std::string petsc_options;   ///< extra PETSc options, e.g. "-ksp_type preonly -pc_type lu"

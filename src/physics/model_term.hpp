@@ -45,6 +45,11 @@ class ModelTerm {
   virtual void assemble(double t, std::span<const double> x, std::span<double> residual,
                         TangentSink* tangent) = 0;
 
+  /// Called after Newton converged at state x, before the step is accepted: an augmented-Lagrangian
+  /// term updates its multipliers and returns true when the constraint is not yet met to its
+  /// tolerance (the step is then solved again from x with the new multipliers).
+  virtual bool update_multipliers(std::span<const double> /*x*/) { return false; }
+
   /// A step converged at state x (update history such as glued contact points) / was abandoned.
   virtual void accept_step(std::span<const double> /*x*/) {}
   virtual void reject_step() {}

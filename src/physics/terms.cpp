@@ -1,6 +1,8 @@
 #include "physics/terms.hpp"
 
 #include "physics/body_force.hpp"
+#include "physics/cavity.hpp"
+#include "physics/die_contact.hpp"
 #include "physics/pressure_load.hpp"
 
 namespace plisse {
@@ -20,6 +22,9 @@ std::vector<std::unique_ptr<ModelTerm>> make_terms(const Case& c, const Mesh& me
         break;
     }
   }
+  for (const Cavity& cavity : c.cavities)
+    terms.push_back(make_cavity_term(cavity, mesh, constraints));
+  for (const Die& die : c.dies) terms.push_back(make_die_term(die, c, mesh, constraints));
   return terms;
 }
 

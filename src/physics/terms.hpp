@@ -1,5 +1,5 @@
 #pragma once
-/// The model terms a case asks for (loads; cavities and dies to come).
+/// The model terms a case asks for: its loads, cavities and dies.
 #include <memory>
 #include <vector>
 
@@ -9,7 +9,7 @@
 
 namespace plisse {
 
-/// One term per load of the case, in the case's order. Borrows `mesh`.
+/// One term per load, then per cavity, then per die, in the case's order. Borrows `mesh`.
 std::vector<std::unique_ptr<ModelTerm>> make_terms(const Case& c, const Mesh& mesh,
                                                    const std::vector<ConstrainedComponent>& constraints);
 

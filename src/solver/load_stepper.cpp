@@ -44,17 +44,30 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
     model_.set_time(t_new);
     NewtonResult newton;
     std::string failure;
+    int augmentations = 0;
     try {
-      newton = newton_.solve();
-      if (!newton.converged)
-        failure = newton.status.ok ? "Newton did not converge (" + newton.reason + ")"
-                                   : "element " + std::to_string(newton.status.worst_element) +
-                                         " inverted or its bubble did not converge (min J " +
-                                         std::to_string(newton.status.min_J) + ")";
+      // Newton, then (augmented Lagrangian terms) multiplier updates and re-solves until every
+      // constraint meets its tolerance.
+      while (true) {
+        newton = newton_.solve();
+        result.newton_iterations += newton.iterations;
+        if (!newton.converged) {
+          failure = newton.status.ok ? "Newton did not converge (" + newton.reason + ")"
+                                     : "element " + std::to_string(newton.status.worst_element) +
+                                           " inverted or its bubble did not converge (min J " +
+                                           std::to_string(newton.status.min_J) + ")";
+          break;
+        }
+        if (!model_.update_multipliers()) break;
+        if (++augmentations > settings_.max_augmentations) {
+          failure = "constraints not met after " + std::to_string(settings_.max_augmentations) +
+                    " multiplier updates";
+          break;
+        }
+      }
     } catch (const Error& e) {
       failure = e.what();
     }
-    result.newton_iterations += newton.iterations;
     if (!failure.empty()) {
       model_.restore_converged();
       ++result.cutbacks;

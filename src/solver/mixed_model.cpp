@@ -213,6 +213,12 @@ Mat MixedModel::create_matrix() const {
   return K;
 }
 
+bool MixedModel::update_multipliers() {
+  bool again = false;
+  for (auto& term : terms_) again = term->update_multipliers(state_) || again;
+  return again;
+}
+
 void MixedModel::save_converged() {
   converged_state_ = state_;
   converged_bubble_ = bubble_;

@@ -72,6 +72,10 @@ class MixedModel {
   /// An AIJ matrix with the exact sparsity of the tangent, flagged symmetric.
   Mat create_matrix() const;
 
+  /// Lets every term update its multipliers at the current state; true when any term needs
+  /// another solve of the step (ModelTerm::update_multipliers).
+  bool update_multipliers();
+
   /// Remember / return to the last converged state (state and bubbles).
   void save_converged();
   void restore_converged();
