@@ -123,8 +123,6 @@ std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh) {
   const auto unsupported = [&](const InputPlace& place, const std::string& what) {
     out.emplace_back(place, what + " are not supported by the solver yet");
   };
-  if (!c.cavities.empty()) unsupported(c.cavities.front().place, "cavities");
-  if (!c.dies.empty()) unsupported(c.dies.front().place, "rigid dies");
   if (c.solver.scheme != Scheme::total_lagrangian)
     out.emplace_back(InputPlace{c.path, 0, 0, "solver.scheme"},
                      "only the total-lagrangian scheme is available yet");
@@ -152,6 +150,7 @@ void run_case(const RunOptions& options) {
   std::map<std::string, double> params = c.material.params;
   AnyMaterial material = make_material(c.material.model, params);
   const std::vector<ConstrainedComponent> constraints = collect_constraints(c, mesh);
+  std::vector<std::unique_ptr<ModelTerm>> terms = make_terms(c, mesh, constraints);
 
   RunDirectory dir(out_dir);
   RunLog log(dir.log_txt());
@@ -165,7 +164,7 @@ void run_case(const RunOptions& options) {
   t0 = Clock::now();
   MixedModel model(mesh, material,
                    c.material.exact_incompressibility ? 0.0 : 1.0 / c.material.bulk_modulus,
-                   constraints, make_terms(c, mesh, constraints));
+                   constraints, std::move(terms));
   LoadStepper stepper(model, c.solver);
   const double time_setup = seconds_since(t0);
   {
