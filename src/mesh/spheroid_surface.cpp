@@ -8,6 +8,8 @@
 #include <map>
 #include <numbers>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "core/error.hpp"
 #include "mesh/gmsh_session.hpp"
@@ -115,19 +117,26 @@ SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetr
   SurfaceTriangulation surface;
   try {
     gmsh::model::add("spheroid");
-    // Meridian in the x-y plane (x >= 0), from the south pole (0, -b) over the equator (a, 0) to
-    // the north pole (0, b); from the equator only when y >= 0 is kept. OpenCASCADE wants the
-    // ellipse's x radius strictly larger than its y radius, hence a circle when a = b.
-    const double first = planes[1] ? 0.0 : -0.5 * std::numbers::pi, last = 0.5 * std::numbers::pi;
-    const int meridian = a == b ? gmsh::model::occ::addCircle(0.0, 0.0, 0.0, a, -1, first, last)
-                                : gmsh::model::occ::addEllipse(0.0, 0.0, 0.0, a, b, -1, first, last);
-    // Swept about -y, so that x turns towards +z: x = r cos(phi), z = r sin(phi), phi in
-    // [0, sweep]. Quarter and octant keep x, z >= 0, half z >= 0, full everything.
-    const double sweep = symmetry == Symmetry::full   ? 2.0 * std::numbers::pi
-                         : symmetry == Symmetry::half ? std::numbers::pi
-                                                      : 0.5 * std::numbers::pi;
-    gmsh::vectorpair swept;
-    gmsh::model::occ::revolve({{1, meridian}}, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, sweep, swept);
+    // Patches of at most a quarter meridian swept by a quarter turn, glued by
+    // removeAllDuplicates. (One sweep of the whole meridian is meshed far more slowly: Gmsh
+    // took minutes on a flat airbag whose highly curved rim crosses the parametric domain.)
+    // Meridian arcs in the x-y plane (x >= 0): north (0, b) to equator (a, 0) and, unless
+    // y >= 0 is kept, equator to south. OpenCASCADE wants the ellipse's x radius strictly larger
+    // than its y radius, hence a circle when a = b. Sweeping about -y turns x towards +z:
+    // x = r cos(phi), z = r sin(phi) with phi in [0, pi/2] for quarter and octant, [0, pi] for
+    // half and [0, 2 pi] for full.
+    const int n_sweeps = symmetry == Symmetry::full ? 4 : symmetry == Symmetry::half ? 2 : 1;
+    std::vector<std::pair<double, double>> arcs = {{0.0, 0.5 * std::numbers::pi}};
+    if (!planes[1]) arcs.emplace_back(-0.5 * std::numbers::pi, 0.0);
+    for (const auto& [first, last] : arcs)
+      for (int k = 0; k < n_sweeps; ++k) {
+        const int arc = a == b ? gmsh::model::occ::addCircle(0.0, 0.0, 0.0, a, -1, first, last)
+                               : gmsh::model::occ::addEllipse(0.0, 0.0, 0.0, a, b, -1, first, last);
+        if (k > 0) gmsh::model::occ::rotate({{1, arc}}, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, k * 0.5 * std::numbers::pi);
+        gmsh::vectorpair swept;
+        gmsh::model::occ::revolve({{1, arc}}, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.5 * std::numbers::pi, swept);
+      }
+    if (arcs.size() * static_cast<std::size_t>(n_sweeps) > 1) gmsh::model::occ::removeAllDuplicates();
     gmsh::model::occ::synchronize();
     session.check_internal("spheroid geometry");
     gmsh::option::setNumber("Mesh.MeshSizeMax", h);

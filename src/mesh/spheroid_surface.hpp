@@ -12,8 +12,9 @@ namespace plisse {
 ///   x^2/a^2 + y^2/b^2 + z^2/a^2 = 1     (a: equatorial radius in the x-z plane, b: polar
 ///                                         semi-axis along y; a sphere when a = b)
 /// with target edge length `h` [mm] (smaller where 12 elements per 2 pi radius of curvature need
-/// it), through Gmsh's OpenCASCADE kernel: the meridian ellipse (x >= 0, in the x-y plane) swept
-/// about the y axis over the kept angle, meshed by Gmsh's default 2-D mesher. Nodes are then put exactly on the
+/// it), through Gmsh's OpenCASCADE kernel: quarter arcs of the meridian ellipse (x >= 0, in the
+/// x-y plane) swept about the y axis by quarter turns over the kept part, glued into one
+/// conforming surface and meshed by Gmsh's default 2-D mesher. Nodes are then put exactly on the
 /// surface by radial scaling, p <- p / sqrt(x^2/a^2 + y^2/b^2 + z^2/a^2); nodes on a cut plane
 /// first get that coordinate set to exactly 0 (they are within round-off of it), which the
 /// scaling keeps. Throws Error if Gmsh fails.
