@@ -77,9 +77,9 @@ inline IndentationLevel solve_indentation(int divisions) {
 /// η of the P1/P1 spurious pressure modes measured by inf_sup_test on these meshes: 1.24 to 1.41.
 inline constexpr double kSpuriousModeEta = 1.24;
 
-/// Solves on each mesh, prints the table and asserts (inf_sup.md, IS4): every run completes; η falls
-/// by at least 10 % at each refinement (a spurious mode keeps η = O(1), a resolved field has η -> 0);
-/// on the finest mesh η is below half the smallest η of a spurious mode.
+/// Solves on each mesh, prints the table and asserts (inf_sup.md, IS4): every run completes; η
+/// falls by at least 10 % at each refinement (a spurious mode keeps η = O(1), a resolved field has
+/// η -> 0); on the finest mesh η is below half the smallest η of a spurious mode.
 inline void expect_smooth_pressure(const std::vector<int>& divisions) {
   std::vector<IndentationLevel> levels;
   for (int n : divisions) {

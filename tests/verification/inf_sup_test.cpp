@@ -30,7 +30,7 @@ struct InfSupLevel {
   double beta_mini = 0.0, beta_p1p1 = 0.0;  ///< sqrt of the smallest eigenvalue (0 if negative)
   int small_p1p1 = 0;  ///< P1/P1 eigenvalues below 1e-3 of MINI's smallest: spurious modes
   double beta_p1p1_nonzero = 0.0;  ///< sqrt of the smallest P1/P1 eigenvalue above those
-  double eta_p1p1 = 0.0;  ///< checkerboard indicator (IS3) of the lowest P1/P1 mode
+  double eta_p1p1 = 0.0;           ///< checkerboard indicator (IS3) of the lowest P1/P1 mode
   bool A_positive_definite = false;
 };
 
@@ -66,7 +66,8 @@ InfSupLevel compute_level(int divisions, Support support) {
   InfSupLevel level;
   level.divisions = divisions;
   const SaddlePointBlocks mini_blocks = split_blocks(assemble_mini_tangent(model), model);
-  const SaddlePointBlocks p1p1_blocks = split_blocks(assemble_p1p1_tangent(model, material, 0.0), model);
+  const SaddlePointBlocks p1p1_blocks =
+      split_blocks(assemble_p1p1_tangent(model, material, 0.0), model);
   const SchurSpectrum mini = schur_spectrum(mini_blocks);
   const SchurSpectrum p1p1 = schur_spectrum(p1p1_blocks);
   level.A_positive_definite = mini.A_positive_definite && p1p1.A_positive_definite;
@@ -86,7 +87,8 @@ void expect_stable_mini_and_unstable_p1p1(const std::string& title, Support supp
   std::vector<InfSupLevel> levels;
   for (int n : {2, 4, 8}) {
     levels.push_back(compute_level(n, support));
-    ASSERT_TRUE(levels.back().A_positive_definite) << title << ": A not positive definite, n = " << n;
+    ASSERT_TRUE(levels.back().A_positive_definite)
+        << title << ": A not positive definite, n = " << n;
   }
   std::cout << title << "\n";
   char line[200];

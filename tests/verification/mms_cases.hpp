@@ -15,7 +15,7 @@ namespace plisse::test {
 /// table and asserts the rates between the two finest levels: u L2 >= 1.9, u H1 >= 0.9, p L2 >= 0.9
 /// (optimal: 2, 1, 1), and that every error falls at every refinement.
 inline void expect_optimal_rates(const std::string& title, const MmsProblem& problem,
-                          const std::vector<int>& divisions) {
+                                 const std::vector<int>& divisions) {
   std::vector<MmsLevel> levels;
   for (int n : divisions) {
     levels.push_back(solve_manufactured(problem, n));
@@ -45,8 +45,8 @@ inline MmsProblem exact_incompressible_neo_hookean() {
 inline MmsProblem near_incompressible_mooney_rivlin() {
   MmsProblem problem;
   problem.material = make_material("mooney-rivlin", {{"c1", 0.4}, {"c2", 0.1}});  // mu = 1 MPa
-  problem.inverse_bulk_modulus = 1.0 / 100.0;  // kappa = 100 mu
-  problem.solution.epsilon = 0.02;             // J - 1 up to about 0.06
+  problem.inverse_bulk_modulus = 1.0 / 100.0;                                     // kappa = 100 mu
+  problem.solution.epsilon = 0.02;  // J - 1 up to about 0.06
   return problem;
 }
 

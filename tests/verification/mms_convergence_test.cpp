@@ -4,10 +4,42 @@
 // asymptotic; the expected values are 2 (u in L2), 1 (u in H1) and >= 1 (p in L2).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "verification/mms_cases.hpp"
+#include "verification/simplex_quadrature.hpp"
 
 namespace plisse::test {
 namespace {
+
+TEST(CollapsedQuadrature, IsExactForTheDeclaredDegree) {
+  // Reference simplices: ∫ ξ1^i ξ2^j dA = i! j! / (i + j + 2)!, ∫ ξ1^i ξ2^j ξ3^k dV =
+  // i! j! k! / (i + j + k + 3)!; the rules weigh fractions of the measure (1/2, resp. 1/6).
+  const auto factorial = [](int m) { return std::tgamma(m + 1.0); };
+  for (int n = 2; n <= 4; ++n) {
+    const SimplexRule<2> triangle = collapsed_triangle_rule(n);
+    const SimplexRule<3> tet = collapsed_tet_rule(n);
+    for (int i = 0; i <= 2 * n; ++i)
+      for (int j = 0; i + j <= 2 * n - 2; ++j) {
+        double sum = 0.0;
+        for (std::size_t q = 0; q < triangle.points.size(); ++q)
+          sum += triangle.weights[q] * std::pow(triangle.points[q][1], i) *
+                 std::pow(triangle.points[q][2], j);
+        const double exact = factorial(i) * factorial(j) / factorial(i + j + 2);
+        EXPECT_NEAR(0.5 * sum, exact, 1e-14)
+            << "triangle, n = " << n << ", i = " << i << ", j = " << j;
+        for (int k = 0; i + j + k <= 2 * n - 3; ++k) {
+          double tet_sum = 0.0;
+          for (std::size_t q = 0; q < tet.points.size(); ++q)
+            tet_sum += tet.weights[q] * std::pow(tet.points[q][1], i) *
+                       std::pow(tet.points[q][2], j) * std::pow(tet.points[q][3], k);
+          const double tet_exact =
+              factorial(i) * factorial(j) * factorial(k) / factorial(i + j + k + 3);
+          EXPECT_NEAR(tet_sum / 6.0, tet_exact, 1e-14) << "tet, n = " << n;
+        }
+      }
+  }
+}
 
 TEST(ManufacturedSolution, BodyForceIsMinusDivergenceOfStress) {
   // The chain-rule divergence (mms.md, M7) against central differences of P itself: agreement to
@@ -42,8 +74,8 @@ TEST(ManufacturedSolution, ExactMapIsIsochoric) {
 }
 
 TEST(ManufacturedSolution, ExactIncompressibilityNeoHookeanConvergesOptimally) {
-  expect_optimal_rates("MMS, neo-Hookean, exact incompressibility", exact_incompressible_neo_hookean(),
-                       {4, 8, 16});
+  expect_optimal_rates("MMS, neo-Hookean, exact incompressibility",
+                       exact_incompressible_neo_hookean(), {4, 8, 16});
 }
 
 TEST(ManufacturedSolution, NearIncompressibilityMooneyRivlinConvergesOptimally) {

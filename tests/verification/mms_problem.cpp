@@ -84,7 +84,7 @@ std::vector<double> manufactured_loads(const Mesh& mesh, const MmsProblem& probl
       }
     }
   }
-  // Dead traction t0 = P N on the traction faces (M9), Duffy rule exact for degree 5.
+  // Dead traction t0 = P N on the traction faces (M9), Duffy rule exact for degree 6.
   const SimplexRule<2> face_rule = collapsed_triangle_rule(4);
   for (const TractionFace& face : kTractionFaces) {
     for (int t : mesh.surface_tags.at(face.tag)) {
@@ -192,8 +192,7 @@ MmsLevel solve_manufactured(const MmsProblem& problem, int divisions) {
   level.residual_history = result.residual_history;
   level.converged = result.converged;
   level.errors = compute_errors(mesh, model.state(), s);
-  level.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  level.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return level;
 }
 
@@ -214,10 +213,10 @@ std::string convergence_table(const std::string& title, const std::vector<MmsLev
     const MmsLevel& l = levels[i];
     auto rate = [&](double FieldErrors::*e) { return i == 0 ? 0.0 : observed_rate(levels, i, e); };
     std::snprintf(line, sizeof line,
-                  "%6d %9.5f %7d %4d %11.4e %5.2f %11.4e %5.2f %11.4e %5.2f %7.2f\n",
-                  l.divisions, l.h, l.n_free, l.newton_iterations, l.errors.u_L2,
-                  rate(&FieldErrors::u_L2), l.errors.u_H1, rate(&FieldErrors::u_H1),
-                  l.errors.p_L2, rate(&FieldErrors::p_L2), l.seconds);
+                  "%6d %9.5f %7d %4d %11.4e %5.2f %11.4e %5.2f %11.4e %5.2f %7.2f\n", l.divisions,
+                  l.h, l.n_free, l.newton_iterations, l.errors.u_L2, rate(&FieldErrors::u_L2),
+                  l.errors.u_H1, rate(&FieldErrors::u_H1), l.errors.p_L2, rate(&FieldErrors::p_L2),
+                  l.seconds);
     out << line;
   }
   if (!levels.empty()) {

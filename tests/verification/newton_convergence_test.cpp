@@ -9,7 +9,7 @@
 //
 // Measure: the observed order q_k = log(r_k+1 / r_k) / log(r_k / r_k-1) of consecutive residual
 // norms. It is asserted on the LAST triple whose newest residual is still above round-off:
-//  - earlier triples belong to the global phase (line search, pre-asymptotic), where the order is
+//  - earlier triples belong to the global, pre-asymptotic phase, where the order is
 //    not yet 2 and says nothing about the tangent;
 //  - a residual at round-off is noise (the floating-point residual of the exact discrete solution),
 //    so a triple ending there would under-report the order.
@@ -91,15 +91,18 @@ void expect_quadratic_convergence(const NewtonCase& c) {
     const double order = (k >= 1 && k + 1 < r.size())
                              ? std::log(r[k + 1] / r[k]) / std::log(r[k] / r[k - 1])
                              : std::nan("");
-    std::snprintf(line, sizeof line, "  k = %2zu  |R| = %.3e  |R|/|R0| = %.3e  order(k-1,k,k+1) = %.2f\n",
-                  k, r[k], r[k] / r[0], order);
+    std::snprintf(line, sizeof line,
+                  "  k = %2zu  |R| = %.3e  |R|/|R0| = %.3e  order(k-1,k,k+1) = %.2f\n", k, r[k],
+                  r[k] / r[0], order);
     std::cout << line;
   }
   ASSERT_GT(r.size(), kPlateau + 4) << c.title;
   const double noise = *std::max_element(r.end() - kPlateau, r.end());
   ASSERT_LE(noise, 1e-12 * r.front()) << c.title << ": Newton did not converge";
-  const auto first_below = std::find_if(r.begin(), r.end(), [&](double v) { return v < 1e-8 * r.front(); });
-  ASSERT_GE(first_below - r.begin(), 4) << c.title << ": the start is too close for a meaningful test";
+  const auto first_below =
+      std::find_if(r.begin(), r.end(), [&](double v) { return v < 1e-8 * r.front(); });
+  ASSERT_GE(first_below - r.begin(), 4)
+      << c.title << ": the start is too close for a meaningful test";
   const double floor = 3.0 * noise;
   const std::vector<double> orders = observed_orders(r, floor);
   ASSERT_FALSE(orders.empty()) << c.title << ": no triple above the round-off floor";
@@ -122,8 +125,8 @@ TEST(NewtonConvergence, MooneyRivlinExactIncompressibilityIsQuadratic) {
 }
 
 TEST(NewtonConvergence, MooneyRivlinNearIncompressibilityIsQuadratic) {
-  expect_quadratic_convergence({"Mooney-Rivlin, kappa = 100 mu", "mooney-rivlin",
-                                {{"c1", 0.4}, {"c2", 0.1}}, 1.0 / 100.0});
+  expect_quadratic_convergence(
+      {"Mooney-Rivlin, kappa = 100 mu", "mooney-rivlin", {{"c1", 0.4}, {"c2", 0.1}}, 1.0 / 100.0});
 }
 
 }  // namespace

@@ -18,7 +18,8 @@ std::array<int, mini::kDof> element_equations(const MixedModel& model, int e) {
   std::array<int, mini::kDof> eq;
   const auto& tet = model.mesh().tets[e];
   for (int a = 0; a < mini::kNodes; ++a) {
-    for (int k = 0; k < 3; ++k) eq[mini::dof_u(a, k)] = model.dofs().equation(DofMap::dof(tet[a], k));
+    for (int k = 0; k < 3; ++k)
+      eq[mini::dof_u(a, k)] = model.dofs().equation(DofMap::dof(tet[a], k));
     eq[mini::dof_p(a)] = model.dofs().equation(DofMap::dof(tet[a], 3));
   }
   return eq;
@@ -57,7 +58,8 @@ SparseMatrix assemble_p1p1_tangent(const MixedModel& model, const AnyMaterial& m
           const std::array<int, mini::kDof> eq = element_equations(model, e);
           mini::ElemVec x_e;
           for (int a = 0; a < mini::kNodes; ++a) {
-            for (int k = 0; k < 3; ++k) x_e(mini::dof_u(a, k)) = model.state()[kPerNode * tet[a] + k];
+            for (int k = 0; k < 3; ++k)
+              x_e(mini::dof_u(a, k)) = model.state()[kPerNode * tet[a] + k];
             x_e(mini::dof_p(a)) = model.state()[kPerNode * tet[a] + 3];
           }
           mini::MiniLocalSystem sys;
@@ -103,9 +105,12 @@ SaddlePointBlocks split_blocks(const SparseMatrix& K, const MixedModel& model) {
   for (int col = 0; col < K.outerSize(); ++col)
     for (SparseMatrix::InnerIterator it(K, col); it; ++it) {
       const int i = static_cast<int>(it.row()), j = static_cast<int>(it.col());
-      if (!is_pressure[i] && !is_pressure[j]) a_entries.emplace_back(position[i], position[j], it.value());
-      else if (is_pressure[i] && !is_pressure[j]) blocks.B(position[i], position[j]) = it.value();
-      else if (is_pressure[i] && is_pressure[j]) blocks.C(position[i], position[j]) = -it.value();
+      if (!is_pressure[i] && !is_pressure[j])
+        a_entries.emplace_back(position[i], position[j], it.value());
+      else if (is_pressure[i] && !is_pressure[j])
+        blocks.B(position[i], position[j]) = it.value();
+      else if (is_pressure[i] && is_pressure[j])
+        blocks.C(position[i], position[j]) = -it.value();
     }
   blocks.A.resize(n_u, n_u);
   blocks.A.setFromTriplets(a_entries.begin(), a_entries.end());
@@ -141,7 +146,8 @@ double checkerboard_indicator(const Mesh& mesh, const std::vector<double>& value
   std::set<std::pair<int, int>> edges;
   for (const auto& tet : mesh.tets)
     for (int a = 0; a < 4; ++a)
-      for (int b = a + 1; b < 4; ++b) edges.emplace(std::min(tet[a], tet[b]), std::max(tet[a], tet[b]));
+      for (int b = a + 1; b < 4; ++b)
+        edges.emplace(std::min(tet[a], tet[b]), std::max(tet[a], tet[b]));
   double mean = 0.0;
   for (double v : values) mean += v;
   mean /= static_cast<double>(values.size());

@@ -6,9 +6,10 @@
 ///   triangle:     ξ1 = s,  ξ2 = t (1 - s),                       dA = (1 - s) ds dt
 ///   tetrahedron:  ξ1 = s,  ξ2 = t (1 - s),  ξ3 = w (1 - s)(1 - t), dV = (1 - s)² (1 - t) ds dt dw
 /// [Duffy, SIAM J. Numer. Anal. 19 (1982) 1260; Karniadakis & Sherwin, Spectral/hp Element
-/// Methods, 2nd ed., section 3.2]. With n Gauss-Legendre points per direction the rule is exact for
-/// polynomials of total degree 2n - 3 (the Jacobian takes two of the 2n - 1 degrees of the 1-D
-/// rule), has positive weights and n^d points.
+/// Methods, 2nd ed., section 3.2]. With n Gauss-Legendre points per direction (exact for degree
+/// 2n - 1 in each variable) the rule is exact for polynomials of total degree 2n - 2 on the
+/// triangle and 2n - 3 on the tetrahedron (the Jacobian takes one, resp. two, of those degrees in
+/// s), has positive weights and n^d points.
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -56,7 +57,7 @@ struct SimplexRule {
   std::vector<double> weights;
 };
 
-/// Duffy rule with n Gauss points per direction on the triangle (exact for degree 2n - 3).
+/// Duffy rule with n Gauss points per direction on the triangle (exact for degree 2n - 2).
 inline SimplexRule<2> collapsed_triangle_rule(int n) {
   const GaussLegendre01 g = gauss_legendre_01(n);
   SimplexRule<2> rule;
