@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -41,10 +40,6 @@ std::string number(double v) {
 [[noreturn]] void reject(const std::string& key, const std::string& rule) {
   throw InputError(InputPlace{"", 0, 0, "mesh." + key}, rule);
 }
-
-/// Surface triangles of a triangulation of area `area` with edge length h: an equilateral
-/// triangle has area sqrt(3)/4 h^2.
-double n_triangles(double area, double h) { return area / (std::sqrt(3.0) / 4.0 * h * h); }
 
 int sheet_cells(double length, double h) { return std::max(1, static_cast<int>(std::lround(length / h))); }
 
@@ -131,11 +126,11 @@ double estimate_n_tets(const MeshGenerationSpec& spec) {
     return 6.0 * std::max(1.0, std::round(spec.length / spec.element_size)) *
            std::max(1.0, std::round(spec.width / spec.element_size)) * spec.layers;
   if (spec.kind == "spherical-shell")
-    return 3.0 * spec.layers * n_triangles(f * 4.0 * std::numbers::pi * spec.inner_radius * spec.inner_radius,
-                                           spec.element_size);
+    return 3.0 * spec.layers * f *
+           estimate_spheroid_triangles(spec.inner_radius, spec.inner_radius, spec.element_size);
   if (spec.kind == "airbag")
-    return 3.0 * spec.layers *
-           n_triangles(f * spheroid_area(spec.radius, std::min(spec.radius, spec.height / 2.0)), spec.element_size);
+    return 3.0 * spec.layers * f *
+           estimate_spheroid_triangles(spec.radius, std::min(spec.radius, spec.height / 2.0), spec.element_size);
   return 0.0;
 }
 

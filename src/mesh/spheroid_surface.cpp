@@ -99,6 +99,21 @@ double spheroid_area(double a, double b) {
   return 2.0 * std::numbers::pi * a * a * (1.0 + (1.0 - e2) / e * std::atanh(e));
 }
 
+double estimate_spheroid_triangles(double a, double b, double h) {
+  constexpr int kSteps = 20000;
+  const double dt = std::numbers::pi / kSteps;
+  double n = 0.0;
+  for (int i = 0; i < kSteps; ++i) {
+    const double t = -0.5 * std::numbers::pi + (i + 0.5) * dt;
+    const double q = std::sqrt(a * a * std::sin(t) * std::sin(t) + b * b * std::cos(t) * std::cos(t));
+    // Principal radii of a spheroid of revolution: meridian q^3 / (a b), parallel a q / b.
+    const double rho = std::min(q * q * q / (a * b), a * q / b);
+    const double s = std::min(h, 2.0 * std::numbers::pi * rho / 12.0);
+    n += 2.0 * std::numbers::pi * a * std::cos(t) * q * dt / (std::sqrt(3.0) / 4.0 * s * s);
+  }
+  return n;
+}
+
 double kept_fraction(Symmetry symmetry) {
   switch (symmetry) {
     case Symmetry::full: return 1.0;

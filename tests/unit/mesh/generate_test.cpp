@@ -169,6 +169,10 @@ TEST_P(GenerateShell, ExactLayersPlanesAndVolume) {
   const double exact = kept_fraction(c.symmetry) * 4.0 / 3.0 * std::numbers::pi * (std::pow(R + t, 3) - R * R * R);
   const double deficit = 1.0 - volume / exact;
   EXPECT_GT(deficit, 0.0);
+  // The size estimate behind the 20-million limit ignores the finer elements along the cut
+  // curves, which count on so coarse a patch (octant, h/R = 0.2): within a factor 2 here.
+  EXPECT_GT(estimate_n_tets(spec) / mesh.n_tets(), 0.5);
+  EXPECT_LT(estimate_n_tets(spec) / mesh.n_tets(), 2.0);
   EXPECT_LT(deficit, 0.5 * std::pow(spec.element_size / R, 2)) << "relative volume deficit " << deficit;
   std::cout << "shell " << to_string(c.symmetry) << ": " << mesh.n_tets() << " tets, deficit " << deficit
             << " (h/R)^2 = " << std::pow(spec.element_size / R, 2) << "\n";
@@ -229,6 +233,8 @@ TEST_P(GenerateAirbag, WallCentredOnSpheroidAndVolume) {
   std::cout << "airbag " << to_string(spec.symmetry) << ": " << mesh.n_tets() << " tets, relative error "
             << volume / exact - 1.0 << "\n";
   EXPECT_NEAR(volume / exact, 1.0, 0.25 * std::pow(spec.element_size / c, 2));
+  // The size estimate behind the 20-million limit is within 40 % (curvature refinement included).
+  EXPECT_NEAR(estimate_n_tets(spec) / mesh.n_tets(), 1.0, 0.4);
   EXPECT_GT(min_tet_volume(mesh), 0.0);
   std::vector<std::string> required = {"inner", "outer"};
   expect_clean(mesh, required);
@@ -278,6 +284,14 @@ TEST(GenerateValidation, RejectsBadValuesNamingTheKey) {
   spec.divisions = 200;  // 48 million tetrahedra
   EXPECT_NE(rule_for(spec, &key).find("more than the limit"), std::string::npos);
   EXPECT_EQ(key, "mesh.divisions");
+
+  spec = MeshGenerationSpec{};
+  spec.kind = "airbag";  // rim radius of curvature 1.25 um: Gmsh would refine to 0.7 um there
+  spec.height = 0.5;
+  spec.thickness = 0.002;
+  spec.element_size = 0.25;
+  EXPECT_NE(rule_for(spec, &key).find("more than the limit"), std::string::npos);
+  EXPECT_EQ(key, "mesh.element_size");
 
   spec = MeshGenerationSpec{};
   spec.kind = "sheet";
