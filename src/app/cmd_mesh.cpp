@@ -40,18 +40,21 @@ void run(const MeshKind& kind, MeshCommand& cmd) {
   for (const auto& option : kind.options) {
     std::optional<std::string> violation;
     if (option.real) violation = option.range.violation(cmd.spec.*option.real);
-    if (option.integer) violation = option.range.violation(static_cast<double>(cmd.spec.*option.integer));
+    if (option.integer)
+      violation = option.range.violation(static_cast<double>(cmd.spec.*option.integer));
     if (option.symmetry) {
       const auto symmetry = parse_symmetry(cmd.symmetry);
       if (!symmetry)
-        throw option_error("--" + dashed(option.key),
-                           "must be one of full, half, quarter, octant (got '" + cmd.symmetry + "')");
+        throw option_error(
+            "--" + dashed(option.key),
+            "must be one of full, half, quarter, octant (got '" + cmd.symmetry + "')");
       cmd.spec.*option.symmetry = *symmetry;
     }
     if (violation) throw option_error("--" + dashed(option.key), *violation);
   }
   if (cmd.format != 2 && cmd.format != 4)
-    throw option_error("--format", "must be 2 (Gmsh v2.2) or 4 (Gmsh v4.1) (got " + std::to_string(cmd.format) + ")");
+    throw option_error("--format", "must be 2 (Gmsh v2.2) or 4 (Gmsh v4.1) (got " +
+                                       std::to_string(cmd.format) + ")");
 
   Mesh mesh;
   try {
@@ -63,15 +66,17 @@ void run(const MeshKind& kind, MeshCommand& cmd) {
     throw;
   }
   const MeshReport report = check_mesh(mesh);
-  for (const auto& warning : report.warnings) std::cerr << "plisse mesh: warning: " << warning << '\n';
-  FE_CHECK(report.ok(), "internal error: the generated mesh fails check_mesh: " << report.errors.front());
+  for (const auto& warning : report.warnings)
+    std::cerr << "plisse mesh: warning: " << warning << '\n';
+  FE_CHECK(report.ok(),
+           "internal error: the generated mesh fails check_mesh: " << report.errors.front());
 
   const double version = cmd.format == 2 ? 2.2 : 4.1;
   write_gmsh(mesh, cmd.output, version, cmd.binary);
 
   std::ostringstream line;
-  line << "wrote " << cmd.output << " (Gmsh " << version << (cmd.binary ? " binary" : " ASCII") << "): "
-       << mesh.n_nodes() << " nodes, " << mesh.n_tets() << " tetrahedra; tags:";
+  line << "wrote " << cmd.output << " (Gmsh " << version << (cmd.binary ? " binary" : " ASCII")
+       << "): " << mesh.n_nodes() << " nodes, " << mesh.n_tets() << " tetrahedra; tags:";
   bool first = true;
   for (const auto& [name, triangles] : mesh.surface_tags) {
     line << (first ? " " : ", ") << name << " (" << triangles.size() << " triangles)";
@@ -83,8 +88,9 @@ void run(const MeshKind& kind, MeshCommand& cmd) {
 }  // namespace
 
 void add_mesh_command(CLI::App& app) {
-  auto* mesh = app.add_subcommand(
-      "mesh", "Write a generated mesh: plisse mesh KIND [options] -o FILE.msh (lengths in mm; see docs/meshes.md)");
+  auto* mesh = app.add_subcommand("mesh",
+                                  "Write a generated mesh: plisse mesh KIND [options] -o FILE.msh "
+                                  "(lengths in mm; see docs/meshes.md)");
   mesh->require_subcommand(1);
   for (const MeshKind& kind : mesh_kinds()) {
     auto* sub = mesh->add_subcommand(kind.name, kind.help);
@@ -94,16 +100,19 @@ void add_mesh_command(CLI::App& app) {
       const std::string flag = "--" + dashed(option.key);
       const std::string unit = option.unit == "-" ? "" : " [" + option.unit + "]";
       if (option.real)
-        sub->add_option(flag, cmd->spec.*option.real, option.help + unit + ", " + option.range.describe())
+        sub->add_option(flag, cmd->spec.*option.real,
+                        option.help + unit + ", " + option.range.describe())
             ->capture_default_str();
       else if (option.integer)
-        sub->add_option(flag, cmd->spec.*option.integer, option.help + ", integer " + option.range.describe())
+        sub->add_option(flag, cmd->spec.*option.integer,
+                        option.help + ", integer " + option.range.describe())
             ->capture_default_str();
       else
         sub->add_option(flag, cmd->symmetry, option.help)->capture_default_str();
     }
     sub->add_option("-o,--output", cmd->output, "output file, must end in .msh")->required();
-    sub->add_option("--format", cmd->format, "Gmsh file format: 2 (v2.2) or 4 (v4.1)")->capture_default_str();
+    sub->add_option("--format", cmd->format, "Gmsh file format: 2 (v2.2) or 4 (v4.1)")
+        ->capture_default_str();
     sub->add_flag("--binary", cmd->binary, "write a binary file (default ASCII)");
     sub->callback([&kind, cmd] { run(kind, *cmd); });
   }

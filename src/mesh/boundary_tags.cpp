@@ -13,8 +13,9 @@ void tag_boundary(Mesh& mesh, const std::vector<std::vector<std::string>>& side_
   for (std::size_t i = 0; i < faces.size(); ++i) {
     const int side = side_of(faces[i]);
     FE_CHECK(side >= 0 && static_cast<std::size_t>(side) < side_tags.size(),
-             "internal error: boundary face (" << faces[i].nodes[0] << ", " << faces[i].nodes[1] << ", "
-                                               << faces[i].nodes[2] << ") of a generated mesh is on no known side");
+             "internal error: boundary face (" << faces[i].nodes[0] << ", " << faces[i].nodes[1]
+                                               << ", " << faces[i].nodes[2]
+                                               << ") of a generated mesh is on no known side");
     by_side[static_cast<std::size_t>(side)].push_back(static_cast<int>(i));
   }
   mesh.triangles.clear();
@@ -35,9 +36,10 @@ void orient_generated_tets(Mesh& mesh, const std::string& generator) {
     const auto& n = mesh.tets[static_cast<std::size_t>(t)];
     double longest = 0.0;
     for (const auto& e : kTetEdges)
-      longest = std::max(longest, (mesh.nodes[static_cast<std::size_t>(n[static_cast<std::size_t>(e[0])])] -
-                                   mesh.nodes[static_cast<std::size_t>(n[static_cast<std::size_t>(e[1])])])
-                                      .norm());
+      longest = std::max(longest,
+                         (mesh.nodes[static_cast<std::size_t>(n[static_cast<std::size_t>(e[0])])] -
+                          mesh.nodes[static_cast<std::size_t>(n[static_cast<std::size_t>(e[1])])])
+                             .norm());
     const double volume = tet_signed_volume(mesh, t);
     FE_CHECK(std::abs(volume) > 1e-12 * longest * longest * longest,
              generator << ": generated tetrahedron " << t << " is degenerate (volume " << volume

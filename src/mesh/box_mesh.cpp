@@ -37,8 +37,8 @@ Mesh make_box_mesh(const Vec3d& extent, const std::array<int, 3>& cells) {
   orient_generated_tets(mesh, "box mesh");
 
   enum Side { kLeft, kRight, kFront, kBack, kBottom, kTop };
-  const std::vector<std::vector<std::string>> side_tags = {{"left", "sym_x"}, {"right"}, {"front", "sym_y"},
-                                                           {"back"},          {"bottom", "sym_z"}, {"top"}};
+  const std::vector<std::vector<std::string>> side_tags = {
+      {"left", "sym_x"}, {"right"}, {"front", "sym_y"}, {"back"}, {"bottom", "sym_z"}, {"top"}};
   tag_boundary(mesh, side_tags, [&](const BoundaryFace& f) {
     auto all = [&](int axis, double value) {
       for (int n : f.nodes)

@@ -16,18 +16,26 @@ using Spec = MeshGenerationSpec;
 
 // Aggregate initialisation (not member assignment: GCC 12 reports a false -Wrestrict on
 // assigning short literals to std::string members here).
-MeshOption real_option(std::string key, double Spec::*member, std::string unit, Range range, std::string help) {
-  return MeshOption{std::move(key), std::move(unit), std::move(help), member, nullptr, nullptr, range};
+MeshOption real_option(std::string key, double Spec::*member, std::string unit, Range range,
+                       std::string help) {
+  return MeshOption{std::move(key), std::move(unit), std::move(help), member, nullptr, nullptr,
+                    range};
 }
 
 MeshOption integer_option(std::string key, int Spec::*member, Range range, std::string help) {
-  return MeshOption{std::move(key), std::string("-"), std::move(help), nullptr, member, nullptr, range};
+  return MeshOption{std::move(key), std::string("-"), std::move(help), nullptr, member, nullptr,
+                    range};
 }
 
 MeshOption symmetry_option() {
-  return MeshOption{"symmetry", "-",
-                    "part meshed: full | half (z >= 0) | quarter (x >= 0, z >= 0) | octant (x, y, z >= 0)",
-                    nullptr, nullptr, &Spec::symmetry, Range::any()};
+  return MeshOption{
+      "symmetry",
+      "-",
+      "part meshed: full | half (z >= 0) | quarter (x >= 0, z >= 0) | octant (x, y, z >= 0)",
+      nullptr,
+      nullptr,
+      &Spec::symmetry,
+      Range::any()};
 }
 
 std::string number(double v) {
@@ -41,7 +49,9 @@ std::string number(double v) {
   throw InputError(InputPlace{"", 0, 0, "mesh." + key}, rule);
 }
 
-int sheet_cells(double length, double h) { return std::max(1, static_cast<int>(std::lround(length / h))); }
+int sheet_cells(double length, double h) {
+  return std::max(1, static_cast<int>(std::lround(length / h)));
+}
 
 /// r_j (or s_j): `first + j (last - first) / layers`, exactly `last` for j = layers.
 double layer_value(double first, double last, int j, int layers) {
@@ -58,12 +68,15 @@ const std::vector<MeshKind>& mesh_kinds() {
     const auto layers_help = "tetrahedra through the thickness (exactly)";
     std::vector<MeshKind> k;
     k.push_back({"cube",
-                 "cube [0, edge]^3, structured (6 tetrahedra per cell); tags left/right (x), front/back (y), "
+                 "cube [0, edge]^3, structured (6 tetrahedra per cell); tags left/right (x), "
+                 "front/back (y), "
                  "bottom/top (z), sym_x = left, sym_y = front, sym_z = bottom",
                  {real_option("edge", &Spec::edge, "mm", size, "edge length"),
-                  integer_option("divisions", &Spec::divisions, Range::closed(1, 200), "element divisions per edge")}});
+                  integer_option("divisions", &Spec::divisions, Range::closed(1, 200),
+                                 "element divisions per edge")}});
     k.push_back({"spherical-shell",
-                 "hollow sphere, inner radius R, layers of prisms cut into tetrahedra; tags inner, outer and "
+                 "hollow sphere, inner radius R, layers of prisms cut into tetrahedra; tags inner, "
+                 "outer and "
                  "sym_x/sym_y/sym_z on the cut planes",
                  {real_option("inner_radius", &Spec::inner_radius, "mm", size, "inner radius R"),
                   real_option("thickness", &Spec::thickness, "mm", size, thickness_help),
@@ -71,25 +84,29 @@ const std::vector<MeshKind>& mesh_kinds() {
                   real_option("element_size", &Spec::element_size, "mm", size,
                               "target element edge on the inner surface (<= inner_radius)"),
                   symmetry_option()}});
-    k.push_back({"airbag",
-                 "round airbag: closed oblate shell, mid-surface x^2/r^2 + (2y/height)^2 + z^2/r^2 = 1, wall "
-                 "centred on it; tags inner, outer and sym_x/sym_y/sym_z on the cut planes",
-                 {real_option("radius", &Spec::radius, "mm", size, "equatorial radius of the mid-surface (x-z plane)"),
-                  real_option("height", &Spec::height, "mm", size,
-                              "total height of the mid-surface along y (<= 2 radius)"),
-                  real_option("thickness", &Spec::thickness, "mm", size,
-                              "wall thickness (< 2 (height/2)^2 / radius, the rim's curvature limit)"),
-                  integer_option("layers", &Spec::layers, layers, layers_help),
-                  real_option("element_size", &Spec::element_size, "mm", size,
-                              "target element edge on the mid-surface (<= height/2)"),
-                  symmetry_option()}});
-    k.push_back({"sheet",
-                 "flat sheet [0, length] x [0, width] x [0, thickness], structured; tags as the cube",
-                 {real_option("length", &Spec::length, "mm", size, "extent along x"),
-                  real_option("width", &Spec::width, "mm", size, "extent along y"),
-                  real_option("thickness", &Spec::thickness, "mm", size, "extent along z"),
-                  integer_option("layers", &Spec::layers, layers, layers_help),
-                  real_option("element_size", &Spec::element_size, "mm", size, "in-plane element size")}});
+    k.push_back(
+        {"airbag",
+         "round airbag: closed oblate shell, mid-surface x^2/r^2 + (2y/height)^2 + z^2/r^2 = 1, "
+         "wall "
+         "centred on it; tags inner, outer and sym_x/sym_y/sym_z on the cut planes",
+         {real_option("radius", &Spec::radius, "mm", size,
+                      "equatorial radius of the mid-surface (x-z plane)"),
+          real_option("height", &Spec::height, "mm", size,
+                      "total height of the mid-surface along y (<= 2 radius)"),
+          real_option("thickness", &Spec::thickness, "mm", size,
+                      "wall thickness (< 2 (height/2)^2 / radius, the rim's curvature limit)"),
+          integer_option("layers", &Spec::layers, layers, layers_help),
+          real_option("element_size", &Spec::element_size, "mm", size,
+                      "target element edge on the mid-surface (<= height/2)"),
+          symmetry_option()}});
+    k.push_back(
+        {"sheet",
+         "flat sheet [0, length] x [0, width] x [0, thickness], structured; tags as the cube",
+         {real_option("length", &Spec::length, "mm", size, "extent along x"),
+          real_option("width", &Spec::width, "mm", size, "extent along y"),
+          real_option("thickness", &Spec::thickness, "mm", size, "extent along z"),
+          integer_option("layers", &Spec::layers, layers, layers_help),
+          real_option("element_size", &Spec::element_size, "mm", size, "in-plane element size")}});
     return k;
   }();
   return kinds;
@@ -111,10 +128,14 @@ std::optional<Symmetry> parse_symmetry(const std::string& text) {
 
 std::string to_string(Symmetry s) {
   switch (s) {
-    case Symmetry::full: return "full";
-    case Symmetry::half: return "half";
-    case Symmetry::quarter: return "quarter";
-    case Symmetry::octant: return "octant";
+    case Symmetry::full:
+      return "full";
+    case Symmetry::half:
+      return "half";
+    case Symmetry::quarter:
+      return "quarter";
+    case Symmetry::octant:
+      return "octant";
   }
   return "full";
 }
@@ -130,7 +151,8 @@ double estimate_n_tets(const MeshGenerationSpec& spec) {
            estimate_spheroid_triangles(spec.inner_radius, spec.inner_radius, spec.element_size);
   if (spec.kind == "airbag")
     return 3.0 * spec.layers * f *
-           estimate_spheroid_triangles(spec.radius, std::min(spec.radius, spec.height / 2.0), spec.element_size);
+           estimate_spheroid_triangles(spec.radius, std::min(spec.radius, spec.height / 2.0),
+                                       spec.element_size);
   return 0.0;
 }
 
@@ -144,7 +166,8 @@ void validate_mesh_spec(const MeshGenerationSpec& spec) {
   for (const auto& option : kind->options) {
     std::optional<std::string> violation;
     if (option.real) violation = option.range.violation(spec.*option.real);
-    if (option.integer) violation = option.range.violation(static_cast<double>(spec.*option.integer));
+    if (option.integer)
+      violation = option.range.violation(static_cast<double>(spec.*option.integer));
     if (violation) reject(option.key, *violation);
   }
   if (spec.kind == "spherical-shell" && spec.element_size > spec.inner_radius)
@@ -153,17 +176,20 @@ void validate_mesh_spec(const MeshGenerationSpec& spec) {
   if (spec.kind == "airbag") {
     const double a = spec.radius, c = spec.height / 2.0;
     if (c > a)
-      reject("height", "must be <= 2 radius = " + number(2.0 * a) + " mm: the airbag is an oblate shell (got " +
-                           number(spec.height) + ")");
+      reject("height", "must be <= 2 radius = " + number(2.0 * a) +
+                           " mm: the airbag is an oblate shell (got " + number(spec.height) + ")");
     // Offsetting by t/2 inwards folds the wall where t/2 reaches the smallest radius of curvature
     // of the mid-surface, c^2/a (meridian curvature at the rim of an oblate spheroid).
     const double limit = 2.0 * c * c / a;
     if (!(spec.thickness < limit))
-      reject("thickness", "must be < 2 (height/2)^2 / radius = " + number(limit) +
-                              " mm, twice the smallest radius of curvature of the mid-surface (at the rim); "
-                              "a thicker wall folds over itself (got " + number(spec.thickness) + ")");
+      reject("thickness",
+             "must be < 2 (height/2)^2 / radius = " + number(limit) +
+                 " mm, twice the smallest radius of curvature of the mid-surface (at the rim); "
+                 "a thicker wall folds over itself (got " +
+                 number(spec.thickness) + ")");
     if (spec.element_size > c)
-      reject("element_size", "must be <= height/2 = " + number(c) + " mm (got " + number(spec.element_size) + ")");
+      reject("element_size",
+             "must be <= height/2 = " + number(c) + " mm (got " + number(spec.element_size) + ")");
   }
   const double n = estimate_n_tets(spec);
   if (n > kMaxGeneratedTets) {
@@ -176,11 +202,12 @@ void validate_mesh_spec(const MeshGenerationSpec& spec) {
 Mesh generate_mesh(const MeshGenerationSpec& spec) {
   validate_mesh_spec(spec);
   if (spec.kind == "cube")
-    return make_box_mesh(Vec3d(spec.edge, spec.edge, spec.edge), {spec.divisions, spec.divisions, spec.divisions});
+    return make_box_mesh(Vec3d(spec.edge, spec.edge, spec.edge),
+                         {spec.divisions, spec.divisions, spec.divisions});
   if (spec.kind == "sheet")
     return make_box_mesh(Vec3d(spec.length, spec.width, spec.thickness),
-                         {sheet_cells(spec.length, spec.element_size), sheet_cells(spec.width, spec.element_size),
-                          spec.layers});
+                         {sheet_cells(spec.length, spec.element_size),
+                          sheet_cells(spec.width, spec.element_size), spec.layers});
   if (spec.kind == "spherical-shell") {
     const double R = spec.inner_radius;
     const auto surface = mesh_spheroid_surface(R, R, spec.element_size, spec.symmetry);
@@ -189,7 +216,8 @@ Mesh generate_mesh(const MeshGenerationSpec& spec) {
     for (const auto& p : surface.nodes) direction.push_back(p / p.norm());
     // Node k of layer j at radius r_j = R + j t / layers along the k-th direction.
     return make_layered_shell(surface, spec.layers, spec.symmetry, [&](int k, int j) {
-      return Vec3d(layer_value(R, R + spec.thickness, j, spec.layers) * direction[static_cast<std::size_t>(k)]);
+      return Vec3d(layer_value(R, R + spec.thickness, j, spec.layers) *
+                   direction[static_cast<std::size_t>(k)]);
     });
   }
   // airbag: mid-surface x^2/a^2 + y^2/c^2 + z^2/a^2 = 1, wall offset along the unit normal

@@ -23,8 +23,8 @@ enum class Symmetry { full, half, quarter, octant };
 struct MeshGenerationSpec {
   std::string kind;  ///< "cube" | "spherical-shell" | "airbag" | "sheet"
   // cube: [0, edge]^3
-  double edge = 5.0;   ///< [mm]
-  int divisions = 4;   ///< element divisions per edge
+  double edge = 5.0;  ///< [mm]
+  int divisions = 4;  ///< element divisions per edge
   // spherical-shell: inner radius, wall thickness
   double inner_radius = 10.0;  ///< [mm]
   // airbag: oblate closed shell, equatorial radius and total height of the mid-surface
@@ -34,9 +34,9 @@ struct MeshGenerationSpec {
   double length = 50.0;  ///< [mm]
   double width = 50.0;   ///< [mm]
   // shared by shell, airbag, sheet
-  double thickness = 1.0;     ///< wall/sheet thickness [mm]
-  int layers = 3;             ///< tetrahedra through the thickness (exactly)
-  double element_size = 1.0;  ///< target in-surface element size [mm]
+  double thickness = 1.0;              ///< wall/sheet thickness [mm]
+  int layers = 3;                      ///< tetrahedra through the thickness (exactly)
+  double element_size = 1.0;           ///< target in-surface element size [mm]
   Symmetry symmetry = Symmetry::full;  ///< shell and airbag only
 };
 

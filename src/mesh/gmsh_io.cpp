@@ -35,7 +35,8 @@ InputError file_error(const std::string& path, const std::string& rule) {
 
 /// Hash of a small array of node indices (for duplicate detection).
 struct ArrayHash {
-  template <std::size_t N> std::size_t operator()(const std::array<int, N>& a) const {
+  template <std::size_t N>
+  std::size_t operator()(const std::array<int, N>& a) const {
     std::size_t h = 1469598103934665603ull;
     for (int v : a) h = (h ^ static_cast<std::size_t>(v)) * 1099511628211ull;
     return h;
@@ -44,14 +45,16 @@ struct ArrayHash {
 
 /// Elements of one Gmsh type read from the whole model, in increasing element tag, with
 /// repeated elements (same corner set) merged.
-template <int NCorner, int NNode> struct ElementBlock {
-  std::vector<std::array<int, NNode>> nodes;                 ///< corners first, Gmsh order
-  std::unordered_map<std::size_t, int> index_of_tag;         ///< Gmsh element tag -> index
+template <int NCorner, int NNode>
+struct ElementBlock {
+  std::vector<std::array<int, NNode>> nodes;          ///< corners first, Gmsh order
+  std::unordered_map<std::size_t, int> index_of_tag;  ///< Gmsh element tag -> index
   int n_duplicates = 0;
 };
 
 template <int NCorner, int NNode>
-ElementBlock<NCorner, NNode> read_block(int type, const std::unordered_map<std::size_t, int>& node_index,
+ElementBlock<NCorner, NNode> read_block(int type,
+                                        const std::unordered_map<std::size_t, int>& node_index,
                                         const std::string& path) {
   ElementBlock<NCorner, NNode> block;
   std::vector<std::size_t> tags, node_tags;
@@ -60,7 +63,8 @@ ElementBlock<NCorner, NNode> read_block(int type, const std::unordered_map<std::
     throw file_error(path, "inconsistent element data for " + element_type_name(type));
   std::vector<std::size_t> order(tags.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tags[a] < tags[b]; });
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return tags[a] < tags[b]; });
   std::unordered_map<std::array<int, NCorner>, int, ArrayHash> by_corners;
   by_corners.reserve(tags.size());
   block.index_of_tag.reserve(tags.size());
@@ -120,7 +124,8 @@ int orient_triangles_outward(Mesh& mesh) {
     if (same) continue;
     std::swap(tri[1], tri[2]);
     // Corners (0, 1, 2) -> (0, 2, 1): edges (01, 12, 20) become (02, 21, 10) = old (2, 1, 0).
-    if (!mesh.triangle_edge_nodes.empty()) std::swap(mesh.triangle_edge_nodes[i][0], mesh.triangle_edge_nodes[i][2]);
+    if (!mesh.triangle_edge_nodes.empty())
+      std::swap(mesh.triangle_edge_nodes[i][0], mesh.triangle_edge_nodes[i][2]);
     ++n_flipped;
   }
   return n_flipped;
@@ -134,18 +139,21 @@ Mesh read_model(const std::string& path, GmshReadInfo& info) {
   gmsh::model::mesh::getElementTypes(types2, 2, -1);
   for (int type : types3)
     if (type != kTet4 && type != kTet10)
-      throw file_error(path, "unsupported volume element type '" + element_type_name(type) + "' (Gmsh type " +
-                                 std::to_string(type) +
-                                 "): plisse reads tetrahedra only (4 or 10 nodes); re-mesh the volume with "
-                                 "tetrahedra");
+      throw file_error(
+          path, "unsupported volume element type '" + element_type_name(type) + "' (Gmsh type " +
+                    std::to_string(type) +
+                    "): plisse reads tetrahedra only (4 or 10 nodes); re-mesh the volume with "
+                    "tetrahedra");
   for (int type : types2)
     if (type != kTri3 && type != kTri6)
-      throw file_error(path, "unsupported surface element type '" + element_type_name(type) + "' (Gmsh type " +
-                                 std::to_string(type) + "): boundary elements must be triangles (3 or 6 nodes)");
+      throw file_error(path, "unsupported surface element type '" + element_type_name(type) +
+                                 "' (Gmsh type " + std::to_string(type) +
+                                 "): boundary elements must be triangles (3 or 6 nodes)");
   const bool has4 = std::count(types3.begin(), types3.end(), kTet4) > 0;
   const bool has10 = std::count(types3.begin(), types3.end(), kTet10) > 0;
   if (!has4 && !has10) throw file_error(path, "the file contains no tetrahedra");
-  if (has4 && has10) throw file_error(path, "the file mixes 4-node and 10-node tetrahedra; use one order");
+  if (has4 && has10)
+    throw file_error(path, "the file mixes 4-node and 10-node tetrahedra; use one order");
   const bool has_tri6 = std::count(types2.begin(), types2.end(), kTri6) > 0;
   const bool has_tri3 = std::count(types2.begin(), types2.end(), kTri3) > 0;
   if (has_tri6 && (has4 || has_tri3))
@@ -157,7 +165,8 @@ Mesh read_model(const std::string& path, GmshReadInfo& info) {
   gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
   std::vector<std::size_t> order(node_tags.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return node_tags[a] < node_tags[b]; });
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return node_tags[a] < node_tags[b]; });
   std::unordered_map<std::size_t, int> node_index;
   node_index.reserve(node_tags.size());
   mesh.nodes.reserve(node_tags.size());
@@ -209,10 +218,12 @@ Mesh read_model(const std::string& path, GmshReadInfo& info) {
     for (const auto& tri : mesh.triangles) {
       std::array<int, 3> edge{};
       for (int e = 0; e < 3; ++e) {
-        const int a = tri[static_cast<std::size_t>(e)], b = tri[static_cast<std::size_t>((e + 1) % 3)];
+        const int a = tri[static_cast<std::size_t>(e)],
+                  b = tri[static_cast<std::size_t>((e + 1) % 3)];
         const auto it = mid.find({std::min(a, b), std::max(a, b)});
         if (it == mid.end())
-          throw file_error(path, "a 3-node triangle on a 10-node tetrahedral mesh is not on a tetrahedron edge");
+          throw file_error(
+              path, "a 3-node triangle on a 10-node tetrahedral mesh is not on a tetrahedron edge");
         edge[static_cast<std::size_t>(e)] = it->second;
       }
       mesh.triangle_edge_nodes.push_back(edge);
@@ -252,13 +263,13 @@ Mesh read_model(const std::string& path, GmshReadInfo& info) {
 
 /// Per element: the indices (into `names`) of the tags containing it, and the tag names.
 struct Signatures {
-  std::vector<int> of_element;                 ///< signature id per element
-  std::vector<std::vector<int>> name_ids;      ///< per signature id: sorted name indices
+  std::vector<int> of_element;             ///< signature id per element
+  std::vector<std::vector<int>> name_ids;  ///< per signature id: sorted name indices
   std::vector<std::string> names;
 };
 
-Signatures compute_signatures(const std::map<std::string, std::vector<int>>& tags, std::size_t n_elements,
-                              const char* what) {
+Signatures compute_signatures(const std::map<std::string, std::vector<int>>& tags,
+                              std::size_t n_elements, const char* what) {
   Signatures s;
   std::vector<std::vector<int>> per_element(n_elements);
   for (const auto& [name, indices] : tags) {
@@ -310,7 +321,8 @@ void add_groups(int dim, const Signatures& s, const std::vector<Run>& runs, bool
     std::vector<int> entities;
     for (const auto& run : runs) {
       const auto& sig = s.name_ids[static_cast<std::size_t>(run.signature)];
-      if (std::binary_search(sig.begin(), sig.end(), static_cast<int>(id))) entities.push_back(run.entity);
+      if (std::binary_search(sig.begin(), sig.end(), static_cast<int>(id)))
+        entities.push_back(run.entity);
     }
     if (entities.empty()) continue;
     const int group = gmsh::model::addPhysicalGroup(dim, entities);
@@ -326,7 +338,8 @@ void add_groups(int dim, const Signatures& s, const std::vector<Run>& runs, bool
 }
 
 bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 }  // namespace
@@ -360,27 +373,35 @@ Mesh read_gmsh(const std::string& path, GmshReadInfo& info) {
 
 void write_gmsh(const Mesh& mesh, const std::string& path, double version, bool binary) {
   if (!ends_with(path, ".msh"))
-    throw file_error(path, "the mesh file name must end in .msh (Gmsh picks the format from the extension)");
+    throw file_error(
+        path, "the mesh file name must end in .msh (Gmsh picks the format from the extension)");
   const bool v2 = version == 2.2;
   FE_CHECK(v2 || version == 4.1, "write_gmsh: version must be 2.2 or 4.1 (got " << version << ")");
   FE_CHECK(!mesh.tets.empty(), "write_gmsh: the mesh has no tetrahedra");
   const bool second = mesh.order() == 2;
-  FE_CHECK(!second || mesh.tet_edge_nodes.size() == mesh.tets.size(), "write_gmsh: tet_edge_nodes size");
+  FE_CHECK(!second || mesh.tet_edge_nodes.size() == mesh.tets.size(),
+           "write_gmsh: tet_edge_nodes size");
   FE_CHECK(!second || mesh.triangle_edge_nodes.size() == mesh.triangles.size(),
            "write_gmsh: triangle_edge_nodes size");
   const auto n_nodes = static_cast<std::size_t>(mesh.n_nodes());
   std::vector<char> used(n_nodes, 0);
   auto use = [&](int node) {
-    FE_CHECK(node >= 0 && static_cast<std::size_t>(node) < n_nodes, "write_gmsh: node index " << node << " out of range");
+    FE_CHECK(node >= 0 && static_cast<std::size_t>(node) < n_nodes,
+             "write_gmsh: node index " << node << " out of range");
     used[static_cast<std::size_t>(node)] = 1;
   };
-  for (const auto& t : mesh.tets) for (int n : t) use(n);
-  for (const auto& t : mesh.tet_edge_nodes) for (int n : t) use(n);
-  for (const auto& t : mesh.triangles) for (int n : t) use(n);
-  for (const auto& t : mesh.triangle_edge_nodes) for (int n : t) use(n);
+  for (const auto& t : mesh.tets)
+    for (int n : t) use(n);
+  for (const auto& t : mesh.tet_edge_nodes)
+    for (int n : t) use(n);
+  for (const auto& t : mesh.triangles)
+    for (int n : t) use(n);
+  for (const auto& t : mesh.triangle_edge_nodes)
+    for (int n : t) use(n);
 
   const Signatures tet_sig = compute_signatures(mesh.volume_tags, mesh.tets.size(), "tetrahedron");
-  const Signatures tri_sig = compute_signatures(mesh.surface_tags, mesh.triangles.size(), "triangle");
+  const Signatures tri_sig =
+      compute_signatures(mesh.surface_tags, mesh.triangles.size(), "triangle");
 
   GmshSession session;
   try {
@@ -404,7 +425,8 @@ void write_gmsh(const Mesh& mesh, const std::string& path, double version, bool 
       for (std::size_t e = run.begin; e < run.end; ++e) {
         tags.push_back(next_tag++);
         for (int n : mesh.tets[e]) nodes.push_back(static_cast<std::size_t>(n) + 1);
-        if (second) for (int n : mesh.tet_edge_nodes[e]) nodes.push_back(static_cast<std::size_t>(n) + 1);
+        if (second)
+          for (int n : mesh.tet_edge_nodes[e]) nodes.push_back(static_cast<std::size_t>(n) + 1);
       }
       gmsh::model::mesh::addElementsByType(run.entity, second ? kTet10 : kTet4, tags, nodes);
     }
@@ -413,7 +435,9 @@ void write_gmsh(const Mesh& mesh, const std::string& path, double version, bool 
       for (std::size_t e = run.begin; e < run.end; ++e) {
         tags.push_back(next_tag++);
         for (int n : mesh.triangles[e]) nodes.push_back(static_cast<std::size_t>(n) + 1);
-        if (second) for (int n : mesh.triangle_edge_nodes[e]) nodes.push_back(static_cast<std::size_t>(n) + 1);
+        if (second)
+          for (int n : mesh.triangle_edge_nodes[e])
+            nodes.push_back(static_cast<std::size_t>(n) + 1);
       }
       gmsh::model::mesh::addElementsByType(run.entity, second ? kTri6 : kTri3, tags, nodes);
     }

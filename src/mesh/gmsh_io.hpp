@@ -26,9 +26,9 @@ inline constexpr const char* kUntaggedGroupName = "plisse:untagged";
 
 /// What `read_gmsh` normalised (for log messages).
 struct GmshReadInfo {
-  int n_flipped_tets = 0;           ///< tetrahedra renumbered to positive orientation
-  int n_flipped_triangles = 0;      ///< boundary triangles turned to the outward orientation
-  int n_duplicate_elements = 0;     ///< repeated tetrahedra/triangles merged
+  int n_flipped_tets = 0;        ///< tetrahedra renumbered to positive orientation
+  int n_flipped_triangles = 0;   ///< boundary triangles turned to the outward orientation
+  int n_duplicate_elements = 0;  ///< repeated tetrahedra/triangles merged
 };
 
 /// Reads a tetrahedral mesh. Physical groups of dimension 2 become surface tags, of dimension 3
@@ -44,6 +44,7 @@ Mesh read_gmsh(const std::string& path, GmshReadInfo& info);
 /// Round trip through `read_gmsh`: nodes, tetrahedra, triangles and non-empty tags come back
 /// identical, coordinates bit for bit in binary files and to Gmsh's 16 significant digits in
 /// ASCII files. Empty tags are not written (Gmsh stores no empty physical group).
-void write_gmsh(const Mesh& mesh, const std::string& path, double version = 4.1, bool binary = false);
+void write_gmsh(const Mesh& mesh, const std::string& path, double version = 4.1,
+                bool binary = false);
 
 }  // namespace plisse

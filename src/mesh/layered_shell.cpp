@@ -9,10 +9,14 @@ namespace plisse {
 
 std::array<bool, 3> cut_planes(Symmetry symmetry) {
   switch (symmetry) {
-    case Symmetry::full: return {false, false, false};
-    case Symmetry::half: return {false, false, true};
-    case Symmetry::quarter: return {true, false, true};
-    case Symmetry::octant: return {true, true, true};
+    case Symmetry::full:
+      return {false, false, false};
+    case Symmetry::half:
+      return {false, false, true};
+    case Symmetry::quarter:
+      return {true, false, true};
+    case Symmetry::octant:
+      return {true, true, true};
   }
   return {false, false, false};
 }
@@ -38,11 +42,13 @@ Mesh make_layered_shell(const SurfaceTriangulation& surface, int layers, Symmetr
   orient_generated_tets(mesh, "layered shell");
 
   const auto planes = cut_planes(symmetry);
-  const std::vector<std::vector<std::string>> side_tags = {{"inner"}, {"outer"}, {"sym_x"}, {"sym_y"}, {"sym_z"}};
+  const std::vector<std::vector<std::string>> side_tags = {
+      {"inner"}, {"outer"}, {"sym_x"}, {"sym_y"}, {"sym_z"}};
   tag_boundary(mesh, side_tags, [&](const BoundaryFace& f) {
     auto layer = [&](int node) { return node / n; };
     if (layer(f.nodes[0]) == 0 && layer(f.nodes[1]) == 0 && layer(f.nodes[2]) == 0) return 0;
-    if (layer(f.nodes[0]) == layers && layer(f.nodes[1]) == layers && layer(f.nodes[2]) == layers) return 1;
+    if (layer(f.nodes[0]) == layers && layer(f.nodes[1]) == layers && layer(f.nodes[2]) == layers)
+      return 1;
     for (int axis = 0; axis < 3; ++axis) {
       if (!planes[static_cast<std::size_t>(axis)]) continue;
       const bool on_plane = std::all_of(f.nodes.begin(), f.nodes.end(), [&](int node) {
@@ -54,7 +60,8 @@ Mesh make_layered_shell(const SurfaceTriangulation& surface, int layers, Symmetr
   });
   // Symmetry tags of planes the symmetry does not cut would be empty: drop them.
   for (int axis = 0; axis < 3; ++axis)
-    if (!planes[static_cast<std::size_t>(axis)]) mesh.surface_tags.erase(side_tags[static_cast<std::size_t>(2 + axis)][0]);
+    if (!planes[static_cast<std::size_t>(axis)])
+      mesh.surface_tags.erase(side_tags[static_cast<std::size_t>(2 + axis)][0]);
   return mesh;
 }
 

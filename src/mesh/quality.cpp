@@ -17,7 +17,8 @@ constexpr int kMaxMessages = 10;
 /// Collects messages of one kind, keeping the first kMaxMessages and counting the rest.
 class MessageList {
  public:
-  MessageList(std::vector<std::string>& out, std::string summary) : out_(out), summary_(std::move(summary)) {}
+  MessageList(std::vector<std::string>& out, std::string summary)
+      : out_(out), summary_(std::move(summary)) {}
   ~MessageList() {
     if (count_ > kMaxMessages)
       out_.push_back("... and " + std::to_string(count_ - kMaxMessages) + " more " + summary_);
@@ -46,7 +47,8 @@ std::string number(double v) {
 double aspect_ratio(const std::array<Vec3d, 4>& x, double volume) {
   double longest = 0.0;
   for (const auto& e : kTetEdges)
-    longest = std::max(longest, (x[static_cast<std::size_t>(e[0])] - x[static_cast<std::size_t>(e[1])]).norm());
+    longest = std::max(
+        longest, (x[static_cast<std::size_t>(e[0])] - x[static_cast<std::size_t>(e[1])]).norm());
   double area = 0.0;
   for (const auto& f : kTetFaces)
     area += 0.5 * (x[static_cast<std::size_t>(f[1])] - x[static_cast<std::size_t>(f[0])])
@@ -57,13 +59,13 @@ double aspect_ratio(const std::array<Vec3d, 4>& x, double volume) {
   return longest / inradius / (2.0 * std::sqrt(6.0));
 }
 
-void check_tag_indices(const std::map<std::string, std::vector<int>>& tags, std::size_t n, const char* kind,
-                       MessageList& errors) {
+void check_tag_indices(const std::map<std::string, std::vector<int>>& tags, std::size_t n,
+                       const char* kind, MessageList& errors) {
   for (const auto& [name, indices] : tags)
     for (int i : indices)
       if (i < 0 || static_cast<std::size_t>(i) >= n) {
-        errors.add("tag '" + name + "' lists " + kind + " " + std::to_string(i) + ", which does not exist (" +
-                   std::to_string(n) + " " + kind + "s)");
+        errors.add("tag '" + name + "' lists " + kind + " " + std::to_string(i) +
+                   ", which does not exist (" + std::to_string(n) + " " + kind + "s)");
         break;
       }
 }
@@ -85,14 +87,16 @@ MeshReport check_mesh(const Mesh& mesh, const std::vector<std::string>& required
     for (std::size_t t = 0; t < mesh.tets.size(); ++t)
       for (int n : mesh.tets[t]) check(n, "tetrahedron " + std::to_string(t));
     for (std::size_t t = 0; t < mesh.tet_edge_nodes.size(); ++t)
-      for (int n : mesh.tet_edge_nodes[t]) check(n, "tetrahedron " + std::to_string(t) + " (edge node)");
+      for (int n : mesh.tet_edge_nodes[t])
+        check(n, "tetrahedron " + std::to_string(t) + " (edge node)");
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
       for (int n : mesh.triangles[t]) check(n, "triangle " + std::to_string(t));
     for (std::size_t t = 0; t < mesh.triangle_edge_nodes.size(); ++t)
-      for (int n : mesh.triangle_edge_nodes[t]) check(n, "triangle " + std::to_string(t) + " (edge node)");
+      for (int n : mesh.triangle_edge_nodes[t])
+        check(n, "triangle " + std::to_string(t) + " (edge node)");
     if (!mesh.tet_edge_nodes.empty() && mesh.tet_edge_nodes.size() != mesh.tets.size()) {
-      errors.add("second-order mesh: " + std::to_string(mesh.tet_edge_nodes.size()) + " edge-node sets for " +
-                 std::to_string(mesh.tets.size()) + " tetrahedra");
+      errors.add("second-order mesh: " + std::to_string(mesh.tet_edge_nodes.size()) +
+                 " edge-node sets for " + std::to_string(mesh.tets.size()) + " tetrahedra");
       bad = true;
     }
     if (bad) return report;  // the checks below index nodes
@@ -106,20 +110,25 @@ MeshReport check_mesh(const Mesh& mesh, const std::vector<std::string>& required
     int n_stretched = 0;
     for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
       const auto& n = mesh.tets[t];
-      const std::array<Vec3d, 4> x = {mesh.nodes[static_cast<std::size_t>(n[0])], mesh.nodes[static_cast<std::size_t>(n[1])],
-                                      mesh.nodes[static_cast<std::size_t>(n[2])], mesh.nodes[static_cast<std::size_t>(n[3])]};
+      const std::array<Vec3d, 4> x = {
+          mesh.nodes[static_cast<std::size_t>(n[0])], mesh.nodes[static_cast<std::size_t>(n[1])],
+          mesh.nodes[static_cast<std::size_t>(n[2])], mesh.nodes[static_cast<std::size_t>(n[3])]};
       const double volume = six_signed_volume(x[0], x[1], x[2], x[3]) / 6.0;
       report.min_volume = std::min(report.min_volume, volume);
       double longest = 0.0;
       for (const auto& e : kTetEdges)
-        longest = std::max(longest, (x[static_cast<std::size_t>(e[0])] - x[static_cast<std::size_t>(e[1])]).norm());
+        longest = std::max(
+            longest,
+            (x[static_cast<std::size_t>(e[0])] - x[static_cast<std::size_t>(e[1])]).norm());
       // Degenerate: volume below 1e-12 of the cube of its longest edge (round-off level).
       if (std::abs(volume) <= 1e-12 * longest * longest * longest) {
-        inverted.add("tetrahedron " + std::to_string(t) + " is degenerate (volume " + number(volume) + " mm^3)");
+        inverted.add("tetrahedron " + std::to_string(t) + " is degenerate (volume " +
+                     number(volume) + " mm^3)");
         continue;
       }
       if (volume < 0.0) {
-        inverted.add("tetrahedron " + std::to_string(t) + " is inverted (volume " + number(volume) + " mm^3)");
+        inverted.add("tetrahedron " + std::to_string(t) + " is inverted (volume " + number(volume) +
+                     " mm^3)");
         continue;
       }
       const double ar = aspect_ratio(x, volume);
@@ -127,19 +136,23 @@ MeshReport check_mesh(const Mesh& mesh, const std::vector<std::string>& required
       if (ar > kAspectRatioWarning) ++n_stretched;
     }
     if (n_stretched > 0)
-      report.warnings.push_back(std::to_string(n_stretched) + " tetrahedra have an aspect ratio above " +
-                                number(kAspectRatioWarning) + " (largest " + number(report.max_aspect_ratio) + ")");
+      report.warnings.push_back(
+          std::to_string(n_stretched) + " tetrahedra have an aspect ratio above " +
+          number(kAspectRatioWarning) + " (largest " + number(report.max_aspect_ratio) + ")");
   }
 
   // Unused nodes.
   {
     std::vector<char> used(static_cast<std::size_t>(n_nodes), 0);
-    for (const auto& t : mesh.tets) for (int n : t) used[static_cast<std::size_t>(n)] = 1;
-    for (const auto& t : mesh.tet_edge_nodes) for (int n : t) used[static_cast<std::size_t>(n)] = 1;
+    for (const auto& t : mesh.tets)
+      for (int n : t) used[static_cast<std::size_t>(n)] = 1;
+    for (const auto& t : mesh.tet_edge_nodes)
+      for (int n : t) used[static_cast<std::size_t>(n)] = 1;
     std::string first;
     for (int i = 0; i < n_nodes; ++i)
       if (!used[static_cast<std::size_t>(i)]) {
-        if (report.n_unused_nodes < 5) first += (report.n_unused_nodes ? ", " : "") + std::to_string(i);
+        if (report.n_unused_nodes < 5)
+          first += (report.n_unused_nodes ? ", " : "") + std::to_string(i);
         ++report.n_unused_nodes;
       }
     if (report.n_unused_nodes > 0)
@@ -157,14 +170,16 @@ MeshReport check_mesh(const Mesh& mesh, const std::vector<std::string>& required
       for (std::size_t e = 0; e < 6; ++e) {
         const int a = mesh.tets[t][static_cast<std::size_t>(kTetEdges[e][0])];
         const int b = mesh.tets[t][static_cast<std::size_t>(kTetEdges[e][1])];
-        edges.push_back({std::min(a, b), std::max(a, b), mesh.tet_edge_nodes[t][e], static_cast<int>(t)});
+        edges.push_back(
+            {std::min(a, b), std::max(a, b), mesh.tet_edge_nodes[t][e], static_cast<int>(t)});
       }
     std::sort(edges.begin(), edges.end());
     for (std::size_t i = 1; i < edges.size(); ++i)
-      if (edges[i][0] == edges[i - 1][0] && edges[i][1] == edges[i - 1][1] && edges[i][2] != edges[i - 1][2])
+      if (edges[i][0] == edges[i - 1][0] && edges[i][1] == edges[i - 1][1] &&
+          edges[i][2] != edges[i - 1][2])
         errors.add("edge (" + std::to_string(edges[i][0]) + ", " + std::to_string(edges[i][1]) +
-                   ") has different edge nodes in tetrahedra " + std::to_string(edges[i - 1][3]) + " and " +
-                   std::to_string(edges[i][3]));
+                   ") has different edge nodes in tetrahedra " + std::to_string(edges[i - 1][3]) +
+                   " and " + std::to_string(edges[i][3]));
   }
 
   // Tags.
@@ -191,8 +206,9 @@ MeshReport check_mesh(const Mesh& mesh, const std::vector<std::string>& required
     all_faces.reserve(4 * mesh.tets.size());
     for (const auto& n : mesh.tets)
       for (const auto& f : kTetFaces)
-        all_faces.push_back(sorted_face({n[static_cast<std::size_t>(f[0])], n[static_cast<std::size_t>(f[1])],
-                                         n[static_cast<std::size_t>(f[2])]}));
+        all_faces.push_back(
+            sorted_face({n[static_cast<std::size_t>(f[0])], n[static_cast<std::size_t>(f[1])],
+                         n[static_cast<std::size_t>(f[2])]}));
     std::sort(all_faces.begin(), all_faces.end());
     MessageList errors(report.errors, "triangles that are not faces of the tetrahedra");
     int n_interior = 0;
@@ -202,15 +218,17 @@ MeshReport check_mesh(const Mesh& mesh, const std::vector<std::string>& required
       const auto range = std::equal_range(all_faces.begin(), all_faces.end(), key);
       const auto count = range.second - range.first;
       if (count == 0) {
-        errors.add("triangle " + std::to_string(i) + " (nodes " + std::to_string(mesh.triangles[i][0]) + ", " +
-                   std::to_string(mesh.triangles[i][1]) + ", " + std::to_string(mesh.triangles[i][2]) +
-                   ") is not a face of any tetrahedron");
+        errors.add("triangle " + std::to_string(i) + " (nodes " +
+                   std::to_string(mesh.triangles[i][0]) + ", " +
+                   std::to_string(mesh.triangles[i][1]) + ", " +
+                   std::to_string(mesh.triangles[i][2]) + ") is not a face of any tetrahedron");
       } else if (count > 1) {
         if (n_interior++ == 0) first_interior = std::to_string(i);
       }
     }
     if (n_interior > 0)
-      report.warnings.push_back(std::to_string(n_interior) + " triangles (first: " + first_interior +
+      report.warnings.push_back(std::to_string(n_interior) +
+                                " triangles (first: " + first_interior +
                                 ") are interior faces between two tetrahedra, not on the boundary");
   }
 
@@ -221,7 +239,8 @@ MeshReport check_mesh(const Mesh& mesh, const std::vector<std::string>& required
     edges.reserve(3 * boundary.size());
     for (const auto& f : boundary)
       for (int k = 0; k < 3; ++k) {
-        const int a = f.nodes[static_cast<std::size_t>(k)], b = f.nodes[static_cast<std::size_t>((k + 1) % 3)];
+        const int a = f.nodes[static_cast<std::size_t>(k)],
+                  b = f.nodes[static_cast<std::size_t>((k + 1) % 3)];
         edges.emplace_back(std::min(a, b), std::max(a, b));
       }
     std::sort(edges.begin(), edges.end());
@@ -230,8 +249,9 @@ MeshReport check_mesh(const Mesh& mesh, const std::vector<std::string>& required
       std::size_t j = i + 1;
       while (j < edges.size() && edges[j] == edges[i]) ++j;
       if (j - i != 2)
-        errors.add("boundary edge (" + std::to_string(edges[i].first) + ", " + std::to_string(edges[i].second) +
-                   ") is shared by " + std::to_string(j - i) + " boundary faces (non-manifold; expected 2)");
+        errors.add("boundary edge (" + std::to_string(edges[i].first) + ", " +
+                   std::to_string(edges[i].second) + ") is shared by " + std::to_string(j - i) +
+                   " boundary faces (non-manifold; expected 2)");
       i = j;
     }
   }

@@ -11,9 +11,9 @@ struct MeshReport {
   std::vector<std::string> errors;    ///< the mesh cannot be used (each names the element/tag)
   std::vector<std::string> warnings;  ///< usable but suspicious
   double min_volume = 0.0;            ///< smallest (signed) tetrahedron volume [mm^3]
-  double max_aspect_ratio = 0.0;      ///< largest (longest edge / inradius) / (2 sqrt 6); 1 if regular
-  int n_unused_nodes = 0;             ///< nodes used by no tetrahedron (corner or edge node)
-  int n_boundary_faces = 0;           ///< faces of exactly one tetrahedron
+  double max_aspect_ratio = 0.0;  ///< largest (longest edge / inradius) / (2 sqrt 6); 1 if regular
+  int n_unused_nodes = 0;         ///< nodes used by no tetrahedron (corner or edge node)
+  int n_boundary_faces = 0;       ///< faces of exactly one tetrahedron
   bool ok() const { return errors.empty(); }
 };
 

@@ -20,10 +20,12 @@ namespace {
 
 /// True if all corners of `tri` lie on one cut plane (coordinate exactly 0). Stacking prisms on
 /// such a triangle would give tetrahedra of zero volume inside the plane.
-bool is_flat(const SurfaceTriangulation& s, const std::array<int, 3>& tri, const std::array<bool, 3>& planes) {
+bool is_flat(const SurfaceTriangulation& s, const std::array<int, 3>& tri,
+             const std::array<bool, 3>& planes) {
   for (int axis = 0; axis < 3; ++axis) {
     if (!planes[static_cast<std::size_t>(axis)]) continue;
-    if (std::all_of(tri.begin(), tri.end(), [&](int n) { return s.nodes[static_cast<std::size_t>(n)][axis] == 0.0; }))
+    if (std::all_of(tri.begin(), tri.end(),
+                    [&](int n) { return s.nodes[static_cast<std::size_t>(n)][axis] == 0.0; }))
       return true;
   }
   return false;
@@ -59,7 +61,8 @@ void orient_and_repair_surface(SurfaceTriangulation& s, const std::array<bool, 3
     bool repaired = false;
     for (int k = 0; k < 3 && !repaired; ++k) {
       const auto tri = s.triangles[i];
-      const int u = tri[static_cast<std::size_t>(k)], v = tri[static_cast<std::size_t>((k + 1) % 3)],
+      const int u = tri[static_cast<std::size_t>(k)],
+                v = tri[static_cast<std::size_t>((k + 1) % 3)],
                 b = tri[static_cast<std::size_t>((k + 2) % 3)];
       const auto& users = edge_triangles[edge(u, v)];
       if (users.size() != 2) continue;
@@ -67,15 +70,17 @@ void orient_and_repair_surface(SurfaceTriangulation& s, const std::array<bool, 3
       if (is_flat(s, s.triangles[j], planes)) continue;
       // Rotate the neighbour to (c, a, d) with {c, a} = {u, v}.
       auto other = s.triangles[j];
-      while (other[2] == u || other[2] == v) std::rotate(other.begin(), other.begin() + 1, other.end());
+      while (other[2] == u || other[2] == v)
+        std::rotate(other.begin(), other.begin() + 1, other.end());
       const int c = other[0], a = other[1], d = other[2];
       const std::array<int, 3> first = {b, a, d}, second = {d, c, b};
       if (is_flat(s, first, planes) || is_flat(s, second, planes)) continue;
       if (facing(first) < 0.1 || facing(second) < 0.1) continue;
       for (const auto& [old_tri, new_tri] : {std::pair{i, first}, std::pair{j, second}}) {
         for (int m = 0; m < 3; ++m) {
-          auto& list = edge_triangles[edge(s.triangles[old_tri][static_cast<std::size_t>(m)],
-                                           s.triangles[old_tri][static_cast<std::size_t>((m + 1) % 3)])];
+          auto& list =
+              edge_triangles[edge(s.triangles[old_tri][static_cast<std::size_t>(m)],
+                                  s.triangles[old_tri][static_cast<std::size_t>((m + 1) % 3)])];
           list.erase(std::remove(list.begin(), list.end(), old_tri), list.end());
         }
         s.triangles[old_tri] = new_tri;
@@ -87,8 +92,9 @@ void orient_and_repair_surface(SurfaceTriangulation& s, const std::array<bool, 3
               .push_back(t);
       repaired = true;
     }
-    FE_CHECK(repaired, "spheroid surface: a surface triangle lies in a symmetry plane and could not be "
-                       "repaired; try a smaller element_size");
+    FE_CHECK(repaired,
+             "spheroid surface: a surface triangle lies in a symmetry plane and could not be "
+             "repaired; try a smaller element_size");
   }
 }
 
@@ -105,7 +111,8 @@ double estimate_spheroid_triangles(double a, double b, double h) {
   double n = 0.0;
   for (int i = 0; i < kSteps; ++i) {
     const double t = -0.5 * std::numbers::pi + (i + 0.5) * dt;
-    const double q = std::sqrt(a * a * std::sin(t) * std::sin(t) + b * b * std::cos(t) * std::cos(t));
+    const double q =
+        std::sqrt(a * a * std::sin(t) * std::sin(t) + b * b * std::cos(t) * std::cos(t));
     // Principal radii of a spheroid of revolution: meridian q^3 / (a b), parallel a q / b.
     const double rho = std::min(q * q * q / (a * b), a * q / b);
     const double s = std::min(h, 2.0 * std::numbers::pi * rho / 12.0);
@@ -116,10 +123,14 @@ double estimate_spheroid_triangles(double a, double b, double h) {
 
 double kept_fraction(Symmetry symmetry) {
   switch (symmetry) {
-    case Symmetry::full: return 1.0;
-    case Symmetry::half: return 0.5;
-    case Symmetry::quarter: return 0.25;
-    case Symmetry::octant: return 0.125;
+    case Symmetry::full:
+      return 1.0;
+    case Symmetry::half:
+      return 0.5;
+    case Symmetry::quarter:
+      return 0.25;
+    case Symmetry::octant:
+      return 0.125;
   }
   return 1.0;
 }
@@ -147,11 +158,15 @@ SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetr
       for (int k = 0; k < n_sweeps; ++k) {
         const int arc = a == b ? gmsh::model::occ::addCircle(0.0, 0.0, 0.0, a, -1, first, last)
                                : gmsh::model::occ::addEllipse(0.0, 0.0, 0.0, a, b, -1, first, last);
-        if (k > 0) gmsh::model::occ::rotate({{1, arc}}, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, k * 0.5 * std::numbers::pi);
+        if (k > 0)
+          gmsh::model::occ::rotate({{1, arc}}, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0,
+                                   k * 0.5 * std::numbers::pi);
         gmsh::vectorpair swept;
-        gmsh::model::occ::revolve({{1, arc}}, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.5 * std::numbers::pi, swept);
+        gmsh::model::occ::revolve({{1, arc}}, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.5 * std::numbers::pi,
+                                  swept);
       }
-    if (arcs.size() * static_cast<std::size_t>(n_sweeps) > 1) gmsh::model::occ::removeAllDuplicates();
+    if (arcs.size() * static_cast<std::size_t>(n_sweeps) > 1)
+      gmsh::model::occ::removeAllDuplicates();
     gmsh::model::occ::synchronize();
     session.check_internal("spheroid geometry");
     gmsh::option::setNumber("Mesh.MeshSizeMax", h);
@@ -167,14 +182,16 @@ SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetr
     for (const auto& [dim, tag] : surfaces) {
       std::vector<std::size_t> node_tags, element_tags, element_nodes;
       std::vector<double> coords, parametric;
-      gmsh::model::mesh::getNodes(node_tags, coords, parametric, 2, tag, /*includeBoundary=*/true, false);
+      gmsh::model::mesh::getNodes(node_tags, coords, parametric, 2, tag, /*includeBoundary=*/true,
+                                  false);
       for (std::size_t i = 0; i < node_tags.size(); ++i) {
         if (!index.emplace(node_tags[i], static_cast<int>(surface.nodes.size())).second) continue;
         surface.nodes.emplace_back(coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]);
       }
       gmsh::model::mesh::getElementsByType(2, element_tags, element_nodes, tag);
       for (std::size_t e = 0; e < element_tags.size(); ++e)
-        surface.triangles.push_back({index.at(element_nodes[3 * e]), index.at(element_nodes[3 * e + 1]),
+        surface.triangles.push_back({index.at(element_nodes[3 * e]),
+                                     index.at(element_nodes[3 * e + 1]),
                                      index.at(element_nodes[3 * e + 2])});
     }
     session.check_internal("spheroid surface mesh");
@@ -190,10 +207,11 @@ SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetr
     for (int axis = 0; axis < 3; ++axis) {
       if (!planes[static_cast<std::size_t>(axis)]) continue;
       if (std::abs(p[axis]) < tolerance) p[axis] = 0.0;
-      FE_CHECK(p[axis] >= 0.0, "spheroid surface: node outside the kept part (coordinate " << axis << " = "
-                                                                                            << p[axis] << ")");
+      FE_CHECK(p[axis] >= 0.0, "spheroid surface: node outside the kept part (coordinate "
+                                   << axis << " = " << p[axis] << ")");
     }
-    const double s = std::sqrt(p.x() * p.x() / (a * a) + p.y() * p.y() / (b * b) + p.z() * p.z() / (a * a));
+    const double s =
+        std::sqrt(p.x() * p.x() / (a * a) + p.y() * p.y() / (b * b) + p.z() * p.z() / (a * a));
     p /= s;
   }
   orient_and_repair_surface(surface, planes, [&](const Vec3d& p) {

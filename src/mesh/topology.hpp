@@ -15,14 +15,17 @@
 namespace plisse {
 
 /// Local corner indices of face k (opposite corner k), outward for a positive tetrahedron.
-inline constexpr std::array<std::array<int, 3>, 4> kTetFaces = {{{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}}};
+inline constexpr std::array<std::array<int, 3>, 4> kTetFaces = {
+    {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}}};
 
 /// Local corner pairs of the six edges in Gmsh's order (01, 12, 20, 30, 32, 31); the 10-node
 /// tetrahedron stores its edge nodes in this order.
-inline constexpr std::array<std::array<int, 2>, 6> kTetEdges = {{{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}}};
+inline constexpr std::array<std::array<int, 2>, 6> kTetEdges = {
+    {{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}}};
 
 /// 6 V = (x1 - x0) . ((x2 - x0) x (x3 - x0)) [mm^3]; positive for a positively oriented tet.
-inline double six_signed_volume(const Vec3d& x0, const Vec3d& x1, const Vec3d& x2, const Vec3d& x3) {
+inline double six_signed_volume(const Vec3d& x0, const Vec3d& x1, const Vec3d& x2,
+                                const Vec3d& x3) {
   return (x1 - x0).dot((x2 - x0).cross(x3 - x0));
 }
 

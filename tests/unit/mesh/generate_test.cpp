@@ -1,5 +1,7 @@
 // Generated meshes: tags and counts, exact layers, exact symmetry planes, positive tetrahedra,
 // volumes against the analytic bodies, clean quality reports, input validation.
+#include "mesh/generate.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,7 +12,6 @@
 #include <sstream>
 
 #include "core/error.hpp"
-#include "mesh/generate.hpp"
 #include "mesh/quality.hpp"
 #include "mesh/spheroid_surface.hpp"
 #include "mesh_test_util.hpp"
@@ -52,7 +53,8 @@ TEST(GenerateCube, CountsTagsAndExactVolume) {
   EXPECT_EQ(mesh.n_nodes(), (d + 1) * (d + 1) * (d + 1));
   EXPECT_EQ(mesh.n_tets(), 6 * d * d * d);
   EXPECT_EQ(mesh.triangles.size(), static_cast<std::size_t>(6 * 2 * d * d));
-  for (const char* tag : {"left", "right", "front", "back", "bottom", "top", "sym_x", "sym_y", "sym_z"})
+  for (const char* tag :
+       {"left", "right", "front", "back", "bottom", "top", "sym_x", "sym_y", "sym_z"})
     EXPECT_EQ(mesh.surface_tags.at(tag).size(), static_cast<std::size_t>(2 * d * d)) << tag;
   EXPECT_EQ(mesh.surface_tags.size(), 9u);
   EXPECT_EQ(mesh.surface_tags.at("sym_x"), mesh.surface_tags.at("left"));
@@ -60,13 +62,16 @@ TEST(GenerateCube, CountsTagsAndExactVolume) {
   EXPECT_EQ(mesh.surface_tags.at("sym_z"), mesh.surface_tags.at("bottom"));
   // Each tagged face lies exactly on its plane.
   const std::vector<std::pair<std::string, std::pair<int, double>>> planes = {
-      {"left", {0, 0.0}}, {"right", {0, 2.5}}, {"front", {1, 0.0}},
+      {"left", {0, 0.0}}, {"right", {0, 2.5}},  {"front", {1, 0.0}},
       {"back", {1, 2.5}}, {"bottom", {2, 0.0}}, {"top", {2, 2.5}}};
   for (const auto& [tag, plane] : planes)
-    for (int n : tag_nodes(mesh, tag)) EXPECT_EQ(mesh.nodes[static_cast<std::size_t>(n)][plane.first], plane.second);
+    for (int n : tag_nodes(mesh, tag))
+      EXPECT_EQ(mesh.nodes[static_cast<std::size_t>(n)][plane.first], plane.second);
   EXPECT_GT(min_tet_volume(mesh), 0.0);
-  EXPECT_NEAR(mesh_volume(mesh), 2.5 * 2.5 * 2.5, 1e-12 * 2.5 * 2.5 * 2.5);  // tets tile the box exactly
-  expect_clean(mesh, {"left", "right", "front", "back", "bottom", "top", "sym_x", "sym_y", "sym_z"});
+  EXPECT_NEAR(mesh_volume(mesh), 2.5 * 2.5 * 2.5,
+              1e-12 * 2.5 * 2.5 * 2.5);  // tets tile the box exactly
+  expect_clean(mesh,
+               {"left", "right", "front", "back", "bottom", "top", "sym_x", "sym_y", "sym_z"});
 }
 
 TEST(GenerateSheet, LayersCountsAndExactVolume) {
@@ -91,7 +96,8 @@ TEST(GenerateSheet, LayersCountsAndExactVolume) {
   EXPECT_EQ(*z.rbegin(), 0.3);
   for (int n : tag_nodes(mesh, "top")) EXPECT_EQ(mesh.nodes[static_cast<std::size_t>(n)].z(), 0.3);
   EXPECT_NEAR(mesh_volume(mesh), 10.0 * 4.0 * 0.3, 1e-12 * 12.0);
-  expect_clean(mesh, {"left", "right", "front", "back", "bottom", "top", "sym_x", "sym_y", "sym_z"});
+  expect_clean(mesh,
+               {"left", "right", "front", "back", "bottom", "top", "sym_x", "sym_y", "sym_z"});
 }
 
 struct ShellCase {
@@ -149,7 +155,8 @@ TEST_P(GenerateShell, ExactLayersPlanesAndVolume) {
   const char* names[3] = {"sym_x", "sym_y", "sym_z"};
   for (int axis = 0; axis < 3; ++axis) {
     if (!mesh.has_surface(names[axis])) continue;
-    for (int n : tag_nodes(mesh, names[axis])) EXPECT_EQ(mesh.nodes[static_cast<std::size_t>(n)][axis], 0.0);
+    for (int n : tag_nodes(mesh, names[axis]))
+      EXPECT_EQ(mesh.nodes[static_cast<std::size_t>(n)][axis], 0.0);
     for (const auto& x : mesh.nodes) EXPECT_GE(x[axis], 0.0);
   }
 
@@ -166,27 +173,30 @@ TEST_P(GenerateShell, ExactLayersPlanesAndVolume) {
   }
   const double volume = mesh_volume(mesh);
   EXPECT_NEAR(volume, (std::pow((R + t) / R, 3) - 1.0) * inner_cones, 1e-10 * volume);
-  const double exact = kept_fraction(c.symmetry) * 4.0 / 3.0 * std::numbers::pi * (std::pow(R + t, 3) - R * R * R);
+  const double exact =
+      kept_fraction(c.symmetry) * 4.0 / 3.0 * std::numbers::pi * (std::pow(R + t, 3) - R * R * R);
   const double deficit = 1.0 - volume / exact;
   EXPECT_GT(deficit, 0.0);
   // The size estimate behind the 20-million limit ignores the finer elements along the cut
   // curves, which count on so coarse a patch (octant, h/R = 0.2): within a factor 2 here.
   EXPECT_GT(estimate_n_tets(spec) / mesh.n_tets(), 0.5);
   EXPECT_LT(estimate_n_tets(spec) / mesh.n_tets(), 2.0);
-  EXPECT_LT(deficit, 0.5 * std::pow(spec.element_size / R, 2)) << "relative volume deficit " << deficit;
-  std::cout << "shell " << to_string(c.symmetry) << ": " << mesh.n_tets() << " tets, deficit " << deficit
-            << " (h/R)^2 = " << std::pow(spec.element_size / R, 2) << "\n";
+  EXPECT_LT(deficit, 0.5 * std::pow(spec.element_size / R, 2))
+      << "relative volume deficit " << deficit;
+  std::cout << "shell " << to_string(c.symmetry) << ": " << mesh.n_tets() << " tets, deficit "
+            << deficit << " (h/R)^2 = " << std::pow(spec.element_size / R, 2) << "\n";
 
   EXPECT_GT(min_tet_volume(mesh), 0.0);
   std::vector<std::string> required(expected.begin(), expected.end());
   expect_clean(mesh, required);
 }
 
-INSTANTIATE_TEST_SUITE_P(AllSymmetries, GenerateShell,
-                         ::testing::Values(ShellCase{Symmetry::full, {}}, ShellCase{Symmetry::half, {"sym_z"}},
-                                           ShellCase{Symmetry::quarter, {"sym_x", "sym_z"}},
-                                           ShellCase{Symmetry::octant, {"sym_x", "sym_y", "sym_z"}}),
-                         [](const auto& info) { return to_string(info.param.symmetry); });
+INSTANTIATE_TEST_SUITE_P(
+    AllSymmetries, GenerateShell,
+    ::testing::Values(ShellCase{Symmetry::full, {}}, ShellCase{Symmetry::half, {"sym_z"}},
+                      ShellCase{Symmetry::quarter, {"sym_x", "sym_z"}},
+                      ShellCase{Symmetry::octant, {"sym_x", "sym_y", "sym_z"}}),
+    [](const auto& info) { return to_string(info.param.symmetry); });
 
 class GenerateAirbag : public ::testing::TestWithParam<Symmetry> {};
 
@@ -210,7 +220,9 @@ TEST_P(GenerateAirbag, WallCentredOnSpheroidAndVolume) {
     const Vec3d& in = mesh.nodes[static_cast<std::size_t>(k)];
     const Vec3d& mid = mesh.nodes[static_cast<std::size_t>(k + n_surface)];
     const Vec3d& out = mesh.nodes[static_cast<std::size_t>(k + 2 * n_surface)];
-    EXPECT_NEAR(mid.x() * mid.x() / (a * a) + mid.y() * mid.y() / (c * c) + mid.z() * mid.z() / (a * a), 1.0, 1e-12);
+    EXPECT_NEAR(
+        mid.x() * mid.x() / (a * a) + mid.y() * mid.y() / (c * c) + mid.z() * mid.z() / (a * a),
+        1.0, 1e-12);
     EXPECT_NEAR((out - in).norm(), t, 1e-12 * a);
     EXPECT_NEAR((0.5 * (in + out) - mid).norm(), 0.0, 1e-12 * a);
     const Vec3d normal(mid.x() / (a * a), mid.y() / (c * c), mid.z() / (a * a));
@@ -219,7 +231,8 @@ TEST_P(GenerateAirbag, WallCentredOnSpheroidAndVolume) {
   for (int axis = 0; axis < 3; ++axis) {
     const std::string name = std::string("sym_") + "xyz"[axis];
     if (!mesh.has_surface(name)) continue;
-    for (int n : tag_nodes(mesh, name)) EXPECT_EQ(mesh.nodes[static_cast<std::size_t>(n)][axis], 0.0);
+    for (int n : tag_nodes(mesh, name))
+      EXPECT_EQ(mesh.nodes[static_cast<std::size_t>(n)][axis], 0.0);
   }
   // Volume of the wall between the parallel surfaces at -t/2 and +t/2 of a closed surface with
   // area A (Steiner's formula; the mean-curvature term cancels, Gauss-Bonnet gives 4 pi):
@@ -230,8 +243,8 @@ TEST_P(GenerateAirbag, WallCentredOnSpheroidAndVolume) {
   const double exact = kept_fraction(spec.symmetry) *
                        (t * spheroid_area(a, c) + t * t * t / 12.0 * 4.0 * std::numbers::pi);
   const double volume = mesh_volume(mesh);
-  std::cout << "airbag " << to_string(spec.symmetry) << ": " << mesh.n_tets() << " tets, relative error "
-            << volume / exact - 1.0 << "\n";
+  std::cout << "airbag " << to_string(spec.symmetry) << ": " << mesh.n_tets()
+            << " tets, relative error " << volume / exact - 1.0 << "\n";
   EXPECT_NEAR(volume / exact, 1.0, 0.25 * std::pow(spec.element_size / c, 2));
   // The size estimate behind the 20-million limit is within 40 % (curvature refinement included).
   EXPECT_NEAR(estimate_n_tets(spec) / mesh.n_tets(), 1.0, 0.4);
@@ -240,7 +253,8 @@ TEST_P(GenerateAirbag, WallCentredOnSpheroidAndVolume) {
   expect_clean(mesh, required);
 }
 
-INSTANTIATE_TEST_SUITE_P(Symmetries, GenerateAirbag, ::testing::Values(Symmetry::octant, Symmetry::half),
+INSTANTIATE_TEST_SUITE_P(Symmetries, GenerateAirbag,
+                         ::testing::Values(Symmetry::octant, Symmetry::half),
                          [](const auto& info) { return to_string(info.param); });
 
 TEST(SurfaceRepair, FlatTriangleOnCutPlaneIsFlipped) {
@@ -307,7 +321,8 @@ TEST(GenerateValidation, AirbagWallMustNotFold) {
   spec.height = 20.0;  // rim radius of curvature (height/2)^2 / radius = 2 mm
   spec.thickness = 4.0;
   std::string key;
-  EXPECT_NE(rule_for(spec, &key).find("must be < 2 (height/2)^2 / radius = 4 mm"), std::string::npos);
+  EXPECT_NE(rule_for(spec, &key).find("must be < 2 (height/2)^2 / radius = 4 mm"),
+            std::string::npos);
   EXPECT_EQ(key, "mesh.thickness");
   spec.thickness = 12.0;  // >= height/2 is rejected by the same rule
   EXPECT_EQ(rule_for(spec, &key).empty(), false);
@@ -365,7 +380,8 @@ TEST(MeshKinds, DocumentedInMeshesMd) {
       if (o.real) row << defaults.*o.real << " | " << o.range.describe() << " |";
       if (o.integer) row << defaults.*o.integer << " | " << o.range.describe() << " |";
       if (o.symmetry) row << to_string(defaults.*o.symmetry) << " | full, half, quarter, octant |";
-      EXPECT_NE(section.find(row.str()), std::string::npos) << "docs/meshes.md lacks the row: " << row.str();
+      EXPECT_NE(section.find(row.str()), std::string::npos)
+          << "docs/meshes.md lacks the row: " << row.str();
     }
   }
 }

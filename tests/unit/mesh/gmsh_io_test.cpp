@@ -1,5 +1,7 @@
 // Gmsh files: exact round trips (v2.2/v4.1, ASCII/binary), second-order meshes, refusal of
 // non-tetrahedral meshes, missing and truncated files, orientation normalisation.
+#include "mesh/gmsh_io.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -7,7 +9,6 @@
 
 #include "core/error.hpp"
 #include "mesh/generate.hpp"
-#include "mesh/gmsh_io.hpp"
 #include "mesh/quality.hpp"
 #include "mesh_test_util.hpp"
 
@@ -57,7 +58,9 @@ struct Format {
   bool binary;
 };
 
-void PrintTo(const Format& f, std::ostream* out) { *out << "v" << f.version << (f.binary ? " binary" : " ASCII"); }
+void PrintTo(const Format& f, std::ostream* out) {
+  *out << "v" << f.version << (f.binary ? " binary" : " ASCII");
+}
 
 class GmshRoundTrip : public ::testing::TestWithParam<Format> {};
 
@@ -83,13 +86,15 @@ TEST_P(GmshRoundTrip, NodesElementsAndTagsComeBackIdentical) {
       if (f.binary)
         EXPECT_EQ(x, y) << "node " << i;  // binary: bit for bit
       else
-        EXPECT_LE((x - y).cwiseAbs().maxCoeff(), 1e-15 * x.cwiseAbs().maxCoeff()) << "node " << i;  // %.16g
+        EXPECT_LE((x - y).cwiseAbs().maxCoeff(), 1e-15 * x.cwiseAbs().maxCoeff())
+            << "node " << i;  // %.16g
     }
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Formats, GmshRoundTrip,
-                         ::testing::Values(Format{2.2, false}, Format{2.2, true}, Format{4.1, false}, Format{4.1, true}),
+                         ::testing::Values(Format{2.2, false}, Format{2.2, true},
+                                           Format{4.1, false}, Format{4.1, true}),
                          [](const auto& info) {
                            return std::string(info.param.version == 2.2 ? "v22" : "v41") +
                                   (info.param.binary ? "_binary" : "_ascii");
@@ -105,21 +110,27 @@ TEST(GmshRead, SecondOrderTetrahedraWithGmshEdgeOrder) {
   // (01, 12, 20, 30, 32, 31), exactly up to round-off.
   for (std::size_t t = 0; t < mesh.tets.size(); ++t)
     for (std::size_t e = 0; e < 6; ++e) {
-      const Vec3d mid = 0.5 * (mesh.nodes[mesh.tets[t][kTetEdges[e][0]]] + mesh.nodes[mesh.tets[t][kTetEdges[e][1]]]);
-      EXPECT_LT((mesh.nodes[mesh.tet_edge_nodes[t][e]] - mid).norm(), 1e-14) << "tet " << t << " edge " << e;
+      const Vec3d mid = 0.5 * (mesh.nodes[mesh.tets[t][kTetEdges[e][0]]] +
+                               mesh.nodes[mesh.tets[t][kTetEdges[e][1]]]);
+      EXPECT_LT((mesh.nodes[mesh.tet_edge_nodes[t][e]] - mid).norm(), 1e-14)
+          << "tet " << t << " edge " << e;
     }
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (std::size_t e = 0; e < 3; ++e) {
-      const Vec3d mid = 0.5 * (mesh.nodes[mesh.triangles[t][e]] + mesh.nodes[mesh.triangles[t][(e + 1) % 3]]);
-      EXPECT_LT((mesh.nodes[mesh.triangle_edge_nodes[t][e]] - mid).norm(), 1e-14) << "triangle " << t;
+      const Vec3d mid =
+          0.5 * (mesh.nodes[mesh.triangles[t][e]] + mesh.nodes[mesh.triangles[t][(e + 1) % 3]]);
+      EXPECT_LT((mesh.nodes[mesh.triangle_edge_nodes[t][e]] - mid).norm(), 1e-14)
+          << "triangle " << t;
     }
   // Named and unnamed physical groups.
   EXPECT_TRUE(mesh.has_surface("left"));
   EXPECT_TRUE(mesh.has_surface("top"));
   EXPECT_TRUE(mesh.has_surface("2:7"));
   EXPECT_EQ(mesh.volume_tags.at("body").size(), mesh.tets.size());
-  for (int n : test::tag_nodes(mesh, "left")) EXPECT_NEAR(mesh.nodes[static_cast<std::size_t>(n)].x(), 0.0, 1e-15);
-  for (int n : test::tag_nodes(mesh, "2:7")) EXPECT_NEAR(mesh.nodes[static_cast<std::size_t>(n)].x(), 1.0, 1e-15);
+  for (int n : test::tag_nodes(mesh, "left"))
+    EXPECT_NEAR(mesh.nodes[static_cast<std::size_t>(n)].x(), 0.0, 1e-15);
+  for (int n : test::tag_nodes(mesh, "2:7"))
+    EXPECT_NEAR(mesh.nodes[static_cast<std::size_t>(n)].x(), 1.0, 1e-15);
   EXPECT_NEAR(test::mesh_volume(mesh), 1.0, 1e-12);
   const MeshReport report = check_mesh(mesh, {"left", "top", "body"});
   EXPECT_TRUE(report.ok()) << (report.errors.empty() ? "" : report.errors.front());
@@ -154,17 +165,20 @@ TEST(GmshRead, TruncatedFilesAreInputErrors) {
   spec.kind = "cube";
   spec.divisions = 3;
   const Mesh mesh = generate_mesh(spec);
-  for (const auto& f : {Format{4.1, false}, Format{4.1, true}, Format{2.2, false}, Format{2.2, true}}) {
+  for (const auto& f :
+       {Format{4.1, false}, Format{4.1, true}, Format{2.2, false}, Format{2.2, true}}) {
     const auto full = dir / "full.msh";
     write_gmsh(mesh, full.string(), f.version, f.binary);
     const auto size = std::filesystem::file_size(full);
     for (double fraction : {0.3, 0.6, 0.9}) {
       const auto cut = dir / "cut.msh";
       std::filesystem::copy_file(full, cut, std::filesystem::copy_options::overwrite_existing);
-      std::filesystem::resize_file(cut, static_cast<std::uintmax_t>(fraction * static_cast<double>(size)));
+      std::filesystem::resize_file(
+          cut, static_cast<std::uintmax_t>(fraction * static_cast<double>(size)));
       const std::string message = read_error(cut.string());
       EXPECT_NE(message.find("cut.msh"), std::string::npos)
-          << "v" << f.version << (f.binary ? " binary" : " ascii") << " cut at " << fraction << ": '" << message << "'";
+          << "v" << f.version << (f.binary ? " binary" : " ascii") << " cut at " << fraction
+          << ": '" << message << "'";
     }
     // Gmsh is usable again after the failures.
     expect_same_topology(mesh, read_gmsh(full.string()));
@@ -200,7 +214,8 @@ TEST(GmshWrite, RequiresMshExtension) {
   spec.divisions = 1;
   const auto dir = test::scratch_dir("extension");
   EXPECT_THROW(write_gmsh(generate_mesh(spec), (dir / "cube.vtk").string()), InputError);
-  EXPECT_THROW(write_gmsh(generate_mesh(spec), (dir / "no_such_dir" / "cube.msh").string()), InputError);
+  EXPECT_THROW(write_gmsh(generate_mesh(spec), (dir / "no_such_dir" / "cube.msh").string()),
+               InputError);
 }
 
 }  // namespace

@@ -1,7 +1,6 @@
 // End to end: the built `plisse mesh KIND` writes a readable mesh and prints a summary; bad
 // options exit with status 2 naming the option and the rule (DESIGN.md, interface contract).
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -34,13 +33,17 @@ Result run_plisse(const std::string& args) {
 TEST(MeshCommand, WritesShellWithSummary) {
   const std::string path = (test::scratch_dir("command") / "s.msh").string();
   const Result r = run_plisse(
-      "mesh spherical-shell --inner-radius 10 --thickness 1 --layers 2 --element-size 2.5 --symmetry octant "
-      "--format 2 --binary -o " + path);
+      "mesh spherical-shell --inner-radius 10 --thickness 1 --layers 2 --element-size 2.5 "
+      "--symmetry octant "
+      "--format 2 --binary -o " +
+      path);
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("wrote " + path + " (Gmsh 2.2 binary)"), std::string::npos) << r.output;
   const Mesh mesh = read_gmsh(path);
-  EXPECT_NE(r.output.find(std::to_string(mesh.n_tets()) + " tetrahedra"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("sym_y (" + std::to_string(mesh.surface_tags.at("sym_y").size()) + " triangles)"),
+  EXPECT_NE(r.output.find(std::to_string(mesh.n_tets()) + " tetrahedra"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("sym_y (" + std::to_string(mesh.surface_tags.at("sym_y").size()) +
+                          " triangles)"),
             std::string::npos)
       << r.output;
   EXPECT_TRUE(check_mesh(mesh, {"inner", "outer", "sym_x", "sym_y", "sym_z"}).ok());
@@ -54,8 +57,8 @@ TEST(MeshCommand, WritesShellWithSummary) {
 TEST(MeshCommand, HelpListsOptionsWithUnitsAndDefaults) {
   const Result r = run_plisse("mesh airbag --help");
   EXPECT_EQ(r.status, 0) << r.output;
-  for (const char* text : {"--radius FLOAT=50", "--height FLOAT=20", "--thickness", "[mm]", "--layers INT=3",
-                           "--symmetry TEXT=full", "--format INT=4", "--binary"})
+  for (const char* text : {"--radius FLOAT=50", "--height FLOAT=20", "--thickness", "[mm]",
+                           "--layers INT=3", "--symmetry TEXT=full", "--format INT=4", "--binary"})
     EXPECT_NE(r.output.find(text), std::string::npos) << text << "\n" << r.output;
 }
 
@@ -63,13 +66,18 @@ TEST(MeshCommand, BadOptionsExitTwoNamingOptionAndRule) {
   const std::string path = (test::scratch_dir("command_bad") / "x.msh").string();
   Result r = run_plisse("mesh cube --divisions 0 -o " + path);
   EXPECT_EQ(r.status, 2) << r.output;
-  EXPECT_NE(r.output.find("'--divisions': must be in [1, 200] (got 0)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("'--divisions': must be in [1, 200] (got 0)"), std::string::npos)
+      << r.output;
   r = run_plisse("mesh airbag --radius 50 --height 20 --thickness 4 -o " + path);
   EXPECT_EQ(r.status, 2) << r.output;
-  EXPECT_NE(r.output.find("'--thickness': must be < 2 (height/2)^2 / radius = 4 mm"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("'--thickness': must be < 2 (height/2)^2 / radius = 4 mm"),
+            std::string::npos)
+      << r.output;
   r = run_plisse("mesh spherical-shell --symmetry sixth -o " + path);
   EXPECT_EQ(r.status, 2) << r.output;
-  EXPECT_NE(r.output.find("'--symmetry': must be one of full, half, quarter, octant"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("'--symmetry': must be one of full, half, quarter, octant"),
+            std::string::npos)
+      << r.output;
   r = run_plisse("mesh sheet --format 3 -o " + path);
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("'--format'"), std::string::npos) << r.output;

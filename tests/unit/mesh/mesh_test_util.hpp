@@ -1,10 +1,10 @@
 #pragma once
 /// Helpers shared by the mesh tests.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <string>
-#include <unistd.h>
 
 #include "mesh/mesh.hpp"
 #include "mesh/topology.hpp"

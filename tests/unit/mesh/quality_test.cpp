@@ -1,9 +1,9 @@
 // check_mesh on small hand-made meshes: each defect is found and named.
+#include "mesh/quality.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "mesh/quality.hpp"
 
 namespace plisse {
 namespace {
@@ -37,7 +37,8 @@ TEST(CheckMesh, RegularTetrahedronHasAspectRatioOne) {
   Mesh mesh;
   mesh.nodes = {Vec3d(1, 1, 1), Vec3d(1, -1, -1), Vec3d(-1, 1, -1), Vec3d(-1, -1, 1)};
   mesh.tets = {{0, 1, 2, 3}};
-  const double v = (mesh.nodes[1] - mesh.nodes[0]).dot((mesh.nodes[2] - mesh.nodes[0]).cross(mesh.nodes[3] - mesh.nodes[0]));
+  const double v = (mesh.nodes[1] - mesh.nodes[0])
+                       .dot((mesh.nodes[2] - mesh.nodes[0]).cross(mesh.nodes[3] - mesh.nodes[0]));
   if (v < 0) std::swap(mesh.tets[0][1], mesh.tets[0][2]);
   const MeshReport r = check_mesh(mesh);
   EXPECT_TRUE(r.ok());
@@ -87,7 +88,8 @@ TEST(CheckMesh, FindsTriangleThatIsNoFace) {
   Mesh mesh = one_tet();
   mesh.nodes.emplace_back(2, 2, 2);
   mesh.triangles.push_back({1, 2, 4});
-  EXPECT_TRUE(mentions(check_mesh(mesh).errors, "triangle 4 (nodes 1, 2, 4) is not a face of any tetrahedron"));
+  EXPECT_TRUE(mentions(check_mesh(mesh).errors,
+                       "triangle 4 (nodes 1, 2, 4) is not a face of any tetrahedron"));
 }
 
 TEST(CheckMesh, WarnsAboutInteriorTriangle) {
@@ -103,7 +105,8 @@ TEST(CheckMesh, WarnsAboutInteriorTriangle) {
 TEST(CheckMesh, FindsNonManifoldEdge) {
   // Two tetrahedra touching along the edge (0, 1) only: four boundary faces meet there.
   Mesh mesh;
-  mesh.nodes = {Vec3d(0, 0, 0), Vec3d(1, 0, 0), Vec3d(0, 1, 0), Vec3d(0, 0, 1), Vec3d(0, -1, 0), Vec3d(0, 0, -1)};
+  mesh.nodes = {Vec3d(0, 0, 0), Vec3d(1, 0, 0),  Vec3d(0, 1, 0),
+                Vec3d(0, 0, 1), Vec3d(0, -1, 0), Vec3d(0, 0, -1)};
   mesh.tets = {{0, 1, 2, 3}, {0, 1, 4, 5}};
   const MeshReport r = check_mesh(mesh);
   EXPECT_GT(r.min_volume, 0.0);
@@ -120,8 +123,10 @@ TEST(CheckMesh, FindsInconsistentEdgeNodes) {
   Mesh mesh = one_tet();
   mesh.nodes.emplace_back(1, 1, 1);
   mesh.tets.push_back({1, 2, 3, 4});
-  for (int i = 0; i < 12; ++i) mesh.nodes.emplace_back(0.1 * i, 0.5, 0.5);  // stand-in edge nodes 5..16
-  mesh.tet_edge_nodes = {{5, 6, 7, 8, 9, 10}, {11, 12, 13, 14, 15, 16}};  // edges shared, nodes differ
+  for (int i = 0; i < 12; ++i)
+    mesh.nodes.emplace_back(0.1 * i, 0.5, 0.5);  // stand-in edge nodes 5..16
+  mesh.tet_edge_nodes = {{5, 6, 7, 8, 9, 10},
+                         {11, 12, 13, 14, 15, 16}};  // edges shared, nodes differ
   EXPECT_TRUE(mentions(check_mesh(mesh).errors, "has different edge nodes"));
 }
 
