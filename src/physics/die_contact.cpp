@@ -1,10 +1,229 @@
 #include "physics/die_contact.hpp"
 
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "material/registry.hpp"
+#include "physics/die_surface.hpp"
+#include "physics/surface.hpp"
+
 namespace plisse {
 
-std::unique_ptr<ModelTerm> make_die_term(const Die& die, const Case&, const Mesh&,
+DieContact::DieContact(const Mesh& mesh, DieGeometry die, DieContactSettings settings,
+                       const std::vector<std::array<int, 3>>& candidates,
+                       const std::vector<std::array<int, 3>>& region)
+    : mesh_(mesh), die_(std::move(die)), settings_(std::move(settings)) {
+  FE_CHECK(settings_.penalty > 0.0,
+           "die '" << settings_.name << "': penalty must be > 0 (got " << settings_.penalty << ")");
+  FE_CHECK(settings_.tolerance > 0.0, "die '" << settings_.name << "': tolerance must be > 0 (got "
+                                              << settings_.tolerance << ")");
+  FE_CHECK(region.empty() || settings_.contact == ContactKind::sticking,
+           "die '" << settings_.name << "': only a sticking die glues a region");
+  // Each triangle once, whichever list it comes from, so a region inside the candidate surface
+  // does not double the area.
+  std::set<std::array<int, 3>> seen;
+  std::vector<std::array<int, 3>> all;
+  for (const auto* list : {&candidates, &region})
+    for (auto t : *list) {
+      std::sort(t.begin(), t.end());
+      if (seen.insert(t).second) all.push_back(t);
+    }
+  for (const auto& [node, area] : tributary_areas(mesh_, all)) {
+    nodes_.push_back(node);
+    areas_.push_back(area);
+  }
+  state_.resize(nodes_.size());
+  // Region nodes are glued where they are at t = 0: at their reference positions (C13).
+  std::set<int> region_nodes;
+  for (const auto& t : region) region_nodes.insert(t.begin(), t.end());
+  for (size_t i = 0; i < nodes_.size(); ++i)
+    if (region_nodes.count(nodes_[i])) {
+      state_[i].glued = true;
+      state_[i].anchor = mesh_.nodes[nodes_[i]] - die_.point(0.0);
+    }
+  accepted_ = state_;
+}
+
+Vec3d DieContact::position(int i, std::span<const double> x) const {
+  const int v = nodes_[i];
+  return mesh_.nodes[v] + Vec3d(x[node_dof(v, 0)], x[node_dof(v, 1)], x[node_dof(v, 2)]);
+}
+
+DieContact::NodeResponse DieContact::respond(int i, double t, std::span<const double> x,
+                                             bool with_tangent) const {
+  NodeResponse out;
+  const NodeState& s = state_[i];
+  const double A = areas_[i], eps = settings_.penalty;
+  const Vec3d xi = position(i, x);
+  if (s.glued) {
+    // Tie to the die point: d = x - (c(t) + s), f = A (Lambda - eps d), K = A eps I   (C12)
+    const Vec3d d = xi - (die_.point(t) + s.anchor);
+    out.force = A * (s.glue_multiplier - eps * d);
+    if (with_tangent) out.K = A * eps * Mat3d::Identity();
+    out.active = true;
+    out.violation = d.norm();
+    return out;
+  }
+  const DieGap gap = die_.gap(xi, t);
+  out.violation = std::max(0.0, -gap.g);
+  // lambda_hat = max(0, lambda - eps g), f = A lambda_hat n   (C6)
+  const double lambda_hat = s.multiplier - eps * gap.g;
+  if (lambda_hat <= 0.0) return out;
+  out.active = true;
+  out.force = A * lambda_hat * gap.n;
+  // K = -df/dx = A (eps n n^T - lambda_hat H)   (C8)
+  if (with_tangent) out.K = A * (eps * gap.n * gap.n.transpose() - lambda_hat * gap.H);
+  return out;
+}
+
+void DieContact::assemble(double t, std::span<const double> x, std::span<double> residual,
+                          TangentSink* tangent) {
+  time_ = t;
+  std::array<int, 3> dofs;
+  Eigen::Matrix<double, 3, 3, Eigen::RowMajor> k;
+  for (size_t i = 0; i < nodes_.size(); ++i) {
+    const NodeResponse r = respond(static_cast<int>(i), t, x, tangent != nullptr);
+    if (!r.active) continue;
+    for (int c = 0; c < 3; ++c) {
+      dofs[c] = node_dof(nodes_[i], c);
+      residual[dofs[c]] -= r.force[c];  // residual = internal - external force (C7)
+    }
+    if (!tangent) continue;
+    k = r.K;
+    tangent->add(dofs, dofs, std::span<const double>(k.data(), 9));
+  }
+}
+
+bool DieContact::update_multipliers(std::span<const double> x) {
+  if (violation(time_, x) <= settings_.tolerance) return false;
+  const double eps = settings_.penalty;
+  for (size_t i = 0; i < nodes_.size(); ++i) {
+    NodeState& s = state_[i];
+    const Vec3d xi = position(static_cast<int>(i), x);
+    if (s.glued) {
+      // Lambda <- Lambda - eps d   (C14)
+      s.glue_multiplier -= eps * (xi - (die_.point(time_) + s.anchor));
+    } else {
+      // lambda <- max(0, lambda - eps g)   (C9)
+      s.multiplier = std::max(0.0, s.multiplier - eps * die_.gap(xi, time_).g);
+    }
+  }
+  return true;
+}
+
+void DieContact::accept_step(std::span<const double> x) {
+  if (settings_.contact == ContactKind::sticking) {
+    const double eps = settings_.penalty;
+    for (size_t i = 0; i < nodes_.size(); ++i) {
+      NodeState& s = state_[i];
+      if (s.glued) continue;
+      const Vec3d xi = position(static_cast<int>(i), x);
+      const DieGap gap = die_.gap(xi, time_);
+      const double lambda_hat = std::max(0.0, s.multiplier - eps * gap.g);
+      if (gap.g > settings_.touch_slack && lambda_hat <= 0.0) continue;
+      // Glue to the closest die point x - g n, with Lambda = (lambda_hat + eps g) n so the force
+      // of the node does not jump (C13).
+      s.glued = true;
+      s.anchor = xi - gap.g * gap.n - die_.point(time_);
+      s.glue_multiplier = (lambda_hat + eps * gap.g) * gap.n;
+    }
+  }
+  accepted_ = state_;
+}
+
+void DieContact::reject_step() { state_ = accepted_; }
+
+std::vector<std::string> DieContact::history_columns() const {
+  const std::string& n = settings_.name;
+  return {"force_x:" + n, "force_y:" + n, "force_z:" + n, "contact_nodes:" + n, "penetration:" + n};
+}
+
+std::vector<double> DieContact::history_values(double t, std::span<const double> x) const {
+  const Vec3d f = force_on_die(t, x);
+  return {f[0], f[1], f[2], static_cast<double>(n_contact_nodes(t, x)), violation(t, x)};
+}
+
+Vec3d DieContact::force_on_die(double t, std::span<const double> x) const {
+  // F_die = - sum_v f_v   (C15)
+  Vec3d sum = Vec3d::Zero();
+  for (size_t i = 0; i < nodes_.size(); ++i) sum -= respond(static_cast<int>(i), t, x, false).force;
+  return sum;
+}
+
+double DieContact::violation(double t, std::span<const double> x) const {
+  double worst = 0.0;
+  for (size_t i = 0; i < nodes_.size(); ++i)
+    worst = std::max(worst, respond(static_cast<int>(i), t, x, false).violation);
+  return worst;
+}
+
+int DieContact::n_contact_nodes(double t, std::span<const double> x) const {
+  int n = 0;
+  for (size_t i = 0; i < nodes_.size(); ++i) n += respond(static_cast<int>(i), t, x, false).active;
+  return n;
+}
+
+int DieContact::n_glued() const {
+  return static_cast<int>(
+      std::count_if(state_.begin(), state_.end(), [](const NodeState& s) { return s.glued; }));
+}
+
+bool DieContact::glued(int node) const {
+  const auto it = std::lower_bound(nodes_.begin(), nodes_.end(), node);
+  return it != nodes_.end() && *it == node && state_[it - nodes_.begin()].glued;
+}
+
+double DieContact::area(int node) const {
+  const auto it = std::lower_bound(nodes_.begin(), nodes_.end(), node);
+  return it != nodes_.end() && *it == node ? areas_[it - nodes_.begin()] : 0.0;
+}
+
+namespace {
+
+/// The whole boundary except the faces on symmetry planes: those are cuts through the body, and
+/// their area would inflate the tributary area of the nodes on the cut (contact.md, C5).
+std::vector<std::array<int, 3>> default_candidates(const Case& c, const Mesh& mesh) {
+  std::set<std::array<int, 3>> cut;
+  for (const BoundaryCondition& bc : c.boundary) {
+    if (bc.type != BoundaryType::symmetry) continue;
+    for (int t : mesh.surface_tags.at(bc.surface.name)) {
+      auto key = mesh.triangles[t];
+      std::sort(key.begin(), key.end());
+      cut.insert(key);
+    }
+  }
+  std::vector<std::array<int, 3>> out;
+  for (const auto& face : boundary_faces(mesh))
+    if (!cut.count(face)) out.push_back(face);
+  return out;
+}
+
+}  // namespace
+
+double default_die_penalty(double shear_modulus, double element_size) {
+  // epsilon = 10 mu / h   (C11)
+  return 10.0 * shear_modulus / element_size;
+}
+
+std::unique_ptr<ModelTerm> make_die_term(const Die& die, const Case& c, const Mesh& mesh,
                                          const std::vector<ConstrainedComponent>&) {
-  throw InputError(die.place, "rigid dies are not implemented yet");
+  const auto candidates =
+      die.surface ? outward_triangles(mesh, die.surface->name) : default_candidates(c, mesh);
+  if (candidates.empty()) throw InputError(die.place, "the die's contact surface is empty");
+  const auto region =
+      die.region ? outward_triangles(mesh, die.region->name) : std::vector<std::array<int, 3>>{};
+  const double h = mean_edge_length(mesh, candidates);
+  DieContactSettings settings;
+  settings.name = die.name;
+  settings.contact = die.contact;
+  settings.tolerance = die.tolerance;
+  settings.touch_slack = 1e-9 * h;
+  settings.penalty =
+      die.penalty > 0.0 ? die.penalty
+                        : default_die_penalty(
+                              shear_modulus(make_material(c.material.model, c.material.params)), h);
+  return std::make_unique<DieContact>(mesh, DieGeometry(die), settings, candidates, region);
 }
 
 }  // namespace plisse

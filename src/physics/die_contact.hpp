@@ -1,16 +1,104 @@
 #pragma once
 /// Contact between the body and a rigid analytic die (plane, sphere, cylinder) with prescribed
-/// motion: frictionless (unilateral) or sticking.
+/// motion: frictionless (unilateral) or sticking ("bilateral sticking": a node that touches stays
+/// glued to the die point it touched). Node-based augmented Lagrangian with a penalty per unit
+/// area, so forces do not depend on the mesh (docs/theory/contact.md).
+#include <array>
 #include <memory>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "io/case.hpp"
+#include "physics/die_geometry.hpp"
 #include "physics/dirichlet.hpp"
 #include "physics/model_term.hpp"
 
 namespace plisse {
 
-/// The term for `die` (borrows `mesh`).
+struct DieContactSettings {
+  std::string name;  ///< history columns force_x:<name> ...
+  ContactKind contact = ContactKind::frictionless;
+  double penalty = 0.0;     ///< epsilon [MPa/mm = N/mm^3], > 0: contact pressure per unit gap
+  double tolerance = 1e-3;  ///< largest penetration (glued: distance to the anchor) [mm], > 0
+  /// A node with gap g <= touch_slack [mm] touches (round-off allowance, contact.md C13).
+  double touch_slack = 0.0;
+};
+
+class DieContact : public ModelTerm {
+ public:
+  /// Contact of the nodes of `candidates` (triangles, reference tributary areas C5) with `die`;
+  /// sticking only: the nodes of `region` are glued from the start at their reference positions
+  /// (their area counts the triangles of both lists, each once). Borrows `mesh`.
+  /// Throws plisse::Error when penalty or tolerance is not > 0, or frictionless with a region.
+  DieContact(const Mesh& mesh, DieGeometry die, DieContactSettings settings,
+             const std::vector<std::array<int, 3>>& candidates,
+             const std::vector<std::array<int, 3>>& region = {});
+
+  /// Residual -f_v on each node v in contact (f_v: force of the die on the body) and its tangent,
+  /// symmetric (contact.md, C6-C8, C12). Remembers t for the updates below.
+  void assemble(double t, std::span<const double> x, std::span<double> residual,
+                TangentSink* tangent) override;
+  /// When the largest violation at x exceeds the tolerance: Uzawa update of every multiplier
+  /// (C9, C14) and true; else false and nothing changes.
+  bool update_multipliers(std::span<const double> x) override;
+  /// Sticking: glues the nodes that touch the die at x (C13); keeps multipliers and glue state.
+  void accept_step(std::span<const double> x) override;
+  /// Back to the multipliers and glue state of the last accepted step.
+  void reject_step() override;
+
+  /// force_x/y/z:<name> (force of the body ON the die [N], C15), contact_nodes:<name>,
+  /// penetration:<name> [mm] (largest violation, C10).
+  std::vector<std::string> history_columns() const override;
+  std::vector<double> history_values(double t, std::span<const double> x) const override;
+
+  /// Force exerted by the body on the die at (t, x) [N] (C15).
+  Vec3d force_on_die(double t, std::span<const double> x) const;
+  /// Largest constraint violation [mm]: penetration -g of sliding nodes, |x - anchor| of glued
+  /// ones (C10); 0 when nothing touches.
+  double violation(double t, std::span<const double> x) const;
+  /// Nodes carrying a contact force (sliding with lambda_hat > 0) plus glued nodes.
+  int n_contact_nodes(double t, std::span<const double> x) const;
+  int n_glued() const;
+  bool glued(int node) const;
+  double penalty() const { return settings_.penalty; }
+  /// Tributary area of `node` [mm^2]; 0 for a node not on the contact surface.
+  double area(int node) const;
+
+ private:
+  /// Per node: what the augmented Lagrangian carries from step to step.
+  struct NodeState {
+    bool glued = false;
+    double multiplier = 0.0;                ///< lambda [MPa], sliding nodes (C6)
+    Vec3d glue_multiplier = Vec3d::Zero();  ///< Lambda [MPa], glued nodes (C12)
+    Vec3d anchor = Vec3d::Zero();           ///< glue point minus the die point at gluing [mm]
+  };
+  /// Force of the die on node i and its derivative K = -df/dx (C6-C8, C12).
+  struct NodeResponse {
+    Vec3d force = Vec3d::Zero();
+    Mat3d K = Mat3d::Zero();
+    bool active = false;     ///< carries a force (sliding) or glued
+    double violation = 0.0;  ///< C10
+  };
+  NodeResponse respond(int i, double t, std::span<const double> x, bool with_tangent) const;
+  Vec3d position(int i, std::span<const double> x) const;
+
+  const Mesh& mesh_;
+  DieGeometry die_;
+  DieContactSettings settings_;
+  std::vector<int> nodes_;     ///< mesh node of each contact node, increasing
+  std::vector<double> areas_;  ///< reference tributary area [mm^2]
+  std::vector<NodeState> state_, accepted_;
+  double time_ = 0.0;  ///< time of the last assemble (updates and gluing happen there)
+};
+
+/// Default penalty when the case gives 0: epsilon = 10 mu / h [MPa/mm], mu the small-strain shear
+/// modulus, h the mean edge length of the contact surface (contact.md, C11).
+double default_die_penalty(double shear_modulus, double element_size);
+
+/// The term for `die` (borrows `mesh`): candidates are the nodes of `die.surface`, or of the whole
+/// boundary without the faces on the case's symmetry planes; the penalty defaults to C11 with the
+/// case's material. Throws InputError (at the die) when the candidate surface is empty.
 std::unique_ptr<ModelTerm> make_die_term(const Die& die, const Case& c, const Mesh& mesh,
                                          const std::vector<ConstrainedComponent>& constraints);
 

@@ -1,0 +1,63 @@
+#include "physics/die_geometry.hpp"
+
+#include <cmath>
+
+namespace plisse {
+
+DieGeometry::DieGeometry(DieShape shape, const Vec3d& point, const Vec3d& normal, const Vec3d& axis,
+                         double radius, const Vec3d& displacement, Ramp ramp)
+    : shape_(shape),
+      point_(point),
+      normal_(normal),
+      axis_(axis),
+      radius_(radius),
+      displacement_(displacement),
+      ramp_(ramp) {
+  if (shape == DieShape::plane)
+    FE_CHECK(std::abs(normal.norm() - 1.0) < 1e-12, "die normal must be a unit vector");
+  if (shape == DieShape::cylinder)
+    FE_CHECK(std::abs(axis.norm() - 1.0) < 1e-12, "die axis must be a unit vector");
+  if (shape != DieShape::plane)
+    FE_CHECK(radius > 0.0, "die radius must be > 0 (got " << radius << ")");
+}
+
+DieGeometry::DieGeometry(const Die& die)
+    : DieGeometry(die.shape, die.point, die.normal, die.axis, die.radius, die.displacement,
+                  die.ramp) {}
+
+DieGap DieGeometry::gap(const Vec3d& x, double t) const {
+  DieGap out;
+  const Vec3d c = point(t);
+  switch (shape_) {
+    case DieShape::plane:
+      // g = n . (x - c), n constant, H = 0   (contact.md, C2)
+      out.g = normal_.dot(x - c);
+      out.n = normal_;
+      out.H.setZero();
+      break;
+    case DieShape::sphere: {
+      // g = |x - c| - R, n = (x - c)/|x - c|, H = (I - n n^T)/|x - c|   (C3)
+      const Vec3d r = x - c;
+      const double distance = r.norm();
+      FE_CHECK(distance > 1e-12 * radius_, "point at the centre of a spherical die: no normal");
+      out.g = distance - radius_;
+      out.n = r / distance;
+      out.H = (Mat3d::Identity() - out.n * out.n.transpose()) / distance;
+      break;
+    }
+    case DieShape::cylinder: {
+      // r = P (x - c) with P = I - a a^T; g = |r| - R, n = r/|r|, H = (P - n n^T)/|r|   (C4)
+      const Mat3d P = Mat3d::Identity() - axis_ * axis_.transpose();
+      const Vec3d r = P * (x - c);
+      const double distance = r.norm();
+      FE_CHECK(distance > 1e-12 * radius_, "point on the axis of a cylindrical die: no normal");
+      out.g = distance - radius_;
+      out.n = r / distance;
+      out.H = (P - out.n * out.n.transpose()) / distance;
+      break;
+    }
+  }
+  return out;
+}
+
+}  // namespace plisse
