@@ -35,14 +35,28 @@ inline std::vector<int> tag_nodes(const Mesh& mesh, const std::string& name) {
   return nodes;
 }
 
+/// This process's directory for test files, removed at exit (see ScratchCleanup).
+inline std::filesystem::path scratch_root() {
+  return std::filesystem::temp_directory_path() /
+         ("plisse_mesh_test_" + std::to_string(::getpid()));
+}
+
 /// A fresh directory for this test's files (removed and recreated on each call).
 inline std::filesystem::path scratch_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("plisse_mesh_test_" + std::to_string(::getpid())) / name;
+  const auto dir = scratch_root() / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
 }
+
+/// Removes scratch_root() when the test program ends.
+struct ScratchCleanup {
+  ~ScratchCleanup() {
+    std::error_code ignored;
+    std::filesystem::remove_all(scratch_root(), ignored);
+  }
+};
+inline ScratchCleanup scratch_cleanup;
 
 inline std::string data_file(const std::string& name) {
   return std::string(PLISSE_SOURCE_DIR) + "/tests/data/meshes/" + name;
