@@ -1,10 +1,146 @@
 #include "physics/cavity.hpp"
 
-namespace plisse {
+#include <map>
+#include <sstream>
 
-std::unique_ptr<ModelTerm> make_cavity_term(const Cavity& cavity, const Mesh&,
-                                            const std::vector<ConstrainedComponent>&) {
-  throw InputError(cavity.place, "cavities are not implemented yet");
+#include "physics/cavity_volume.hpp"
+#include "physics/pressure_load.hpp"
+#include "physics/surface.hpp"
+
+namespace plisse {
+namespace {
+
+/// [v]x, the matrix of the cross product: [v]x w = v x w.
+Mat3d skew(const Vec3d& v) {
+  Mat3d s;
+  s << 0, -v[2], v[1], v[2], 0, -v[0], -v[1], v[0], 0;
+  return s;
+}
+
+std::string describe_node(const Mesh& mesh, int node) {
+  std::ostringstream out;
+  const Vec3d& X = mesh.nodes[node];
+  out << node << " (" << X[0] << ", " << X[1] << ", " << X[2] << ")";
+  return out.str();
+}
+
+}  // namespace
+
+CavityTerm::CavityTerm(const Cavity& cavity, const Mesh& mesh,
+                       const std::vector<ConstrainedComponent>& constraints)
+    : mesh_(mesh), cavity_(cavity), triangles_(outward_triangles(mesh, cavity.surface.name)) {
+  const InputPlace& place = cavity.surface.place;
+  if (const auto edge = first_open_edge(mesh, triangles_)) {
+    int count = 0;
+    for (const auto& t : triangles_)
+      for (int k = 0; k < 3; ++k)
+        count += (t[k] == (*edge)[0] && t[(k + 1) % 3] == (*edge)[1]) ||
+                 (t[k] == (*edge)[1] && t[(k + 1) % 3] == (*edge)[0]);
+    std::ostringstream rule;
+    rule << "surface '" << cavity.surface.name << "' of cavity '" << cavity.name
+         << "' is not closed: the edge between nodes " << describe_node(mesh, (*edge)[0]) << " and "
+         << describe_node(mesh, (*edge)[1]) << " belongs to " << count
+         << " triangle(s) of it and does not lie on a symmetry plane x = 0, y = 0 or z = 0; a "
+            "cavity's wall must be closed, or closed by those planes (docs/theory/cavities.md, C2)";
+    throw InputError(place, rule.str());
+  }
+  reference_volume_ = volume(std::vector<double>(kValuesPerNode * mesh.n_nodes(), 0.0));
+  if (!(reference_volume_ > 0.0)) {
+    std::ostringstream rule;
+    rule << "surface '" << cavity.surface.name << "' of cavity '" << cavity.name
+         << "' encloses the volume " << reference_volume_
+         << " mm^3, which is not positive: a cavity lies on the side of its wall away from the "
+            "body (e.g. a balloon's 'inner' surface, not 'outer')";
+    throw InputError(place, rule.str());
+  }
+  const std::set<int> nodes = surface_nodes(triangles_);
+  nodes_.assign(nodes.begin(), nodes.end());
+  symmetric_ = pressure_stiffness_is_symmetric(mesh, triangles_, constraints);
+}
+
+void CavityTerm::add_couplings(std::vector<std::pair<int, int>>& pairs) const {
+  for (int v : nodes_)
+    for (int i = 0; i < 3; ++i) {
+      pairs.emplace_back(pressure_dof_, node_dof(v, i));
+      pairs.emplace_back(node_dof(v, i), pressure_dof_);
+    }
+  pairs.emplace_back(pressure_dof_, pressure_dof_);
+}
+
+double CavityTerm::volume(std::span<const double> x) const {
+  return cavity_volume(mesh_, triangles_, x);
+}
+
+double CavityTerm::fluid_volume(double p_c, double t) const {
+  const double ramp = cavity_.ramp.factor(t);
+  if (cavity_.control == CavityControl::volume)  // (cavities.md, C8)
+    return reference_volume_ * (1.0 + (cavity_.volume_ratio - 1.0) * ramp);
+  // (C9): V_c = (p0 + p_amb) V0 m(t) / (p_c + p_amb)
+  const double p_amb = cavity_.ambient_pressure;
+  FE_CHECK(p_c + p_amb > 0.0, "cavity '" << cavity_.name
+                                         << "': the absolute gas pressure p_c + p_amb = "
+                                         << p_c + p_amb << " MPa is not positive");
+  const double mass = 1.0 + (cavity_.mass_ratio - 1.0) * ramp;
+  return (cavity_.initial_pressure + p_amb) * reference_volume_ * mass / (p_c + p_amb);
+}
+
+double CavityTerm::fluid_volume_derivative(double p_c, double t) const {
+  if (cavity_.control == CavityControl::volume) return 0.0;
+  return -fluid_volume(p_c, t) / (p_c + cavity_.ambient_pressure);  // (C11)
+}
+
+void CavityTerm::assemble(double t, std::span<const double> x, std::span<double> residual,
+                          TangentSink* tangent) {
+  FE_ASSERT(pressure_dof_ >= 0);
+  const double p = x[pressure_dof_];
+  const double fluid = fluid_volume(p, t);
+  // One bordered 10 x 10 block per triangle: its 9 displacement dofs and p_c.
+  std::array<int, 10> dofs;
+  dofs[9] = pressure_dof_;
+  Eigen::Matrix<double, 10, 10, Eigen::RowMajor> k;
+  k.setZero();
+  double six_volume = 0.0;
+  for (const auto& tri : triangles_) {
+    std::array<Vec3d, 3> xs;
+    for (int a = 0; a < 3; ++a) {
+      xs[a] = deformed_position(mesh_, x, tri[a]);
+      for (int i = 0; i < 3; ++i) dofs[3 * a + i] = node_dof(tri[a], i);
+    }
+    const Vec3d c = (xs[1] - xs[0]).cross(xs[2] - xs[0]);
+    six_volume -= xs[0].dot(xs[1].cross(xs[2]));  // (C1)
+    for (int a = 0; a < 3; ++a)
+      for (int i = 0; i < 3; ++i) residual[dofs[3 * a + i]] += p * c[i] / 6.0;  // (C6)
+    if (!tangent) continue;
+    // (C10): follower-pressure stiffness (p/6) dc/dx_b
+    const std::array<Mat3d, 3> dc = {skew(xs[2] - xs[1]), skew(xs[0] - xs[2]), skew(xs[1] - xs[0])};
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) k.block<3, 3>(3 * a, 3 * b) = (p / 6.0) * dc[b];
+    // (C11): column d r_u / d p_c = c/6; row d r_p / d x_a = (1/6) x_{a+1} x x_{a+2}
+    for (int a = 0; a < 3; ++a) {
+      k.block<3, 1>(3 * a, 9) = c / 6.0;
+      k.block<1, 3>(9, 3 * a) = xs[(a + 1) % 3].cross(xs[(a + 2) % 3]).transpose() / 6.0;
+    }
+    tangent->add(dofs, dofs, std::span<const double>(k.data(), 100));
+  }
+  residual[pressure_dof_] += -(six_volume / 6.0 - fluid);  // (C7)
+  if (tangent) {
+    const double d = fluid_volume_derivative(p, t);  // always inserted: a diagonal entry exists
+    tangent->add(std::span<const int>(&pressure_dof_, 1), std::span<const int>(&pressure_dof_, 1),
+                 std::span<const double>(&d, 1));
+  }
+}
+
+std::vector<std::string> CavityTerm::history_columns() const {
+  return {"pressure:" + cavity_.name, "volume:" + cavity_.name};
+}
+
+std::vector<double> CavityTerm::history_values(double, std::span<const double> x) const {
+  return {x[pressure_dof_], volume(x)};
+}
+
+std::unique_ptr<ModelTerm> make_cavity_term(const Cavity& cavity, const Mesh& mesh,
+                                            const std::vector<ConstrainedComponent>& constraints) {
+  return std::make_unique<CavityTerm>(cavity, mesh, constraints);
 }
 
 }  // namespace plisse

@@ -1,7 +1,10 @@
 #pragma once
 /// A fluid-filled cavity bounded by a tagged surface (closed, or closed by symmetry planes through
-/// the origin): volume control or an ideal gas, with the cavity pressure as a global unknown.
+/// the origin): volume control or an ideal gas, with the cavity pressure as a global unknown
+/// (docs/theory/cavities.md).
+#include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "io/case.hpp"
@@ -9,6 +12,50 @@
 #include "physics/model_term.hpp"
 
 namespace plisse {
+
+/// The cavity term: the gauge pressure p_c [MPa] is one global unknown that pushes on the wall
+/// like a follower pressure (virtual work p_c dV), and its equation is
+///   -(V(x) - V_c(p_c, t)) = 0   (cavities.md, C7)
+/// with V_c the prescribed volume (C8) or the volume of an isothermal ideal gas at p_c (C9).
+/// History columns `pressure:<name>` (p_c) and `volume:<name>` (V, C1).
+class CavityTerm : public ModelTerm {
+ public:
+  /// Borrows `mesh`. Throws InputError at `cavity.surface.place` when the surface breaks the
+  /// closure rule (C2) or encloses no positive volume. `constraints` decide symmetric().
+  CavityTerm(const Cavity& cavity, const Mesh& mesh,
+             const std::vector<ConstrainedComponent>& constraints);
+
+  int n_global_unknowns() const override { return 1; }
+  void set_first_global_dof(int dof) override { pressure_dof_ = dof; }
+  /// (p_c, u) and (u, p_c) for every displacement component of the wall's nodes, and (p_c, p_c).
+  void add_couplings(std::vector<std::pair<int, int>>& pairs) const override;
+  /// True when pressure_stiffness_is_symmetric holds for the wall (cavities.md, C5 and C11).
+  bool symmetric() const override { return symmetric_; }
+  /// Residual (C6)-(C7) and bordered tangent (C10)-(C11). Throws plisse::Error when a gas
+  /// cavity's absolute pressure p_c + p_amb is not positive (the step is then cut back).
+  void assemble(double t, std::span<const double> x, std::span<double> residual,
+                TangentSink* tangent) override;
+  std::vector<std::string> history_columns() const override;
+  std::vector<double> history_values(double t, std::span<const double> x) const override;
+
+  /// V(x) [mm^3] (C1) and the reference volume V0 = V(0).
+  double volume(std::span<const double> x) const;
+  double reference_volume() const { return reference_volume_; }
+  /// V_c(p_c, t) and its derivative d V_c / d p_c (C8, C9).
+  double fluid_volume(double p_c, double t) const;
+  double fluid_volume_derivative(double p_c, double t) const;
+  /// Full-state index of p_c (valid after set_first_global_dof).
+  int pressure_dof() const { return pressure_dof_; }
+
+ private:
+  const Mesh& mesh_;
+  Cavity cavity_;
+  std::vector<std::array<int, 3>> triangles_;  ///< oriented with the body's outward normal
+  std::vector<int> nodes_;                     ///< distinct nodes of the wall
+  double reference_volume_ = 0.0;
+  bool symmetric_ = false;
+  int pressure_dof_ = -1;
+};
 
 /// The term for `cavity` (borrows `mesh`).
 std::unique_ptr<ModelTerm> make_cavity_term(const Cavity& cavity, const Mesh& mesh,
