@@ -12,6 +12,7 @@
 #include "material/registry.hpp"
 #include "mesh/quality.hpp"
 #include "physics/dirichlet.hpp"
+#include "physics/terms.hpp"
 #include "app/run_case.hpp"
 
 namespace plisse::app {
@@ -58,7 +59,8 @@ void check_case(const CheckOptions& options) {
   const Mesh mesh = load_case_mesh(c);
   check_case_against_mesh(c, mesh);
   // The same rules `plisse run` applies before solving (symmetry planes, conflicting conditions).
-  collect_constraints(c, mesh);
+  const auto constraints = collect_constraints(c, mesh);
+  make_terms(c, mesh, constraints);  // loads, cavities and dies validate their surfaces here
   const MeshReport report = check_mesh(mesh);
 
   std::ostream& out = std::cout;
