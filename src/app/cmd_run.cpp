@@ -18,6 +18,9 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--petsc", options->petsc_options,
                   "PETSc options, e.g. --petsc \"-snes_monitor -ksp_view\" (repeatable)")
       ->allow_extra_args(false);
+  cmd->add_option("--resume", options->resume_directory,
+                  "Continue an interrupted run from DIR/checkpoint.bin (same case and --set "
+                  "values; DIR is also the output directory)");
   cmd->callback([options] { run_case(*options); });
 }
 

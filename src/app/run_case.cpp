@@ -2,7 +2,10 @@
 
 #include <sys/resource.h>
 
+#include <atomic>
 #include <chrono>
+#include <csignal>
+#include <optional>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -10,6 +13,8 @@
 
 #include "core/error.hpp"
 #include "io/case.hpp"
+#include "io/atomic_file.hpp"
+#include "io/checkpoint.hpp"
 #include "io/history_writer.hpp"
 #include "io/json_file.hpp"
 #include "io/pvd_writer.hpp"
@@ -27,6 +32,31 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
+
+volatile std::sig_atomic_t g_interrupt = 0;
+extern "C" void on_interrupt(int) { g_interrupt = 1; }
+
+/// SIGINT/SIGTERM set a flag for the duration of a run; the run checkpoints after the current step
+/// and stops. The previous handlers come back at the end.
+class InterruptGuard {
+ public:
+  InterruptGuard() {
+    g_interrupt = 0;
+    previous_int_ = std::signal(SIGINT, on_interrupt);
+    previous_term_ = std::signal(SIGTERM, on_interrupt);
+  }
+  ~InterruptGuard() {
+    std::signal(SIGINT, previous_int_);
+    std::signal(SIGTERM, previous_term_);
+  }
+  InterruptGuard(const InterruptGuard&) = delete;
+  InterruptGuard& operator=(const InterruptGuard&) = delete;
+  bool requested() const { return g_interrupt != 0; }
+
+ private:
+  void (*previous_int_)(int) = SIG_DFL;
+  void (*previous_term_)(int) = SIG_DFL;
+};
 
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
@@ -135,9 +165,22 @@ std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh) {
 void run_case(const RunOptions& options) {
   const auto t_start = Clock::now();
   const Case c = parse_case_file(options.case_file, options.overrides);
-  const fs::path out_dir = options.output_directory.empty()
+  if (!options.resume_directory.empty() && !options.output_directory.empty() &&
+      fs::weakly_canonical(options.resume_directory) != fs::weakly_canonical(options.output_directory))
+    throw InputError({"command line", 0, 0, "--resume"},
+                     "a resumed run writes into its own directory; -o must be omitted or the same");
+  const fs::path out_dir = !options.resume_directory.empty() ? fs::path(options.resume_directory)
+                           : options.output_directory.empty()
                                ? fs::path("runs") / fs::path(options.case_file).stem()
                                : fs::path(options.output_directory);
+  const std::uint64_t fingerprint = case_fingerprint(options.case_file, options.overrides);
+  std::optional<Checkpoint> checkpoint;
+  if (!options.resume_directory.empty()) {
+    checkpoint = read_checkpoint(out_dir / "checkpoint.bin");
+    if (checkpoint->case_fingerprint != fingerprint)
+      throw InputError({(out_dir / "checkpoint.bin").string(), 0, 0, "--resume"},
+                       "the checkpoint was written for another case file or other --set values");
+  }
 
   auto t0 = Clock::now();
   const Mesh mesh = load_case_mesh(c);
@@ -154,11 +197,14 @@ void run_case(const RunOptions& options) {
 
   RunDirectory dir(out_dir);
   RunLog log(dir.log_txt());
+  if (checkpoint && fs::exists(dir.log_txt())) log.prepend(read_file(dir.log_txt()));
   log.info("plisse run " + options.case_file + (c.title.empty() ? "" : "  (" + c.title + ")"));
   log.info("output: " + dir.directory().string());
   for (const auto& o : options.overrides) log.info("  --set " + o);
 
-  PetscSession petsc({c.solver.petsc_options});
+  // PETSc's own signal handler would abort on SIGINT/SIGTERM; plisse checkpoints instead.
+  PetscSession petsc({"-no_signal_handler", c.solver.petsc_options});
+  InterruptGuard interrupts;
   for (const auto& o : options.petsc_options) PetscSession::insert_options(o);
 
   t0 = Clock::now();
@@ -177,8 +223,35 @@ void run_case(const RunOptions& options) {
   }
 
   HistoryColumns columns = history_columns(c, mesh, model);
-  HistoryWriter history(dir.history_csv(), columns.names);
-  PvdWriter pvd(dir.solution_pvd());
+  std::optional<HistoryWriter> history_file;
+  std::vector<PvdEntry> pvd_entries;
+  if (checkpoint) {
+    model.restore({checkpoint->state, checkpoint->bubbles, checkpoint->term_states});
+    stepper.resume({checkpoint->steps, checkpoint->time, checkpoint->dt, checkpoint->previous_dt,
+                    checkpoint->previous_state});
+    history_file.emplace(HistoryWriter::reopen(dir.history_csv()));
+    std::vector<std::string> expected = HistoryWriter::standard_columns();
+    expected.insert(expected.end(), columns.names.begin(), columns.names.end());
+    if (history_file->columns() != expected || history_file->rows().size() < size_t(checkpoint->steps))
+      throw InputError({dir.history_csv().string(), 0, 0, "--resume"},
+                       "history.csv does not match the checkpoint");
+    history_file->keep_first_rows(checkpoint->steps);
+    for (const PvdEntry& e : read_pvd(dir.solution_pvd()))
+      if (e.time <= checkpoint->time * (1.0 + 1e-12)) pvd_entries.push_back(e);
+    log.info("resuming after step " + std::to_string(checkpoint->steps) + " at t = " +
+             std::to_string(checkpoint->time));
+  } else {
+    history_file.emplace(dir.history_csv(), columns.names);
+  }
+  HistoryWriter& history = *history_file;
+  PvdWriter pvd(dir.solution_pvd(), pvd_entries);
+  const auto save_checkpoint = [&] {
+    const StepperState& st = stepper.state();
+    const MixedModel::Snapshot snap = model.snapshot();
+    write_checkpoint(dir.directory() / "checkpoint.bin",
+                     {fingerprint, st.steps, st.time, st.dt, st.previous_dt, st.previous_state,
+                      snap.state, snap.bubbles, snap.term_states});
+  };
   double time_output = 0.0;
   std::vector<double> previous_state = model.state();
   int last_written = -1;
@@ -229,6 +302,13 @@ void run_case(const RunOptions& options) {
                   info.residual_norm, info.cutbacks ? "  (after cut-back)" : "",
                   seconds_since(t_start));
     log.info(line);
+    if (c.output.checkpoint_every > 0 && info.step % c.output.checkpoint_every == 0) save_checkpoint();
+    if (interrupts.requested()) {
+      log.warn("interrupted by a signal: writing a checkpoint and stopping after step " +
+               std::to_string(info.step));
+      save_checkpoint();
+      stepper.request_stop();
+    }
     log.flush();
   };
 
@@ -239,6 +319,7 @@ void run_case(const RunOptions& options) {
   summary["case"] = options.case_file;
   summary["title"] = c.title;
   summary["completed"] = result.completed;
+  summary["interrupted"] = result.interrupted;
   if (!result.completed) summary["failure"] = result.failure;
   summary["nodes"] = mesh.n_nodes();
   summary["elements"] = mesh.n_tets();
@@ -275,6 +356,12 @@ void run_case(const RunOptions& options) {
                 result.cutbacks, seconds_since(t_start), times.assembly, times.linear_solve,
                 time_output, peak_memory_mib());
   log.info(line);
+  if (result.interrupted) {
+    log.flush();
+    throw SolverError("interrupted after step " + std::to_string(last_step.step) + " at t = " +
+                      std::to_string(last_step.time) + "; continue with: plisse run " +
+                      options.case_file + " --resume " + dir.directory().string());
+  }
   if (!result.completed) {
     log.error(result.failure);
     log.flush();

@@ -13,6 +13,7 @@ struct RunOptions {
   std::string output_directory;          ///< empty: runs/<case file stem>
   std::vector<std::string> overrides;    ///< --set key.path=value
   std::vector<std::string> petsc_options;  ///< --petsc "-snes_monitor ..."
+  std::string resume_directory;          ///< --resume DIR: continue from DIR/checkpoint.bin
 };
 
 /// What the case file allows but this build cannot solve yet (second-order meshes, loads,
@@ -21,8 +22,8 @@ struct RunOptions {
 std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh);
 
 /// Runs the case. Returns normally when the run reached its end time; throws InputError for bad
-/// input (nothing is solved) and SolverError when the solver stopped early (the last converged
-/// step is written first).
+/// input (nothing is solved) and SolverError when the solver stopped early or SIGINT/SIGTERM
+/// interrupted it (the last converged step and a checkpoint are written first).
 void run_case(const RunOptions& options);
 
 }  // namespace plisse::app

@@ -426,9 +426,10 @@ SolverSettings read_solver(const Field& field) {
 
 OutputSettings read_output(const Field& field) {
   const FieldMap m = field.map();
-  m.check_keys({"every", "deformed", "stretch_axis", "wrinkles"});
+  m.check_keys({"every", "checkpoint_every", "deformed", "stretch_axis", "wrinkles"});
   OutputSettings s;
   s.every = m.integer("every", s.every, Range::at_least(1));
+  s.checkpoint_every = m.integer("checkpoint_every", s.checkpoint_every, Range::at_least(0));
   s.deformed = m.boolean("deformed", s.deformed);
   if (const auto f = m.find("stretch_axis")) s.stretch_axis = f->choice(kAxes);
   if (const auto f = m.find("wrinkles")) {

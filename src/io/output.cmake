@@ -2,6 +2,7 @@
 # summary.json, log.txt, the run directory. Paths relative to src/io.
 set(PLISSE_IO_OUTPUT_SOURCES
   atomic_file.cpp
+  checkpoint.cpp
   history_writer.cpp
   json_file.cpp
   pvd_writer.cpp

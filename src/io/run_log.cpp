@@ -54,6 +54,13 @@ void RunLog::add(std::string_view prefix, std::string_view message, std::ostream
   if (echo != nullptr) echo->flush();
 }
 
+void RunLog::prepend(std::string_view text) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::string joined(text);
+  if (!joined.empty() && joined.back() != '\n') joined += '\n';
+  text_ = joined + text_;
+}
+
 void RunLog::flush() {
   if (log_file_.empty()) return;
   // Writing under the lock keeps concurrent flushes in order: the newest text lands last.

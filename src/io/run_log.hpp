@@ -38,6 +38,9 @@ class RunLog {
   /// if it cannot be written. No-op for a terminal-only log.
   void flush();
 
+  /// Puts `text` (the lines of an earlier log.txt, e.g. of the run being resumed) before the lines
+  /// of this log; it is not echoed.
+  void prepend(std::string_view text);
   /// Wall time since construction [s].
   double elapsed_seconds() const;
   /// The lines of log.txt so far, with their time prefix, without line breaks.

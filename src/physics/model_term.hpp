@@ -54,6 +54,11 @@ class ModelTerm {
   virtual void accept_step(std::span<const double> /*x*/) {}
   virtual void reject_step() {}
 
+  /// The term's own accepted state (e.g. glued contact points, multipliers) as numbers, for
+  /// checkpoints; load_state restores what save_state returned.
+  virtual std::vector<double> save_state() const { return {}; }
+  virtual void load_state(std::span<const double> /*state*/) {}
+
   /// Named history columns and their values at (t, x).
   virtual std::vector<std::string> history_columns() const { return {}; }
   virtual std::vector<double> history_values(double /*t*/, std::span<const double> /*x*/) const {

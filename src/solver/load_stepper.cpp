@@ -15,12 +15,24 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
   const double end = settings_.end_time;
   const double min_dt = settings_.min_step * end;
   const double max_dt = settings_.max_step * end;
-  double dt = std::min(end / settings_.steps, max_dt);
-  double t = 0.0, previous_dt = 0.0;
+  StepperState& st = current_;
+  if (resume_) {
+    // The model already holds the checkpoint's converged state.
+    st = *resume_;
+    resume_.reset();
+  } else {
+    st = StepperState{};
+    st.dt = std::min(end / settings_.steps, max_dt);
+    model_.set_time(0.0);
+    model_.save_converged();
+    st.previous_state = model_.converged_state();
+  }
+  double& dt = st.dt;
+  double& t = st.time;
+  double& previous_dt = st.previous_dt;
+  std::vector<double>& previous_state = st.previous_state;
+  result.steps = st.steps;
   int cutbacks_this_step = 0;
-  model_.set_time(0.0);
-  model_.save_converged();
-  std::vector<double> previous_state = model_.converged_state();
   char line[256];
   while (t < end * (1.0 - 1e-12)) {
     if (result.steps >= settings_.max_steps) {
@@ -89,6 +101,9 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
     previous_dt = step;
     t = t_new;
     ++result.steps;
+    st.steps = result.steps;
+    if (newton.iterations <= settings_.easy_iterations) dt = std::min(step * settings_.growth, max_dt);
+    else dt = step;
     StepInfo info;
     info.step = result.steps;
     info.time = t;
@@ -100,8 +115,11 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
     info.cutbacks = cutbacks_this_step;
     cutbacks_this_step = 0;
     on_step(info);
-    if (newton.iterations <= settings_.easy_iterations) dt = std::min(step * settings_.growth, max_dt);
-    else dt = step;
+    if (stop_requested_ && t < end * (1.0 - 1e-12)) {
+      result.interrupted = true;
+      result.failure = "interrupted at step " + std::to_string(result.steps);
+      return result;
+    }
   }
   result.completed = true;
   return result;

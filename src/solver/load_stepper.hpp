@@ -4,6 +4,7 @@
 /// an inverted element, a failed bubble solve) is retried with a smaller step (cut-back); after
 /// easy steps the step grows. Below the minimum step the run stops.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,11 +32,28 @@ struct SteppingResult {
   int newton_iterations = 0;  ///< total over converged and failed attempts
   int cutbacks = 0;
   std::string failure;  ///< why the run stopped early (empty when completed)
+  bool interrupted = false;  ///< stopped on request (request_stop), not by a failure
+};
+
+/// Where the stepping is, so that a run can continue from a checkpoint.
+struct StepperState {
+  int steps = 0;             ///< converged steps so far
+  double time = 0.0;         ///< time of the last converged step
+  double dt = 0.0;           ///< next step size (0: start from end_time / steps)
+  double previous_dt = 0.0;  ///< size of the last converged step (0: none yet)
+  std::vector<double> previous_state;  ///< converged state before the last one (predictor)
 };
 
 class LoadStepper {
  public:
   LoadStepper(MixedModel& model, const SolverSettings& settings);
+
+  /// Continue from `state` (the model must hold the matching converged state) instead of t = 0.
+  void resume(StepperState state) { resume_ = std::move(state); }
+  /// The state after the last converged step (valid inside the on_step callback and after run).
+  const StepperState& state() const { return current_; }
+  /// Asks run() to return after the current step (e.g. from a signal handler's flag check).
+  void request_stop() { stop_requested_ = true; }
 
   /// Runs to the end. `on_step` is called after every converged step with the model holding it;
   /// `log` receives progress lines.
@@ -47,6 +65,9 @@ class LoadStepper {
   MixedModel& model_;
   SolverSettings settings_;
   NewtonSolver newton_;
+  std::optional<StepperState> resume_;
+  StepperState current_;
+  bool stop_requested_ = false;
 };
 
 }  // namespace plisse

@@ -219,6 +219,29 @@ bool MixedModel::update_multipliers() {
   return again;
 }
 
+MixedModel::Snapshot MixedModel::snapshot() const {
+  Snapshot s;
+  s.state = converged_state_;
+  s.bubbles.reserve(converged_bubble_.size() * mini::kDofBubble);
+  for (const auto& b : converged_bubble_) s.bubbles.insert(s.bubbles.end(), b.data(), b.data() + b.size());
+  for (const auto& term : terms_) s.term_states.push_back(term->save_state());
+  return s;
+}
+
+void MixedModel::restore(const Snapshot& s) {
+  FE_CHECK(s.state.size() == state_.size() &&
+               s.bubbles.size() == bubble_.size() * mini::kDofBubble &&
+               s.term_states.size() == terms_.size(),
+           "the checkpoint does not fit this model (" << s.state.size() << " values for "
+                                                      << state_.size() << " dofs)");
+  state_ = s.state;
+  for (size_t e = 0; e < bubble_.size(); ++e)
+    bubble_[e] = Eigen::Map<const mini::BubbleVec>(s.bubbles.data() + e * mini::kDofBubble);
+  for (size_t k = 0; k < terms_.size(); ++k) terms_[k]->load_state(s.term_states[k]);
+  converged_state_ = state_;
+  converged_bubble_ = bubble_;
+}
+
 void MixedModel::save_converged() {
   converged_state_ = state_;
   converged_bubble_ = bubble_;

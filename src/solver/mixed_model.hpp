@@ -76,6 +76,17 @@ class MixedModel {
   /// another solve of the step (ModelTerm::update_multipliers).
   bool update_multipliers();
 
+  /// Everything that defines the last converged state, as numbers (checkpoints).
+  struct Snapshot {
+    std::vector<double> state;    ///< full state
+    std::vector<double> bubbles;  ///< kDofBubble per element
+    std::vector<std::vector<double>> term_states;  ///< ModelTerm::save_state, per term
+  };
+  Snapshot snapshot() const;
+  /// Makes `s` the current and last converged state. Throws plisse::Error when its sizes do not
+  /// fit this model.
+  void restore(const Snapshot& s);
+
   /// Remember / return to the last converged state (state and bubbles).
   void save_converged();
   void restore_converged();

@@ -1,0 +1,136 @@
+// Requirement: a run killed at any moment (SIGKILL) and resumed with --resume gives the same
+// history as an uninterrupted run (relative difference < 1e-10), and leaves no truncated file;
+// SIGTERM stops a run cleanly with a checkpoint and exit status 1.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "io/history_writer.hpp"
+#include "io/json_file.hpp"
+#include "io/pvd_writer.hpp"
+#include "support/run_plisse.hpp"
+
+namespace plisse {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kCase = std::string(PLISSE_SOURCE_DIR) + "/tests/regression/restart-case.yaml";
+
+/// Starts `plisse run kCase -o dir` in the background; returns its pid.
+pid_t start_run(const fs::path& dir) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const std::string exe = std::string(PLISSE_BINARY_DIR) + "/bin/plisse";
+    const std::string log = dir.string() + ".log";
+    freopen(log.c_str(), "w", stdout);
+    freopen(log.c_str(), "a", stderr);
+    execl(exe.c_str(), exe.c_str(), "run", kCase.c_str(), "-o", dir.c_str(), nullptr);
+    _exit(127);
+  }
+  return pid;
+}
+
+/// Number of data rows in dir/history.csv (0 while it does not exist).
+size_t history_rows(const fs::path& dir) {
+  std::ifstream in(dir / "history.csv");
+  size_t lines = 0;
+  for (std::string line; std::getline(in, line);) ++lines;
+  return lines > 0 ? lines - 1 : 0;
+}
+
+void wait_for_rows(const fs::path& dir, size_t rows) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (history_rows(dir) < rows && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_GE(history_rows(dir), rows) << "the run did not get far enough";
+}
+
+/// Every file of the run directory parses whole (no truncated output).
+void expect_readable(const fs::path& dir) {
+  EXPECT_NO_THROW(read_history(dir / "history.csv"));
+  EXPECT_NO_THROW(read_pvd(dir / "solution.pvd"));
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_EQ(name.find(".tmp"), std::string::npos) << "temporary file left: " << name;
+    if (entry.path().extension() == ".vtu") {
+      std::ifstream in(entry.path(), std::ios::binary);
+      const std::string text((std::istreambuf_iterator<char>(in)), {});
+      EXPECT_NE(text.rfind("</VTKFile>"), std::string::npos) << name << " is truncated";
+    }
+  }
+}
+
+void expect_same_history(const fs::path& a, const fs::path& b) {
+  const HistoryTable ha = read_history(a / "history.csv"), hb = read_history(b / "history.csv");
+  ASSERT_EQ(ha.columns, hb.columns);
+  ASSERT_EQ(ha.rows.size(), hb.rows.size());
+  for (size_t r = 0; r < ha.rows.size(); ++r)
+    for (size_t k = 0; k < ha.columns.size(); ++k) {
+      const double x = ha.rows[r][k], y = hb.rows[r][k];
+      if (ha.columns[k] == "residual_norm") continue;  // round-off level, not a result
+      EXPECT_LE(std::abs(x - y), 1e-10 * std::max(1.0, std::abs(x)))
+          << "row " << r << ", column " << ha.columns[k];
+    }
+}
+
+TEST(Restart, KilledRunResumesToTheUninterruptedHistory) {
+  const fs::path reference = test::scratch_directory("restart-reference");
+  ASSERT_EQ(test::run_plisse("run " + kCase + " -o " + reference.string(), reference.string() + ".log"), 0);
+
+  const fs::path killed = test::scratch_directory("restart-killed");
+  const pid_t pid = start_run(killed);
+  wait_for_rows(killed, 6);
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed";
+  expect_readable(killed);
+
+  ASSERT_EQ(test::run_plisse("run " + kCase + " --resume " + killed.string(), killed.string() + ".resume.log"), 0)
+      << "see " << killed.string() << ".resume.log";
+  expect_same_history(reference, killed);
+  expect_readable(killed);
+  const auto summary = read_json_file(killed / "summary.json");
+  EXPECT_TRUE(summary["completed"].get<bool>());
+  EXPECT_EQ(read_pvd(killed / "solution.pvd").size(), read_pvd(reference / "solution.pvd").size());
+}
+
+TEST(Restart, TerminatedRunStopsWithCheckpointAndExitStatus1) {
+  const fs::path dir = test::scratch_directory("restart-terminated");
+  const pid_t pid = start_run(dir);
+  wait_for_rows(dir, 3);
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  EXPECT_TRUE(fs::exists(dir / "checkpoint.bin"));
+  const auto summary = read_json_file(dir / "summary.json");
+  EXPECT_TRUE(summary["interrupted"].get<bool>());
+  expect_readable(dir);
+  ASSERT_EQ(test::run_plisse("run " + kCase + " --resume " + dir.string(), dir.string() + ".resume.log"), 0);
+  EXPECT_TRUE(read_json_file(dir / "summary.json")["completed"].get<bool>());
+}
+
+TEST(Restart, CheckpointOfAnotherCaseIsRefused) {
+  const fs::path dir = test::scratch_directory("restart-other-case");
+  ASSERT_EQ(test::run_plisse("run " + kCase + " -o " + dir.string(), dir.string() + ".log"), 0);
+  const int status = test::run_plisse(
+      "run " + kCase + " --set material.c1=0.3 --resume " + dir.string(), dir.string() + ".bad.log");
+  EXPECT_EQ(status, 2);
+  std::ifstream in(dir.string() + ".bad.log");
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(text.find("checkpoint.bin"), std::string::npos) << text;
+  EXPECT_NE(text.find("another case"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace plisse
