@@ -1,0 +1,46 @@
+// The paper's case 1 as shipped in examples/sphere-indentation.yaml, on the coarser preview mesh
+// (element size 2 mm, 40 to 70 s): it runs to the end, the two plates carry equal and opposite
+// forces at every step (the pressure has no resultant along y in the quarter model), no node
+// penetrates a plate by more than the default tolerance, and the top pole ends on the punch.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "io/history_writer.hpp"
+#include "support/run_plisse.hpp"
+
+namespace plisse {
+namespace {
+
+TEST(SphereIndentationExample, RunsToTheEndWithBalancedPlatesAndNoPenetration) {
+  const auto dir = test::scratch_directory("contact-sphere-indentation");
+  const int status = test::run_plisse("run " + test::example("sphere-indentation.yaml") + " -o " +
+                                          dir.string() + " --set mesh.element_size=2",
+                                      dir.string() + ".log");
+  ASSERT_EQ(status, 0) << "see " << dir.string() << ".log";
+  const HistoryTable h = read_history(dir / "history.csv");
+  const auto col = [&](const std::string& name) {
+    const auto it = std::find(h.columns.begin(), h.columns.end(), name);
+    EXPECT_NE(it, h.columns.end()) << "no column " << name;
+    return static_cast<size_t>(it - h.columns.begin());
+  };
+  const size_t punch = col("force_y:punch"), floor = col("force_y:floor"),
+               punch_pen = col("penetration:punch"), floor_pen = col("penetration:floor"),
+               top = col("uy:top"), time = col("time");
+  const double tolerance = 1e-3;  // the dies' default `tolerance` [mm]
+  ASSERT_GE(h.rows.size(), 50u);
+  for (const auto& row : h.rows) {
+    const double scale = std::max(std::abs(row[punch]), 1e-6);
+    EXPECT_NEAR(row[punch] + row[floor], 0.0, 1e-8 * scale) << "t = " << row[time];
+    EXPECT_LE(row[punch_pen], tolerance) << "t = " << row[time];
+    EXPECT_LE(row[floor_pen], tolerance) << "t = " << row[time];
+  }
+  EXPECT_DOUBLE_EQ(h.rows.back()[time], 1.0);
+  // The top pole (y = 25) is pressed by the punch, whose plane ends at y = 27 - 10 = 17.
+  EXPECT_NEAR(h.rows.back()[top], -8.0, tolerance);
+  EXPECT_GT(h.rows.back()[punch], 0.0);
+}
+
+}  // namespace
+}  // namespace plisse
