@@ -6,6 +6,22 @@
 
 namespace plisse {
 
+std::string LoadStepper::describe_failure(const NewtonResult& newton) const {
+  const AssemblyStatus& status = newton.status;
+  std::string why = status.ok ? "Newton did not converge (" + newton.reason + ")"
+                              : "an element inverted or its bubble did not converge";
+  if (status.worst_element >= 0) {
+    const auto& tet = model_.mesh().tets[status.worst_element];
+    Vec3d centroid = Vec3d::Zero();
+    for (int v : tet) centroid += 0.25 * model_.mesh().nodes[v];
+    char where[160];
+    std::snprintf(where, sizeof where, "; worst element %d (reference centroid %.4g, %.4g, %.4g), min J %.3g",
+                  status.worst_element, centroid[0], centroid[1], centroid[2], status.min_J);
+    why += where;
+  }
+  return why;
+}
+
 LoadStepper::LoadStepper(MixedModel& model, const SolverSettings& settings)
     : model_(model), settings_(settings), newton_(model, settings.newton) {}
 
@@ -64,10 +80,7 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
         newton = newton_.solve();
         result.newton_iterations += newton.iterations;
         if (!newton.converged) {
-          failure = newton.status.ok ? "Newton did not converge (" + newton.reason + ")"
-                                     : "element " + std::to_string(newton.status.worst_element) +
-                                           " inverted or its bubble did not converge (min J " +
-                                           std::to_string(newton.status.min_J) + ")";
+          failure = describe_failure(newton);
           break;
         }
         if (!model_.update_multipliers()) break;
@@ -85,14 +98,14 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
       ++result.cutbacks;
       ++cutbacks_this_step;
       const double new_dt = step * settings_.cutback;
-      std::snprintf(line, sizeof line, "  step %d: t = %.6g failed after %d iterations: ",
+      std::snprintf(line, sizeof line, "step %d: t = %.6g failed after %d iterations: ",
                     result.steps + 1, t_new, newton.iterations);
       if (new_dt < min_dt) {
         result.failure = std::string(line) + failure + "; step " + std::to_string(new_dt) +
                          " below the minimum " + std::to_string(min_dt);
         return result;
       }
-      log(std::string(line) + failure + "; cutting the step to " + std::to_string(new_dt));
+      log("  " + std::string(line) + failure + "; cutting the step to " + std::to_string(new_dt));
       dt = new_dt;
       continue;
     }

@@ -62,6 +62,9 @@ class LoadStepper {
   PhaseTimes times() const { return newton_.times(); }
 
  private:
+  /// The reason of a failed Newton solve, naming the worst element and where it is.
+  std::string describe_failure(const NewtonResult& newton) const;
+
   MixedModel& model_;
   SolverSettings settings_;
   NewtonSolver newton_;
