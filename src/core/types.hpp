@@ -12,4 +12,11 @@ using Vec3d = Vec3<double>;
 using Mat9d = Eigen::Matrix<double, 9, 9>;
 using Vec9d = Eigen::Matrix<double, 9, 1>;
 
+/// [v]x, the matrix of the cross product: [v]x w = v x w.
+inline Mat3d cross_matrix(const Vec3d& v) {
+  Mat3d s;
+  s << 0, -v[2], v[1], v[2], 0, -v[0], -v[1], v[0], 0;
+  return s;
+}
+
 }  // namespace plisse

@@ -10,13 +10,6 @@
 namespace plisse {
 namespace {
 
-/// [v]x, the matrix of the cross product: [v]x w = v x w.
-Mat3d skew(const Vec3d& v) {
-  Mat3d s;
-  s << 0, -v[2], v[1], v[2], 0, -v[0], -v[1], v[0], 0;
-  return s;
-}
-
 std::string describe_node(const Mesh& mesh, int node) {
   std::ostringstream out;
   const Vec3d& X = mesh.nodes[node];
@@ -112,7 +105,7 @@ void CavityTerm::assemble(double t, std::span<const double> x, std::span<double>
       for (int i = 0; i < 3; ++i) residual[dofs[3 * a + i]] += p * c[i] / 6.0;  // (C6)
     if (!tangent) continue;
     // (C10): follower-pressure stiffness (p/6) dc/dx_b
-    const std::array<Mat3d, 3> dc = {skew(xs[2] - xs[1]), skew(xs[0] - xs[2]), skew(xs[1] - xs[0])};
+    const std::array<Mat3d, 3> dc = {cross_matrix(xs[2] - xs[1]), cross_matrix(xs[0] - xs[2]), cross_matrix(xs[1] - xs[0])};
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) k.block<3, 3>(3 * a, 3 * b) = (p / 6.0) * dc[b];
     // (C11): column d r_u / d p_c = c/6; row d r_p / d x_a = (1/6) x_{a+1} x x_{a+2}

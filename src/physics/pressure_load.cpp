@@ -7,17 +7,6 @@
 #include "physics/surface.hpp"
 
 namespace plisse {
-namespace {
-
-/// [v]x, the matrix of the cross product: [v]x w = v x w.
-Mat3d skew(const Vec3d& v) {
-  Mat3d s;
-  s << 0, -v[2], v[1], v[2], 0, -v[0], -v[1], v[0], 0;
-  return s;
-}
-
-}  // namespace
-
 bool pressure_stiffness_is_symmetric(const Mesh& mesh,
                                      const std::vector<std::array<int, 3>>& triangles,
                                      const std::vector<ConstrainedComponent>& constraints) {
@@ -76,7 +65,7 @@ void PressureLoad::assemble(double t, std::span<const double> x, std::span<doubl
       for (int i = 0; i < 3; ++i) residual[dofs[3 * a + i]] += p * c[i] / 6.0;
     if (!tangent) continue;
     // dc/dx0 = [x2 - x1]x, dc/dx1 = [x0 - x2]x, dc/dx2 = [x1 - x0]x   (loads.md, L3)
-    const std::array<Mat3d, 3> dc = {skew(xs[2] - xs[1]), skew(xs[0] - xs[2]), skew(xs[1] - xs[0])};
+    const std::array<Mat3d, 3> dc = {cross_matrix(xs[2] - xs[1]), cross_matrix(xs[0] - xs[2]), cross_matrix(xs[1] - xs[0])};
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) k.block<3, 3>(3 * a, 3 * b) = (p / 6.0) * dc[b];
     tangent->add(dofs, dofs, std::span<const double>(k.data(), 81));
