@@ -134,6 +134,33 @@ void DieContact::accept_step(std::span<const double> x) {
 
 void DieContact::reject_step() { state_ = accepted_; }
 
+std::vector<double> DieContact::save_state() const {
+  std::vector<double> out;
+  out.reserve(8 * accepted_.size());
+  for (const NodeState& s : accepted_) {
+    out.push_back(s.glued ? 1.0 : 0.0);
+    out.push_back(s.multiplier);
+    out.insert(out.end(), s.glue_multiplier.data(), s.glue_multiplier.data() + 3);
+    out.insert(out.end(), s.anchor.data(), s.anchor.data() + 3);
+  }
+  return out;
+}
+
+void DieContact::load_state(std::span<const double> state) {
+  FE_CHECK(state.size() == 8 * accepted_.size(),
+           "die '" << settings_.name << "': the checkpoint has " << state.size() / 8
+                   << " contact nodes, the model " << accepted_.size());
+  for (size_t i = 0; i < accepted_.size(); ++i) {
+    const double* v = state.data() + 8 * i;
+    NodeState& s = accepted_[i];
+    s.glued = v[0] != 0.0;
+    s.multiplier = v[1];
+    s.glue_multiplier = Vec3d(v[2], v[3], v[4]);
+    s.anchor = Vec3d(v[5], v[6], v[7]);
+  }
+  state_ = accepted_;
+}
+
 std::vector<std::string> DieContact::history_columns() const {
   const std::string& n = settings_.name;
   return {"force_x:" + n, "force_y:" + n, "force_z:" + n, "contact_nodes:" + n, "penetration:" + n};

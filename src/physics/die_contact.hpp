@@ -46,6 +46,9 @@ class DieContact : public ModelTerm {
   void accept_step(std::span<const double> x) override;
   /// Back to the multipliers and glue state of the last accepted step.
   void reject_step() override;
+  /// Glue flags, anchors and multipliers of the accepted step (8 numbers per contact node).
+  std::vector<double> save_state() const override;
+  void load_state(std::span<const double> state) override;
 
   /// force_x/y/z:<name> (force of the body ON the die [N], C15), contact_nodes:<name>,
   /// penetration:<name> [mm] (largest violation, C10).

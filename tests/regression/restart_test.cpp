@@ -24,15 +24,20 @@ namespace fs = std::filesystem;
 
 const std::string kCase = std::string(PLISSE_SOURCE_DIR) + "/tests/regression/restart-case.yaml";
 
-/// Starts `plisse run kCase -o dir` in the background; returns its pid.
-pid_t start_run(const fs::path& dir) {
+/// Starts `plisse run case_file -o dir [--set extra]` in the background; returns its pid.
+pid_t start_run(const fs::path& dir, const std::string& case_file = kCase,
+                const std::string& extra = "") {
   const pid_t pid = fork();
   if (pid == 0) {
     const std::string exe = std::string(PLISSE_BINARY_DIR) + "/bin/plisse";
     const std::string log = dir.string() + ".log";
     freopen(log.c_str(), "w", stdout);
     freopen(log.c_str(), "a", stderr);
-    execl(exe.c_str(), exe.c_str(), "run", kCase.c_str(), "-o", dir.c_str(), nullptr);
+    if (extra.empty())
+      execl(exe.c_str(), exe.c_str(), "run", case_file.c_str(), "-o", dir.c_str(), nullptr);
+    else
+      execl(exe.c_str(), exe.c_str(), "run", case_file.c_str(), "-o", dir.c_str(), "--set",
+            extra.c_str(), nullptr);
     _exit(127);
   }
   return pid;
@@ -101,6 +106,29 @@ TEST(Restart, KilledRunResumesToTheUninterruptedHistory) {
   const auto summary = read_json_file(killed / "summary.json");
   EXPECT_TRUE(summary["completed"].get<bool>());
   EXPECT_EQ(read_pvd(killed / "solution.pvd").size(), read_pvd(reference / "solution.pvd").size());
+}
+
+TEST(Restart, ContactHistorySurvivesAKill) {
+  // Sticking and frictionless dies carry glue points and multipliers from step to step: they are
+  // part of the checkpoint.
+  const std::string case_file =
+      std::string(PLISSE_SOURCE_DIR) + "/tests/verification/contact/sphere-between-plates.yaml";
+  const std::string every = "output.checkpoint_every=1";
+  const fs::path reference = test::scratch_directory("restart-contact-reference");
+  ASSERT_EQ(test::run_plisse("run " + case_file + " --set " + every + " -o " + reference.string(),
+                             reference.string() + ".log"), 0);
+  const size_t total = read_history(reference / "history.csv").rows.size();
+  const fs::path killed = test::scratch_directory("restart-contact-killed");
+  const pid_t pid = start_run(killed, case_file, every);
+  wait_for_rows(killed, total / 2 + 1);
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed";
+  ASSERT_EQ(test::run_plisse("run " + case_file + " --set " + every + " --resume " + killed.string(),
+                             killed.string() + ".resume.log"), 0)
+      << "see " << killed.string() << ".resume.log";
+  expect_same_history(reference, killed);
 }
 
 TEST(Restart, TerminatedRunStopsWithCheckpointAndExitStatus1) {
