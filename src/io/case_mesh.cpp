@@ -96,7 +96,16 @@ Mesh load_case_mesh(const Case& c) {
       throw InputError(c.mesh.file_place, "mesh file '" + path + "' does not exist" + note);
     if (fs::is_directory(path, ec))
       throw InputError(c.mesh.file_place, "'" + path + "' is a directory, not a mesh file");
-    return read_gmsh(path);  // its errors name the mesh file
+    try {
+      return read_gmsh(path);
+    } catch (const InputError& e) {
+      // The reader names the mesh file (the error is in it, not in the YAML); add the case key
+      // that chose it.
+      if (!e.place().key.empty()) throw;
+      InputPlace place = e.place();
+      place.key = c.mesh.file_place.key;
+      throw InputError(place, e.rule());
+    }
   }
   if (!c.mesh.generate) throw InputError(c.mesh.place, "no mesh file and nothing to generate");
   try {
@@ -139,7 +148,8 @@ void check_case_against_mesh(const Case& c, const Mesh& mesh) {
 
   const MeshReport report = check_mesh(mesh);
   if (!report.ok()) {
-    const InputPlace place = c.mesh.file ? InputPlace{*c.mesh.file, 0, 0, ""} : c.mesh.place;
+    const InputPlace place =
+        c.mesh.file ? InputPlace{*c.mesh.file, 0, 0, c.mesh.file_place.key} : c.mesh.place;
     const std::size_t shown = std::min<std::size_t>(report.errors.size(), 5);
     std::string rule = (c.mesh.file ? "the mesh" : mesh_name(c)) + " fails its check: ";
     for (std::size_t i = 0; i < shown; ++i) rule += (i ? "; " : "") + report.errors[i];
