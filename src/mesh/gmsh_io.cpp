@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <new>
 #include <numeric>
 #include <unordered_map>
 #include <vector>
@@ -337,6 +338,55 @@ void add_groups(int dim, const Signatures& s, const std::vector<Run>& runs, bool
   gmsh::model::setPhysicalName(dim, group, kUntaggedGroupName);
 }
 
+/// Length of the well-formed UTF-8 sequence of 2 to 4 bytes at s[i], or 0 (RFC 3629, section 4;
+/// overlong forms and surrogates are not excluded: the point is only a printable message).
+std::size_t utf8_length(const std::string& s, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char lead = byte(i);
+  std::size_t n = 0;
+  if (lead >= 0xc2 && lead <= 0xdf) n = 2;
+  if (lead >= 0xe0 && lead <= 0xef) n = 3;
+  if (lead >= 0xf0 && lead <= 0xf4) n = 4;
+  if (n == 0 || i + n > s.size()) return 0;
+  for (std::size_t k = 1; k < n; ++k)
+    if ((byte(i + k) & 0xc0) != 0x80) return 0;
+  return n;
+}
+
+/// A Gmsh error report fit for a terminal: control characters and bytes that are not UTF-8 (Gmsh
+/// quotes the offending bytes of a binary or garbage file) become '?', and of the "; "-separated
+/// messages (a garbage file gives one per bad token, up to Gmsh's limit of 20) the first
+/// kShownGmshErrors are kept, then a count.
+std::string readable_errors(const std::string& report) {
+  constexpr std::size_t kShownGmshErrors = 3;
+  std::string clean;
+  for (std::size_t i = 0; i < report.size();) {
+    const auto ch = static_cast<unsigned char>(report[i]);
+    if (ch >= 0x80) {
+      if (const std::size_t n = utf8_length(report, i)) {
+        clean += report.substr(i, n);
+        i += n;
+        continue;
+      }
+    }
+    clean += ch < 0x20 || ch >= 0x7f ? '?' : report[i];
+    ++i;
+  }
+  std::string out;
+  std::size_t start = 0, n = 0;
+  while (true) {
+    const std::size_t at = clean.find("; ", start);
+    if (n < kShownGmshErrors)
+      out += (n ? "; " : "") + clean.substr(start, at == std::string::npos ? at : at - start);
+    ++n;
+    if (at == std::string::npos) break;
+    start = at + 2;
+  }
+  if (n > kShownGmshErrors)
+    out += "; and " + std::to_string(n - kShownGmshErrors) + " more Gmsh errors";
+  return out;
+}
+
 bool ends_with(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() &&
          s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -362,10 +412,17 @@ Mesh read_gmsh(const std::string& path, GmshReadInfo& info) {
     Mesh mesh = read_model(path, info);
     session.check_input(path, "cannot read the mesh file");
     return mesh;
+  } catch (const InputError& e) {
+    throw file_error(path, readable_errors(e.rule()));
   } catch (const Error&) {
     throw;
   } catch (const std::string& message) {  // Gmsh throws strings when AbortOnError is set
-    throw file_error(path, "cannot read the mesh file: " + message);
+    throw file_error(path, "cannot read the mesh file: " + readable_errors(message));
+  } catch (const std::bad_alloc&) {
+    // Gmsh sizes its arrays from the counts in the file: a corrupt count asks for terabytes.
+    throw file_error(path,
+                     "cannot read the mesh file: it announces more nodes or elements than fit in "
+                     "memory (a corrupt or truncated file?)");
   } catch (const std::exception& e) {
     throw file_error(path, std::string("cannot read the mesh file: ") + e.what());
   }
