@@ -101,6 +101,18 @@ MeshReport check_mesh(const Mesh& mesh, const std::vector<std::string>& required
     }
     if (bad) return report;  // the checks below index nodes
   }
+  {
+    // NaN or infinite coordinates (e.g. "nan" in a .msh file) make every volume test below
+    // false, so such a mesh would pass them: refuse it first.
+    MessageList errors(report.errors, "nodes with non-finite coordinates");
+    for (int i = 0; i < n_nodes; ++i)
+      if (!mesh.nodes[static_cast<std::size_t>(i)].allFinite()) {
+        const Vec3d& x = mesh.nodes[static_cast<std::size_t>(i)];
+        errors.add("node " + std::to_string(i) + " has a coordinate that is not a finite number (" +
+                   number(x.x()) + ", " + number(x.y()) + ", " + number(x.z()) + ")");
+      }
+    if (!report.errors.empty()) return report;
+  }
   if (mesh.tets.empty()) report.errors.push_back("the mesh has no tetrahedra");
 
   // Volumes, orientation, aspect ratio.
@@ -139,6 +151,52 @@ MeshReport check_mesh(const Mesh& mesh, const std::vector<std::string>& required
       report.warnings.push_back(
           std::to_string(n_stretched) + " tetrahedra have an aspect ratio above " +
           number(kAspectRatioWarning) + " (largest " + number(report.max_aspect_ratio) + ")");
+  }
+
+  // Folds: a face shared by two tetrahedra must separate them. Each tetrahedron may be
+  // positively numbered while the two lie on the same side of their common face (a node dragged
+  // through the opposite face): they overlap, and the element is inverted with respect to its
+  // neighbour. Checked with the signs of 6V(face, opposite node) for both tetrahedra; a zero sign
+  // (a degenerate tetrahedron, reported above) is not judged.
+  {
+    MessageList errors(report.errors, "folded faces");
+    std::vector<std::array<int, 4>> faces;  // sorted face nodes, then 4 * tet + local face
+    faces.reserve(4 * mesh.tets.size());
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+      for (std::size_t f = 0; f < 4; ++f) {
+        const auto& n = mesh.tets[t];
+        const auto key = sorted_face({n[static_cast<std::size_t>(kTetFaces[f][0])],
+                                      n[static_cast<std::size_t>(kTetFaces[f][1])],
+                                      n[static_cast<std::size_t>(kTetFaces[f][2])]});
+        faces.push_back({key[0], key[1], key[2], static_cast<int>(4 * t + f)});
+      }
+    std::sort(faces.begin(), faces.end());
+    // 6V of (sorted face, node opposite local face f of tet t); the sign tells the side.
+    const auto side = [&](const std::array<int, 4>& face) {
+      const std::size_t t = static_cast<std::size_t>(face[3] / 4), f = static_cast<std::size_t>(face[3] % 4);
+      const int opposite = mesh.tets[t][static_cast<std::size_t>(6 - kTetFaces[f][0] -
+                                                                 kTetFaces[f][1] - kTetFaces[f][2])];
+      const auto x = [&](int v) { return mesh.nodes[static_cast<std::size_t>(v)]; };
+      return six_signed_volume(x(face[0]), x(face[1]), x(face[2]), x(opposite));
+    };
+    for (std::size_t i = 0; i < faces.size();) {
+      std::size_t j = i + 1;
+      while (j < faces.size() && std::equal(faces[j].begin(), faces[j].begin() + 3, faces[i].begin()))
+        ++j;
+      const std::string nodes = std::to_string(faces[i][0]) + ", " + std::to_string(faces[i][1]) +
+                                ", " + std::to_string(faces[i][2]);
+      if (j - i > 2) {
+        errors.add("face (" + nodes + ") is shared by " + std::to_string(j - i) +
+                   " tetrahedra (at most 2)");
+      } else if (j - i == 2) {
+        const double s0 = side(faces[i]), s1 = side(faces[i + 1]);
+        if ((s0 > 0.0 && s1 > 0.0) || (s0 < 0.0 && s1 < 0.0))
+          errors.add("tetrahedra " + std::to_string(faces[i][3] / 4) + " and " +
+                     std::to_string(faces[i + 1][3] / 4) + " lie on the same side of their common "
+                     "face (" + nodes + "): they overlap, the mesh is folded (an inverted element)");
+      }
+      i = j;
+    }
   }
 
   // Unused nodes.
