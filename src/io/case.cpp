@@ -4,10 +4,14 @@
 // every key here is docs/case-file.md: keep the two in step.
 #include "io/case.hpp"
 
+#include <yaml-cpp/eventhandler.h>
+
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include "io/case_overrides.hpp"
@@ -442,6 +446,65 @@ OutputSettings read_output(const Field& field) {
   return s;
 }
 
+/// Finds a quoted scalar that is never closed. yaml-cpp ends such a scalar at the end of the input
+/// instead of reporting it, so `title: "abc` swallows the rest of the file into one text value and
+/// the sections after it silently vanish. The parser's events give each scalar's mark (a byte
+/// offset, at the scalar's tag or anchor if it has one); the quote found there must be closed.
+class UnclosedQuoteFinder : public YAML::EventHandler {
+ public:
+  explicit UnclosedQuoteFinder(const std::string& text) : text_(text) {
+    if (text_.rfind("\xEF\xBB\xBF", 0) == 0) bom_ = 3;  // yaml-cpp's offsets skip a UTF-8 BOM
+  }
+  /// The mark of the first unclosed quoted scalar, if any.
+  const std::optional<YAML::Mark>& found() const { return found_; }
+
+  void OnScalar(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t,
+                const std::string&) override {
+    if (tag == "?" || found_) return;  // plain scalars have no quotes
+    std::size_t i = static_cast<std::size_t>(mark.pos) + bom_;
+    // Skip the node's properties: "!tag" and "&anchor", each followed by blanks.
+    while (i < text_.size() && (text_[i] == '!' || text_[i] == '&')) {
+      while (i < text_.size() && !std::isspace(static_cast<unsigned char>(text_[i]))) ++i;
+      while (i < text_.size() && (text_[i] == ' ' || text_[i] == '\t')) ++i;
+    }
+    if (i >= text_.size() || (text_[i] != '"' && text_[i] != '\'')) return;  // block scalar
+    if (!closed(i)) found_ = mark;
+  }
+  void OnDocumentStart(const YAML::Mark&) override {}
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+
+ private:
+  /// Whether the quote at `open` has its closing quote: `\"` escapes inside double quotes
+  /// (YAML 1.2, section 7.3.1), `''` inside single quotes (section 7.3.2).
+  bool closed(std::size_t open) const {
+    const char quote = text_[open];
+    for (std::size_t i = open + 1; i < text_.size(); ++i) {
+      if (quote == '"' && text_[i] == '\\') {
+        ++i;
+      } else if (text_[i] == quote) {
+        if (quote == '\'' && i + 1 < text_.size() && text_[i + 1] == '\'') {
+          ++i;
+          continue;
+        }
+        return true;
+      }
+    }
+    return false;
+  }
+
+  const std::string& text_;
+  std::size_t bom_ = 0;
+  std::optional<YAML::Mark> found_;
+};
+
 }  // namespace
 
 Case parse_case_string(const std::string& text, const std::string& name,
@@ -453,6 +516,20 @@ Case parse_case_string(const std::string& text, const std::string& name,
     const bool marked = !e.mark.is_null();
     throw InputError({name, marked ? e.mark.line + 1 : 0, marked ? e.mark.column + 1 : 0, ""},
                      "YAML syntax error: " + e.msg);
+  }
+  {
+    std::istringstream in(text);
+    YAML::Parser parser(in);
+    UnclosedQuoteFinder finder(text);
+    try {
+      while (parser.HandleNextDocument(finder)) {
+      }
+    } catch (const YAML::Exception&) {  // LoadAll read the same text: cannot happen
+    }
+    if (const auto& m = finder.found())
+      throw InputError({name, m->line + 1, m->column + 1, ""},
+                       "YAML syntax error: this quoted value is never closed (its closing quote "
+                       "is missing, so it would run to the end of the file)");
   }
   if (documents.size() > 1) {
     const YAML::Mark m = documents[1].Mark();
