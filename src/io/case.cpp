@@ -54,6 +54,9 @@ const std::vector<std::pair<std::string, std::string>> kImperfectionKinds{{"rand
                                                                           {"mode", "mode"}};
 const std::vector<std::pair<std::string, char>> kAxes{{"x", 'x'}, {"y", 'y'}, {"z", 'z'}};
 
+/// Largest case file read [bytes]; real ones are a few kB.
+constexpr std::size_t kMaxCaseFileBytes = std::size_t{16} << 20;
+
 const std::vector<std::string> kSections{"title",    "mesh", "material", "boundary", "loads",
                                          "cavities", "dies", "probes",   "solver",   "output"};
 
@@ -579,9 +582,16 @@ Case parse_case_file(const std::string& path, const std::vector<std::string>& ov
     throw InputError({path, 0, 0, ""}, "is a directory, not a case file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({path, 0, 0, ""}, "the case file cannot be opened for reading");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_case_string(text.str(), path, overrides);
+  // Read at most kMaxCaseFileBytes + 1: a device such as /dev/zero (or a huge file given by
+  // mistake) would otherwise fill the memory before the YAML parser sees a byte.
+  std::string text(kMaxCaseFileBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > kMaxCaseFileBytes)
+    throw InputError({path, 0, 0, ""}, "the case file is larger than " +
+                                           std::to_string(kMaxCaseFileBytes >> 20) +
+                                           " MiB; a case file is a short YAML text");
+  return parse_case_string(text, path, overrides);
 }
 
 }  // namespace plisse
