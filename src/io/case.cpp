@@ -6,13 +6,16 @@
 
 #include <yaml-cpp/eventhandler.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <string_view>
 
 #include "io/case_overrides.hpp"
 #include "io/case_reader.hpp"
@@ -449,6 +452,56 @@ OutputSettings read_output(const Field& field) {
   return s;
 }
 
+/// Length of the well-formed UTF-8 sequence of 2 to 4 bytes at text[i] (RFC 3629, section 4), or 0.
+std::size_t utf8_sequence_length(const std::string& text, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  std::size_t n = 0;
+  if (byte(i) >= 0xc2 && byte(i) <= 0xdf) n = 2;
+  if (byte(i) >= 0xe0 && byte(i) <= 0xef) n = 3;
+  if (byte(i) >= 0xf0 && byte(i) <= 0xf4) n = 4;
+  if (n == 0 || i + n > text.size()) return 0;
+  for (std::size_t k = 1; k < n; ++k)
+    if ((byte(i + k) & 0xc0) != 0x80) return 0;
+  return n;
+}
+
+/// Offset of the first byte YAML does not allow in a UTF-8 stream (YAML 1.2, section 5.1,
+/// c-printable): a control character other than tab, line feed and carriage return, DEL, or a
+/// byte that does not begin a well-formed UTF-8 sequence; npos when there is none. yaml-cpp
+/// passes such bytes into messages and values, so a binary file gave errors full of raw bytes.
+/// Streams with a UTF-16 or UTF-32 byte order mark are left to yaml-cpp.
+std::size_t first_non_text_byte(const std::string& text) {
+  using namespace std::string_view_literals;
+  for (const std::string_view bom : {"\xFE\xFF"sv, "\xFF\xFE"sv, "\0\0\xFE\xFF"sv})
+    if (std::string_view(text).substr(0, bom.size()) == bom) return std::string::npos;
+  for (std::size_t i = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0; i < text.size();) {
+    const auto ch = static_cast<unsigned char>(text[i]);
+    if (ch >= 0x80) {
+      const std::size_t n = utf8_sequence_length(text, i);
+      if (n == 0) return i;
+      i += n;
+      continue;
+    }
+    if ((ch < 0x20 && ch != '\t' && ch != '\n' && ch != '\r') || ch == 0x7f) return i;
+    ++i;
+  }
+  return std::string::npos;
+}
+
+/// Whether 0-based line `line` of `text` has a tab in its indentation.
+bool indented_with_tab(const std::string& text, int line) {
+  std::size_t start = 0;
+  for (int l = 0; l < line && start != std::string::npos; ++l) {
+    start = text.find('\n', start);
+    if (start != std::string::npos) ++start;
+  }
+  for (std::size_t i = start; i != std::string::npos && i < text.size(); ++i) {
+    if (text[i] == '\t') return true;
+    if (text[i] != ' ') return false;
+  }
+  return false;
+}
+
 /// Finds a quoted scalar that is never closed. yaml-cpp ends such a scalar at the end of the input
 /// instead of reporting it, so `title: "abc` swallows the rest of the file into one text value and
 /// the sections after it silently vanish. The parser's events give each scalar's mark (a byte
@@ -512,13 +565,29 @@ class UnclosedQuoteFinder : public YAML::EventHandler {
 
 Case parse_case_string(const std::string& text, const std::string& name,
                        const std::vector<std::string>& overrides) {
+  if (const std::size_t at = first_non_text_byte(text); at != std::string::npos) {
+    const auto before = text.begin() + static_cast<std::ptrdiff_t>(at);
+    const int line = 1 + static_cast<int>(std::count(text.begin(), before, '\n'));
+    const std::size_t newline = at == 0 ? std::string::npos : text.rfind('\n', at - 1);
+    const int column = static_cast<int>(newline == std::string::npos ? at + 1 : at - newline);
+    char byte[8];
+    std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned char>(text[at]));
+    throw InputError({name, line, column, ""},
+                     std::string("the case file is not YAML text: byte ") + byte +
+                         " is not a printable UTF-8 character (is it a binary file?)");
+  }
   std::vector<YAML::Node> documents;
   try {
     documents = YAML::LoadAll(text);
   } catch (const YAML::Exception& e) {
     const bool marked = !e.mark.is_null();
+    std::string rule = "YAML syntax error: " + e.msg;
+    // yaml-cpp's messages for a tab in the indentation ("illegal map value", ...) do not say so.
+    if (marked && (indented_with_tab(text, e.mark.line) ||
+                   (e.mark.line > 0 && indented_with_tab(text, e.mark.line - 1))))
+      rule += " (this line or the one before is indented with a tab: YAML indents with spaces)";
     throw InputError({name, marked ? e.mark.line + 1 : 0, marked ? e.mark.column + 1 : 0, ""},
-                     "YAML syntax error: " + e.msg);
+                     rule);
   }
   {
     std::istringstream in(text);
