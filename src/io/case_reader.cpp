@@ -15,28 +15,37 @@ std::string lower(std::string s) {
   return s;
 }
 
+/// What parsing a number found: a value, not a number, or a number the type cannot hold.
+enum class Parsed { ok, not_a_number, out_of_range };
+
 /// YAML 1.2 core-schema floats (".inf", "-.Inf", ".nan", ...) and ordinary decimal numbers,
-/// with the whole text consumed. False when `text` is not a number.
-bool parse_real(const std::string& text, double& value) {
+/// with the whole text consumed. `out_of_range` for a well-formed number beyond the range of a
+/// double (1e400, and 1e-400 below the smallest one).
+Parsed parse_real(const std::string& text, double& value) {
   std::string s = text;
   const std::string l = lower(s);
-  if (l == ".inf" || l == "+.inf") return value = std::numeric_limits<double>::infinity(), true;
-  if (l == "-.inf") return value = -std::numeric_limits<double>::infinity(), true;
-  if (l == ".nan") return value = std::numeric_limits<double>::quiet_NaN(), true;
+  if (l == ".inf" || l == "+.inf")
+    return value = std::numeric_limits<double>::infinity(), Parsed::ok;
+  if (l == "-.inf") return value = -std::numeric_limits<double>::infinity(), Parsed::ok;
+  if (l == ".nan") return value = std::numeric_limits<double>::quiet_NaN(), Parsed::ok;
   if (!s.empty() && s.front() == '+') s.erase(0, 1);
-  if (s.empty()) return false;
+  if (s.empty()) return Parsed::not_a_number;
   const char* end = s.data() + s.size();
   const auto [ptr, ec] = std::from_chars(s.data(), end, value, std::chars_format::general);
-  return ec == std::errc() && ptr == end;
+  if (ptr != end) return Parsed::not_a_number;
+  if (ec == std::errc::result_out_of_range) return Parsed::out_of_range;
+  return ec == std::errc() ? Parsed::ok : Parsed::not_a_number;
 }
 
-bool parse_integer(const std::string& text, long long& value) {
+Parsed parse_integer(const std::string& text, long long& value) {
   std::string s = text;
   if (!s.empty() && s.front() == '+') s.erase(0, 1);
-  if (s.empty()) return false;
+  if (s.empty()) return Parsed::not_a_number;
   const char* end = s.data() + s.size();
   const auto [ptr, ec] = std::from_chars(s.data(), end, value);
-  return ec == std::errc() && ptr == end;
+  if (ptr != end) return Parsed::not_a_number;
+  if (ec == std::errc::result_out_of_range) return Parsed::out_of_range;
+  return ec == std::errc() ? Parsed::ok : Parsed::not_a_number;
 }
 
 /// Optimal-string-alignment distance (insertions, deletions, substitutions, adjacent swaps).
@@ -151,7 +160,12 @@ std::string Field::scalar_for_number(const char* what) const {
 double Field::real(const Range& range) const {
   const std::string s = scalar_for_number("a number");
   double v = 0.0;
-  if (!parse_real(s, v)) fail("expected a number, got '" + s + "'");
+  const Parsed parsed = parse_real(s, v);
+  if (parsed == Parsed::out_of_range)
+    fail("the number " + s +
+         " is outside the range of double precision (magnitudes from about "
+         "2.2e-308 to 1.8e308, or 0)");
+  if (parsed != Parsed::ok) fail("expected a number, got '" + s + "'");
   if (const auto why = range.violation(v)) fail(*why);
   return v;
 }
@@ -159,7 +173,9 @@ double Field::real(const Range& range) const {
 int Field::integer(const Range& range) const {
   const std::string s = scalar_for_number("an integer");
   long long v = 0;
-  if (!parse_integer(s, v)) fail("expected an integer, got '" + s + "'");
+  const Parsed parsed = parse_integer(s, v);
+  if (parsed == Parsed::out_of_range) fail("integer out of range (got " + s + ")");
+  if (parsed != Parsed::ok) fail("expected an integer, got '" + s + "'");
   if (const auto why = range.violation(static_cast<double>(v))) fail(*why);
   if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
     fail("integer out of range (got " + s + ")");
