@@ -173,15 +173,17 @@ MeshReport check_mesh(const Mesh& mesh, const std::vector<std::string>& required
     std::sort(faces.begin(), faces.end());
     // 6V of (sorted face, node opposite local face f of tet t); the sign tells the side.
     const auto side = [&](const std::array<int, 4>& face) {
-      const std::size_t t = static_cast<std::size_t>(face[3] / 4), f = static_cast<std::size_t>(face[3] % 4);
-      const int opposite = mesh.tets[t][static_cast<std::size_t>(6 - kTetFaces[f][0] -
-                                                                 kTetFaces[f][1] - kTetFaces[f][2])];
+      const std::size_t t = static_cast<std::size_t>(face[3] / 4),
+                        f = static_cast<std::size_t>(face[3] % 4);
+      const int opposite = mesh.tets[t][static_cast<std::size_t>(
+          6 - kTetFaces[f][0] - kTetFaces[f][1] - kTetFaces[f][2])];
       const auto x = [&](int v) { return mesh.nodes[static_cast<std::size_t>(v)]; };
       return six_signed_volume(x(face[0]), x(face[1]), x(face[2]), x(opposite));
     };
     for (std::size_t i = 0; i < faces.size();) {
       std::size_t j = i + 1;
-      while (j < faces.size() && std::equal(faces[j].begin(), faces[j].begin() + 3, faces[i].begin()))
+      while (j < faces.size() &&
+             std::equal(faces[j].begin(), faces[j].begin() + 3, faces[i].begin()))
         ++j;
       const std::string nodes = std::to_string(faces[i][0]) + ", " + std::to_string(faces[i][1]) +
                                 ", " + std::to_string(faces[i][2]);
@@ -192,8 +194,9 @@ MeshReport check_mesh(const Mesh& mesh, const std::vector<std::string>& required
         const double s0 = side(faces[i]), s1 = side(faces[i + 1]);
         if ((s0 > 0.0 && s1 > 0.0) || (s0 < 0.0 && s1 < 0.0))
           errors.add("tetrahedra " + std::to_string(faces[i][3] / 4) + " and " +
-                     std::to_string(faces[i + 1][3] / 4) + " lie on the same side of their common "
-                     "face (" + nodes + "): they overlap, the mesh is folded (an inverted element)");
+                     std::to_string(faces[i + 1][3] / 4) +
+                     " lie on the same side of their common face (" + nodes +
+                     "): they overlap, the mesh is folded (an inverted element)");
       }
       i = j;
     }

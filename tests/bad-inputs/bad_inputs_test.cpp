@@ -40,8 +40,8 @@ const fs::path kCorpusDir = PLISSE_BAD_INPUTS_DIR;
 std::string test_name(const std::string& file) {
   std::string name = fs::path(file).stem().string();
   std::replace_if(
-      name.begin(), name.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)); },
-      '_');
+      name.begin(), name.end(),
+      [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)); }, '_');
   return name;
 }
 
@@ -94,9 +94,9 @@ TEST_P(BadInput, IsRefusedWithALocatedMessageAndNoOutput) {
   const std::string plisse = std::string(PLISSE_BINARY_DIR) + "/bin/plisse";
   std::vector<std::unique_ptr<ChildProcess>> children;
   for (const std::string& command : entry.commands)
-    children.push_back(std::make_unique<ChildProcess>(
-        plisse, arguments(command, entry, case_file, output, work), work,
-        root / (command + ".log")));
+    children.push_back(
+        std::make_unique<ChildProcess>(plisse, arguments(command, entry, case_file, output, work),
+                                       work, root / (command + ".log")));
 
   for (std::size_t i = 0; i < children.size(); ++i) {
     const std::string& command = entry.commands[i];

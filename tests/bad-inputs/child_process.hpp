@@ -4,15 +4,16 @@
 /// Unlike std::system, the caller learns whether the child exited, was killed by a signal (a
 /// crash) or overran its time limit (a hang; the child is then killed with SIGKILL), and several
 /// children can run at once.
+#include <sys/types.h>
+
 #include <filesystem>
 #include <string>
-#include <sys/types.h>
 #include <vector>
 
 namespace plisse::test {
 
 struct ChildResult {
-  bool exited = false;     ///< normal exit; `status` is the exit status
+  bool exited = false;  ///< normal exit; `status` is the exit status
   int status = -1;
   int signal = 0;          ///< the signal that ended the child, 0 when it exited
   bool timed_out = false;  ///< killed after the time limit

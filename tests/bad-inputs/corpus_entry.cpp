@@ -19,7 +19,8 @@ std::vector<std::string> split(const std::string& text, const std::string& separ
   std::size_t start = 0;
   while (true) {
     const std::size_t at = text.find(separator, start);
-    out.push_back(trim(text.substr(start, at == std::string::npos ? std::string::npos : at - start)));
+    out.push_back(
+        trim(text.substr(start, at == std::string::npos ? std::string::npos : at - start)));
     if (at == std::string::npos) return out;
     start = at + separator.size();
   }
@@ -33,11 +34,14 @@ std::vector<std::string> words(const std::string& text) {
 }
 
 void replace_all(std::string& text, const std::string& from, const std::string& to) {
-  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+  for (std::size_t at = text.find(from); at != std::string::npos;
+       at = text.find(from, at + to.size()))
     text.replace(at, from.size(), to);
 }
 
-bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
+bool starts_with(const std::string& s, const std::string& prefix) {
+  return s.rfind(prefix, 0) == 0;
+}
 
 }  // namespace
 

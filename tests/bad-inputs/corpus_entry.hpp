@@ -18,14 +18,14 @@
 namespace plisse::test {
 
 struct CorpusEntry {
-  std::filesystem::path file;     ///< the corpus file
-  std::string description;        ///< what is wrong, in words
-  std::vector<std::string> expect;        ///< fragments after "=>", in order of the header
-  std::vector<std::string> args;          ///< `# args:` extra arguments for both commands
-  std::string case_path = "{self}";       ///< `# case:` the case file given to plisse
+  std::filesystem::path file;        ///< the corpus file
+  std::string description;           ///< what is wrong, in words
+  std::vector<std::string> expect;   ///< fragments after "=>", in order of the header
+  std::vector<std::string> args;     ///< `# args:` extra arguments for both commands
+  std::string case_path = "{self}";  ///< `# case:` the case file given to plisse
   std::vector<std::string> commands{"check", "run"};  ///< `# commands:` which subcommands
-  std::string output = "{work}/out";      ///< `# output:` the -o argument of `plisse run`
-  std::string known_bug;  ///< `# known-bug:` why the entry is skipped (empty: it runs)
+  std::string output = "{work}/out";  ///< `# output:` the -o argument of `plisse run`
+  std::string known_bug;              ///< `# known-bug:` why the entry is skipped (empty: it runs)
 };
 
 /// Reads the header of `file`. Throws std::runtime_error naming the file when the header is
