@@ -122,6 +122,14 @@ Mesh load_case_mesh(const Case& c) {
       place = it->second;
     place.key = key.empty() ? c.mesh.place.key : prefix + option;
     throw InputError(place, e.rule());
+  } catch (const SolverError&) {
+    throw;
+  } catch (const Error& e) {
+    // The generators are deterministic functions of the options: when one fails on options that
+    // passed validate_mesh_spec (a shell of radius 1e-300 mm, 64 layers in a 1e-12 mm wall), the
+    // options are what cannot be meshed. This was exit status 1, an "internal" error.
+    throw InputError(c.mesh.place,
+                     std::string("cannot generate this mesh from these options: ") + e.what());
   }
 }
 
