@@ -396,7 +396,22 @@ SolverSettings read_solver(const Field& field) {
   s.viscosity = m.real("viscosity", s.viscosity, Range::non_negative());
   s.max_augmentations =
       m.integer("max_augmentations", s.max_augmentations, Range::at_least(0));
-  if (const auto f = m.find("petsc_options"); f && !f->is_null()) s.petsc_options = f->text();
+  if (const auto f = m.find("petsc_options"); f && !f->is_null()) {
+    s.petsc_options = f->text();
+    // PETSc reads "-name [value] -name [value] ...": a word before the first option, or two words
+    // in a row, is not read as anything and PETSc ignores it without a word (a forgotten dash in
+    // "ksp_type preonly" silently kept the default solver).
+    std::istringstream words(s.petsc_options);
+    bool after_value = true;  // nothing may come before the first "-option"
+    for (std::string word; words >> word;) {
+      const bool option = word.size() > 1 && word[0] == '-';
+      if (!option && after_value)
+        f->fail("'" + word +
+                "' is neither a PETSc option (options start with '-') nor the value of the "
+                "option before it; expected e.g. '-ksp_type preonly -pc_type lu'");
+      after_value = !option;
+    }
+  }
   if (s.min_step > s.max_step)
     (m.has("min_step") ? *m.find("min_step") : *m.find("max_step"))
         .fail("min_step must be <= max_step (got min_step " + format_number(s.min_step) +
