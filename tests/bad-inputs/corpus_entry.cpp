@@ -110,7 +110,8 @@ std::string expected_text(const std::string& fragment, const CorpusEntry& entry,
     return case_file + ":" + w[1] + ":" + w[3] + ":";
   if (starts_with(fragment, "file ")) {
     const std::string name = expand(trim(fragment.substr(5)), entry, work);
-    if (name == "--set" || std::filesystem::path(name).is_absolute()) return name;
+    if (name == "--set" || name == "command line" || std::filesystem::path(name).is_absolute())
+      return name;
     return (entry.file.parent_path() / name).string();
   }
   return fragment;

@@ -5,8 +5,9 @@
 /// lines may set options as `# NAME: VALUE` (args, case, commands, output, known-bug). Fragments:
 ///   `line N`          the message holds "<case file>:N:" (the error is placed at line N);
 ///   `line N col C`    the message holds "<case file>:N:C:";
-///   `file F`          the message names F (relative to the corpus folder, or "--set"); without
-///                     a `file` fragment the message must name the case file;
+///   `file F`          the message names F (relative to the corpus folder unless absolute,
+///                     "--set" or "command line"); without a `file` fragment the message must
+///                     name the case file;
 ///   anything else     must appear verbatim (e.g. `key 'material.c1'`, `must be > 0`).
 /// Placeholders in options and `file`: {dir} the corpus folder, {self} this file, {work} the
 /// fresh working directory of the run (the default output is {work}/out).
@@ -38,7 +39,7 @@ std::string expand(const std::string& text, const CorpusEntry& entry,
 
 /// One expected fragment turned into the exact text to look for in the output: `line N [col C]`
 /// becomes "<case_file>:N:[C:]", `file F` becomes F expanded (relative to the corpus folder unless
-/// absolute or "--set"), anything else stays as it is.
+/// absolute, "--set" or "command line"), anything else stays as it is.
 std::string expected_text(const std::string& fragment, const CorpusEntry& entry,
                           const std::string& case_file, const std::filesystem::path& work);
 
