@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
+#include <string>
 
 #include "app/commands.hpp"
 #include "core/error.hpp"
@@ -34,6 +35,12 @@ int main(int argc, char** argv) {
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "plisse: error: " << e.what() << '\n';
+    return 1;
+  } catch (const std::string& message) {  // Gmsh's API throws its messages as strings
+    std::cerr << "plisse: error: " << message << '\n';
+    return 1;
+  } catch (...) {  // anything else would end in std::terminate and SIGABRT
+    std::cerr << "plisse: error: an exception of unknown type\n";
     return 1;
   }
   return 0;
