@@ -12,7 +12,6 @@
 /// Placeholders in options and `file`: {dir} the corpus folder, {self} this file, {work} the
 /// fresh working directory of the run (the default output is {work}/out).
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <vector>
 
