@@ -32,6 +32,19 @@ const std::vector<std::string> kCorpus{
 
 constexpr double kTimeLimitSeconds = 20.0;
 
+// Whether this test (and so plisse, built with the same flags) has AddressSanitizer.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
 /// Texts that only appear when plisse crashed or a sanitizer caught something.
 const std::vector<std::string> kCrashSigns{"terminate called", "Segmentation",  "Sanitizer",
                                            "runtime error:",   "core dumped",   "Aborted",
@@ -85,6 +98,8 @@ class BadInput : public ::testing::TestWithParam<std::string> {};
 TEST_P(BadInput, IsRefusedWithALocatedMessageAndNoOutput) {
   const CorpusEntry entry = read_corpus_entry(kCorpusDir / GetParam());
   if (!entry.known_bug.empty()) GTEST_SKIP() << "known bug: " << entry.known_bug;
+  if (kAddressSanitizer && !entry.not_under_asan.empty())
+    GTEST_SKIP() << "not under AddressSanitizer: " << entry.not_under_asan;
   const fs::path root = scratch_directory("bad-inputs/" + test_name(GetParam()));
   const fs::path work = root / "work";  // the working directory: must stay empty
   fs::create_directories(work);

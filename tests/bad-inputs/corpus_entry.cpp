@@ -79,6 +79,8 @@ CorpusEntry read_corpus_entry(const std::filesystem::path& file) {
       entry.output = value;
     else if (name == "known-bug")
       entry.known_bug = value;
+    else if (name == "not-under-asan")
+      entry.not_under_asan = value;
     else
       break;  // an ordinary comment
   }

@@ -2,7 +2,8 @@
 /// One file of the bad-input corpus (tests/bad-inputs/README.md) and what its header expects.
 ///
 /// Header: the first line is `# WHAT IS WRONG => FRAGMENT | FRAGMENT | ...`; the next comment
-/// lines may set options as `# NAME: VALUE` (args, case, commands, output, known-bug). Fragments:
+/// lines may set options as `# NAME: VALUE` (args, case, commands, output, known-bug,
+/// not-under-asan). Fragments:
 ///   `line N`          the message holds "<case file>:N:" (the error is placed at line N);
 ///   `line N col C`    the message holds "<case file>:N:C:";
 ///   `file F`          the message names F (relative to the corpus folder unless absolute,
@@ -26,6 +27,7 @@ struct CorpusEntry {
   std::vector<std::string> commands{"check", "run"};  ///< `# commands:` which subcommands
   std::string output = "{work}/out";  ///< `# output:` the -o argument of `plisse run`
   std::string known_bug;              ///< `# known-bug:` why the entry is skipped (empty: it runs)
+  std::string not_under_asan;         ///< `# not-under-asan:` why AddressSanitizer builds skip it
 };
 
 /// Reads the header of `file`. Throws std::runtime_error naming the file when the header is
