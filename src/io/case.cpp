@@ -528,9 +528,15 @@ class UnclosedQuoteFinder : public YAML::EventHandler {
   }
   /// The mark of the first unclosed quoted scalar, if any.
   const std::optional<YAML::Mark>& found() const { return found_; }
+  /// Documents seen so far, and where the second one starts (its first node, else its start).
+  int documents() const { return documents_; }
+  std::optional<YAML::Mark> second_document() const {
+    return second_node_ ? second_node_ : second_document_;
+  }
 
   void OnScalar(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t,
                 const std::string&) override {
+    note(mark);
     if (tag == "?" || found_) return;  // plain scalars have no quotes
     std::size_t i = static_cast<std::size_t>(mark.pos) + bom_;
     // Skip the node's properties: "!tag" and "&anchor", each followed by blanks.
@@ -541,18 +547,27 @@ class UnclosedQuoteFinder : public YAML::EventHandler {
     if (i >= text_.size() || (text_[i] != '"' && text_[i] != '\'')) return;  // block scalar
     if (!closed(i)) found_ = mark;
   }
-  void OnDocumentStart(const YAML::Mark&) override {}
+  void OnDocumentStart(const YAML::Mark& mark) override {
+    if (++documents_ == 2) second_document_ = mark;
+  }
   void OnDocumentEnd() override {}
-  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
-  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
-  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
-                       YAML::EmitterStyle::value) override {}
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t) override { note(mark); }
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { note(mark); }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {
+    note(mark);
+  }
   void OnSequenceEnd() override {}
-  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
-                  YAML::EmitterStyle::value) override {}
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {
+    note(mark);
+  }
   void OnMapEnd() override {}
 
  private:
+  void note(const YAML::Mark& mark) {
+    if (documents_ == 2 && !second_node_) second_node_ = mark;
+  }
   /// Whether the quote at `open` has its closing quote: `\"` escapes inside double quotes
   /// (YAML 1.2, section 7.3.1), `''` inside single quotes (section 7.3.2).
   bool closed(std::size_t open) const {
@@ -574,6 +589,8 @@ class UnclosedQuoteFinder : public YAML::EventHandler {
   const std::string& text_;
   std::size_t bom_ = 0;
   std::optional<YAML::Mark> found_;
+  int documents_ = 0;
+  std::optional<YAML::Mark> second_document_, second_node_;
 };
 
 }  // namespace
@@ -591,6 +608,23 @@ Case parse_case_string(const std::string& text, const std::string& name,
                      std::string("the case file is not YAML text: byte ") + byte +
                          " is not a printable UTF-8 character (is it a binary file?)");
   }
+  // One pass over the events first, stopping at a second document: yaml-cpp 0.7 returns empty
+  // documents forever on some malformed text (a lone ','; yaml-cpp issue #1040), so LoadAll may
+  // only see text with at most one document.
+  UnclosedQuoteFinder finder(text);
+  {
+    std::istringstream in(text);
+    YAML::Parser parser(in);
+    try {
+      while (finder.documents() < 2 && parser.HandleNextDocument(finder)) {
+      }
+    } catch (const YAML::Exception&) {  // LoadAll below reports it with its place
+    }
+  }
+  if (const auto& m = finder.second_document())
+    throw InputError({name, m->is_null() ? 0 : m->line + 1, m->is_null() ? 0 : m->column + 1, ""},
+                     "a case file holds one YAML document, this is a second one (remove the '---' "
+                     "line before it or split the file)");
   std::vector<YAML::Node> documents;
   try {
     documents = YAML::LoadAll(text);
@@ -604,26 +638,10 @@ Case parse_case_string(const std::string& text, const std::string& name,
     throw InputError({name, marked ? e.mark.line + 1 : 0, marked ? e.mark.column + 1 : 0, ""},
                      rule);
   }
-  {
-    std::istringstream in(text);
-    YAML::Parser parser(in);
-    UnclosedQuoteFinder finder(text);
-    try {
-      while (parser.HandleNextDocument(finder)) {
-      }
-    } catch (const YAML::Exception&) {  // LoadAll read the same text: cannot happen
-    }
-    if (const auto& m = finder.found())
-      throw InputError({name, m->line + 1, m->column + 1, ""},
-                       "YAML syntax error: this quoted value is never closed (its closing quote "
-                       "is missing, so it would run to the end of the file)");
-  }
-  if (documents.size() > 1) {
-    const YAML::Mark m = documents[1].Mark();
-    throw InputError({name, m.is_null() ? 0 : m.line + 1, m.is_null() ? 0 : m.column + 1, ""},
-                     "a case file holds one YAML document, this is a second one (remove the '---' "
-                     "line before it or split the file)");
-  }
+  if (const auto& m = finder.found())
+    throw InputError({name, m->line + 1, m->column + 1, ""},
+                     "YAML syntax error: this quoted value is never closed (its closing quote "
+                     "is missing, so it would run to the end of the file)");
   YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
   if (!root.IsDefined() || root.IsNull())
     throw InputError({name, 0, 0, ""}, "the case file is empty");
