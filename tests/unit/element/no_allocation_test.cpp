@@ -11,7 +11,17 @@
 #include "material/fung.hpp"
 #include "material/neo_hookean.hpp"
 
-#ifdef __GLIBC__
+// AddressSanitizer replaces malloc itself; interposing it there crashes at start-up.
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define PLISSE_ASAN 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__)
+#define PLISSE_ASAN 1
+#endif
+
+#if defined(__GLIBC__) && !defined(PLISSE_ASAN)
 namespace {
 std::atomic<bool> counting{false};
 std::atomic<long> allocations{0};
