@@ -7,21 +7,12 @@
 #include "mesh/generate.hpp"
 #include "physics/pressure_load.hpp"
 #include "physics/surface.hpp"
+#include "support/dense_sink.hpp"
 
 namespace plisse {
 namespace {
 
-/// Collects tangent entries into a dense matrix over the full state.
-class DenseSink : public TangentSink {
- public:
-  explicit DenseSink(int n) : K(Eigen::MatrixXd::Zero(n, n)) {}
-  void add(std::span<const int> rows, std::span<const int> cols,
-           std::span<const double> values) override {
-    for (size_t i = 0; i < rows.size(); ++i)
-      for (size_t j = 0; j < cols.size(); ++j) K(rows[i], cols[j]) += values[i * cols.size() + j];
-  }
-  Eigen::MatrixXd K;
-};
+using test::DenseSink;
 
 Mesh small_cube() {
   MeshGenerationSpec spec;
