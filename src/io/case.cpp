@@ -503,13 +503,19 @@ std::size_t first_non_text_byte(const std::string& text) {
   return std::string::npos;
 }
 
-/// Whether 0-based line `line` of `text` has a tab in its indentation.
-bool indented_with_tab(const std::string& text, int line) {
+/// Offset of the start of 0-based line `line` of `text` (npos past the end).
+std::size_t line_start(const std::string& text, int line) {
   std::size_t start = 0;
   for (int l = 0; l < line && start != std::string::npos; ++l) {
     start = text.find('\n', start);
     if (start != std::string::npos) ++start;
   }
+  return start;
+}
+
+/// Whether 0-based line `line` of `text` has a tab in its indentation.
+bool indented_with_tab(const std::string& text, int line) {
+  const std::size_t start = line_start(text, line);
   for (std::size_t i = start; i != std::string::npos && i < text.size(); ++i) {
     if (text[i] == '\t') return true;
     if (text[i] != ' ') return false;
@@ -621,10 +627,24 @@ Case parse_case_string(const std::string& text, const std::string& name,
     } catch (const YAML::Exception&) {  // LoadAll below reports it with its place
     }
   }
-  if (const auto& m = finder.second_document())
+  if (const auto& m = finder.second_document()) {
+    // A second document starts at a '---' line, or where yaml-cpp gave up on the first one (a
+    // stray ',' or ']' at the top level): say which.
+    bool marker = false;  // a '---' line at the mark or before it, past blank and comment lines
+    for (int l = m->is_null() ? -1 : m->line; l >= 0 && !marker; --l) {
+      const std::size_t start = line_start(text, l);
+      if (start == std::string::npos) continue;
+      const std::string line = text.substr(start, text.find('\n', start) - start);
+      marker = line.compare(0, 3, "---") == 0;
+      const std::size_t first = line.find_first_not_of(" \t\r");
+      if (l < m->line && first != std::string::npos && line[first] != '#') break;
+    }
     throw InputError({name, m->is_null() ? 0 : m->line + 1, m->is_null() ? 0 : m->column + 1, ""},
-                     "a case file holds one YAML document, this is a second one (remove the '---' "
-                     "line before it or split the file)");
+                     marker ? "a case file holds one YAML document, this is a second one (remove "
+                              "the '---' line before it or split the file)"
+                            : "YAML syntax error: the case's top-level map cannot continue here "
+                              "(a stray ',', ']' or '}'?)");
+  }
   std::vector<YAML::Node> documents;
   try {
     documents = YAML::LoadAll(text);
