@@ -1,5 +1,8 @@
 #pragma once
 /// Test helpers that run the built `plisse` executable and read its run directory.
+#include <sys/wait.h>
+
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -20,6 +23,24 @@ inline int run_plisse(const std::string& args, const std::filesystem::path& log)
                               log.string() + "' 2>&1";
   const int status = std::system(command.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// Exit status and everything `plisse ARGS` printed (stdout and stderr).
+struct PlisseResult {
+  int status = -1;
+  std::string output;
+};
+
+inline PlisseResult run_plisse_captured(const std::string& args) {
+  const std::string command = std::string(PLISSE_BINARY_DIR) + "/bin/plisse " + args + " 2>&1";
+  PlisseResult r;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return r;
+  char buffer[4096];
+  while (const std::size_t n = fread(buffer, 1, sizeof buffer, pipe)) r.output.append(buffer, n);
+  const int status = pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
 }
 
 inline std::string example(const std::string& name) {

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <string>
 
+#include "support/run_plisse.hpp"
+
 #include "mesh/gmsh_io.hpp"
 #include "mesh/quality.hpp"
 #include "mesh_test_util.hpp"
@@ -13,22 +15,9 @@
 namespace plisse {
 namespace {
 
-struct Result {
-  int status = -1;
-  std::string output;  // stdout and stderr
-};
+using Result = plisse::test::PlisseResult;
 
-Result run_plisse(const std::string& args) {
-  const std::string command = std::string(PLISSE_BINARY_DIR) + "/bin/plisse " + args + " 2>&1";
-  Result r;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  char buffer[4096];
-  while (const std::size_t n = fread(buffer, 1, sizeof buffer, pipe)) r.output.append(buffer, n);
-  const int status = pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+Result run_plisse(const std::string& args) { return plisse::test::run_plisse_captured(args); }
 
 TEST(MeshCommand, WritesShellWithSummary) {
   const std::string path = (test::scratch_dir("command") / "s.msh").string();
