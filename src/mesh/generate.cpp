@@ -62,7 +62,8 @@ double layer_value(double first, double last, int j, int layers) {
 
 const std::vector<MeshKind>& mesh_kinds() {
   static const std::vector<MeshKind> kinds = [] {
-    const Range size = Range::positive();
+    // Lengths up to a kilometre: beyond, Gmsh's geometry tolerances break down (it aborts).
+    const Range size{0.0, 1e6, true, false};
     const Range layers = Range::closed(1, 64);
     const auto thickness_help = "wall thickness";
     const auto layers_help = "tetrahedra through the thickness (exactly)";
