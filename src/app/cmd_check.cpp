@@ -13,6 +13,7 @@
 #include "mesh/quality.hpp"
 #include "physics/dirichlet.hpp"
 #include "physics/terms.hpp"
+#include "solver/petsc_session.hpp"
 #include "app/run_case.hpp"
 
 namespace plisse::app {
@@ -60,7 +61,12 @@ void check_case(const CheckOptions& options) {
   check_case_against_mesh(c, mesh);
   // The same rules `plisse run` applies before solving (symmetry planes, conflicting conditions).
   const auto constraints = collect_constraints(c, mesh);
+  check_free_displacements(c, mesh, constraints);
   make_terms(c, mesh, constraints);  // loads, cavities and dies validate their surfaces here
+  {
+    PetscSession petsc({"-no_signal_handler", c.solver.petsc_options});
+    check_solver_options(c, {});
+  }
   const MeshReport report = check_mesh(mesh);
 
   std::ostream& out = std::cout;

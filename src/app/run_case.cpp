@@ -162,6 +162,27 @@ std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh) {
   return out;
 }
 
+void check_free_displacements(const Case& c, const Mesh& mesh,
+                              const std::vector<ConstrainedComponent>& constraints) {
+  // collect_constraints gives one entry per constrained (node, component).
+  if (constraints.size() >= 3 * static_cast<size_t>(mesh.n_nodes()))
+    throw InputError({c.path, 0, 0, "boundary"},
+                     "every displacement is prescribed by the boundary conditions: nothing to solve");
+}
+
+void check_solver_options(const Case& c, const std::vector<std::string>& command_line_options) {
+  try {
+    check_petsc_options(c.solver.newton);
+  } catch (const Error& e) {
+    std::string given = c.solver.petsc_options;
+    for (const auto& o : command_line_options) given += (given.empty() ? "" : " ") + o;
+    const InputPlace place = command_line_options.empty()
+                                 ? c.solver.petsc_options_place
+                                 : InputPlace{"command line", 0, 0, "--petsc"};
+    throw InputError(place, "PETSc refuses the options '" + given + "': " + e.what());
+  }
+}
+
 void run_case(const RunOptions& options) {
   const auto t_start = Clock::now();
   const Case c = parse_case_file(options.case_file, options.overrides);
@@ -193,19 +214,14 @@ void run_case(const RunOptions& options) {
   std::map<std::string, double> params = c.material.params;
   AnyMaterial material = make_material(c.material.model, params);
   const std::vector<ConstrainedComponent> constraints = collect_constraints(c, mesh);
+  check_free_displacements(c, mesh, constraints);
   std::vector<std::unique_ptr<ModelTerm>> terms = make_terms(c, mesh, constraints);
-
-  RunDirectory dir(out_dir);
-  RunLog log(dir.log_txt());
-  if (checkpoint && fs::exists(dir.log_txt())) log.prepend(read_file(dir.log_txt()));
-  log.info("plisse run " + options.case_file + (c.title.empty() ? "" : "  (" + c.title + ")"));
-  log.info("output: " + dir.directory().string());
-  for (const auto& o : options.overrides) log.info("  --set " + o);
 
   // PETSc's own signal handler would abort on SIGINT/SIGTERM; plisse checkpoints instead.
   PetscSession petsc({"-no_signal_handler", c.solver.petsc_options});
-  InterruptGuard interrupts;
   for (const auto& o : options.petsc_options) PetscSession::insert_options(o);
+  check_solver_options(c, options.petsc_options);
+  InterruptGuard interrupts;
 
   t0 = Clock::now();
   MixedModel model(mesh, material,
@@ -213,6 +229,13 @@ void run_case(const RunOptions& options) {
                    constraints, std::move(terms));
   LoadStepper stepper(model, c.solver);
   const double time_setup = seconds_since(t0);
+
+  RunDirectory dir(out_dir);
+  RunLog log(dir.log_txt());
+  if (checkpoint && fs::exists(dir.log_txt())) log.prepend(read_file(dir.log_txt()));
+  log.info("plisse run " + options.case_file + (c.title.empty() ? "" : "  (" + c.title + ")"));
+  log.info("output: " + dir.directory().string());
+  for (const auto& o : options.overrides) log.info("  --set " + o);
   {
     char line[256];
     std::snprintf(line, sizeof line,

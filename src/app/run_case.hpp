@@ -5,6 +5,7 @@
 
 #include "io/case.hpp"
 #include "mesh/mesh.hpp"
+#include "physics/dirichlet.hpp"
 
 namespace plisse::app {
 
@@ -20,6 +21,16 @@ struct RunOptions {
 /// cavities, dies, the incremental scheme, stability checks), each as an InputError naming the
 /// key. `plisse run` refuses the first; `plisse check` lists them as warnings.
 std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh);
+
+/// Checks the PETSc options of the case (solver.petsc_options) and of the command line (--petsc)
+/// against plisse's solver set-up; PETSc's refusal becomes an InputError at that key. Needs a
+/// live PetscSession that holds the options.
+void check_solver_options(const Case& c, const std::vector<std::string>& command_line_options);
+
+/// InputError (key `boundary`) when the boundary conditions prescribe every displacement, so
+/// that nothing is left to solve.
+void check_free_displacements(const Case& c, const Mesh& mesh,
+                              const std::vector<ConstrainedComponent>& constraints);
 
 /// Runs the case. Returns normally when the run reached its end time; throws InputError for bad
 /// input (nothing is solved) and SolverError when the solver stopped early or SIGINT/SIGTERM

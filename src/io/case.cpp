@@ -398,6 +398,7 @@ SolverSettings read_solver(const Field& field) {
       m.integer("max_augmentations", s.max_augmentations, Range::at_least(0));
   if (const auto f = m.find("petsc_options"); f && !f->is_null()) {
     s.petsc_options = f->text();
+    s.petsc_options_place = f->place();
     // PETSc reads "-name [value] -name [value] ...": a word before the first option, or two words
     // in a row, is not read as anything and PETSc ignores it without a word (a forgotten dash in
     // "ksp_type preonly" silently kept the default solver).

@@ -161,6 +161,7 @@ struct SolverSettings {
   NewtonSettings newton;
   StabilitySettings stability;
   std::string petsc_options;   ///< extra PETSc options, e.g. "-ksp_type preonly -pc_type lu"
+  InputPlace petsc_options_place;  ///< where they are written (for PETSc's refusals)
 };
 
 struct WrinkleSettings {

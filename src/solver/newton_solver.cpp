@@ -22,6 +22,38 @@ const char* line_search_type(LineSearch ls) {
 }
 }  // namespace
 
+void configure_snes(SNES snes, const NewtonSettings& settings, bool symmetric) {
+  // stol = 0: convergence is judged on the residual only.
+  PLISSE_PETSC(SNESSetTolerances(snes, settings.atol, settings.rtol, 0.0, settings.max_iterations,
+                                 PETSC_DEFAULT));
+  SNESLineSearch ls = nullptr;
+  PLISSE_PETSC(SNESGetLineSearch(snes, &ls));
+  PLISSE_PETSC(SNESLineSearchSetType(ls, line_search_type(settings.line_search)));
+  KSP ksp = nullptr;
+  PC pc = nullptr;
+  PLISSE_PETSC(SNESGetKSP(snes, &ksp));
+  PLISSE_PETSC(KSPSetType(ksp, KSPPREONLY));
+  PLISSE_PETSC(KSPGetPC(ksp, &pc));
+  // A symmetric tangent is indefinite (saddle point): MUMPS LDL^T (sym = 2). Follower loads on
+  // open surfaces make it unsymmetric: LU.
+  PLISSE_PETSC(PCSetType(pc, symmetric ? PCCHOLESKY : PCLU));
+  PLISSE_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+}
+
+void check_petsc_options(const NewtonSettings& settings) {
+  SNES snes = nullptr;
+  PLISSE_PETSC(SNESCreate(PETSC_COMM_SELF, &snes));
+  try {
+    PLISSE_PETSC(SNESSetType(snes, SNESNEWTONLS));
+    configure_snes(snes, settings, true);
+    PLISSE_PETSC(SNESSetFromOptions(snes));
+  } catch (...) {
+    SNESDestroy(&snes);
+    throw;
+  }
+  SNESDestroy(&snes);
+}
+
 NewtonSolver::NewtonSolver(MixedModel& model, const NewtonSettings& settings) : model_(model) {
   // The event log splits the linear-solver time into factorisation and triangular solves.
   PetscBool logging = PETSC_FALSE;
@@ -35,21 +67,7 @@ NewtonSolver::NewtonSolver(MixedModel& model, const NewtonSettings& settings) : 
   PLISSE_PETSC(SNESSetType(snes_, SNESNEWTONLS));
   PLISSE_PETSC(SNESSetFunction(snes_, r_, &NewtonSolver::form_function, this));
   PLISSE_PETSC(SNESSetJacobian(snes_, K_, K_, &NewtonSolver::form_jacobian, this));
-  // stol = 0: convergence is judged on the residual only.
-  PLISSE_PETSC(SNESSetTolerances(snes_, settings.atol, settings.rtol, 0.0, settings.max_iterations,
-                                 PETSC_DEFAULT));
-  SNESLineSearch ls = nullptr;
-  PLISSE_PETSC(SNESGetLineSearch(snes_, &ls));
-  PLISSE_PETSC(SNESLineSearchSetType(ls, line_search_type(settings.line_search)));
-  KSP ksp = nullptr;
-  PC pc = nullptr;
-  PLISSE_PETSC(SNESGetKSP(snes_, &ksp));
-  PLISSE_PETSC(KSPSetType(ksp, KSPPREONLY));
-  PLISSE_PETSC(KSPGetPC(ksp, &pc));
-  // A symmetric tangent is indefinite (saddle point): MUMPS LDL^T (sym = 2). Follower loads on
-  // open surfaces make it unsymmetric: LU.
-  PLISSE_PETSC(PCSetType(pc, model.symmetric() ? PCCHOLESKY : PCLU));
-  PLISSE_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  configure_snes(snes_, settings, model.symmetric());
   history_.assign(settings.max_iterations + 1, 0.0);
   PLISSE_PETSC(SNESSetConvergenceHistory(snes_, history_.data(), nullptr,
                                          static_cast<PetscInt>(history_.size()), PETSC_TRUE));

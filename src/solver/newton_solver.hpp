@@ -31,6 +31,14 @@ struct PhaseTimes {
   int factorisations = 0;      ///< numeric factorisations
 };
 
+/// Sets plisse's defaults on `snes` (tolerances, line search, direct solve with MUMPS: LDL^T when
+/// `symmetric`, else LU); PETSc's options database may override them afterwards.
+void configure_snes(SNES snes, const NewtonSettings& settings, bool symmetric);
+
+/// Applies the options database to a solver configured as plisse's: throws plisse::Error when
+/// PETSc refuses them (unknown types, bad values), before any model is built.
+void check_petsc_options(const NewtonSettings& settings);
+
 class NewtonSolver {
  public:
   NewtonSolver(MixedModel& model, const NewtonSettings& settings);
