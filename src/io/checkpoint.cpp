@@ -23,7 +23,7 @@ class Writer {
   }
   void doubles(const std::vector<double>& v) {
     value<std::uint64_t>(v.size());
-    bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
+    if (!v.empty()) bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
   }
   void raw(const char* p, size_t n) { bytes_.append(p, n); }
   const std::string& bytes() const { return bytes_; }
@@ -46,7 +46,7 @@ class Reader {
     const auto n = value<std::uint64_t>();
     if (n > (bytes_.size() - at_) / sizeof(double)) fail("truncated or corrupt (array too long)");
     std::vector<double> v(n);
-    std::memcpy(v.data(), bytes_.data() + at_, n * sizeof(double));
+    if (n > 0) std::memcpy(v.data(), bytes_.data() + at_, n * sizeof(double));  // data() may be null
     at_ += n * sizeof(double);
     return v;
   }
