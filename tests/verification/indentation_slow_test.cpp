@@ -5,7 +5,9 @@
 namespace plisse::test {
 namespace {
 
-TEST(IndentationFine, PressureHasNoCheckerboard) { expect_smooth_pressure({4, 8, 16}); }
+TEST(IndentationFine, PressureHasNoCheckerboard) {
+  ASSERT_NO_FATAL_FAILURE(expect_smooth_pressure({4, 8, 16}));
+}
 
 }  // namespace
 }  // namespace plisse::test

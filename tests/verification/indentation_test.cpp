@@ -5,7 +5,9 @@
 namespace plisse::test {
 namespace {
 
-TEST(Indentation, PressureHasNoCheckerboard) { expect_smooth_pressure({4, 8}); }
+TEST(Indentation, PressureHasNoCheckerboard) {
+  ASSERT_NO_FATAL_FAILURE(expect_smooth_pressure({4, 8}));
+}
 
 }  // namespace
 }  // namespace plisse::test
