@@ -17,7 +17,7 @@
 
 #include "mesh/generate.hpp"
 #include "solver/load_stepper.hpp"
-#include "verification/saddle_point.hpp"
+#include "verification/fixtures/saddle_point.hpp"
 
 namespace plisse::test {
 

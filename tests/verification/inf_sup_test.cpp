@@ -14,7 +14,7 @@
 #include <string>
 
 #include "mesh/generate.hpp"
-#include "verification/saddle_point.hpp"
+#include "verification/fixtures/saddle_point.hpp"
 
 namespace plisse::test {
 namespace {

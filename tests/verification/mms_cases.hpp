@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "verification/mms_problem.hpp"
+#include "verification/fixtures/mms_problem.hpp"
 
 namespace plisse::test {
 

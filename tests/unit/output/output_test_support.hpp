@@ -1,6 +1,6 @@
 #pragma once
 /// Helpers shared by the output tests: a scratch directory per test, file listing and reading,
-/// and the independent Python reader (read_output.py, run with Debian's /usr/bin/python3).
+/// and the independent Python reader (fixtures/read_output.py, run with Debian's /usr/bin/python3).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -57,11 +57,11 @@ inline std::string contents(const std::filesystem::path& file) {
   return text.str();
 }
 
-/// Runs tests/unit/output/read_output.py KIND FILE and returns its JSON output. Fails the test
+/// Runs tests/unit/output/fixtures/read_output.py KIND FILE and returns its JSON output. Fails the test
 /// (ADD_FAILURE, returns null) if the script exits with an error.
 inline nlohmann::json read_with_python(const std::string& kind, const std::filesystem::path& file) {
   const std::string command = std::string("/usr/bin/python3 '") + PLISSE_SOURCE_DIR +
-                              "/tests/unit/output/read_output.py' " + kind + " '" + file.string() +
+                              "/tests/unit/output/fixtures/read_output.py' " + kind + " '" + file.string() +
                               "'";
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) {
