@@ -11,7 +11,7 @@
 #include "physics/cavity.hpp"
 #include "physics/cavity_volume.hpp"
 #include "physics/surface.hpp"
-#include "support/dense_sink.hpp"
+#include "support/term_testing.hpp"
 
 namespace plisse {
 namespace {

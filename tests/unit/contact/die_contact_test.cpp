@@ -12,12 +12,14 @@
 #include "mesh/generate.hpp"
 #include "physics/die_surface.hpp"
 #include "physics/surface.hpp"
-#include "support/dense_sink.hpp"
+#include "support/term_testing.hpp"
 
 namespace plisse {
 namespace {
 
 using test::DenseSink;
+using test::random_state;
+using test::term_residual;
 
 /// [0, 2]^3 with 2 divisions: top nodes (z = 2) at x, y in {0, 1, 2}.
 Mesh cube(int divisions = 2) {
@@ -29,20 +31,6 @@ Mesh cube(int divisions = 2) {
 }
 
 int n_dofs(const Mesh& mesh) { return kValuesPerNode * mesh.n_nodes(); }
-
-std::vector<double> random_state(int n, unsigned seed, double scale) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-scale, scale);
-  std::vector<double> x(n);
-  for (double& v : x) v = u(rng);
-  return x;
-}
-
-Eigen::VectorXd residual(DieContact& term, double t, const std::vector<double>& x) {
-  std::vector<double> r(x.size(), 0.0);
-  term.assemble(t, x, r, nullptr);
-  return Eigen::Map<Eigen::VectorXd>(r.data(), r.size());
-}
 
 DieContactSettings settings(ContactKind kind, double penalty = 3.0, double tolerance = 1e-12) {
   DieContactSettings s;
@@ -117,7 +105,7 @@ TEST_P(DieContactTangent, IsTheDerivativeOfTheResidualAndSymmetric) {
     auto xp = x, xm = x;
     xp[j] += h;
     xm[j] -= h;
-    const Eigen::VectorXd fd = (residual(term, t, xp) - residual(term, t, xm)) / (2 * h);
+    const Eigen::VectorXd fd = (term_residual(term, t, xp) - term_residual(term, t, xm)) / (2 * h);
     max_error = std::max(max_error, (fd - sink.K.col(j)).cwiseAbs().maxCoeff());
   }
   std::ostringstream relative;

@@ -7,12 +7,14 @@
 #include "mesh/generate.hpp"
 #include "physics/pressure_load.hpp"
 #include "physics/surface.hpp"
-#include "support/dense_sink.hpp"
+#include "support/term_testing.hpp"
 
 namespace plisse {
 namespace {
 
 using test::DenseSink;
+using test::random_state;
+using test::term_residual;
 
 Mesh small_cube() {
   MeshGenerationSpec spec;
@@ -20,20 +22,6 @@ Mesh small_cube() {
   spec.edge = 2.0;
   spec.divisions = 2;
   return generate_mesh(spec);
-}
-
-std::vector<double> random_state(int n, unsigned seed, double scale) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-scale, scale);
-  std::vector<double> x(n);
-  for (double& v : x) v = u(rng);
-  return x;
-}
-
-Eigen::VectorXd residual(PressureLoad& load, double t, const std::vector<double>& x) {
-  std::vector<double> r(x.size(), 0.0);
-  load.assemble(t, x, r, nullptr);
-  return Eigen::Map<Eigen::VectorXd>(r.data(), r.size());
 }
 
 TEST(PressureLoad, TangentIsDerivativeOfResidualOnAnOpenSurface) {
@@ -51,7 +39,7 @@ TEST(PressureLoad, TangentIsDerivativeOfResidualOnAnOpenSurface) {
     auto xp = x, xm = x;
     xp[j] += h;
     xm[j] -= h;
-    const Eigen::VectorXd fd = (residual(load, 1.0, xp) - residual(load, 1.0, xm)) / (2 * h);
+    const Eigen::VectorXd fd = (term_residual(load, 1.0, xp) - term_residual(load, 1.0, xm)) / (2 * h);
     max_error = std::max(max_error, (fd - sink.K.col(j)).cwiseAbs().maxCoeff());
   }
   // The residual is quadratic in x, so central differences are exact up to round-off.
