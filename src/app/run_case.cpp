@@ -150,9 +150,6 @@ std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh) {
     out.emplace_back(c.mesh.file ? c.mesh.file_place : c.mesh.place,
                      "the mesh has second-order (10-node) tetrahedra; the MINI element needs "
                      "linear ones (a quadratic element is planned)");
-  const auto unsupported = [&](const InputPlace& place, const std::string& what) {
-    out.emplace_back(place, what + " are not supported by the solver yet");
-  };
   if (c.solver.scheme != Scheme::total_lagrangian)
     out.emplace_back(InputPlace{c.path, 0, 0, "solver.scheme"},
                      "only the total-lagrangian scheme is available yet");

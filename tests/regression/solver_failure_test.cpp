@@ -28,7 +28,9 @@ TEST(SolverFailure, StopsWithExitStatus1AndNamesStepElementAndReason) {
   EXPECT_NE(summary["failure"].get<std::string>().find("worst element"), std::string::npos);
   // Whatever converged before the failure is in the run directory.
   const HistoryTable h = read_history(dir / "history.csv");
-  if (!h.rows.empty()) EXPECT_TRUE(std::filesystem::exists(dir / "step_0001.vtu"));
+  if (!h.rows.empty()) {
+    EXPECT_TRUE(std::filesystem::exists(dir / "step_0001.vtu"));
+  }
 }
 
 }  // namespace

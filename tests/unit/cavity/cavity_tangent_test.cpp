@@ -239,8 +239,12 @@ TEST(CavityTerm, CouplingsCoverEveryTangentEntryOutsideTheNodalBlock) {
   s.term->assemble(0.6, x, r, &sink);
   const int pc = s.n - 1;
   for (int j = 0; j < s.n; ++j) {
-    if (sink.K(pc, j) != 0.0) EXPECT_TRUE(listed.count({pc, j})) << "row p_c, column " << j;
-    if (sink.K(j, pc) != 0.0) EXPECT_TRUE(listed.count({j, pc})) << "row " << j << ", column p_c";
+    if (sink.K(pc, j) != 0.0) {
+      EXPECT_TRUE(listed.count({pc, j})) << "row p_c, column " << j;
+    }
+    if (sink.K(j, pc) != 0.0) {
+      EXPECT_TRUE(listed.count({j, pc})) << "row " << j << ", column p_c";
+    }
   }
   EXPECT_TRUE(listed.count({pc, pc}));
 }

@@ -284,8 +284,9 @@ dies:
   EXPECT_NEAR(contact->penalty(), 10.0 / h, 1e-12);
   for (int v = 0; v < mesh.n_nodes(); ++v) {
     const Vec3d& X = mesh.nodes[v];
-    if (X.x() == 0.0 && X.y() > 0.0 && X.y() < 2.0 && X.z() > 0.0 && X.z() < 2.0)
+    if (X.x() == 0.0 && X.y() > 0.0 && X.y() < 2.0 && X.z() > 0.0 && X.z() < 2.0) {
       EXPECT_EQ(contact->area(v), 0.0) << "node " << v << " lies only on the symmetry cut";
+    }
   }
   EXPECT_EQ(term->history_columns(),
             (std::vector<std::string>{"force_x:punch", "force_y:punch", "force_z:punch",
