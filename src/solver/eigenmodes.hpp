@@ -1,0 +1,39 @@
+#pragma once
+/// Lowest eigenmodes of the consistent tangent of a MixedModel, for the stability analysis:
+///   K φ = λ M φ                                                     (eigenmodes.md, E1)
+/// with K the tangent over the free dofs at the model's current state and M the lumped nodal
+/// volume on the free displacement dofs (zero on pressure dofs and global unknowns). With this
+/// singular M the problem is the stability problem of the displacement field on the
+/// incompressibility constraint: the pressure (and the global unknowns) are eliminated by a Schur
+/// complement, S φ_u = λ M_u φ_u with S = K_uu - K_up K_pp^{-1} K_pu (eigenmodes.md, E3).
+/// Solved with SLEPc, shift-invert about a target with a MUMPS factorisation (LDL^T when the
+/// tangent is symmetric, LU otherwise).
+#include <vector>
+
+#include "solver/mixed_model.hpp"
+
+namespace plisse {
+
+/// One eigenpair of (E1).
+struct Eigenmode {
+  double eigenvalue = 0;  ///< λ [MPa/mm^2 = N/mm^4 per unit displacement and volume]: < 0 unstable
+  /// Full-state vector (MixedModel::state() layout), zeros on constrained dofs. The displacement
+  /// part is scaled so that the largest nodal |u| is 1 and that node's largest |component| is
+  /// positive; the pressure and global entries carry the mode's own values with the same scale.
+  std::vector<double> state;
+};
+
+struct EigenOptions {
+  int count = 4;            ///< number of eigenpairs wanted (nearest the target)
+  double target = 0.0;      ///< shift σ of the shift-invert transformation [same unit as λ]
+  double tolerance = 1e-8;  ///< SLEPc's relative tolerance on the residual of each pair
+};
+
+/// The `options.count` eigenpairs of (E1) nearest `options.target` at the model's current state,
+/// in ascending order of eigenvalue. The model's state is not changed (the tangent is assembled
+/// at it). Throws plisse::SolverError when SLEPc does not converge to `count` pairs, plisse::Error
+/// on a failed assembly or a PETSc/SLEPc error. Requires a live PetscSession (which initialises
+/// SLEPc too).
+std::vector<Eigenmode> lowest_eigenmodes(MixedModel& model, const EigenOptions& options);
+
+}  // namespace plisse
