@@ -1,0 +1,224 @@
+// Geometric imperfections (mesh/imperfection.hpp, docs/theory/imperfections.md): reproducible
+// seeded fields, exact amplitude, rigid through-thickness columns on a layered shell (the wall
+// keeps its thickness), symmetry planes kept, the mesh check after applying, mode scaling.
+#include "mesh/imperfection.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "core/error.hpp"
+#include "mesh/generate.hpp"
+#include "mesh/quality.hpp"
+
+namespace plisse {
+namespace {
+
+constexpr int kLayers = 2;
+constexpr double kThickness = 1.0;  // [mm]
+
+/// Quarter spherical shell, inner radius 10 mm, wall 1 mm, 2 layers: node k of layer j is
+/// j n + k (mesh/layered_shell.hpp), so the column of node i is {i mod n + j n}.
+const Mesh& quarter_shell() {
+  static const Mesh mesh = [] {
+    MeshGenerationSpec spec;
+    spec.kind = "spherical-shell";
+    spec.inner_radius = 10.0;
+    spec.thickness = kThickness;
+    spec.layers = kLayers;
+    spec.element_size = 2.0;
+    spec.symmetry = Symmetry::quarter;
+    return generate_mesh(spec);
+  }();
+  return mesh;
+}
+
+std::vector<std::array<int, 3>> tagged(const Mesh& mesh, const std::string& tag) {
+  std::vector<std::array<int, 3>> out;
+  for (int t : mesh.surface_tags.at(tag)) out.push_back(mesh.triangles[static_cast<std::size_t>(t)]);
+  return out;
+}
+
+std::vector<Vec3d> random_field(double amplitude, std::uint64_t seed) {
+  const Mesh& mesh = quarter_shell();
+  return compute_random_imperfection(mesh, tagged(mesh, "outer"), amplitude, seed,
+                                     {"sym_x", "sym_z"});
+}
+
+double max_norm(const std::vector<Vec3d>& d) {
+  double m = 0.0;
+  for (const Vec3d& v : d) m = std::max(m, v.norm());
+  return m;
+}
+
+TEST(SeededUnitValue, MapsTheEngineRangeOntoMinusOneOne) {
+  EXPECT_EQ(seeded_unit_value(0), -1.0);
+  EXPECT_EQ(seeded_unit_value(~std::uint64_t{0}), 1.0 - 0x1.0p-52);
+  EXPECT_EQ(seeded_unit_value(std::uint64_t{1} << 63), 0.0);
+  // The 10000th output of a default-seeded mt19937_64 is fixed by the C++ standard
+  // ([rand.predef]); its image is a plain binary fraction, the same on every platform.
+  std::mt19937_64 engine;
+  engine.discard(9999);
+  const std::uint64_t u = engine();
+  ASSERT_EQ(u, 9981545732273789042ULL);
+  EXPECT_EQ(seeded_unit_value(u), static_cast<double>(u >> 11) / 4503599627370496.0 - 1.0);
+}
+
+TEST(RandomImperfection, SameSeedGivesTheSameFieldExactly) {
+  const auto a = random_field(0.05, 42);
+  const auto b = random_field(0.05, 42);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t j = 0; j < a.size(); ++j) {
+    EXPECT_EQ(a[j].x(), b[j].x());
+    EXPECT_EQ(a[j].y(), b[j].y());
+    EXPECT_EQ(a[j].z(), b[j].z());
+  }
+}
+
+TEST(RandomImperfection, OtherSeedGivesAnotherField) {
+  const auto a = random_field(0.05, 42);
+  const auto b = random_field(0.05, 43);
+  double difference = 0.0;
+  for (std::size_t j = 0; j < a.size(); ++j) difference = std::max(difference, (a[j] - b[j]).norm());
+  EXPECT_GT(difference, 0.01);  // two independent fields of amplitude 0.05 mm
+}
+
+TEST(RandomImperfection, LargestDisplacementIsTheAmplitude) {
+  for (double a : {1e-4, 0.05, 0.2}) EXPECT_NEAR(max_norm(random_field(a, 7)), a, 1e-15 * a);
+}
+
+TEST(RandomImperfection, ColumnsMoveRigidlySoTheWallKeepsItsThickness) {
+  const Mesh& mesh = quarter_shell();
+  const auto d = random_field(0.1, 3);
+  const std::size_t n = mesh.nodes.size() / (kLayers + 1);
+  ASSERT_EQ(n * (kLayers + 1), mesh.nodes.size());
+  for (std::size_t j = 0; j < mesh.nodes.size(); ++j) {
+    const std::size_t outer = kLayers * n + j % n;
+    // Same vector as the column's outer node: bit for bit (a copy, then one scaling).
+    EXPECT_EQ(d[j].x(), d[outer].x()) << "node " << j;
+    EXPECT_EQ(d[j].y(), d[outer].y()) << "node " << j;
+    EXPECT_EQ(d[j].z(), d[outer].z()) << "node " << j;
+  }
+  Mesh perturbed = mesh;
+  apply_imperfection(perturbed, d);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double wall = (perturbed.nodes[kLayers * n + k] - perturbed.nodes[k]).norm();
+    EXPECT_NEAR(wall, kThickness, 1e-12) << "column " << k;
+  }
+}
+
+TEST(RandomImperfection, DisplacementIsAlongTheOutwardNormal) {
+  // On a sphere the area-weighted normal is close to radial: the outer nodes move mostly radially.
+  const Mesh& mesh = quarter_shell();
+  const auto d = random_field(0.1, 5);
+  int outward = 0, inward = 0;
+  for (std::size_t j = 0; j < mesh.nodes.size(); ++j) {
+    if (d[j].norm() < 1e-3) continue;
+    const double cosine = d[j].normalized().dot(mesh.nodes[j].normalized());
+    EXPECT_GT(std::abs(cosine), 0.98) << "node " << j;
+    (cosine > 0 ? outward : inward) += 1;
+  }
+  EXPECT_GT(outward, 10);  // values in [-1, 1): both directions occur
+  EXPECT_GT(inward, 10);
+}
+
+TEST(RandomImperfection, SymmetryPlanesAreKept) {
+  Mesh mesh = quarter_shell();
+  apply_imperfection(mesh, random_field(0.1, 11));
+  for (int t : mesh.surface_tags.at("sym_x"))
+    for (int v : mesh.triangles[static_cast<std::size_t>(t)])
+      EXPECT_EQ(mesh.nodes[static_cast<std::size_t>(v)].x(), 0.0);
+  for (int t : mesh.surface_tags.at("sym_z"))
+    for (int v : mesh.triangles[static_cast<std::size_t>(t)])
+      EXPECT_EQ(mesh.nodes[static_cast<std::size_t>(v)].z(), 0.0);
+}
+
+TEST(RandomImperfection, PerturbedMeshPassesTheQualityCheck) {
+  Mesh mesh = quarter_shell();
+  apply_imperfection(mesh, random_field(0.05 * kThickness, 1));
+  const MeshReport report = check_mesh(mesh, {"inner", "outer", "sym_x", "sym_z"});
+  EXPECT_TRUE(report.ok()) << (report.errors.empty() ? "" : report.errors.front());
+  EXPECT_GT(report.min_volume, 0.0);
+}
+
+TEST(RandomImperfection, TooLargeAmplitudeIsRefusedAndTheMeshKept) {
+  Mesh mesh = quarter_shell();
+  // Shearing columns along themselves keeps element volumes; moving nodes inward past the
+  // centre (radius 10 mm) inverts elements.
+  const auto d = random_field(50.0 * kThickness, 1);
+  try {
+    apply_imperfection(mesh, d);
+    FAIL() << "an amplitude of 50 wall thicknesses was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("too large"), std::string::npos) << e.what();
+  }
+  const Mesh& original = quarter_shell();
+  for (std::size_t j = 0; j < mesh.nodes.size(); ++j)
+    EXPECT_EQ((mesh.nodes[j] - original.nodes[j]).norm(), 0.0);
+}
+
+TEST(RandomImperfection, RejectsBadInput) {
+  const Mesh& mesh = quarter_shell();
+  const auto outer = tagged(mesh, "outer");
+  EXPECT_THROW(compute_random_imperfection(mesh, outer, 0.0, 1), Error);
+  EXPECT_THROW(compute_random_imperfection(mesh, outer, std::nan(""), 1), Error);
+  EXPECT_THROW(compute_random_imperfection(mesh, {}, 0.1, 1), Error);
+  EXPECT_THROW(compute_random_imperfection(mesh, outer, 0.1, 1, {"no_such_tag"}), Error);
+  EXPECT_THROW(compute_random_imperfection(mesh, outer, 0.1, 1, {"outer"}), Error);  // not planar
+  const std::vector<std::array<int, 3>> out_of_range = {{0, 1, mesh.n_nodes()}};
+  EXPECT_THROW(compute_random_imperfection(mesh, out_of_range, 0.1, 1), Error);
+  const std::vector<std::array<int, 3>> not_a_face = {{0, 0, 1}};
+  EXPECT_THROW(compute_random_imperfection(mesh, not_a_face, 0.1, 1), Error);
+}
+
+TEST(RandomImperfection, WorksOnAFlatSheetAndItsEdges) {
+  // A flat box: the grid has a thin axis; every node of a vertical column moves with its top node.
+  MeshGenerationSpec spec;
+  spec.kind = "sheet";
+  spec.length = 6.0;
+  spec.width = 4.0;
+  spec.thickness = 0.5;
+  spec.layers = 2;
+  spec.element_size = 1.0;
+  const Mesh mesh = generate_mesh(spec);
+  const auto d = compute_random_imperfection(mesh, tagged(mesh, "top"), 0.01, 9);
+  EXPECT_NEAR(max_norm(d), 0.01, 1e-17);
+  for (std::size_t j = 0; j < mesh.nodes.size(); ++j) {
+    // top normal is +z; nodes of the side faces keep an in-plane x, y
+    EXPECT_EQ(d[j].x(), 0.0);
+    EXPECT_EQ(d[j].y(), 0.0);
+  }
+}
+
+TEST(ModeImperfection, ScalesTheLargestNodalVectorToTheAmplitude) {
+  const Mesh& mesh = quarter_shell();
+  std::vector<Vec3d> shape(mesh.nodes.size());
+  for (std::size_t j = 0; j < shape.size(); ++j)
+    shape[j] = Vec3d(std::sin(0.3 * mesh.nodes[j].x()), 2.0 * std::cos(mesh.nodes[j].y()), 0.5);
+  const double largest = max_norm(shape);
+  const auto d = compute_mode_imperfection(mesh, shape, 0.02);
+  EXPECT_NEAR(max_norm(d), 0.02, 1e-17);
+  for (std::size_t j = 0; j < shape.size(); ++j)
+    EXPECT_NEAR((d[j] - 0.02 / largest * shape[j]).norm(), 0.0, 1e-17);
+  Mesh perturbed = mesh;
+  apply_imperfection(perturbed, d);
+  for (std::size_t j = 0; j < shape.size(); ++j)
+    EXPECT_NEAR((perturbed.nodes[j] - mesh.nodes[j] - d[j]).norm(), 0.0, 1e-14);
+}
+
+TEST(ModeImperfection, RejectsZeroNonFiniteAndMismatchedModes) {
+  const Mesh& mesh = quarter_shell();
+  std::vector<Vec3d> zero(mesh.nodes.size(), Vec3d::Zero());
+  EXPECT_THROW(compute_mode_imperfection(mesh, zero, 0.1), Error);
+  std::vector<Vec3d> short_mode(3, Vec3d::Ones());
+  EXPECT_THROW(compute_mode_imperfection(mesh, short_mode, 0.1), Error);
+  std::vector<Vec3d> nan_mode(mesh.nodes.size(), Vec3d::Ones());
+  nan_mode[5].y() = std::nan("");
+  EXPECT_THROW(compute_mode_imperfection(mesh, nan_mode, 0.1), Error);
+  std::vector<Vec3d> ones(mesh.nodes.size(), Vec3d::Ones());
+  EXPECT_THROW(compute_mode_imperfection(mesh, ones, -1.0), Error);
+}
+
+}  // namespace
+}  // namespace plisse
