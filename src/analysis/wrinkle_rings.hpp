@@ -1,0 +1,97 @@
+#pragma once
+/// Wrinkle metrics on material rings of the deformed outer surface: dominant full-circle wrinkle
+/// count, peak-to-peak amplitude and wavelength per ring (docs/theory/wrinkles.md).
+///
+/// Typical call from a solver step (mesh, displacements u per node, thickness t):
+///   WrinkleOptions opt;
+///   opt.rings.axis = 1;  opt.rings.latitudes_deg = {0, 30, 60};  opt.thickness = t;
+///   const WrinkleReport r = evaluate_wrinkles(mesh, u, opt);   // outer tag "outer"
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "analysis/ring_surface.hpp"
+#include "core/types.hpp"
+#include "mesh/mesh.hpp"
+
+namespace plisse {
+
+/// Where and how rings are taken. Invalid values throw Error (see validate_ring_options).
+struct RingOptions {
+  int axis = 1;                         ///< 0 x, 1 y, 2 z: the wrinkle axis
+  Vec3d center = Vec3d::Zero();         ///< a point on the axis [mm]
+  std::vector<double> latitudes_deg;    ///< rings, each in (-90, 90) [deg]
+  int min_count = 3;                    ///< full-circle counts below this are global shape modes
+  int max_count = 200;                  ///< largest full-circle count searched and reported
+  std::optional<double> sector_deg;     ///< 360/180/90/45; default: detected from the mesh
+  /// Subtract the reference ring's own deviation from its mean shape, scaled by the ring's mean
+  /// radial stretch (wrinkles.md, W8): facets of the linear surface (sag ~ h^2 / 8R) and
+  /// reference imperfections are then not counted as wrinkles.
+  bool subtract_reference = true;
+};
+
+/// Metrics of one ring (wrinkles.md, W11-W13). Lengths in mm.
+struct RingMetrics {
+  double latitude_deg = 0.0;
+  int count = 0;             ///< dominant full-circle count m >= min_count; 0 if empty or flat
+  double amplitude = 0.0;    ///< peak-to-peak normal deviation without the modes m < min_count
+  double wavelength = 0.0;   ///< 2 pi mean_radius / count; 0 when count == 0
+  double mean_radius = 0.0;  ///< rho-bar of the deformed ring
+  int n_points = 0;          ///< sampled ring points (0: the ring misses the surface)
+  double sector_deg = 0.0;   ///< sector used (360, 180, 90, 45); 0 if n_points < 4
+  /// (m, A_m) for the full-circle counts m = 0, s, 2s, ... <= m_cap (s = 180 / sector_deg on a
+  /// sector, 1 on a full circle; m_cap = min(max_count, half the full-circle equivalent number
+  /// of ring points)). A_m is the amplitude (half peak-to-peak) of harmonic m [mm].
+  std::vector<std::pair<int, double>> spectrum;
+};
+
+/// Ring options plus the wrinkled/unwrinkled criterion.
+struct WrinkleOptions {
+  RingOptions rings;
+  double thickness = 0.0;           ///< membrane thickness [mm], > 0
+  double threshold_fraction = 0.1;  ///< wrinkled when max amplitude > this * thickness; > 0
+};
+
+struct WrinkleReport {
+  std::vector<RingMetrics> rings;  ///< in the order of RingOptions::latitudes_deg
+  double max_amplitude = 0.0;      ///< largest ring amplitude [mm]
+  double threshold = 0.0;          ///< threshold_fraction * thickness [mm]
+  bool wrinkled = false;           ///< max_amplitude > threshold
+};
+
+/// Throws Error naming the rule if: axis not in 0..2, a latitude not in (-90, 90) or not finite,
+/// min_count < 1, max_count < min_count, sector_deg not one of 45, 90, 180, 360.
+void validate_ring_options(const RingOptions& options);
+
+/// Sector of a ring from the reference azimuths of its points [rad]: the span 2 pi - (largest
+/// gap between consecutive azimuths, cyclically), rounded to the nearest of 45, 90, 180, 360
+/// degrees in ratio; `start` is the azimuth after the largest gap (0 for 360). Needs >= 2 angles.
+struct DetectedSector {
+  double sector_deg = 360.0;
+  double start = 0.0;  ///< [rad]
+};
+DetectedSector detect_sector(std::vector<double> theta);
+
+/// Metrics of the ring at `latitude_deg` on `surface` (wrinkles.md, sections 2-5). A ring that
+/// misses the surface or has fewer than 4 points gets count 0, amplitude 0, sector_deg 0.
+RingMetrics evaluate_ring(const RingSurface& surface, const RingOptions& options,
+                          double latitude_deg);
+
+/// All rings of `options.rings` on the outer surface given by `triangles` (node indices into
+/// `reference_nodes`, outward right-hand orientation), with nodal `displacement` (one per node,
+/// mm), and the wrinkled flag. Throws Error on invalid options or inconsistent sizes.
+WrinkleReport evaluate_wrinkles(const std::vector<Vec3d>& reference_nodes,
+                                const std::vector<std::array<int, 3>>& triangles,
+                                const std::vector<Vec3d>& displacement,
+                                const WrinkleOptions& options);
+
+/// Same, on the triangles of `mesh` tagged `outer_tag`. Throws Error if the tag is missing.
+WrinkleReport evaluate_wrinkles(const Mesh& mesh, const std::vector<Vec3d>& displacement,
+                                const WrinkleOptions& options,
+                                const std::string& outer_tag = "outer");
+
+/// The corner triples of the triangles of `mesh` tagged `tag`. Throws Error if the tag is missing.
+std::vector<std::array<int, 3>> tagged_triangles(const Mesh& mesh, const std::string& tag);
+
+}  // namespace plisse

@@ -1,0 +1,318 @@
+// Wrinkle rings on generated shells with synthetic displacement fields of known wrinkles:
+// counts (full, half, quarter, octant models; axes x, y, z), amplitudes, wavelengths, spectra;
+// no wrinkles from rigid motions, uniform inflation or a global ovalisation; invalid options.
+#include "analysis/wrinkle_rings.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <numbers>
+
+#include "analysis/cylindrical_frame.hpp"
+#include "core/error.hpp"
+#include "fixtures/shells.hpp"
+
+namespace plisse {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDeg = kPi / 180.0;
+
+// Shell: inner radius 10 mm, wall 1 mm (outer radius 11 mm), one layer, element edge 0.5 mm on
+// the inner surface (0.55 mm outside): a ring at latitude phi0 has node spacing
+// dtheta ~ 0.55 / (11 cos phi0) ~ 0.05 rad at the equator, 0.065 rad at 40 deg.
+constexpr double kInner = 10.0, kThickness = 1.0, kOuter = kInner + kThickness;
+constexpr double kSize = 0.5;
+
+const Mesh& shell(Symmetry symmetry) {
+  static std::map<Symmetry, Mesh> cache;
+  auto it = cache.find(symmetry);
+  if (it == cache.end())
+    it = cache.emplace(symmetry, test::sphere_shell(symmetry, kInner, kThickness, 1, kSize)).first;
+  return it->second;
+}
+
+/// Nodal displacements u(X) for every node of `mesh`.
+std::vector<Vec3d> displacement(const Mesh& mesh, const std::function<Vec3d(const Vec3d&)>& u) {
+  std::vector<Vec3d> out;
+  for (const auto& X : mesh.nodes) out.push_back(u(X));
+  return out;
+}
+
+/// Radial wrinkle pattern about `frame`: u = A cos(m theta + alpha) g(phi) e_r with
+/// e_r = (X - c)/|X - c| and g = cos(phi) / cos(phi0) (smooth, 1 on the ring, 0 at the poles).
+std::function<Vec3d(const Vec3d&)> radial_wrinkles(const CylindricalFrame& frame, double A, int m,
+                                                   double alpha, double phi0) {
+  return [=](const Vec3d& X) {
+    const CylindricalCoordinates c = frame.coordinates(X);
+    const Vec3d er = (X - frame.center()).normalized();
+    return Vec3d(A * std::cos(m * c.theta + alpha) * std::cos(c.phi) / std::cos(phi0) * er);
+  };
+}
+
+WrinkleOptions options_for(std::vector<double> latitudes) {
+  WrinkleOptions o;
+  o.rings.latitudes_deg = std::move(latitudes);
+  o.thickness = kThickness;
+  return o;
+}
+
+// The amplitude tolerance: linear interpolation of cos(m theta) between nodes dtheta apart is off
+// by at most A (m dtheta)^2 / 8; for m <= 10 and dtheta <= 0.065 rad that is <= 5.3 % at 40 deg
+// (2.6 % at 30 deg) of A, and the peak-to-peak of the sampled signal is short of 2A by at most
+// that much at each extreme. Gmsh's element sizes vary by some 10 % about the target, so we
+// allow 6 % of 2A, and 6 % on the spectral amplitude A_m.
+constexpr double kAmplitudeTolerance = 0.06;
+
+void expect_ring(const RingMetrics& r, int m, double A, double sector_deg) {
+  SCOPED_TRACE("latitude " + std::to_string(r.latitude_deg) + ", m = " + std::to_string(m));
+  EXPECT_EQ(r.count, m);
+  EXPECT_EQ(r.sector_deg, sector_deg);
+  EXPECT_NEAR(r.amplitude, 2 * A, kAmplitudeTolerance * 2 * A);
+  EXPECT_NEAR(r.wavelength, 2 * kPi * r.mean_radius / m, 1e-12 * r.mean_radius);
+  // The ring runs on chords of the outer sphere: mean radius below R cos(phi0) by the chord sag
+  // (< h^2 / 8R ~ 0.005 mm), within 0.5 %.
+  EXPECT_NEAR(r.mean_radius, kOuter * std::cos(r.latitude_deg * kDeg),
+              5e-3 * kOuter * std::cos(r.latitude_deg * kDeg));
+  ASSERT_FALSE(r.spectrum.empty());
+  bool found = false;
+  for (const auto& [count, amplitude] : r.spectrum) {
+    if (sector_deg < 360.0) {
+      EXPECT_EQ(count % static_cast<int>(180.0 / sector_deg), 0) << "count " << count;
+    }
+    if (count == m) {
+      found = true;
+      EXPECT_NEAR(amplitude, A, kAmplitudeTolerance * A);
+    }
+  }
+  EXPECT_TRUE(found);
+}
+
+TEST(WrinkleRings, FullSphereCountsAmplitudesAndWavelengths) {
+  const Mesh& mesh = shell(Symmetry::full);
+  const CylindricalFrame frame(1, Vec3d::Zero());
+  const double A = 0.02;
+  for (int m : {3, 5, 8})
+    for (double lat : {0.0, 30.0, -40.0}) {
+      const auto u = displacement(mesh, radial_wrinkles(frame, A, m, 0.3, lat * kDeg));
+      const WrinkleReport r = evaluate_wrinkles(mesh, u, options_for({lat}));
+      ASSERT_EQ(r.rings.size(), 1u);
+      EXPECT_GT(r.rings[0].n_points, 100);
+      expect_ring(r.rings[0], m, A, 360.0);
+    }
+}
+
+TEST(WrinkleRings, QuarterAndOctantModelsHaveEvenCountsOnly) {
+  const double A = 0.02;
+  const CylindricalFrame frame(1, Vec3d::Zero());
+  for (Symmetry s : {Symmetry::quarter, Symmetry::octant}) {
+    const Mesh& mesh = shell(s);
+    for (int m : {4, 6, 10})
+      for (double lat : {0.0, 35.0}) {
+        const auto u = displacement(mesh, radial_wrinkles(frame, A, m, 0.0, lat * kDeg));
+        const WrinkleReport r = evaluate_wrinkles(mesh, u, options_for({lat}));
+        expect_ring(r.rings[0], m, A, 90.0);
+      }
+  }
+}
+
+TEST(WrinkleRings, HalfModelResolvesOddCounts) {
+  // Half model: z >= 0, azimuth from z towards x in [-90, 90] deg; the mirror plane z = 0 is at
+  // theta = +-90 deg, so the symmetric pattern is cos(m (theta - 90 deg)).
+  const Mesh& mesh = shell(Symmetry::half);
+  const CylindricalFrame frame(1, Vec3d::Zero());
+  const double A = 0.02;
+  for (int m : {3, 5, 7}) {
+    const auto u = displacement(mesh, radial_wrinkles(frame, A, m, -m * kPi / 2, 20.0 * kDeg));
+    const WrinkleReport r = evaluate_wrinkles(mesh, u, options_for({20.0}));
+    expect_ring(r.rings[0], m, A, 180.0);
+  }
+}
+
+TEST(WrinkleRings, OtherAxesAndAnOffsetCentre) {
+  // The full sphere moved to centre c; wrinkles about the x and z axes through c.
+  Mesh mesh = shell(Symmetry::full);
+  const Vec3d c(1.0, -2.0, 3.0);
+  for (auto& X : mesh.nodes) X += c;
+  const double A = 0.02;
+  for (int axis : {0, 2}) {
+    const CylindricalFrame frame(axis, c);
+    const auto u = displacement(mesh, radial_wrinkles(frame, A, 6, 1.0, 25.0 * kDeg));
+    WrinkleOptions o = options_for({25.0});
+    o.rings.axis = axis;
+    o.rings.center = c;
+    const WrinkleReport r = evaluate_wrinkles(mesh, u, o);
+    SCOPED_TRACE("axis " + std::to_string(axis));
+    expect_ring(r.rings[0], 6, A, 360.0);
+  }
+}
+
+TEST(WrinkleRings, TheAzimuthIsRightHandedAboutTheAxis) {
+  // Axis x: theta from y towards z. A point at (0, 0, 1) is at +90 deg, (0, 1, 0) at 0.
+  const CylindricalFrame fx(0, Vec3d::Zero()), fy(1, Vec3d::Zero()), fz(2, Vec3d::Zero());
+  EXPECT_NEAR(fx.coordinates(Vec3d(0, 0, 1)).theta, kPi / 2, 1e-15);
+  EXPECT_NEAR(fy.coordinates(Vec3d(1, 0, 0)).theta, kPi / 2, 1e-15);  // y: from z towards x
+  EXPECT_NEAR(fz.coordinates(Vec3d(0, 1, 0)).theta, kPi / 2, 1e-15);  // z: from x towards y
+  const CylindricalCoordinates c = fy.coordinates(Vec3d(0, 1, std::sqrt(3.0)));
+  EXPECT_NEAR(c.phi, 30 * kDeg, 1e-15);
+  EXPECT_NEAR(c.rho, std::sqrt(3.0), 1e-15);
+  EXPECT_NEAR(c.h, 1.0, 1e-15);
+}
+
+TEST(WrinkleRings, TwoModesShowTwoPeaks) {
+  const Mesh& mesh = shell(Symmetry::full);
+  const CylindricalFrame frame(1, Vec3d::Zero());
+  const double A = 0.02, lat = 10.0;
+  const auto w6 = radial_wrinkles(frame, A, 6, 0.0, lat * kDeg);
+  const auto w11 = radial_wrinkles(frame, 0.4 * A, 11, 0.5, lat * kDeg);
+  const auto u = displacement(mesh, [&](const Vec3d& X) { return Vec3d(w6(X) + w11(X)); });
+  const RingMetrics r = evaluate_wrinkles(mesh, u, options_for({lat})).rings[0];
+  EXPECT_EQ(r.count, 6);
+  // Second peak: interpolation error (11 * 0.05)^2 / 8 = 3.8 %, so 6 % of 0.4 A.
+  EXPECT_NEAR(r.spectrum[11].second, 0.4 * A, kAmplitudeTolerance * 0.4 * A);
+  EXPECT_EQ(r.spectrum[11].first, 11);
+  // Peak-to-peak of A cos(6t) + 0.4 A cos(11t + 0.5), on a fine grid.
+  double lo = 1e300, hi = -1e300;
+  for (int k = 0; k < 100000; ++k) {
+    const double t = 2 * kPi * k / 100000;
+    const double v = A * std::cos(6 * t) + 0.4 * A * std::cos(11 * t + 0.5);
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+  EXPECT_NEAR(r.amplitude, hi - lo, kAmplitudeTolerance * (hi - lo));
+}
+
+TEST(WrinkleRings, RigidMotionsAndUniformInflationAreNotWrinkles) {
+  const Mesh& mesh = shell(Symmetry::full);
+  const Mat3d Q = Eigen::AngleAxisd(0.4, Vec3d::UnitY()).toRotationMatrix();  // about the axis
+  const std::vector<std::pair<const char*, std::function<Vec3d(const Vec3d&)>>> fields = {
+      {"zero", [](const Vec3d&) { return Vec3d::Zero(); }},
+      {"uniform inflation", [](const Vec3d& X) { return Vec3d(0.3 * X); }},
+      {"rotation about the axis and axial shift",
+       [&](const Vec3d& X) { return Vec3d(Q * X - X + Vec3d(0, 0.7, 0)); }},
+  };
+  for (const auto& [name, field] : fields) {
+    SCOPED_TRACE(name);
+    const WrinkleReport r = evaluate_wrinkles(mesh, displacement(mesh, field),
+                                              options_for({-50.0, -20.0, 0.0, 30.0, 60.0}));
+    // Exact to round-off: the deformed ring is the reference ring scaled about the centre,
+    // turned about the axis or moved along it, which (W8) removes.
+    EXPECT_LT(r.max_amplitude, 1e-9 * kOuter);
+    EXPECT_FALSE(r.wrinkled);
+    for (const auto& ring : r.rings) EXPECT_EQ(ring.count, 0) << "latitude " << ring.latitude_deg;
+  }
+}
+
+TEST(WrinkleRings, ReferenceFacetsAreWrinklesOnlyWhenNotSubtracted) {
+  // Without (W8) the chords of the reference ring show up: sag ~ h^2 / (8R) = 0.55^2 / 88, a few
+  // micrometres, far below any physical threshold but far above round-off. (Not at the equator:
+  // the generator puts nodes and edges exactly on it, so that ring has no chords.)
+  const Mesh& mesh = shell(Symmetry::full);
+  WrinkleOptions o = options_for({20.0});
+  o.rings.subtract_reference = false;
+  const WrinkleReport r = evaluate_wrinkles(mesh, std::vector<Vec3d>(mesh.nodes.size(),
+                                                                     Vec3d::Zero()), o);
+  EXPECT_GT(r.max_amplitude, 1e-4);
+  EXPECT_LT(r.max_amplitude, 0.02);
+}
+
+TEST(WrinkleRings, GlobalOvalisationIsNotAWrinkle) {
+  const Mesh& mesh = shell(Symmetry::full);
+  const CylindricalFrame frame(1, Vec3d::Zero());
+  const double A = 0.5;  // ovalisation 2A = 1 mm = the thickness
+  const auto u = displacement(mesh, radial_wrinkles(frame, A, 2, 0.2, 0.0));
+  WrinkleOptions o = options_for({0.0});
+  const WrinkleReport r = evaluate_wrinkles(mesh, u, o);
+  // The m = 2 part is removed; what is left is its interpolation error, A (2 dtheta)^2 / 8 ~
+  // 1e-3 A, and it is far below the threshold 0.1 t.
+  EXPECT_LT(r.rings[0].amplitude, 0.01 * 2 * A);
+  EXPECT_FALSE(r.wrinkled);
+  // With min_count 2 the same field is the dominant "wrinkle" m = 2.
+  o.rings.min_count = 2;
+  const WrinkleReport r2 = evaluate_wrinkles(mesh, u, o);
+  EXPECT_EQ(r2.rings[0].count, 2);
+  EXPECT_NEAR(r2.rings[0].amplitude, 2 * A, kAmplitudeTolerance * 2 * A);
+  EXPECT_TRUE(r2.wrinkled);
+}
+
+TEST(WrinkleRings, WrinkledFlagComparesWithTheThicknessFraction) {
+  const Mesh& mesh = shell(Symmetry::quarter);
+  const CylindricalFrame frame(1, Vec3d::Zero());
+  const auto u = displacement(mesh, radial_wrinkles(frame, 0.02, 8, 0.0, 0.0));
+  WrinkleOptions o = options_for({0.0});
+  o.threshold_fraction = 0.03;  // 0.03 mm < amplitude ~ 0.04 mm
+  EXPECT_TRUE(evaluate_wrinkles(mesh, u, o).wrinkled);
+  o.threshold_fraction = 0.05;  // 0.05 mm > amplitude
+  const WrinkleReport r = evaluate_wrinkles(mesh, u, o);
+  EXPECT_FALSE(r.wrinkled);
+  EXPECT_DOUBLE_EQ(r.threshold, 0.05 * kThickness);
+  EXPECT_DOUBLE_EQ(r.max_amplitude, r.rings[0].amplitude);
+}
+
+TEST(WrinkleRings, ARingThatMissesTheSurfaceIsEmptyNotAnError) {
+  const Mesh& mesh = shell(Symmetry::octant);  // y >= 0 only
+  const WrinkleReport r = evaluate_wrinkles(
+      mesh, std::vector<Vec3d>(mesh.nodes.size(), Vec3d::Zero()), options_for({-30.0, 30.0}));
+  ASSERT_EQ(r.rings.size(), 2u);
+  EXPECT_EQ(r.rings[0].n_points, 0);
+  EXPECT_EQ(r.rings[0].count, 0);
+  EXPECT_EQ(r.rings[0].amplitude, 0.0);
+  EXPECT_TRUE(r.rings[0].spectrum.empty());
+  EXPECT_GT(r.rings[1].n_points, 20);
+  EXPECT_EQ(r.rings[1].sector_deg, 90.0);
+}
+
+TEST(WrinkleRings, AirbagEquatorRing) {
+  // Round airbag (mid-surface radius 12 mm, height 6 mm, wall 0.5 mm), quarter model; wrinkles
+  // u = A cos(m theta) exp(-(h/2)^2) e_rho localised at the equator, where e_rho is the normal.
+  MeshGenerationSpec spec;
+  spec.kind = "airbag";
+  spec.radius = 12.0;
+  spec.height = 6.0;
+  spec.thickness = 0.5;
+  spec.layers = 1;
+  spec.element_size = 0.5;
+  spec.symmetry = Symmetry::quarter;
+  const Mesh mesh = generate_mesh(spec);
+  const CylindricalFrame frame(1, Vec3d::Zero());
+  const double A = 0.02;
+  const int m = 12;
+  const auto u = displacement(mesh, [&](const Vec3d& X) {
+    const CylindricalCoordinates c = frame.coordinates(X);
+    return Vec3d(A * std::cos(m * c.theta) * std::exp(-c.h * c.h / 4.0) * frame.radial(c.theta));
+  });
+  const RingMetrics r = evaluate_wrinkles(mesh, u, options_for({0.0})).rings[0];
+  EXPECT_EQ(r.count, m);
+  EXPECT_EQ(r.sector_deg, 90.0);
+  // Outer equator radius 12.25 mm, node spacing 0.5/12.25 = 0.041 rad: (12 * 0.041)^2 / 8 = 3 %.
+  EXPECT_NEAR(r.amplitude, 2 * A, kAmplitudeTolerance * 2 * A);
+  EXPECT_NEAR(r.mean_radius, 12.25, 5e-3 * 12.25);
+  EXPECT_NEAR(r.wavelength, 2 * kPi * r.mean_radius / m, 1e-12);
+}
+
+TEST(WrinkleRings, InvalidOptionsAreErrors) {
+  const Mesh& mesh = shell(Symmetry::octant);
+  const std::vector<Vec3d> u(mesh.nodes.size(), Vec3d::Zero());
+  const auto fails = [&](const std::function<void(WrinkleOptions&)>& change) {
+    WrinkleOptions o = options_for({30.0});
+    change(o);
+    EXPECT_THROW(evaluate_wrinkles(mesh, u, o), Error);
+  };
+  fails([](WrinkleOptions& o) { o.rings.axis = 3; });
+  fails([](WrinkleOptions& o) { o.rings.axis = -1; });
+  fails([](WrinkleOptions& o) { o.rings.latitudes_deg = {90.0}; });
+  fails([](WrinkleOptions& o) { o.rings.latitudes_deg = {-90.0}; });
+  fails([](WrinkleOptions& o) { o.rings.latitudes_deg = {std::nan("")}; });
+  fails([](WrinkleOptions& o) { o.rings.sector_deg = 60.0; });
+  fails([](WrinkleOptions& o) { o.rings.min_count = 0; });
+  fails([](WrinkleOptions& o) { o.rings.max_count = 2; });
+  fails([](WrinkleOptions& o) { o.thickness = 0.0; });
+  fails([](WrinkleOptions& o) { o.threshold_fraction = -1.0; });
+  EXPECT_THROW(evaluate_wrinkles(mesh, std::vector<Vec3d>(3), options_for({0.0})), Error);
+  EXPECT_THROW(evaluate_wrinkles(mesh, u, options_for({0.0}), "no-such-tag"), Error);
+}
+
+}  // namespace
+}  // namespace plisse
