@@ -4,6 +4,7 @@
 #include "physics/cavity.hpp"
 #include "physics/die_contact.hpp"
 #include "physics/pressure_load.hpp"
+#include "physics/viscous_damping.hpp"
 
 namespace plisse {
 
@@ -25,6 +26,13 @@ std::vector<std::unique_ptr<ModelTerm>> make_terms(const Case& c, const Mesh& me
   for (const Cavity& cavity : c.cavities)
     terms.push_back(make_cavity_term(cavity, mesh, constraints));
   for (const Die& die : c.dies) terms.push_back(make_die_term(die, c, mesh, constraints));
+  if (c.solver.viscosity > 0.0) {
+    // ℓ of docs/theory/viscous.md (V1): the wall thickness of a generated shell, airbag or sheet,
+    // else the mean edge length of the mesh.
+    const bool has_wall = c.mesh.generate.has_value() && c.mesh.generate->kind != "cube";
+    const double length = has_wall ? c.mesh.generate->thickness : mean_edge_length(mesh);
+    terms.push_back(std::make_unique<ViscousDamping>(mesh, c.solver.viscosity, length));
+  }
   return terms;
 }
 

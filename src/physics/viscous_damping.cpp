@@ -1,0 +1,114 @@
+#include "physics/viscous_damping.hpp"
+
+#include <array>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "mesh/topology.hpp"
+
+namespace plisse {
+
+double mean_edge_length(const Mesh& mesh) {
+  FE_CHECK(!mesh.tets.empty(), "mean edge length: the mesh has no tetrahedra");
+  double sum = 0.0;
+  for (const auto& tet : mesh.tets)
+    for (const auto& e : kTetEdges)
+      sum += (mesh.nodes[static_cast<std::size_t>(tet[static_cast<std::size_t>(e[0])])] -
+              mesh.nodes[static_cast<std::size_t>(tet[static_cast<std::size_t>(e[1])])])
+                 .norm();
+  return sum / (6.0 * static_cast<double>(mesh.tets.size()));
+}
+
+ViscousDamping::ViscousDamping(const Mesh& mesh, double viscosity, double length)
+    : coefficient_(mesh.nodes.size(), 0.0), u_accepted_(3 * mesh.nodes.size(), 0.0) {
+  FE_CHECK(std::isfinite(viscosity) && viscosity > 0.0,
+           "viscous stabilisation: viscosity must be finite and > 0 (got " << viscosity
+                                                                           << " MPa s)");
+  FE_CHECK(std::isfinite(length) && length > 0.0,
+           "viscous stabilisation: length must be finite and > 0 (got " << length << " mm)");
+  const double scale = viscosity / (length * length);
+  for (const auto& tet : mesh.tets) {
+    const double quarter = six_signed_volume(mesh.nodes[static_cast<std::size_t>(tet[0])],
+                                             mesh.nodes[static_cast<std::size_t>(tet[1])],
+                                             mesh.nodes[static_cast<std::size_t>(tet[2])],
+                                             mesh.nodes[static_cast<std::size_t>(tet[3])]) /
+                           24.0;  // V_e / 4
+    for (int v : tet) coefficient_[static_cast<std::size_t>(v)] += scale * quarter;
+  }
+}
+
+void ViscousDamping::assemble(double t, std::span<const double> x, std::span<double> residual,
+                              TangentSink* tangent) {
+  t_current_ = t;
+  const double dt = t - t_accepted_;
+  if (!(dt > 0.0)) return;
+  for (std::size_t i = 0; i < coefficient_.size(); ++i) {
+    const double c = coefficient_[i] / dt;  // (V2)
+    if (c == 0.0) continue;                 // node of no element
+    for (int k = 0; k < 3; ++k) {
+      const int dof = node_dof(static_cast<int>(i), k);
+      residual[static_cast<std::size_t>(dof)] +=
+          c * (x[static_cast<std::size_t>(dof)] - u_accepted_[3 * i + static_cast<std::size_t>(k)]);
+      if (tangent != nullptr) {
+        const std::array<int, 1> index = {dof};
+        const std::array<double, 1> value = {c};
+        tangent->add(index, index, value);
+      }
+    }
+  }
+}
+
+double ViscousDamping::step_work(std::span<const double> x, double dt) const {
+  double work = 0.0;
+  for (std::size_t i = 0; i < coefficient_.size(); ++i) {
+    double squared = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const double du = x[static_cast<std::size_t>(node_dof(static_cast<int>(i), k))] -
+                        u_accepted_[3 * i + static_cast<std::size_t>(k)];
+      squared += du * du;
+    }
+    work += coefficient_[i] / dt * squared;  // F_i · Δu_i = c_i |Δu_i|² / Δt
+  }
+  return work;
+}
+
+void ViscousDamping::accept_step(std::span<const double> x) {
+  const double dt = t_current_ - t_accepted_;
+  if (dt > 0.0) dissipated_energy_ += step_work(x, dt);  // (V3)
+  for (std::size_t i = 0; i < coefficient_.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      u_accepted_[3 * i + static_cast<std::size_t>(k)] =
+          x[static_cast<std::size_t>(node_dof(static_cast<int>(i), k))];
+  t_accepted_ = t_current_;
+}
+
+std::vector<double> ViscousDamping::save_state() const {
+  std::vector<double> state;
+  state.reserve(2 + u_accepted_.size());
+  state.push_back(t_accepted_);
+  state.push_back(dissipated_energy_);
+  state.insert(state.end(), u_accepted_.begin(), u_accepted_.end());
+  return state;
+}
+
+void ViscousDamping::load_state(std::span<const double> state) {
+  FE_CHECK(state.size() == 2 + u_accepted_.size(),
+           "viscous stabilisation: checkpoint state has " << state.size() << " values, expected "
+                                                          << 2 + u_accepted_.size() << " (t, D, "
+                                                          << u_accepted_.size() / 3
+                                                          << " nodal displacements)");
+  for (double v : state)
+    FE_CHECK(std::isfinite(v), "viscous stabilisation: checkpoint state is not finite");
+  t_accepted_ = state[0];
+  t_current_ = state[0];
+  dissipated_energy_ = state[1];
+  std::copy(state.begin() + 2, state.end(), u_accepted_.begin());
+}
+
+std::vector<std::string> ViscousDamping::history_columns() const { return {"dissipated_energy"}; }
+
+std::vector<double> ViscousDamping::history_values(double, std::span<const double>) const {
+  return {dissipated_energy_};
+}
+
+}  // namespace plisse
