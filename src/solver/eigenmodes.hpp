@@ -16,7 +16,7 @@ namespace plisse {
 
 /// One eigenpair of (E1).
 struct Eigenmode {
-  double eigenvalue = 0;  ///< λ [MPa/mm^2 = N/mm^4 per unit displacement and volume]: < 0 unstable
+  double eigenvalue = 0;  ///< λ [N/mm^4 = (N/mm) / mm^3]; < 0: the state is unstable
   /// Full-state vector (MixedModel::state() layout), zeros on constrained dofs. The displacement
   /// part is scaled so that the largest nodal |u| is 1 and that node's largest |component| is
   /// positive; the pressure and global entries carry the mode's own values with the same scale.
@@ -31,9 +31,10 @@ struct EigenOptions {
 
 /// The `options.count` eigenpairs of (E1) nearest `options.target` at the model's current state,
 /// in ascending order of eigenvalue. The model's state is not changed (the tangent is assembled
-/// at it). Throws plisse::SolverError when SLEPc does not converge to `count` pairs, plisse::Error
-/// on a failed assembly or a PETSc/SLEPc error. Requires a live PetscSession (which initialises
-/// SLEPc too).
+/// at it). Throws plisse::SolverError when the tangent cannot be assembled (inverted element) or
+/// SLEPc fails or does not converge to `count` pairs, plisse::Error on bad options or another
+/// PETSc error. Requires a live PetscSession (which initialises SLEPc too). Options -eps_* and
+/// -st_* (e.g. -st_pc_factor_mat_solver_type) in PETSc's database override the defaults.
 std::vector<Eigenmode> lowest_eigenmodes(MixedModel& model, const EigenOptions& options);
 
 }  // namespace plisse

@@ -1,6 +1,7 @@
 #include "solver/petsc_session.hpp"
 
 #include <petscsys.h>
+#include <slepcsys.h>
 
 #include <sstream>
 
@@ -20,12 +21,14 @@ void throw_petsc_error(PetscErrorCode code, const char* call, const char* file, 
 }  // namespace detail
 
 PetscSession::PetscSession(const std::vector<std::string>& options) {
+  // SlepcInitialize initialises PETSc too when nobody has (and SlepcFinalize then finalises it),
+  // and registers SLEPc's classes and options (EPS for solver/eigenmodes).
   PetscBool initialized = PETSC_FALSE;
-  PLISSE_PETSC(PetscInitialized(&initialized));
+  PLISSE_PETSC(SlepcInitialized(&initialized));
   if (!initialized) {
     int argc = 0;
     char** argv = nullptr;
-    PLISSE_PETSC(PetscInitialize(&argc, &argv, nullptr, nullptr));
+    PLISSE_PETSC(SlepcInitialize(&argc, &argv, nullptr, nullptr));
     // PETSc's own error printing would duplicate our messages; errors come back as codes.
     PLISSE_PETSC(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
     owns_ = true;
@@ -34,7 +37,7 @@ PetscSession::PetscSession(const std::vector<std::string>& options) {
 }
 
 PetscSession::~PetscSession() {
-  if (owns_) PetscFinalize();
+  if (owns_) SlepcFinalize();
 }
 
 void PetscSession::insert_options(const std::string& options) {

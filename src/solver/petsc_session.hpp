@@ -1,5 +1,5 @@
 #pragma once
-/// PETSc (and MPI) initialisation for the lifetime of one object.
+/// PETSc, SLEPc (and MPI) initialisation for the lifetime of one object.
 #include <string>
 #include <vector>
 
@@ -7,7 +7,8 @@ namespace plisse {
 
 class PetscSession {
  public:
-  /// Initialises PETSc once per process. `options` are PETSc command-line style options
+  /// Initialises PETSc and SLEPc once per process (the first session owns them and finalises
+  /// them in its destructor). `options` are PETSc command-line style options
   /// ("-snes_monitor -ksp_view") inserted into the global options database; later options win.
   explicit PetscSession(const std::vector<std::string>& options = {});
   ~PetscSession();
