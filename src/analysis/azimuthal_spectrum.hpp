@@ -10,11 +10,11 @@ namespace plisse {
 /// has N + 1 points theta_k = start + k sector / N, k = 0..N, with trapezoid weights (1/2N at the
 /// two ends, 1/N inside). Weights sum to 1: sum_k w_k g_k is the mean of g over the sector.
 struct AzimuthGrid {
-  double start = 0.0;    ///< [rad]
-  double sector = 0.0;   ///< [rad], 2 pi for a full circle
-  int n_intervals = 0;   ///< N
-  int count_step = 1;    ///< full-circle count of harmonic j: m = j count_step (= pi / sector
-                         ///< for a sector, 1 for a full circle)
+  double start = 0.0;   ///< [rad]
+  double sector = 0.0;  ///< [rad], 2 pi for a full circle
+  int n_intervals = 0;  ///< N
+  int count_step = 1;   ///< full-circle count of harmonic j: m = j count_step (= pi / sector
+                        ///< for a sector, 1 for a full circle)
   bool full() const;
   int n_points() const { return full() ? n_intervals : n_intervals + 1; }
   double theta(int k) const;
@@ -38,9 +38,9 @@ std::vector<double> resample_on_grid(const std::vector<double>& theta,
 /// with a_0 = sum_k w_k g_k, a_j = 2 sum_k w_k g_k cos(.), b_j = 2 sum_k w_k g_k sin(.), exact
 /// for trigonometric polynomials of degree < N/2 (full) or < N (sector).
 struct AzimuthalSpectrum {
-  int count_step = 1;      ///< m = j count_step
-  std::vector<double> a;   ///< a_j, j = 0..j_max
-  std::vector<double> b;   ///< b_j (zero on a sector)
+  int count_step = 1;     ///< m = j count_step
+  std::vector<double> a;  ///< a_j, j = 0..j_max
+  std::vector<double> b;  ///< b_j (zero on a sector)
   int j_max() const { return static_cast<int>(a.size()) - 1; }
   /// A_j: |a_0| for j = 0, sqrt(a_j^2 + b_j^2) otherwise (the amplitude of the harmonic).
   double amplitude(int j) const;

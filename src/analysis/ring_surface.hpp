@@ -39,8 +39,8 @@ class RingSurface {
   int n_edges() const { return static_cast<int>(edges_.size()); }
 
  private:
-  std::vector<Vec3d> X_, x_;     ///< reference and deformed positions of the surface nodes
-  std::vector<Vec3d> n_, n0_;    ///< deformed and reference unit vertex normals
+  std::vector<Vec3d> X_, x_;   ///< reference and deformed positions of the surface nodes
+  std::vector<Vec3d> n_, n0_;  ///< deformed and reference unit vertex normals
   std::vector<std::array<int, 2>> edges_;  ///< unique edges, local node indices
 };
 

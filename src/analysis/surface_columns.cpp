@@ -162,8 +162,7 @@ std::vector<int> assign_columns(const std::vector<Vec3d>& nodes,
   for (std::size_t e = 0; e < tets.size(); ++e) {
     Vec3d centroid = Vec3d::Zero();
     for (int a : tets[e]) {
-      FE_CHECK(a >= 0 && a < n_nodes, "surface columns: tetrahedron node " << a
-                                                                             << " out of range");
+      FE_CHECK(a >= 0 && a < n_nodes, "surface columns: tetrahedron node " << a << " out of range");
       centroid += nodes[static_cast<std::size_t>(a)];
     }
     column[e] = grid.nearest(centroid / 4.0);

@@ -46,18 +46,15 @@ const char* to_string(MembraneState state) {
   return "?";
 }
 
-TensionField compute_tension_field(const std::vector<Vec3d>& nodes,
-                                   const std::vector<std::array<int, 4>>& tets,
-                                   const std::vector<std::array<int, 3>>& triangles,
-                                   const std::vector<int>& column,
-                                   const std::vector<Vec3d>& displacement,
-                                   const std::vector<Mat3d>& cauchy_stress,
-                                   const std::vector<double>& J,
-                                   const TensionFieldOptions& options) {
+TensionField compute_tension_field(
+    const std::vector<Vec3d>& nodes, const std::vector<std::array<int, 4>>& tets,
+    const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& column,
+    const std::vector<Vec3d>& displacement, const std::vector<Mat3d>& cauchy_stress,
+    const std::vector<double>& J, const TensionFieldOptions& options) {
   const std::size_t n_tets = tets.size(), n_tri = triangles.size();
   const int n_nodes = static_cast<int>(nodes.size());
-  FE_CHECK(column.size() == n_tets, "tension field: " << column.size() << " columns for "
-                                                      << n_tets << " tetrahedra");
+  FE_CHECK(column.size() == n_tets,
+           "tension field: " << column.size() << " columns for " << n_tets << " tetrahedra");
   FE_CHECK(displacement.size() == nodes.size(), "tension field: " << displacement.size()
                                                                   << " displacements for "
                                                                   << nodes.size() << " nodes");
@@ -145,8 +142,7 @@ TensionField compute_tension_field(const std::vector<Vec3d>& nodes,
 
 TensionField compute_tension_field(const Mesh& mesh, const std::vector<Vec3d>& displacement,
                                    const std::vector<Mat3d>& cauchy_stress,
-                                   const std::vector<double>& J,
-                                   const TensionFieldOptions& options,
+                                   const std::vector<double>& J, const TensionFieldOptions& options,
                                    const std::string& outer_tag) {
   const auto triangles = tagged_triangles(mesh, outer_tag);
   const auto column = assign_columns(mesh.nodes, mesh.tets, triangles);

@@ -51,14 +51,11 @@ struct TensionField {
 /// A triangle whose column is empty (no centroid nearest to it) takes the stress of the
 /// tetrahedron it is a face of. Throws Error on inconsistent sizes or indices, or if such a
 /// triangle is no tetrahedron's face.
-TensionField compute_tension_field(const std::vector<Vec3d>& nodes,
-                                   const std::vector<std::array<int, 4>>& tets,
-                                   const std::vector<std::array<int, 3>>& triangles,
-                                   const std::vector<int>& column,
-                                   const std::vector<Vec3d>& displacement,
-                                   const std::vector<Mat3d>& cauchy_stress,
-                                   const std::vector<double>& J,
-                                   const TensionFieldOptions& options = {});
+TensionField compute_tension_field(
+    const std::vector<Vec3d>& nodes, const std::vector<std::array<int, 4>>& tets,
+    const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& column,
+    const std::vector<Vec3d>& displacement, const std::vector<Mat3d>& cauchy_stress,
+    const std::vector<double>& J, const TensionFieldOptions& options = {});
 
 /// Same on `mesh` with the triangles tagged `outer_tag` (columns computed here; when calling
 /// every step, compute them once with assign_columns and use the overload above).

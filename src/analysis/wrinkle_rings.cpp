@@ -32,8 +32,7 @@ double grid_mean(const AzimuthGrid& grid, const std::vector<double>& g) {
 ///   d_k = (rho_k - rho-bar) n_rho-bar + (h_k - h-bar) n_h-bar,
 /// with n-bar the normalised mean of the normal's (rho, h) components. Returns rho-bar too.
 std::vector<double> normal_deviation(const AzimuthGrid& grid, const std::vector<double>& rho,
-                                     const std::vector<double>& h,
-                                     const std::vector<double>& n_rho,
+                                     const std::vector<double>& h, const std::vector<double>& n_rho,
                                      const std::vector<double>& n_h, double& mean_rho) {
   mean_rho = grid_mean(grid, rho);
   const double mean_h = grid_mean(grid, h);
@@ -44,8 +43,7 @@ std::vector<double> normal_deviation(const AzimuthGrid& grid, const std::vector<
     nh /= norm;
   }
   std::vector<double> d(rho.size());
-  for (std::size_t k = 0; k < d.size(); ++k)
-    d[k] = (rho[k] - mean_rho) * nr + (h[k] - mean_h) * nh;
+  for (std::size_t k = 0; k < d.size(); ++k) d[k] = (rho[k] - mean_rho) * nr + (h[k] - mean_h) * nh;
   return d;
 }
 
@@ -159,7 +157,8 @@ RingMetrics evaluate_ring(const RingSurface& surface, const RingOptions& options
   const int j_grid = grid.full() ? (grid.n_intervals - 1) / 2 : grid.n_intervals - 1;
   const int j_first = (options.min_count + step - 1) / step;  // smallest j with m >= min_count
   const int j_max = std::min(m_cap / step, j_grid);
-  const AzimuthalSpectrum spectrum = compute_spectrum(grid, d, std::max(j_max, j_first - 1));
+  const AzimuthalSpectrum spectrum =
+      compute_spectrum(grid, d, std::min(std::max(j_max, j_first - 1), j_grid));
   for (int j = 0; j <= j_max; ++j) out.spectrum.emplace_back(j * step, spectrum.amplitude(j));
 
   // Dominant count among m >= min_count (W11), and the amplitude without m < min_count (W12).

@@ -19,12 +19,12 @@ namespace plisse {
 
 /// Where and how rings are taken. Invalid values throw Error (see validate_ring_options).
 struct RingOptions {
-  int axis = 1;                         ///< 0 x, 1 y, 2 z: the wrinkle axis
-  Vec3d center = Vec3d::Zero();         ///< a point on the axis [mm]
-  std::vector<double> latitudes_deg;    ///< rings, each in (-90, 90) [deg]
-  int min_count = 3;                    ///< full-circle counts below this are global shape modes
-  int max_count = 200;                  ///< largest full-circle count searched and reported
-  std::optional<double> sector_deg;     ///< 360/180/90/45; default: detected from the mesh
+  int axis = 1;                       ///< 0 x, 1 y, 2 z: the wrinkle axis
+  Vec3d center = Vec3d::Zero();       ///< a point on the axis [mm]
+  std::vector<double> latitudes_deg;  ///< rings, each in (-90, 90) [deg]
+  int min_count = 3;                  ///< full-circle counts below this are global shape modes
+  int max_count = 200;                ///< largest full-circle count searched and reported
+  std::optional<double> sector_deg;   ///< 360/180/90/45; default: detected from the mesh
   /// Subtract the reference ring's own deviation from its mean shape, scaled by the ring's mean
   /// radial stretch (wrinkles.md, W8): facets of the linear surface (sag ~ h^2 / 8R) and
   /// reference imperfections are then not counted as wrinkles.
@@ -57,7 +57,7 @@ struct WrinkleReport {
   std::vector<RingMetrics> rings;  ///< in the order of RingOptions::latitudes_deg
   double max_amplitude = 0.0;      ///< largest ring amplitude [mm]
   double threshold = 0.0;          ///< threshold_fraction * thickness [mm]
-  bool wrinkled = false;           ///< max_amplitude > threshold
+  bool wrinkled = false;           ///< max_amplitude > threshold (wrinkles.md, W14)
 };
 
 /// Throws Error naming the rule if: axis not in 0..2, a latitude not in (-90, 90) or not finite,

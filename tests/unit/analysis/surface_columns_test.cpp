@@ -24,7 +24,8 @@ TEST(SurfaceColumns, PointTriangleDistanceMatchesBruteForce) {
     const int n = 200;
     for (int i = 0; i <= n; ++i)
       for (int j = 0; i + j <= n; ++j) {
-        const Vec3d q = a + (b - a) * (static_cast<double>(i) / n) + (c - a) * (static_cast<double>(j) / n);
+        const Vec3d q =
+            a + (b - a) * (static_cast<double>(i) / n) + (c - a) * (static_cast<double>(j) / n);
         brute = std::min(brute, (p - q).norm());
       }
     const double d = point_triangle_distance(p, a, b, c);

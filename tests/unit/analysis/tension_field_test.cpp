@@ -58,9 +58,8 @@ std::vector<Mat3d> stress_field(const Shell& s, const std::function<Mat3d(int, i
   return sigma;
 }
 
-TensionField run(const Shell& s, const std::vector<Mat3d>& sigma,
-                 const std::vector<double>& J = {}, const TensionFieldOptions& o = {},
-                 const std::vector<Vec3d>& u = {}) {
+TensionField run(const Shell& s, const std::vector<Mat3d>& sigma, const std::vector<double>& J = {},
+                 const TensionFieldOptions& o = {}, const std::vector<Vec3d>& u = {}) {
   const std::vector<Vec3d> zero(s.mesh.nodes.size(), Vec3d::Zero());
   return compute_tension_field(s.mesh.nodes, s.mesh.tets, s.outer, s.column, u.empty() ? zero : u,
                                sigma, J, o);
@@ -72,7 +71,8 @@ int n_tri() { return static_cast<int>(shell().outer.size()); }
 TEST(TensionField, UniformStatesEverywhere) {
   const Shell& s = shell();
   const auto uniform = [&](double s_m, double s_h) {
-    return stress_field(s, [&](int t, int) { return membrane_stress(triangle_centroid(s, t), s_m, s_h); });
+    return stress_field(
+        s, [&](int t, int) { return membrane_stress(triangle_centroid(s, t), s_m, s_h); });
   };
   const TensionField biaxial = run(s, uniform(1.0, 0.8));
   EXPECT_EQ(biaxial.n_elements, (std::array<int, 3>{n_tets(), 0, 0}));
@@ -139,8 +139,8 @@ TEST(TensionField, MixedRegionsGiveTheirCounts) {
     EXPECT_EQ(tf.element_state[e], tf.triangle_state[static_cast<std::size_t>(s.column[e])]);
 
   // Same answer through the Mesh overload, which finds the columns itself.
-  const TensionField by_mesh =
-      compute_tension_field(s.mesh, std::vector<Vec3d>(s.mesh.nodes.size(), Vec3d::Zero()), sigma, {});
+  const TensionField by_mesh = compute_tension_field(
+      s.mesh, std::vector<Vec3d>(s.mesh.nodes.size(), Vec3d::Zero()), sigma, {});
   EXPECT_EQ(by_mesh.n_triangles, count);
   EXPECT_EQ(by_mesh.element_state, tf.element_state);
 }
@@ -157,7 +157,8 @@ TEST(TensionField, TheVolumeWeightedColumnAverageDecides) {
   // Deformed-volume weights J V0: an inner layer ten times as large pulls the average to
   // (-10 + 0.5 + 2)/12 < 0: wrinkled.
   std::vector<double> J;
-  for (const auto& t : s.mesh.tets) J.push_back(test::tet_layer(s.mesh, kLayers, t) == 0 ? 10.0 : 1.0);
+  for (const auto& t : s.mesh.tets)
+    J.push_back(test::tet_layer(s.mesh, kLayers, t) == 0 ? 10.0 : 1.0);
   EXPECT_EQ(run(s, sigma, J).n_triangles, (std::array<int, 3>{0, n_tri(), 0}));
 }
 
@@ -182,7 +183,8 @@ TEST(TensionField, ARigidRotationChangesNothing) {
 
 TEST(TensionField, AStatedToleranceIsUsed) {
   const Shell& s = shell();
-  const auto sigma = stress_field(s, [&](int t, int) { return membrane_stress(triangle_centroid(s, t), 1.0, 0.8); });
+  const auto sigma = stress_field(
+      s, [&](int t, int) { return membrane_stress(triangle_centroid(s, t), 1.0, 0.8); });
   TensionFieldOptions o;
   o.tolerance = 0.9;  // sigma_2 ~ 0.8 <= 0.9 < sigma_1 ~ 1: wrinkled by this criterion
   const TensionField tf = run(s, sigma, {}, o);
@@ -201,9 +203,9 @@ TEST(TensionField, InconsistentInputIsAnError) {
   EXPECT_THROW(compute_tension_field(s.mesh.nodes, s.mesh.tets, s.outer, s.column, u, sigma,
                                      std::vector<double>(2, 1.0)),
                Error);
-  EXPECT_THROW(compute_tension_field(s.mesh.nodes, s.mesh.tets, s.outer, std::vector<int>(2), u,
-                                     sigma, {}),
-               Error);
+  EXPECT_THROW(
+      compute_tension_field(s.mesh.nodes, s.mesh.tets, s.outer, std::vector<int>(2), u, sigma, {}),
+      Error);
 }
 
 }  // namespace

@@ -212,8 +212,8 @@ TEST(WrinkleRings, ReferenceFacetsAreWrinklesOnlyWhenNotSubtracted) {
   const Mesh& mesh = shell(Symmetry::full);
   WrinkleOptions o = options_for({20.0});
   o.rings.subtract_reference = false;
-  const WrinkleReport r = evaluate_wrinkles(mesh, std::vector<Vec3d>(mesh.nodes.size(),
-                                                                     Vec3d::Zero()), o);
+  const WrinkleReport r =
+      evaluate_wrinkles(mesh, std::vector<Vec3d>(mesh.nodes.size(), Vec3d::Zero()), o);
   EXPECT_GT(r.max_amplitude, 1e-4);
   EXPECT_LT(r.max_amplitude, 0.02);
 }
