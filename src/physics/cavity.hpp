@@ -31,6 +31,10 @@ class CavityTerm : public ModelTerm {
   void add_couplings(std::vector<std::pair<int, int>>& pairs) const override;
   /// True when pressure_stiffness_is_symmetric holds for the wall (cavities.md, C5 and C11).
   bool symmetric() const override { return symmetric_; }
+  /// 1: the cavity pressure borders the tangent as [K g; g^T d] with d = dV_c/dp_c <= 0 (0 for
+  /// volume control, -V_c/(p_c + p_amb) < 0 for the gas), which adds exactly one negative pivot to
+  /// a stable state (docs/theory/stability.md, S6).
+  int negative_directions() const override;
   /// Residual (C6)-(C7) and bordered tangent (C10)-(C11). Throws plisse::Error when a gas
   /// cavity's absolute pressure p_c + p_amb is not positive (the step is then cut back).
   void assemble(double t, std::span<const double> x, std::span<double> residual,

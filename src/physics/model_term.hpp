@@ -39,6 +39,10 @@ class ModelTerm {
   virtual void add_couplings(std::vector<std::pair<int, int>>& /*pairs*/) const {}
   /// False when the term's tangent is not symmetric (the solver then uses LU instead of LDL^T).
   virtual bool symmetric() const { return true; }
+  /// Negative eigenvalues this term's global unknowns add to a stable tangent: a multiplier-like
+  /// unknown borders the matrix and adds one negative pivot to an LDL^T factorisation of a stable
+  /// state (docs/theory/stability.md, S5). 0 for a term without global unknowns.
+  virtual int negative_directions() const { return 0; }
 
   /// Adds the term's residual at time t and full state x to `residual`, and its tangent
   /// (d residual / d x) to `tangent` when that is not null.

@@ -1,10 +1,28 @@
 #include "solver/load_stepper.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
 namespace plisse {
+namespace {
+/// Branch switching re-solves from u + a φ1 with a, 4a, 16a, 64a while Newton falls back onto
+/// the unperturbed (unstable) equilibrium (stability.md, S10).
+constexpr int kAmplitudeTries = 4;
+constexpr double kAmplitudeGrowth = 4.0;
+
+/// max over nodes of |u(x) - u(y)| [mm] (displacement components only).
+double max_nodal_distance(const std::vector<double>& x, const std::vector<double>& y, int n_nodes) {
+  double d = 0.0;
+  for (int v = 0; v < n_nodes; ++v) {
+    double s = 0.0;
+    for (int k = 0; k < 3; ++k) s += std::pow(x[DofMap::dof(v, k)] - y[DofMap::dof(v, k)], 2);
+    d = std::max(d, std::sqrt(s));
+  }
+  return d;
+}
+}  // namespace
 
 std::string LoadStepper::describe_failure(const NewtonResult& newton) const {
   const AssemblyStatus& status = newton.status;
@@ -24,6 +42,142 @@ std::string LoadStepper::describe_failure(const NewtonResult& newton) const {
 
 LoadStepper::LoadStepper(MixedModel& model, const SolverSettings& settings)
     : model_(model), settings_(settings), newton_(model, settings.newton) {}
+
+LoadStepper::~LoadStepper() = default;
+
+void LoadStepper::set_stability(const StabilityOptions& options) {
+  FE_CHECK(!options.branch_switch || options.check,
+           "branch switching needs the stability check (it switches where the check finds a new "
+           "instability)");
+  FE_CHECK(options.modes >= 1, "stability: modes = " << options.modes << ", must be >= 1");
+  FE_CHECK(!options.branch_switch || options.perturbation_mm > 0.0,
+           "branch switching needs a positive perturbation amplitude, got "
+               << options.perturbation_mm << " mm");
+  stability_ = options;
+}
+
+double LoadStepper::stability_seconds() const { return inertia_ ? inertia_->seconds() : 0.0; }
+int LoadStepper::stability_checks() const { return inertia_ ? inertia_->calls() : 0; }
+
+std::string LoadStepper::solve_step(NewtonResult& newton, SteppingResult& result) {
+  int augmentations = 0;
+  try {
+    // Newton, then (augmented Lagrangian terms) multiplier updates and re-solves until every
+    // constraint meets its tolerance.
+    while (true) {
+      newton = newton_.solve();
+      result.newton_iterations += newton.iterations;
+      if (!newton.converged) return describe_failure(newton);
+      if (!model_.update_multipliers()) return {};
+      if (++augmentations > settings_.max_augmentations)
+        return "constraints not met after " + std::to_string(settings_.max_augmentations) +
+               " multiplier updates";
+    }
+  } catch (const Error& e) {
+    return e.what();
+  }
+}
+
+void LoadStepper::check_stability(StepInfo& info, SteppingResult& result,
+                                  const std::function<void(const std::string&)>& log,
+                                  bool& switched) {
+  switched = false;
+  if (!stability_.check) return;
+  if (!inertia_) inertia_ = std::make_unique<InertiaCheck>(model_);
+  if (inertia_->uses_symmetric_part() && !told_symmetric_part_) {
+    log("  stability check: the tangent is unsymmetric (follower pressure on an open surface); "
+        "the inertia is that of its symmetric part 0.5 (K + K^T)");
+    told_symmetric_part_ = true;
+  }
+  char line[320];
+  const int expected = expected_negative_pivots(model_);
+  Inertia inertia = inertia_->compute();
+  info.expected_negative_pivots = expected;
+  // A rise above the previous step is a new instability; before the first check the baseline is
+  // the stable count (the reference state is stable).
+  const int baseline = current_.negative_pivots >= 0 ? current_.negative_pivots : expected;
+  if (inertia.negative > baseline) {
+    info.new_instability = true;
+    info.unstable_negative_pivots = inertia.negative;
+    std::string lowest = "not computed";
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+      EigenOptions eigen;
+      eigen.count = stability_.modes;
+      info.modes = lowest_eigenmodes(model_, eigen);
+      if (!info.modes.empty()) {
+        std::snprintf(line, sizeof line, "%.6g", info.modes.front().eigenvalue);
+        lowest = line;
+      }
+    } catch (const Error& e) {
+      log("  step " + std::to_string(info.step) + ": the eigenmodes could not be computed: " +
+          e.what());
+    }
+    eigenmode_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::snprintf(line, sizeof line,
+                  "step %d: t = %.6g: new instability, %d negative pivots (stable: %d, previous "
+                  "step: %d), %d zero; lowest eigenvalue %s",
+                  info.step, info.time, inertia.negative, expected, baseline, inertia.zero,
+                  lowest.c_str());
+    log("  " + std::string(line));
+    if (stability_.branch_switch && !info.modes.empty()) {
+      // (stability.md, S10): u += a φ1 on the displacement dofs (φ1 is zero on constrained
+      // ones), the same time solved again; the model's converged state is the unperturbed one.
+      const std::vector<double>& phi = info.modes.front().state;
+      const std::vector<double> unperturbed = model_.converged_state();
+      const int n_nodes = model_.mesh().n_nodes();
+      double a = stability_.perturbation_mm;
+      for (int attempt = 0; attempt < kAmplitudeTries; ++attempt, a *= kAmplitudeGrowth) {
+        auto& x = model_.state();
+        for (int v = 0; v < n_nodes; ++v)
+          for (int k = 0; k < 3; ++k) x[DofMap::dof(v, k)] += a * phi[DofMap::dof(v, k)];
+        NewtonResult newton;
+        const std::string failure = solve_step(newton, result);
+        if (!failure.empty()) {
+          model_.restore_converged();
+          std::snprintf(line, sizeof line,
+                        "step %d: branch switching with amplitude %.4g mm failed (%s); keeping "
+                        "the unperturbed state",
+                        info.step, a, failure.c_str());
+          log("  " + std::string(line));
+          break;
+        }
+        const double moved = max_nodal_distance(model_.state(), unperturbed, n_nodes);
+        if (moved < 0.5 * a) {
+          model_.restore_converged();
+          std::snprintf(line, sizeof line,
+                        "step %d: the re-solve from amplitude %.4g mm fell back onto the "
+                        "unperturbed state (max |du| %.3g mm)%s",
+                        info.step, a, moved,
+                        attempt + 1 < kAmplitudeTries ? "; trying a larger amplitude"
+                                                      : "; keeping the unperturbed state");
+          log("  " + std::string(line));
+          continue;
+        }
+        model_.save_converged();
+        inertia = inertia_->compute();
+        switched = true;
+        info.branch_switched = true;
+        info.perturbation_mm = a;
+        info.newton_iterations += newton.iterations;
+        info.residual_norm = newton.residual_norm;
+        info.residual_history = newton.residual_history;
+        std::snprintf(line, sizeof line,
+                      "step %d: switched branch along mode 1 (eigenvalue %s): amplitude %.4g mm, "
+                      "%d extra negative pivot(s) before, max |du| %.4g mm, %d Newton "
+                      "iterations; now %d negative pivots",
+                      info.step, lowest.c_str(), a, info.unstable_negative_pivots - expected, moved,
+                      newton.iterations, inertia.negative);
+        log("  " + std::string(line));
+        break;
+      }
+    }
+  }
+  info.negative_pivots = inertia.negative;
+  info.zero_pivots = inertia.zero;
+  info.stable = inertia.negative == expected && inertia.zero == 0;
+  current_.negative_pivots = inertia.negative;
+}
 
 SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_step,
                                 const std::function<void(const std::string&)>& log) {
@@ -71,28 +225,7 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
     }
     model_.set_time(t_new);
     NewtonResult newton;
-    std::string failure;
-    int augmentations = 0;
-    try {
-      // Newton, then (augmented Lagrangian terms) multiplier updates and re-solves until every
-      // constraint meets its tolerance.
-      while (true) {
-        newton = newton_.solve();
-        result.newton_iterations += newton.iterations;
-        if (!newton.converged) {
-          failure = describe_failure(newton);
-          break;
-        }
-        if (!model_.update_multipliers()) break;
-        if (++augmentations > settings_.max_augmentations) {
-          failure = "constraints not met after " + std::to_string(settings_.max_augmentations) +
-                    " multiplier updates";
-          break;
-        }
-      }
-    } catch (const Error& e) {
-      failure = e.what();
-    }
+    const std::string failure = solve_step(newton, result);
     if (!failure.empty()) {
       model_.restore_converged();
       ++result.cutbacks;
@@ -127,6 +260,10 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
     info.residual_history = newton.residual_history;
     info.cutbacks = cutbacks_this_step;
     cutbacks_this_step = 0;
+    bool switched = false;
+    check_stability(info, result, log, switched);
+    // After a switch the last increment holds the jump onto the new branch: no extrapolation.
+    if (switched) previous_dt = 0.0;
     on_step(info);
     if (stop_requested_ && t < end * (1.0 - 1e-12)) {
       result.interrupted = true;

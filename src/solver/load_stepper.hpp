@@ -3,16 +3,31 @@
 /// prescribed motions at the new time and solves with Newton. A failed step (Newton divergence,
 /// an inverted element, a failed bubble solve) is retried with a smaller step (cut-back); after
 /// easy steps the step grows. Below the minimum step the run stops.
+/// Optionally (set_stability) every converged step is checked for stability from the inertia of
+/// its tangent, and at a new instability the stepper computes the lowest eigenmodes and may switch
+/// to the bifurcated branch (docs/theory/stability.md, sections 4 and 5).
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "io/case.hpp"
 #include "solver/mixed_model.hpp"
+#include "solver/eigenmodes.hpp"
 #include "solver/newton_solver.hpp"
+#include "solver/stability.hpp"
 
 namespace plisse {
+
+/// What the stepper does about stability (the app maps solver.stability.* to it).
+struct StabilityOptions {
+  bool check = false;          ///< inertia of the tangent at every converged step
+  bool branch_switch = false;  ///< at a new instability: perturb along mode 1 and re-solve
+  int modes = 4;               ///< eigenmodes computed at a new instability, >= 1
+  double perturbation_mm = 0.0;  ///< amplitude a of u += a φ1 [mm] (relative amplitude x wall
+                                 ///< thickness, computed by the caller), > 0 with branch_switch
+};
 
 /// One converged step, as reported to the caller.
 struct StepInfo {
@@ -24,6 +39,19 @@ struct StepInfo {
   double residual_norm = 0.0;
   std::vector<double> residual_history;
   int cutbacks = 0;  ///< failed attempts before this step converged
+  // Stability (StabilityOptions::check; stability.md, S7):
+  int negative_pivots = -1;           ///< of the accepted state's tangent; -1: not checked
+  int zero_pivots = 0;                ///< null pivots (a critical point)
+  int expected_negative_pivots = 0;   ///< of a stable state (expected_negative_pivots)
+  bool stable = true;                 ///< negative == expected and no zero pivot (true unchecked)
+  /// First step with more negative pivots than the step before (of the unperturbed state).
+  bool new_instability = false;
+  int unstable_negative_pivots = -1;  ///< at a new instability: count of the unperturbed state
+  /// At a new instability: the lowest `modes` eigenmodes of the unperturbed converged state,
+  /// ascending (for the VTU output); empty otherwise.
+  std::vector<Eigenmode> modes;
+  bool branch_switched = false;  ///< the accepted state is the re-solve from u + a φ1
+  double perturbation_mm = 0.0;  ///< the amplitude a that switched (may exceed the option's)
 };
 
 struct SteppingResult {
@@ -42,11 +70,18 @@ struct StepperState {
   double dt = 0.0;           ///< next step size (0: start from end_time / steps)
   double previous_dt = 0.0;  ///< size of the last converged step (0: none yet)
   std::vector<double> previous_state;  ///< converged state before the last one (predictor)
+  int negative_pivots = -1;  ///< of the last converged step (-1: not checked); a rise above it is
+                             ///< a new instability
 };
 
 class LoadStepper {
  public:
   LoadStepper(MixedModel& model, const SolverSettings& settings);
+  ~LoadStepper();
+
+  /// Stability check and branch switching (off by default). Throws plisse::Error when
+  /// branch_switch is set without check, modes < 1 or a non-positive amplitude.
+  void set_stability(const StabilityOptions& options);
 
   /// Continue from `state` (the model must hold the matching converged state) instead of t = 0.
   void resume(StepperState state) { resume_ = std::move(state); }
@@ -60,10 +95,21 @@ class LoadStepper {
   SteppingResult run(const std::function<void(const StepInfo&)>& on_step,
                      const std::function<void(const std::string&)>& log);
   PhaseTimes times() const { return newton_.times(); }
+  /// Wall time of the stability checks [s] (assembly + LDL^T factorisation) and their number;
+  /// eigenmode computations are not included (eigenmode_seconds).
+  double stability_seconds() const;
+  int stability_checks() const;
+  double eigenmode_seconds() const { return eigenmode_seconds_; }
 
  private:
   /// The reason of a failed Newton solve, naming the worst element and where it is.
   std::string describe_failure(const NewtonResult& newton) const;
+  /// Newton, then multiplier updates and re-solves; empty on success, else why it failed.
+  std::string solve_step(NewtonResult& newton, SteppingResult& result);
+  /// The stability part of a converged, saved step: inertia, modes, branch switching. The model
+  /// holds the step's accepted state on return. Sets `switched` when the predictor must restart.
+  void check_stability(StepInfo& info, SteppingResult& result,
+                       const std::function<void(const std::string&)>& log, bool& switched);
 
   MixedModel& model_;
   SolverSettings settings_;
@@ -71,6 +117,10 @@ class LoadStepper {
   std::optional<StepperState> resume_;
   StepperState current_;
   bool stop_requested_ = false;
+  StabilityOptions stability_;
+  std::unique_ptr<InertiaCheck> inertia_;
+  bool told_symmetric_part_ = false;
+  double eigenmode_seconds_ = 0.0;
 };
 
 }  // namespace plisse
