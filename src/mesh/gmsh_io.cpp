@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -13,7 +15,9 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "mesh/gmsh_raw_model.hpp"
 #include "mesh/gmsh_session.hpp"
+#include "mesh/isolated_process.hpp"
 #include "mesh/topology.hpp"
 
 namespace plisse {
@@ -53,15 +57,30 @@ struct ElementBlock {
   int n_duplicates = 0;
 };
 
+/// The block of `type` in `model`, or nullptr.
+const RawElementBlock* find_block(const RawGmshModel& model, int type) {
+  for (const auto& b : model.blocks)
+    if (b.type == type) return &b;
+  return nullptr;
+}
+
+std::string type_name(const RawGmshModel& model, int type) {
+  for (const auto& t : model.types)
+    if (t.type == type) return t.name;
+  return "element type " + std::to_string(type);
+}
+
 template <int NCorner, int NNode>
-ElementBlock<NCorner, NNode> read_block(int type,
+ElementBlock<NCorner, NNode> read_block(const RawGmshModel& model, int type,
                                         const std::unordered_map<std::size_t, int>& node_index,
                                         const std::string& path) {
   ElementBlock<NCorner, NNode> block;
-  std::vector<std::size_t> tags, node_tags;
-  gmsh::model::mesh::getElementsByType(type, tags, node_tags, -1);
+  const RawElementBlock* raw = find_block(model, type);
+  if (!raw) return block;
+  const auto& tags = raw->element_tags;
+  const auto& node_tags = raw->node_tags;
   if (node_tags.size() != tags.size() * NNode)
-    throw file_error(path, "inconsistent element data for " + element_type_name(type));
+    throw file_error(path, "inconsistent element data for " + type_name(model, type));
   std::vector<std::size_t> order(tags.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(),
@@ -74,7 +93,7 @@ ElementBlock<NCorner, NNode> read_block(int type,
     for (int k = 0; k < NNode; ++k) {
       const auto it = node_index.find(node_tags[e * NNode + static_cast<std::size_t>(k)]);
       if (it == node_index.end())
-        throw file_error(path, element_type_name(type) + " element " + std::to_string(tags[e]) +
+        throw file_error(path, type_name(model, type) + " element " + std::to_string(tags[e]) +
                                    " references a node that is not in the file");
       n[static_cast<std::size_t>(k)] = it->second;
     }
@@ -89,17 +108,6 @@ ElementBlock<NCorner, NNode> read_block(int type,
     block.index_of_tag[tags[e]] = it->second;
   }
   return block;
-}
-
-/// Adds the elements of `type` on Gmsh entity (dim, entity) to `indices` via `index_of_tag`.
-void collect_group(int type, int entity, const std::unordered_map<std::size_t, int>& index_of_tag,
-                   std::vector<int>& indices) {
-  std::vector<std::size_t> tags, node_tags;
-  gmsh::model::mesh::getElementsByType(type, tags, node_tags, entity);
-  for (std::size_t t : tags) {
-    const auto it = index_of_tag.find(t);
-    if (it != index_of_tag.end()) indices.push_back(it->second);
-  }
 }
 
 void sort_unique(std::vector<int>& v) {
@@ -132,22 +140,88 @@ int orient_triangles_outward(Mesh& mesh) {
   return n_flipped;
 }
 
-Mesh read_model(const std::string& path, GmshReadInfo& info) {
+/// In the reader process: copies what read_gmsh needs out of the model Gmsh just read.
+RawGmshModel extract_model() {
+  RawGmshModel m;
+  for (int dim : {2, 3}) {
+    std::vector<int> types;
+    gmsh::model::mesh::getElementTypes(types, dim, -1);
+    for (int type : types) m.types.push_back({type, dim, element_type_name(type)});
+  }
+  std::vector<double> parametric;
+  gmsh::model::mesh::getNodes(m.node_tags, m.coordinates, parametric, -1, -1, false, false);
+  const auto is_read = [](int type) {
+    return type == kTet4 || type == kTet10 || type == kTri3 || type == kTri6;
+  };
+  for (const auto& t : m.types) {
+    if (!is_read(t.type)) continue;
+    RawElementBlock& b = m.blocks.emplace_back();
+    b.type = t.type;
+    gmsh::model::mesh::getElementsByType(t.type, b.element_tags, b.node_tags, -1);
+  }
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, -1);
+  for (const auto& [dim, tag] : groups) {
+    if (dim != 2 && dim != 3) continue;
+    RawPhysicalGroup& g = m.groups.emplace_back();
+    g.dim = dim;
+    g.tag = tag;
+    gmsh::model::getPhysicalName(dim, tag, g.name);
+    std::vector<int> entities;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+    for (const auto& t : m.types) {
+      if (t.dim != dim || !is_read(t.type)) continue;
+      RawGroupElements& e = g.elements.emplace_back();
+      e.type = t.type;
+      for (int entity : entities) {
+        std::vector<std::size_t> tags, node_tags;
+        gmsh::model::mesh::getElementsByType(t.type, tags, node_tags, entity);
+        e.element_tags.insert(e.element_tags.end(), tags.begin(), tags.end());
+      }
+    }
+  }
+  return m;
+}
+
+/// In the reader process: opens `path` with Gmsh and sends the model or the error to the parent.
+/// Gmsh logs its errors (GmshSession) or throws a string, std::bad_alloc (an announced count
+/// beyond the memory limit) or a standard exception.
+void read_in_child(const std::string& path, GmshSession& session, ChildOutput& out) {
+  try {
+    gmsh::open(path);
+    session.check_input(path, "cannot read the mesh file");
+    const RawGmshModel model = extract_model();
+    session.check_input(path, "cannot read the mesh file");
+    send_model(model, out);
+  } catch (const InputError& e) {
+    send_error(e.rule(), out);
+  } catch (const std::string& message) {  // Gmsh throws strings when AbortOnError is set
+    send_error("cannot read the mesh file: " + message, out);
+  } catch (const std::bad_alloc&) {
+    send_out_of_memory(out);
+  } catch (const std::exception& e) {
+    send_error(std::string("cannot read the mesh file: ") + e.what(), out);
+  } catch (...) {
+    send_error("cannot read the mesh file: Gmsh threw an exception of unknown type", out);
+  }
+}
+
+/// The Mesh from what the reader process sent (conventions: gmsh_io.hpp).
+Mesh build_mesh(const RawGmshModel& model, const std::string& path, GmshReadInfo& info) {
   Mesh mesh;
   // Element types present: refuse what plisse cannot use, naming the type.
   std::vector<int> types3, types2;
-  gmsh::model::mesh::getElementTypes(types3, 3, -1);
-  gmsh::model::mesh::getElementTypes(types2, 2, -1);
+  for (const auto& t : model.types) (t.dim == 3 ? types3 : types2).push_back(t.type);
   for (int type : types3)
     if (type != kTet4 && type != kTet10)
       throw file_error(
-          path, "unsupported volume element type '" + element_type_name(type) + "' (Gmsh type " +
+          path, "unsupported volume element type '" + type_name(model, type) + "' (Gmsh type " +
                     std::to_string(type) +
                     "): plisse reads tetrahedra only (4 or 10 nodes); re-mesh the volume with "
                     "tetrahedra");
   for (int type : types2)
     if (type != kTri3 && type != kTri6)
-      throw file_error(path, "unsupported surface element type '" + element_type_name(type) +
+      throw file_error(path, "unsupported surface element type '" + type_name(model, type) +
                                  "' (Gmsh type " + std::to_string(type) +
                                  "): boundary elements must be triangles (3 or 6 nodes)");
   const bool has4 = std::count(types3.begin(), types3.end(), kTet4) > 0;
@@ -161,9 +235,11 @@ Mesh read_model(const std::string& path, GmshReadInfo& info) {
     throw file_error(path, "6-node triangles need 10-node tetrahedra and no 3-node triangles");
 
   // Nodes, renumbered by increasing Gmsh tag.
-  std::vector<std::size_t> node_tags;
-  std::vector<double> coords, parametric;
-  gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
+  const auto& node_tags = model.node_tags;
+  const auto& coords = model.coordinates;
+  if (coords.size() != 3 * node_tags.size())
+    throw file_error(path, "inconsistent node data: " + std::to_string(node_tags.size()) +
+                               " nodes with " + std::to_string(coords.size()) + " coordinates");
   std::vector<std::size_t> order(node_tags.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(),
@@ -180,12 +256,12 @@ Mesh read_model(const std::string& path, GmshReadInfo& info) {
   // Tetrahedra and triangles.
   std::unordered_map<std::size_t, int> tet_of_tag, tri_of_tag;
   if (has4) {
-    auto block = read_block<4, 4>(kTet4, node_index, path);
+    auto block = read_block<4, 4>(model, kTet4, node_index, path);
     mesh.tets = std::move(block.nodes);
     tet_of_tag = std::move(block.index_of_tag);
     info.n_duplicate_elements += block.n_duplicates;
   } else {
-    auto block = read_block<4, 10>(kTet10, node_index, path);
+    auto block = read_block<4, 10>(model, kTet10, node_index, path);
     for (const auto& n : block.nodes) {
       mesh.tets.push_back({n[0], n[1], n[2], n[3]});
       mesh.tet_edge_nodes.push_back({n[4], n[5], n[6], n[7], n[8], n[9]});
@@ -193,8 +269,9 @@ Mesh read_model(const std::string& path, GmshReadInfo& info) {
     tet_of_tag = std::move(block.index_of_tag);
     info.n_duplicate_elements += block.n_duplicates;
   }
+  if (mesh.tets.empty()) throw file_error(path, "the file contains no tetrahedra");
   if (has_tri6) {
-    auto block = read_block<3, 6>(kTri6, node_index, path);
+    auto block = read_block<3, 6>(model, kTri6, node_index, path);
     for (const auto& n : block.nodes) {
       mesh.triangles.push_back({n[0], n[1], n[2]});
       mesh.triangle_edge_nodes.push_back({n[3], n[4], n[5]});
@@ -202,7 +279,7 @@ Mesh read_model(const std::string& path, GmshReadInfo& info) {
     tri_of_tag = std::move(block.index_of_tag);
     info.n_duplicate_elements += block.n_duplicates;
   } else if (has_tri3) {
-    auto block = read_block<3, 3>(kTri3, node_index, path);
+    auto block = read_block<3, 3>(model, kTri3, node_index, path);
     mesh.triangles = std::move(block.nodes);
     tri_of_tag = std::move(block.index_of_tag);
     info.n_duplicate_elements += block.n_duplicates;
@@ -232,22 +309,22 @@ Mesh read_model(const std::string& path, GmshReadInfo& info) {
   }
 
   // Physical groups -> tags.
-  gmsh::vectorpair groups;
-  gmsh::model::getPhysicalGroups(groups, -1);
-  for (const auto& [dim, tag] : groups) {
-    if (dim != 2 && dim != 3) continue;
-    std::string name;
-    gmsh::model::getPhysicalName(dim, tag, name);
+  const int tet_type = has4 ? kTet4 : kTet10;
+  const int tri_type = has_tri6 ? kTri6 : kTri3;
+  for (const auto& group : model.groups) {
+    if (group.dim != 2 && group.dim != 3) continue;
+    std::string name = group.name;
     if (name == kUntaggedGroupName) continue;
-    if (name.empty()) name = std::to_string(dim) + ":" + std::to_string(tag);
-    std::vector<int> entities;
-    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
-    auto& indices = dim == 2 ? mesh.surface_tags[name] : mesh.volume_tags[name];
-    for (int entity : entities) {
-      if (dim == 3)
-        collect_group(has4 ? kTet4 : kTet10, entity, tet_of_tag, indices);
-      else
-        collect_group(has_tri6 ? kTri6 : kTri3, entity, tri_of_tag, indices);
+    if (name.empty()) name = std::to_string(group.dim) + ":" + std::to_string(group.tag);
+    auto& indices = group.dim == 2 ? mesh.surface_tags[name] : mesh.volume_tags[name];
+    const int type = group.dim == 3 ? tet_type : tri_type;
+    const auto& index_of_tag = group.dim == 3 ? tet_of_tag : tri_of_tag;
+    for (const auto& elements : group.elements) {
+      if (elements.type != type) continue;
+      for (std::size_t t : elements.element_tags) {
+        const auto it = index_of_tag.find(t);
+        if (it != index_of_tag.end()) indices.push_back(it->second);
+      }
     }
     sort_unique(indices);
   }
@@ -392,6 +469,14 @@ bool ends_with(const std::string& s, const std::string& suffix) {
          s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+/// ".msh" in any letter case: Gmsh picks its MSH reader from the extension, case-insensitively.
+bool ends_with_msh(const std::string& path) {
+  if (path.size() < 4) return false;
+  std::string ext = path.substr(path.size() - 4);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".msh";
+}
+
 }  // namespace
 
 Mesh read_gmsh(const std::string& path) {
@@ -399,33 +484,82 @@ Mesh read_gmsh(const std::string& path) {
   return read_gmsh(path, info);
 }
 
+ChildLimits gmsh_reader_limits(std::uintmax_t file_bytes) {
+  // Gmsh holds about 10-20 bytes per byte of an ASCII file and more per byte of a binary one
+  // (measured: fuzz/README.md); the factors leave a wide margin over that, the floors over the
+  // start-up of Gmsh and any small file.
+  constexpr std::uint64_t kMemoryFloor = std::uint64_t{1} << 30;
+  constexpr std::uint64_t kMemoryPerFileByte = 64;
+  constexpr double kCpuFloorSeconds = 20.0;
+  constexpr double kCpuSecondsPerMiB = 4.0;
+  const double mib = static_cast<double>(file_bytes) / static_cast<double>(1 << 20);
+  ChildLimits limits;
+  limits.memory_bytes =
+      kMemoryFloor + std::min<std::uint64_t>(file_bytes, std::uint64_t{1} << 40) * kMemoryPerFileByte;
+  limits.cpu_seconds = static_cast<unsigned>(std::min(kCpuFloorSeconds + kCpuSecondsPerMiB * mib, 1e6));
+  limits.wall_seconds = 2.0 * limits.cpu_seconds + 10.0;  // leaves room for a loaded machine
+  return limits;
+}
+
 Mesh read_gmsh(const std::string& path, GmshReadInfo& info) {
+  std::error_code ec;
+  const std::uintmax_t file_bytes = std::filesystem::file_size(path, ec);
+  return read_gmsh(path, info, gmsh_reader_limits(ec ? 0 : file_bytes));
+}
+
+Mesh read_gmsh(const std::string& path, GmshReadInfo& info, const ChildLimits& limits) {
   info = GmshReadInfo{};
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw file_error(path, "mesh file not found");
   if (!std::filesystem::is_regular_file(path, ec)) throw file_error(path, "not a regular file");
-  if (!std::ifstream(path).good()) throw file_error(path, "cannot open the mesh file for reading");
-  GmshSession session;
-  try {
-    gmsh::open(path);
-    session.check_input(path, "cannot read the mesh file");
-    Mesh mesh = read_model(path, info);
-    session.check_input(path, "cannot read the mesh file");
-    return mesh;
-  } catch (const InputError& e) {
-    throw file_error(path, readable_errors(e.rule()));
-  } catch (const Error&) {
-    throw;
-  } catch (const std::string& message) {  // Gmsh throws strings when AbortOnError is set
-    throw file_error(path, "cannot read the mesh file: " + readable_errors(message));
-  } catch (const std::bad_alloc&) {
-    // Gmsh sizes its arrays from the counts in the file: a corrupt count asks for terabytes.
+  if (!ends_with_msh(path))
     throw file_error(path,
-                     "cannot read the mesh file: it announces more nodes or elements than fit in "
-                     "memory (a corrupt or truncated file?)");
-  } catch (const std::exception& e) {
-    throw file_error(path, std::string("cannot read the mesh file: ") + e.what());
+                     "the mesh file name must end in .msh (Gmsh would read any other file as a "
+                     "script and run it)");
+  if (!std::ifstream(path).good()) throw file_error(path, "cannot open the mesh file for reading");
+  const std::uintmax_t file_bytes = std::filesystem::file_size(path, ec);
+  const std::string size_note = "for a file of " + std::to_string(file_bytes) + " bytes";
+  const std::string malformed = "the mesh file is malformed: ";
+
+  ChildResult child;
+  {
+    // Initialised Gmsh with an empty model and its error log started, inherited by the child;
+    // the session also serialises readers within this process.
+    GmshSession session;
+    child = run_isolated([&](ChildOutput& out) { read_in_child(path, session, out); }, limits);
   }
+  if (child.end == ChildResult::End::wall_time_exceeded)
+    throw file_error(path, malformed + "reading it took longer than the time limit of " +
+                               std::to_string(static_cast<long>(limits.wall_seconds)) + " s " +
+                               size_note + " (the Gmsh reader process was stopped)");
+  if (child.cpu_limit_hit(limits))
+    throw file_error(path, malformed + "reading it exceeded the CPU-time limit of " +
+                               std::to_string(limits.cpu_seconds) + " s " + size_note +
+                               " (the Gmsh reader process was stopped by " +
+                               describe_signal(child.signal) + ")");
+  if (child.end == ChildResult::End::killed_by_signal)
+    throw file_error(path, malformed + "Gmsh's reader failed on it: the reader process was "
+                                       "killed by " +
+                               describe_signal(child.signal));
+  if (child.exit_status != 0)
+    throw file_error(path, malformed + "the Gmsh reader process stopped with exit status " +
+                               std::to_string(child.exit_status) + " before sending the mesh");
+  GmshReaderReply reply;
+  if (!decode_reply(child.output, reply))
+    throw file_error(path, malformed + "the Gmsh reader process sent an incomplete reply (" +
+                               std::to_string(child.output.size()) + " bytes)");
+  switch (reply.kind) {
+    case GmshReaderReply::Kind::out_of_memory:
+      throw file_error(path, malformed + "reading it needs more than the memory limit of " +
+                                 std::to_string(limits.memory_bytes >> 20) + " MiB " + size_note +
+                                 ": it announces more nodes or elements than it holds (a corrupt "
+                                 "or truncated file?)");
+    case GmshReaderReply::Kind::error:
+      throw file_error(path, readable_errors(reply.rule));
+    case GmshReaderReply::Kind::model:
+      break;
+  }
+  return build_mesh(reply.model, path, info);
 }
 
 void write_gmsh(const Mesh& mesh, const std::string& path, double version, bool binary) {

@@ -14,8 +14,10 @@
 ///   that is not a boundary face of the tetrahedra keeps the file's orientation);
 /// - physical groups of dimension 0 and 1, and the group "plisse:untagged" that `write_gmsh`
 ///   adds to v2 files, are ignored.
+#include <cstdint>
 #include <string>
 
+#include "mesh/isolated_process.hpp"
 #include "mesh/mesh.hpp"
 
 namespace plisse {
@@ -33,11 +35,26 @@ struct GmshReadInfo {
 
 /// Reads a tetrahedral mesh. Physical groups of dimension 2 become surface tags, of dimension 3
 /// volume tags (unnamed groups are called "<dim>:<tag>"). Linear and second-order (10-node)
-/// tetrahedra are read; other volume element types, a missing or unreadable file and a mesh
-/// without tetrahedra are reported as InputError naming the file.
+/// tetrahedra are read; other volume element types, a missing or unreadable file, a name that
+/// does not end in ".msh" and a mesh without tetrahedra are reported as InputError naming the
+/// file.
+///
+/// The Gmsh SDK reads the file in a forked child process with resource limits
+/// (`gmsh_reader_limits`, isolated_process.hpp), which sends the model back through a pipe
+/// (gmsh_raw_model.hpp): a file on which Gmsh crashes, allocates without bound or loops is an
+/// InputError "the mesh file is malformed: ..." naming the signal or the limit, not a crash of
+/// plisse. Gmsh's own error messages are kept. Thread-safe (readers are serialised).
 Mesh read_gmsh(const std::string& path);
 /// Same, and reports what was normalised in `info`.
 Mesh read_gmsh(const std::string& path, GmshReadInfo& info);
+/// Same with other limits for the reader process than `gmsh_reader_limits` (the fuzzer uses
+/// tighter ones, so that an input on which Gmsh loops costs seconds, not minutes).
+Mesh read_gmsh(const std::string& path, GmshReadInfo& info, const ChildLimits& limits);
+
+/// Resource limits of the reader process for a file of `file_bytes` bytes: memory 1 GiB + 64 bytes
+/// per file byte (beyond what plisse had mapped), CPU time 20 s + 4 s per MiB, wall time twice the
+/// CPU time + 10 s. Gmsh needs far less on a well-formed file (fuzz/README.md).
+ChildLimits gmsh_reader_limits(std::uintmax_t file_bytes);
 
 /// Writes `mesh` with its tags as physical groups. `version` is 2.2 or 4.1. The file name must end
 /// in ".msh" (InputError otherwise; also when the file cannot be written).
