@@ -1,0 +1,407 @@
+#include "io/vtu_reader.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <charconv>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <string_view>
+#include <utility>
+
+#include "core/error.hpp"
+
+namespace plisse {
+namespace {
+
+// Byte counts and values are read as the host's bytes, as the writer writes them.
+static_assert(std::endian::native == std::endian::little,
+              "VTU reader assumes a little-endian host");
+
+/// The XML header is read in chunks until "<AppendedData" appears; a plisse header is a few kB.
+constexpr std::size_t kHeaderChunk = 1 << 16;
+constexpr std::uint64_t kMaxHeaderBytes = std::uint64_t{16} << 20;
+/// Largest accepted NumberOfComponents (plisse writes 1, 3, 6 or 9).
+constexpr int kMaxComponents = 1 << 16;
+
+enum class Section { none, point_data, cell_data, points, cells };
+
+struct ArrayDecl {
+  Section section = Section::none;
+  std::string name;
+  std::string type;
+  int n_components = 1;
+  std::uint64_t offset = 0;    ///< from the first byte after '_'
+  std::uint64_t n_bytes = 0;   ///< the block's UInt64 byte count (filled after the header)
+};
+
+struct Tag {
+  std::string name;
+  bool closing = false;
+  std::map<std::string, std::string> attributes;
+};
+
+class VtuFile {
+ public:
+  explicit VtuFile(std::filesystem::path path) : path_(std::move(path)) {
+    std::error_code ec;
+    const auto status = std::filesystem::status(path_, ec);
+    if (ec || !std::filesystem::exists(status)) fail("cannot open: no such file");
+    if (!std::filesystem::is_regular_file(status)) fail("cannot open: not a regular file");
+    in_.open(path_, std::ios::binary);
+    if (!in_) fail("cannot open for reading");
+    in_.seekg(0, std::ios::end);
+    const std::streamoff end = in_.tellg();
+    if (end < 0) fail("cannot determine the file size");
+    size_ = static_cast<std::uint64_t>(end);
+  }
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw Error("VTU '" + path_.string() + "': " + what);
+  }
+
+  std::uint64_t size() const { return size_; }
+
+  /// Reads n bytes at pos; pos + n <= size() is checked first.
+  void read_at(std::uint64_t pos, void* out, std::uint64_t n) {
+    if (pos > size_ || n > size_ - pos) fail("truncated: a read past the end of the file");
+    if (n == 0) return;  // out may be the null data() of an empty vector
+    in_.clear();
+    in_.seekg(static_cast<std::streamoff>(pos));
+    in_.read(static_cast<char*>(out), static_cast<std::streamsize>(n));
+    if (static_cast<std::uint64_t>(in_.gcount()) != n) fail("read error (file changed while read?)");
+  }
+
+  std::string read_string(std::uint64_t pos, std::uint64_t n) {
+    std::string s(static_cast<std::size_t>(n), '\0');
+    read_at(pos, s.data(), n);
+    return s;
+  }
+
+ private:
+  std::filesystem::path path_;
+  std::ifstream in_;
+  std::uint64_t size_ = 0;
+};
+
+bool is_space(char c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; }
+
+std::optional<std::uint64_t> parse_unsigned(std::string_view text) {
+  std::uint64_t value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
+/// Decodes the five predefined XML entities; nullopt for any other '&' sequence.
+std::optional<std::string> decode_entities(std::string_view text) {
+  static constexpr std::array<std::pair<std::string_view, char>, 5> kEntities = {
+      {{"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}}};
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    if (text[i] != '&') {
+      out += text[i++];
+      continue;
+    }
+    bool known = false;
+    for (const auto& [entity, c] : kEntities)
+      if (text.substr(i, entity.size()) == entity) {
+        out += c;
+        i += entity.size();
+        known = true;
+        break;
+      }
+    if (!known) return std::nullopt;
+  }
+  return out;
+}
+
+/// Parses the inside of one tag, text between '<' and '>'.
+Tag parse_tag(const VtuFile& file, std::string_view text) {
+  Tag tag;
+  std::size_t i = 0;
+  if (!text.empty() && text[0] == '/') {
+    tag.closing = true;
+    ++i;
+  }
+  const std::size_t name_start = i;
+  while (i < text.size() && !is_space(text[i]) && text[i] != '/') ++i;
+  tag.name = std::string(text.substr(name_start, i - name_start));
+  if (tag.name.empty()) file.fail("malformed XML header: a tag without a name");
+  while (true) {
+    while (i < text.size() && is_space(text[i])) ++i;
+    if (i == text.size()) break;
+    if (text[i] == '/' && i + 1 == text.size()) break;  // self-closing
+    const std::size_t key_start = i;
+    while (i < text.size() && text[i] != '=' && !is_space(text[i])) ++i;
+    const std::string key(text.substr(key_start, i - key_start));
+    while (i < text.size() && is_space(text[i])) ++i;
+    if (key.empty() || i == text.size() || text[i] != '=')
+      file.fail("malformed XML header: attribute '" + key + "' of <" + tag.name +
+                "> has no value");
+    ++i;
+    while (i < text.size() && is_space(text[i])) ++i;
+    if (i == text.size() || (text[i] != '"' && text[i] != '\''))
+      file.fail("malformed XML header: attribute '" + key + "' of <" + tag.name +
+                "> is not quoted");
+    const char quote = text[i++];
+    const std::size_t close = text.find(quote, i);
+    if (close == std::string_view::npos)
+      file.fail("malformed XML header: unterminated value of '" + key + "' in <" + tag.name + ">");
+    const auto value = decode_entities(text.substr(i, close - i));
+    if (!value)
+      file.fail("malformed XML header: unknown entity in '" + key + "' of <" + tag.name + ">");
+    if (!tag.attributes.emplace(key, *value).second)
+      file.fail("malformed XML header: attribute '" + key + "' repeated in <" + tag.name + ">");
+    i = close + 1;
+  }
+  return tag;
+}
+
+const std::string* attribute(const Tag& tag, const std::string& key) {
+  const auto it = tag.attributes.find(key);
+  return it == tag.attributes.end() ? nullptr : &it->second;
+}
+
+std::string require_attribute(const VtuFile& file, const Tag& tag, const std::string& key) {
+  const std::string* value = attribute(tag, key);
+  if (value == nullptr) file.fail("<" + tag.name + "> has no " + key + " attribute");
+  return *value;
+}
+
+std::uint64_t require_unsigned(const VtuFile& file, const Tag& tag, const std::string& key) {
+  const std::string text = require_attribute(file, tag, key);
+  const auto value = parse_unsigned(text);
+  if (!value) file.fail("<" + tag.name + "> " + key + "=\"" + text + "\" is not an unsigned integer");
+  return *value;
+}
+
+const char* section_name(Section s) {
+  switch (s) {
+    case Section::point_data:
+      return "PointData";
+    case Section::cell_data:
+      return "CellData";
+    case Section::points:
+      return "Points";
+    case Section::cells:
+      return "Cells";
+    case Section::none:
+      break;
+  }
+  return "";
+}
+
+/// Everything the header says, plus where the raw data lie.
+struct ParsedVtu {
+  VtuSummary summary;
+  std::vector<ArrayDecl> arrays;
+  std::uint64_t data_start = 0;  ///< first byte after '_'
+  std::uint64_t data_end = 0;    ///< position of the closing </AppendedData>
+};
+
+ParsedVtu parse(VtuFile& file) {
+  // 1. The header: everything before "<AppendedData".
+  static constexpr std::string_view kAppended = "<AppendedData";
+  std::string buffer;
+  std::size_t appended = std::string::npos;
+  while (appended == std::string::npos) {
+    if (buffer.size() >= file.size())
+      file.fail("not a plisse VTU file: no <AppendedData> block (ASCII, base64 or truncated?)");
+    if (buffer.size() >= kMaxHeaderBytes)
+      file.fail("not a plisse VTU file: no <AppendedData> within the first 16 MiB");
+    const std::uint64_t n =
+        std::min<std::uint64_t>(kHeaderChunk, file.size() - buffer.size());
+    const std::size_t search_from = buffer.size() >= kAppended.size() ? buffer.size() - kAppended.size() : 0;
+    buffer += file.read_string(buffer.size(), n);
+    appended = buffer.find(kAppended, search_from);
+  }
+  // The AppendedData tag itself and the '_' that starts the data: read a little past it.
+  if (buffer.size() < appended + 256 && buffer.size() < file.size())
+    buffer += file.read_string(buffer.size(),
+                               std::min<std::uint64_t>(256, file.size() - buffer.size()));
+  const std::size_t appended_close = buffer.find('>', appended);
+  if (appended_close == std::string::npos) file.fail("truncated in the <AppendedData> tag");
+  const Tag appended_tag = parse_tag(
+      file, std::string_view(buffer).substr(appended + 1, appended_close - appended - 1));
+  const std::string* encoding = attribute(appended_tag, "encoding");
+  if (encoding == nullptr || *encoding != "raw")
+    file.fail("AppendedData encoding is '" + (encoding ? *encoding : std::string()) +
+              "'; only raw is read (plisse's format)");
+  std::size_t underscore = appended_close + 1;
+  while (underscore < buffer.size() && is_space(buffer[underscore])) ++underscore;
+  if (underscore >= buffer.size() || buffer[underscore] != '_')
+    file.fail("no '_' marker at the start of the appended data");
+
+  ParsedVtu out;
+  out.data_start = underscore + 1;
+
+  // 2. Tags of the header.
+  const std::string_view header = std::string_view(buffer).substr(0, appended);
+  int n_vtk_files = 0, n_grids = 0, n_pieces = 0;
+  Section section = Section::none;
+  for (std::size_t pos = header.find('<'); pos != std::string_view::npos;
+       pos = header.find('<', pos)) {
+    const std::size_t close = header.find('>', pos);
+    if (close == std::string_view::npos) file.fail("malformed XML header: unclosed tag");
+    std::string_view inside = header.substr(pos + 1, close - pos - 1);
+    pos = close + 1;
+    if (!inside.empty() && (inside[0] == '?' || inside[0] == '!')) continue;  // declaration
+    const Tag tag = parse_tag(file, inside);
+    if (tag.name == "PointData" || tag.name == "CellData" || tag.name == "Points" ||
+        tag.name == "Cells") {
+      const Section s = tag.name == "PointData"  ? Section::point_data
+                        : tag.name == "CellData" ? Section::cell_data
+                        : tag.name == "Points"   ? Section::points
+                                                 : Section::cells;
+      if (tag.closing) {
+        if (section != s) file.fail("malformed XML header: unexpected </" + tag.name + ">");
+        section = Section::none;
+      } else {
+        if (section != Section::none)
+          file.fail("malformed XML header: <" + tag.name + "> inside <" + section_name(section) + ">");
+        if (n_pieces != 1) file.fail("<" + tag.name + "> outside a <Piece>");
+        if (inside.back() != '/') section = s;  // <PointData/> is empty
+      }
+      continue;
+    }
+    if (tag.closing) continue;
+    if (tag.name == "VTKFile") {
+      ++n_vtk_files;
+      if (require_attribute(file, tag, "type") != "UnstructuredGrid")
+        file.fail("not an UnstructuredGrid file");
+      if (require_attribute(file, tag, "byte_order") != "LittleEndian")
+        file.fail("byte order is not LittleEndian");
+      if (require_attribute(file, tag, "header_type") != "UInt64")
+        file.fail("header_type is not UInt64 (not written by plisse)");
+      if (attribute(tag, "compressor") != nullptr) file.fail("compressed data are not read");
+    } else if (tag.name == "UnstructuredGrid") {
+      ++n_grids;
+    } else if (tag.name == "Piece") {
+      if (++n_pieces > 1) file.fail("several <Piece>s (not written by plisse)");
+      out.summary.n_points = require_unsigned(file, tag, "NumberOfPoints");
+      out.summary.n_cells = require_unsigned(file, tag, "NumberOfCells");
+    } else if (tag.name == "DataArray") {
+      if (section == Section::none) file.fail("<DataArray> outside PointData, CellData, Points or Cells");
+      ArrayDecl a;
+      a.section = section;
+      a.name = require_attribute(file, tag, "Name");
+      a.type = require_attribute(file, tag, "type");
+      if (require_attribute(file, tag, "format") != "appended")
+        file.fail("DataArray '" + a.name + "' is not in the appended block (format is not "
+                  "'appended')");
+      a.offset = require_unsigned(file, tag, "offset");
+      if (attribute(tag, "NumberOfComponents") != nullptr) {
+        const std::uint64_t nc = require_unsigned(file, tag, "NumberOfComponents");
+        if (nc < 1 || nc > static_cast<std::uint64_t>(kMaxComponents))
+          file.fail("DataArray '" + a.name + "' has " + std::to_string(nc) + " components");
+        a.n_components = static_cast<int>(nc);
+      }
+      out.arrays.push_back(std::move(a));
+    }
+  }
+  if (n_vtk_files != 1 || n_grids != 1 || n_pieces != 1)
+    file.fail("not a plisse VTU file: expected one <VTKFile>, <UnstructuredGrid> and <Piece>");
+  if (section != Section::none)
+    file.fail(std::string("malformed XML header: <") + section_name(section) + "> not closed");
+
+  // 3. The closing tags: a truncated file ends without them.
+  const std::uint64_t tail_size = std::min<std::uint64_t>(64, file.size() - out.data_start);
+  const std::string tail = file.read_string(file.size() - tail_size, tail_size);
+  const std::size_t closing = tail.rfind("</AppendedData>");
+  if (closing == std::string::npos || tail.find("</VTKFile>", closing) == std::string::npos)
+    file.fail("truncated: the file does not end with </AppendedData></VTKFile>");
+  out.data_end = file.size() - tail_size + closing;
+
+  // 4. Every block inside [data_start, data_end), with the size its declaration implies.
+  bool has_points = false, has_connectivity = false, has_offsets = false, has_types = false;
+  for (ArrayDecl& a : out.arrays) {
+    const std::uint64_t available = out.data_end - out.data_start;
+    if (available < sizeof(std::uint64_t) || a.offset > available - sizeof(std::uint64_t))
+      file.fail("array '" + a.name + "': offset " + std::to_string(a.offset) +
+                " lies outside the appended data (truncated or corrupt file)");
+    file.read_at(out.data_start + a.offset, &a.n_bytes, sizeof a.n_bytes);
+    if (a.n_bytes > available - sizeof(std::uint64_t) - a.offset)
+      file.fail("array '" + a.name + "': " + std::to_string(a.n_bytes) +
+                " bytes declared, more than the file holds (truncated or corrupt file)");
+    const auto expect = [&](const char* type, std::uint64_t n_entities, std::uint64_t bytes_each) {
+      if (a.type != type)
+        file.fail("array '" + a.name + "' has type " + a.type + "; plisse writes " + type);
+      // n_bytes == n_entities * bytes_each without overflow
+      if (a.n_bytes % bytes_each != 0 || a.n_bytes / bytes_each != n_entities)
+        file.fail("array '" + a.name + "' holds " + std::to_string(a.n_bytes) + " bytes; " +
+                  std::to_string(n_entities) + " entries of " + std::to_string(bytes_each) +
+                  " bytes expected (corrupt file)");
+    };
+    const auto nc = static_cast<std::uint64_t>(a.n_components);
+    switch (a.section) {
+      case Section::point_data:
+        expect("Float64", out.summary.n_points, 8 * nc);
+        out.summary.point_fields.push_back({a.name, a.n_components});
+        break;
+      case Section::cell_data:
+        expect("Float64", out.summary.n_cells, 8 * nc);
+        out.summary.cell_fields.push_back({a.name, a.n_components});
+        break;
+      case Section::points:
+        if (has_points || nc != 3) file.fail("<Points> must hold one array of 3 components");
+        expect("Float64", out.summary.n_points, 24);
+        has_points = true;
+        break;
+      case Section::cells:
+        if (a.name == "connectivity") {
+          if (a.type != "Int64" || a.n_bytes % 8 != 0)
+            file.fail("connectivity is not an Int64 array");
+          has_connectivity = true;
+        } else if (a.name == "offsets") {
+          expect("Int64", out.summary.n_cells, 8);
+          has_offsets = true;
+        } else if (a.name == "types") {
+          expect("UInt8", out.summary.n_cells, 1);
+          has_types = true;
+        }
+        break;
+      case Section::none:
+        break;
+    }
+  }
+  if (!has_points || !has_connectivity || !has_offsets || !has_types)
+    file.fail("not a plisse VTU file: Points or Cells (connectivity, offsets, types) missing");
+  return out;
+}
+
+}  // namespace
+
+VtuSummary read_vtu_summary(const std::filesystem::path& path) {
+  VtuFile file(path);
+  return parse(file).summary;
+}
+
+std::uint64_t read_vtu_point_count(const std::filesystem::path& path) {
+  return read_vtu_summary(path).n_points;
+}
+
+VtuField read_vtu_point_field(const std::filesystem::path& path, const std::string& name) {
+  VtuFile file(path);
+  const ParsedVtu parsed = parse(file);
+  const auto it = std::find_if(parsed.arrays.begin(), parsed.arrays.end(), [&](const ArrayDecl& a) {
+    return a.section == Section::point_data && a.name == name;
+  });
+  if (it == parsed.arrays.end()) {
+    std::string known;
+    for (const VtuArrayInfo& f : parsed.summary.point_fields)
+      known += (known.empty() ? "" : ", ") + f.name;
+    file.fail("no point field '" + name + "' (point fields: " + (known.empty() ? "none" : known) +
+              ")");
+  }
+  VtuField field{name, it->n_components, {}};
+  // n_bytes was checked against the file size: the allocation is bounded by it.
+  field.values.resize(static_cast<std::size_t>(it->n_bytes / sizeof(double)));
+  file.read_at(parsed.data_start + it->offset + sizeof(std::uint64_t), field.values.data(),
+               it->n_bytes);
+  return field;
+}
+
+}  // namespace plisse

@@ -1,0 +1,214 @@
+// VTU reader (io/vtu_reader.hpp): bit-exact round trip with write_vtu, and a plisse::Error (never a
+// crash, a huge allocation or a read past the end) for missing fields, foreign formats, truncated
+// and corrupted files: every truncation length and every single-byte corruption are tried.
+#include "io/vtu_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fstream>
+
+#include "core/error.hpp"
+#include "output_test_support.hpp"
+
+namespace plisse {
+namespace {
+
+using test::contents;
+using test::ScratchDir;
+
+/// A 2-tetrahedron piece with a scalar, a vector (the mode shape) and a tensor point field, and a
+/// cell field. Values are not exact in decimal: a lossy path would show.
+struct Sample {
+  std::vector<Vec3d> points = {Vec3d(0, 0, 0), Vec3d(1, 0, 0), Vec3d(0, 1, 0), Vec3d(0, 0, 1),
+                               Vec3d(1, 1, 1)};
+  std::vector<std::array<int, 4>> tets = {{0, 1, 2, 3}, {1, 2, 3, 4}};
+  std::vector<VtuField> point_fields;
+  std::vector<VtuField> cell_fields;
+  Sample() {
+    std::vector<double> p;
+    std::vector<Vec3d> mode;
+    std::vector<Mat3d> stress;
+    for (int i = 0; i < 5; ++i) {
+      p.push_back((i + 1) / 3.0);
+      mode.emplace_back(0.1 * i + 1.0 / 7.0, -i / 11.0, 1e-300 * i);
+      stress.push_back(Mat3d::Constant(i / 13.0) + Mat3d::Identity());
+    }
+    point_fields = {make_scalar_field("pressure", p), make_vector_field("mode_1", mode),
+                    make_symmetric_tensor_field("cauchy_stress", stress),
+                    make_vector_field("a<b & \"c\"", mode)};
+    cell_fields = {make_scalar_field("J", std::vector<double>{1.0 / 3.0, 2.0 / 3.0})};
+  }
+  void write(const std::filesystem::path& path) const {
+    write_vtu(path, points, tets, point_fields, cell_fields);
+  }
+};
+
+void write_bytes(const std::filesystem::path& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+std::string error_of(const std::filesystem::path& path, const std::string& field = "mode_1") {
+  try {
+    read_vtu_point_field(path, field);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(VtuReader, RoundTripIsBitExactForEveryPointField) {
+  ScratchDir dir;
+  const Sample s;
+  s.write(dir / "a.vtu");
+  const VtuSummary summary = read_vtu_summary(dir / "a.vtu");
+  EXPECT_EQ(summary.n_points, 5u);
+  EXPECT_EQ(summary.n_cells, 2u);
+  EXPECT_EQ(read_vtu_point_count(dir / "a.vtu"), 5u);
+  ASSERT_EQ(summary.point_fields.size(), s.point_fields.size());
+  ASSERT_EQ(summary.cell_fields.size(), 1u);
+  EXPECT_EQ(summary.cell_fields[0].name, "J");
+  for (std::size_t k = 0; k < s.point_fields.size(); ++k) {
+    const VtuField& written = s.point_fields[k];
+    EXPECT_EQ(summary.point_fields[k].name, written.name);  // entities decoded
+    EXPECT_EQ(summary.point_fields[k].n_components, written.n_components);
+    const VtuField read = read_vtu_point_field(dir / "a.vtu", written.name);
+    EXPECT_EQ(read.name, written.name);
+    EXPECT_EQ(read.n_components, written.n_components);
+    EXPECT_EQ(read.values, written.values);  // bit-exact: raw Float64 both ways
+  }
+}
+
+TEST(VtuReader, EmptyPieceAndNoFields) {
+  ScratchDir dir;
+  write_vtu(dir / "empty.vtu", std::vector<Vec3d>{}, std::vector<std::array<int, 4>>{},
+            {make_scalar_field("s", std::vector<double>{})}, {});
+  EXPECT_EQ(read_vtu_point_count(dir / "empty.vtu"), 0u);
+  EXPECT_TRUE(read_vtu_point_field(dir / "empty.vtu", "s").values.empty());
+  EXPECT_NE(error_of(dir / "empty.vtu", "mode_1").find("point fields: s"), std::string::npos);
+}
+
+TEST(VtuReader, MissingFieldNamesTheFieldsThereAre) {
+  ScratchDir dir;
+  Sample().write(dir / "a.vtu");
+  const std::string message = error_of(dir / "a.vtu", "mode_2");
+  EXPECT_NE(message.find("no point field 'mode_2'"), std::string::npos) << message;
+  EXPECT_NE(message.find("mode_1"), std::string::npos) << message;
+  EXPECT_NE(message.find("a.vtu"), std::string::npos) << message;
+  // A cell field is not a point field.
+  EXPECT_NE(error_of(dir / "a.vtu", "J").find("no point field 'J'"), std::string::npos);
+}
+
+TEST(VtuReader, UnreadableFilesAreErrors) {
+  ScratchDir dir;
+  EXPECT_NE(error_of(dir / "missing.vtu").find("no such file"), std::string::npos);
+  EXPECT_NE(error_of(dir.path()).find("not a regular file"), std::string::npos);
+  write_bytes(dir / "empty.vtu", "");
+  EXPECT_NE(error_of(dir / "empty.vtu").find("no <AppendedData>"), std::string::npos);
+}
+
+TEST(VtuReader, ForeignFormatsAreRefusedByName) {
+  ScratchDir dir;
+  Sample().write(dir / "a.vtu");
+  const std::string good = contents(dir / "a.vtu");
+  const auto variant = [&](const std::string& from, const std::string& to) {
+    std::string text = good;
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+    write_bytes(dir / "b.vtu", text);
+    return error_of(dir / "b.vtu");
+  };
+  EXPECT_NE(variant("UInt64", "UInt32").find("header_type"), std::string::npos);
+  EXPECT_NE(variant("LittleEndian", "BigEndian").find("LittleEndian"), std::string::npos);
+  EXPECT_NE(variant("\"UnstructuredGrid\"", "\"PolyData\"").find("UnstructuredGrid"),
+            std::string::npos);
+  EXPECT_NE(variant("encoding=\"raw\"", "encoding=\"base64\"").find("raw"), std::string::npos);
+  EXPECT_NE(variant("format=\"appended\"", "format=\"ascii\"").find("appended"),
+            std::string::npos);
+  EXPECT_NE(variant("type=\"Float64\" Name=\"mode_1\"", "type=\"Float32\" Name=\"mode_1\"")
+                .find("Float32"),
+            std::string::npos);
+  EXPECT_NE(variant("NumberOfPoints=\"5\"", "NumberOfPoints=\"6\"").find("expected"),
+            std::string::npos);
+  EXPECT_NE(variant("NumberOfPoints=\"5\"", "NumberOfPoints=\"x5\"").find("unsigned integer"),
+            std::string::npos);
+  EXPECT_NE(variant("NumberOfPoints=\"5\"", "NumberOfPoints=\"99999999999999999999999\"")
+                .find("unsigned integer"),
+            std::string::npos);
+}
+
+std::size_t data_start(const std::string& vtu) {
+  return vtu.find('_', vtu.find("<AppendedData")) + 1;
+}
+
+TEST(VtuReader, TruncationsAreErrors) {
+  ScratchDir dir;
+  Sample().write(dir / "a.vtu");
+  const std::string good = contents(dir / "a.vtu");
+  // Longest first: each truncation is one resize of the same file (cheap on a loaded machine).
+  for (std::size_t n = good.size() - 1; n-- > 0;) {
+    // (n = size - 1, only the final newline after </VTKFile> gone, is complete and skipped.)
+    std::filesystem::resize_file(dir / "a.vtu", n);
+    EXPECT_NE(error_of(dir / "a.vtu"), "") << "truncated to " << n << " of " << good.size();
+  }
+}
+
+TEST(VtuReader, CorruptByteCountsAndOffsetsAreErrors) {
+  ScratchDir dir;
+  Sample().write(dir / "a.vtu");
+  const std::string good = contents(dir / "a.vtu");
+  const std::size_t data = data_start(good);
+  // The first block's UInt64 byte count set to huge values: no allocation, an error.
+  for (const std::uint64_t bad : {std::uint64_t{8}, std::uint64_t{1} << 40, ~std::uint64_t{0},
+                                  ~std::uint64_t{0} - 7}) {
+    std::string text = good;
+    std::memcpy(text.data() + data, &bad, sizeof bad);
+    write_bytes(dir / "c.vtu", text);
+    const std::string message = error_of(dir / "c.vtu", "pressure");
+    EXPECT_NE(message, "") << bad;
+  }
+  // Offsets beyond the file.
+  std::string text = good;
+  const std::size_t at = text.find("offset=\"0\"");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 10, "offset=\"18446744073709551615\"");
+  write_bytes(dir / "d.vtu", text);
+  EXPECT_NE(error_of(dir / "d.vtu", "pressure").find("outside the appended data"),
+            std::string::npos);
+}
+
+TEST(VtuReader, SingleByteCorruptionIsReadOrRefusedNeverACrash) {
+  // Each byte in turn replaced by 0xff, then by '<' (in place, then restored): the reader
+  // either reads a field of the declared size or throws plisse::Error (anything else fails or
+  // crashes the test).
+  ScratchDir dir;
+  Sample().write(dir / "a.vtu");
+  const std::string good = contents(dir / "a.vtu");
+  std::fstream file(dir / "a.vtu", std::ios::in | std::ios::out | std::ios::binary);
+  const auto put = [&](std::size_t at, char c) {
+    file.seekp(static_cast<std::streamoff>(at));
+    file.put(c);
+    file.flush();
+  };
+  int refused = 0;
+  for (const char replacement : {'\xff', '<'}) {
+    for (std::size_t i = 0; i < good.size(); ++i) {
+      if (good[i] == replacement) continue;
+      put(i, replacement);
+      try {
+        const VtuField f = read_vtu_point_field(dir / "a.vtu", "mode_1");
+        EXPECT_EQ(f.values.size(), 15u) << "byte " << i;
+      } catch (const Error&) {
+        ++refused;
+      }
+      put(i, good[i]);
+    }
+  }
+  ASSERT_TRUE(file.good());
+  EXPECT_GT(refused, 500);
+  EXPECT_EQ(contents(dir / "a.vtu"), good);  // every byte restored
+}
+
+}  // namespace
+}  // namespace plisse
