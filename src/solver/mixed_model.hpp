@@ -5,7 +5,9 @@
 #include <petscmat.h>
 #include <petscvec.h>
 
+#include <array>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "element/mini.hpp"
@@ -67,10 +69,20 @@ class MixedModel {
   /// Residual over the free dofs at the current state into `f` (overwritten). Also stores the
   /// full residual, whose constrained entries are the reaction forces [N].
   AssemblyStatus assemble_residual(Vec f);
-  /// Consistent tangent over the free dofs into `K` (created by create_matrix; overwritten).
+  /// Consistent tangent over the free dofs into `K` (overwritten). A matrix from create_matrix
+  /// is filled directly in its value array through positions precomputed per element; any other
+  /// matrix through MatSetValues (same values, slower).
   AssemblyStatus assemble_tangent(Mat K);
-  /// An AIJ matrix with the exact sparsity of the tangent, flagged symmetric.
+  /// A sequential AIJ matrix with the exact sparsity of the tangent (element couplings and those
+  /// the terms declare), entries zero, flagged symmetric when the tangent is. The caller owns it.
   Mat create_matrix() const;
+
+  /// Threads of the element loops; 0 (the default) takes OpenMP's count (OMP_NUM_THREADS, else
+  /// one per core). Results do not depend on it: elements are evaluated in parallel, a chunk at a
+  /// time, and their contributions added in element order, bit for bit as a serial loop does.
+  void set_assembly_threads(int n) { threads_ = n; }
+  /// The thread count the element loops use.
+  int assembly_threads() const;
 
   /// Lets every term update its multipliers at the current state; true when any term needs
   /// another solve of the step (ModelTerm::update_multipliers).
@@ -104,6 +116,21 @@ class MixedModel {
   void element_dofs(int e, std::array<int, mini::kDof>& full) const;
   mini::ElemVec gather(const std::array<int, mini::kDof>& full) const;
 
+  /// Element results of one chunk of the element loop.
+  struct ElementResult {
+    mini::ElemVec r;
+    mini::ElemMat K;
+    mini::ElementStatus status;
+  };
+  /// Evaluates every element (residual, and tangent when `with_tangent`) in parallel, a chunk at
+  /// a time, and calls scatter(e, result) in element order on the calling thread.
+  template <class Scatter>
+  AssemblyStatus for_each_element(bool with_tangent, Scatter&& scatter);
+  /// Builds the node graph and the per-element positions of the tangent layout (constructor).
+  void build_tangent_layout();
+  /// True when K is a sequential AIJ matrix with this model's layout (made by create_matrix).
+  bool has_tangent_layout(Mat K) const;
+
   const Mesh& mesh_;
   AnyMaterial material_;
   double inverse_bulk_modulus_;
@@ -117,6 +144,21 @@ class MixedModel {
   std::vector<double> external_force_;
   Ramp external_ramp_;
   double time_ = 0.0;
+
+  // Tangent layout (built once). Free equations of a node are consecutive, so the rows of node a
+  // hold, for each neighbour node b (sorted), the free equations of b as one run of columns, then
+  // the columns of the terms' global unknowns. Entry (row eq_i of node a, column eq_j of node b)
+  // is at row_start_[eq_i] + element_shift_[e][4 a + b] + eq_j for the element's local a, b.
+  std::vector<int> node_start_, node_neighbours_;  ///< node graph, CSR; each node lists itself
+  std::vector<int> node_free_, node_first_equation_;  ///< free components, first free equation
+  std::vector<std::pair<int, int>> extra_entries_;  ///< (row, column) equations beyond the nodes
+  std::vector<PetscInt> row_start_;                 ///< n_free + 1 row starts
+  std::vector<std::array<int, 16>> element_shift_;  ///< per element and local node pair (a, b)
+
+  int threads_ = 0;
+  std::vector<ElementResult> chunk_;   ///< element loop buffer, kept between assemblies
+  std::vector<double> term_residual_;  ///< residual part discarded by assemble_tangent
+  std::vector<PetscInt> equations_;    ///< term-sink scratch (MatSetValues path)
 };
 
 }  // namespace plisse
