@@ -31,7 +31,8 @@ using case_detail::join;
 
 const Range kFraction{0.0, 1.0, true, false};  // (0, 1]
 const Range kOpenUnit{0.0, 1.0, true, true};   // (0, 1)
-const Range kLatitude = Range::closed(-90.0, 90.0);
+// A ring at +-90 degrees would be a single point: latitudes are open at the poles.
+const Range kLatitude{-90.0, 90.0, true, true};
 
 const std::vector<std::pair<std::string, BoundaryType>> kBoundaryTypes{
     {"fixed", BoundaryType::fixed},
@@ -135,7 +136,8 @@ MeshSection read_mesh(const Field& field, const std::string& directory) {
     for (const MeshOption& o : k.options) all_options.push_back(o.key);
 
   if (file) {
-    m.check_keys({"file"}, "a mesh read from a file", all_options);
+    m.check_keys({"file", "thickness"}, "a mesh read from a file", all_options);
+    if (const auto t = m.find("thickness")) s.file_thickness = t->real(Range::positive());
     const std::string text = file->text();
     if (text.empty()) file->fail("the mesh file name must not be empty");
     std::filesystem::path p(text);
@@ -378,7 +380,7 @@ Probe read_probe(const Field& field, Reader& reader) {
   return p;
 }
 
-SolverSettings read_solver(const Field& field) {
+SolverSettings read_solver(const Field& field, const std::string& directory) {
   const FieldMap m = field.map();
   m.check_keys({"scheme", "end_time", "steps", "max_steps", "min_step", "max_step", "growth",
                 "cutback", "easy_iterations", "viscosity", "max_augmentations", "newton", "stability",
@@ -433,14 +435,31 @@ SolverSettings read_solver(const Field& field) {
   }
   if (const auto f = m.find("stability")) {
     const FieldMap st = f->map();
-    st.check_keys({"check", "branch_switch", "modes", "imperfection", "imperfection_kind", "seed"});
+    st.check_keys({"check", "branch_switch", "modes", "imperfection", "imperfection_kind", "seed",
+                   "imperfection_from", "imperfection_mode", "branch_amplitude"});
     StabilitySettings& ss = s.stability;
+    ss.place = f->key_place();
     ss.check = st.boolean("check", ss.check);
     ss.branch_switch = st.boolean("branch_switch", ss.branch_switch);
     ss.modes = st.integer("modes", ss.modes, Range::at_least(1));
     ss.imperfection = st.real("imperfection", ss.imperfection, Range::non_negative());
     ss.imperfection_kind = st.choice("imperfection_kind", ss.imperfection_kind, kImperfectionKinds);
     ss.seed = st.integer("seed", ss.seed, Range::at_least(0));
+    ss.imperfection_mode = st.integer("imperfection_mode", ss.imperfection_mode, Range::at_least(1));
+    ss.branch_amplitude = st.real("branch_amplitude", ss.branch_amplitude, Range::positive());
+    if (const auto from = st.find("imperfection_from")) {
+      if (ss.imperfection_kind != "mode")
+        from->fail_at_key("imperfection_from needs 'imperfection_kind: mode'");
+      const std::string text = from->text();
+      if (text.empty()) from->fail("must name a run directory or a .vtu file");
+      std::filesystem::path p(text);
+      if (p.is_relative() && !directory.empty()) p = std::filesystem::path(directory) / p;
+      ss.imperfection_from = p.string();
+    }
+    if (ss.imperfection_kind == "mode" && ss.imperfection > 0.0 && ss.imperfection_from.empty())
+      throw InputError(ss.place,
+                       "'imperfection_kind: mode' needs 'imperfection_from: DIR', the run whose "
+                       "eigenmode shapes the imperfection");
     if (ss.branch_switch && !ss.check)
       st.find("branch_switch")
           ->fail(
@@ -460,8 +479,15 @@ OutputSettings read_output(const Field& field) {
   if (const auto f = m.find("stretch_axis")) s.stretch_axis = f->choice(kAxes);
   if (const auto f = m.find("wrinkles")) {
     const FieldMap w = f->map();
-    w.check_keys({"axis", "rings_deg", "threshold"});
+    w.check_keys({"axis", "center", "rings_deg", "threshold", "min_count", "surface"});
+    s.wrinkles.place = f->key_place();
     s.wrinkles.axis = w.choice("axis", s.wrinkles.axis, kAxes);
+    if (const auto c = w.find("center")) s.wrinkles.center = c->vec3();
+    s.wrinkles.min_count = w.integer("min_count", s.wrinkles.min_count, Range::at_least(1));
+    if (const auto sf = w.find("surface")) {
+      s.wrinkles.surface = sf->text();
+      s.wrinkles.surface_place = sf->place();
+    }
     if (const auto r = w.find("rings_deg")) s.wrinkles.rings_deg = r->reals(kLatitude);
     s.wrinkles.threshold = w.real("threshold", s.wrinkles.threshold, Range::positive());
   }
@@ -678,7 +704,7 @@ Case parse_case_string(const std::string& text, const std::string& name,
   c.path = name;
   c.directory = std::filesystem::path(name).parent_path().string();
   Reader reader;
-  if (const auto f = top.find("solver")) c.solver = read_solver(*f);
+  if (const auto f = top.find("solver")) c.solver = read_solver(*f, c.directory);
   reader.end_time = c.solver.end_time;
   if (const auto f = top.find("title"); f && !f->is_null()) c.title = f->text();
   c.mesh = read_mesh(top.require("mesh"), c.directory);

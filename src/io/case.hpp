@@ -45,6 +45,17 @@ struct MeshSection {
   InputPlace file_place;                       ///< where the `file:` value is (file meshes)
   /// Generated meshes: where each given option is, by key ("layers"); "generate" for the kind.
   std::map<std::string, InputPlace> option_places;
+  /// File meshes: `thickness:` [mm], the wall thickness of a shell read from a file (optional).
+  std::optional<double> file_thickness;
+
+  /// The wall thickness [mm] of a shell (generated spherical-shell, airbag, sheet, or a file mesh
+  /// with `thickness:`): the length imperfections, branch switching and the wrinkle threshold are
+  /// relative to. Empty for a cube or a file mesh without `thickness:`.
+  std::optional<double> wall_thickness() const {
+    if (file) return file_thickness;
+    if (generate && generate->kind != "cube") return generate->thickness;
+    return std::nullopt;
+  }
 };
 
 struct MaterialSection {
@@ -144,6 +155,12 @@ struct StabilitySettings {
   double imperfection = 0.0;   ///< amplitude / wall thickness, >= 0
   std::string imperfection_kind = "random";  ///< random | mode
   int seed = 1;                ///< random imperfection seed
+  /// mode: the run directory (or a .vtu file in it) whose `mode_<imperfection_mode>` point field
+  /// shapes the imperfection; resolved against the case directory.
+  std::string imperfection_from;
+  int imperfection_mode = 1;   ///< >= 1
+  double branch_amplitude = 0.1;  ///< perturbation along the critical mode / wall thickness, > 0
+  InputPlace place;            ///< where `stability:` is
 };
 
 struct SolverSettings {
@@ -166,8 +183,13 @@ struct SolverSettings {
 
 struct WrinkleSettings {
   char axis = 'y';                    ///< 'x' | 'y' | 'z'
-  std::vector<double> rings_deg;      ///< latitudes [deg] in [-90, 90]
+  Vec3d center = Vec3d::Zero();       ///< a point on the axis [mm]
+  std::vector<double> rings_deg;      ///< latitudes [deg] in (-90, 90)
   double threshold = 0.1;             ///< wrinkled when amplitude > threshold * thickness, > 0
+  int min_count = 3;                  ///< smaller full-circle counts are global shape modes, >= 1
+  std::string surface = "outer";      ///< the tagged surface the rings lie on
+  InputPlace place;                   ///< where `wrinkles:` is
+  InputPlace surface_place;
   bool enabled() const { return !rings_deg.empty(); }
 };
 

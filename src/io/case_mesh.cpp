@@ -82,6 +82,22 @@ std::pair<double, double> planarity(const Mesh& mesh, const std::vector<int>& tr
   return {deviation, kPlanarityTolerance * mean_edge};
 }
 
+/// Imperfections, branch switching and the wrinkle threshold are relative to the wall thickness: a
+/// case that uses them needs a shell mesh or a file mesh with `thickness:`.
+void check_wall_thickness(const Case& c) {
+  if (c.mesh.wall_thickness()) return;
+  const std::string why = c.mesh.file ? "give the wall thickness as 'mesh.thickness' [mm]"
+                                      : "the generated cube has no wall";
+  const StabilitySettings& st = c.solver.stability;
+  if (st.imperfection > 0.0)
+    throw InputError(st.place, "the imperfection amplitude is relative to the wall thickness: " + why);
+  if (st.branch_switch)
+    throw InputError(st.place, "the branch-switching perturbation is relative to the wall thickness: " + why);
+  if (c.output.wrinkles.enabled())
+    throw InputError(c.output.wrinkles.place,
+                     "the wrinkle threshold is relative to the wall thickness: " + why);
+}
+
 }  // namespace
 
 Mesh load_case_mesh(const Case& c) {
@@ -141,6 +157,11 @@ void check_case_against_mesh(const Case& c, const Mesh& mesh) {
   for (const Die& die : c.dies) {
     if (die.region) check_surface(c, mesh, *die.region);
     if (die.surface) check_surface(c, mesh, *die.surface);
+  }
+  check_wall_thickness(c);
+  if (c.output.wrinkles.enabled()) {
+    const WrinkleSettings& w = c.output.wrinkles;
+    check_surface(c, mesh, {w.surface, w.surface_place.line > 0 ? w.surface_place : w.place});
   }
 
   for (const BoundaryCondition& bc : c.boundary) {

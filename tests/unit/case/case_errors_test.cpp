@@ -139,7 +139,7 @@ TEST(CaseErrors, OutOfRangeValuesUseTheDeclaredRange) {
                      "solver.cutback", "must be in (0, 1) (got 1)");
   EXPECT_INPUT_ERROR(case_error(kMinimalCase + "output: {wrinkles: {rings_deg: [30, 95]}}\n"),
                      "case.yaml", 3, 37, "output.wrinkles.rings_deg[1]",
-                     "must be in [-90, 90] (got 95)");
+                     "must be in (-90, 90) (got 95)");
   EXPECT_INPUT_ERROR(
       case_error("mesh: {generate: cube}\nmaterial:\n  model: neo-hookean\n  c1: -0.5\n"),
       "case.yaml", 4, 7, "material.c1", "must be > 0 (got -0.5)");

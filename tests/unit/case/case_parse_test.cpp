@@ -124,13 +124,19 @@ TEST(CaseParse, CompleteCaseHasEveryValue) {
   EXPECT_EQ(s.stability.imperfection, 0.01);
   EXPECT_EQ(s.stability.imperfection_kind, "mode");
   EXPECT_EQ(s.stability.seed, 7);
+  EXPECT_EQ(std::filesystem::path(s.stability.imperfection_from).filename(), "buckle");
+  EXPECT_EQ(s.stability.imperfection_mode, 2);
+  EXPECT_EQ(s.stability.branch_amplitude, 0.2);
   EXPECT_EQ(s.petsc_options, "-ksp_type preonly -pc_type lu");
 
   EXPECT_EQ(c.output.every, 2);
   EXPECT_TRUE(c.output.deformed);
   EXPECT_EQ(c.output.stretch_axis, 'z');
   EXPECT_EQ(c.output.wrinkles.axis, 'z');
-  EXPECT_EQ(c.output.wrinkles.rings_deg, (std::vector<double>{0, 45, 90}));
+  EXPECT_EQ(c.output.wrinkles.rings_deg, (std::vector<double>{0, 45, 89.5}));
+  EXPECT_EQ(c.output.wrinkles.center, Vec3d(1, 1, 0));
+  EXPECT_EQ(c.output.wrinkles.min_count, 4);
+  EXPECT_EQ(c.output.wrinkles.surface, "top");
   EXPECT_EQ(c.output.wrinkles.threshold, 0.2);
 }
 
