@@ -57,6 +57,9 @@ void LoadStepper::set_stability(const StabilityOptions& options) {
 }
 
 double LoadStepper::stability_seconds() const { return inertia_ ? inertia_->seconds() : 0.0; }
+double LoadStepper::stability_assembly_seconds() const {
+  return inertia_ ? inertia_->assembly_seconds() : 0.0;
+}
 int LoadStepper::stability_checks() const { return inertia_ ? inertia_->calls() : 0; }
 
 std::string LoadStepper::solve_step(NewtonResult& newton, SteppingResult& result) {

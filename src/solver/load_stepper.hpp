@@ -98,6 +98,7 @@ class LoadStepper {
   /// Wall time of the stability checks [s] (assembly + LDL^T factorisation) and their number;
   /// eigenmode computations are not included (eigenmode_seconds).
   double stability_seconds() const;
+  double stability_assembly_seconds() const;  ///< the assembly part of stability_seconds
   int stability_checks() const;
   double eigenmode_seconds() const { return eigenmode_seconds_; }
 

@@ -14,6 +14,8 @@ int expected_negative_pivots(const MixedModel& model) {
 
 InertiaCheck::InertiaCheck(MixedModel& model) : model_(model), symmetric_(model.symmetric()) {
   K_ = model.create_matrix();
+  PLISSE_PETSC(PetscLogStageGetId("Stability check", &stage_));
+  if (stage_ < 0) PLISSE_PETSC(PetscLogStageRegister("Stability check", &stage_));
   PLISSE_PETSC(PCCreate(PETSC_COMM_SELF, &pc_));
   PLISSE_PETSC(PCSetOptionsPrefix(pc_, "stability_"));
   PLISSE_PETSC(PCSetType(pc_, PCCHOLESKY));
@@ -52,10 +54,16 @@ Mat InertiaCheck::symmetric_operator() {
 
 Inertia InertiaCheck::compute() {
   const auto t0 = std::chrono::steady_clock::now();
+  // Pops the log stage on every way out.
+  struct StageGuard {
+    explicit StageGuard(PetscLogStage stage) { PLISSE_PETSC(PetscLogStagePush(stage)); }
+    ~StageGuard() { PetscLogStagePop(); }
+  } stage_guard(stage_);
   const AssemblyStatus status = model_.assemble_tangent(K_);
   FE_CHECK(status.ok, "stability check: the tangent cannot be assembled at the converged state "
                       "(element " << status.worst_element << ", min J " << status.min_J << ")");
   Mat A = symmetric_operator();
+  assembly_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   PLISSE_PETSC(PCSetOperators(pc_, A, A));
   Mat F = nullptr;
   if (!configured_) {

@@ -26,7 +26,9 @@ int expected_negative_pivots(const MixedModel& model);
 /// (PCCHOLESKY with MATSOLVERMUMPS, sym = 2). The matrix, the factor and MUMPS's symbolic analysis
 /// are kept between calls: the nonzero pattern does not change, so each call costs one assembly
 /// and one numeric factorisation. PETSc options with the prefix `stability_` reach this factor
-/// (e.g. -stability_mat_mumps_cntl_3 for the null-pivot threshold).
+/// (e.g. -stability_mat_mumps_cntl_3 for the null-pivot threshold). The factorisations are logged
+/// in their own PETSc log stage "Stability check", so that NewtonSolver::times() (main stage)
+/// counts Newton's alone.
 class InertiaCheck {
  public:
   /// Borrows `model` (must outlive the check). Requires a live PetscSession.
@@ -43,6 +45,8 @@ class InertiaCheck {
   bool uses_symmetric_part() const { return !symmetric_; }
   /// Wall time spent in compute() [s] (assembly + factorisation) and the number of calls.
   double seconds() const { return seconds_; }
+  /// The part of seconds() spent assembling the tangent (and forming 0.5 (K + K^T)) [s].
+  double assembly_seconds() const { return assembly_seconds_; }
   int calls() const { return calls_; }
 
  private:
@@ -56,8 +60,9 @@ class InertiaCheck {
   Mat S_ = nullptr;   ///< 0.5 (K + K^T) (unsymmetric models only)
   PetscObjectState pattern_ = -1;  ///< nonzero state of K_ when S_ was built
   PC pc_ = nullptr;
+  PetscLogStage stage_ = -1;  ///< PETSc log stage of the checks, apart from Newton's main stage
   bool configured_ = false;
-  double seconds_ = 0.0;
+  double seconds_ = 0.0, assembly_seconds_ = 0.0;
   int calls_ = 0;
 };
 

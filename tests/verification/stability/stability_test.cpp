@@ -250,6 +250,18 @@ TEST(StabilityCheck, ClampedStripGainsOneNegativePivotAtTheEulerStrain) {
   print_log(run);
   ASSERT_TRUE(run.result.completed) << run.result.failure;
   const double euler = std::pow(std::numbers::pi * spec.thickness / spec.length, 2) / 3.0;
+  // The cost of the check (printed for the documentation, not asserted: the machine is shared).
+  const PhaseTimes& nt = run.newton_times;
+  std::printf("cost: %d checks %.3f s (%.1f ms each, of which assembly %.1f ms); Newton %d "
+              "numeric factorisations %.3f s (%.1f ms each), assembly %.3f s, linear solve %.3f "
+              "s; eigenmodes %.3f s\n",
+              run.stability_checks, run.stability_seconds,
+              1e3 * run.stability_seconds / std::max(1, run.stability_checks),
+              1e3 * run.stability_assembly_seconds / std::max(1, run.stability_checks),
+              nt.factorisations,
+              nt.factorisation, 1e3 * nt.factorisation / std::max(1, nt.factorisations),
+              nt.assembly, nt.linear_solve, run.eigenmode_seconds);
+  EXPECT_EQ(run.stability_checks, 40);
   const auto strain = [&](const StepInfo& s) { return spec.shortening * s.time / spec.length; };
   int first = -1, second = -1;
   for (size_t k = 0; k < run.steps.size(); ++k) {
