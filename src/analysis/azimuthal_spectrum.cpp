@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <numeric>
+#include <vector>
 
 #include "core/error.hpp"
 
@@ -13,13 +14,31 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-/// The phase of harmonic j at grid point k: j t_k on a full circle, j pi t_k / sector on a sector.
-/// Both are j k times a fixed step, reduced modulo the period so that large j k stay exact.
-double phase(const AzimuthGrid& grid, int j, int k) {
-  const long long jk = static_cast<long long>(j) * k;
-  if (grid.full()) return kTwoPi * static_cast<double>(jk % grid.n_intervals) / grid.n_intervals;
-  return std::numbers::pi * static_cast<double>(jk % (2LL * grid.n_intervals)) / grid.n_intervals;
-}
+/// cos and sin of the phases of harmonic j at grid point k: j t_k on a full circle, j pi t_k /
+/// sector on a sector. Both are (j k mod P) times the step 2 pi / P with the period P = N (full)
+/// or 2N (sector), so one table of P values serves every (j, k), exactly for large j k.
+class PhaseTable {
+ public:
+  explicit PhaseTable(const AzimuthGrid& grid)
+      : period_(grid.full() ? grid.n_intervals : 2 * grid.n_intervals),
+        cos_(static_cast<std::size_t>(period_)),
+        sin_(static_cast<std::size_t>(period_)) {
+    for (int i = 0; i < period_; ++i) {
+      const double p = kTwoPi * i / period_;
+      cos_[static_cast<std::size_t>(i)] = std::cos(p);
+      sin_[static_cast<std::size_t>(i)] = std::sin(p);
+    }
+  }
+  std::size_t index(int j, int k) const {
+    return static_cast<std::size_t>((static_cast<long long>(j) * k) % period_);
+  }
+  double cos(std::size_t i) const { return cos_[i]; }
+  double sin(std::size_t i) const { return sin_[i]; }
+
+ private:
+  int period_;
+  std::vector<double> cos_, sin_;
+};
 
 }  // namespace
 
@@ -93,14 +112,16 @@ AzimuthalSpectrum compute_spectrum(const AzimuthGrid& grid, const std::vector<do
   sp.count_step = grid.count_step;
   sp.a.assign(static_cast<std::size_t>(j_max) + 1, 0.0);
   sp.b.assign(static_cast<std::size_t>(j_max) + 1, 0.0);
+  const PhaseTable table(grid);
   for (int j = 0; j <= j_max; ++j) {
     double a = 0.0, b = 0.0;
     for (int k = 0; k < grid.n_points(); ++k) {
       const double wg = grid.weight(k) * g[static_cast<std::size_t>(k)];
-      const double p = phase(grid, j, k);
-      a += wg * std::cos(p);
-      if (grid.full()) b += wg * std::sin(p);
+      const std::size_t p = table.index(j, k);
+      a += wg * table.cos(p);
+      b += wg * table.sin(p);
     }
+    if (!grid.full()) b = 0.0;  // the even (cosine) series of a sector has no sine terms
     const double factor = j == 0 ? 1.0 : 2.0;
     sp.a[static_cast<std::size_t>(j)] = factor * a;
     sp.b[static_cast<std::size_t>(j)] = factor * b;
@@ -111,12 +132,13 @@ AzimuthalSpectrum compute_spectrum(const AzimuthGrid& grid, const std::vector<do
 void remove_harmonics(const AzimuthGrid& grid, const AzimuthalSpectrum& spectrum, int j_end,
                       std::vector<double>& g) {
   const int j_last = std::min(j_end - 1, spectrum.j_max());
+  const PhaseTable table(grid);
   for (int k = 0; k < grid.n_points(); ++k) {
     double v = 0.0;
     for (int j = 0; j <= j_last; ++j) {
-      const double p = phase(grid, j, k);
+      const std::size_t p = table.index(j, k);
       const auto i = static_cast<std::size_t>(j);
-      v += spectrum.a[i] * std::cos(p) + spectrum.b[i] * std::sin(p);
+      v += spectrum.a[i] * table.cos(p) + spectrum.b[i] * table.sin(p);
     }
     g[static_cast<std::size_t>(k)] -= v;
   }
