@@ -4,7 +4,8 @@
 /// (docs/theory/wrinkles.md, section 6).
 ///
 /// Typical call after a converged step (per-element mean Cauchy stress sigma and J):
-///   const auto columns = assign_columns(mesh.nodes, mesh.tets, tagged_triangles(mesh, "outer"));
+///   const auto outer = tagged_triangles(mesh, "outer");                // once per mesh
+///   const auto columns = assign_columns(mesh.nodes, mesh.tets, outer);  // once per mesh
 ///   const TensionField tf = compute_tension_field(mesh.nodes, mesh.tets, outer, columns, u,
 ///                                                 sigma, J);
 ///   // tf.element_state -> VTU cell field "wrinkle_state" (0 taut, 1 wrinkled, 2 slack)
