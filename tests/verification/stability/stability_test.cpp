@@ -38,6 +38,27 @@ Eigen::MatrixXd dense_tangent(MixedModel& model) {
   return D;
 }
 
+/// Settings of the verification runs: fixed steps (no growth), tight Newton tolerances.
+SolverSettings fixed_steps(int steps) {
+  SolverSettings settings;
+  settings.steps = steps;
+  settings.growth = 1.0;
+  settings.newton.rtol = 1e-10;
+  settings.newton.atol = 1e-12;
+  return settings;
+}
+
+StabilityOptions check_only() {
+  StabilityOptions o;
+  o.check = true;
+  o.modes = 2;
+  return o;
+}
+
+void print_log(const test::SteppedRun& run) {
+  for (const auto& line : run.log) std::printf("  log: %s\n", line.c_str());
+}
+
 // The MUMPS count is the eigenvalue count of the symmetric tangent (Sylvester: LDL^T is a
 // congruence), checked against a dense symmetric eigensolver on a small strip pushed far beyond
 // its first critical strain, where several displacement modes are negative. Exact integers; the
@@ -89,25 +110,92 @@ TEST(InertiaCheck, CountsTheNegativeEigenvaluesOfTheTangentExactly) {
   }
 }
 
-/// Settings of the verification runs: fixed steps (no growth), tight Newton tolerances.
-SolverSettings fixed_steps(int steps) {
-  SolverSettings settings;
-  settings.steps = steps;
-  settings.growth = 1.0;
-  settings.newton.rtol = 1e-10;
-  settings.newton.atol = 1e-12;
-  return settings;
+// A follower pressure on the open top face of a cube makes the tangent unsymmetric: the check
+// factorises the symmetric part 0.5 (K + K^T) (stability.md, S8), whose negative eigenvalues a
+// dense eigensolver counts. The state is compressed hard enough (load 0.6 c1 on the top, a state
+// shortened by 20 %, a hydrostatic pressure of 4 c1, noise) to take the symmetric part past
+// stability.
+TEST(InertiaCheck, UsesTheSymmetricPartOfAnUnsymmetricTangent) {
+  test::ModelOnMesh m = test::model_from_case(R"(
+mesh: {generate: cube, edge: 1.0, divisions: 3}
+material: {model: neo-hookean, c1: 0.5}
+boundary:
+  - {type: fixed, surface: bottom}
+loads:
+  - {type: pressure, name: push, surface: top, value: 0.3}
+)",
+                                              "cube-pressure.yaml");
+  MixedModel& model = *m.model;
+  ASSERT_FALSE(model.symmetric());
+  model.set_time(1.0);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> noise(-1e-2, 1e-2);
+  auto& x = model.state();
+  for (int v = 0; v < m.mesh->n_nodes(); ++v) {
+    const Vec3d& X = m.mesh->nodes[v];
+    x[DofMap::dof(v, 0)] = 0.1 * X[0] * X[2] + noise(random);
+    x[DofMap::dof(v, 1)] = 0.1 * X[1] * X[2] + noise(random);
+    x[DofMap::dof(v, 2)] = -0.2 * X[2] + noise(random);
+    x[DofMap::dof(v, 3)] = 2.0 + noise(random);  // hydrostatic compression 4 c1
+  }
+  model.set_time(1.0);  // constrained components back to their values
+  const Eigen::MatrixXd K = dense_tangent(model);
+  const double asymmetry = (K - K.transpose()).cwiseAbs().maxCoeff();
+  EXPECT_GT(asymmetry, 1e-6 * K.cwiseAbs().maxCoeff());  // really unsymmetric
+  const Eigen::MatrixXd S = 0.5 * (K + K.transpose());
+  const Eigen::VectorXd lambda = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(S).eigenvalues();
+  ASSERT_GT(lambda.cwiseAbs().minCoeff(), 1e-9 * lambda.cwiseAbs().maxCoeff());
+  const int dense_negative = static_cast<int>((lambda.array() < 0.0).count());
+  InertiaCheck check(model);
+  EXPECT_TRUE(check.uses_symmetric_part());
+  const Inertia first = check.compute();
+  const Inertia again = check.compute();  // reused pattern and symbolic factorisation
+  std::printf("unsymmetric tangent: symmetric part has %d negative eigenvalues (%d pressures); "
+              "MUMPS %d, %d zero\n",
+              dense_negative, model.dofs().n_free_pressure(), first.negative, first.zero);
+  EXPECT_EQ(first.negative, dense_negative);
+  EXPECT_EQ(first.zero, 0);
+  EXPECT_EQ(again.negative, first.negative);
+  EXPECT_EQ(again.zero, first.zero);
+  EXPECT_GT(first.negative, model.dofs().n_free_pressure());  // past stability
 }
 
-StabilityOptions check_only() {
+// The options are validated before a run.
+TEST(LoadStepperStability, RefusesInconsistentOptions) {
+  test::StripSpec spec;
+  spec.length = 4.0;
+  spec.width = 1.0;
+  test::ModelOnMesh m = test::clamped_strip(spec);
+  LoadStepper stepper(*m.model, SolverSettings{});
   StabilityOptions o;
+  o.branch_switch = true;
+  o.perturbation_mm = 0.01;
+  EXPECT_THROW(stepper.set_stability(o), Error);  // branch switching without the check
   o.check = true;
-  o.modes = 2;
-  return o;
+  o.perturbation_mm = 0.0;
+  EXPECT_THROW(stepper.set_stability(o), Error);  // no amplitude
+  o.perturbation_mm = 0.01;
+  o.modes = 0;
+  EXPECT_THROW(stepper.set_stability(o), Error);
+  o.modes = 1;
+  EXPECT_NO_THROW(stepper.set_stability(o));
 }
 
-void print_log(const test::SteppedRun& run) {
-  for (const auto& line : run.log) std::printf("  log: %s\n", line.c_str());
+// Without the check the steps report "not checked".
+TEST(LoadStepperStability, StepsAreNotCheckedByDefault) {
+  test::StripSpec spec;
+  spec.length = 4.0;
+  spec.width = 1.0;
+  spec.shortening = 0.01;
+  test::ModelOnMesh m = test::clamped_strip(spec);
+  const test::SteppedRun run = test::run_steps(*m.model, fixed_steps(2), StabilityOptions{});
+  ASSERT_EQ(run.steps.size(), 2u);
+  for (const StepInfo& s : run.steps) {
+    EXPECT_EQ(s.negative_pivots, -1);
+    EXPECT_TRUE(s.stable);
+    EXPECT_FALSE(s.new_instability);
+  }
+  EXPECT_EQ(run.stability_checks, 0);
 }
 
 /// Every step checked, stable, with exactly `expected` negative pivots and no zero pivot.
