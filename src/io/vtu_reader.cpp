@@ -32,8 +32,8 @@ struct ArrayDecl {
   std::string name;
   std::string type;
   int n_components = 1;
-  std::uint64_t offset = 0;    ///< from the first byte after '_'
-  std::uint64_t n_bytes = 0;   ///< the block's UInt64 byte count (filled after the header)
+  std::uint64_t offset = 0;   ///< from the first byte after '_'
+  std::uint64_t n_bytes = 0;  ///< the block's UInt64 byte count (filled after the header)
 };
 
 struct Tag {
@@ -70,7 +70,8 @@ class VtuFile {
     in_.clear();
     in_.seekg(static_cast<std::streamoff>(pos));
     in_.read(static_cast<char*>(out), static_cast<std::streamsize>(n));
-    if (static_cast<std::uint64_t>(in_.gcount()) != n) fail("read error (file changed while read?)");
+    if (static_cast<std::uint64_t>(in_.gcount()) != n)
+      fail("read error (file changed while read?)");
   }
 
   std::string read_string(std::uint64_t pos, std::uint64_t n) {
@@ -139,8 +140,7 @@ Tag parse_tag(const VtuFile& file, std::string_view text) {
     const std::string key(text.substr(key_start, i - key_start));
     while (i < text.size() && is_space(text[i])) ++i;
     if (key.empty() || i == text.size() || text[i] != '=')
-      file.fail("malformed XML header: attribute '" + key + "' of <" + tag.name +
-                "> has no value");
+      file.fail("malformed XML header: attribute '" + key + "' of <" + tag.name + "> has no value");
     ++i;
     while (i < text.size() && is_space(text[i])) ++i;
     if (i == text.size() || (text[i] != '"' && text[i] != '\''))
@@ -174,7 +174,8 @@ std::string require_attribute(const VtuFile& file, const Tag& tag, const std::st
 std::uint64_t require_unsigned(const VtuFile& file, const Tag& tag, const std::string& key) {
   const std::string text = require_attribute(file, tag, key);
   const auto value = parse_unsigned(text);
-  if (!value) file.fail("<" + tag.name + "> " + key + "=\"" + text + "\" is not an unsigned integer");
+  if (!value)
+    file.fail("<" + tag.name + "> " + key + "=\"" + text + "\" is not an unsigned integer");
   return *value;
 }
 
@@ -212,20 +213,20 @@ ParsedVtu parse(VtuFile& file) {
       file.fail("not a plisse VTU file: no <AppendedData> block (ASCII, base64 or truncated?)");
     if (buffer.size() >= kMaxHeaderBytes)
       file.fail("not a plisse VTU file: no <AppendedData> within the first 16 MiB");
-    const std::uint64_t n =
-        std::min<std::uint64_t>(kHeaderChunk, file.size() - buffer.size());
-    const std::size_t search_from = buffer.size() >= kAppended.size() ? buffer.size() - kAppended.size() : 0;
+    const std::uint64_t n = std::min<std::uint64_t>(kHeaderChunk, file.size() - buffer.size());
+    const std::size_t search_from =
+        buffer.size() >= kAppended.size() ? buffer.size() - kAppended.size() : 0;
     buffer += file.read_string(buffer.size(), n);
     appended = buffer.find(kAppended, search_from);
   }
   // The AppendedData tag itself and the '_' that starts the data: read a little past it.
   if (buffer.size() < appended + 256 && buffer.size() < file.size())
-    buffer += file.read_string(buffer.size(),
-                               std::min<std::uint64_t>(256, file.size() - buffer.size()));
+    buffer +=
+        file.read_string(buffer.size(), std::min<std::uint64_t>(256, file.size() - buffer.size()));
   const std::size_t appended_close = buffer.find('>', appended);
   if (appended_close == std::string::npos) file.fail("truncated in the <AppendedData> tag");
-  const Tag appended_tag = parse_tag(
-      file, std::string_view(buffer).substr(appended + 1, appended_close - appended - 1));
+  const Tag appended_tag =
+      parse_tag(file, std::string_view(buffer).substr(appended + 1, appended_close - appended - 1));
   const std::string* encoding = attribute(appended_tag, "encoding");
   if (encoding == nullptr || *encoding != "raw")
     file.fail("AppendedData encoding is '" + (encoding ? *encoding : std::string()) +
@@ -261,7 +262,8 @@ ParsedVtu parse(VtuFile& file) {
         section = Section::none;
       } else {
         if (section != Section::none)
-          file.fail("malformed XML header: <" + tag.name + "> inside <" + section_name(section) + ">");
+          file.fail("malformed XML header: <" + tag.name + "> inside <" + section_name(section) +
+                    ">");
         if (n_pieces != 1) file.fail("<" + tag.name + "> outside a <Piece>");
         if (inside.back() != '/') section = s;  // <PointData/> is empty
       }
@@ -284,13 +286,15 @@ ParsedVtu parse(VtuFile& file) {
       out.summary.n_points = require_unsigned(file, tag, "NumberOfPoints");
       out.summary.n_cells = require_unsigned(file, tag, "NumberOfCells");
     } else if (tag.name == "DataArray") {
-      if (section == Section::none) file.fail("<DataArray> outside PointData, CellData, Points or Cells");
+      if (section == Section::none)
+        file.fail("<DataArray> outside PointData, CellData, Points or Cells");
       ArrayDecl a;
       a.section = section;
       a.name = require_attribute(file, tag, "Name");
       a.type = require_attribute(file, tag, "type");
       if (require_attribute(file, tag, "format") != "appended")
-        file.fail("DataArray '" + a.name + "' is not in the appended block (format is not "
+        file.fail("DataArray '" + a.name +
+                  "' is not in the appended block (format is not "
                   "'appended')");
       a.offset = require_unsigned(file, tag, "offset");
       if (attribute(tag, "NumberOfComponents") != nullptr) {

@@ -47,8 +47,8 @@ class PointGrid {
 
   /// Index of the point nearest to x; on equal distance the lower index. Rings of cells at
   /// Chebyshev distance r = 0, 1, 2, ... around x's cell are visited until no unvisited cell can
-  /// hold a point closer than the best found: every cell of ring r + 1 is at least r h from x (strictly
-  /// closer is required, so an equally distant lower index is never missed).
+  /// hold a point closer than the best found: every cell of ring r + 1 is at least r h from x
+  /// (strictly closer is required, so an equally distant lower index is never missed).
   int nearest(const Vec3d& x) const {
     const std::array<int, 3> c = cell(x);
     int best = -1;
@@ -58,8 +58,8 @@ class PointGrid {
       for (int i = c[0] - r; i <= c[0] + r; ++i)
         for (int j = c[1] - r; j <= c[1] + r; ++j)
           for (int k = c[2] - r; k <= c[2] + r; ++k) {
-            const bool on_ring = std::abs(i - c[0]) == r || std::abs(j - c[1]) == r ||
-                                 std::abs(k - c[2]) == r;
+            const bool on_ring =
+                std::abs(i - c[0]) == r || std::abs(j - c[1]) == r || std::abs(k - c[2]) == r;
             if (!on_ring || i < 0 || j < 0 || k < 0 || i >= dims_[0] || j >= dims_[1] ||
                 k >= dims_[2])
               continue;
@@ -97,26 +97,27 @@ class PointGrid {
   std::vector<int> items_;
 };
 
-/// `triangles` oriented outward: each is looked up among the boundary faces of the tetrahedra.
+/// `triangles` oriented outward: each is looked up among `faces`, the boundary faces of the
+/// tetrahedra (compute_boundary_faces: outward, sorted by sorted_face).
 std::vector<std::array<int, 3>> orient_outward(const Mesh& mesh,
+                                               const std::vector<BoundaryFace>& faces,
                                                std::span<const std::array<int, 3>> triangles,
                                                const std::string& what) {
-  const std::vector<BoundaryFace> faces = compute_boundary_faces(mesh);  // sorted by sorted_face
   std::vector<std::array<int, 3>> out;
   out.reserve(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     for (int n : triangles[t])
       FE_CHECK(n >= 0 && n < mesh.n_nodes(), "imperfection: " << what << " triangle " << t
-                                                               << " refers to node " << n
-                                                               << ", which does not exist");
+                                                              << " refers to node " << n
+                                                              << ", which does not exist");
     const std::array<int, 3> key = sorted_face(triangles[t]);
-    const auto it = std::lower_bound(
-        faces.begin(), faces.end(), key,
-        [](const BoundaryFace& f, const std::array<int, 3>& k) { return sorted_face(f.nodes) < k; });
+    const auto it = std::lower_bound(faces.begin(), faces.end(), key,
+                                     [](const BoundaryFace& f, const std::array<int, 3>& k) {
+                                       return sorted_face(f.nodes) < k;
+                                     });
     FE_CHECK(it != faces.end() && sorted_face(it->nodes) == key,
-             "imperfection: " << what << " triangle " << t << " (nodes " << key[0] << ", "
-                              << key[1] << ", " << key[2]
-                              << ") is not a boundary face of the tetrahedra");
+             "imperfection: " << what << " triangle " << t << " (nodes " << key[0] << ", " << key[1]
+                              << ", " << key[2] << ") is not a boundary face of the tetrahedra");
     out.push_back(it->nodes);
   }
   return out;
@@ -129,18 +130,19 @@ Vec3d area_normal(const Mesh& mesh, const std::array<int, 3>& t) {
 }
 
 /// Unit normal of a planar tag; plisse::Error if the tag is missing, empty or not planar.
-Vec3d plane_normal(const Mesh& mesh, const std::string& tag, double length_scale) {
+Vec3d plane_normal(const Mesh& mesh, const std::vector<BoundaryFace>& faces, const std::string& tag,
+                   double length_scale) {
   const auto it = mesh.surface_tags.find(tag);
   FE_CHECK(it != mesh.surface_tags.end() && !it->second.empty(),
            "imperfection: planar surface '" << tag << "' does not exist or is empty");
   std::vector<std::array<int, 3>> triangles;
   for (int t : it->second) {
-    FE_CHECK(t >= 0 && static_cast<std::size_t>(t) < mesh.triangles.size(),
-             "imperfection: surface '" << tag << "' lists triangle " << t
-                                       << ", which does not exist");
+    FE_CHECK(
+        t >= 0 && static_cast<std::size_t>(t) < mesh.triangles.size(),
+        "imperfection: surface '" << tag << "' lists triangle " << t << ", which does not exist");
     triangles.push_back(mesh.triangles[static_cast<std::size_t>(t)]);
   }
-  const auto oriented = orient_outward(mesh, triangles, "surface '" + tag + "'");
+  const auto oriented = orient_outward(mesh, faces, triangles, "surface '" + tag + "'");
   Vec3d n = Vec3d::Zero();
   for (const auto& t : oriented) n += area_normal(mesh, t);
   FE_CHECK(n.norm() > 0.0, "imperfection: surface '" << tag << "' has no area");
@@ -149,9 +151,9 @@ Vec3d plane_normal(const Mesh& mesh, const std::string& tag, double length_scale
   for (const auto& t : oriented)
     for (int v : t) {
       const double distance = std::abs(n.dot(mesh.nodes[static_cast<std::size_t>(v)] - x0));
-      FE_CHECK(distance <= 1e-9 * length_scale,
-               "imperfection: surface '" << tag << "' is not planar (node " << v << " is "
-                                         << distance << " mm off its plane)");
+      FE_CHECK(distance <= 1e-9 * length_scale, "imperfection: surface '"
+                                                    << tag << "' is not planar (node " << v
+                                                    << " is " << distance << " mm off its plane)");
     }
   return n;
 }
@@ -181,7 +183,8 @@ std::vector<Vec3d> compute_random_imperfection(const Mesh& mesh,
   const double diameter = (hi - lo).norm();
 
   // Outer nodes (increasing index: the order of the draws) and their area-weighted normals.
-  const auto oriented = orient_outward(mesh, outer_triangles, "outer surface");
+  const std::vector<BoundaryFace> faces = compute_boundary_faces(mesh);
+  const auto oriented = orient_outward(mesh, faces, outer_triangles, "outer surface");
   std::vector<Vec3d> normal_of_node(n_nodes, Vec3d::Zero());
   for (const auto& t : oriented) {
     const Vec3d n = area_normal(mesh, t);  // |n| = 2 area: the weights of (I1)
@@ -210,18 +213,20 @@ std::vector<Vec3d> compute_random_imperfection(const Mesh& mesh,
 
   // Nodes on a symmetry plane stay in it (Π_j of I1).
   for (const std::string& tag : planar_tags) {
-    const Vec3d n = plane_normal(mesh, tag, diameter);
+    const Vec3d n = plane_normal(mesh, faces, tag, diameter);
     std::vector<char> on_plane(n_nodes, 0);
     for (int t : mesh.surface_tags.at(tag))
-      for (int v : mesh.triangles[static_cast<std::size_t>(t)]) on_plane[static_cast<std::size_t>(v)] = 1;
+      for (int v : mesh.triangles[static_cast<std::size_t>(t)])
+        on_plane[static_cast<std::size_t>(v)] = 1;
     for (std::size_t j = 0; j < n_nodes; ++j)
       if (on_plane[j] != 0) d[j] -= n.dot(d[j]) * n;
   }
 
   double largest = 0.0;
   for (const Vec3d& v : d) largest = std::max(largest, v.norm());
-  FE_CHECK(largest > 0.0, "imperfection: the random field vanishes (every outer node is held "
-                          "in a symmetry plane along its normal)");
+  FE_CHECK(largest > 0.0,
+           "imperfection: the random field vanishes (every outer node is held "
+           "in a symmetry plane along its normal)");
   for (Vec3d& v : d) v *= amplitude / largest;
   return d;
 }

@@ -41,9 +41,10 @@ double seeded_unit_value(std::uint64_t engine_output);
 /// The nearest outer node is found on a uniform grid (O(n) expected); ties go to the lower index,
 /// so the result does not depend on the search order. Throws plisse::Error on invalid input or
 /// when the field vanishes (e.g. every outer node is on a plane of `planar_tags`).
-std::vector<Vec3d> compute_random_imperfection(
-    const Mesh& mesh, std::span<const std::array<int, 3>> outer_triangles, double amplitude,
-    std::uint64_t seed, const std::vector<std::string>& planar_tags = {});
+std::vector<Vec3d> compute_random_imperfection(const Mesh& mesh,
+                                               std::span<const std::array<int, 3>> outer_triangles,
+                                               double amplitude, std::uint64_t seed,
+                                               const std::vector<std::string>& planar_tags = {});
 
 /// The mode imperfection field (I2) [mm]: `shape` (one vector per node, any unit, e.g. the
 /// `mode_1` point field of an earlier run) scaled so its largest nodal norm is `amplitude` [mm].

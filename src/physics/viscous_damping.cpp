@@ -21,9 +21,9 @@ double mean_edge_length(const Mesh& mesh) {
 
 ViscousDamping::ViscousDamping(const Mesh& mesh, double viscosity, double length)
     : coefficient_(mesh.nodes.size(), 0.0), u_accepted_(3 * mesh.nodes.size(), 0.0) {
-  FE_CHECK(std::isfinite(viscosity) && viscosity > 0.0,
-           "viscous stabilisation: viscosity must be finite and > 0 (got " << viscosity
-                                                                           << " MPa s)");
+  FE_CHECK(
+      std::isfinite(viscosity) && viscosity > 0.0,
+      "viscous stabilisation: viscosity must be finite and > 0 (got " << viscosity << " MPa s)");
   FE_CHECK(std::isfinite(length) && length > 0.0,
            "viscous stabilisation: length must be finite and > 0 (got " << length << " mm)");
   const double scale = viscosity / (length * length);
@@ -93,10 +93,9 @@ std::vector<double> ViscousDamping::save_state() const {
 
 void ViscousDamping::load_state(std::span<const double> state) {
   FE_CHECK(state.size() == 2 + u_accepted_.size(),
-           "viscous stabilisation: checkpoint state has " << state.size() << " values, expected "
-                                                          << 2 + u_accepted_.size() << " (t, D, "
-                                                          << u_accepted_.size() / 3
-                                                          << " nodal displacements)");
+           "viscous stabilisation: checkpoint state has "
+               << state.size() << " values, expected " << 2 + u_accepted_.size() << " (t, D, "
+               << u_accepted_.size() / 3 << " nodal displacements)");
   for (double v : state)
     FE_CHECK(std::isfinite(v), "viscous stabilisation: checkpoint state is not finite");
   t_accepted_ = state[0];

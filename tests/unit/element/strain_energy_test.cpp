@@ -22,8 +22,8 @@ using mini::ElemMat;
 using mini::ElemVec;
 using mini::TetGeometry;
 
-/// A registered model with parameters and its energy written out here in the invariants, independent
-/// of the model code (the formulas of each model's header).
+/// A registered model with parameters and its energy written out here in the invariants,
+/// independent of the model code (the formulas of each model's header).
 struct ModelCase {
   MaterialValues values;
   std::function<double(double I1bar, double I2bar)> W;
@@ -50,8 +50,7 @@ const std::map<std::string, ModelCase>& model_cases() {
       {"arruda-boyce",
        {{{"mu", 0.35}, {"lambda_m", 3.0}},
         [](double I1, double) {
-          const double alpha[] = {0.5, 1.0 / 20.0, 11.0 / 1050.0, 19.0 / 7000.0,
-                                  519.0 / 673750.0};
+          const double alpha[] = {0.5, 1.0 / 20.0, 11.0 / 1050.0, 19.0 / 7000.0, 519.0 / 673750.0};
           double W = 0.0;
           for (int i = 1; i <= 5; ++i)
             W += 0.35 * alpha[i - 1] / std::pow(3.0, 2 * i - 2) *
@@ -85,9 +84,9 @@ TEST(StrainEnergy, HomogeneousDeformationGivesWTimesVolumeForEveryModel) {
     const AnyMaterial material = make_material(name, model.values);
     // Incompressible uniaxial stretch/compression, then a volume-changing stretch (the energy uses
     // the isochoric invariants, so J != 1 must not enter W).
-    for (const Vec3d& lambda : {Vec3d(1.3, 1.0 / std::sqrt(1.3), 1.0 / std::sqrt(1.3)),
-                               Vec3d(0.8, 1.0 / std::sqrt(0.8), 1.0 / std::sqrt(0.8)),
-                               Vec3d(1.2, 0.9, 1.1)}) {
+    for (const Vec3d& lambda :
+         {Vec3d(1.3, 1.0 / std::sqrt(1.3), 1.0 / std::sqrt(1.3)),
+          Vec3d(0.8, 1.0 / std::sqrt(0.8), 1.0 / std::sqrt(0.8)), Vec3d(1.2, 0.9, 1.1)}) {
       const Mat3d F = Q * lambda.asDiagonal();
       ElemVec x = test::homogeneous_state(kX, F, Vec3d(0.1, -0.2, 0.3));
       const double p0 = 0.05;  // [MPa], same at every node
@@ -115,7 +114,8 @@ TEST(StrainEnergy, HomogeneousStateKeepsTheBubbleAtZero) {
   // The state used above is the element's own solution: the bubble solve returns b = 0, so the
   // closed form is the energy at the converged state, not just at b = 0.
   const TetGeometry g = mini::compute_tet_geometry(kX);
-  const AnyMaterial material = make_material("mooney-rivlin", model_cases().at("mooney-rivlin").values);
+  const AnyMaterial material =
+      make_material("mooney-rivlin", model_cases().at("mooney-rivlin").values);
   const ElemVec x = test::homogeneous_state(kX, Vec3d(1.3, 0.9, 0.85).asDiagonal());
   BubbleVec b = BubbleVec::Zero();
   ElemVec r;
@@ -128,8 +128,8 @@ TEST(StrainEnergy, HomogeneousStateKeepsTheBubbleAtZero) {
 TEST(StrainEnergy, ZeroInTheReferenceStateForEveryModel) {
   const TetGeometry g = mini::compute_tet_geometry(kX);
   for (const auto& [name, model] : model_cases()) {
-    const auto e = mini::compute_strain_energy(g, ElemVec::Zero(), make_material(name, model.values),
-                                               0.02, BubbleVec::Zero());
+    const auto e = mini::compute_strain_energy(
+        g, ElemVec::Zero(), make_material(name, model.values), 0.02, BubbleVec::Zero());
     EXPECT_NEAR(e.total(), 0.0, 1e-15) << name;
   }
 }

@@ -36,7 +36,8 @@ const Mesh& quarter_shell() {
 
 std::vector<std::array<int, 3>> tagged(const Mesh& mesh, const std::string& tag) {
   std::vector<std::array<int, 3>> out;
-  for (int t : mesh.surface_tags.at(tag)) out.push_back(mesh.triangles[static_cast<std::size_t>(t)]);
+  for (int t : mesh.surface_tags.at(tag))
+    out.push_back(mesh.triangles[static_cast<std::size_t>(t)]);
   return out;
 }
 
@@ -80,7 +81,8 @@ TEST(RandomImperfection, OtherSeedGivesAnotherField) {
   const auto a = random_field(0.05, 42);
   const auto b = random_field(0.05, 43);
   double difference = 0.0;
-  for (std::size_t j = 0; j < a.size(); ++j) difference = std::max(difference, (a[j] - b[j]).norm());
+  for (std::size_t j = 0; j < a.size(); ++j)
+    difference = std::max(difference, (a[j] - b[j]).norm());
   EXPECT_GT(difference, 0.01);  // two independent fields of amplitude 0.05 mm
 }
 

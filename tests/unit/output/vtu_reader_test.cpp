@@ -124,8 +124,7 @@ TEST(VtuReader, ForeignFormatsAreRefusedByName) {
   EXPECT_NE(variant("\"UnstructuredGrid\"", "\"PolyData\"").find("UnstructuredGrid"),
             std::string::npos);
   EXPECT_NE(variant("encoding=\"raw\"", "encoding=\"base64\"").find("raw"), std::string::npos);
-  EXPECT_NE(variant("format=\"appended\"", "format=\"ascii\"").find("appended"),
-            std::string::npos);
+  EXPECT_NE(variant("format=\"appended\"", "format=\"ascii\"").find("appended"), std::string::npos);
   EXPECT_NE(variant("type=\"Float64\" Name=\"mode_1\"", "type=\"Float32\" Name=\"mode_1\"")
                 .find("Float32"),
             std::string::npos);
@@ -160,8 +159,8 @@ TEST(VtuReader, CorruptByteCountsAndOffsetsAreErrors) {
   const std::string good = contents(dir / "a.vtu");
   const std::size_t data = data_start(good);
   // The first block's UInt64 byte count set to huge values: no allocation, an error.
-  for (const std::uint64_t bad : {std::uint64_t{8}, std::uint64_t{1} << 40, ~std::uint64_t{0},
-                                  ~std::uint64_t{0} - 7}) {
+  for (const std::uint64_t bad :
+       {std::uint64_t{8}, std::uint64_t{1} << 40, ~std::uint64_t{0}, ~std::uint64_t{0} - 7}) {
     std::string text = good;
     std::memcpy(text.data() + data, &bad, sizeof bad);
     write_bytes(dir / "c.vtu", text);
