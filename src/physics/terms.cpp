@@ -31,7 +31,8 @@ std::vector<std::unique_ptr<ModelTerm>> make_terms(const Case& c, const Mesh& me
     // else the mean edge length of the mesh.
     const bool has_wall = c.mesh.generate.has_value() && c.mesh.generate->kind != "cube";
     const double length = has_wall ? c.mesh.generate->thickness : mean_edge_length(mesh);
-    terms.push_back(std::make_unique<ViscousDamping>(mesh, c.solver.viscosity, length));
+    terms.push_back(
+        std::make_unique<ViscousDamping>(mesh, c.solver.viscosity, length, constraints));
   }
   return terms;
 }

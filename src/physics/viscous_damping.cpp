@@ -7,6 +7,14 @@
 #include "mesh/topology.hpp"
 
 namespace plisse {
+namespace {
+
+/// Full-state index of displacement component j = 3 i + k (node i, component k).
+std::size_t state_index(std::size_t j) {
+  return static_cast<std::size_t>(node_dof(static_cast<int>(j / 3), static_cast<int>(j % 3)));
+}
+
+}  // namespace
 
 double mean_edge_length(const Mesh& mesh) {
   FE_CHECK(!mesh.tets.empty(), "mean edge length: the mesh has no tetrahedra");
@@ -19,8 +27,9 @@ double mean_edge_length(const Mesh& mesh) {
   return sum / (6.0 * static_cast<double>(mesh.tets.size()));
 }
 
-ViscousDamping::ViscousDamping(const Mesh& mesh, double viscosity, double length)
-    : coefficient_(mesh.nodes.size(), 0.0), u_accepted_(3 * mesh.nodes.size(), 0.0) {
+ViscousDamping::ViscousDamping(const Mesh& mesh, double viscosity, double length,
+                               const std::vector<ConstrainedComponent>& constraints)
+    : coefficient_(3 * mesh.nodes.size(), 0.0), u_accepted_(3 * mesh.nodes.size(), 0.0) {
   FE_CHECK(
       std::isfinite(viscosity) && viscosity > 0.0,
       "viscous stabilisation: viscosity must be finite and > 0 (got " << viscosity << " MPa s)");
@@ -33,7 +42,17 @@ ViscousDamping::ViscousDamping(const Mesh& mesh, double viscosity, double length
                                              mesh.nodes[static_cast<std::size_t>(tet[2])],
                                              mesh.nodes[static_cast<std::size_t>(tet[3])]) /
                            24.0;  // V_e / 4
-    for (int v : tet) coefficient_[static_cast<std::size_t>(v)] += scale * quarter;
+    for (int v : tet)
+      for (std::size_t k = 0; k < 3; ++k)
+        coefficient_[3 * static_cast<std::size_t>(v) + k] += scale * quarter;
+  }
+  for (const ConstrainedComponent& c : constraints) {
+    FE_CHECK(c.node >= 0 && static_cast<std::size_t>(c.node) < mesh.nodes.size() &&
+                 c.component >= 0 && c.component < 3,
+             "viscous stabilisation: constraint on node " << c.node << ", component " << c.component
+                                                          << " does not exist");
+    coefficient_[3 * static_cast<std::size_t>(c.node) + static_cast<std::size_t>(c.component)] =
+        0.0;
   }
 }
 
@@ -42,32 +61,24 @@ void ViscousDamping::assemble(double t, std::span<const double> x, std::span<dou
   t_current_ = t;
   const double dt = t - t_accepted_;
   if (!(dt > 0.0)) return;
-  for (std::size_t i = 0; i < coefficient_.size(); ++i) {
-    const double c = coefficient_[i] / dt;  // (V2)
-    if (c == 0.0) continue;                 // node of no element
-    for (int k = 0; k < 3; ++k) {
-      const int dof = node_dof(static_cast<int>(i), k);
-      residual[static_cast<std::size_t>(dof)] +=
-          c * (x[static_cast<std::size_t>(dof)] - u_accepted_[3 * i + static_cast<std::size_t>(k)]);
-      if (tangent != nullptr) {
-        const std::array<int, 1> index = {dof};
-        const std::array<double, 1> value = {c};
-        tangent->add(index, index, value);
-      }
+  for (std::size_t j = 0; j < coefficient_.size(); ++j) {
+    const double c = coefficient_[j] / dt;  // (V2)
+    if (c == 0.0) continue;                 // constrained, or a node of no element
+    const std::size_t dof = state_index(j);
+    residual[dof] += c * (x[dof] - u_accepted_[j]);  // (V1)
+    if (tangent != nullptr) {
+      const std::array<int, 1> index = {static_cast<int>(dof)};
+      const std::array<double, 1> value = {c};
+      tangent->add(index, index, value);
     }
   }
 }
 
 double ViscousDamping::step_work(std::span<const double> x, double dt) const {
   double work = 0.0;
-  for (std::size_t i = 0; i < coefficient_.size(); ++i) {
-    double squared = 0.0;
-    for (int k = 0; k < 3; ++k) {
-      const double du = x[static_cast<std::size_t>(node_dof(static_cast<int>(i), k))] -
-                        u_accepted_[3 * i + static_cast<std::size_t>(k)];
-      squared += du * du;
-    }
-    work += coefficient_[i] / dt * squared;  // F_i · Δu_i = c_i |Δu_i|² / Δt
+  for (std::size_t j = 0; j < coefficient_.size(); ++j) {
+    const double du = x[state_index(j)] - u_accepted_[j];
+    work += coefficient_[j] / dt * du * du;  // F_j Δu_j = c_j Δu_j² / Δt
   }
   return work;
 }
@@ -75,10 +86,7 @@ double ViscousDamping::step_work(std::span<const double> x, double dt) const {
 void ViscousDamping::accept_step(std::span<const double> x) {
   const double dt = t_current_ - t_accepted_;
   if (dt > 0.0) dissipated_energy_ += step_work(x, dt);  // (V3)
-  for (std::size_t i = 0; i < coefficient_.size(); ++i)
-    for (int k = 0; k < 3; ++k)
-      u_accepted_[3 * i + static_cast<std::size_t>(k)] =
-          x[static_cast<std::size_t>(node_dof(static_cast<int>(i), k))];
+  for (std::size_t j = 0; j < u_accepted_.size(); ++j) u_accepted_[j] = x[state_index(j)];
   t_accepted_ = t_current_;
 }
 

@@ -8,12 +8,15 @@
 ///   D^{n+1} = D^n + Σ_i F_i · (u_i - u_i^n)   at the converged state of the step             (V3)
 /// η [MPa s] is `solver.viscosity`, ℓ [mm] a length (wall thickness), V_i [mm³] the lumped
 /// reference volume Σ_e V_e / 4 of the elements of node i, u^n and t^n the last accepted state.
-/// F = 0 when Δt <= 0. The force is not part of the physics: the user checks that the dissipated
+/// F = 0 when Δt <= 0, and on constrained components (fixed, prescribed, symmetry): their residual
+/// rows are not equations, so a force there would not act but would count in D. The force is
+/// not part of the physics: the user checks that the dissipated
 /// energy D stays small against the strain energy (history column `dissipated_energy`).
 #include <string>
 #include <vector>
 
 #include "mesh/mesh.hpp"
+#include "physics/dirichlet.hpp"
 #include "physics/model_term.hpp"
 
 namespace plisse {
@@ -24,10 +27,12 @@ double mean_edge_length(const Mesh& mesh);
 
 class ViscousDamping : public ModelTerm {
  public:
-  /// `viscosity` η [MPa s] > 0, `length` ℓ [mm] > 0 (both finite; plisse::Error otherwise).
-  /// Borrows nothing: the nodal volumes are computed here. The accepted state starts at u^n = 0,
-  /// t^n = 0, D = 0 (the reference configuration at the start of a run).
-  ViscousDamping(const Mesh& mesh, double viscosity, double length);
+  /// `viscosity` η [MPa s] > 0, `length` ℓ [mm] > 0 (both finite; plisse::Error otherwise);
+  /// `constraints`: the components that get no damping. Borrows nothing: the nodal volumes are
+  /// computed here. The accepted state starts at u^n = 0, t^n = 0, D = 0 (the reference
+  /// configuration at the start of a run).
+  ViscousDamping(const Mesh& mesh, double viscosity, double length,
+                 const std::vector<ConstrainedComponent>& constraints = {});
 
   /// Adds F_i (V1) to the displacement rows of `residual` and c_i / Δt (V2) to the diagonal of
   /// `tangent`; remembers t as the time of the step being solved.
@@ -48,15 +53,16 @@ class ViscousDamping : public ModelTerm {
   std::vector<double> history_values(double t, std::span<const double> x) const override;
 
   double dissipated_energy() const { return dissipated_energy_; }  ///< D [mJ]
-  double damping_coefficient(int node) const {  ///< c_i = η V_i / ℓ² [N s / mm]
-    return coefficient_[static_cast<std::size_t>(node)];
+  /// c_i = η V_i / ℓ² [N s / mm] of one component (0 when it is constrained).
+  double damping_coefficient(int node, int component) const {
+    return coefficient_[3 * static_cast<std::size_t>(node) + static_cast<std::size_t>(component)];
   }
 
  private:
   /// Σ_i F_i · (u_i - u_i^n) at state x and step Δt > 0 (the work of V3).
   double step_work(std::span<const double> x, double dt) const;
 
-  std::vector<double> coefficient_;  ///< c_i [N s / mm] per node
+  std::vector<double> coefficient_;  ///< c_i [N s / mm], 3 per node (0: constrained component)
   std::vector<double> u_accepted_;   ///< u^n, 3 per node [mm]
   double t_accepted_ = 0.0;          ///< t^n [s]
   double t_current_ = 0.0;           ///< t of the last assemble [s]

@@ -49,7 +49,11 @@ TEST(ViscousDamping, LumpedCoefficientsSumToViscosityTimesVolumeOverLengthSquare
   const Mesh mesh = box();
   const ViscousDamping term(mesh, kEta, kLength);
   double sum = 0.0;
-  for (int i = 0; i < mesh.n_nodes(); ++i) sum += term.damping_coefficient(i);
+  for (int i = 0; i < mesh.n_nodes(); ++i) {
+    sum += term.damping_coefficient(i, 0);
+    EXPECT_EQ(term.damping_coefficient(i, 1), term.damping_coefficient(i, 0));
+    EXPECT_EQ(term.damping_coefficient(i, 2), term.damping_coefficient(i, 0));
+  }
   EXPECT_NEAR(sum, kEta * kBoxVolume / (kLength * kLength), 1e-13);
 }
 
@@ -80,7 +84,7 @@ TEST(ViscousDamping, TangentIsDerivativeOfResidual) {
   EXPECT_TRUE(sink.K.isApprox(sink.K.transpose(), 0.0));
   // Diagonal c_i / Δt on displacement rows, nothing on pressure rows.
   for (int i = 0; i < mesh.n_nodes(); ++i) {
-    EXPECT_NEAR(sink.K(node_dof(i, 0), node_dof(i, 0)), term.damping_coefficient(i) / 0.25,
+    EXPECT_NEAR(sink.K(node_dof(i, 0), node_dof(i, 0)), term.damping_coefficient(i, 0) / 0.25,
                 1e-12 * scale);
     EXPECT_EQ(sink.K(node_dof(i, 3), node_dof(i, 3)), 0.0);
   }
@@ -178,6 +182,29 @@ TEST(ViscousDamping, CheckpointRoundTripContinuesIdentically) {
   EXPECT_THROW(restored.load_state(not_finite), Error);
 }
 
+TEST(ViscousDamping, ConstrainedComponentsGetNoForceAndDissipateNothing) {
+  // A prescribed motion (e.g. a clamped edge driven by a die) is not resisted by the artificial
+  // force, and its work must not show up in D: only the free components count.
+  const Mesh mesh = box();
+  std::vector<ConstrainedComponent> constraints;
+  for (int i = 0; i < mesh.n_nodes(); ++i) constraints.push_back({i, 1, 0.5, Ramp{0.0, 1.0}});
+  ViscousDamping term(mesh, kEta, kLength, constraints);
+  const Vec3d v(0.1, 0.5, 0.2);  // y prescribed everywhere, x and z free
+  const auto x = uniform_state(mesh, v);
+  DenseSink sink(kValuesPerNode * mesh.n_nodes());
+  std::vector<double> r(x.size(), 0.0);
+  term.assemble(1.0, x, r, &sink);
+  for (int i = 0; i < mesh.n_nodes(); ++i) {
+    EXPECT_EQ(r[static_cast<std::size_t>(node_dof(i, 1))], 0.0);
+    EXPECT_EQ(sink.K(node_dof(i, 1), node_dof(i, 1)), 0.0);
+    EXPECT_EQ(term.damping_coefficient(i, 1), 0.0);
+  }
+  term.accept_step(x);
+  const double expected = kEta * kBoxVolume * (v.x() * v.x() + v.z() * v.z()) / (kLength * kLength);
+  EXPECT_NEAR(term.dissipated_energy(), expected, 1e-13 * expected);
+  EXPECT_THROW(ViscousDamping(mesh, kEta, kLength, {{mesh.n_nodes(), 0, 0.0, Ramp{}}}), Error);
+}
+
 TEST(ViscousDamping, RejectsNonPositiveParameters) {
   const Mesh mesh = box();
   EXPECT_THROW(ViscousDamping(mesh, 0.0, 1.0), Error);
@@ -215,7 +242,7 @@ TEST(MakeTerms, CreatesViscousDampingWithTheWallThicknessWhenViscosityIsPositive
   const auto* term = dynamic_cast<const ViscousDamping*>(terms[0].get());
   ASSERT_NE(term, nullptr);
   double sum = 0.0;
-  for (int i = 0; i < mesh.n_nodes(); ++i) sum += term->damping_coefficient(i);
+  for (int i = 0; i < mesh.n_nodes(); ++i) sum += term->damping_coefficient(i, 1);
   EXPECT_NEAR(sum, kEta * kBoxVolume / (1.0 * 1.0), 1e-13);  // ℓ = thickness = 1 mm
 }
 
