@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <sstream>
 #include <utility>
 
 #include "core/error.hpp"
@@ -263,9 +264,10 @@ void apply_imperfection(Mesh& mesh, std::span<const Vec3d> displacement) {
   const MeshReport report = check_mesh(mesh);
   if (report.ok()) return;
   mesh.nodes = std::move(original);
-  throw Error("imperfection amplitude " + std::to_string(amplitude) +
-              " mm is too large for this mesh: " + report.errors.front() +
-              " (reduce the amplitude or refine through the thickness)");
+  std::ostringstream message;
+  message << "imperfection amplitude " << amplitude
+          << " mm is too large for this mesh (reduce it): " << report.errors.front();
+  throw Error(message.str());
 }
 
 }  // namespace plisse

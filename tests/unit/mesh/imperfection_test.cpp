@@ -110,6 +110,29 @@ TEST(RandomImperfection, ColumnsMoveRigidlySoTheWallKeepsItsThickness) {
   }
 }
 
+TEST(RandomImperfection, AirbagColumnsMoveRigidlyToo) {
+  // The airbag's wall is offset along the normals of an oblate spheroid (unequal curvatures):
+  // the nearest outer node of every node is still the one of its own column.
+  MeshGenerationSpec spec;
+  spec.kind = "airbag";
+  spec.radius = 20.0;
+  spec.height = 8.0;
+  spec.thickness = 0.8;
+  spec.layers = 2;
+  spec.element_size = 2.5;
+  spec.symmetry = Symmetry::octant;
+  const Mesh mesh = generate_mesh(spec);
+  const auto d = compute_random_imperfection(mesh, tagged(mesh, "outer"), 0.05, 2,
+                                             {"sym_x", "sym_y", "sym_z"});
+  const std::size_t n = mesh.nodes.size() / 3;
+  ASSERT_EQ(3 * n, mesh.nodes.size());
+  int mismatches = 0;
+  for (std::size_t j = 0; j < mesh.nodes.size(); ++j)
+    if (d[j] != d[2 * n + j % n]) ++mismatches;
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_NEAR(max_norm(d), 0.05, 1e-17);
+}
+
 TEST(RandomImperfection, DisplacementIsAlongTheOutwardNormal) {
   // On a sphere the area-weighted normal is close to radial: the outer nodes move mostly radially.
   const Mesh& mesh = quarter_shell();
