@@ -559,7 +559,12 @@ Mesh read_gmsh(const std::string& path, GmshReadInfo& info, const ChildLimits& l
     case GmshReaderReply::Kind::model:
       break;
   }
-  return build_mesh(reply.model, path, info);
+  try {
+    return build_mesh(reply.model, path, info);
+  } catch (const std::bad_alloc&) {
+    throw file_error(path, "cannot read the mesh file: not enough memory for its " +
+                               std::to_string(reply.model.node_tags.size()) + " nodes");
+  }
 }
 
 void write_gmsh(const Mesh& mesh, const std::string& path, double version, bool binary) {
