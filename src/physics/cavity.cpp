@@ -128,8 +128,9 @@ int CavityTerm::negative_directions() const {
   // is congruent to diag(d, K - g d^-1 g^T); d < 0 (gas, C11) gives one negative pivot and leaves
   // K + g g^T / |d|, the tangent with the gas stiffness. With d = 0 (volume control, C8) the pair
   // (g, p_c) is congruent to diag(+1, -1) on span(g) and K restricted to g^T du = 0: again one.
-  // An isothermal gas always has d = -V_c/(p_c + p_amb) < 0 (fluid_volume refuses p_c + p_amb <= 0),
-  // so both controls give 1; a control with d > 0 would need the sign of d - g^T K^-1 g instead.
+  // An isothermal gas always has d = -V_c/(p_c + p_amb) < 0 (fluid_volume refuses a non-positive
+  // p_c + p_amb), so both controls give 1; a control with d > 0 would need the sign of
+  // d - g^T K^-1 g instead.
   return 1;
 }
 

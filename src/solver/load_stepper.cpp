@@ -5,8 +5,25 @@
 #include <cmath>
 #include <cstdio>
 
+#include "solver/petsc_call.hpp"
+
 namespace plisse {
 namespace {
+/// Logs the PETSc events of its lifetime (e.g. the eigensolver's factorisations) in the stage
+/// `name` instead of the main stage, whose factorisations NewtonSolver::times() reports.
+class LogStage {
+ public:
+  explicit LogStage(const char* name) {
+    PetscLogStage stage = -1;
+    PLISSE_PETSC(PetscLogStageGetId(name, &stage));
+    if (stage < 0) PLISSE_PETSC(PetscLogStageRegister(name, &stage));
+    PLISSE_PETSC(PetscLogStagePush(stage));
+  }
+  ~LogStage() { PetscLogStagePop(); }
+  LogStage(const LogStage&) = delete;
+  LogStage& operator=(const LogStage&) = delete;
+};
+
 /// Branch switching re-solves from u + a φ1 with a, 4a, 16a, 64a while Newton falls back onto
 /// the unperturbed (unstable) equilibrium (stability.md, S10).
 constexpr int kAmplitudeTries = 4;
@@ -33,7 +50,8 @@ std::string LoadStepper::describe_failure(const NewtonResult& newton) const {
     Vec3d centroid = Vec3d::Zero();
     for (int v : tet) centroid += 0.25 * model_.mesh().nodes[v];
     char where[160];
-    std::snprintf(where, sizeof where, "; worst element %d (reference centroid %.4g, %.4g, %.4g), min J %.3g",
+    std::snprintf(where, sizeof where,
+                  "; worst element %d (reference centroid %.4g, %.4g, %.4g), min J %.3g",
                   status.worst_element, centroid[0], centroid[1], centroid[2], status.min_J);
     why += where;
   }
@@ -94,8 +112,21 @@ void LoadStepper::check_stability(StepInfo& info, SteppingResult& result,
   }
   char line[320];
   const int expected = expected_negative_pivots(model_);
-  Inertia inertia = inertia_->compute();
   info.expected_negative_pivots = expected;
+  // The check is a diagnostic of an accepted step: when it fails, the step is reported unchecked
+  // (negative_pivots = -1) and the run goes on.
+  const auto inertia_or_log = [&](Inertia& out) {
+    try {
+      out = inertia_->compute();
+      return true;
+    } catch (const Error& e) {
+      log("  step " + std::to_string(info.step) + ": the stability check failed (" + e.what() +
+          "); the step is reported unchecked");
+      return false;
+    }
+  };
+  Inertia inertia;
+  if (!inertia_or_log(inertia)) return;
   // A rise above the previous step is a new instability; before the first check the baseline is
   // the stable count (the reference state is stable).
   const int baseline = current_.negative_pivots >= 0 ? current_.negative_pivots : expected;
@@ -107,16 +138,18 @@ void LoadStepper::check_stability(StepInfo& info, SteppingResult& result,
     try {
       EigenOptions eigen;
       eigen.count = stability_.modes;
+      const LogStage stage("Stability eigenmodes");
       info.modes = lowest_eigenmodes(model_, eigen);
       if (!info.modes.empty()) {
         std::snprintf(line, sizeof line, "%.6g", info.modes.front().eigenvalue);
         lowest = line;
       }
     } catch (const Error& e) {
-      log("  step " + std::to_string(info.step) + ": the eigenmodes could not be computed: " +
-          e.what());
+      log("  step " + std::to_string(info.step) +
+          ": the eigenmodes could not be computed: " + e.what());
     }
-    eigenmode_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    eigenmode_seconds_ +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::snprintf(line, sizeof line,
                   "step %d: t = %.6g: new instability, %d negative pivots (stable: %d, previous "
                   "step: %d), %d zero; lowest eigenvalue %s",
@@ -158,7 +191,7 @@ void LoadStepper::check_stability(StepInfo& info, SteppingResult& result,
           continue;
         }
         model_.save_converged();
-        inertia = inertia_->compute();
+        const bool checked = inertia_or_log(inertia);
         switched = true;
         info.branch_switched = true;
         info.perturbation_mm = a;
@@ -170,8 +203,12 @@ void LoadStepper::check_stability(StepInfo& info, SteppingResult& result,
                       "%d extra negative pivot(s) before, max |du| %.4g mm, %d Newton "
                       "iterations; now %d negative pivots",
                       info.step, lowest.c_str(), a, info.unstable_negative_pivots - expected, moved,
-                      newton.iterations, inertia.negative);
+                      newton.iterations, checked ? inertia.negative : -1);
         log("  " + std::string(line));
+        if (!checked) {
+          current_.negative_pivots = -1;
+          return;
+        }
         break;
       }
     }
@@ -234,8 +271,9 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
       ++result.cutbacks;
       ++cutbacks_this_step;
       const double new_dt = step * settings_.cutback;
-      std::snprintf(line, sizeof line, "step %d: t = %.6g failed after %d iterations: ",
-                    result.steps + 1, t_new, newton.iterations);
+      std::snprintf(line, sizeof line,
+                    "step %d: t = %.6g failed after %d iterations: ", result.steps + 1, t_new,
+                    newton.iterations);
       if (new_dt < min_dt) {
         result.failure = std::string(line) + failure + "; step " + std::to_string(new_dt) +
                          " below the minimum " + std::to_string(min_dt);
@@ -251,8 +289,10 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
     t = t_new;
     ++result.steps;
     st.steps = result.steps;
-    if (newton.iterations <= settings_.easy_iterations) dt = std::min(step * settings_.growth, max_dt);
-    else dt = step;
+    if (newton.iterations <= settings_.easy_iterations)
+      dt = std::min(step * settings_.growth, max_dt);
+    else
+      dt = step;
     StepInfo info;
     info.step = result.steps;
     info.time = t;

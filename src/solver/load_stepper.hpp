@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "io/case.hpp"
-#include "solver/mixed_model.hpp"
 #include "solver/eigenmodes.hpp"
+#include "solver/mixed_model.hpp"
 #include "solver/newton_solver.hpp"
 #include "solver/stability.hpp"
 
@@ -22,9 +22,9 @@ namespace plisse {
 
 /// What the stepper does about stability (the app maps solver.stability.* to it).
 struct StabilityOptions {
-  bool check = false;          ///< inertia of the tangent at every converged step
-  bool branch_switch = false;  ///< at a new instability: perturb along mode 1 and re-solve
-  int modes = 4;               ///< eigenmodes computed at a new instability, >= 1
+  bool check = false;            ///< inertia of the tangent at every converged step
+  bool branch_switch = false;    ///< at a new instability: perturb along mode 1 and re-solve
+  int modes = 4;                 ///< eigenmodes computed at a new instability, >= 1
   double perturbation_mm = 0.0;  ///< amplitude a of u += a φ1 [mm] (relative amplitude x wall
                                  ///< thickness, computed by the caller), > 0 with branch_switch
 };
@@ -40,10 +40,10 @@ struct StepInfo {
   std::vector<double> residual_history;
   int cutbacks = 0;  ///< failed attempts before this step converged
   // Stability (StabilityOptions::check; stability.md, S7):
-  int negative_pivots = -1;           ///< of the accepted state's tangent; -1: not checked
-  int zero_pivots = 0;                ///< null pivots (a critical point)
-  int expected_negative_pivots = 0;   ///< of a stable state (expected_negative_pivots)
-  bool stable = true;                 ///< negative == expected and no zero pivot (true unchecked)
+  int negative_pivots = -1;          ///< of the accepted state's tangent; -1: not checked
+  int zero_pivots = 0;               ///< null pivots (a critical point)
+  int expected_negative_pivots = 0;  ///< of a stable state (expected_negative_pivots)
+  bool stable = true;                ///< negative == expected and no zero pivot (true unchecked)
   /// First step with more negative pivots than the step before (of the unperturbed state).
   bool new_instability = false;
   int unstable_negative_pivots = -1;  ///< at a new instability: count of the unperturbed state
@@ -59,16 +59,16 @@ struct SteppingResult {
   int steps = 0;
   int newton_iterations = 0;  ///< total over converged and failed attempts
   int cutbacks = 0;
-  std::string failure;  ///< why the run stopped early (empty when completed)
+  std::string failure;       ///< why the run stopped early (empty when completed)
   bool interrupted = false;  ///< stopped on request (request_stop), not by a failure
 };
 
 /// Where the stepping is, so that a run can continue from a checkpoint.
 struct StepperState {
-  int steps = 0;             ///< converged steps so far
-  double time = 0.0;         ///< time of the last converged step
-  double dt = 0.0;           ///< next step size (0: start from end_time / steps)
-  double previous_dt = 0.0;  ///< size of the last converged step (0: none yet)
+  int steps = 0;                       ///< converged steps so far
+  double time = 0.0;                   ///< time of the last converged step
+  double dt = 0.0;                     ///< next step size (0: start from end_time / steps)
+  double previous_dt = 0.0;            ///< size of the last converged step (0: none yet)
   std::vector<double> previous_state;  ///< converged state before the last one (predictor)
   int negative_pivots = -1;  ///< of the last converged step (-1: not checked); a rise above it is
                              ///< a new instability

@@ -7,7 +7,7 @@
 namespace plisse {
 
 int expected_negative_pivots(const MixedModel& model) {
-  int n = model.dofs().n_free_pressure();  // (stability.md, S4)
+  int n = model.dofs().n_free_pressure();                                   // (stability.md, S4)
   for (const auto& term : model.terms()) n += term->negative_directions();  // (S5)-(S6)
   return n;
 }
@@ -60,8 +60,10 @@ Inertia InertiaCheck::compute() {
     ~StageGuard() { PetscLogStagePop(); }
   } stage_guard(stage_);
   const AssemblyStatus status = model_.assemble_tangent(K_);
-  FE_CHECK(status.ok, "stability check: the tangent cannot be assembled at the converged state "
-                      "(element " << status.worst_element << ", min J " << status.min_J << ")");
+  FE_CHECK(status.ok,
+           "stability check: the tangent cannot be assembled at the converged state "
+           "(element "
+               << status.worst_element << ", min J " << status.min_J << ")");
   Mat A = symmetric_operator();
   assembly_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   PLISSE_PETSC(PCSetOperators(pc_, A, A));

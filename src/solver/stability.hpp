@@ -55,9 +55,9 @@ class InertiaCheck {
 
   MixedModel& model_;
   bool symmetric_ = true;
-  Mat K_ = nullptr;   ///< tangent over the free dofs
-  Mat Kt_ = nullptr;  ///< K^T (unsymmetric models only)
-  Mat S_ = nullptr;   ///< 0.5 (K + K^T) (unsymmetric models only)
+  Mat K_ = nullptr;                ///< tangent over the free dofs
+  Mat Kt_ = nullptr;               ///< K^T (unsymmetric models only)
+  Mat S_ = nullptr;                ///< 0.5 (K + K^T) (unsymmetric models only)
   PetscObjectState pattern_ = -1;  ///< nonzero state of K_ when S_ was built
   PC pc_ = nullptr;
   PetscLogStage stage_ = -1;  ///< PETSc log stage of the checks, apart from Newton's main stage

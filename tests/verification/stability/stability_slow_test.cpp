@@ -27,9 +27,10 @@ double critical_ratio(test::StripSpec spec, double h, int layers) {
   spec.layers = layers;
   const auto t0 = std::chrono::steady_clock::now();
   const double critical = test::critical_strain_by_bisection(spec, 0.8 * euler, 2.0 * euler, 1e-4);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("h = %.3f mm, %d layers: critical strain %.6f = %.4f eps_Euler (%.1f s)\n", h,
-              layers, critical, critical / euler, seconds);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("h = %.3f mm, %d layers: critical strain %.6f = %.4f eps_Euler (%.1f s)\n", h, layers,
+              critical, critical / euler, seconds);
   return critical / euler;
 }
 

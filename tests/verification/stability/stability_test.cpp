@@ -2,6 +2,8 @@
 // negative pivots of the MUMPS LDL^T factorisation is the exact eigenvalue count, a stable state
 // has exactly the free pressure unknowns plus the cavity multipliers as negative pivots, and a
 // clamped strip in compression gains one negative pivot at Euler's critical strain.
+#include "solver/stability.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -13,8 +15,6 @@
 #include <set>
 
 #include "mesh/generate.hpp"
-
-#include "solver/stability.hpp"
 #include "verification/stability/fixtures/stability_models.hpp"
 
 namespace plisse {
@@ -94,10 +94,11 @@ TEST(InertiaCheck, CountsTheNegativeEigenvaluesOfTheTangentExactly) {
     const int dense_negative = static_cast<int>((lambda.array() < 0.0).count());
     InertiaCheck check(model);
     const Inertia inertia = check.compute();
-    std::printf("strain %.2f: %d negative eigenvalues (free pressures %d), MUMPS %d negative, %d "
-                "zero, %d positive\n",
-                strain, dense_negative, model.dofs().n_free_pressure(), inertia.negative,
-                inertia.zero, inertia.positive);
+    std::printf(
+        "strain %.2f: %d negative eigenvalues (free pressures %d), MUMPS %d negative, %d "
+        "zero, %d positive\n",
+        strain, dense_negative, model.dofs().n_free_pressure(), inertia.negative, inertia.zero,
+        inertia.positive);
     EXPECT_EQ(inertia.negative, dense_negative) << "strain " << strain;
     EXPECT_EQ(inertia.zero, 0);
     EXPECT_EQ(inertia.negative + inertia.zero + inertia.positive, model.n_free());
@@ -150,9 +151,10 @@ loads:
   EXPECT_TRUE(check.uses_symmetric_part());
   const Inertia first = check.compute();
   const Inertia again = check.compute();  // reused pattern and symbolic factorisation
-  std::printf("unsymmetric tangent: symmetric part has %d negative eigenvalues (%d pressures); "
-              "MUMPS %d, %d zero\n",
-              dense_negative, model.dofs().n_free_pressure(), first.negative, first.zero);
+  std::printf(
+      "unsymmetric tangent: symmetric part has %d negative eigenvalues (%d pressures); "
+      "MUMPS %d, %d zero\n",
+      dense_negative, model.dofs().n_free_pressure(), first.negative, first.zero);
   EXPECT_EQ(first.negative, dense_negative);
   EXPECT_EQ(first.zero, 0);
   EXPECT_EQ(again.negative, first.negative);
@@ -256,8 +258,8 @@ TEST(StabilityCheck, CubeTensionIsStableWithOneNegativePivotPerPressure) {
 }
 
 // The thin balloon of tests/verification/cavity (octant, A = 20 mm, H = 1 mm, neo-Hookean) inflated
-// by prescribed volume through its pressure maximum (at V/V0 = 2.8, run to 4): under volume control the
-// state stays stable past the maximum, and the cavity pressure, the multiplier of the volume
+// by prescribed volume through its pressure maximum (at V/V0 = 2.8, run to 4): under volume control
+// the state stays stable past the maximum, and the cavity pressure, the multiplier of the volume
 // constraint, adds exactly one negative pivot (stability.md, S6).
 TEST(StabilityCheck, VolumeControlledBalloonIsStableThroughItsPressureMaximum) {
   test::ModelOnMesh m = test::model_from_case(R"(
@@ -340,15 +342,15 @@ TEST(StabilityCheck, ClampedStripGainsOneNegativePivotAtTheEulerStrain) {
   const double euler = std::pow(std::numbers::pi * spec.thickness / spec.length, 2) / 3.0;
   // The cost of the check (printed for the documentation, not asserted: the machine is shared).
   const PhaseTimes& nt = run.newton_times;
-  std::printf("cost: %d checks %.3f s (%.1f ms each, of which assembly %.1f ms); Newton %d "
-              "numeric factorisations %.3f s (%.1f ms each), assembly %.3f s, linear solve %.3f "
-              "s; eigenmodes %.3f s\n",
-              run.stability_checks, run.stability_seconds,
-              1e3 * run.stability_seconds / std::max(1, run.stability_checks),
-              1e3 * run.stability_assembly_seconds / std::max(1, run.stability_checks),
-              nt.factorisations,
-              nt.factorisation, 1e3 * nt.factorisation / std::max(1, nt.factorisations),
-              nt.assembly, nt.linear_solve, run.eigenmode_seconds);
+  std::printf(
+      "cost: %d checks %.3f s (%.1f ms each, of which assembly %.1f ms); Newton %d "
+      "numeric factorisations %.3f s (%.1f ms each), assembly %.3f s, linear solve %.3f "
+      "s; eigenmodes %.3f s\n",
+      run.stability_checks, run.stability_seconds,
+      1e3 * run.stability_seconds / std::max(1, run.stability_checks),
+      1e3 * run.stability_assembly_seconds / std::max(1, run.stability_checks), nt.factorisations,
+      nt.factorisation, 1e3 * nt.factorisation / std::max(1, nt.factorisations), nt.assembly,
+      nt.linear_solve, run.eigenmode_seconds);
   EXPECT_EQ(run.stability_checks, 40);
   const auto strain = [&](const StepInfo& s) { return spec.shortening * s.time / spec.length; };
   int first = -1, second = -1;
@@ -357,8 +359,10 @@ TEST(StabilityCheck, ClampedStripGainsOneNegativePivotAtTheEulerStrain) {
     EXPECT_LT(run.deflection[k], 1e-10) << "step " << s.step << ": the perfect strip bent";
     EXPECT_EQ(s.zero_pivots, 0);
     EXPECT_GE(s.negative_pivots, stable);
-    if (s.new_instability && first < 0) first = static_cast<int>(k);
-    else if (s.new_instability && second < 0) second = static_cast<int>(k);
+    if (s.new_instability && first < 0)
+      first = static_cast<int>(k);
+    else if (s.new_instability && second < 0)
+      second = static_cast<int>(k);
   }
   ASSERT_GT(first, 0) << "no instability found";
   for (int k = 0; k < first; ++k) {
@@ -374,9 +378,10 @@ TEST(StabilityCheck, ClampedStripGainsOneNegativePivotAtTheEulerStrain) {
   EXPECT_GT(at.modes[1].eigenvalue, 0.0);  // one mode lost, the next still stable
   const double low = strain(run.steps[first - 1]), high = strain(at);
   const double bisected = test::critical_strain_by_bisection(spec, low, high, 1e-4);
-  std::printf("critical strain: bracket [%.5f, %.5f] = [%.3f, %.3f] eps_Euler; bisection %.5f "
-              "= %.4f eps_Euler (eps_Euler = %.5f)\n",
-              low, high, low / euler, high / euler, bisected, bisected / euler, euler);
+  std::printf(
+      "critical strain: bracket [%.5f, %.5f] = [%.3f, %.3f] eps_Euler; bisection %.5f "
+      "= %.4f eps_Euler (eps_Euler = %.5f)\n",
+      low, high, low / euler, high / euler, bisected, bisected / euler, euler);
   EXPECT_GE(low, 1.0 * euler);
   EXPECT_LE(high, 1.6 * euler);
   EXPECT_GT(bisected, low);
@@ -423,9 +428,10 @@ TEST(BranchSwitching, ClampedStripDeflectsLaterallyAfterTheSwitch) {
   for (int k = 0; k < switched; ++k) EXPECT_LT(run.deflection[k], 1e-10);
   ASSERT_GE(run.steps.size(), static_cast<size_t>(switched + 4));
   const double later = run.deflection[switched + 3];
-  std::printf("deflection: %.3g mm at the switch (amplitude %.3g mm), %.3g mm three steps later, "
-              "%.3g mm at the end\n",
-              run.deflection[switched], at.perturbation_mm, later, run.deflection.back());
+  std::printf(
+      "deflection: %.3g mm at the switch (amplitude %.3g mm), %.3g mm three steps later, "
+      "%.3g mm at the end\n",
+      run.deflection[switched], at.perturbation_mm, later, run.deflection.back());
   EXPECT_GT(later, 10.0 * options.perturbation_mm);
   for (size_t k = switched; k < run.steps.size(); ++k) {
     EXPECT_TRUE(run.steps[k].stable) << "step " << run.steps[k].step;
