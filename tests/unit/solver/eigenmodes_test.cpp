@@ -15,14 +15,18 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <complex>
 #include <iostream>
+#include <memory>
 #include <random>
 #include <set>
 
 #include "mesh/box_mesh.hpp"
+#include "physics/pressure_load.hpp"
 #include "solver/eigenmodes.hpp"
 #include "solver/newton_solver.hpp"
 
@@ -228,6 +232,68 @@ TEST(Eigenmodes, TargetInsideTheSpectrumNearlyIncompressibleRandomState) {
   // A target between eigenvalues (not at the bottom of the spectrum) exercises the selection
   // "nearest the target" and the ascending order of the result.
   expect_matches_dense_reference(model, EigenOptions{5, 20.0, 1e-12}, /*expected_kernel=*/0);
+}
+
+TEST(Eigenmodes, UnsymmetricTangentOfAFollowerPressure) {
+  // A follower pressure on the open top face (its edges free) has an unsymmetric load stiffness
+  // (docs/theory/loads.md, L5): the non-Hermitian path (GNHEP, MUMPS LU). κ is finite, so K_pp is
+  // invertible and the reference is the eigenvalues of M_u^-1 S, S = K_uu - K_up K_pp^-1 K_pu.
+  const Mesh mesh = make_box_mesh(Vec3d(1.0, 1.0, 1.0), {4, 4, 4});
+  const auto constraints = clamp_bottom_move_top(mesh, Vec3d::Zero());
+  std::vector<ConstrainedComponent> bottom;
+  for (const auto& c : constraints)
+    if (mesh.nodes[c.node].z() == 0.0) bottom.push_back(c);
+  std::vector<std::unique_ptr<ModelTerm>> terms;
+  terms.push_back(std::make_unique<PressureLoad>(mesh, "p", "top", 0.3, Ramp{0.0, 1.0}, bottom));
+  MixedModel model(mesh, make_material("neo-hookean", {{"c1", 0.5}}), 1.0 / 50.0, bottom,
+                   std::move(terms));
+  ASSERT_FALSE(model.symmetric());
+  model.set_time(1.0);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  for (int d = 0; d < model.dofs().n_dofs(); ++d)
+    if (model.dofs().equation(d) >= 0) model.state()[d] = (d % 4 == 3 ? 0.1 : 0.02) * uniform(random);
+
+  const Eigen::MatrixXd K = dense_tangent(model);
+  ASSERT_GT((K - K.transpose()).norm(), 1e-6 * K.norm()) << "the load stiffness should be unsymmetric";
+  const Eigen::VectorXd m = lumped_volume(model);
+  std::vector<int> u, p;
+  for (int d = 0; d < model.dofs().n_dofs(); ++d)
+    if (const int eq = model.dofs().equation(d); eq >= 0) (d % DofMap::kPerNode == 3 ? p : u).push_back(eq);
+  const auto block = [&](const std::vector<int>& rows, const std::vector<int>& cols) {
+    Eigen::MatrixXd b(rows.size(), cols.size());
+    for (size_t i = 0; i < rows.size(); ++i)
+      for (size_t j = 0; j < cols.size(); ++j) b(i, j) = K(rows[i], cols[j]);
+    return b;
+  };
+  const Eigen::MatrixXd S = block(u, u) - block(u, p) * block(p, p).partialPivLu().solve(block(p, u));
+  Eigen::VectorXd inverse_mu(u.size());
+  for (size_t i = 0; i < u.size(); ++i) inverse_mu[i] = 1.0 / m[u[i]];
+  const Eigen::EigenSolver<Eigen::MatrixXd> dense(inverse_mu.asDiagonal() * S, false);
+  ASSERT_EQ(dense.info(), Eigen::Success);
+  std::vector<std::complex<double>> reference(dense.eigenvalues().data(),
+                                              dense.eigenvalues().data() + dense.eigenvalues().size());
+  const EigenOptions options{4, 0.0, 1e-12};
+  std::sort(reference.begin(), reference.end(), [&](auto a, auto b) {
+    return std::abs(a - options.target) < std::abs(b - options.target);
+  });
+  reference.resize(options.count);
+  for (const auto& value : reference) {
+    ASSERT_LT(std::abs(value.imag()), 1e-10 * std::abs(value)) << "the test wants real eigenvalues";
+  }
+  std::sort(reference.begin(), reference.end(), [](auto a, auto b) { return a.real() < b.real(); });
+
+  const std::vector<Eigenmode> modes = lowest_eigenmodes(model, options);
+  ASSERT_EQ(static_cast<int>(modes.size()), options.count);
+  for (int i = 0; i < options.count; ++i) {
+    const double expected = reference[i].real();
+    std::cout << "  lambda_" << i << " = " << modes[i].eigenvalue << ", relative difference to dense "
+              << (modes[i].eigenvalue - expected) / expected << "\n";
+    EXPECT_NEAR(modes[i].eigenvalue, expected, 1e-8 * std::abs(expected)) << "mode " << i;
+    const Eigen::VectorXd x = free_part(model, modes[i].state);
+    const Eigen::VectorXd r = K * x - modes[i].eigenvalue * m.cwiseProduct(x);
+    EXPECT_LT(r.norm(), 1e-8 * K.norm() * x.norm()) << "mode " << i;
+  }
 }
 
 TEST(Eigenmodes, RefusesMoreModesThanDofs) {
