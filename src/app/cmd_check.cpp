@@ -15,6 +15,7 @@
 #include "physics/terms.hpp"
 #include "solver/petsc_session.hpp"
 #include "app/run_case.hpp"
+#include "app/wrinkling.hpp"
 
 namespace plisse::app {
 namespace {
@@ -57,8 +58,7 @@ std::string material_line(const MaterialSection& m) {
 
 void check_case(const CheckOptions& options) {
   const Case c = parse_case_file(options.case_file, options.overrides);
-  const Mesh mesh = load_case_mesh(c);
-  check_case_against_mesh(c, mesh);
+  const Mesh mesh = load_perturbed_mesh(c);  // with the imperfection, as `plisse run` builds it
   // The same rules `plisse run` applies before solving (symmetry planes, conflicting conditions).
   const auto constraints = collect_constraints(c, mesh);
   check_free_displacements(c, mesh, constraints);

@@ -9,5 +9,6 @@ void add_run_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_mesh_command(CLI::App& app);
 void add_materials_command(CLI::App& app);
+void add_wrinkles_command(CLI::App& app);
 
 }  // namespace plisse::app

@@ -11,6 +11,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "app/wrinkling.hpp"
 #include "core/error.hpp"
 #include "io/case.hpp"
 #include "io/atomic_file.hpp"
@@ -106,12 +107,26 @@ HistoryColumns history_columns(const Case& c, const Mesh& mesh, const MixedModel
   }
   h.names.push_back("volume");
   h.names.push_back("min_J");
+  if (c.solver.stability.check)
+    for (const char* s : {"negative_pivots", "expected_negative_pivots", "stable"}) h.names.push_back(s);
+  if (c.output.wrinkles.enabled())
+    for (const auto& s : WrinkleMeter::history_columns()) h.names.push_back(s);
   return h;
+}
+
+/// The displacement part of an eigenmode as a VTU vector field `mode_<k>`.
+VtuField mode_field(const Mesh& mesh, const Eigenmode& mode, int k) {
+  VtuField f{"mode_" + std::to_string(k), 3, std::vector<double>(3 * mesh.n_nodes())};
+  for (int v = 0; v < mesh.n_nodes(); ++v)
+    for (int i = 0; i < 3; ++i) f.values[3 * v + i] = mode.state[DofMap::dof(v, i)];
+  return f;
 }
 
 /// Point and cell fields of the contract for one converged state.
 void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model,
-                    const std::vector<double>& previous_state, double dt) {
+                    const std::vector<double>& previous_state, double dt,
+                    const std::vector<VtuField>& extra_point_fields = {},
+                    const std::vector<VtuField>& extra_cell_fields = {}) {
   const Mesh& mesh = model.mesh();
   const int n = mesh.n_nodes();
   const auto& x = model.state();
@@ -137,9 +152,13 @@ void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model
     von_mises[e] = fields[e].von_mises;
     jacobian[e] = fields[e].J;
   }
-  write_vtu(file, mesh, points, {displacement, velocity, pressure},
-            {make_symmetric_tensor_field("cauchy_stress", cauchy),
-             make_scalar_field("von_mises", von_mises), make_scalar_field("J", jacobian)});
+  std::vector<VtuField> point_fields = {displacement, velocity, pressure};
+  point_fields.insert(point_fields.end(), extra_point_fields.begin(), extra_point_fields.end());
+  std::vector<VtuField> cell_fields = {make_symmetric_tensor_field("cauchy_stress", cauchy),
+                                       make_scalar_field("von_mises", von_mises),
+                                       make_scalar_field("J", jacobian)};
+  cell_fields.insert(cell_fields.end(), extra_cell_fields.begin(), extra_cell_fields.end());
+  write_vtu(file, mesh, points, point_fields, cell_fields);
 }
 
 }  // namespace
@@ -153,9 +172,6 @@ std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh) {
   if (c.solver.scheme != Scheme::total_lagrangian)
     out.emplace_back(InputPlace{c.path, 0, 0, "solver.scheme"},
                      "only the total-lagrangian scheme is available yet");
-  if (c.solver.stability.check)
-    out.emplace_back(InputPlace{c.path, 0, 0, "solver.stability.check"},
-                     "stability checks are not available yet");
   return out;
 }
 
@@ -201,8 +217,7 @@ void run_case(const RunOptions& options) {
   }
 
   auto t0 = Clock::now();
-  const Mesh mesh = load_case_mesh(c);
-  check_case_against_mesh(c, mesh);
+  const Mesh mesh = load_perturbed_mesh(c);
   if (const auto unsupported = unsupported_features(c, mesh); !unsupported.empty())
     throw unsupported.front();
   const double time_mesh = seconds_since(t0);
@@ -225,6 +240,9 @@ void run_case(const RunOptions& options) {
                    c.material.exact_incompressibility ? 0.0 : 1.0 / c.material.bulk_modulus,
                    constraints, std::move(terms));
   LoadStepper stepper(model, c.solver);
+  stepper.set_stability(stability_options(c));
+  std::optional<WrinkleMeter> wrinkle_meter;
+  if (c.output.wrinkles.enabled()) wrinkle_meter.emplace(c, mesh);
   const double time_setup = seconds_since(t0);
 
   RunDirectory dir(out_dir);
@@ -248,7 +266,7 @@ void run_case(const RunOptions& options) {
   if (checkpoint) {
     model.restore({checkpoint->state, checkpoint->bubbles, checkpoint->term_states});
     stepper.resume({checkpoint->steps, checkpoint->time, checkpoint->dt, checkpoint->previous_dt,
-                    checkpoint->previous_state});
+                    checkpoint->previous_state, checkpoint->negative_pivots});
     history_file.emplace(HistoryWriter::reopen(dir.history_csv()));
     std::vector<std::string> expected = HistoryWriter::standard_columns();
     expected.insert(expected.end(), columns.names.begin(), columns.names.end());
@@ -270,17 +288,29 @@ void run_case(const RunOptions& options) {
     const MixedModel::Snapshot snap = model.snapshot();
     write_checkpoint(dir.directory() / "checkpoint.bin",
                      {fingerprint, st.steps, st.time, st.dt, st.previous_dt, st.previous_state,
-                      snap.state, snap.bubbles, snap.term_states});
+                      snap.state, snap.bubbles, snap.term_states, st.negative_pivots});
   };
   double time_output = 0.0;
   std::vector<double> previous_state = model.state();
   int last_written = -1;
   StepInfo last_step;
 
+  std::optional<WrinkleMeter::Result> last_wrinkles;
+  nlohmann::json instabilities = nlohmann::json::array();
   auto write_output = [&](const StepInfo& info) {
     const auto t_out = Clock::now();
     const std::string name = dir.step_file_name(info.step);
-    write_step_vtu(dir.directory() / name, c, model, previous_state, info.dt);
+    std::vector<VtuField> point_fields, cell_fields;
+    for (std::size_t k = 0; k < info.modes.size(); ++k)
+      point_fields.push_back(mode_field(mesh, info.modes[k], static_cast<int>(k) + 1));
+    if (last_wrinkles) {
+      std::vector<double> state(last_wrinkles->tension.element_state.size());
+      for (std::size_t e = 0; e < state.size(); ++e)
+        state[e] = static_cast<double>(last_wrinkles->tension.element_state[e]);
+      cell_fields.push_back(make_scalar_field("wrinkle_state", state));
+    }
+    write_step_vtu(dir.directory() / name, c, model, previous_state, info.dt, point_fields,
+                   cell_fields);
     pvd.add(info.time, name);
     last_written = info.step;
     time_output += seconds_since(t_out);
@@ -310,17 +340,45 @@ void run_case(const RunOptions& options) {
     double min_J = std::numeric_limits<double>::infinity();
     for (const auto& f : model.element_fields()) min_J = std::min(min_J, f.J);
     row.push_back(min_J);
+    if (c.solver.stability.check) {
+      row.push_back(info.negative_pivots);
+      row.push_back(info.expected_negative_pivots);
+      row.push_back(info.stable ? 1.0 : 0.0);
+    }
+    if (wrinkle_meter) {
+      last_wrinkles = wrinkle_meter->evaluate(model);
+      for (double v : wrinkle_meter->history_values(*last_wrinkles)) row.push_back(v);
+    }
     history.add_row(row);
     time_output += seconds_since(t_out);
-    if (info.step % c.output.every == 0 || info.load_factor >= 1.0) write_output(info);
+    if (info.new_instability) {
+      nlohmann::json eigenvalues = nlohmann::json::array();
+      for (const Eigenmode& m : info.modes) eigenvalues.push_back(m.eigenvalue);
+      instabilities.push_back({{"step", info.step},
+                               {"time", info.time},
+                               {"negative_pivots", info.unstable_negative_pivots},
+                               {"expected_negative_pivots", info.expected_negative_pivots},
+                               {"eigenvalues", eigenvalues},
+                               {"branch_switched", info.branch_switched},
+                               {"perturbation_mm", info.perturbation_mm},
+                               {"file", dir.step_file_name(info.step)}});
+    }
+    // A new instability's modes are always written (they seed `imperfection_kind: mode`).
+    if (info.step % c.output.every == 0 || info.load_factor >= 1.0 || !info.modes.empty())
+      write_output(info);
     previous_state = model.state();
     last_step = info;
-    char line[256];
+    char line[320];
+    char stability[96] = "";
+    if (info.negative_pivots >= 0)
+      std::snprintf(stability, sizeof stability, info.stable ? "  stable" : "  UNSTABLE (%d/%d neg. pivots)",
+                    info.negative_pivots, info.expected_negative_pivots);
     std::snprintf(line, sizeof line,
-                  "step %4d  t %.5g  load %.4f  dt %.3g  newton %2d  |R| %.3e%s  elapsed %.1fs",
+                  "step %4d  t %.5g  load %.4f  dt %.3g  newton %2d  |R| %.3e%s%s%s  elapsed %.1fs",
                   info.step, info.time, info.load_factor, info.dt, info.newton_iterations,
-                  info.residual_norm, info.cutbacks ? "  (after cut-back)" : "",
-                  seconds_since(t_start));
+                  info.residual_norm, stability,
+                  last_wrinkles && last_wrinkles->rings.wrinkled ? "  wrinkled" : "",
+                  info.cutbacks ? "  (after cut-back)" : "", seconds_since(t_start));
     log.info(line);
     if (c.output.checkpoint_every > 0 && info.step % c.output.checkpoint_every == 0) save_checkpoint();
     if (interrupts.requested()) {
@@ -334,9 +392,13 @@ void run_case(const RunOptions& options) {
 
   const SteppingResult result = stepper.run(on_step, [&](const std::string& s) { log.warn(s); });
   if (last_step.step > 0 && last_written != last_step.step) write_output(last_step);
+  // The final state stays in the run directory: `plisse wrinkles DIR` reads it.
+  if (last_step.step > 0) save_checkpoint();
 
   nlohmann::json summary;
   summary["case"] = options.case_file;
+  summary["case_path"] = fs::absolute(options.case_file).lexically_normal().string();
+  summary["overrides"] = options.overrides;
   summary["title"] = c.title;
   summary["completed"] = result.completed;
   summary["interrupted"] = result.interrupted;
@@ -361,6 +423,14 @@ void run_case(const RunOptions& options) {
                           {"output", time_output},
                           {"total", seconds_since(t_start)}};
   summary["peak_memory_mib"] = peak_memory_mib();
+  if (c.solver.stability.check) {
+    summary["stability"] = {{"checks", stepper.stability_checks()},
+                            {"check_seconds", stepper.stability_seconds()},
+                            {"eigenmode_seconds", stepper.eigenmode_seconds()},
+                            {"stable_at_end", last_step.stable},
+                            {"instabilities", instabilities}};
+  }
+  if (last_wrinkles) summary["wrinkles"] = wrinkles_json(c, *last_wrinkles);
   if (!history.rows().empty()) {
     nlohmann::json final_values;
     for (size_t i = 0; i < history.columns().size(); ++i)

@@ -13,7 +13,7 @@ static_assert(std::endian::native == std::endian::little, "checkpoints are littl
 
 constexpr char kMagic[8] = {'P', 'L', 'I', 'S', 'S', 'E', 'C', 'K'};
 constexpr char kTrailer[8] = {'E', 'N', 'D', 'C', 'K', 'P', 'T', '1'};
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;  // 2: negative_pivots after the term states
 
 class Writer {
  public:
@@ -102,6 +102,7 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& c) {
   w.doubles(c.bubbles);
   w.value<std::uint64_t>(c.term_states.size());
   for (const auto& t : c.term_states) w.doubles(t);
+  w.value<std::int64_t>(c.negative_pivots);
   w.raw(kTrailer, sizeof kTrailer);
   write_file_atomically(path, w.bytes());
 }
@@ -124,6 +125,7 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
   const auto n_terms = r.value<std::uint64_t>();
   if (n_terms > 1000000) r.fail("corrupt term count");
   for (std::uint64_t k = 0; k < n_terms; ++k) c.term_states.push_back(r.doubles());
+  c.negative_pivots = static_cast<int>(r.value<std::int64_t>());
   if (!r.raw_equals(kTrailer, sizeof kTrailer) || !r.at_end()) r.fail("truncated or corrupt");
   return c;
 }

@@ -19,6 +19,7 @@ struct Checkpoint {
   std::vector<double> state;           ///< last converged full state
   std::vector<double> bubbles;         ///< element bubbles of that state
   std::vector<std::vector<double>> term_states;  ///< per model term (contact history ...)
+  int negative_pivots = -1;  ///< stability check: of the last converged step (-1: not checked)
 };
 
 /// FNV-1a (64 bit) of the case file's bytes followed by each override, so a checkpoint can only

@@ -31,6 +31,39 @@ bool is_flat(const SurfaceTriangulation& s, const std::array<int, 3>& tri,
   return false;
 }
 
+/// Renumbers the nodes in lexicographic order of their coordinates (rounded to `resolution`) and
+/// sorts the triangles (each rotated to start at its smallest node, orientation kept). OpenCASCADE
+/// numbers the patches glued by removeAllDuplicates in an order that depends on memory addresses,
+/// so the same options gave differently numbered meshes in different processes (a checkpoint or
+/// `plisse wrinkles` would then read a state onto the wrong nodes); the triangulation itself is
+/// the same, so a canonical order makes the generated mesh a function of the options alone.
+void canonicalize(SurfaceTriangulation& s, double resolution) {
+  const std::size_t n = s.nodes.size();
+  std::vector<std::array<long long, 3>> key(n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int k = 0; k < 3; ++k)
+      key[i][static_cast<std::size_t>(k)] = std::llround(s.nodes[i][k] / resolution);
+  std::vector<int> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<int>(i);
+  std::sort(order.begin(), order.end(), [&](int p, int q) {
+    return key[static_cast<std::size_t>(p)] != key[static_cast<std::size_t>(q)]
+               ? key[static_cast<std::size_t>(p)] < key[static_cast<std::size_t>(q)]
+               : p < q;
+  });
+  std::vector<int> new_index(n);
+  std::vector<Vec3d> nodes(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    new_index[static_cast<std::size_t>(order[i])] = static_cast<int>(i);
+    nodes[i] = s.nodes[static_cast<std::size_t>(order[i])];
+  }
+  s.nodes = std::move(nodes);
+  for (auto& t : s.triangles) {
+    for (int& v : t) v = new_index[static_cast<std::size_t>(v)];
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+  }
+  std::sort(s.triangles.begin(), s.triangles.end());
+}
+
 }  // namespace
 
 void orient_and_repair_surface(SurfaceTriangulation& s, const std::array<bool, 3>& planes,
@@ -214,6 +247,7 @@ SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetr
         std::sqrt(p.x() * p.x() / (a * a) + p.y() * p.y() / (b * b) + p.z() * p.z() / (a * a));
     p /= s;
   }
+  canonicalize(surface, 1e-7 * std::max(a, b));
   orient_and_repair_surface(surface, planes, [&](const Vec3d& p) {
     return Vec3d(p.x() / (a * a), p.y() / (b * b), p.z() / (a * a));
   });

@@ -253,7 +253,7 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
     // Land on end_time without a sliver: take the rest when it fits, halve it when it is less
     // than two steps.
     const double remaining = end - t;
-    if (remaining > dt && remaining < 2.0 * dt) dt = 0.5 * remaining;
+    if (remaining > dt * (1.0 + 1e-9) && remaining < 2.0 * dt) dt = 0.5 * remaining;
     const double t_new = (remaining <= dt * (1.0 + 1e-9)) ? end : t + dt;
     const double step = t_new - t;
     // Predictor: extrapolate the last increment (secant), then impose the new boundary values.

@@ -1,0 +1,129 @@
+// `plisse wrinkles DIR [--set output.wrinkles.KEY=VALUE ...]`: recomputes the wrinkle metrics of
+// the last converged state of a finished (or stopped) run (DESIGN.md, interface contract). The run
+// directory's summary.json names the case and its --set values; checkpoint.bin holds the final
+// state (written at the end of every run). The table replaces "wrinkles" in summary.json and is
+// printed.
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/commands.hpp"
+#include "app/wrinkling.hpp"
+#include "core/error.hpp"
+#include "io/checkpoint.hpp"
+#include "io/json_file.hpp"
+#include "material/registry.hpp"
+#include "physics/dirichlet.hpp"
+#include "physics/terms.hpp"
+#include "solver/petsc_session.hpp"
+
+namespace plisse::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct WrinklesOptions {
+  std::string run_directory;
+  std::vector<std::string> overrides;  ///< output.wrinkles.* only
+};
+
+std::vector<std::string> string_list(const nlohmann::json& j) {
+  std::vector<std::string> out;
+  if (j.is_array())
+    for (const auto& v : j)
+      if (v.is_string()) out.push_back(v.get<std::string>());
+  return out;
+}
+
+void recompute_wrinkles(const WrinklesOptions& options) {
+  const fs::path dir = options.run_directory;
+  const InputPlace place{dir.string(), 0, 0, "DIR"};
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw InputError(place, "is not a run directory");
+  const fs::path summary_path = dir / "summary.json";
+  if (!fs::exists(summary_path, ec))
+    throw InputError(place, "holds no summary.json: not a finished plisse run");
+  nlohmann::json summary;
+  try {
+    summary = read_json_file(summary_path);
+  } catch (const Error& e) {
+    throw InputError({summary_path.string(), 0, 0, ""}, e.what());
+  }
+  if (!summary.is_object() || !summary.contains("case_path") || !summary["case_path"].is_string())
+    throw InputError({summary_path.string(), 0, 0, "case_path"},
+                     "does not name the case file (written by plisse run since version 0.1)");
+  const std::string case_path = summary["case_path"].get<std::string>();
+  const std::vector<std::string> run_overrides = string_list(summary["overrides"]);
+  for (const std::string& o : options.overrides)
+    if (o.rfind("output.wrinkles.", 0) != 0)
+      throw InputError({"command line", 0, 0, "--set"},
+                       "'" + o + "': only output.wrinkles.* can change after the run (anything "
+                       "else would not match the computed state)");
+  if (!fs::exists(case_path, ec))
+    throw InputError({summary_path.string(), 0, 0, "case_path"},
+                     "the case file of this run, " + case_path + ", no longer exists");
+  std::vector<std::string> overrides = run_overrides;
+  overrides.insert(overrides.end(), options.overrides.begin(), options.overrides.end());
+  const Case c = parse_case_file(case_path, overrides);
+
+  const Checkpoint checkpoint = read_checkpoint(dir / "checkpoint.bin");
+  if (checkpoint.case_fingerprint != case_fingerprint(case_path, run_overrides))
+    throw InputError({(dir / "checkpoint.bin").string(), 0, 0, "DIR"},
+                     "the case file " + case_path + " changed since this run: its state no longer "
+                     "matches the case");
+  if (!c.output.wrinkles.enabled())
+    throw InputError({case_path, 0, 0, "output.wrinkles.rings_deg"},
+                     "no rings to measure: give their latitudes, e.g. --set "
+                     "output.wrinkles.rings_deg=[0,30,60]");
+
+  const Mesh mesh = load_perturbed_mesh(c);
+  std::map<std::string, double> params = c.material.params;
+  AnyMaterial material = make_material(c.material.model, params);
+  const auto constraints = collect_constraints(c, mesh);
+  PetscSession petsc({"-no_signal_handler"});
+  MixedModel model(mesh, material,
+                   c.material.exact_incompressibility ? 0.0 : 1.0 / c.material.bulk_modulus,
+                   constraints, make_terms(c, mesh, constraints));
+  try {
+    model.restore({checkpoint.state, checkpoint.bubbles, checkpoint.term_states});
+  } catch (const Error& e) {
+    throw InputError({(dir / "checkpoint.bin").string(), 0, 0, "DIR"}, e.what());
+  }
+  const WrinkleMeter meter(c, mesh);
+  const WrinkleMeter::Result result = meter.evaluate(model);
+  summary["wrinkles"] = wrinkles_json(c, result);
+  write_json_file(summary_path, summary);
+
+  std::printf("plisse wrinkles: %s, step %d at t = %g: %s (max amplitude %.4g mm, threshold %.4g mm)\n",
+              dir.string().c_str(), checkpoint.steps, checkpoint.time,
+              result.rings.wrinkled ? "wrinkled" : "not wrinkled", result.rings.max_amplitude,
+              result.rings.threshold);
+  std::printf("  %14s %7s %16s %16s %14s %7s\n", "latitude [deg]", "count", "amplitude [mm]",
+              "wavelength [mm]", "radius [mm]", "points");
+  for (const RingMetrics& r : result.rings.rings)
+    std::printf("  %14.4g %7d %16.4g %16.4g %14.4g %7d\n", r.latitude_deg, r.count, r.amplitude,
+                r.wavelength, r.mean_radius, r.n_points);
+  const auto& n = result.tension.n_elements;
+  std::printf("  tension field (elements): %d taut, %d wrinkled, %d slack\n", n[0], n[1], n[2]);
+}
+
+}  // namespace
+
+void add_wrinkles_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "wrinkles",
+      "Recompute the wrinkle metrics of a run's last converged state (updates DIR/summary.json)");
+  auto options = std::make_shared<WrinklesOptions>();
+  cmd->add_option("dir", options->run_directory, "Run directory written by plisse run")->required();
+  cmd->add_option("--set", options->overrides,
+                  "Change a wrinkle setting, e.g. --set output.wrinkles.rings_deg=[0,45] or "
+                  "--set output.wrinkles.axis=z (output.wrinkles.* only; repeatable)")
+      ->take_all()
+      ->allow_extra_args(false);
+  cmd->callback([options] { recompute_wrinkles(*options); });
+}
+
+}  // namespace plisse::app

@@ -1,0 +1,213 @@
+#include "app/wrinkling.hpp"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "analysis/surface_columns.hpp"
+#include "core/error.hpp"
+#include "io/pvd_writer.hpp"
+#include "io/vtu_reader.hpp"
+#include "mesh/imperfection.hpp"
+#include "solver/dof_map.hpp"
+
+namespace plisse::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+InputPlace imperfection_place(const Case& c) {
+  InputPlace place = c.solver.stability.place;
+  place.key = "solver.stability.imperfection";
+  return place;
+}
+
+/// The VTU file holding the point field `field`: the file itself, or the first step of the run
+/// directory's solution.pvd that has it (the step where the stability check found an instability).
+fs::path find_mode_file(const Case& c, const std::string& field) {
+  const fs::path from = c.solver.stability.imperfection_from;
+  InputPlace place = c.solver.stability.place;
+  place.key = "solver.stability.imperfection_from";
+  std::error_code ec;
+  if (!fs::exists(from, ec))
+    throw InputError(place, "'" + from.string() + "' does not exist (a run directory or a .vtu file)");
+  if (!fs::is_directory(from, ec)) return from;
+  const fs::path pvd = from / "solution.pvd";
+  if (!fs::exists(pvd, ec))
+    throw InputError(place, "'" + from.string() + "' holds no solution.pvd: not a plisse run directory");
+  std::vector<PvdEntry> entries;
+  try {
+    entries = read_pvd(pvd);
+  } catch (const Error& e) {
+    throw InputError(place, std::string("cannot read ") + pvd.string() + ": " + e.what());
+  }
+  for (const PvdEntry& entry : entries) {
+    const fs::path file = from / entry.file;
+    try {
+      for (const VtuArrayInfo& info : read_vtu_summary(file).point_fields)
+        if (info.name == field) return file;
+    } catch (const Error&) {
+      // A damaged step file cannot hold the mode; keep looking.
+    }
+  }
+  throw InputError(place, "no step of the run in '" + from.string() + "' holds the field '" + field +
+                              "' (modes are written at the step where the stability check finds "
+                              "a new instability: run that case with solver.stability.check: true)");
+}
+
+std::vector<Vec3d> mode_shape(const Case& c, const Mesh& mesh) {
+  const std::string field = "mode_" + std::to_string(c.solver.stability.imperfection_mode);
+  const fs::path file = find_mode_file(c, field);
+  InputPlace place = c.solver.stability.place;
+  place.key = "solver.stability.imperfection_from";
+  VtuField values;
+  try {
+    values = read_vtu_point_field(file, field);
+  } catch (const Error& e) {
+    throw InputError(place, "cannot read the field '" + field + "' of " + file.string() + ": " + e.what());
+  }
+  if (values.n_components != 3 ||
+      values.values.size() != 3 * static_cast<std::size_t>(mesh.n_nodes()))
+    throw InputError(place, file.string() + " has " +
+                                std::to_string(values.values.size() / std::max(values.n_components, 1)) +
+                                " points with " + std::to_string(values.n_components) +
+                                " components in '" + field + "'; this case's mesh has " +
+                                std::to_string(mesh.n_nodes()) +
+                                " nodes (the mode must come from a run on the same mesh)");
+  std::vector<Vec3d> shape(mesh.n_nodes());
+  for (int v = 0; v < mesh.n_nodes(); ++v)
+    shape[v] = Vec3d(values.values[3 * v], values.values[3 * v + 1], values.values[3 * v + 2]);
+  return shape;
+}
+
+double triangle_area(const Mesh& mesh, const std::array<int, 3>& t) {
+  return 0.5 * (mesh.nodes[t[1]] - mesh.nodes[t[0]]).cross(mesh.nodes[t[2]] - mesh.nodes[t[0]]).norm();
+}
+
+}  // namespace
+
+Mesh load_perturbed_mesh(const Case& c) {
+  Mesh mesh = load_case_mesh(c);
+  check_case_against_mesh(c, mesh);
+  const StabilitySettings& st = c.solver.stability;
+  if (st.imperfection <= 0.0) return mesh;
+  const double amplitude = st.imperfection * *c.mesh.wall_thickness();
+  std::vector<Vec3d> field;
+  try {
+    if (st.imperfection_kind == "mode") {
+      field = compute_mode_imperfection(mesh, mode_shape(c, mesh), amplitude);
+    } else {
+      const std::string& tag = c.output.wrinkles.surface;
+      if (!mesh.surface_tags.count(tag))
+        throw InputError(imperfection_place(c),
+                         "a random imperfection moves the wall along the normals of the surface '" +
+                             tag + "' (output.wrinkles.surface), which the mesh does not have");
+      std::vector<std::string> planes;
+      for (const BoundaryCondition& bc : c.boundary)
+        if (bc.type == BoundaryType::symmetry) planes.push_back(bc.surface.name);
+      field = compute_random_imperfection(mesh, tagged_triangles(mesh, tag), amplitude,
+                                          static_cast<std::uint64_t>(st.seed), planes);
+    }
+    apply_imperfection(mesh, field);
+  } catch (const InputError&) {
+    throw;
+  } catch (const Error& e) {
+    throw InputError(imperfection_place(c), e.what());
+  }
+  return mesh;
+}
+
+StabilityOptions stability_options(const Case& c) {
+  const StabilitySettings& st = c.solver.stability;
+  StabilityOptions o;
+  o.check = st.check;
+  o.branch_switch = st.branch_switch;
+  o.modes = st.modes;
+  if (st.branch_switch) o.perturbation_mm = st.branch_amplitude * *c.mesh.wall_thickness();
+  return o;
+}
+
+WrinkleMeter::WrinkleMeter(const Case& c, const Mesh& mesh) : surface_(c.output.wrinkles.surface) {
+  const WrinkleSettings& w = c.output.wrinkles;
+  options_.rings.axis = w.axis - 'x';
+  options_.rings.center = w.center;
+  options_.rings.latitudes_deg = w.rings_deg;
+  options_.rings.min_count = w.min_count;
+  options_.thickness = *c.mesh.wall_thickness();
+  options_.threshold_fraction = w.threshold;
+  triangles_ = tagged_triangles(mesh, surface_);
+  columns_ = assign_columns(mesh.nodes, mesh.tets, triangles_);
+  triangle_area_.reserve(triangles_.size());
+  for (const auto& t : triangles_) triangle_area_.push_back(triangle_area(mesh, t));
+}
+
+WrinkleMeter::Result WrinkleMeter::evaluate(const MixedModel& model) const {
+  const Mesh& mesh = model.mesh();
+  const std::vector<Vec3d> u = nodal_displacements(model);
+  Result r;
+  r.rings = evaluate_wrinkles(mesh.nodes, triangles_, u, options_);
+  const auto fields = model.element_fields();
+  std::vector<Mat3d> sigma(fields.size());
+  std::vector<double> J(fields.size());
+  for (std::size_t e = 0; e < fields.size(); ++e) {
+    sigma[e] = fields[e].cauchy;
+    J[e] = fields[e].J;
+  }
+  r.tension = compute_tension_field(mesh.nodes, mesh.tets, triangles_, columns_, u, sigma, J);
+  return r;
+}
+
+std::vector<std::string> WrinkleMeter::history_columns() {
+  return {"wrinkle_amplitude", "wrinkle_count", "wrinkled_fraction", "slack_fraction"};
+}
+
+std::vector<double> WrinkleMeter::history_values(const Result& r) const {
+  int count = 0;
+  double best = -1.0;
+  for (const RingMetrics& ring : r.rings.rings)
+    if (ring.amplitude > best) {
+      best = ring.amplitude;
+      count = ring.count;
+    }
+  double total = 0.0, wrinkled = 0.0, slack = 0.0;
+  for (std::size_t t = 0; t < triangles_.size(); ++t) {
+    total += triangle_area_[t];
+    if (r.tension.triangle_state[t] == MembraneState::wrinkled) wrinkled += triangle_area_[t];
+    if (r.tension.triangle_state[t] == MembraneState::slack) slack += triangle_area_[t];
+  }
+  const double scale = total > 0.0 ? 1.0 / total : 0.0;
+  return {r.rings.max_amplitude, static_cast<double>(count), wrinkled * scale, slack * scale};
+}
+
+nlohmann::json wrinkles_json(const Case& c, const WrinkleMeter::Result& r) {
+  nlohmann::json rings = nlohmann::json::array();
+  for (const RingMetrics& ring : r.rings.rings)
+    rings.push_back({{"latitude_deg", ring.latitude_deg},
+                     {"count", ring.count},
+                     {"amplitude", ring.amplitude},
+                     {"wavelength", ring.wavelength},
+                     {"mean_radius", ring.mean_radius},
+                     {"points", ring.n_points},
+                     {"sector_deg", ring.sector_deg}});
+  const auto& n = r.tension.n_elements;
+  return {{"wrinkled", r.rings.wrinkled},
+          {"max_amplitude", r.rings.max_amplitude},
+          {"threshold", r.rings.threshold},
+          {"thickness", *c.mesh.wall_thickness()},
+          {"axis", std::string(1, c.output.wrinkles.axis)},
+          {"surface", c.output.wrinkles.surface},
+          {"rings", rings},
+          {"tension_field",
+           {{"taut", n[static_cast<int>(MembraneState::taut)]},
+            {"wrinkled", n[static_cast<int>(MembraneState::wrinkled)]},
+            {"slack", n[static_cast<int>(MembraneState::slack)]}}}};
+}
+
+std::vector<Vec3d> nodal_displacements(const MixedModel& model) {
+  const auto& x = model.state();
+  std::vector<Vec3d> u(model.mesh().n_nodes());
+  for (int v = 0; v < model.mesh().n_nodes(); ++v)
+    u[v] = Vec3d(x[DofMap::dof(v, 0)], x[DofMap::dof(v, 1)], x[DofMap::dof(v, 2)]);
+  return u;
+}
+
+}  // namespace plisse::app

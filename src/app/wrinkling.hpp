@@ -1,0 +1,68 @@
+#pragma once
+/// What `plisse run`, `plisse check` and `plisse wrinkles` share about wrinkling: the case's mesh
+/// with its imperfection, the stepper's stability options, and the wrinkle metrics of a converged
+/// state (rings, tension-field state) in the form of history columns, VTU fields and the
+/// summary.json table (DESIGN.md, "Wrinkle metrics"; docs/theory/wrinkles.md).
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/tension_field.hpp"
+#include "analysis/wrinkle_rings.hpp"
+#include "io/case.hpp"
+#include "mesh/mesh.hpp"
+#include "solver/load_stepper.hpp"
+#include "solver/mixed_model.hpp"
+
+namespace plisse::app {
+
+/// The case's mesh, checked against the case, with the geometric imperfection of
+/// solver.stability applied (random, or the shape of an earlier run's eigenmode). An imperfection
+/// that cannot be applied (amplitude inverting elements, missing or mismatched mode file) is an
+/// InputError at its key.
+Mesh load_perturbed_mesh(const Case& c);
+
+/// solver.stability mapped to the stepper's options (the perturbation in mm: branch_amplitude x
+/// wall thickness).
+StabilityOptions stability_options(const Case& c);
+
+/// Wrinkle metrics of converged states of one model (output.wrinkles). Holds the outer
+/// triangles and the through-thickness columns, computed once.
+class WrinkleMeter {
+ public:
+  /// Requires c.output.wrinkles.enabled() and a wall thickness (checked with the case).
+  WrinkleMeter(const Case& c, const Mesh& mesh);
+
+  struct Result {
+    WrinkleReport rings;
+    TensionField tension;
+  };
+  /// Metrics of the model's current state.
+  Result evaluate(const MixedModel& model) const;
+
+  /// History columns and their values: wrinkle_amplitude (largest ring amplitude, mm),
+  /// wrinkle_count (count of that ring), wrinkled_fraction (outer area fraction in the wrinkled
+  /// state), slack_fraction.
+  static std::vector<std::string> history_columns();
+  std::vector<double> history_values(const Result& r) const;
+
+ private:
+  WrinkleOptions options_;
+  std::string surface_;
+  std::vector<std::array<int, 3>> triangles_;
+  std::vector<int> columns_;
+  std::vector<double> triangle_area_;
+};
+
+/// The summary.json table: {"wrinkled", "max_amplitude", "threshold", "thickness", "axis",
+/// "rings": [{"latitude_deg", "count", "amplitude", "wavelength", "mean_radius", "points",
+/// "sector_deg"}], "tension_field": {"taut", "wrinkled", "slack"} (element counts)}.
+nlohmann::json wrinkles_json(const Case& c, const WrinkleMeter::Result& r);
+
+/// Displacements of every node of the model's current state.
+std::vector<Vec3d> nodal_displacements(const MixedModel& model);
+
+}  // namespace plisse::app

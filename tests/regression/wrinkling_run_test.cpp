@@ -1,0 +1,204 @@
+// The wrinkling tools through the command line, on small cases (DESIGN.md "Stability and
+// wrinkling", "Wrinkle metrics"):
+//  - a clamped strip shortened past its Euler load (tests/regression/cases/strip-buckling.yaml):
+//    the stability check finds the instability and writes the eigenmodes; the perfect strip stays
+//    straight, a mode-shaped imperfection taken from that run and branch switching both lead to
+//    the buckled branch, which is stable;
+//  - an inflated spherical shell: the wrinkle table of summary.json, the history columns, the
+//    VTU field wrinkle_state, and `plisse wrinkles DIR` reproducing the table from the run's
+//    final state in another process.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "io/history_writer.hpp"
+#include "io/json_file.hpp"
+#include "io/vtu_reader.hpp"
+#include "support/run_plisse.hpp"
+
+namespace plisse {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_plisse_captured;
+using test::scratch_directory;
+
+const std::string kStrip = std::string(PLISSE_SOURCE_DIR) + "/tests/regression/cases/strip-buckling.yaml";
+
+std::vector<double> column(const HistoryTable& h, const std::string& name) {
+  const auto it = std::find(h.columns.begin(), h.columns.end(), name);
+  EXPECT_NE(it, h.columns.end()) << "no history column " << name;
+  std::vector<double> out;
+  if (it == h.columns.end()) return out;
+  const auto k = static_cast<std::size_t>(it - h.columns.begin());
+  for (const auto& row : h.rows) out.push_back(row[k]);
+  return out;
+}
+
+bool has_point_field(const fs::path& vtu, const std::string& name) {
+  for (const auto& f : read_vtu_summary(vtu).point_fields)
+    if (f.name == name) return true;
+  return false;
+}
+
+/// The three strip runs share the perfect one (its modes seed the imperfect one).
+class StripBuckling : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    perfect_ = new fs::path(scratch_directory("strip-perfect"));
+    const auto r = run_plisse_captured("run '" + kStrip + "' -o '" + perfect_->string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+  }
+  static void TearDownTestSuite() { delete perfect_; }
+  static fs::path* perfect_;
+};
+fs::path* StripBuckling::perfect_ = nullptr;
+
+TEST_F(StripBuckling, CheckFindsTheInstabilityAndWritesItsModes) {
+  const nlohmann::json s = read_json_file(*perfect_ / "summary.json");
+  const auto& instabilities = s["stability"]["instabilities"];
+  ASSERT_EQ(instabilities.size(), 1u) << s.dump(1);
+  const auto& i = instabilities[0];
+  EXPECT_EQ(i["negative_pivots"].get<int>(), i["expected_negative_pivots"].get<int>() + 1);
+  EXPECT_FALSE(i["branch_switched"].get<bool>());
+  // Lowest eigenvalue negative, the next one positive: one unstable mode.
+  ASSERT_EQ(i["eigenvalues"].size(), 2u);
+  EXPECT_LT(i["eigenvalues"][0].get<double>(), 0.0);
+  EXPECT_GT(i["eigenvalues"][1].get<double>(), 0.0);
+  // The critical end shortening: between 1 and 1.8 x the clamped Euler strain pi^2 t^2 / (3 L^2)
+  // (the meshed strip is stiffer in bending; tests/verification/stability has the refinement).
+  const double eps_cr = M_PI * M_PI / (3.0 * 20.0 * 20.0);
+  const double eps = i["time"].get<double>() * 0.4 / 20.0;
+  EXPECT_GT(eps, eps_cr);
+  EXPECT_LT(eps, 1.8 * eps_cr);
+  const fs::path vtu = *perfect_ / i["file"].get<std::string>();
+  EXPECT_TRUE(has_point_field(vtu, "mode_1"));
+  EXPECT_TRUE(has_point_field(vtu, "mode_2"));
+
+  const HistoryTable h = read_history(*perfect_ / "history.csv");
+  const auto stable = column(h, "stable"), time = column(h, "time"), uz = column(h, "uz:middle");
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    EXPECT_EQ(stable[k], time[k] < i["time"].get<double>() - 1e-12 ? 1.0 : 0.0) << "t = " << time[k];
+    // The perfect strip stays straight: only the Poisson thickening of the wall (eps t / 2).
+    EXPECT_LT(std::abs(uz[k]), 0.01) << "t = " << time[k];
+  }
+}
+
+TEST_F(StripBuckling, ModeImperfectionAndBranchSwitchingReachTheBuckledBranch) {
+  const fs::path imperfect = scratch_directory("strip-imperfect");
+  auto r = run_plisse_captured("run '" + kStrip + "' -o '" + imperfect.string() +
+                               "' --set solver.stability.imperfection=0.01"
+                               " --set solver.stability.imperfection_kind=mode"
+                               " --set solver.stability.imperfection_from='" + perfect_->string() + "'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const fs::path switched = scratch_directory("strip-switched");
+  r = run_plisse_captured("run '" + kStrip + "' -o '" + switched.string() +
+                          "' --set solver.stability.branch_switch=true");
+  ASSERT_EQ(r.status, 0) << r.output;
+
+  // Imperfect: no bifurcation, stable throughout, the deflection grows to ~100x the 0.01 mm seed.
+  const HistoryTable hi = read_history(imperfect / "history.csv");
+  for (double s : column(hi, "stable")) EXPECT_EQ(s, 1.0);
+  const double deflection_imperfect = std::abs(column(hi, "uz:middle").back());
+  EXPECT_GT(deflection_imperfect, 0.5);
+
+  // Switched: once, then stable on the buckled branch, close to the imperfect strip's deflection
+  // (the seed of 0.01 t shifts the post-buckling curve a little).
+  const nlohmann::json s = read_json_file(switched / "summary.json");
+  ASSERT_EQ(s["stability"]["instabilities"].size(), 1u);
+  EXPECT_TRUE(s["stability"]["instabilities"][0]["branch_switched"].get<bool>());
+  EXPECT_TRUE(s["stability"]["stable_at_end"].get<bool>());
+  const HistoryTable hs = read_history(switched / "history.csv");
+  const double deflection_switched = std::abs(column(hs, "uz:middle").back());
+  EXPECT_GT(deflection_switched, 0.5);
+  EXPECT_NEAR(deflection_switched, deflection_imperfect, 0.15 * deflection_imperfect);
+}
+
+TEST(StripBucklingInput, ModeFromARunWithoutModesIsRefused) {
+  // A run directory whose steps hold no mode_1: bad input (exit 2) naming the key.
+  const fs::path plain = scratch_directory("strip-short");
+  auto r = run_plisse_captured("run '" + kStrip + "' -o '" + plain.string() +
+                               "' --set solver.end_time=0.1 --set solver.stability.check=false");
+  ASSERT_EQ(r.status, 0) << r.output;
+  r = run_plisse_captured("check '" + kStrip + "' --set solver.stability.imperfection=0.01"
+                          " --set solver.stability.imperfection_kind=mode"
+                          " --set solver.stability.imperfection_from='" + plain.string() + "'");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("solver.stability.imperfection_from"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("mode_1"), std::string::npos) << r.output;
+}
+
+const std::string kShell =
+    "mesh: {generate: spherical-shell, inner_radius: 10.0, thickness: 1.0, layers: 2,\n"
+    "       element_size: 2.0, symmetry: octant}\n"
+    "material: {model: neo-hookean, c1: 0.5}\n"
+    "boundary:\n"
+    "  - {type: symmetry, surface: sym_x}\n"
+    "  - {type: symmetry, surface: sym_y}\n"
+    "  - {type: symmetry, surface: sym_z}\n"
+    "loads:\n"
+    "  - {type: pressure, name: p, surface: inner, value: 0.05}\n"
+    "solver: {steps: 4, stability: {check: true, imperfection: 0.05, seed: 3}}\n"
+    "output: {wrinkles: {axis: y, rings_deg: [15, 45, 75]}}\n";
+
+TEST(WrinkleTable, RunWritesItAndPlisseWrinklesReproducesIt) {
+  const fs::path dir = scratch_directory("shell-wrinkles");
+  fs::create_directories(dir.parent_path());
+  const fs::path case_file = dir.parent_path() / "shell-wrinkles.yaml";
+  {
+    std::FILE* f = std::fopen(case_file.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fputs(kShell.c_str(), f);
+    std::fclose(f);
+  }
+  auto r = run_plisse_captured("run '" + case_file.string() + "' -o '" + dir.string() + "'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const nlohmann::json run = read_json_file(dir / "summary.json");
+  ASSERT_TRUE(run.contains("wrinkles")) << run.dump(1);
+  const auto& w = run["wrinkles"];
+  ASSERT_EQ(w["rings"].size(), 3u);
+  // A uniformly inflated octant with a 0.05 t random seed: the seed is in the reference shape
+  // and subtracted, so no ring comes near the threshold 0.1 t (the octant is a 90 degree sector).
+  EXPECT_FALSE(w["wrinkled"].get<bool>());
+  for (const auto& ring : w["rings"]) {
+    EXPECT_GT(ring["points"].get<int>(), 4);
+    EXPECT_EQ(ring["sector_deg"].get<double>(), 90.0);
+    EXPECT_LT(ring["amplitude"].get<double>(), 0.1);
+  }
+  // Biaxial tension everywhere: every column taut.
+  EXPECT_EQ(w["tension_field"]["wrinkled"].get<int>() + w["tension_field"]["slack"].get<int>(), 0);
+  EXPECT_EQ(w["tension_field"]["taut"].get<int>(), run["elements"].get<int>());
+  const HistoryTable h = read_history(dir / "history.csv");
+  for (double s : column(h, "stable")) EXPECT_EQ(s, 1.0);
+  for (double a : column(h, "wrinkle_amplitude")) EXPECT_LT(a, 0.1);
+  const auto expected = column(h, "expected_negative_pivots"), negative = column(h, "negative_pivots");
+  for (std::size_t k = 0; k < negative.size(); ++k) EXPECT_EQ(negative[k], expected[k]);
+  EXPECT_EQ(expected.front(), run["pressure_dofs"].get<double>());
+  const fs::path last = dir / ("step_" + std::string(4 - std::to_string(h.rows.size()).size(), '0') +
+                               std::to_string(h.rows.size()) + ".vtu");
+  bool has_state = false;
+  for (const auto& f : read_vtu_summary(last).cell_fields) has_state |= f.name == "wrinkle_state";
+  EXPECT_TRUE(has_state) << last;
+
+  // Another process rebuilds the (imperfect) mesh and the final state: the same table.
+  r = run_plisse_captured("wrinkles '" + dir.string() + "'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const nlohmann::json again = read_json_file(dir / "summary.json");
+  EXPECT_EQ(again["wrinkles"], w) << again["wrinkles"].dump(1) << "\nvs\n" << w.dump(1);
+
+  // Other rings on request; only output.wrinkles.* may change after the run.
+  r = run_plisse_captured("wrinkles '" + dir.string() + "' --set output.wrinkles.rings_deg=[30]");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(read_json_file(dir / "summary.json")["wrinkles"]["rings"].size(), 1u);
+  r = run_plisse_captured("wrinkles '" + dir.string() + "' --set mesh.layers=3");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("only output.wrinkles.* can change"), std::string::npos) << r.output;
+  r = run_plisse_captured("wrinkles '" + (dir / "nothing").string() + "'");
+  EXPECT_EQ(r.status, 2) << r.output;
+}
+
+}  // namespace
+}  // namespace plisse
