@@ -24,11 +24,13 @@
 #include <memory>
 #include <random>
 #include <set>
+#include <string>
 
 #include "mesh/box_mesh.hpp"
 #include "physics/pressure_load.hpp"
 #include "solver/eigenmodes.hpp"
 #include "solver/newton_solver.hpp"
+#include "solver/petsc_session.hpp"
 
 namespace plisse {
 namespace {
@@ -294,6 +296,24 @@ TEST(Eigenmodes, UnsymmetricTangentOfAFollowerPressure) {
     const Eigen::VectorXd r = K * x - modes[i].eigenvalue * m.cwiseProduct(x);
     EXPECT_LT(r.norm(), 1e-8 * K.norm() * x.norm()) << "mode " << i;
   }
+}
+
+TEST(Eigenmodes, NonConvergenceIsASolverError) {
+  // A tolerance below round-off cannot be met in two restarts: SLEPc stops short of `count`
+  // converged pairs, which must come back as a SolverError (the run keeps its last state).
+  const Mesh mesh = make_box_mesh(Vec3d(1.0, 1.0, 1.0), {2, 2, 2});
+  MixedModel model(mesh, make_material("neo-hookean", {{"c1", 0.5}}), 1.0 / 50.0,
+                   clamp_bottom_move_top(mesh, Vec3d::Zero()));
+  PetscSession::insert_options("-eps_max_it 2");
+  std::string message;
+  try {
+    lowest_eigenmodes(model, EigenOptions{4, 0.0, 1e-30});
+  } catch (const SolverError& e) {
+    message = e.what();
+  }
+  PetscOptionsClearValue(nullptr, "-eps_max_it");
+  std::cout << message << "\n";
+  EXPECT_NE(message.find("of 4 eigenpairs"), std::string::npos) << message;
 }
 
 TEST(Eigenmodes, RefusesMoreModesThanDofs) {
