@@ -67,8 +67,8 @@ std::vector<double> to_normalised_state(const MixedModel& model, Vec x) {
   int largest_node = -1;
   double largest = 0.0;
   for (int v = 0; v < dofs.n_nodes(); ++v) {
-    const double norm = Vec3d(state[DofMap::dof(v, 0)], state[DofMap::dof(v, 1)],
-                              state[DofMap::dof(v, 2)]).norm();
+    const double norm =
+        Vec3d(state[DofMap::dof(v, 0)], state[DofMap::dof(v, 1)], state[DofMap::dof(v, 2)]).norm();
     if (norm > largest) {
       largest = norm;
       largest_node = v;
@@ -91,10 +91,11 @@ std::vector<double> to_normalised_state(const MixedModel& model, Vec x) {
 }  // namespace
 
 std::vector<Eigenmode> lowest_eigenmodes(MixedModel& model, const EigenOptions& options) {
-  FE_CHECK(options.count >= 1, "lowest_eigenmodes: count must be at least 1, not " << options.count);
-  FE_CHECK(options.count <= model.n_free(), "lowest_eigenmodes: " << options.count
-                                                << " modes asked of a model with "
-                                                << model.n_free() << " free dofs");
+  FE_CHECK(options.count >= 1,
+           "lowest_eigenmodes: count must be at least 1, not " << options.count);
+  FE_CHECK(options.count <= model.n_free(),
+           "lowest_eigenmodes: " << options.count << " modes asked of a model with "
+                                 << model.n_free() << " free dofs");
   FE_CHECK(options.tolerance > 0, "lowest_eigenmodes: tolerance must be positive");
   EigenObjects o;
   o.K = model.create_matrix();
@@ -138,9 +139,8 @@ std::vector<Eigenmode> lowest_eigenmodes(MixedModel& model, const EigenOptions& 
     const char* text = nullptr;
     PetscErrorMessage(code, &text, nullptr);
     std::ostringstream out;
-    out << "eigenmodes: SLEPc failed (" << (text ? text : "unknown error")
-        << "); a singular K - " << options.target
-        << " M (target exactly on an eigenvalue) is a common cause";
+    out << "eigenmodes: SLEPc failed (" << (text ? text : "unknown error") << "); a singular K - "
+        << options.target << " M (target exactly on an eigenvalue) is a common cause";
     throw SolverError(out.str());
   }
   PetscInt n_converged = 0;

@@ -12,6 +12,8 @@
 // 1e-12; for a symmetric pencil the eigenvalue error is of the order of the residual squared
 // (Rayleigh quotient), so 1e-8 relative on λ leaves a wide margin for the dense solver's round-off
 // (~1e-13 relative for these condition numbers).
+#include "solver/eigenmodes.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -28,7 +30,6 @@
 
 #include "mesh/box_mesh.hpp"
 #include "physics/pressure_load.hpp"
-#include "solver/eigenmodes.hpp"
 #include "solver/newton_solver.hpp"
 #include "solver/petsc_session.hpp"
 
@@ -100,7 +101,8 @@ void expect_matches_dense_reference(MixedModel& model, const EigenOptions& optio
   const Eigen::VectorXd m = lumped_volume(model);
   std::vector<int> u, p;
   for (int d = 0; d < model.dofs().n_dofs(); ++d)
-    if (const int eq = model.dofs().equation(d); eq >= 0) (d % DofMap::kPerNode == 3 ? p : u).push_back(eq);
+    if (const int eq = model.dofs().equation(d); eq >= 0)
+      (d % DofMap::kPerNode == 3 ? p : u).push_back(eq);
   const auto block = [&](const std::vector<int>& rows, const std::vector<int>& cols) {
     Eigen::MatrixXd b(rows.size(), cols.size());
     for (size_t i = 0; i < rows.size(); ++i)
@@ -146,8 +148,8 @@ void expect_matches_dense_reference(MixedModel& model, const EigenOptions& optio
   Eigen::VectorXd mu(u.size());
   for (size_t i = 0; i < u.size(); ++i) mu[i] = m[u[i]];
   const Eigen::MatrixXd Mz = Z.transpose() * mu.asDiagonal() * Z;
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(0.5 * (S + S.transpose()),
-                                                                        0.5 * (Mz + Mz.transpose()));
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(
+      0.5 * (S + S.transpose()), 0.5 * (Mz + Mz.transpose()));
   ASSERT_EQ(dense.info(), Eigen::Success);
   std::vector<double> reference(dense.eigenvalues().data(),
                                 dense.eigenvalues().data() + dense.eigenvalues().size());
@@ -230,7 +232,8 @@ TEST(Eigenmodes, TargetInsideTheSpectrumNearlyIncompressibleRandomState) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   for (int d = 0; d < model.dofs().n_dofs(); ++d)
-    if (model.dofs().equation(d) >= 0) model.state()[d] = (d % 4 == 3 ? 0.1 : 0.02) * uniform(random);
+    if (model.dofs().equation(d) >= 0)
+      model.state()[d] = (d % 4 == 3 ? 0.1 : 0.02) * uniform(random);
   // A target between eigenvalues (not at the bottom of the spectrum) exercises the selection
   // "nearest the target" and the ascending order of the result.
   expect_matches_dense_reference(model, EigenOptions{5, 20.0, 1e-12}, /*expected_kernel=*/0);
@@ -254,27 +257,31 @@ TEST(Eigenmodes, UnsymmetricTangentOfAFollowerPressure) {
   std::mt19937 random(3);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   for (int d = 0; d < model.dofs().n_dofs(); ++d)
-    if (model.dofs().equation(d) >= 0) model.state()[d] = (d % 4 == 3 ? 0.1 : 0.02) * uniform(random);
+    if (model.dofs().equation(d) >= 0)
+      model.state()[d] = (d % 4 == 3 ? 0.1 : 0.02) * uniform(random);
 
   const Eigen::MatrixXd K = dense_tangent(model);
-  ASSERT_GT((K - K.transpose()).norm(), 1e-6 * K.norm()) << "the load stiffness should be unsymmetric";
+  ASSERT_GT((K - K.transpose()).norm(), 1e-6 * K.norm())
+      << "the load stiffness should be unsymmetric";
   const Eigen::VectorXd m = lumped_volume(model);
   std::vector<int> u, p;
   for (int d = 0; d < model.dofs().n_dofs(); ++d)
-    if (const int eq = model.dofs().equation(d); eq >= 0) (d % DofMap::kPerNode == 3 ? p : u).push_back(eq);
+    if (const int eq = model.dofs().equation(d); eq >= 0)
+      (d % DofMap::kPerNode == 3 ? p : u).push_back(eq);
   const auto block = [&](const std::vector<int>& rows, const std::vector<int>& cols) {
     Eigen::MatrixXd b(rows.size(), cols.size());
     for (size_t i = 0; i < rows.size(); ++i)
       for (size_t j = 0; j < cols.size(); ++j) b(i, j) = K(rows[i], cols[j]);
     return b;
   };
-  const Eigen::MatrixXd S = block(u, u) - block(u, p) * block(p, p).partialPivLu().solve(block(p, u));
+  const Eigen::MatrixXd S =
+      block(u, u) - block(u, p) * block(p, p).partialPivLu().solve(block(p, u));
   Eigen::VectorXd inverse_mu(u.size());
   for (size_t i = 0; i < u.size(); ++i) inverse_mu[i] = 1.0 / m[u[i]];
   const Eigen::EigenSolver<Eigen::MatrixXd> dense(inverse_mu.asDiagonal() * S, false);
   ASSERT_EQ(dense.info(), Eigen::Success);
-  std::vector<std::complex<double>> reference(dense.eigenvalues().data(),
-                                              dense.eigenvalues().data() + dense.eigenvalues().size());
+  std::vector<std::complex<double>> reference(
+      dense.eigenvalues().data(), dense.eigenvalues().data() + dense.eigenvalues().size());
   const EigenOptions options{4, 0.0, 1e-12};
   std::sort(reference.begin(), reference.end(), [&](auto a, auto b) {
     return std::abs(a - options.target) < std::abs(b - options.target);
@@ -289,8 +296,9 @@ TEST(Eigenmodes, UnsymmetricTangentOfAFollowerPressure) {
   ASSERT_EQ(static_cast<int>(modes.size()), options.count);
   for (int i = 0; i < options.count; ++i) {
     const double expected = reference[i].real();
-    std::cout << "  lambda_" << i << " = " << modes[i].eigenvalue << ", relative difference to dense "
-              << (modes[i].eigenvalue - expected) / expected << "\n";
+    std::cout << "  lambda_" << i << " = " << modes[i].eigenvalue
+              << ", relative difference to dense " << (modes[i].eigenvalue - expected) / expected
+              << "\n";
     EXPECT_NEAR(modes[i].eigenvalue, expected, 1e-8 * std::abs(expected)) << "mode " << i;
     const Eigen::VectorXd x = free_part(model, modes[i].state);
     const Eigen::VectorXd r = K * x - modes[i].eigenvalue * m.cwiseProduct(x);

@@ -1,9 +1,10 @@
 // The clamped strip of clamped_strip_test.cpp on 3, 4 and 5 layers (6.7k, 14k and 26k dofs;
-// about a minute on a quiet machine, three on a loaded one): the order p of the excess critical strain, from the three meshes alone
-// (no use of the exact value), is close to 2, and the extrapolation r_0 of r(h) = r_0 + C h^p
-// is within 4 % of beam theory (docs/theory/eigenmodes.md, section 6): the 3 % that the physics
-// left out of beam theory may account for, plus about 1 % because p is estimated (p = 2.09
-// instead of 2 moves r_0 by 0.6 %). Measured: p = 2.09, r_0 = 1.022.
+// about a minute on a quiet machine, three on a loaded one): the order p of the excess critical
+// strain, from the three meshes alone (no use of the exact value), is close to 2, and the
+// extrapolation r_0 of r(h) = r_0 + C h^p is within 4 % of beam theory (docs/theory/eigenmodes.md,
+// section 6): the 3 % that the physics left out of beam theory may account for, plus about 1 %
+// because p is estimated (p = 2.09 instead of 2 moves r_0 by 0.6 %).
+// Measured: p = 2.09, r_0 = 1.022.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -13,11 +13,11 @@
 //  - the critical mode is the symmetric clamped-clamped shape w ∝ 1 - cos(2πx/L): correlation of
 //    the section-averaged lateral displacement > 0.95, and it is a through-thickness mode.
 // About 15 s on a quiet machine (5 steps per mesh, 6.7k and 14k dofs).
+#include "verification/buckling/fixtures/clamped_strip.hpp"
+
 #include <gtest/gtest.h>
 
 #include <iostream>
-
-#include "verification/buckling/fixtures/clamped_strip.hpp"
 
 namespace plisse::test {
 namespace {
