@@ -494,9 +494,10 @@ ChildLimits gmsh_reader_limits(std::uintmax_t file_bytes) {
   constexpr double kCpuSecondsPerMiB = 4.0;
   const double mib = static_cast<double>(file_bytes) / static_cast<double>(1 << 20);
   ChildLimits limits;
-  limits.memory_bytes =
-      kMemoryFloor + std::min<std::uint64_t>(file_bytes, std::uint64_t{1} << 40) * kMemoryPerFileByte;
-  limits.cpu_seconds = static_cast<unsigned>(std::min(kCpuFloorSeconds + kCpuSecondsPerMiB * mib, 1e6));
+  limits.memory_bytes = kMemoryFloor + std::min<std::uint64_t>(file_bytes, std::uint64_t{1} << 40) *
+                                           kMemoryPerFileByte;
+  limits.cpu_seconds =
+      static_cast<unsigned>(std::min(kCpuFloorSeconds + kCpuSecondsPerMiB * mib, 1e6));
   limits.wall_seconds = 2.0 * limits.cpu_seconds + 10.0;  // leaves room for a loaded machine
   return limits;
 }
@@ -538,8 +539,9 @@ Mesh read_gmsh(const std::string& path, GmshReadInfo& info, const ChildLimits& l
                                " (the Gmsh reader process was stopped by " +
                                describe_signal(child.signal) + ")");
   if (child.end == ChildResult::End::killed_by_signal)
-    throw file_error(path, malformed + "Gmsh's reader failed on it: the reader process was "
-                                       "killed by " +
+    throw file_error(path, malformed +
+                               "Gmsh's reader failed on it: the reader process was "
+                               "killed by " +
                                describe_signal(child.signal));
   if (child.exit_status != 0)
     throw file_error(path, malformed + "the Gmsh reader process stopped with exit status " +

@@ -4,11 +4,10 @@
 // or allocates without bound are InputErrors naming the file, the signal or the limit.
 #include <fcntl.h>
 #include <gmsh.h>
+#include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
-#include <gtest/gtest.h>
 
 #include <chrono>
 #include <csignal>
@@ -57,7 +56,8 @@ bool no_child_left() { return ::waitpid(-1, nullptr, WNOHANG) == -1 && errno == 
 TEST(IsolatedProcess, ReturnsWhatTheChildWroteByteForByte) {
   std::string big(3'000'000, '\0');  // far more than a pipe buffer (64 KiB): no deadlock
   for (std::size_t i = 0; i < big.size(); ++i) big[i] = static_cast<char>(i * 7919 % 251);
-  const ChildResult r = run_isolated([&](ChildOutput& out) { send_text(out, big); }, small_limits());
+  const ChildResult r =
+      run_isolated([&](ChildOutput& out) { send_text(out, big); }, small_limits());
   EXPECT_EQ(r.end, ChildResult::End::exited);
   EXPECT_EQ(r.exit_status, 0);
   EXPECT_TRUE(text_of(r) == big) << r.output.size() << " bytes back";
@@ -97,7 +97,8 @@ TEST(IsolatedProcess, StopsAChildAtItsCpuTimeLimit) {
         while (true) x = x + 1;
       },
       limits);
-  EXPECT_TRUE(r.cpu_limit_hit(limits)) << describe_signal(r.signal) << ", " << r.cpu_seconds << " s";
+  EXPECT_TRUE(r.cpu_limit_hit(limits))
+      << describe_signal(r.signal) << ", " << r.cpu_seconds << " s";
   // SIGXCPU at 1 s of CPU, SIGKILL at 2 s at the latest (CPU time, whatever the machine's load).
   EXPECT_GE(r.cpu_seconds, 0.9);
   EXPECT_LE(r.cpu_seconds, 2.1);
@@ -108,7 +109,8 @@ TEST(IsolatedProcess, KillsAChildThatOutlivesTheWallTimeLimit) {
   limits.wall_seconds = 0.3;
   const auto start = std::chrono::steady_clock::now();
   const ChildResult r = run_isolated([](ChildOutput&) { ::sleep(60); }, limits);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(r.end, ChildResult::End::wall_time_exceeded);
   EXPECT_LT(wall, 3.0);
   EXPECT_TRUE(no_child_left());
@@ -167,8 +169,7 @@ TEST(GmshReply, RoundTripsAndRefusesEveryTruncationAndTrailingByte) {
   m.coordinates = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
   m.blocks = {{4, {10}, {1, 2, 3, 4}}, {2, {11}, {1, 3, 2}}};
   m.groups = {{2, 5, "bottom", {{2, {11}}}}};
-  const ChildResult r =
-      run_isolated([&](ChildOutput& out) { send_model(m, out); }, small_limits());
+  const ChildResult r = run_isolated([&](ChildOutput& out) { send_model(m, out); }, small_limits());
   GmshReaderReply reply;
   ASSERT_TRUE(decode_reply(r.output, reply));
   ASSERT_EQ(reply.kind, GmshReaderReply::Kind::model);
@@ -225,7 +226,8 @@ TEST(GmshIsolation, HugeAnnouncedNodeCountIsAMalformedMeshNotAnAllocation) {
   const std::string path = regression_file("huge-node-count-aborts-under-asan.msh");
   const auto start = std::chrono::steady_clock::now();
   const std::string message = read_error(path);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_NE(message.find("the mesh file is malformed"), std::string::npos) << message;
 #ifndef PLISSE_TEST_ASAN
   EXPECT_NE(message.find("memory limit of 1024 MiB for a file of 93 bytes"), std::string::npos)
