@@ -477,6 +477,19 @@ bool ends_with_msh(const std::string& path) {
   return ext == ".msh";
 }
 
+/// True when the file begins like an MSH file by Gmsh's own test (MergeFile in Gmsh's
+/// Common/OpenFile.cpp compares the first line with these prefixes and hands anything else to
+/// its .geo script parser, which can run shell commands, or to its post-processing reader).
+bool begins_like_msh(const std::string& path) {
+  char head[16] = {};
+  std::ifstream in(path, std::ios::binary);
+  in.read(head, sizeof head);
+  const std::string start(head, static_cast<std::size_t>(in.gcount()));
+  for (const char* prefix : {"$MeshFormat", "$Comments", "$NO", "$PTS", "$PARA", "$ELM"})
+    if (start.rfind(prefix, 0) == 0) return true;
+  return false;
+}
+
 }  // namespace
 
 Mesh read_gmsh(const std::string& path) {
@@ -518,6 +531,10 @@ Mesh read_gmsh(const std::string& path, GmshReadInfo& info, const ChildLimits& l
                      "the mesh file name must end in .msh (Gmsh would read any other file as a "
                      "script and run it)");
   if (!std::ifstream(path).good()) throw file_error(path, "cannot open the mesh file for reading");
+  if (!begins_like_msh(path))
+    throw file_error(path,
+                     "not a Gmsh mesh file: it must begin with $MeshFormat (MSH 2 and 4) or $NOD "
+                     "(MSH 1); Gmsh would run any other content as a script");
   const std::uintmax_t file_bytes = std::filesystem::file_size(path, ec);
   const std::string size_note = "for a file of " + std::to_string(file_bytes) + " bytes";
   const std::string malformed = "the mesh file is malformed: ";

@@ -35,9 +35,10 @@ struct GmshReadInfo {
 
 /// Reads a tetrahedral mesh. Physical groups of dimension 2 become surface tags, of dimension 3
 /// volume tags (unnamed groups are called "<dim>:<tag>"). Linear and second-order (10-node)
-/// tetrahedra are read; other volume element types, a missing or unreadable file, a name that
-/// does not end in ".msh" and a mesh without tetrahedra are reported as InputError naming the
-/// file.
+/// tetrahedra are read; other volume element types, a missing or unreadable file, a mesh without
+/// tetrahedra, and a file that is not named "*.msh" or does not begin like an MSH file
+/// ("$MeshFormat", "$NOD", ...: Gmsh would run it as a .geo script) are reported as InputError
+/// naming the file.
 ///
 /// The Gmsh SDK reads the file in a forked child process with resource limits
 /// (`gmsh_reader_limits`, isolated_process.hpp), which sends the model back through a pipe

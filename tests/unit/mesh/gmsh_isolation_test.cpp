@@ -237,12 +237,19 @@ TEST(GmshIsolation, HugeAnnouncedNodeCountIsAMalformedMeshNotAnAllocation) {
 }
 
 TEST(GmshIsolation, OnlyMshFilesAreGivenToGmsh) {
-  // Gmsh reads any other name as a .geo script, which can run shell commands (SystemCall).
+  // Gmsh reads any other name, or a .msh file that does not begin like one, as a .geo script,
+  // which can run shell commands (SystemCall).
   const auto dir = test::scratch_dir("extension");
   const std::string script = (dir / "mesh.geo").string();
   std::ofstream(script) << "SystemCall \"touch " << (dir / "ran").string() << "\";\n";
   const std::string message = read_error(script);
   EXPECT_NE(message.find("must end in .msh"), std::string::npos) << message;
+  EXPECT_FALSE(std::filesystem::exists(dir / "ran"));
+  // Named .msh, Gmsh still runs it as a script unless it begins like an MSH file.
+  const std::string disguised = (dir / "mesh.msh").string();
+  std::filesystem::copy_file(script, disguised);
+  const std::string disguised_message = read_error(disguised);
+  EXPECT_NE(disguised_message.find("not a Gmsh mesh file"), std::string::npos) << disguised_message;
   EXPECT_FALSE(std::filesystem::exists(dir / "ran"));
   MeshGenerationSpec spec;
   spec.kind = "cube";
