@@ -31,10 +31,12 @@ class Finding : public std::logic_error {
 /// override parser is fuzzed through the same input.
 Outcome parse_case(Bytes data);
 
-/// read_gmsh on the bytes written to a temporary ".msh" file. Gmsh is one global state: after each
-/// input the target checks that the reader left nothing behind (no model entities, no views,
-/// no pending log), and every kReferenceEvery-th input re-reads a reference mesh that must come
-/// back identical. Accepted meshes must satisfy read_gmsh's postconditions (indices in range).
+/// read_gmsh on the bytes written to a temporary ".msh" file, with tighter limits for its reader
+/// process than a user's file gets (Gmsh itself runs in that process: what crashes or exhausts it
+/// is a rejected input). Gmsh is one global state: after each input the target checks that the
+/// reader left nothing behind in this process (no model entities, no views, no pending log), and
+/// every kReferenceEvery-th input re-reads a reference mesh that must come back identical.
+/// Accepted meshes must satisfy read_gmsh's postconditions (indices in range).
 Outcome read_mesh(Bytes data);
 
 /// read_history on the bytes written to a temporary history.csv; an accepted plisse history
