@@ -17,9 +17,8 @@ struct RunOptions {
   std::string resume_directory;          ///< --resume DIR: continue from DIR/checkpoint.bin
 };
 
-/// What the case file allows but this build cannot solve yet (second-order meshes, loads,
-/// cavities, dies, the incremental scheme, stability checks), each as an InputError naming the
-/// key. `plisse run` refuses the first; `plisse check` lists them as warnings.
+/// What the case file allows but this build cannot solve yet (second-order meshes, the
+/// incremental scheme), each as an InputError naming the key. `plisse run` refuses the first; `plisse check` lists them as warnings.
 std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh);
 
 /// Checks the PETSc options of the case (solver.petsc_options) and of the command line (--petsc)

@@ -3,6 +3,7 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -31,18 +32,33 @@ bool is_flat(const SurfaceTriangulation& s, const std::array<int, 3>& tri,
   return false;
 }
 
-/// Renumbers the nodes in lexicographic order of their coordinates (rounded to `resolution`) and
-/// sorts the triangles (each rotated to start at its smallest node, orientation kept). OpenCASCADE
-/// numbers the patches glued by removeAllDuplicates in an order that depends on memory addresses,
-/// so the same options gave differently numbered meshes in different processes (a checkpoint or
-/// `plisse wrinkles` would then read a state onto the wrong nodes); the triangulation itself is
-/// the same, so a canonical order makes the generated mesh a function of the options alone.
+/// splitmix64's finaliser: a fixed bijection of 64-bit integers that scatters nearby values.
+std::uint64_t scramble(std::uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+/// Renumbers the nodes in a canonical order and sorts the triangles (each rotated to start at its
+/// smallest node, orientation kept). OpenCASCADE numbers the patches glued by removeAllDuplicates
+/// in an order that depends on memory addresses, so the same options gave differently numbered
+/// meshes in different processes (a checkpoint or `plisse wrinkles` would then read a state onto
+/// the wrong nodes); the triangulation itself is the same, so a canonical order makes the
+/// generated mesh a function of the options alone. The order is a scrambled hash of the rounded
+/// coordinates, not a lexicographic one: the layered shell splits each prism into tetrahedra by
+/// node numbers, and a coordinate order would turn every diagonal the same way, a biased mesh
+/// that measurably loses accuracy (thick sphere inflation: 1.2 % error instead of 0.5 %).
 void canonicalize(SurfaceTriangulation& s, double resolution) {
   const std::size_t n = s.nodes.size();
-  std::vector<std::array<long long, 3>> key(n);
-  for (std::size_t i = 0; i < n; ++i)
-    for (int k = 0; k < 3; ++k)
-      key[i][static_cast<std::size_t>(k)] = std::llround(s.nodes[i][k] / resolution);
+  std::vector<std::array<long long, 4>> key(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint64_t h = 0;
+    for (int k = 0; k < 3; ++k) {
+      key[i][static_cast<std::size_t>(k) + 1] = std::llround(s.nodes[i][k] / resolution);
+      h = scramble(h ^ static_cast<std::uint64_t>(key[i][static_cast<std::size_t>(k) + 1]));
+    }
+    key[i][0] = static_cast<long long>(h >> 1);
+  }
   std::vector<int> order(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<int>(i);
   std::sort(order.begin(), order.end(), [&](int p, int q) {

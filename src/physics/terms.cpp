@@ -27,10 +27,9 @@ std::vector<std::unique_ptr<ModelTerm>> make_terms(const Case& c, const Mesh& me
     terms.push_back(make_cavity_term(cavity, mesh, constraints));
   for (const Die& die : c.dies) terms.push_back(make_die_term(die, c, mesh, constraints));
   if (c.solver.viscosity > 0.0) {
-    // ℓ of docs/theory/viscous.md (V1): the wall thickness of a generated shell, airbag or sheet,
-    // else the mean edge length of the mesh.
-    const bool has_wall = c.mesh.generate.has_value() && c.mesh.generate->kind != "cube";
-    const double length = has_wall ? c.mesh.generate->thickness : mean_edge_length(mesh);
+    // ℓ of docs/theory/viscous.md (V1): the wall thickness (generated shell, airbag or sheet, or
+    // `mesh.thickness` of a file mesh), else the mean edge length of the mesh.
+    const double length = c.mesh.wall_thickness().value_or(mean_edge_length(mesh));
     terms.push_back(
         std::make_unique<ViscousDamping>(mesh, c.solver.viscosity, length, constraints));
   }

@@ -44,18 +44,19 @@ bool has_point_field(const fs::path& vtu, const std::string& name) {
   return false;
 }
 
-/// The three strip runs share the perfect one (its modes seed the imperfect one).
+/// Each test starts from its own run of the perfect strip (CTest runs the tests of this file as
+/// separate processes, possibly at the same time: no shared directory).
 class StripBuckling : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    perfect_ = new fs::path(scratch_directory("strip-perfect"));
-    const auto r = run_plisse_captured("run '" + kStrip + "' -o '" + perfect_->string() + "'");
+  void SetUp() override {
+    const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    perfect_dir_ = scratch_directory("strip-perfect-" + name);
+    const auto r = run_plisse_captured("run '" + kStrip + "' -o '" + perfect_dir_.string() + "'");
     ASSERT_EQ(r.status, 0) << r.output;
   }
-  static void TearDownTestSuite() { delete perfect_; }
-  static fs::path* perfect_;
+  fs::path perfect_dir_;
+  const fs::path* perfect_ = &perfect_dir_;
 };
-fs::path* StripBuckling::perfect_ = nullptr;
 
 TEST_F(StripBuckling, CheckFindsTheInstabilityAndWritesItsModes) {
   const nlohmann::json s = read_json_file(*perfect_ / "summary.json");

@@ -1,0 +1,326 @@
+"""Parameter studies: run one case for several values of a key and write a Markdown report.
+
+Usage: scripts/study STUDY.yaml [--runs DIR] [--docs DIR] [--reuse] [--only VALUE...]
+
+A study file names a case, the key to vary and its values (docs/studies/README.md):
+
+    name: layers                      # report docs/studies/layers.md, figures docs/studies/layers/
+    title: Tetrahedra through the wall
+    case: ../examples/sphere-indentation.yaml   # relative to the study file
+    set: [solver.stability.check=true]          # overrides for every run (optional)
+    vary: {key: mesh.layers, values: [1, 2, 3, 4], label: tetrahedra through the wall}
+    discussion: |
+      Markdown written under the table.
+
+Each run is `build/bin/plisse run CASE -o RUNS/<name>/<key>=<value> --set key=value ...`; the
+report reads each run's summary.json (wrinkle table, steps, times), history.csv and last VTU
+(deformed outer surface coloured by its normal deviation from the axisymmetric mean shape).
+A run that fails (exit status 1) is reported as such with its message; bad input (2) stops.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+import xml.etree.ElementTree as ET
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import meshio  # noqa: E402
+import numpy as np  # noqa: E402
+import yaml  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+AXES = {"x": 0, "y": 1, "z": 2}
+
+
+def fail(message):
+    print(f"scripts/study: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
+def load_study(path):
+    try:
+        with open(path) as f:
+            s = yaml.safe_load(f)
+    except (OSError, yaml.YAMLError) as e:
+        fail(f"{path}: {e}")
+    if not isinstance(s, dict):
+        fail(f"{path}: expected a map (name, title, case, vary, ...)")
+    allowed = {"name", "title", "case", "set", "vary", "discussion", "intro"}
+    for key in s:
+        if key not in allowed:
+            fail(f"{path}: key '{key}': unknown key; allowed: {', '.join(sorted(allowed))}")
+    for key in ("name", "case", "vary"):
+        if key not in s:
+            fail(f"{path}: key '{key}' is required")
+    vary = s["vary"]
+    if not isinstance(vary, dict) or "key" not in vary or not isinstance(vary.get("values"), list) \
+            or not vary["values"]:
+        fail(f"{path}: key 'vary': needs 'key' and a non-empty list 'values'")
+    s["case"] = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(path)), s["case"]))
+    if not os.path.isfile(s["case"]):
+        fail(f"{path}: key 'case': no such file {s['case']}")
+    s.setdefault("set", [])
+    s.setdefault("title", s["name"])
+    return s
+
+
+def yaml_value(v):
+    return json.dumps(v) if isinstance(v, (list, dict)) else str(v).lower() if isinstance(v, bool) \
+        else str(v)
+
+
+def run_one(study, value, run_dir, reuse):
+    summary = os.path.join(run_dir, "summary.json")
+    if reuse and os.path.isfile(summary):
+        return {"status": "reused", "seconds": None}
+    cmd = [os.path.join(ROOT, "build", "bin", "plisse"), "run", study["case"], "-o", run_dir]
+    for o in study["set"] + [f"{study['vary']['key']}={yaml_value(value)}"]:
+        cmd += ["--set", o]
+    print("scripts/study: " + " ".join(cmd), flush=True)
+    t0 = time.time()
+    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    seconds = time.time() - t0
+    with open(os.path.join(os.path.dirname(run_dir), os.path.basename(run_dir) + ".out"), "w") as f:
+        f.write(proc.stdout)
+    if proc.returncode == 2:
+        print(proc.stdout, file=sys.stderr)
+        fail(f"plisse refused the input for {study['vary']['key']} = {value}")
+    last = [l for l in proc.stdout.splitlines() if l.strip()]
+    return {"status": "ok" if proc.returncode == 0 else "failed", "seconds": seconds,
+            "message": last[-1] if last else ""}
+
+
+def read_history(run_dir):
+    path = os.path.join(run_dir, "history.csv")
+    if not os.path.isfile(path):
+        return {}
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    if len(rows) < 2:
+        return {}
+    cols = rows[0]
+    data = np.array([[float(x) if x not in ("", "nan") else np.nan for x in r] for r in rows[1:]])
+    return {c: data[:, i] for i, c in enumerate(cols)}
+
+
+def last_vtu(run_dir):
+    pvd = os.path.join(run_dir, "solution.pvd")
+    if not os.path.isfile(pvd):
+        return None
+    files = [d.get("file") for d in ET.parse(pvd).getroot().iter("DataSet")]
+    return os.path.join(run_dir, files[-1]) if files else None
+
+
+def outer_surface(points, tets, center):
+    """Boundary faces of the tetrahedra whose outward normal points away from `center`."""
+    faces = np.concatenate([tets[:, [0, 2, 1]], tets[:, [0, 1, 3]], tets[:, [1, 2, 3]],
+                            tets[:, [0, 3, 2]]])
+    key = np.sort(faces, axis=1)
+    _, inverse, counts = np.unique(key, axis=0, return_inverse=True, return_counts=True)
+    boundary = faces[counts[inverse.ravel()] == 1]
+    p = points[boundary]
+    n = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    r = p.mean(axis=1) - center
+    cosine = np.einsum("ij,ij->i", n, r) / (np.linalg.norm(n, axis=1) * np.linalg.norm(r, axis=1)
+                                            + 1e-300)
+    return boundary[cosine > 0.3]
+
+
+def normal_deviation(X, x, axis, center):
+    """Deviation of the deformed points x from the mean deformed shape of their reference latitude,
+    along the mean shape's normal (bins of 0.5 degree of reference latitude)."""
+    a = np.zeros(3)
+    a[axis] = 1.0
+
+    def cyl(p):
+        r = p - center
+        h = r @ a
+        rho = np.linalg.norm(r - np.outer(h, a), axis=1)
+        return rho, h
+
+    rho0, h0 = cyl(X)
+    lat = np.degrees(np.arctan2(h0, rho0))
+    rho, h = cyl(x)
+    bins = np.round(lat / 0.5).astype(int)
+    uniq, inv = np.unique(bins, return_inverse=True)
+    inv = inv.ravel()
+    mean_rho = np.bincount(inv, rho) / np.bincount(inv)
+    mean_h = np.bincount(inv, h) / np.bincount(inv)
+    # Meridian tangent of the mean curve by differences over latitude; the normal is its rotation.
+    t_rho = np.gradient(mean_rho) if len(uniq) > 1 else np.zeros_like(mean_rho)
+    t_h = np.gradient(mean_h) if len(uniq) > 1 else np.ones_like(mean_h)
+    norm = np.hypot(t_rho, t_h) + 1e-300
+    n_rho, n_h = t_h / norm, -t_rho / norm
+    return (rho - mean_rho[inv]) * n_rho[inv] + (h - mean_h[inv]) * n_h[inv]
+
+
+def surface_figure(vtu, case_wrinkles, path, title):
+    mesh = meshio.read(vtu)
+    X = mesh.points
+    tets = mesh.cells_dict.get("tetra")
+    if tets is None or "displacement" not in mesh.point_data:
+        return False
+    x = X + mesh.point_data["displacement"]
+    axis = AXES.get(case_wrinkles.get("axis", "y"), 1)
+    center = np.array(case_wrinkles.get("center", [0.0, 0.0, 0.0]), dtype=float)
+    tris = outer_surface(X, tets, center)
+    used = np.unique(tris)
+    dev = np.zeros(len(X))
+    dev[used] = normal_deviation(X[used], x[used], axis, center)
+    face_dev = dev[tris].mean(axis=1)
+    limit = max(np.percentile(np.abs(face_dev), 99), 1e-6)
+    fig = plt.figure(figsize=(6.4, 5.2))
+    ax = fig.add_subplot(projection="3d")
+    # Show the wrinkle axis vertical: plot (u, v, w) with w along the axis.
+    order = [(axis + 1) % 3, (axis + 2) % 3, axis]
+    surf = ax.plot_trisurf(x[:, order[0]], x[:, order[1]], x[:, order[2]], triangles=tris,
+                           cmap="coolwarm", linewidth=0, antialiased=False, shade=False)
+    surf.set_array(face_dev)
+    surf.set_clim(-limit, limit)
+    fig.colorbar(surf, ax=ax, shrink=0.7, label="normal deviation [mm]")
+    ax.set_box_aspect(np.ptp(x[used][:, order], axis=0) + 1e-9)
+    ax.view_init(elev=25, azim=35)
+    ax.set_axis_off()
+    ax.set_title(title, fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return True
+
+
+def case_wrinkle_settings(case_path):
+    with open(case_path) as f:
+        c = yaml.safe_load(f)
+    return ((c or {}).get("output") or {}).get("wrinkles") or {}
+
+
+def fmt(v, spec="{:.3g}"):
+    if v is None or (isinstance(v, float) and math.isnan(v)):
+        return "–"
+    return spec.format(v) if isinstance(v, (int, float)) else str(v)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    ap.add_argument("study")
+    ap.add_argument("--runs", default=os.path.join(ROOT, "runs", "studies"))
+    ap.add_argument("--docs", default=os.path.join(ROOT, "docs", "studies"))
+    ap.add_argument("--reuse", action="store_true", help="keep runs that already have summary.json")
+    args = ap.parse_args()
+    study = load_study(args.study)
+    name, key = study["name"], study["vary"]["key"]
+    label = study["vary"].get("label", key)
+    fig_dir = os.path.join(args.docs, name)
+    os.makedirs(fig_dir, exist_ok=True)
+    wrinkle_settings = case_wrinkle_settings(study["case"])
+    results = []
+    for value in study["vary"]["values"]:
+        run_dir = os.path.join(args.runs, name, f"{key}={yaml_value(value)}")
+        os.makedirs(os.path.dirname(run_dir), exist_ok=True)
+        info = run_one(study, value, run_dir, args.reuse)
+        summary = {}
+        if os.path.isfile(os.path.join(run_dir, "summary.json")):
+            with open(os.path.join(run_dir, "summary.json")) as f:
+                summary = json.load(f)
+        history = read_history(run_dir)
+        figure = None
+        vtu = last_vtu(run_dir)
+        if vtu:
+            figure = f"{name}/surface_{yaml_value(value)}.png"
+            if not surface_figure(vtu, wrinkle_settings, os.path.join(args.docs, figure),
+                                  f"{label} = {value}"):
+                figure = None
+        results.append({"value": value, "info": info, "summary": summary, "history": history,
+                        "figure": figure, "run_dir": run_dir})
+
+    # Amplitude and count against the parameter.
+    xs = [r["value"] for r in results]
+    numeric = all(isinstance(v, (int, float)) for v in xs)
+    amp = [((r["summary"].get("wrinkles") or {}).get("max_amplitude", np.nan)) for r in results]
+    count = []
+    for r in results:
+        rings = (r["summary"].get("wrinkles") or {}).get("rings", [])
+        best = max(rings, key=lambda g: g.get("amplitude", 0.0), default=None)
+        count.append(best["count"] if best else np.nan)
+    fig, ax1 = plt.subplots(figsize=(6, 3.6))
+    pos = xs if numeric else list(range(len(xs)))
+    ax1.plot(pos, amp, "o-", color="tab:red", label="max amplitude")
+    ax1.set_xlabel(label)
+    ax1.set_ylabel("max peak-to-peak amplitude [mm]", color="tab:red")
+    if numeric and min(xs) > 0 and max(xs) / min(xs) > 50:
+        ax1.set_xscale("log")
+    ax2 = ax1.twinx()
+    ax2.plot(pos, count, "s--", color="tab:blue", label="count")
+    ax2.set_ylabel("wrinkle count (ring of max amplitude)", color="tab:blue")
+    if not numeric:
+        ax1.set_xticks(pos, [str(v) for v in xs])
+    fig.tight_layout()
+    trend = f"{name}/amplitude_count.png"
+    fig.savefig(os.path.join(args.docs, trend), dpi=110)
+    plt.close(fig)
+
+    lines = [f"# Study: {study['title']}", "",
+             "Generated by `scripts/study " + os.path.relpath(os.path.abspath(args.study), ROOT) +
+             "` (do not edit by hand).", "",
+             f"Case: `{os.path.relpath(study['case'], ROOT)}`, varying `{key}` ({label})" +
+             (", with " + ", ".join(f"`--set {o}`" for o in study["set"]) if study["set"] else "") +
+             ".", ""]
+    if study.get("intro"):
+        lines += [study["intro"].strip(), ""]
+    lines += [f"| {label} | outcome | steps | Newton its | unknowns | wall time [s] | stable to the end |"
+              " instability at t | wrinkled | max amplitude [mm] | count | wavelength [mm] |",
+              "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r, a, m in zip(results, amp, count):
+        s, h = r["summary"], r["history"]
+        w = s.get("wrinkles") or {}
+        rings = w.get("rings", [])
+        best = max(rings, key=lambda g: g.get("amplitude", 0.0), default=None)
+        outcome = "completed" if s.get("completed") else ("stopped: " + s.get("failure", "") if s
+                                                          else r["info"].get("message", "failed"))
+        stable = h.get("stable")
+        first_unstable = None
+        if stable is not None and len(stable):
+            bad = np.where(stable < 0.5)[0]
+            first_unstable = h["time"][bad[0]] if len(bad) else None
+        lines.append("| " + " | ".join([
+            str(r["value"]), outcome.replace("|", "/"), fmt(s.get("steps")),
+            fmt(s.get("newton_iterations")), fmt(s.get("free_dofs")),
+            fmt((s.get("wall_time") or {}).get("total"), "{:.0f}"),
+            "–" if stable is None else ("yes" if first_unstable is None else "no"),
+            fmt(first_unstable), fmt(w.get("wrinkled")), fmt(a), fmt(m),
+            fmt(best.get("wavelength") if best else None)]) + " |")
+    lines += ["", f"![amplitude and count against {label}]({trend})", ""]
+    lines += ["## Rings of each run", ""]
+    for r in results:
+        rings = (r["summary"].get("wrinkles") or {}).get("rings", [])
+        if not rings:
+            continue
+        lines += [f"{label} = {r['value']}:", "", "| latitude [deg] | count | amplitude [mm] | wavelength [mm] |",
+                  "|---|---|---|---|"]
+        for g in rings:
+            lines.append(f"| {fmt(g.get('latitude_deg'))} | {fmt(g.get('count'))} | "
+                         f"{fmt(g.get('amplitude'))} | {fmt(g.get('wavelength'))} |")
+        lines.append("")
+    lines += ["## Deformed outer surfaces", "",
+              "Coloured by the normal deviation from the mean (axisymmetric) deformed shape at the "
+              "same reference latitude; last converged step of each run.", ""]
+    for r in results:
+        if r["figure"]:
+            lines += [f"![{label} = {r['value']}]({r['figure']})", ""]
+    if study.get("discussion"):
+        lines += ["## Discussion", "", study["discussion"].strip(), ""]
+    report = os.path.join(args.docs, f"{name}.md")
+    with open(report, "w") as f:
+        f.write("\n".join(lines))
+    print(f"scripts/study: wrote {os.path.relpath(report, ROOT)}")
+
+
+if __name__ == "__main__":
+    main()
