@@ -107,6 +107,7 @@ HistoryColumns history_columns(const Case& c, const Mesh& mesh, const MixedModel
   }
   h.names.push_back("volume");
   h.names.push_back("min_J");
+  h.names.push_back("strain_energy");
   if (c.solver.stability.check)
     for (const char* s : {"negative_pivots", "expected_negative_pivots", "stable"}) h.names.push_back(s);
   if (c.output.wrinkles.enabled())
@@ -340,6 +341,7 @@ void run_case(const RunOptions& options) {
     double min_J = std::numeric_limits<double>::infinity();
     for (const auto& f : model.element_fields()) min_J = std::min(min_J, f.J);
     row.push_back(min_J);
+    row.push_back(model.strain_energy());
     if (c.solver.stability.check) {
       row.push_back(info.negative_pivots);
       row.push_back(info.expected_negative_pivots);

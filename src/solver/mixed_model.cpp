@@ -8,6 +8,7 @@
 #include <limits>
 #include <set>
 
+#include "element/strain_energy.hpp"
 #include "solver/petsc_call.hpp"
 
 namespace plisse {
@@ -465,6 +466,18 @@ std::vector<mini::ElementFields> MixedModel::element_fields() const {
       material_);
   if (error) std::rethrow_exception(error);
   return out;
+}
+
+double MixedModel::strain_energy() const {
+  double energy = 0.0;
+  for (int e = 0; e < mesh_.n_tets(); ++e) {
+    std::array<int, mini::kDof> full;
+    element_dofs(e, full);
+    energy += mini::compute_strain_energy(geometry_[e], gather(full), material_,
+                                          inverse_bulk_modulus_, bubble_[e])
+                  .total();
+  }
+  return energy;
 }
 
 BodyAverages MixedModel::averages() const {

@@ -16,7 +16,10 @@ namespace {
 struct CubeCase {
   const char* example;
   std::function<double(double)> sigma_zz;  ///< closed form as a function of the stretch
+  std::function<double(double)> W;         ///< strain energy density [MPa] of the stretch
 };
+
+constexpr double kCubeVolume = 125.0;  // the 5 mm cube [mm^3]
 
 void expect_closed_form(const CubeCase& c) {
   const auto dir = test::scratch_directory(c.example);
@@ -31,7 +34,7 @@ void expect_closed_form(const CubeCase& c) {
     return size_t{0};
   };
   const size_t stretch = col("stretch"), szz = col("cauchy_zz"), sxx = col("cauchy_xx"),
-               syy = col("cauchy_yy");
+               syy = col("cauchy_yy"), energy = col("strain_energy");
   ASSERT_GE(h.rows.size(), 5u);
   for (const auto& row : h.rows) {
     const double lambda = row[stretch];
@@ -39,6 +42,9 @@ void expect_closed_form(const CubeCase& c) {
     EXPECT_NEAR(row[szz], expected, 1e-6 * std::abs(expected)) << "stretch " << lambda;
     EXPECT_NEAR(row[sxx], 0.0, 1e-6 * std::abs(expected)) << "lateral stress, stretch " << lambda;
     EXPECT_NEAR(row[syy], 0.0, 1e-6 * std::abs(expected)) << "lateral stress, stretch " << lambda;
+    // Stored energy: W(lambda) V0, exact for the homogeneous state (to the solver tolerance).
+    const double stored = c.W(lambda) * kCubeVolume;
+    EXPECT_NEAR(row[energy], stored, 1e-6 * stored) << "strain energy, stretch " << lambda;
   }
   EXPECT_NEAR(h.rows.back()[stretch], 5.0, 1e-12);
 }
@@ -46,13 +52,17 @@ void expect_closed_form(const CubeCase& c) {
 TEST(CubeTension, NeoHookeanMatchesClosedFormAtEveryStep) {
   const double c1 = 0.25;
   expect_closed_form({"cube-tension-neo-hookean.yaml",
-                      [=](double l) { return 2 * c1 * (l * l - 1 / l); }});
+                      [=](double l) { return 2 * c1 * (l * l - 1 / l); },
+                      [=](double l) { return c1 * (l * l + 2 / l - 3); }});
 }
 
 TEST(CubeTension, MooneyRivlinMatchesPaperEquation7AtEveryStep) {
   const double c1 = 0.2, c2 = 0.05;
   expect_closed_form({"cube-tension-mooney-rivlin.yaml", [=](double l) {
                         return 2 * c1 * (l * l - 1 / l) - 2 * c2 * (1 / (l * l) - l);
+                      },
+                      [=](double l) {
+                        return c1 * (l * l + 2 / l - 3) + c2 * (2 * l + 1 / (l * l) - 3);
                       }});
 }
 
@@ -61,6 +71,9 @@ TEST(CubeTension, FungMatchesClosedFormAtEveryStep) {
   expect_closed_form({"cube-tension-fung.yaml", [=](double l) {
                         const double I1 = l * l + 2 / l;
                         return mu * std::exp(gamma * (I1 - 3)) * (l * l - 1 / l);
+                      },
+                      [=](double l) {
+                        return mu / (2 * gamma) * std::expm1(gamma * (l * l + 2 / l - 3));
                       }});
 }
 
