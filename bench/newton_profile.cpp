@@ -120,8 +120,9 @@ int run(int argc, char** argv) {
   MixedModel model(mesh, material,
                    c.material.exact_incompressibility ? 0.0 : 1.0 / c.material.bulk_modulus,
                    constraints, make_terms(c, mesh, constraints));
-  std::printf("%s: %d nodes, %d tetrahedra, %d unknowns\n", case_file.c_str(), mesh.n_nodes(),
-              mesh.n_tets(), model.n_free());
+  std::printf("%s: %d nodes, %d tetrahedra, %d unknowns; %d assembly threads\n",
+              case_file.c_str(), mesh.n_nodes(), mesh.n_tets(), model.n_free(),
+              model.assembly_threads());
 
   NewtonSolver newton(model, c.solver.newton);
   const double dt = target_time / steps;
@@ -135,6 +136,7 @@ int run(int argc, char** argv) {
     model.save_converged();
   }
 
+  std::printf("after the steps: %d assembly threads\n", model.assembly_threads());
   std::printf("pieces of one Newton iteration at t = %.4g + dt: the state extrapolated from the "
               "last two steps (as a predictor), bubbles from the last converged step; %d calls "
               "each:\n", target_time, repeat);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <exception>
 #include <limits>
 #include <set>
@@ -28,9 +29,17 @@ int count_global_unknowns(const std::vector<std::unique_ptr<ModelTerm>>& terms) 
   return n;
 }
 
-/// Elements evaluated per chunk of the element loop: their results (2.2 kB each) stay in cache
-/// until they are added, and the serial scatter of one chunk is short.
-constexpr int kChunkElements = 512;
+/// Elements evaluated per chunk of the element loop (results 2.2 kB each: 9 MB of buffer). Each
+/// chunk ends in a barrier, which waits for the slowest thread: on a machine with more runnable
+/// processes than cores a descheduled thread holds it for a whole time slice, so chunks are large
+/// (with 512 a 2-thread residual was 8 times slower than a serial one under such load).
+constexpr int kChunkElements = 4096;
+
+/// The default thread count: OpenMP's count as the process started when OMP_NUM_THREADS asks for
+/// one, else 1 (threads pay only on cores nobody else uses; see docs/performance.md). Read during
+/// static initialisation: Gmsh's initialisation later sets OpenMP's count to its own
+/// General.NumThreads (1 by default), which would override OMP_NUM_THREADS.
+const int kOpenMPThreadsAtStart = std::getenv("OMP_NUM_THREADS") ? omp_get_max_threads() : 1;
 
 /// Local node (0..3) of element unknown i of x_e (mini_layout.hpp).
 constexpr int local_node(int i) { return i < mini::kDofU ? i / 3 : i - mini::kDofU; }
@@ -122,7 +131,9 @@ MixedModel::MixedModel(const Mesh& mesh, AnyMaterial material, double inverse_bu
   save_converged();
 }
 
-int MixedModel::assembly_threads() const { return threads_ > 0 ? threads_ : omp_get_max_threads(); }
+int MixedModel::assembly_threads() const {
+  return threads_ > 0 ? threads_ : std::max(1, kOpenMPThreadsAtStart);
+}
 
 void MixedModel::build_tangent_layout() {
   const int n_nodes = mesh_.n_nodes();

@@ -77,8 +77,8 @@ class MixedModel {
   /// the terms declare), entries zero, flagged symmetric when the tangent is. The caller owns it.
   Mat create_matrix() const;
 
-  /// Threads of the element loops; 0 (the default) takes OpenMP's count (OMP_NUM_THREADS, else
-  /// one per core). Results do not depend on it: elements are evaluated in parallel, a chunk at a
+  /// Threads of the element loops; 0 (the default) takes OMP_NUM_THREADS when it is set, else 1
+  /// (read at process start: Gmsh resets OpenMP's own count to 1 later). Results do not depend on it: elements are evaluated in parallel, a chunk at a
   /// time, and their contributions added in element order, bit for bit as a serial loop does.
   void set_assembly_threads(int n) { threads_ = n; }
   /// The thread count the element loops use.
