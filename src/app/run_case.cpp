@@ -416,6 +416,10 @@ void run_case(const RunOptions& options) {
   summary["final_time"] = last_step.time;
   const PhaseTimes times = stepper.times();
   summary["factorisations"] = times.factorisations;
+  if (result.newton_iterations > 0) {
+    const double entries = stepper.factor_entries();
+    if (entries > 0) summary["factor_entries"] = entries;  // fill = entries / tangent nonzeros
+  }
   summary["wall_time"] = {{"mesh", time_mesh},
                           {"setup", time_setup},
                           {"assembly", times.assembly},

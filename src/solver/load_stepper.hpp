@@ -95,6 +95,8 @@ class LoadStepper {
   SteppingResult run(const std::function<void(const StepInfo&)>& on_step,
                      const std::function<void(const std::string&)>& log);
   PhaseTimes times() const { return newton_.times(); }
+  /// Entries of the last MUMPS factor of Newton (NewtonSolver::factor_entries).
+  double factor_entries() const { return newton_.factor_entries(); }
   /// Wall time of the stability checks [s] (assembly + LDL^T factorisation) and their number;
   /// eigenmode computations are not included (eigenmode_seconds).
   double stability_seconds() const;

@@ -128,6 +128,26 @@ PhaseTimes NewtonSolver::times() const {
   return t;
 }
 
+double NewtonSolver::factor_entries() const {
+  KSP ksp = nullptr;
+  PC pc = nullptr;
+  PLISSE_PETSC(SNESGetKSP(snes_, &ksp));
+  PLISSE_PETSC(KSPGetPC(ksp, &pc));
+  PetscBool is_factor = PETSC_FALSE;
+  PLISSE_PETSC(PetscObjectTypeCompareAny(reinterpret_cast<PetscObject>(pc), &is_factor, PCLU,
+                                         PCCHOLESKY, ""));
+  if (!is_factor) return -1.0;
+  MatSolverType type = nullptr;
+  PLISSE_PETSC(PCFactorGetMatSolverType(pc, &type));
+  if (type == nullptr || std::string(type) != MATSOLVERMUMPS) return -1.0;
+  Mat F = nullptr;
+  if (PCFactorGetMatrix(pc, &F) != 0 || F == nullptr) return -1.0;
+  PetscInt entries = 0;
+  if (MatMumpsGetInfog(F, 29, &entries) != 0) return -1.0;
+  // INFOG(29) counts entries; a negative value is the count in millions (MUMPS user guide).
+  return entries < 0 ? -1e6 * static_cast<double>(entries) : static_cast<double>(entries);
+}
+
 NewtonResult NewtonSolver::solve() {
   NewtonResult result;
   error_ = nullptr;

@@ -51,6 +51,9 @@ class NewtonSolver {
   NewtonResult solve();
   /// Wall time per phase; the factorisation and solve parts read PETSc's event log.
   PhaseTimes times() const;
+  /// Entries of the last MUMPS factorisation (INFOG(29)); -1 when the linear solver is not a
+  /// MUMPS factorisation (e.g. changed by PETSc options) or nothing was factorised yet.
+  double factor_entries() const;
 
  private:
   static PetscErrorCode form_function(SNES snes, Vec x, Vec f, void* context);

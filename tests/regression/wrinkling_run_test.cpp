@@ -159,6 +159,10 @@ TEST(WrinkleTable, RunWritesItAndPlisseWrinklesReproducesIt) {
   ASSERT_EQ(r.status, 0) << r.output;
   const nlohmann::json run = read_json_file(dir / "summary.json");
   ASSERT_TRUE(run.contains("wrinkles")) << run.dump(1);
+  // The MUMPS factor holds at least its diagonal and at most the dense lower triangle.
+  const double n = run["free_dofs"].get<double>();
+  EXPECT_GE(run["factor_entries"].get<double>(), n);
+  EXPECT_LE(run["factor_entries"].get<double>(), n * (n + 1) / 2);
   const auto& w = run["wrinkles"];
   ASSERT_EQ(w["rings"].size(), 3u);
   // A uniformly inflated octant with a 0.05 t random seed: the seed is in the reference shape
