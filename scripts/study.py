@@ -186,7 +186,7 @@ def surface_figure(vtu, case_wrinkles, path, title):
     surf.set_clim(-limit, limit)
     fig.colorbar(surf, ax=ax, shrink=0.7, label="normal deviation [mm]")
     ax.set_box_aspect(np.ptp(x[used][:, order], axis=0) + 1e-9)
-    ax.view_init(elev=25, azim=35)
+    ax.view_init(elev=35, azim=-55)
     ax.set_axis_off()
     ax.set_title(title, fontsize=10)
     fig.tight_layout()
@@ -204,7 +204,11 @@ def case_wrinkle_settings(case_path):
 def fmt(v, spec="{:.3g}"):
     if v is None or (isinstance(v, float) and math.isnan(v)):
         return "–"
-    return spec.format(v) if isinstance(v, (int, float)) else str(v)
+    if isinstance(v, bool):
+        return "yes" if v else "no"
+    if isinstance(v, int):
+        return str(v)
+    return spec.format(v) if isinstance(v, float) else str(v)
 
 
 def main():
@@ -275,8 +279,9 @@ def main():
     if study.get("intro"):
         lines += [study["intro"].strip(), ""]
     lines += [f"| {label} | outcome | steps | Newton its | unknowns | wall time [s] | stable to the end |"
-              " instability at t | wrinkled | max amplitude [mm] | count | wavelength [mm] |",
-              "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+              " instability at t | wrinkled | max amplitude [mm] | count | wavelength [mm] |"
+              " tension field: taut / wrinkled / slack elements |",
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r, a, m in zip(results, amp, count):
         s, h = r["summary"], r["history"]
         w = s.get("wrinkles") or {}
@@ -294,8 +299,11 @@ def main():
             fmt(s.get("newton_iterations")), fmt(s.get("free_dofs")),
             fmt((s.get("wall_time") or {}).get("total"), "{:.0f}"),
             "–" if stable is None else ("yes" if first_unstable is None else "no"),
-            fmt(first_unstable), fmt(w.get("wrinkled")), fmt(a), fmt(m),
-            fmt(best.get("wavelength") if best else None)]) + " |")
+            fmt(first_unstable), fmt(w.get("wrinkled")), fmt(a),
+            fmt(int(m) if isinstance(m, (int, float)) and not math.isnan(m) else None),
+            fmt(best.get("wavelength") if best else None),
+            " / ".join(str((w.get("tension_field") or {}).get(k, "–"))
+                       for k in ("taut", "wrinkled", "slack"))]) + " |")
     lines += ["", f"![amplitude and count against {label}]({trend})", ""]
     lines += ["## Rings of each run", ""]
     for r in results:
