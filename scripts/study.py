@@ -282,13 +282,19 @@ def main():
               " instability at t | wrinkled | max amplitude [mm] | count | wavelength [mm] |"
               " tension field: taut / wrinkled / slack elements |",
               "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    failures = []
     for r, a, m in zip(results, amp, count):
         s, h = r["summary"], r["history"]
         w = s.get("wrinkles") or {}
         rings = w.get("rings", [])
         best = max(rings, key=lambda g: g.get("amplitude", 0.0), default=None)
-        outcome = "completed" if s.get("completed") else ("stopped: " + s.get("failure", "") if s
-                                                          else r["info"].get("message", "failed"))
+        if s.get("completed"):
+            outcome = "completed"
+        elif s:
+            outcome = f"stopped at t = {fmt(s.get('final_time'), '{:.4g}')} (below)"
+            failures.append(f"- {label} = {r['value']}: {s.get('failure', '')}")
+        else:
+            outcome = "failed: " + r["info"].get("message", "")
         stable = h.get("stable")
         first_unstable = None
         if stable is not None and len(stable):
@@ -304,6 +310,8 @@ def main():
             fmt(best.get("wavelength") if best else None),
             " / ".join(str((w.get("tension_field") or {}).get(k, "–"))
                        for k in ("taut", "wrinkled", "slack"))]) + " |")
+    if failures:
+        lines += ["", "Runs that stopped:", ""] + failures
     lines += ["", f"![amplitude and count against {label}]({trend})", ""]
     lines += ["## Rings of each run", ""]
     for r in results:
