@@ -93,7 +93,7 @@ void recompute_wrinkles(const WrinklesOptions& options) {
     throw InputError({(dir / "checkpoint.bin").string(), 0, 0, "DIR"}, e.what());
   }
   const WrinkleMeter meter(c, mesh);
-  const WrinkleMeter::Result result = meter.evaluate(model);
+  const WrinkleMeter::Result result = meter.evaluate(model, model.element_fields());
   summary["wrinkles"] = wrinkles_json(c, result);
   write_json_file(summary_path, summary);
 

@@ -123,8 +123,9 @@ VtuField mode_field(const Mesh& mesh, const Eigenmode& mode, int k) {
   return f;
 }
 
-/// Point and cell fields of the contract for one converged state.
+/// Point and cell fields of the contract for one converged state (`fields`: its element fields).
 void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model,
+                    const std::vector<mini::ElementFields>& fields,
                     const std::vector<double>& previous_state, double dt,
                     const std::vector<VtuField>& extra_point_fields = {},
                     const std::vector<VtuField>& extra_cell_fields = {}) {
@@ -144,7 +145,6 @@ void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model
     }
     pressure.values[v] = x[DofMap::dof(v, 3)];
   }
-  const auto fields = model.element_fields();
   const int n_cells = mesh.n_tets();
   std::vector<Mat3d> cauchy(n_cells);
   std::vector<double> von_mises(n_cells), jacobian(n_cells);
@@ -298,6 +298,9 @@ void run_case(const RunOptions& options) {
 
   std::optional<WrinkleMeter::Result> last_wrinkles;
   nlohmann::json instabilities = nlohmann::json::array();
+  // Element fields (stress, J) of the last converged step: computed once per step, used by the
+  // history, the wrinkle metrics and the VTU file.
+  std::vector<mini::ElementFields> fields;
   auto write_output = [&](const StepInfo& info) {
     const auto t_out = Clock::now();
     const std::string name = dir.step_file_name(info.step);
@@ -310,7 +313,7 @@ void run_case(const RunOptions& options) {
         state[e] = static_cast<double>(last_wrinkles->tension.element_state[e]);
       cell_fields.push_back(make_scalar_field("wrinkle_state", state));
     }
-    write_step_vtu(dir.directory() / name, c, model, previous_state, info.dt, point_fields,
+    write_step_vtu(dir.directory() / name, c, model, fields, previous_state, info.dt, point_fields,
                    cell_fields);
     pvd.add(info.time, name);
     last_written = info.step;
@@ -319,7 +322,8 @@ void run_case(const RunOptions& options) {
 
   auto on_step = [&](const StepInfo& info) {
     const auto t_out = Clock::now();
-    const BodyAverages avg = model.averages();
+    fields = model.element_fields();
+    const BodyAverages avg = model.averages(fields);
     std::vector<double> row = {double(info.step), info.time, info.load_factor,
                                double(info.newton_iterations), info.residual_norm};
     for (const auto& term : model.terms())
@@ -339,7 +343,7 @@ void run_case(const RunOptions& options) {
       for (int k = 0; k < 3; ++k) row.push_back(model.state()[DofMap::dof(node, k)]);
     row.push_back(avg.volume);
     double min_J = std::numeric_limits<double>::infinity();
-    for (const auto& f : model.element_fields()) min_J = std::min(min_J, f.J);
+    for (const auto& f : fields) min_J = std::min(min_J, f.J);
     row.push_back(min_J);
     row.push_back(model.strain_energy());
     if (c.solver.stability.check) {
@@ -348,7 +352,7 @@ void run_case(const RunOptions& options) {
       row.push_back(info.stable ? 1.0 : 0.0);
     }
     if (wrinkle_meter) {
-      last_wrinkles = wrinkle_meter->evaluate(model);
+      last_wrinkles = wrinkle_meter->evaluate(model, fields);
       for (double v : wrinkle_meter->history_values(*last_wrinkles)) row.push_back(v);
     }
     history.add_row(row);

@@ -140,12 +140,12 @@ WrinkleMeter::WrinkleMeter(const Case& c, const Mesh& mesh) : surface_(c.output.
   for (const auto& t : triangles_) triangle_area_.push_back(triangle_area(mesh, t));
 }
 
-WrinkleMeter::Result WrinkleMeter::evaluate(const MixedModel& model) const {
+WrinkleMeter::Result WrinkleMeter::evaluate(const MixedModel& model,
+                                            const std::vector<mini::ElementFields>& fields) const {
   const Mesh& mesh = model.mesh();
   const std::vector<Vec3d> u = nodal_displacements(model);
   Result r;
   r.rings = evaluate_wrinkles(mesh.nodes, triangles_, u, options_);
-  const auto fields = model.element_fields();
   std::vector<Mat3d> sigma(fields.size());
   std::vector<double> J(fields.size());
   for (std::size_t e = 0; e < fields.size(); ++e) {

@@ -40,8 +40,8 @@ class WrinkleMeter {
     WrinkleReport rings;
     TensionField tension;
   };
-  /// Metrics of the model's current state.
-  Result evaluate(const MixedModel& model) const;
+  /// Metrics of the model's current state, whose element_fields() are `fields`.
+  Result evaluate(const MixedModel& model, const std::vector<mini::ElementFields>& fields) const;
 
   /// History columns and their values: wrinkle_amplitude (largest ring amplitude, mm),
   /// wrinkle_count (count of that ring), wrinkled_fraction (outer area fraction in the wrinkled

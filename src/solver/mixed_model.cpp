@@ -491,11 +491,14 @@ double MixedModel::strain_energy() const {
   return energy;
 }
 
-BodyAverages MixedModel::averages() const {
+BodyAverages MixedModel::averages() const { return averages(element_fields()); }
+
+BodyAverages MixedModel::averages(const std::vector<mini::ElementFields>& fields) const {
+  FE_CHECK(fields.size() == static_cast<std::size_t>(mesh_.n_tets()),
+           "averages: " << fields.size() << " element fields for " << mesh_.n_tets() << " elements");
   BodyAverages avg;
   avg.F.setZero();
   double reference_volume = 0.0;
-  const auto fields = element_fields();
   for (int e = 0; e < mesh_.n_tets(); ++e) {
     const auto& tet = mesh_.tets[e];
     const Vec3d X0 = mesh_.nodes[tet[0]];

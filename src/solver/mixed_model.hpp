@@ -111,6 +111,8 @@ class MixedModel {
   /// Per-element Cauchy stress, J and von Mises at the current state.
   std::vector<mini::ElementFields> element_fields() const;
   BodyAverages averages() const;
+  /// The same from element_fields() of the current state, when the caller already has them.
+  BodyAverages averages(const std::vector<mini::ElementFields>& fields) const;
   /// Stored energy of the body at the current state [mJ = N mm]: the sum of
   /// mini::compute_strain_energy over the elements (isochoric W plus, nearly incompressible, the
   /// volumetric p^2/(2 kappa) part; element/strain_energy.hpp).
