@@ -118,7 +118,7 @@ int run(int argc, char** argv) {
   PetscSession petsc({"-no_signal_handler", c.solver.petsc_options});
   PLISSE_PETSC(PetscLogDefaultBegin());
   MixedModel model(mesh, material,
-                   c.material.exact_incompressibility ? 0.0 : 1.0 / c.material.bulk_modulus,
+                   c.material.inverse_bulk_modulus(),
                    constraints, make_terms(c, mesh, constraints));
   std::printf("%s: %d nodes, %d tetrahedra, %d unknowns; %d assembly threads\n",
               case_file.c_str(), mesh.n_nodes(), mesh.n_tets(), model.n_free(),

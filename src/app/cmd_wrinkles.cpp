@@ -85,7 +85,7 @@ void recompute_wrinkles(const WrinklesOptions& options) {
   const auto constraints = collect_constraints(c, mesh);
   PetscSession petsc({"-no_signal_handler"});
   MixedModel model(mesh, material,
-                   c.material.exact_incompressibility ? 0.0 : 1.0 / c.material.bulk_modulus,
+                   c.material.inverse_bulk_modulus(),
                    constraints, make_terms(c, mesh, constraints));
   try {
     model.restore({checkpoint.state, checkpoint.bubbles, checkpoint.term_states});

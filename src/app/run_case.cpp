@@ -238,7 +238,7 @@ void run_case(const RunOptions& options) {
 
   t0 = Clock::now();
   MixedModel model(mesh, material,
-                   c.material.exact_incompressibility ? 0.0 : 1.0 / c.material.bulk_modulus,
+                   c.material.inverse_bulk_modulus(),
                    constraints, std::move(terms));
   LoadStepper stepper(model, c.solver);
   stepper.set_stability(stability_options(c));

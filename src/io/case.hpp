@@ -66,6 +66,8 @@ struct MaterialSection {
   double bulk_modulus = 0.0;             ///< [MPa], > 0, required when nearly incompressible
   double density = 0.0;                  ///< [tonne/mm^3], >= 0 (gravity loads)
   InputPlace place;
+  /// 1/κ [1/MPa] as the mixed formulation takes it: 0 for exact incompressibility.
+  double inverse_bulk_modulus() const { return exact_incompressibility ? 0.0 : 1.0 / bulk_modulus; }
 };
 
 enum class BoundaryType { fixed, symmetry, displacement };
