@@ -52,6 +52,8 @@ const std::vector<std::pair<std::string, LineSearch>> kLineSearches{{"bt", LineS
                                                                     {"basic", LineSearch::basic},
                                                                     {"l2", LineSearch::l2},
                                                                     {"cp", LineSearch::cp}};
+const std::vector<std::pair<std::string, LinearSolverType>> kLinearSolverTypes{
+    {"direct", LinearSolverType::direct}, {"iterative", LinearSolverType::iterative}};
 const std::vector<std::pair<std::string, bool>> kIncompressibility{{"exact", true},
                                                                    {"nearly", false}};
 const std::vector<std::pair<std::string, std::string>> kImperfectionKinds{{"random", "random"},
@@ -380,6 +382,23 @@ Probe read_probe(const Field& field, Reader& reader) {
   return p;
 }
 
+/// `solver.newton.linear`: the iterative solver's keys do not apply to the direct one.
+LinearSolverSettings read_linear_solver(const Field& field) {
+  const FieldMap m = field.map();
+  LinearSolverSettings s;
+  s.place = field.key_place();
+  s.type = m.choice("type", s.type, kLinearSolverTypes);
+  const std::vector<std::string> iterative{"rtol", "max_iterations", "restart"};
+  if (s.type == LinearSolverType::direct)
+    m.check_keys({"type"}, "type 'direct'", iterative);
+  else
+    m.check_keys(with({"type"}, iterative), "type 'iterative'");
+  s.rtol = m.real("rtol", s.rtol, kOpenUnit);
+  s.max_iterations = m.integer("max_iterations", s.max_iterations, Range::at_least(1));
+  s.restart = m.integer("restart", s.restart, Range::at_least(1));
+  return s;
+}
+
 SolverSettings read_solver(const Field& field, const std::string& directory) {
   const FieldMap m = field.map();
   m.check_keys({"scheme", "end_time", "steps", "max_steps", "min_step", "max_step", "growth",
@@ -426,12 +445,13 @@ SolverSettings read_solver(const Field& field, const std::string& directory) {
 
   if (const auto f = m.find("newton")) {
     const FieldMap n = f->map();
-    n.check_keys({"rtol", "atol", "max_iterations", "line_search"});
+    n.check_keys({"rtol", "atol", "max_iterations", "line_search", "linear"});
     NewtonSettings& ns = s.newton;
     ns.rtol = n.real("rtol", ns.rtol, kOpenUnit);
     ns.atol = n.real("atol", ns.atol, Range::non_negative());
     ns.max_iterations = n.integer("max_iterations", ns.max_iterations, Range::at_least(1));
     ns.line_search = n.choice("line_search", ns.line_search, kLineSearches);
+    if (const auto l = n.find("linear"); l && !l->is_null()) ns.linear = read_linear_solver(*l);
   }
   if (const auto f = m.find("stability")) {
     const FieldMap st = f->map();

@@ -1,0 +1,76 @@
+#pragma once
+/// The iterative solver of the Newton systems K dx = -R of the mixed u-p problem: flexible GMRES
+/// preconditioned by a Schur-complement field split,
+///
+///   K = [A  B^T]   displacement equations (u): A, the tangent stiffness
+///       [B  C  ]   pressure equations and the terms' global unknowns (p): C, the condensed
+///                  bubble (and -M_p/kappa); C = 0 on a volume-control cavity row
+///
+/// with S = C - B A^-1 B^T the Schur complement. The preconditioner is the upper block factor
+///
+///   P = [A  B^T]      P^-1 [r_u; r_p]:  y_p = S^-1 r_p,  y_u = A^-1 (r_u - B^T y_p)
+///       [0  S  ]
+///
+/// (Murphy, Golub & Wathen, SIAM J. Sci. Comput. 21 (2000) 1969: with exact A^-1 and S^-1, GMRES
+/// converges in two iterations; PETSc manual, "Solving block matrices"). Inside P, A^-1 is one
+/// V-cycle of algebraic multigrid (hypre BoomerAMG) and S^-1 one Jacobi sweep on the "selfp"
+/// approximation S_p = C - B diag(A)^-1 B^T, a sparse matrix PETSc assembles. The upper factor
+/// costs one V-cycle per iteration like the lower one and took the fewest iterations (stretched
+/// cube, 14^3 cells: 50 against 55 lower and 57 full; diag about 4 times more). Every
+/// choice can be overridden with PETSc's own options (-ksp_*, -pc_fieldsplit_*, -fieldsplit_u_*,
+/// -fieldsplit_p_*): plisse sets a default only where the options database has none.
+///
+/// Everything here works on a communicator and on the equations a process owns, [first, end),
+/// so the same calls serve a distributed (MPIAIJ) tangent.
+#include <mpi.h>
+#include <petscis.h>
+#include <petscksp.h>
+
+#include "io/case.hpp"
+#include "solver/dof_map.hpp"
+
+namespace plisse {
+
+/// The two fields of the split, as index sets of equation numbers (PETSc's global row numbers).
+/// Owns its IS handles (destroyed with it); PCFieldSplitSetIS keeps its own reference, so the
+/// object may go once configure_iterative has been called.
+class FieldIndexSets {
+ public:
+  FieldIndexSets() = default;
+  FieldIndexSets(IS u, IS p) : u_(u), p_(p) {}
+  ~FieldIndexSets();
+  FieldIndexSets(const FieldIndexSets&) = delete;
+  FieldIndexSets& operator=(const FieldIndexSets&) = delete;
+  FieldIndexSets(FieldIndexSets&& other) noexcept;
+  FieldIndexSets& operator=(FieldIndexSets&& other) noexcept;
+
+  /// Free displacement equations (components 0..2 of the nodes), ascending.
+  IS u() const { return u_; }
+  /// Free pressure equations (component 3) and the terms' global unknowns, ascending.
+  IS p() const { return p_; }
+
+ private:
+  IS u_ = nullptr;
+  IS p_ = nullptr;
+};
+
+/// The index sets of the owned equations [first, end) of `dofs`, split into displacement and
+/// pressure (nodal pressures plus every global unknown of the model terms, e.g. a cavity
+/// pressure, which is a Lagrange multiplier like p). Collective on `comm`; each process passes its
+/// own range, and every free equation in it lands in exactly one of the two sets. Only
+/// dofs.equation(d) is used, so any numbering that keeps a process's equations contiguous works.
+/// Precondition: 0 <= first <= end <= dofs.n_free().
+FieldIndexSets make_field_index_sets(MPI_Comm comm, const DofMap& dofs, PetscInt first,
+                                     PetscInt end);
+
+/// Sets plisse's iterative solver on `ksp` (FGMRES with `settings` rtol, max_iterations and
+/// restart; PCFIELDSPLIT of Schur type with fields "u" and "p", upper factorisation, selfp
+/// preconditioner for S; "u": preonly + hypre BoomerAMG; "p": preonly + Jacobi). The PETSc
+/// options database, applied afterwards by KSPSetFromOptions/SNESSetFromOptions, may override
+/// every choice: the sub-solver defaults go into the database under the KSP's prefix only where
+/// the user gave no value. `u` and `p` may be null only to validate options (the KSP is then
+/// never set up); otherwise they come from make_field_index_sets on the matrix's communicator.
+/// Calling it again on the same KSP replaces the earlier split.
+void configure_iterative(KSP ksp, IS u, IS p, const LinearSolverSettings& settings);
+
+}  // namespace plisse
