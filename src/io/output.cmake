@@ -6,6 +6,7 @@ set(PLISSE_IO_OUTPUT_SOURCES
   history_writer.cpp
   json_file.cpp
   pvd_writer.cpp
+  pvtu_writer.cpp
   run_directory.cpp
   run_log.cpp
   vtu_writer.cpp

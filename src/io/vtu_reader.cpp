@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cctype>
 #include <charconv>
+#include <cmath>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <optional>
+#include <set>
 #include <string_view>
 #include <utility>
 
@@ -44,7 +48,9 @@ struct Tag {
 
 class VtuFile {
  public:
-  explicit VtuFile(std::filesystem::path path) : path_(std::move(path)) {
+  /// `kind` starts every error message ("VTU", "PVTU").
+  explicit VtuFile(std::filesystem::path path, std::string kind = "VTU")
+      : path_(std::move(path)), kind_(std::move(kind)) {
     std::error_code ec;
     const auto status = std::filesystem::status(path_, ec);
     if (ec || !std::filesystem::exists(status)) fail("cannot open: no such file");
@@ -58,10 +64,11 @@ class VtuFile {
   }
 
   [[noreturn]] void fail(const std::string& what) const {
-    throw Error("VTU '" + path_.string() + "': " + what);
+    throw Error(kind_ + " '" + path_.string() + "': " + what);
   }
 
   std::uint64_t size() const { return size_; }
+  const std::filesystem::path& path() const { return path_; }
 
   /// Reads n bytes at pos; pos + n <= size() is checked first.
   void read_at(std::uint64_t pos, void* out, std::uint64_t n) {
@@ -82,6 +89,7 @@ class VtuFile {
 
  private:
   std::filesystem::path path_;
+  std::string kind_;
   std::ifstream in_;
   std::uint64_t size_ = 0;
 };
@@ -376,9 +384,299 @@ ParsedVtu parse(VtuFile& file) {
   return out;
 }
 
+const ArrayDecl* find_array(const ParsedVtu& parsed, Section section, std::string_view name) {
+  const auto it = std::find_if(parsed.arrays.begin(), parsed.arrays.end(), [&](const ArrayDecl& a) {
+    return a.section == section && a.name == name;
+  });
+  return it == parsed.arrays.end() ? nullptr : &*it;
+}
+
+/// The values of one Float64 array whose block parse() checked to fit the file: the allocation is
+/// bounded by the file size.
+std::vector<double> read_values(VtuFile& file, const ParsedVtu& parsed, const ArrayDecl& a) {
+  std::vector<double> values(static_cast<std::size_t>(a.n_bytes / sizeof(double)));
+  file.read_at(parsed.data_start + a.offset + sizeof(std::uint64_t), values.data(),
+               values.size() * sizeof(double));
+  return values;
+}
+
+std::string list_names(const std::vector<VtuArrayInfo>& fields) {
+  std::string known;
+  for (const VtuArrayInfo& f : fields) known += (known.empty() ? "" : ", ") + f.name;
+  return known.empty() ? "none" : known;
+}
+
+VtuField read_point_field(VtuFile& file, const ParsedVtu& parsed, const std::string& name) {
+  const ArrayDecl* a = find_array(parsed, Section::point_data, name);
+  if (a == nullptr)
+    file.fail("no point field '" + name +
+              "' (point fields: " + list_names(parsed.summary.point_fields) + ")");
+  return {name, a->n_components, read_values(file, parsed, *a)};
+}
+
+/// Deepest element nesting accepted in a .pvtu (plisse writes 4 levels); bounds the tag stack.
+constexpr std::size_t kMaxPvtuDepth = 32;
+
+bool is_pvtu(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension == ".pvtu";
+}
+
+/// What a .pvtu declares.
+struct ParsedPvtu {
+  std::vector<VtuArrayInfo> point_fields;  ///< PPointData, in file order
+  std::vector<VtuArrayInfo> cell_fields;   ///< PCellData
+  std::vector<std::string> sources;        ///< Piece Source, in file order, each once
+};
+
+/// Parses the whole .pvtu (at most kMaxHeaderBytes): well-nested elements, only whitespace between
+/// tags, the structure of io/pvtu_writer.hpp. Unknown elements inside <VTKFile> are skipped.
+ParsedPvtu parse_pvtu(VtuFile& file) {
+  if (file.size() > kMaxHeaderBytes) file.fail("larger than 16 MiB: not a .pvtu written by plisse");
+  const std::string text = file.read_string(0, file.size());
+  ParsedPvtu out;
+  std::vector<std::string> open;  // names of the elements enclosing the current position
+  bool finished = false;          // </VTKFile> seen
+  int n_vtk_files = 0, n_grids = 0, n_points_arrays = 0;
+  std::set<std::string> sections_seen;
+  std::set<std::string> point_names, cell_names, sources;
+  for (std::size_t pos = 0;;) {
+    const std::size_t lt = text.find('<', pos);
+    const std::string_view between =
+        std::string_view(text).substr(pos, lt == std::string::npos ? std::string::npos : lt - pos);
+    if (!std::all_of(between.begin(), between.end(), is_space))
+      file.fail(finished ? "content after </VTKFile>" : "malformed XML: text between tags");
+    if (lt == std::string::npos) break;
+    if (finished) file.fail("content after </VTKFile>");
+    if (text.compare(lt, 4, "<!--") == 0) {
+      const std::size_t end = text.find("-->", lt + 4);
+      if (end == std::string::npos) file.fail("truncated: unterminated comment");
+      pos = end + 3;
+      continue;
+    }
+    if (text.compare(lt, 2, "<?") == 0) {
+      const std::size_t end = text.find("?>", lt + 2);
+      if (end == std::string::npos) file.fail("truncated: unterminated XML declaration");
+      pos = end + 2;
+      continue;
+    }
+    const std::size_t gt = text.find('>', lt);
+    if (gt == std::string::npos) file.fail("truncated: unclosed tag at the end of the file");
+    const std::string_view inside = std::string_view(text).substr(lt + 1, gt - lt - 1);
+    pos = gt + 1;
+    if (!inside.empty() && inside[0] == '!')
+      file.fail("malformed XML: DOCTYPE or CDATA sections are not read");
+    if (inside.find('<') != std::string_view::npos)  // not allowed in names nor attribute values
+      file.fail("malformed XML: '<' inside a tag");
+    const Tag tag = parse_tag(file, inside);
+    if (tag.closing) {
+      if (open.empty() || open.back() != tag.name)
+        file.fail("malformed XML: unexpected </" + tag.name + ">");
+      open.pop_back();
+      finished = open.empty();
+      continue;
+    }
+    const bool self_closing = inside.back() == '/';
+    const std::string parent = open.empty() ? std::string() : open.back();
+    const auto require_parent = [&](const char* expected) {
+      if (parent != expected) file.fail("<" + tag.name + "> outside <" + expected + ">");
+    };
+    if (tag.name == "VTKFile") {
+      if (!open.empty() || ++n_vtk_files > 1) file.fail("several <VTKFile> elements");
+      if (require_attribute(file, tag, "type") != "PUnstructuredGrid")
+        file.fail("not a PUnstructuredGrid file");
+      if (require_attribute(file, tag, "byte_order") != "LittleEndian")
+        file.fail("byte order is not LittleEndian");
+      if (require_attribute(file, tag, "header_type") != "UInt64")
+        file.fail("header_type is not UInt64 (not written by plisse)");
+    } else if (open.empty()) {
+      file.fail("<" + tag.name + "> outside <VTKFile>");
+    } else if (tag.name == "PUnstructuredGrid") {
+      require_parent("VTKFile");
+      if (++n_grids > 1) file.fail("several <PUnstructuredGrid> elements");
+      const std::string* ghost = attribute(tag, "GhostLevel");
+      if (ghost != nullptr && *ghost != "0")
+        file.fail("GhostLevel=\"" + *ghost + "\"; plisse pieces have no ghost cells (0)");
+    } else if (tag.name == "PPointData" || tag.name == "PCellData" || tag.name == "PPoints") {
+      require_parent("PUnstructuredGrid");
+      if (!sections_seen.insert(tag.name).second) file.fail("several <" + tag.name + "> elements");
+    } else if (tag.name == "PDataArray") {
+      if (parent != "PPointData" && parent != "PCellData" && parent != "PPoints")
+        file.fail("<PDataArray> outside PPointData, PCellData or PPoints");
+      VtuArrayInfo info{require_attribute(file, tag, "Name"), 1};
+      const std::string type = require_attribute(file, tag, "type");
+      if (type != "Float64")
+        file.fail("PDataArray '" + info.name + "' has type " + type + "; plisse writes Float64");
+      if (attribute(tag, "NumberOfComponents") != nullptr) {
+        const std::uint64_t nc = require_unsigned(file, tag, "NumberOfComponents");
+        if (nc < 1 || nc > static_cast<std::uint64_t>(kMaxComponents))
+          file.fail("PDataArray '" + info.name + "' has " + std::to_string(nc) + " components");
+        info.n_components = static_cast<int>(nc);
+      }
+      if (parent == "PPoints") {
+        if (++n_points_arrays > 1 || info.n_components != 3)
+          file.fail("<PPoints> must hold one array of 3 components");
+      } else {
+        const bool point = parent == "PPointData";
+        if (!(point ? point_names : cell_names).insert(info.name).second)
+          file.fail(std::string("two ") + (point ? "point" : "cell") + " fields are named '" +
+                    info.name + "'");
+        (point ? out.point_fields : out.cell_fields).push_back(std::move(info));
+      }
+    } else if (tag.name == "Piece") {
+      require_parent("PUnstructuredGrid");
+      std::string source = require_attribute(file, tag, "Source");
+      const std::string problem = pvtu_piece_source_problem(source);
+      if (!problem.empty()) file.fail("piece '" + source + "': " + problem);
+      if (!sources.insert(source).second) file.fail("piece '" + source + "' is listed twice");
+      out.sources.push_back(std::move(source));
+    }
+    if (!self_closing) {
+      if (open.size() >= kMaxPvtuDepth) file.fail("malformed XML: elements nested too deeply");
+      open.push_back(tag.name);
+    }
+  }
+  if (!finished) file.fail("truncated: the file does not end with </VTKFile>");
+  if (n_grids != 1) file.fail("not a plisse PVTU file: no <PUnstructuredGrid>");
+  if (n_points_arrays != 1) file.fail("not a plisse PVTU file: no <PPoints> array");
+  if (out.sources.empty()) file.fail("lists no <Piece>");
+  return out;
+}
+
+/// One piece as read for a merge: its counts, the global index of each point and, if asked
+/// for, one point field. Errors are the piece's own ("VTU 'piece path': ...").
+struct PieceValues {
+  std::uint64_t n_points = 0;
+  std::uint64_t n_cells = 0;
+  std::vector<std::uint64_t> global_node;
+  VtuField field;
+};
+
+/// Reads the piece at `path`, checks that it holds every field `declared` declares (same
+/// component count) and a valid global_node field, and reads the point field `field_name` unless
+/// it is empty.
+PieceValues read_piece(const std::filesystem::path& path, const ParsedPvtu& declared,
+                       const std::string& field_name) {
+  VtuFile file(path);
+  const ParsedVtu parsed = parse(file);
+  const auto check_declared = [&](const std::vector<VtuArrayInfo>& fields, Section section) {
+    const char* kind = section == Section::point_data ? "point" : "cell";
+    for (const VtuArrayInfo& f : fields) {
+      const ArrayDecl* a = find_array(parsed, section, f.name);
+      if (a == nullptr)
+        file.fail(std::string("no ") + kind + " field '" + f.name + "', which the .pvtu declares");
+      if (a->n_components != f.n_components)
+        file.fail(std::string(kind) + " field '" + f.name + "' has " +
+                  std::to_string(a->n_components) + " components; the .pvtu declares " +
+                  std::to_string(f.n_components));
+    }
+  };
+  check_declared(declared.point_fields, Section::point_data);
+  check_declared(declared.cell_fields, Section::cell_data);
+
+  PieceValues out;
+  out.n_points = parsed.summary.n_points;
+  out.n_cells = parsed.summary.n_cells;
+  const std::string global_name(kGlobalNodeField);
+  const ArrayDecl* global = find_array(parsed, Section::point_data, global_name);
+  if (global == nullptr)
+    file.fail("no point field '" + global_name +
+              "' (the global node index every piece of a .pvtu must hold)");
+  if (global->n_components != 1)
+    file.fail("point field '" + global_name + "' has " + std::to_string(global->n_components) +
+              " components; 1 expected");
+  const std::vector<double> indices = read_values(file, parsed, *global);
+  out.global_node.reserve(indices.size());
+  for (std::size_t i = 0; i < indices.size(); ++i) {
+    const double g = indices[i];
+    // Whole numbers below 2^53 are exact in Float64; anything else is not an index.
+    if (!(g >= 0.0 && g < 9007199254740992.0 && g == std::floor(g)))
+      file.fail("point " + std::to_string(i) + ": " + global_name + " = " + std::to_string(g) +
+                " is not a node index (a whole number >= 0)");
+    out.global_node.push_back(static_cast<std::uint64_t>(g));
+  }
+  if (!field_name.empty()) out.field = read_point_field(file, parsed, field_name);
+  return out;
+}
+
+/// Reads every piece of the .pvtu `file` and merges them (io/pvtu_writer.hpp): the summary and,
+/// if `field_name` is not empty, that point field in global node order.
+std::pair<VtuSummary, VtuField> read_pvtu(const std::filesystem::path& path,
+                                          const std::string& field_name) {
+  VtuFile file(path, "PVTU");
+  const ParsedPvtu declared = parse_pvtu(file);
+  if (!field_name.empty() &&
+      std::none_of(declared.point_fields.begin(), declared.point_fields.end(),
+                   [&](const VtuArrayInfo& f) { return f.name == field_name; }))
+    file.fail("no point field '" + field_name +
+              "' (point fields: " + list_names(declared.point_fields) + ")");
+
+  std::vector<PieceValues> pieces;
+  pieces.reserve(declared.sources.size());
+  VtuSummary summary;
+  summary.point_fields = declared.point_fields;
+  summary.cell_fields = declared.cell_fields;
+  std::uint64_t total_points = 0, max_global = 0;
+  for (const std::string& source : declared.sources) {
+    try {
+      pieces.push_back(read_piece(path.parent_path() / source, declared, field_name));
+    } catch (const Error& e) {
+      file.fail("piece '" + source + "': " + e.what());
+    }
+    const PieceValues& piece = pieces.back();
+    total_points += piece.n_points;  // each term is bounded by its file's size: no overflow
+    summary.n_cells += piece.n_cells;
+    for (const std::uint64_t g : piece.global_node) max_global = std::max(max_global, g);
+  }
+  // Every node 0..N-1 appears in some piece, so N <= total_points: checked before allocating.
+  const std::uint64_t n_nodes = total_points == 0 ? 0 : max_global + 1;
+  if (n_nodes > total_points)
+    file.fail(std::string(kGlobalNodeField) + " reaches " + std::to_string(max_global) +
+              " but the pieces hold " + std::to_string(total_points) +
+              " points in all: some nodes are in no piece");
+  summary.n_points = n_nodes;
+
+  VtuField merged;
+  std::vector<char> seen(static_cast<std::size_t>(n_nodes), 0);
+  if (!field_name.empty()) {
+    merged.name = field_name;
+    merged.n_components = pieces.front().field.n_components;
+    merged.values.resize(static_cast<std::size_t>(n_nodes) *
+                         static_cast<std::size_t>(merged.n_components));
+  }
+  const auto nc = static_cast<std::size_t>(merged.n_components);
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const PieceValues& piece = pieces[k];
+    for (std::size_t i = 0; i < piece.global_node.size(); ++i) {
+      const auto g = static_cast<std::size_t>(piece.global_node[i]);
+      if (field_name.empty()) {
+        seen[g] = 1;
+        continue;
+      }
+      const double* from = piece.field.values.data() + i * nc;
+      double* to = merged.values.data() + g * nc;
+      if (!seen[g]) {
+        std::copy(from, from + nc, to);
+        seen[g] = 1;
+      } else if (std::memcmp(from, to, nc * sizeof(double)) != 0) {
+        file.fail("piece '" + declared.sources[k] + "': node " + std::to_string(g) + " has " +
+                  field_name + " values that differ from another piece's (bit for bit)");
+      }
+    }
+  }
+  const auto missing = std::find(seen.begin(), seen.end(), 0);
+  if (missing != seen.end())
+    file.fail("node " + std::to_string(missing - seen.begin()) + " of " + std::to_string(n_nodes) +
+              " is in no piece");
+  return {std::move(summary), std::move(merged)};
+}
+
 }  // namespace
 
 VtuSummary read_vtu_summary(const std::filesystem::path& path) {
+  if (is_pvtu(path)) return read_pvtu(path, "").first;
   VtuFile file(path);
   return parse(file).summary;
 }
@@ -388,24 +686,13 @@ std::uint64_t read_vtu_point_count(const std::filesystem::path& path) {
 }
 
 VtuField read_vtu_point_field(const std::filesystem::path& path, const std::string& name) {
+  if (is_pvtu(path)) {
+    if (name.empty()) throw Error("PVTU '" + path.string() + "': no point field '' (empty name)");
+    return read_pvtu(path, name).second;
+  }
   VtuFile file(path);
   const ParsedVtu parsed = parse(file);
-  const auto it = std::find_if(parsed.arrays.begin(), parsed.arrays.end(), [&](const ArrayDecl& a) {
-    return a.section == Section::point_data && a.name == name;
-  });
-  if (it == parsed.arrays.end()) {
-    std::string known;
-    for (const VtuArrayInfo& f : parsed.summary.point_fields)
-      known += (known.empty() ? "" : ", ") + f.name;
-    file.fail("no point field '" + name + "' (point fields: " + (known.empty() ? "none" : known) +
-              ")");
-  }
-  VtuField field{name, it->n_components, {}};
-  // n_bytes was checked against the file size: the allocation is bounded by it.
-  field.values.resize(static_cast<std::size_t>(it->n_bytes / sizeof(double)));
-  file.read_at(parsed.data_start + it->offset + sizeof(std::uint64_t), field.values.data(),
-               it->n_bytes);
-  return field;
+  return read_point_field(file, parsed, name);
 }
 
 }  // namespace plisse
