@@ -12,9 +12,9 @@
 // Tolerances: GMRES is asked for rtol = 1e-10 on the true residual (FGMRES preconditions on the
 // right, so its residual is the unpreconditioned one); the test allows 10 rtol for the
 // recomputed residual (round-off in the Arnoldi recurrence). The solutions then differ by at
-// most cond(K) * ||K dx - r|| / ||r||; cond(K) of these small meshes is below 1e5 (kappa/mu = 1e3
-// times the mesh's h^-2 ~ 36, over the smallest eigenvalue of the stretched cube), so the
-// relative difference must be below 1e-5.
+// most cond(K) times that residual: the bound 1e-5 on the relative difference admits cond(K) up
+// to 1e4 (measured: the difference is about 100 times the residual, 8e-9 against 9e-11, for both
+// bulk moduli). Iteration counts are printed (47 for both at 6^3 cells).
 #include "solver/linear_solver.hpp"
 
 #include <gtest/gtest.h>
@@ -90,10 +90,16 @@ class TensionCube {
   const MixedModel& model() const { return model_; }
   Mat K() const { return K_; }
   Vec r() const { return r_; }
+  /// The matrix's communicator (several processes when the model distributes its equations).
+  MPI_Comm comm() const {
+    MPI_Comm c = MPI_COMM_NULL;
+    PLISSE_PETSC(PetscObjectGetComm(reinterpret_cast<PetscObject>(K_), &c));
+    return c;
+  }
   FieldIndexSets fields() const {
     PetscInt first = 0, end = 0;
     PLISSE_PETSC(MatGetOwnershipRange(K_, &first, &end));
-    return make_field_index_sets(PETSC_COMM_SELF, model_.dofs(), first, end);
+    return make_field_index_sets(comm(), model_.dofs(), first, end);
   }
 
  private:
@@ -115,7 +121,7 @@ SolveResult solve_direct(const TensionCube& cube) {
   SolveResult s;
   KSP ksp = nullptr;
   PC pc = nullptr;
-  PLISSE_PETSC(KSPCreate(PETSC_COMM_SELF, &ksp));
+  PLISSE_PETSC(KSPCreate(cube.comm(), &ksp));
   PLISSE_PETSC(KSPSetOperators(ksp, cube.K(), cube.K()));
   PLISSE_PETSC(KSPSetType(ksp, KSPPREONLY));
   PLISSE_PETSC(KSPGetPC(ksp, &pc));
@@ -133,7 +139,7 @@ SolveResult solve_iterative(const TensionCube& cube, const LinearSolverSettings&
                             const char* prefix = "lst_") {
   SolveResult s;
   KSP ksp = nullptr;
-  PLISSE_PETSC(KSPCreate(PETSC_COMM_SELF, &ksp));
+  PLISSE_PETSC(KSPCreate(cube.comm(), &ksp));
   PLISSE_PETSC(KSPSetOptionsPrefix(ksp, prefix));
   PLISSE_PETSC(KSPSetOperators(ksp, cube.K(), cube.K()));
   {
@@ -184,14 +190,20 @@ void expect_iterative_matches_direct(int cells, double inverse_bulk_modulus) {
   settings.max_iterations = 500;
   SolveResult direct = solve_direct(cube);
   SolveResult iterative = solve_iterative(cube, settings);
-  std::cout << cells << "^3 cells, " << cube.model().n_free() << " equations, 1/kappa = "
+  const double residual = relative_residual(cube, iterative.x);
+  const double difference = relative_difference(iterative.x, direct.x);
+  int n_processes = 1;
+  MPI_Comm_size(cube.comm(), &n_processes);
+  std::cout << cells << "^3 cells, " << cube.model().n_free() << " equations on " << n_processes
+            << " process(es), 1/kappa = "
             << inverse_bulk_modulus << ": FGMRES " << iterative.iterations << " iterations ("
-            << KSPConvergedReasons[iterative.reason] << ", " << iterative.seconds << " s)\n";
+            << KSPConvergedReasons[iterative.reason] << ", " << iterative.seconds
+            << " s), residual " << residual << ", difference to MUMPS " << difference << "\n";
   EXPECT_GT(direct.reason, 0);
   EXPECT_GT(iterative.reason, 0) << KSPConvergedReasons[iterative.reason];
   EXPECT_LT(relative_residual(cube, direct.x), 1e-12);
-  EXPECT_LT(relative_residual(cube, iterative.x), 10.0 * settings.rtol);
-  EXPECT_LT(relative_difference(iterative.x, direct.x), 1e-5);
+  EXPECT_LT(residual, 10.0 * settings.rtol);
+  EXPECT_LT(difference, 1e-5);
   // A preconditioner worth its name: far fewer iterations than unknowns.
   EXPECT_LT(iterative.iterations, 100);
   VecDestroy(&direct.x);
@@ -257,7 +269,7 @@ TEST(IterativeSolver, UserOptionsOverrideTheDefaults) {
   PLISSE_PETSC(PetscOptionsSetValue(nullptr, "-ovr_fieldsplit_p_pc_type", "none"));
   PLISSE_PETSC(PetscOptionsSetValue(nullptr, "-ovr_ksp_rtol", "1e-3"));
   KSP ksp = nullptr;
-  PLISSE_PETSC(KSPCreate(PETSC_COMM_SELF, &ksp));
+  PLISSE_PETSC(KSPCreate(cube.comm(), &ksp));
   PLISSE_PETSC(KSPSetOptionsPrefix(ksp, "ovr_"));
   PLISSE_PETSC(KSPSetOperators(ksp, cube.K(), cube.K()));
   LinearSolverSettings settings;
