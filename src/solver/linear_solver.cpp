@@ -58,10 +58,10 @@ FieldIndexSets make_field_index_sets(MPI_Comm comm, const DofMap& dofs, PetscInt
   std::sort(u.begin(), u.end());
   std::sort(p.begin(), p.end());
   IS is_u = nullptr, is_p = nullptr;
-  PLISSE_PETSC(ISCreateGeneral(comm, static_cast<PetscInt>(u.size()), u.data(), PETSC_COPY_VALUES,
-                               &is_u));
-  const PetscErrorCode code = ISCreateGeneral(comm, static_cast<PetscInt>(p.size()), p.data(),
-                                              PETSC_COPY_VALUES, &is_p);
+  PLISSE_PETSC(
+      ISCreateGeneral(comm, static_cast<PetscInt>(u.size()), u.data(), PETSC_COPY_VALUES, &is_u));
+  const PetscErrorCode code =
+      ISCreateGeneral(comm, static_cast<PetscInt>(p.size()), p.data(), PETSC_COPY_VALUES, &is_p);
   FieldIndexSets sets(is_u, is_p);  // owns is_u even when the second call failed
   PLISSE_PETSC(code);
   return sets;
@@ -77,8 +77,8 @@ void configure_iterative(KSP ksp, IS u, IS p, const LinearSolverSettings& settin
   // Classical Gram-Schmidt with a second pass where needed: without it a long restart cycle lost
   // orthogonality (200 vectors took 222 iterations where 100 took 125 on a shell).
   PLISSE_PETSC(KSPGMRESSetCGSRefinementType(ksp, KSP_GMRES_CGS_REFINE_IFNEEDED));
-  PLISSE_PETSC(KSPSetTolerances(ksp, settings.rtol, PETSC_DEFAULT, PETSC_DEFAULT,
-                                settings.max_iterations));
+  PLISSE_PETSC(
+      KSPSetTolerances(ksp, settings.rtol, PETSC_DEFAULT, PETSC_DEFAULT, settings.max_iterations));
   PLISSE_PETSC(KSPSetInitialGuessNonzero(ksp, PETSC_FALSE));
   PC pc = nullptr;
   PLISSE_PETSC(KSPGetPC(ksp, &pc));

@@ -28,8 +28,7 @@ TEST(CaseLinearSolver, DefaultIsDirect) {
             LinearSolverType::direct);
   EXPECT_EQ(parse_case_string(with_linear("~"), "case.yaml").solver.newton.linear.type,
             LinearSolverType::direct);
-  EXPECT_EQ(parse_case_string(with_linear("{type: direct}"), "case.yaml")
-                .solver.newton.linear.type,
+  EXPECT_EQ(parse_case_string(with_linear("{type: direct}"), "case.yaml").solver.newton.linear.type,
             LinearSolverType::direct);
 }
 
@@ -61,11 +60,10 @@ TEST(CaseLinearSolver, IterativeWithItsSettings) {
 }
 
 TEST(CaseLinearSolver, SetOverrides) {
-  const Case c = parse_case_string(kMinimalCase, "case.yaml",
-                                   {"solver.newton.linear.type=iterative",
-                                    "solver.newton.linear.rtol=1e-4",
-                                    "solver.newton.linear.max_iterations=50",
-                                    "solver.newton.linear.restart=20"});
+  const Case c = parse_case_string(
+      kMinimalCase, "case.yaml",
+      {"solver.newton.linear.type=iterative", "solver.newton.linear.rtol=1e-4",
+       "solver.newton.linear.max_iterations=50", "solver.newton.linear.restart=20"});
   const LinearSolverSettings& l = c.solver.newton.linear;
   EXPECT_EQ(l.type, LinearSolverType::iterative);
   EXPECT_EQ(l.rtol, 1e-4);
@@ -77,10 +75,9 @@ TEST(CaseLinearSolver, SetOverrides) {
                 .solver.newton.linear.type,
             LinearSolverType::direct);
   // Errors in an override are placed at --set.
-  EXPECT_INPUT_ERROR(
-      case_error(kMinimalCase, {"solver.newton.linear.type=iterative",
-                                "solver.newton.linear.restart=0"}),
-      "--set", 0, 0, "solver.newton.linear.restart", "must be >= 1 (got 0)");
+  EXPECT_INPUT_ERROR(case_error(kMinimalCase, {"solver.newton.linear.type=iterative",
+                                               "solver.newton.linear.restart=0"}),
+                     "--set", 0, 0, "solver.newton.linear.restart", "must be >= 1 (got 0)");
   EXPECT_INPUT_ERROR(case_error(kMinimalCase, {"solver.newton.linear.type=gmres"}), "--set", 0, 0,
                      "solver.newton.linear.type", "must be one of: direct, iterative");
 }
@@ -92,12 +89,12 @@ TEST(CaseLinearSolver, Errors) {
                      "solver.newton.linear.rtol", "(got 0)");
   EXPECT_INPUT_ERROR(case_error(with_linear("{type: iterative, rtol: 1}")), "case.yaml", 5, 37,
                      "solver.newton.linear.rtol", "(got 1)");
-  EXPECT_INPUT_ERROR(case_error(with_linear("{type: iterative, rtol: -1e-6}")), "case.yaml", 5,
-                     37, "solver.newton.linear.rtol", "(got -1e-06)");
+  EXPECT_INPUT_ERROR(case_error(with_linear("{type: iterative, rtol: -1e-6}")), "case.yaml", 5, 37,
+                     "solver.newton.linear.rtol", "(got -1e-06)");
   EXPECT_INPUT_ERROR(case_error(with_linear("{type: iterative, max_iterations: 0}")), "case.yaml",
                      5, 47, "solver.newton.linear.max_iterations", "must be >= 1 (got 0)");
-  EXPECT_INPUT_ERROR(case_error(with_linear("{type: iterative, max_iterations: 2.5}")),
-                     "case.yaml", 5, 47, "solver.newton.linear.max_iterations", "integer");
+  EXPECT_INPUT_ERROR(case_error(with_linear("{type: iterative, max_iterations: 2.5}")), "case.yaml",
+                     5, 47, "solver.newton.linear.max_iterations", "integer");
   EXPECT_INPUT_ERROR(case_error(with_linear("{type: iterative, restart: -3}")), "case.yaml", 5, 40,
                      "solver.newton.linear.restart", "must be >= 1 (got -3)");
   EXPECT_INPUT_ERROR(case_error(with_linear("{type: iterative, rtol: .nan}")), "case.yaml", 5, 37,

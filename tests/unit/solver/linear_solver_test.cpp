@@ -195,10 +195,10 @@ void expect_iterative_matches_direct(int cells, double inverse_bulk_modulus) {
   int n_processes = 1;
   MPI_Comm_size(cube.comm(), &n_processes);
   std::cout << cells << "^3 cells, " << cube.model().n_free() << " equations on " << n_processes
-            << " process(es), 1/kappa = "
-            << inverse_bulk_modulus << ": FGMRES " << iterative.iterations << " iterations ("
-            << KSPConvergedReasons[iterative.reason] << ", " << iterative.seconds
-            << " s), residual " << residual << ", difference to MUMPS " << difference << "\n";
+            << " process(es), 1/kappa = " << inverse_bulk_modulus << ": FGMRES "
+            << iterative.iterations << " iterations (" << KSPConvergedReasons[iterative.reason]
+            << ", " << iterative.seconds << " s), residual " << residual << ", difference to MUMPS "
+            << difference << "\n";
   EXPECT_GT(direct.reason, 0);
   EXPECT_GT(iterative.reason, 0) << KSPConvergedReasons[iterative.reason];
   EXPECT_LT(relative_residual(cube, direct.x), 1e-12);
@@ -282,8 +282,8 @@ TEST(IterativeSolver, UserOptionsOverrideTheDefaults) {
   PetscReal rtol = 0.0;
   PetscInt max_iterations = 0;
   PLISSE_PETSC(KSPGetTolerances(ksp, &rtol, nullptr, nullptr, &max_iterations));
-  EXPECT_EQ(rtol, 1e-3);                                 // the user's option
-  EXPECT_EQ(max_iterations, settings.max_iterations);    // plisse's setting
+  EXPECT_EQ(rtol, 1e-3);                               // the user's option
+  EXPECT_EQ(max_iterations, settings.max_iterations);  // plisse's setting
   PC pc = nullptr;
   PLISSE_PETSC(KSPGetPC(ksp, &pc));
   KSP* sub = nullptr;
