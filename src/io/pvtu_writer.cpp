@@ -63,13 +63,14 @@ void write_pvtu(const std::filesystem::path& path, const std::vector<std::string
                 const std::vector<VtuArrayInfo>& point_fields,
                 const std::vector<VtuArrayInfo>& cell_fields) {
   FE_CHECK(!piece_files.empty(), "PVTU '" << path.string() << "': no pieces to list");
-  std::set<std::string_view> sources;
+  std::set<std::string> sources;  // lexically normal: "a.vtu" and "./a.vtu" are one piece
   for (const std::string& piece : piece_files) {
     const std::string problem = pvtu_piece_source_problem(piece);
     FE_CHECK(problem.empty(),
              "PVTU '" << path.string() << "': piece '" << piece << "': " << problem);
-    FE_CHECK(sources.insert(piece).second,
-             "PVTU '" << path.string() << "': piece '" << piece << "' is listed twice");
+    FE_CHECK(
+        sources.insert(std::filesystem::path(piece).lexically_normal().generic_string()).second,
+        "PVTU '" << path.string() << "': piece '" << piece << "' is listed twice");
   }
   check_declared_fields(path, point_fields, "point");
   check_declared_fields(path, cell_fields, "cell");

@@ -73,10 +73,10 @@ std::string pvtu_piece_source_problem(std::string_view source);
 /// order) with the point and cell fields every piece holds. The point field `global_node` is
 /// declared after `point_fields` (write_vtu_piece writes it). Checks before writing, with
 /// plisse::Error naming `path`: at least one piece; every piece name acceptable
-/// (pvtu_piece_source_problem) and listed once; field names non-empty, without control
-/// characters, unique within point (resp. cell) fields, and no point field named global_node;
-/// n_components in {1, 3, 6, 9}. The pieces themselves are not opened (other ranks may still be
-/// writing them). Written atomically (io/atomic_file.hpp).
+/// (pvtu_piece_source_problem) and listed once ("a.vtu" and "./a.vtu" are the same); field names
+/// non-empty, without control characters, unique within point (resp. cell) fields, and no point
+/// field named global_node; n_components in {1, 3, 6, 9}. The pieces themselves are not opened
+/// (other ranks may still be writing them). Written atomically (io/atomic_file.hpp).
 void write_pvtu(const std::filesystem::path& path, const std::vector<std::string>& piece_files,
                 const std::vector<VtuArrayInfo>& point_fields,
                 const std::vector<VtuArrayInfo>& cell_fields);

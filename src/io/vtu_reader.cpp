@@ -530,7 +530,10 @@ ParsedPvtu parse_pvtu(VtuFile& file) {
       std::string source = require_attribute(file, tag, "Source");
       const std::string problem = pvtu_piece_source_problem(source);
       if (!problem.empty()) file.fail("piece '" + source + "': " + problem);
-      if (!sources.insert(source).second) file.fail("piece '" + source + "' is listed twice");
+      // Listed once, after normalisation ("a.vtu" = "./a.vtu"): each piece is read into memory,
+      // so aliases of one file must not multiply what a small .pvtu makes the reader hold.
+      if (!sources.insert(std::filesystem::path(source).lexically_normal().generic_string()).second)
+        file.fail("piece '" + source + "' is listed twice");
       out.sources.push_back(std::move(source));
     }
     if (!self_closing) {

@@ -13,10 +13,11 @@
 /// io/pvtu_writer.hpp): VTKFile type="PUnstructuredGrid" (LittleEndian, UInt64), one
 /// PUnstructuredGrid (GhostLevel 0 or absent) holding PPointData, PCellData, PPoints (one Float64
 /// array of 3 components) and one or more <Piece Source="..."/>. Each Source must be relative to
-/// the .pvtu's folder without ".." (pvtu_piece_source_problem), listed once, and name a plisse
-/// VTU checked as above that holds every declared field with the declared component count, plus
-/// the point field global_node (1 component, whole numbers >= 0). Errors about a piece name the
-/// .pvtu and the piece ("PVTU 'a.pvtu': piece 'p0.vtu': ...").
+/// the .pvtu's folder without ".." (pvtu_piece_source_problem), listed once (not again as
+/// "./a.vtu" or "d//a.vtu"), and name a plisse VTU checked as above that holds every declared
+/// field with the declared component count, plus the point field global_node (1 component, whole
+/// numbers >= 0). Errors about a piece name the .pvtu and the piece ("PVTU 'a.pvtu': piece
+/// 'p0.vtu': ...").
 ///
 /// Robustness (tests try every truncation and single-byte corruption): every size and offset read
 /// from the file is checked against the file size before it is used, so a truncated or corrupt file

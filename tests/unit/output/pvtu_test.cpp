@@ -313,6 +313,7 @@ TEST(Pvtu, WriterChecksItsInput) {
   };
   EXPECT_TRUE(has(pvtu_error({}, fields), "no pieces"));
   EXPECT_TRUE(has(pvtu_error({"a.vtu", "a.vtu"}, fields), "listed twice"));
+  EXPECT_TRUE(has(pvtu_error({"d/a.vtu", "./d//a.vtu"}, fields), "listed twice"));
   EXPECT_TRUE(has(pvtu_error({"../a.vtu"}, fields), "'..'"));
   EXPECT_TRUE(has(pvtu_error({"p/../../a.vtu"}, fields), "'..'"));
   EXPECT_TRUE(has(pvtu_error({"/tmp/a.vtu"}, fields), "absolute"));
@@ -392,6 +393,8 @@ TEST(PvtuReader, PiecesOutsideTheFolderAreRefused) {
   EXPECT_TRUE(has(read_error(absolute), "absolute")) << read_error(absolute);
   EXPECT_TRUE(
       has(read_error(w.variant("step_0001/piece_1.vtu", "step_0001/piece_0.vtu")), "listed twice"));
+  EXPECT_TRUE(has(read_error(w.variant("step_0001/piece_1.vtu", "./step_0001//piece_0.vtu")),
+                  "listed twice"));
   std::filesystem::remove(w.dir.path().parent_path() /
                           ("outside-" + w.dir.path().filename().string()));
 }
