@@ -11,4 +11,11 @@ void add_mesh_command(CLI::App& app);
 void add_materials_command(CLI::App& app);
 void add_wrinkles_command(CLI::App& app);
 
+/// The process's own command line (set by main), for commands that start it again (run -n N).
+struct CommandLine {
+  int argc = 0;
+  char** argv = nullptr;
+};
+CommandLine& command_line();
+
 }  // namespace plisse::app

@@ -3,6 +3,7 @@
 /// Exit status (DESIGN.md, interface contract): 0 success; 1 solver failure (last converged state
 /// written) or an internal error; 2 bad input (message names file, line, column, key and rule).
 #include <CLI/CLI.hpp>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -10,7 +11,28 @@
 #include "app/commands.hpp"
 #include "core/error.hpp"
 
+namespace plisse::app {
+CommandLine& command_line() {
+  static CommandLine line;
+  return line;
+}
+}  // namespace plisse::app
+
+namespace {
+/// In a distributed run every rank fails alike: only the first one reports it.
+bool reports_errors() {
+  for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"})
+    if (const char* value = std::getenv(name)) return std::atoi(value) == 0;
+  return true;
+}
+std::ostream& error_stream() {
+  static std::ostream silent(nullptr);
+  return reports_errors() ? std::cerr : silent;
+}
+}  // namespace
+
 int main(int argc, char** argv) {
+  plisse::app::command_line() = {argc, argv};
   CLI::App app{
       "plisse: wrinkling and buckling of thin incompressible hyperelastic membranes\n"
       "(3-D mixed P1+/P1 tetrahedra; units mm, MPa, s, tonne/mm^3)"};
@@ -29,19 +51,19 @@ int main(int argc, char** argv) {
     app.exit(e);
     return 2;
   } catch (const plisse::InputError& e) {
-    std::cerr << "plisse: error: " << e.what() << '\n';
+    error_stream() << "plisse: error: " << e.what() << '\n';
     return 2;
   } catch (const plisse::SolverError& e) {
-    std::cerr << "plisse: solver failure: " << e.what() << '\n';
+    error_stream() << "plisse: solver failure: " << e.what() << '\n';
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "plisse: error: " << e.what() << '\n';
+    error_stream() << "plisse: error: " << e.what() << '\n';
     return 1;
   } catch (const std::string& message) {  // Gmsh's API throws its messages as strings
-    std::cerr << "plisse: error: " << message << '\n';
+    error_stream() << "plisse: error: " << message << '\n';
     return 1;
   } catch (...) {  // anything else would end in std::terminate and SIGABRT
-    std::cerr << "plisse: error: an exception of unknown type\n";
+    error_stream() << "plisse: error: an exception of unknown type\n";
     return 1;
   }
   return 0;

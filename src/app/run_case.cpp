@@ -19,6 +19,7 @@
 #include "io/history_writer.hpp"
 #include "io/json_file.hpp"
 #include "io/pvd_writer.hpp"
+#include "io/pvtu_writer.hpp"
 #include "io/run_directory.hpp"
 #include "io/run_log.hpp"
 #include "io/vtu_writer.hpp"
@@ -26,6 +27,7 @@
 #include "physics/dirichlet.hpp"
 #include "physics/terms.hpp"
 #include "solver/load_stepper.hpp"
+#include "solver/petsc_call.hpp"
 #include "solver/petsc_session.hpp"
 
 namespace plisse::app {
@@ -58,6 +60,54 @@ class InterruptGuard {
   void (*previous_int_)(int) = SIG_DFL;
   void (*previous_term_)(int) = SIG_DFL;
 };
+
+/// True when any rank passes true (collective over PETSC_COMM_WORLD).
+bool any_rank(bool value) {
+  int flag = value ? 1 : 0;
+  PLISSE_PETSC(MPI_Allreduce(MPI_IN_PLACE, &flag, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD));
+  return flag != 0;
+}
+
+/// Every rank builds the mesh on its own (reads or generates it); they must agree, node for node.
+void check_same_mesh_on_every_rank(const Mesh& mesh) {
+  if (PetscSession::size() == 1) return;
+  std::uint64_t hash = 1469598103934665603ull;  // FNV-1a over the bytes of nodes and tets
+  const auto add = [&](const void* data, std::size_t bytes) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) hash = (hash ^ p[i]) * 1099511628211ull;
+  };
+  for (const auto& x : mesh.nodes) add(x.data(), 3 * sizeof(double));
+  for (const auto& t : mesh.tets) add(t.data(), sizeof t);
+  unsigned long long low = hash, high = hash;
+  PLISSE_PETSC(MPI_Allreduce(MPI_IN_PLACE, &low, 1, MPI_UNSIGNED_LONG_LONG, MPI_MIN, PETSC_COMM_WORLD));
+  PLISSE_PETSC(MPI_Allreduce(MPI_IN_PLACE, &high, 1, MPI_UNSIGNED_LONG_LONG, MPI_MAX, PETSC_COMM_WORLD));
+  if (low != high)
+    throw Error("the ranks built different meshes from the same case (mesh generation is not "
+                "reproducible here); write the mesh once with `plisse mesh` and use mesh.file");
+}
+
+/// Ends a distributed job after an error on this rank alone: prints it, then MPI_Abort (exit
+/// status 1), since the other ranks may be waiting in a collective call.
+[[noreturn]] void abort_all_ranks(std::exception_ptr error) {
+  std::string message = "unknown error";
+  try {
+    std::rethrow_exception(error);
+  } catch (const std::exception& e) {
+    message = e.what();
+  } catch (const std::string& e) {
+    message = e;
+  } catch (...) {
+  }
+  std::fprintf(stderr, "plisse: error on rank %d: %s\n", PetscSession::rank(), message.c_str());
+  std::fflush(stderr);
+  MPI_Abort(PETSC_COMM_WORLD, 1);
+  std::abort();
+}
+
+/// "step_NNNN.vtu" -> "step_NNNN" + suffix.
+std::string with_suffix(const std::string& vtu_name, const std::string& suffix) {
+  return vtu_name.substr(0, vtu_name.size() - 4) + suffix;
+}
 
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
@@ -159,7 +209,21 @@ void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model
                                        make_scalar_field("von_mises", von_mises),
                                        make_scalar_field("J", jacobian)};
   cell_fields.insert(cell_fields.end(), extra_cell_fields.begin(), extra_cell_fields.end());
-  write_vtu(file, mesh, points, point_fields, cell_fields);
+  if (model.n_ranks() == 1) {
+    write_vtu(file, mesh, points, point_fields, cell_fields);
+    return;
+  }
+  // Distributed: each rank writes the piece of its own elements ("step_NNNN_pR.vtu"); once all
+  // are written, rank 0 lists them in `file`, the .pvtu.
+  const std::string stem = file.stem().string();
+  const auto piece = [&](int r) { return stem + "_p" + std::to_string(r) + ".vtu"; };
+  write_vtu_piece(file.parent_path() / piece(model.rank()), mesh, points, model.owned_elements(),
+                  point_fields, cell_fields);
+  PLISSE_PETSC(MPI_Barrier(PETSC_COMM_WORLD));
+  if (model.rank() != 0) return;
+  std::vector<std::string> pieces;
+  for (int r = 0; r < model.n_ranks(); ++r) pieces.push_back(piece(r));
+  write_pvtu(file, pieces, describe_fields(point_fields), describe_fields(cell_fields));
 }
 
 }  // namespace
@@ -235,6 +299,14 @@ void run_case(const RunOptions& options) {
   for (const auto& o : options.petsc_options) PetscSession::insert_options(o);
   check_solver_options(c, options.petsc_options);
   InterruptGuard interrupts;
+  check_same_mesh_on_every_rank(mesh);
+  // Distributed runs: every rank runs all of what follows; rank 0 alone writes the log, the
+  // history, the summary, the checkpoint and the PVD index, every rank its own VTU pieces. Input
+  // and solver errors from here on arise on every rank alike; anything else (a failed write on
+  // one rank) would leave the others waiting in a collective call, so it ends the whole job.
+  const bool root = PetscSession::rank() == 0;
+  try {
+    [&] {
 
   t0 = Clock::now();
   MixedModel model(mesh, material,
@@ -247,8 +319,13 @@ void run_case(const RunOptions& options) {
   const double time_setup = seconds_since(t0);
 
   RunDirectory dir(out_dir);
-  RunLog log(dir.log_txt());
-  if (checkpoint && fs::exists(dir.log_txt())) log.prepend(read_file(dir.log_txt()));
+  RunLog log = root ? RunLog(dir.log_txt()) : RunLog({}, nullptr, nullptr);
+  if (root && checkpoint && fs::exists(dir.log_txt())) log.prepend(read_file(dir.log_txt()));
+  // A step's file: step_NNNN.vtu, or step_NNNN.pvtu listing the ranks' pieces.
+  const auto step_name = [&](int step) {
+    const std::string vtu = RunDirectory::step_file_name(step);
+    return model.n_ranks() == 1 ? vtu : with_suffix(vtu, ".pvtu");
+  };
   log.info("plisse run " + options.case_file + (c.title.empty() ? "" : "  (" + c.title + ")"));
   log.info("output: " + dir.directory().string());
   for (const auto& o : options.overrides) log.info("  --set " + o);
@@ -259,10 +336,30 @@ void run_case(const RunOptions& options) {
                   mesh.n_nodes(), mesh.n_tets(), model.n_free(), model.dofs().n_free_pressure(),
                   constraints.size());
     log.info(line);
+    if (model.n_ranks() > 1) {
+      // Each rank evaluates the elements touching its nodes: the cut elements twice.
+      int local = 0, owned = model.n_owned();
+      for (int e = 0; e < mesh.n_tets(); ++e)
+        for (int a : mesh.tets[e])
+          if (model.node_ranks()[a] == model.rank()) {
+            ++local;
+            break;
+          }
+      int most = owned, fewest = owned, evaluated = local;
+      PLISSE_PETSC(MPI_Allreduce(MPI_IN_PLACE, &most, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD));
+      PLISSE_PETSC(MPI_Allreduce(MPI_IN_PLACE, &fewest, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD));
+      PLISSE_PETSC(MPI_Allreduce(MPI_IN_PLACE, &evaluated, 1, MPI_INT, MPI_SUM, PETSC_COMM_WORLD));
+      std::snprintf(line, sizeof line,
+                    "distributed over %d ranks: %d to %d unknowns per rank; %d element "
+                    "evaluations per assembly for %d elements (+%.1f %%)",
+                    model.n_ranks(), fewest, most, evaluated, mesh.n_tets(),
+                    100.0 * (evaluated - mesh.n_tets()) / std::max(1, mesh.n_tets()));
+      log.info(line);
+    }
   }
 
   HistoryColumns columns = history_columns(c, mesh, model);
-  std::optional<HistoryWriter> history_file;
+  std::optional<HistoryWriter> history_file;  // rank 0's
   std::vector<PvdEntry> pvd_entries;
   if (checkpoint) {
     model.restore({checkpoint->state, checkpoint->bubbles, checkpoint->term_states});
@@ -279,15 +376,17 @@ void run_case(const RunOptions& options) {
       if (e.time <= checkpoint->time * (1.0 + 1e-12)) pvd_entries.push_back(e);
     log.info("resuming after step " + std::to_string(checkpoint->steps) + " at t = " +
              std::to_string(checkpoint->time));
-  } else {
+    if (!root) history_file.reset();  // every rank checked the files; rank 0 writes them
+  } else if (root) {
     history_file.emplace(dir.history_csv(), columns.names);
   }
-  HistoryWriter& history = *history_file;
-  PvdWriter pvd(dir.solution_pvd(), pvd_entries);
+  std::optional<PvdWriter> pvd;
+  if (root) pvd.emplace(dir.solution_pvd(), pvd_entries);
   const auto save_checkpoint = [&] {
     const StepperState& st = stepper.state();
-    const MixedModel::Snapshot snap = model.snapshot();
-    write_checkpoint(dir.directory() / "checkpoint.bin",
+    const MixedModel::Snapshot snap = model.snapshot();  // collective
+    if (root)
+      write_checkpoint(dir.directory() / "checkpoint.bin",
                      {fingerprint, st.steps, st.time, st.dt, st.previous_dt, st.previous_state,
                       snap.state, snap.bubbles, snap.term_states, st.negative_pivots});
   };
@@ -303,7 +402,7 @@ void run_case(const RunOptions& options) {
   std::vector<mini::ElementFields> fields;
   auto write_output = [&](const StepInfo& info) {
     const auto t_out = Clock::now();
-    const std::string name = dir.step_file_name(info.step);
+    const std::string name = step_name(info.step);
     std::vector<VtuField> point_fields, cell_fields;
     for (std::size_t k = 0; k < info.modes.size(); ++k)
       point_fields.push_back(mode_field(mesh, info.modes[k], static_cast<int>(k) + 1));
@@ -315,7 +414,7 @@ void run_case(const RunOptions& options) {
     }
     write_step_vtu(dir.directory() / name, c, model, fields, previous_state, info.dt, point_fields,
                    cell_fields);
-    pvd.add(info.time, name);
+    if (pvd) pvd->add(info.time, name);
     last_written = info.step;
     time_output += seconds_since(t_out);
   };
@@ -355,7 +454,7 @@ void run_case(const RunOptions& options) {
       last_wrinkles = wrinkle_meter->evaluate(model, fields);
       for (double v : wrinkle_meter->history_values(*last_wrinkles)) row.push_back(v);
     }
-    history.add_row(row);
+    if (history_file) history_file->add_row(row);
     time_output += seconds_since(t_out);
     if (info.new_instability) {
       nlohmann::json eigenvalues = nlohmann::json::array();
@@ -367,7 +466,7 @@ void run_case(const RunOptions& options) {
                                {"eigenvalues", eigenvalues},
                                {"branch_switched", info.branch_switched},
                                {"perturbation_mm", info.perturbation_mm},
-                               {"file", dir.step_file_name(info.step)}});
+                               {"file", step_name(info.step)}});
     }
     // A new instability's modes are always written (they seed `imperfection_kind: mode`).
     if (info.step % c.output.every == 0 || info.load_factor >= 1.0 || !info.modes.empty())
@@ -387,7 +486,7 @@ void run_case(const RunOptions& options) {
                   info.cutbacks ? "  (after cut-back)" : "", seconds_since(t_start));
     log.info(line);
     if (c.output.checkpoint_every > 0 && info.step % c.output.checkpoint_every == 0) save_checkpoint();
-    if (interrupts.requested()) {
+    if (any_rank(interrupts.requested())) {
       log.warn("interrupted by a signal: writing a checkpoint and stopping after step " +
                std::to_string(info.step));
       save_checkpoint();
@@ -432,7 +531,13 @@ void run_case(const RunOptions& options) {
                           {"triangular_solve", times.triangular_solve},
                           {"output", time_output},
                           {"total", seconds_since(t_start)}};
-  summary["peak_memory_mib"] = peak_memory_mib();
+  // Peak resident memory: of the whole job (sum over the ranks) and of the largest rank.
+  double memory_total = peak_memory_mib(), memory_largest = memory_total;
+  PLISSE_PETSC(MPI_Allreduce(MPI_IN_PLACE, &memory_total, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD));
+  PLISSE_PETSC(MPI_Allreduce(MPI_IN_PLACE, &memory_largest, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD));
+  summary["ranks"] = model.n_ranks();
+  summary["peak_memory_mib"] = memory_total;
+  summary["peak_memory_per_rank_mib"] = memory_largest;
   if (c.solver.stability.check) {
     summary["stability"] = {{"checks", stepper.stability_checks()},
                             {"check_seconds", stepper.stability_seconds()},
@@ -441,20 +546,20 @@ void run_case(const RunOptions& options) {
                             {"instabilities", instabilities}};
   }
   if (last_wrinkles) summary["wrinkles"] = wrinkles_json(c, *last_wrinkles);
-  if (!history.rows().empty()) {
+  if (history_file && !history_file->rows().empty()) {
     nlohmann::json final_values;
-    for (size_t i = 0; i < history.columns().size(); ++i)
-      final_values[history.columns()[i]] = history.rows().back()[i];
+    for (size_t i = 0; i < history_file->columns().size(); ++i)
+      final_values[history_file->columns()[i]] = history_file->rows().back()[i];
     summary["final"] = final_values;
   }
-  write_json_file(dir.summary_json(), summary);
+  if (root) write_json_file(dir.summary_json(), summary);
   char line[256];
   std::snprintf(line, sizeof line,
                 "%s: %d steps, %d Newton iterations, %d cut-backs, %.2fs (assembly %.2fs, "
                 "linear solve %.2fs, output %.2fs), peak memory %.0f MiB",
                 result.completed ? "done" : "stopped", result.steps, result.newton_iterations,
                 result.cutbacks, seconds_since(t_start), times.assembly, times.linear_solve,
-                time_output, peak_memory_mib());
+                time_output, memory_total);
   log.info(line);
   if (result.interrupted) {
     log.flush();
@@ -470,6 +575,15 @@ void run_case(const RunOptions& options) {
                       dir.directory().string() + ")");
   }
   log.flush();
+    }();
+  } catch (const InputError&) {
+    throw;
+  } catch (const SolverError&) {
+    throw;
+  } catch (...) {
+    if (PetscSession::size() > 1) abort_all_ranks(std::current_exception());
+    throw;
+  }
 }
 
 }  // namespace plisse::app

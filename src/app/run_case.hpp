@@ -15,6 +15,7 @@ struct RunOptions {
   std::vector<std::string> overrides;    ///< --set key.path=value
   std::vector<std::string> petsc_options;  ///< --petsc "-snes_monitor ..."
   std::string resume_directory;          ///< --resume DIR: continue from DIR/checkpoint.bin
+  int ranks = 1;                         ///< -n N: MPI ranks (run under mpiexec)
 };
 
 /// What the case file allows but this build cannot solve yet (second-order meshes, the

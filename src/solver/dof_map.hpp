@@ -2,6 +2,10 @@
 /// Numbering of the unknowns: four per node (ux, uy, uz, p), then the global unknowns of the model
 /// terms (physics/model_term.hpp). Constrained displacement components are eliminated from the
 /// algebraic system: only free dofs get an equation number.
+///
+/// Equations are numbered node by node in a given node order (the identity by default), the free
+/// components of a node consecutively, then the free global unknowns. A distributed run orders the
+/// nodes by rank, so that each rank owns one contiguous range of equations (solver/partition.hpp).
 #include <vector>
 
 #include "physics/dirichlet.hpp"
@@ -12,7 +16,10 @@ namespace plisse {
 class DofMap {
  public:
   static constexpr int kPerNode = kValuesPerNode;  ///< ux, uy, uz, p
-  DofMap(int n_nodes, int n_global, const std::vector<ConstrainedComponent>& constrained);
+  /// `node_order`, when given, is a permutation of the nodes: the order in which their equations
+  /// are numbered.
+  DofMap(int n_nodes, int n_global, const std::vector<ConstrainedComponent>& constrained,
+         const std::vector<int>& node_order = {});
 
   /// Index of component `comp` (0..2 displacement, 3 pressure) of `node` in the full state.
   static int dof(int node, int comp) { return kPerNode * node + comp; }

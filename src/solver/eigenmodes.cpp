@@ -31,6 +31,7 @@ struct EigenObjects {
 Mat create_lumped_volume(const MixedModel& model) {
   const Mesh& mesh = model.mesh();
   const DofMap& dofs = model.dofs();
+  // Summed over the whole mesh on every rank; each rank sets its owned rows.
   std::vector<double> diagonal(dofs.n_free(), 0.0);
   for (const auto& tet : mesh.tets) {
     const Vec3d X0 = mesh.nodes[tet[0]];
@@ -43,8 +44,9 @@ Mat create_lumped_volume(const MixedModel& model) {
           diagonal[eq] += quarter_volume;
   }
   Mat M = nullptr;
-  PLISSE_PETSC(MatCreateSeqAIJ(PETSC_COMM_SELF, dofs.n_free(), dofs.n_free(), 1, nullptr, &M));
-  for (PetscInt i = 0; i < dofs.n_free(); ++i)
+  PLISSE_PETSC(MatCreateAIJ(model.comm(), model.n_owned(), model.n_owned(), dofs.n_free(),
+                            dofs.n_free(), 1, nullptr, 0, nullptr, &M));
+  for (PetscInt i = model.first_owned_equation(); i < model.end_owned_equation(); ++i)
     PLISSE_PETSC(MatSetValue(M, i, i, diagonal[i], INSERT_VALUES));
   PLISSE_PETSC(MatAssemblyBegin(M, MAT_FINAL_ASSEMBLY));
   PLISSE_PETSC(MatAssemblyEnd(M, MAT_FINAL_ASSEMBLY));
@@ -57,12 +59,7 @@ Mat create_lumped_volume(const MixedModel& model) {
 /// nodal |u| is 1 and the largest |component| of that node is positive.
 std::vector<double> to_normalised_state(const MixedModel& model, Vec x) {
   const DofMap& dofs = model.dofs();
-  std::vector<double> state(dofs.n_dofs(), 0.0);
-  const PetscScalar* a = nullptr;
-  PLISSE_PETSC(VecGetArrayRead(x, &a));
-  for (int d = 0; d < dofs.n_dofs(); ++d)
-    if (const int eq = dofs.equation(d); eq >= 0) state[d] = a[eq];
-  PLISSE_PETSC(VecRestoreArrayRead(x, &a));
+  std::vector<double> state = model.full_from_free(x);  // collective
 
   int largest_node = -1;
   double largest = 0.0;
@@ -109,7 +106,7 @@ std::vector<Eigenmode> lowest_eigenmodes(MixedModel& model, const EigenOptions& 
   o.M = create_lumped_volume(model);
   const bool symmetric = model.symmetric();
 
-  PLISSE_PETSC(EPSCreate(PETSC_COMM_SELF, &o.eps));
+  PLISSE_PETSC(EPSCreate(model.comm(), &o.eps));
   PLISSE_PETSC(EPSSetOperators(o.eps, o.K, o.M));
   // Symmetric K with semi-definite M: a GHEP in SLEPc's sense (the B-inner product is only a
   // semi-inner product; with shift-invert the null space of M maps to the eigenvalue 0 of the

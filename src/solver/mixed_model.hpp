@@ -2,6 +2,16 @@
 /// The discrete mixed u-p problem on one mesh: element geometry, material, constraints, the state
 /// (nodal displacements and pressures, element bubbles) and the assembly of the residual and the
 /// consistent tangent over the free dofs into PETSc objects.
+///
+/// Distributed runs (more than one rank in PETSC_COMM_WORLD): every rank holds the whole mesh and
+/// the whole state; the equations are distributed (solver/partition.hpp). Rank r owns the equations
+/// of its nodes, evaluates the elements that touch them (and every term), and fills only its own
+/// rows of the residual and the tangent, so that no element contribution crosses ranks. After each
+/// Newton update the free values are gathered to every rank (set_free). The members that return
+/// whole-model results (element_fields, strain_energy, reaction, snapshot, the assembly status)
+/// are collective and give every rank the same answer. On one rank the matrices and vectors are
+/// sequential and everything is as in a serial program.
+#include <mpi.h>
 #include <petscmat.h>
 #include <petscvec.h>
 
@@ -42,6 +52,10 @@ class MixedModel {
              std::vector<ConstrainedComponent> constraints,
              std::vector<std::unique_ptr<ModelTerm>> terms = {});
 
+  ~MixedModel();
+  MixedModel(const MixedModel&) = delete;
+  MixedModel& operator=(const MixedModel&) = delete;
+
   const std::vector<std::unique_ptr<ModelTerm>>& terms() const { return terms_; }
   /// True when the tangent is symmetric (all terms symmetric): LDL^T applies.
   bool symmetric() const;
@@ -49,6 +63,25 @@ class MixedModel {
   const Mesh& mesh() const { return mesh_; }
   const DofMap& dofs() const { return dofs_; }
   int n_free() const { return dofs_.n_free(); }
+
+  /// The communicator of the algebraic objects: PETSC_COMM_SELF on one rank, else PETSC_COMM_WORLD.
+  MPI_Comm comm() const;
+  int rank() const { return rank_; }
+  int n_ranks() const { return size_; }
+  /// The equations this rank owns: [first_owned_equation, end_owned_equation).
+  int first_owned_equation() const { return first_equation_; }
+  int end_owned_equation() const { return end_equation_; }
+  int n_owned() const { return end_equation_ - first_equation_; }
+  /// The rank owning each node's equations (all 0 on one rank).
+  const std::vector<int>& node_ranks() const { return node_rank_; }
+  /// The elements whose results this rank reports (in output pieces, sums over the body): those
+  /// whose first node it owns. Every element is owned by exactly one rank.
+  const std::vector<int>& owned_elements() const { return owned_elements_; }
+  /// A vector over the free dofs with this rank's owned range (for get_free, set_free, residual).
+  Vec create_vector() const;
+  /// The full state layout (zeros on constrained dofs) of a free-dof vector with the layout of
+  /// create_vector. Collective.
+  std::vector<double> full_from_free(Vec x) const;
 
   /// Full state: kPerNode values per node (ux, uy, uz, p), then the terms' global unknowns.
   const std::vector<double>& state() const { return state_; }
@@ -62,7 +95,8 @@ class MixedModel {
   /// ramp.factor(t) * force; the residual is internal minus external force. Replaces earlier ones.
   void set_external_force(std::vector<double> force, Ramp ramp);
 
-  /// Copies the free dofs of the state into `x`, or from `x` into the state.
+  /// Copies the free dofs of the state into `x` (its owned part), or from `x` into the state
+  /// (collective: every rank receives all free values).
   void get_free(Vec x) const;
   void set_free(Vec x);
 
@@ -73,8 +107,9 @@ class MixedModel {
   /// is filled directly in its value array through positions precomputed per element; any other
   /// matrix through MatSetValues (same values, slower).
   AssemblyStatus assemble_tangent(Mat K);
-  /// A sequential AIJ matrix with the exact sparsity of the tangent (element couplings and those
-  /// the terms declare), entries zero, flagged symmetric when the tangent is. The caller owns it.
+  /// An AIJ matrix with the exact sparsity of the tangent (element couplings and those the terms
+  /// declare), entries zero, flagged symmetric when the tangent is: sequential on one rank, else
+  /// distributed by the owned equation ranges. The caller owns it.
   Mat create_matrix() const;
 
   /// Threads of the element loops; 0 (the default) takes OMP_NUM_THREADS when it is set, else 1
@@ -134,8 +169,16 @@ class MixedModel {
   AssemblyStatus for_each_element(bool with_tangent, Scatter&& scatter);
   /// Builds the node graph and the per-element positions of the tangent layout (constructor).
   void build_tangent_layout();
-  /// True when K is a sequential AIJ matrix with this model's layout (made by create_matrix).
+  /// True when K is an AIJ matrix with this model's layout (made by create_matrix).
   bool has_tangent_layout(Mat K) const;
+  /// The nodes coupled to each node (node_start_, node_neighbours_; constructor).
+  void build_node_graph();
+  /// Partitions the nodes among the ranks and numbers the equations by rank (constructor).
+  void distribute();
+  /// The same status on every rank: the first rank's failure, else the smallest J of all.
+  AssemblyStatus reduce(const AssemblyStatus& local) const;
+  /// Sums `values` over the ranks in place (each rank contributes what it owns, zeros elsewhere).
+  void sum_over_ranks(double* values, std::size_t count) const;
 
   const Mesh& mesh_;
   AnyMaterial material_;
@@ -154,12 +197,24 @@ class MixedModel {
   // Tangent layout (built once). Free equations of a node are consecutive, so the rows of node a
   // hold, for each neighbour node b (sorted), the free equations of b as one run of columns, then
   // the columns of the terms' global unknowns. Entry (row eq_i of node a, column eq_j of node b)
-  // is at row_start_[eq_i] + element_shift_[e][4 a + b] + eq_j for the element's local a, b.
+  // is at row_start_[eq_i - first] + element_shift_[e][4 a + b] + eq_j for the element's local
+  // a, b, where `first` is the first owned equation.
   std::vector<int> node_start_, node_neighbours_;  ///< node graph, CSR; each node lists itself
   std::vector<int> node_free_, node_first_equation_;  ///< free components, first free equation
-  std::vector<std::pair<int, int>> extra_entries_;  ///< (row, column) equations beyond the nodes
-  std::vector<PetscInt> row_start_;                 ///< n_free + 1 row starts
+  std::vector<std::pair<int, int>> extra_entries_;  ///< owned (row, column) beyond the nodes
+  std::vector<PetscInt> row_start_;                 ///< owned rows + 1 row starts (local rows)
   std::vector<std::array<int, 16>> element_shift_;  ///< per element and local node pair (a, b)
+
+  // Distribution (one rank: rank 0 of 1, everything local and owned).
+  int rank_ = 0, size_ = 1;
+  std::vector<int> node_rank_;
+  int first_equation_ = 0, end_equation_ = 0;
+  std::vector<int> local_elements_;  ///< elements with at least one owned node, ascending
+  std::vector<int> owned_elements_;  ///< elements whose first node is owned, ascending
+  std::vector<PetscInt> columns_;    ///< column equations of the owned rows (CSR with row_start_)
+  std::vector<PetscScalar> local_values_;  ///< owned rows' values (distributed matrix fill)
+  VecScatter gather_all_ = nullptr;        ///< free vector -> every rank's full copy
+  Vec gathered_ = nullptr;
 
   int threads_ = 0;
   std::vector<ElementResult> chunk_;   ///< element loop buffer, kept between assemblies

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <string>
 
+#include "solver/linear_solver.hpp"
 #include "solver/petsc_call.hpp"
 
 namespace plisse {
@@ -32,6 +33,10 @@ void configure_snes(SNES snes, const NewtonSettings& settings, bool symmetric) {
   KSP ksp = nullptr;
   PC pc = nullptr;
   PLISSE_PETSC(SNESGetKSP(snes, &ksp));
+  if (settings.linear.type == LinearSolverType::iterative) {
+    configure_iterative(ksp, nullptr, nullptr, settings.linear);  // fields: NewtonSolver
+    return;
+  }
   PLISSE_PETSC(KSPSetType(ksp, KSPPREONLY));
   PLISSE_PETSC(KSPGetPC(ksp, &pc));
   // A symmetric tangent is indefinite (saddle point): MUMPS LDL^T (sym = 2). Follower loads on
@@ -59,15 +64,21 @@ NewtonSolver::NewtonSolver(MixedModel& model, const NewtonSettings& settings) : 
   PetscBool logging = PETSC_FALSE;
   PLISSE_PETSC(PetscLogIsActive(&logging));
   if (!logging) PLISSE_PETSC(PetscLogDefaultBegin());
-  const PetscInt n = model.n_free();
-  PLISSE_PETSC(VecCreateSeq(PETSC_COMM_SELF, n, &x_));
+  x_ = model.create_vector();
   PLISSE_PETSC(VecDuplicate(x_, &r_));
   K_ = model.create_matrix();
-  PLISSE_PETSC(SNESCreate(PETSC_COMM_SELF, &snes_));
+  PLISSE_PETSC(SNESCreate(model.comm(), &snes_));
   PLISSE_PETSC(SNESSetType(snes_, SNESNEWTONLS));
   PLISSE_PETSC(SNESSetFunction(snes_, r_, &NewtonSolver::form_function, this));
   PLISSE_PETSC(SNESSetJacobian(snes_, K_, K_, &NewtonSolver::form_jacobian, this));
   configure_snes(snes_, settings, model.symmetric());
+  if (settings.linear.type == LinearSolverType::iterative) {
+    KSP ksp = nullptr;
+    PLISSE_PETSC(SNESGetKSP(snes_, &ksp));
+    const FieldIndexSets fields = make_field_index_sets(
+        model.comm(), model.dofs(), model.first_owned_equation(), model.end_owned_equation());
+    configure_iterative(ksp, fields.u(), fields.p(), settings.linear);
+  }
   history_.assign(settings.max_iterations + 1, 0.0);
   PLISSE_PETSC(SNESSetConvergenceHistory(snes_, history_.data(), nullptr,
                                          static_cast<PetscInt>(history_.size()), PETSC_TRUE));

@@ -16,7 +16,7 @@ InertiaCheck::InertiaCheck(MixedModel& model) : model_(model), symmetric_(model.
   K_ = model.create_matrix();
   PLISSE_PETSC(PetscLogStageGetId("Stability check", &stage_));
   if (stage_ < 0) PLISSE_PETSC(PetscLogStageRegister("Stability check", &stage_));
-  PLISSE_PETSC(PCCreate(PETSC_COMM_SELF, &pc_));
+  PLISSE_PETSC(PCCreate(model.comm(), &pc_));
   PLISSE_PETSC(PCSetOptionsPrefix(pc_, "stability_"));
   PLISSE_PETSC(PCSetType(pc_, PCCHOLESKY));
   PLISSE_PETSC(PCFactorSetMatSolverType(pc_, MATSOLVERMUMPS));
@@ -76,7 +76,7 @@ Inertia InertiaCheck::compute() {
     // factorised and its null pivots are counted in INFOG(28) instead of failing.
     PLISSE_PETSC(MatMumpsSetIcntl(F, 24, 1));
     // In parallel the root front must not go to ScaLAPACK (ICNTL(13) = 1), which computes no
-    // inertia; plisse's matrices are sequential today, the setting guards a distributed run.
+    // inertia.
     PetscMPIInt size = 1;
     PLISSE_PETSC(MPI_Comm_size(PetscObjectComm(reinterpret_cast<PetscObject>(A)), &size));
     if (size > 1) PLISSE_PETSC(MatMumpsSetIcntl(F, 13, 1));
