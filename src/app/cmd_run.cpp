@@ -10,6 +10,7 @@
 #include "app/commands.hpp"
 #include "app/run_case.hpp"
 #include "core/error.hpp"
+#include "io/case.hpp"
 
 namespace plisse::app {
 namespace {
@@ -24,7 +25,7 @@ int launcher_size() {
 
 /// `-n N` outside an MPI job: starts the same command line under `mpiexec -n N` in place of this
 /// process. Inside a job, N must be the job's size.
-void launch_ranks(int ranks) {
+void launch_ranks(int ranks, const RunOptions& options) {
   const int size = launcher_size();
   if (size > 0) {
     if (size != ranks)
@@ -34,7 +35,10 @@ void launch_ranks(int ranks) {
     return;
   }
   if (ranks == 1) return;
-  std::vector<std::string> words = {"mpiexec", "-n", std::to_string(ranks)};
+  // A case the ranks would all refuse is refused here, once, without the launcher's banners.
+  (void)parse_case_file(options.case_file, options.overrides);
+  // -q: no launcher banner when the ranks exit with an error status (they report it themselves).
+  std::vector<std::string> words = {"mpiexec", "-q", "-n", std::to_string(ranks)};
   // This executable, then the arguments it was given (its -n is checked in the children).
   char self[4096];
   const ssize_t length = ::readlink("/proc/self/exe", self, sizeof self - 1);
@@ -79,7 +83,7 @@ void add_run_command(CLI::App& app) {
                   "Results do not depend on N beyond the solver tolerance")
       ->check(CLI::Range(1, 65536));
   cmd->callback([options] {
-    launch_ranks(options->ranks);
+    launch_ranks(options->ranks, *options);
     run_case(*options);
   });
 }

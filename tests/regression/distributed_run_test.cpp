@@ -1,0 +1,189 @@
+// Distributed runs (`plisse run -n 2`) give the results of a one-rank run to solver tolerance:
+// every history column, the counts of summary.json (steps, Newton iterations, instabilities,
+// wrinkle rings) and the fields of the final VTU, read back from the ranks' pieces through the
+// .pvtu. The cases exercise every kind of term a run distributes:
+//  - the paper's indentation, coarsened (R = 12 mm, element 3 mm): follower pressure, a
+//    frictionless moving die and a sticking die, the stability check and wrinkle rings;
+//  - the clamped strip shortened past its Euler load (tests/regression/cases/strip-buckling.yaml):
+//    an instability, its eigenmodes (SLEPc on the distributed tangent) and branch switching;
+//  - the paper's cube tension with the iterative linear solver on two ranks against the closed
+//    form (homogeneous deformation).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "io/history_writer.hpp"
+#include "io/json_file.hpp"
+#include "io/vtu_reader.hpp"
+#include "support/run_plisse.hpp"
+
+namespace plisse {
+namespace {
+
+namespace fs = std::filesystem;
+using test::example;
+using test::run_plisse_captured;
+using test::scratch_directory;
+
+const std::string kStrip = std::string(PLISSE_SOURCE_DIR) + "/tests/regression/cases/strip-buckling.yaml";
+const std::string kCoarseIndentation =
+    " --set mesh.element_size=3 --set mesh.inner_radius=12 --set dies[0].point=[0,15,0]"
+    " --set dies[1].point=[0,-13,0] --set dies[0].move.displacement=[0,-4,0]"
+    " --set output.wrinkles.rings_deg=[30,50]";
+
+/// Runs `plisse run CASE ARGS` on `ranks` ranks into a fresh directory; returns the directory.
+fs::path run(const std::string& name, const std::string& case_file, const std::string& args, int ranks) {
+  const fs::path dir = scratch_directory("distributed-" + name + "-" + std::to_string(ranks));
+  const auto r = run_plisse_captured("run -n " + std::to_string(ranks) + " '" + case_file + "' -o '" +
+                                     dir.string() + "'" + args);
+  EXPECT_EQ(r.status, 0) << r.output;
+  return dir;
+}
+
+/// Columns that belong together (the components of a stress, a force or a displacement): a
+/// component that is zero up to rounding is compared on the scale of its largest sibling.
+std::string column_group(const std::string& name) {
+  const std::size_t colon = name.find(':');
+  const std::string suffix = colon == std::string::npos ? "" : name.substr(colon);
+  if (name.rfind("cauchy_", 0) == 0) return "cauchy";
+  if (name.rfind("stretch", 0) == 0) return "stretch";
+  if (name.rfind("force_", 0) == 0) return "force" + suffix;
+  if (name.size() > 2 && name[0] == 'u' && name[2] == ':') return "u" + suffix;
+  return name;
+}
+
+/// Every column of two histories agrees to `tolerance` relative to the largest magnitude of its
+/// group (column_group).
+void expect_same_history(const fs::path& a, const fs::path& b, double tolerance) {
+  const HistoryTable ha = read_history(a / "history.csv"), hb = read_history(b / "history.csv");
+  ASSERT_EQ(ha.columns, hb.columns);
+  ASSERT_EQ(ha.rows.size(), hb.rows.size());
+  for (std::size_t k = 0; k < ha.columns.size(); ++k) {
+    const std::string& name = ha.columns[k];
+    if (name == "residual_norm") continue;  // below the tolerance by definition, not reproducible
+    double scale = 0.0;
+    for (std::size_t j = 0; j < ha.columns.size(); ++j)
+      if (column_group(ha.columns[j]) == column_group(name))
+        for (const auto& row : ha.rows) scale = std::max(scale, std::abs(row[j]));
+    for (std::size_t i = 0; i < ha.rows.size(); ++i)
+      EXPECT_NEAR(ha.rows[i][k], hb.rows[i][k], tolerance * scale + 1e-300)
+          << "column " << name << ", step " << i + 1;
+  }
+}
+
+/// The largest difference of a point field between two step files, relative to its largest value.
+double field_difference(const fs::path& a, const fs::path& b, const std::string& name) {
+  const VtuField fa = read_vtu_point_field(a, name), fb = read_vtu_point_field(b, name);
+  EXPECT_EQ(fa.values.size(), fb.values.size());
+  double scale = 0.0, difference = 0.0;
+  for (std::size_t i = 0; i < std::min(fa.values.size(), fb.values.size()); ++i) {
+    scale = std::max(scale, std::abs(fa.values[i]));
+    difference = std::max(difference, std::abs(fa.values[i] - fb.values[i]));
+  }
+  return scale > 0 ? difference / scale : difference;
+}
+
+TEST(DistributedRun, IndentationIsTheSameOnOneAndTwoRanks) {
+  const fs::path one = run("indentation", example("sphere-indentation.yaml"), kCoarseIndentation, 1);
+  const fs::path two = run("indentation", example("sphere-indentation.yaml"), kCoarseIndentation, 2);
+  // Newton stops at rtol 1e-8 of the residual: the states agree to about that.
+  expect_same_history(one, two, 1e-6);
+  const nlohmann::json s1 = read_json_file(one / "summary.json"), s2 = read_json_file(two / "summary.json");
+  EXPECT_EQ(s1["ranks"], 1);
+  EXPECT_EQ(s2["ranks"], 2);
+  for (const char* key : {"steps", "newton_iterations", "cutbacks", "free_dofs", "completed"})
+    EXPECT_EQ(s1[key], s2[key]) << key;
+  EXPECT_EQ(s1["stability"]["instabilities"].size(), s2["stability"]["instabilities"].size());
+  ASSERT_EQ(s1["wrinkles"]["rings"].size(), s2["wrinkles"]["rings"].size());
+  for (std::size_t i = 0; i < s1["wrinkles"]["rings"].size(); ++i)
+    EXPECT_EQ(s1["wrinkles"]["rings"][i]["count"], s2["wrinkles"]["rings"][i]["count"]);
+  // The last step: one VTU against the .pvtu of two pieces.
+  const std::string last = "step_" + std::string(4 - std::to_string(int(s1["steps"])).size(), '0') +
+                           std::to_string(int(s1["steps"]));
+  ASSERT_TRUE(fs::exists(two / (last + "_p0.vtu")));
+  ASSERT_TRUE(fs::exists(two / (last + "_p1.vtu")));
+  EXPECT_EQ(read_vtu_point_count(one / (last + ".vtu")), read_vtu_point_count(two / (last + ".pvtu")));
+  EXPECT_LT(field_difference(one / (last + ".vtu"), two / (last + ".pvtu"), "displacement"), 1e-6);
+  EXPECT_LT(field_difference(one / (last + ".vtu"), two / (last + ".pvtu"), "pressure"), 1e-6);
+  EXPECT_EQ(read_vtu_summary(one / (last + ".vtu")).n_cells, read_vtu_summary(two / (last + ".pvtu")).n_cells);
+}
+
+TEST(DistributedRun, BucklingModesAndBranchSwitchingAreTheSameOnTwoRanks) {
+  const std::string args = " --set solver.stability.branch_switch=true";
+  const fs::path one = run("strip", kStrip, args, 1);
+  const fs::path two = run("strip", kStrip, args, 2);
+  expect_same_history(one, two, 1e-6);
+  const nlohmann::json i1 = read_json_file(one / "summary.json")["stability"]["instabilities"];
+  const nlohmann::json i2 = read_json_file(two / "summary.json")["stability"]["instabilities"];
+  ASSERT_EQ(i1.size(), 1u);
+  ASSERT_EQ(i2.size(), 1u);
+  EXPECT_EQ(i1[0]["step"], i2[0]["step"]);
+  EXPECT_EQ(i1[0]["negative_pivots"], i2[0]["negative_pivots"]);
+  EXPECT_EQ(i2[0]["branch_switched"], true);
+  ASSERT_EQ(i1[0]["eigenvalues"].size(), i2[0]["eigenvalues"].size());
+  for (std::size_t k = 0; k < i1[0]["eigenvalues"].size(); ++k) {
+    const double a = i1[0]["eigenvalues"][k], b = i2[0]["eigenvalues"][k];
+    EXPECT_NEAR(a, b, 1e-6 * std::abs(a)) << "eigenvalue " << k;
+  }
+  // The buckling mode, normalised alike (largest nodal |u| = 1, positive largest component).
+  const std::string file1 = i1[0]["file"], file2 = i2[0]["file"];
+  EXPECT_EQ(fs::path(file2).extension(), ".pvtu");
+  EXPECT_LT(field_difference(one / file1, two / file2, "mode_1"), 1e-6);
+}
+
+TEST(DistributedRun, IterativeSolverOnTwoRanksMatchesTheClosedForm) {
+  // Homogeneous uniaxial tension of the neo-Hookean cube: sigma_zz = 2 c1 (lambda^2 - 1/lambda).
+  const std::string args = " --set solver.newton.linear.type=iterative --set solver.newton.linear.rtol=1e-10";
+  const fs::path two = run("cube-iterative", example("cube-tension-neo-hookean.yaml"), args, 2);
+  const HistoryTable h = read_history(two / "history.csv");
+  const auto col = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(h.columns.begin(), h.columns.end(), name) - h.columns.begin());
+  };
+  ASSERT_LT(col("cauchy_zz"), h.columns.size());
+  ASSERT_LT(col("stretch"), h.columns.size());
+  ASSERT_GE(h.rows.size(), 3u);
+  EXPECT_NEAR(h.rows.back()[col("stretch")], 5.0, 1e-9);
+  const double c1 = 0.25;  // examples/cube-tension-neo-hookean.yaml
+  for (const auto& row : h.rows) {
+    const double lambda = row[col("stretch")];
+    const double exact = 2.0 * c1 * (lambda * lambda - 1.0 / lambda);
+    EXPECT_NEAR(row[col("cauchy_zz")], exact, 1e-6 * exact) << "stretch " << lambda;
+  }
+  const fs::path one = run("cube-direct", example("cube-tension-neo-hookean.yaml"), "", 1);
+  expect_same_history(one, two, 1e-6);
+}
+
+TEST(DistributedRun, RankCountOutsideTheJobIsABadInput) {
+  // Inside an MPI job of 2 ranks, -n must say 2.
+  const fs::path dir = scratch_directory("distributed-mismatch");
+  const std::string command = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpiexec -q -n 2 " +
+                              std::string(PLISSE_BINARY_DIR) + "/bin/plisse run -n 3 '" +
+                              example("cube-tension-neo-hookean.yaml") + "' -o '" + dir.string() +
+                              "' 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string output;
+  char buffer[4096];
+  while (const std::size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
+  const int status = pclose(pipe);
+  ASSERT_TRUE(WIFEXITED(status)) << output;
+  EXPECT_EQ(WEXITSTATUS(status), 2) << output;
+  EXPECT_NE(output.find("-n 3 inside an MPI job of 2 ranks"), std::string::npos) << output;
+  EXPECT_FALSE(fs::exists(dir / "history.csv"));
+}
+
+TEST(DistributedRun, BadCaseIsRefusedBeforeTheRanksStart) {
+  const auto r = run_plisse_captured("run -n 2 '" + example("cube-tension-neo-hookean.yaml") +
+                                     "' --set mesh.divisions=0 -o '" +
+                                     scratch_directory("distributed-bad").string() + "'");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("mesh.divisions"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("mpiexec"), std::string::npos) << r.output;  // no launcher banner
+}
+
+}  // namespace
+}  // namespace plisse
