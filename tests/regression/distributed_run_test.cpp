@@ -5,7 +5,8 @@
 //  - the paper's indentation, coarsened (R = 12 mm, element 3 mm): follower pressure, a
 //    frictionless moving die and a sticking die, the stability check and wrinkle rings;
 //  - the clamped strip shortened past its Euler load (tests/regression/cases/strip-buckling.yaml):
-//    an instability, its eigenmodes (SLEPc on the distributed tangent) and branch switching;
+//    an instability, its eigenmodes (SLEPc on the distributed tangent) and branch switching, and
+//    a mode imperfection read back from the .pvtu of the distributed run;
 //  - the paper's cube tension with the iterative linear solver on two ranks against the closed
 //    form (homogeneous deformation).
 #include <gtest/gtest.h>
@@ -133,6 +134,14 @@ TEST(DistributedRun, BucklingModesAndBranchSwitchingAreTheSameOnTwoRanks) {
   const std::string file1 = i1[0]["file"], file2 = i2[0]["file"];
   EXPECT_EQ(fs::path(file2).extension(), ".pvtu");
   EXPECT_LT(field_difference(one / file1, two / file2, "mode_1"), 1e-6);
+  // A mode imperfection read from the distributed run's .pvtu seeds the same run as one read from
+  // the one-rank run's .vtu.
+  const auto seeded = [&](const fs::path& source) {
+    return " --set solver.stability.imperfection=0.01 --set solver.stability.imperfection_kind=mode"
+           " --set solver.stability.imperfection_from='" + source.string() + "'";
+  };
+  expect_same_history(run("strip-seeded-by-1", kStrip, seeded(one), 1),
+                      run("strip-seeded-by-2", kStrip, seeded(two), 1), 1e-6);
 }
 
 TEST(DistributedRun, IterativeSolverOnTwoRanksMatchesTheClosedForm) {
