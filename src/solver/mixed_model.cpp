@@ -209,10 +209,10 @@ Vec MixedModel::create_vector() const {
   return x;
 }
 
-std::vector<double> MixedModel::full_from_free(Vec x) const {
-  std::vector<double> full(dofs_.n_dofs(), 0.0);
+template <class Use>
+void MixedModel::for_each_free_value(Vec x, Use&& use) const {
   Vec source = x;
-  if (size_ > 1) {
+  if (size_ > 1) {  // every rank needs every free value
     PLISSE_PETSC(VecScatterBegin(gather_all_, x, gathered_, INSERT_VALUES, SCATTER_FORWARD));
     PLISSE_PETSC(VecScatterEnd(gather_all_, x, gathered_, INSERT_VALUES, SCATTER_FORWARD));
     source = gathered_;
@@ -220,8 +220,13 @@ std::vector<double> MixedModel::full_from_free(Vec x) const {
   const PetscScalar* a = nullptr;
   PLISSE_PETSC(VecGetArrayRead(source, &a));
   for (int d = 0; d < dofs_.n_dofs(); ++d)
-    if (const int eq = dofs_.equation(d); eq >= 0) full[d] = a[eq];
+    if (const int eq = dofs_.equation(d); eq >= 0) use(d, a[eq]);
   PLISSE_PETSC(VecRestoreArrayRead(source, &a));
+}
+
+std::vector<double> MixedModel::full_from_free(Vec x) const {
+  std::vector<double> full(dofs_.n_dofs(), 0.0);
+  for_each_free_value(x, [&](int d, double value) { full[d] = value; });
   return full;
 }
 
@@ -398,17 +403,7 @@ void MixedModel::get_free(Vec x) const {
 }
 
 void MixedModel::set_free(Vec x) {
-  Vec source = x;
-  if (size_ > 1) {
-    PLISSE_PETSC(VecScatterBegin(gather_all_, x, gathered_, INSERT_VALUES, SCATTER_FORWARD));
-    PLISSE_PETSC(VecScatterEnd(gather_all_, x, gathered_, INSERT_VALUES, SCATTER_FORWARD));
-    source = gathered_;
-  }
-  const PetscScalar* a = nullptr;
-  PLISSE_PETSC(VecGetArrayRead(source, &a));
-  for (int d = 0; d < dofs_.n_dofs(); ++d)
-    if (const int eq = dofs_.equation(d); eq >= 0) state_[d] = a[eq];
-  PLISSE_PETSC(VecRestoreArrayRead(source, &a));
+  for_each_free_value(x, [&](int d, double value) { state_[d] = value; });
 }
 
 void MixedModel::element_dofs(int e, std::array<int, mini::kDof>& full) const {

@@ -175,6 +175,10 @@ class MixedModel {
   void build_node_graph();
   /// Partitions the nodes among the ranks and numbers the equations by rank (constructor).
   void distribute();
+  /// Calls use(d, value) for every free dof d with its value in `x` (collective: gathers `x`
+  /// to every rank in a distributed run).
+  template <class Use>
+  void for_each_free_value(Vec x, Use&& use) const;
   /// The same status on every rank: the first rank's failure, else the smallest J of all.
   AssemblyStatus reduce(const AssemblyStatus& local) const;
   /// Sums `values` over the ranks in place (each rank contributes what it owns, zeros elsewhere).

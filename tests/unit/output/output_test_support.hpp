@@ -57,12 +57,11 @@ inline std::string contents(const std::filesystem::path& file) {
   return text.str();
 }
 
-/// Runs tests/unit/output/fixtures/read_output.py KIND FILE and returns its JSON output. Fails the test
-/// (ADD_FAILURE, returns null) if the script exits with an error.
-inline nlohmann::json read_with_python(const std::string& kind, const std::filesystem::path& file) {
+/// Runs /usr/bin/python3 tests/unit/output/fixtures/SCRIPT ARGS (ARGS already quoted) and returns
+/// its JSON output. Fails the test (ADD_FAILURE, returns null) if the script exits with an error.
+inline nlohmann::json run_python_fixture(const std::string& script, const std::string& args) {
   const std::string command = std::string("/usr/bin/python3 '") + PLISSE_SOURCE_DIR +
-                              "/tests/unit/output/fixtures/read_output.py' " + kind + " '" + file.string() +
-                              "'";
+                              "/tests/unit/output/fixtures/" + script + "' " + args;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) {
     ADD_FAILURE() << "cannot run: " << command;
@@ -78,6 +77,12 @@ inline nlohmann::json read_with_python(const std::string& kind, const std::files
     return nullptr;
   }
   return nlohmann::json::parse(output);
+}
+
+/// Runs tests/unit/output/fixtures/read_output.py KIND FILE and returns its JSON output. Fails the test
+/// (ADD_FAILURE, returns null) if the script exits with an error.
+inline nlohmann::json read_with_python(const std::string& kind, const std::filesystem::path& file) {
+  return run_python_fixture("read_output.py", kind + " '" + file.string() + "'");
 }
 
 /// A float.hex() string from read_output.py back to the double (strtod reads C99 hex floats,

@@ -103,23 +103,10 @@ Mesh quadratic(const Mesh& linear) {
 /// Runs fixtures/read_pvtu.py on `pvtu` and returns its JSON (null and a test failure if the
 /// script fails), as test::read_with_python does for read_output.py.
 nlohmann::json read_pvtu_with_python(const std::filesystem::path& pvtu) {
-  const std::string command = std::string("/usr/bin/python3 '") + PLISSE_SOURCE_DIR +
-                              "/tests/unit/output/fixtures/read_pvtu.py' '" + pvtu.string() + "'";
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) {
-    ADD_FAILURE() << "cannot run: " << command;
-    return nullptr;
-  }
-  std::string output;
-  char buffer[4096];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;)
-    output.append(buffer, n);
-  const int status = ::pclose(pipe);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    ADD_FAILURE() << "'" << command << "' failed (status " << status << "), output: " << output;
-    return nullptr;
-  }
-  return nlohmann::json::parse(output);
+  std::string argument = "'";  // appended piecewise: g++ 12 warns falsely on "'" + string
+  argument += pvtu.string();
+  argument += '\'';
+  return test::run_python_fixture("read_pvtu.py", argument);
 }
 
 /// Flattens Python's rows of hex strings (or a flat list for scalars) to doubles.
