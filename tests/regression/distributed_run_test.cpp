@@ -169,7 +169,8 @@ TEST(DistributedRun, IterativeSolverOnTwoRanksMatchesTheClosedForm) {
 TEST(DistributedRun, RankCountOutsideTheJobIsABadInput) {
   // Inside an MPI job of 2 ranks, -n must say 2.
   const fs::path dir = scratch_directory("distributed-mismatch");
-  const std::string command = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpiexec -q -n 2 " +
+  const std::string command = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
+                              "OMPI_MCA_rmaps_base_oversubscribe=1 mpiexec -q -n 2 " +
                               std::string(PLISSE_BINARY_DIR) + "/bin/plisse run -n 3 '" +
                               example("cube-tension-neo-hookean.yaml") + "' -o '" + dir.string() +
                               "' 2>&1";
