@@ -261,57 +261,44 @@ void check_solver_options(const Case& c, const std::vector<std::string>& command
   }
 }
 
-void run_case(const RunOptions& options) {
-  const auto t_start = Clock::now();
-  const Case c = parse_case_file(options.case_file, options.overrides);
-  if (!options.resume_directory.empty() && !options.output_directory.empty() &&
-      fs::weakly_canonical(options.resume_directory) != fs::weakly_canonical(options.output_directory))
-    throw InputError({"command line", 0, 0, "--resume"},
-                     "a resumed run writes into its own directory; -o must be omitted or the same");
-  const fs::path out_dir = !options.resume_directory.empty() ? fs::path(options.resume_directory)
-                           : options.output_directory.empty()
-                               ? fs::path("runs") / fs::path(options.case_file).stem()
-                               : fs::path(options.output_directory);
-  const std::uint64_t fingerprint = case_fingerprint(options.case_file, options.overrides);
-  std::optional<Checkpoint> checkpoint;
-  if (!options.resume_directory.empty()) {
-    checkpoint = read_checkpoint(out_dir / "checkpoint.bin");
-    if (checkpoint->case_fingerprint != fingerprint)
-      throw InputError({(out_dir / "checkpoint.bin").string(), 0, 0, "--resume"},
-                       "the checkpoint was written for another case file or other --set values");
-  }
+namespace {
+
+/// Everything run_case prepared and checked before PETSc started: what solve_and_write needs.
+struct PreparedRun {
+  const RunOptions& options;
+  const Case& c;
+  Clock::time_point start;
+  fs::path out_dir;
+  std::uint64_t fingerprint;
+  std::optional<Checkpoint>& checkpoint;
+  const Mesh& mesh;
+  double time_mesh;
+  AnyMaterial material;
+  const std::vector<ConstrainedComponent>& constraints;
+  std::vector<std::unique_ptr<ModelTerm>> terms;
+  const InterruptGuard& interrupts;
+};
+
+/// Builds the model, steps to the end and writes the run directory. Distributed runs: every rank
+/// runs all of it; rank 0 alone writes the log, the history, the summary, the checkpoint and the
+/// PVD index, every rank its own VTU pieces.
+void solve_and_write(PreparedRun run) {
+  const RunOptions& options = run.options;
+  const Case& c = run.c;
+  const auto t_start = run.start;
+  const fs::path& out_dir = run.out_dir;
+  const std::uint64_t fingerprint = run.fingerprint;
+  std::optional<Checkpoint>& checkpoint = run.checkpoint;
+  const Mesh& mesh = run.mesh;
+  const double time_mesh = run.time_mesh;
+  const std::vector<ConstrainedComponent>& constraints = run.constraints;
+  const InterruptGuard& interrupts = run.interrupts;
+  const bool root = PetscSession::rank() == 0;
 
   auto t0 = Clock::now();
-  const Mesh mesh = load_perturbed_mesh(c);
-  if (const auto unsupported = unsupported_features(c, mesh); !unsupported.empty())
-    throw unsupported.front();
-  const double time_mesh = seconds_since(t0);
-
-  // Everything that can be rejected is checked before the run directory is touched.
-  std::map<std::string, double> params = c.material.params;
-  AnyMaterial material = make_material(c.material.model, params);
-  const std::vector<ConstrainedComponent> constraints = collect_constraints(c, mesh);
-  check_free_displacements(c, mesh, constraints);
-  std::vector<std::unique_ptr<ModelTerm>> terms = make_terms(c, mesh, constraints);
-
-  // PETSc's own signal handler would abort on SIGINT/SIGTERM; plisse checkpoints instead.
-  PetscSession petsc({"-no_signal_handler", c.solver.petsc_options});
-  for (const auto& o : options.petsc_options) PetscSession::insert_options(o);
-  check_solver_options(c, options.petsc_options);
-  InterruptGuard interrupts;
-  check_same_mesh_on_every_rank(mesh);
-  // Distributed runs: every rank runs all of what follows; rank 0 alone writes the log, the
-  // history, the summary, the checkpoint and the PVD index, every rank its own VTU pieces. Input
-  // and solver errors from here on arise on every rank alike; anything else (a failed write on
-  // one rank) would leave the others waiting in a collective call, so it ends the whole job.
-  const bool root = PetscSession::rank() == 0;
-  try {
-    [&] {
-
-  t0 = Clock::now();
-  MixedModel model(mesh, material,
+  MixedModel model(mesh, std::move(run.material),
                    c.material.inverse_bulk_modulus(),
-                   constraints, std::move(terms));
+                   constraints, std::move(run.terms));
   LoadStepper stepper(model, c.solver);
   stepper.set_stability(stability_options(c));
   std::optional<WrinkleMeter> wrinkle_meter;
@@ -575,7 +562,54 @@ void run_case(const RunOptions& options) {
                       dir.directory().string() + ")");
   }
   log.flush();
-    }();
+}
+
+}  // namespace
+
+void run_case(const RunOptions& options) {
+  const auto t_start = Clock::now();
+  const Case c = parse_case_file(options.case_file, options.overrides);
+  if (!options.resume_directory.empty() && !options.output_directory.empty() &&
+      fs::weakly_canonical(options.resume_directory) != fs::weakly_canonical(options.output_directory))
+    throw InputError({"command line", 0, 0, "--resume"},
+                     "a resumed run writes into its own directory; -o must be omitted or the same");
+  const fs::path out_dir = !options.resume_directory.empty() ? fs::path(options.resume_directory)
+                           : options.output_directory.empty()
+                               ? fs::path("runs") / fs::path(options.case_file).stem()
+                               : fs::path(options.output_directory);
+  const std::uint64_t fingerprint = case_fingerprint(options.case_file, options.overrides);
+  std::optional<Checkpoint> checkpoint;
+  if (!options.resume_directory.empty()) {
+    checkpoint = read_checkpoint(out_dir / "checkpoint.bin");
+    if (checkpoint->case_fingerprint != fingerprint)
+      throw InputError({(out_dir / "checkpoint.bin").string(), 0, 0, "--resume"},
+                       "the checkpoint was written for another case file or other --set values");
+  }
+
+  auto t0 = Clock::now();
+  const Mesh mesh = load_perturbed_mesh(c);
+  if (const auto unsupported = unsupported_features(c, mesh); !unsupported.empty())
+    throw unsupported.front();
+  const double time_mesh = seconds_since(t0);
+
+  // Everything that can be rejected is checked before the run directory is touched.
+  std::map<std::string, double> params = c.material.params;
+  AnyMaterial material = make_material(c.material.model, params);
+  const std::vector<ConstrainedComponent> constraints = collect_constraints(c, mesh);
+  check_free_displacements(c, mesh, constraints);
+  std::vector<std::unique_ptr<ModelTerm>> terms = make_terms(c, mesh, constraints);
+
+  // PETSc's own signal handler would abort on SIGINT/SIGTERM; plisse checkpoints instead.
+  PetscSession petsc({"-no_signal_handler", c.solver.petsc_options});
+  for (const auto& o : options.petsc_options) PetscSession::insert_options(o);
+  check_solver_options(c, options.petsc_options);
+  InterruptGuard interrupts;
+  check_same_mesh_on_every_rank(mesh);
+  // Input and solver errors from here on arise on every rank alike; anything else (a failed write
+  // on one rank) would leave the others waiting in a collective call, so it ends the whole job.
+  try {
+    solve_and_write({options, c, t_start, out_dir, fingerprint, checkpoint, mesh, time_mesh,
+                     std::move(material), constraints, std::move(terms), interrupts});
   } catch (const InputError&) {
     throw;
   } catch (const SolverError&) {
