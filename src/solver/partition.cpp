@@ -1,8 +1,7 @@
 #include "solver/partition.hpp"
 
-#include <petscmat.h>
+#include <metis.h>
 
-#include <algorithm>
 #include <string>
 
 #include "core/error.hpp"
@@ -11,62 +10,35 @@
 namespace plisse {
 namespace {
 
-/// The partition computed on this process alone (PETSC_COMM_SELF).
+/// The partition computed on this process alone, by METIS's multilevel k-way partitioning
+/// (deterministic: a fixed seed gives the same parts on every machine and run).
 std::vector<int> partition_here(const std::vector<int>& start, const std::vector<int>& adjacency,
                                 const std::vector<int>& weights, int parts) {
-  const int n = static_cast<int>(start.size()) - 1;
-  // MatCreateMPIAdj takes ownership of arrays allocated with PetscMalloc; it wants sorted rows
-  // without the diagonal.
-  PetscInt* ia = nullptr;
-  PetscInt* ja = nullptr;
-  PetscInt* vertex_weights = nullptr;
-  PetscInt edges = 0;
-  for (int v = 0; v < n; ++v)
-    for (int k = start[v]; k < start[v + 1]; ++k) edges += adjacency[k] != v;
-  PLISSE_PETSC(PetscMalloc1(n + 1, &ia));
-  PLISSE_PETSC(PetscMalloc1(edges > 0 ? edges : 1, &ja));
-  PLISSE_PETSC(PetscMalloc1(n, &vertex_weights));
-  ia[0] = 0;
-  for (int v = 0; v < n; ++v) {
-    PetscInt next = ia[v];
+  idx_t n = static_cast<idx_t>(weights.size());
+  // METIS wants the graph without self loops.
+  std::vector<idx_t> xadj(n + 1, 0), adjncy;
+  adjncy.reserve(adjacency.size());
+  for (idx_t v = 0; v < n; ++v) {
     for (int k = start[v]; k < start[v + 1]; ++k)
-      if (adjacency[k] != v) ja[next++] = adjacency[k];
-    std::sort(ja + ia[v], ja + next);
-    ia[v + 1] = next;
-    vertex_weights[v] = weights[v];
+      if (adjacency[k] != v) adjncy.push_back(adjacency[k]);
+    xadj[v + 1] = static_cast<idx_t>(adjncy.size());
   }
-  Mat graph = nullptr;
-  MatPartitioning partitioning = nullptr;
-  IS is = nullptr;
-  std::vector<int> part(n, 0);
-  try {
-    PLISSE_PETSC(MatCreateMPIAdj(PETSC_COMM_SELF, n, n, ia, ja, nullptr, &graph));
-    PLISSE_PETSC(MatPartitioningCreate(PETSC_COMM_SELF, &partitioning));
-    PLISSE_PETSC(MatPartitioningSetAdjacency(partitioning, graph));
-    PLISSE_PETSC(MatPartitioningSetNParts(partitioning, parts));
-    PLISSE_PETSC(MatPartitioningSetType(partitioning, MATPARTITIONINGPTSCOTCH));
-    PLISSE_PETSC(MatPartitioningSetVertexWeights(partitioning, vertex_weights));
-    vertex_weights = nullptr;  // owned by the partitioning now
-    PLISSE_PETSC(MatPartitioningSetFromOptions(partitioning));
-    PLISSE_PETSC(MatPartitioningApply(partitioning, &is));
-    const PetscInt* indices = nullptr;
-    PLISSE_PETSC(ISGetIndices(is, &indices));
-    for (int v = 0; v < n; ++v) part[v] = static_cast<int>(indices[v]);
-    PLISSE_PETSC(ISRestoreIndices(is, &indices));
-  } catch (...) {
-    ISDestroy(&is);
-    MatPartitioningDestroy(&partitioning);
-    MatDestroy(&graph);
-    PetscFree(vertex_weights);
-    throw;
-  }
-  ISDestroy(&is);
-  MatPartitioningDestroy(&partitioning);
-  MatDestroy(&graph);
-  for (int v = 0; v < n; ++v)
-    FE_CHECK(part[v] >= 0 && part[v] < parts,
-             "the partitioner put node " << v << " into part " << part[v] << " of " << parts);
-  return part;
+  std::vector<idx_t> vertex_weights(weights.begin(), weights.end());
+  idx_t constraints = 1, n_parts = parts, cut = 0;
+  idx_t options[METIS_NOPTIONS];
+  METIS_SetDefaultOptions(options);
+  options[METIS_OPTION_NUMBERING] = 0;
+  options[METIS_OPTION_SEED] = 1;
+  std::vector<idx_t> part(n, 0);
+  const int status =
+      METIS_PartGraphKway(&n, &constraints, xadj.data(), adjncy.data(), vertex_weights.data(),
+                          nullptr, nullptr, &n_parts, nullptr, nullptr, options, &cut, part.data());
+  FE_CHECK(status == METIS_OK, "METIS_PartGraphKway failed (status " << status << ")");
+  std::vector<int> out(part.begin(), part.end());
+  for (idx_t v = 0; v < n; ++v)
+    FE_CHECK(out[v] >= 0 && out[v] < parts,
+             "the partitioner put node " << v << " into part " << out[v] << " of " << parts);
+  return out;
 }
 
 }  // namespace

@@ -17,9 +17,9 @@ namespace plisse {
 /// Splits the vertices of the graph (CSR: the neighbours of vertex v are
 /// adjacency[start[v]] .. adjacency[start[v + 1] - 1]; self loops are ignored) into `parts` parts
 /// and returns the part of every vertex. `weights` (one per vertex, >= 1) are balanced. The graph
-/// is partitioned with PETSc's MatPartitioning, PT-Scotch unless -mat_partitioning_type chooses
-/// another method, on rank 0 of `comm`, and broadcast, so that every rank gets the same answer.
-/// With parts == 1 every vertex is in part 0. Collective on `comm`; needs a live PetscSession.
+/// is partitioned with METIS (multilevel k-way, fixed seed: the same parts in every run) on rank
+/// 0 of `comm` and broadcast, so that every rank gets the same answer. With parts == 1 every
+/// vertex is in part 0. Collective on `comm`.
 std::vector<int> partition_graph(const std::vector<int>& start, const std::vector<int>& adjacency,
                                  const std::vector<int>& weights, int parts, MPI_Comm comm);
 
