@@ -32,6 +32,7 @@
 #include "mesh/box_mesh.hpp"
 #include "solver/mixed_model.hpp"
 #include "solver/petsc_call.hpp"
+#include "support/cube_tension.hpp"
 
 namespace plisse {
 namespace {
@@ -41,18 +42,7 @@ constexpr double kC1 = 0.5;  // [MPa], mu = 2 c1 = 1 MPa
 
 /// Symmetry planes x = 0, y = 0, z = 0 and the top face's uz prescribed to (lambda - 1) Lz.
 std::vector<ConstrainedComponent> tension_constraints(const Mesh& mesh) {
-  std::vector<ConstrainedComponent> constraints;
-  const auto constrain = [&](const std::string& tag, int component, double value) {
-    std::set<int> nodes;
-    for (int t : mesh.surface_tags.at(tag))
-      for (int v : mesh.triangles[t]) nodes.insert(v);
-    for (int v : nodes) constraints.push_back({v, component, value, Ramp{0.0, 1.0}});
-  };
-  constrain("sym_x", 0, 0.0);
-  constrain("sym_y", 1, 0.0);
-  constrain("sym_z", 2, 0.0);
-  constrain("top", 2, kStretch - 1.0);
-  return constraints;
+  return test::cube_tension_constraints(mesh, kStretch - 1.0);
 }
 
 /// The assembled tangent K and residual r of the tension cube at a perturbed stretched state.

@@ -15,6 +15,7 @@
 #include <set>
 
 #include "mesh/generate.hpp"
+#include "support/cube_tension.hpp"
 #include "verification/stability/fixtures/stability_models.hpp"
 
 namespace plisse {
@@ -229,17 +230,8 @@ void expect_stable_cube_tension(const CubeCase& c) {
   spec.edge = 5.0;
   spec.divisions = 3;
   const Mesh mesh = generate_mesh(spec);
-  std::vector<ConstrainedComponent> constraints;
-  const auto constrain = [&](const std::string& tag, int component, double value) {
-    std::set<int> nodes;
-    for (int t : mesh.surface_tags.at(tag))
-      for (int v : mesh.triangles[t]) nodes.insert(v);
-    for (int v : nodes) constraints.push_back({v, component, value, Ramp{0.0, 1.0}});
-  };
-  constrain("sym_x", 0, 0.0);
-  constrain("sym_y", 1, 0.0);
-  constrain("sym_z", 2, 0.0);
-  constrain("top", 2, 10.0);  // stretch 3
+  const std::vector<ConstrainedComponent> constraints =
+      test::cube_tension_constraints(mesh, 10.0);  // stretch 3
   MixedModel model(mesh, make_material(c.model, c.values), c.inverse_bulk_modulus, constraints);
   const test::SteppedRun run = test::run_steps(model, fixed_steps(10), check_only());
   print_log(run);
