@@ -325,14 +325,8 @@ void solve_and_write(PreparedRun run) {
     log.info(line);
     if (model.n_ranks() > 1) {
       // Each rank evaluates the elements touching its nodes: the cut elements twice.
-      int local = 0, owned = model.n_owned();
-      for (int e = 0; e < mesh.n_tets(); ++e)
-        for (int a : mesh.tets[e])
-          if (model.node_ranks()[a] == model.rank()) {
-            ++local;
-            break;
-          }
-      int most = owned, fewest = owned, evaluated = local;
+      const int owned = model.n_owned();
+      int most = owned, fewest = owned, evaluated = static_cast<int>(model.local_elements().size());
       PLISSE_PETSC(MPI_Allreduce(MPI_IN_PLACE, &most, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD));
       PLISSE_PETSC(MPI_Allreduce(MPI_IN_PLACE, &fewest, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD));
       PLISSE_PETSC(MPI_Allreduce(MPI_IN_PLACE, &evaluated, 1, MPI_INT, MPI_SUM, PETSC_COMM_WORLD));

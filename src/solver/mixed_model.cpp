@@ -136,9 +136,12 @@ MixedModel::MixedModel(const Mesh& mesh, AnyMaterial material, double inverse_bu
   for (const auto& tet : mesh.tets)
     geometry_.push_back(mini::compute_tet_geometry(
         {mesh.nodes[tet[0]], mesh.nodes[tet[1]], mesh.nodes[tet[2]], mesh.nodes[tet[3]]}));
-  build_node_graph();
+  // (row, column) full-state dofs the terms couple, beyond the elements.
+  std::vector<std::pair<int, int>> couplings;
+  for (const auto& term : terms_) term->add_couplings(couplings);
+  build_node_graph(couplings);
   distribute();
-  build_tangent_layout();
+  build_tangent_layout(couplings);
   save_converged();
 }
 
@@ -265,13 +268,11 @@ int MixedModel::assembly_threads() const {
   return threads_ > 0 ? threads_ : std::max(1, kOpenMPThreadsAtStart);
 }
 
-void MixedModel::build_node_graph() {
+void MixedModel::build_node_graph(const std::vector<std::pair<int, int>>& couplings) {
   const int n_nodes = mesh_.n_nodes();
   const int n_nodal = DofMap::kPerNode * n_nodes;
   // Node graph: the nodes of each tet couple, each node couples itself, and so do the nodes of
   // the terms' declared couplings. Filled by counting, then sorted and made unique per node.
-  std::vector<std::pair<int, int>> couplings;
-  for (const auto& term : terms_) term->add_couplings(couplings);
   std::vector<int> count(n_nodes + 1, 0);
   for (const auto& tet : mesh_.tets)
     for (int a : tet) count[a + 1] += 4;
@@ -299,7 +300,7 @@ void MixedModel::build_node_graph() {
   }
 }
 
-void MixedModel::build_tangent_layout() {
+void MixedModel::build_tangent_layout(const std::vector<std::pair<int, int>>& couplings) {
   const int n_nodes = mesh_.n_nodes();
   const int n_nodal = DofMap::kPerNode * n_nodes;
   node_free_.assign(n_nodes, 0);
@@ -314,8 +315,6 @@ void MixedModel::build_tangent_layout() {
   // Owned couplings that involve a global unknown, and the diagonal of every owned free global
   // unknown. Their equations follow all nodal ones, so in a nodal row they come after the node
   // columns.
-  std::vector<std::pair<int, int>> couplings;
-  for (const auto& term : terms_) term->add_couplings(couplings);
   extra_entries_.clear();
   for (const auto& [row, col] : couplings) {
     const int r = dofs_.equation(row), c = dofs_.equation(col);

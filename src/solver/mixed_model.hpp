@@ -72,8 +72,9 @@ class MixedModel {
   int first_owned_equation() const { return first_equation_; }
   int end_owned_equation() const { return end_equation_; }
   int n_owned() const { return end_equation_ - first_equation_; }
-  /// The rank owning each node's equations (all 0 on one rank).
-  const std::vector<int>& node_ranks() const { return node_rank_; }
+  /// The elements this rank evaluates in an assembly: those touching one of its nodes (all of
+  /// them on one rank; the cut elements are evaluated by both sides).
+  const std::vector<int>& local_elements() const { return local_elements_; }
   /// The elements whose results this rank reports (in output pieces, sums over the body): those
   /// whose first node it owns. Every element is owned by exactly one rank.
   const std::vector<int>& owned_elements() const { return owned_elements_; }
@@ -168,11 +169,11 @@ class MixedModel {
   template <class Scatter>
   AssemblyStatus for_each_element(bool with_tangent, Scatter&& scatter);
   /// Builds the node graph and the per-element positions of the tangent layout (constructor).
-  void build_tangent_layout();
+  void build_tangent_layout(const std::vector<std::pair<int, int>>& couplings);
   /// True when K is an AIJ matrix with this model's layout (made by create_matrix).
   bool has_tangent_layout(Mat K) const;
   /// The nodes coupled to each node (node_start_, node_neighbours_; constructor).
-  void build_node_graph();
+  void build_node_graph(const std::vector<std::pair<int, int>>& couplings);
   /// Partitions the nodes among the ranks and numbers the equations by rank (constructor).
   void distribute();
   /// Calls use(d, value) for every free dof d with its value in `x` (collective: gathers `x`
