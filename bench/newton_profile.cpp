@@ -29,7 +29,7 @@
 #include "io/case.hpp"
 #include "material/registry.hpp"
 #include "physics/dirichlet.hpp"
-#include "physics/terms.hpp"
+#include "app/model_builder.hpp"
 #include "solver/mixed_model.hpp"
 #include "solver/newton_solver.hpp"
 #include "solver/petsc_call.hpp"
@@ -113,13 +113,12 @@ int run(int argc, char** argv) {
   const Case c = parse_case_file(case_file, overrides);
   const Mesh mesh = load_case_mesh(c);
   check_case_against_mesh(c, mesh);
-  const AnyMaterial material = make_material(c.material.model, c.material.params);
-  const auto constraints = collect_constraints(c, mesh);
+  app::ModelParts parts = app::build_model_parts(c, mesh);
+  const AnyMaterial material = parts.material;  // the bare kernel loop below evaluates it
   PetscSession petsc({"-no_signal_handler", c.solver.petsc_options});
   PLISSE_PETSC(PetscLogDefaultBegin());
-  MixedModel model(mesh, material,
-                   c.material.inverse_bulk_modulus(),
-                   constraints, make_terms(c, mesh, constraints));
+  const std::unique_ptr<MixedModel> model_owner = app::make_model(mesh, std::move(parts));
+  MixedModel& model = *model_owner;
   std::printf("%s: %d nodes, %d tetrahedra, %d unknowns; %d assembly threads\n",
               case_file.c_str(), mesh.n_nodes(), mesh.n_tets(), model.n_free(),
               model.assembly_threads());

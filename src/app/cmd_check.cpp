@@ -8,14 +8,13 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/model_builder.hpp"
+#include "app/run_case.hpp"
+#include "app/wrinkling.hpp"
 #include "io/case.hpp"
 #include "material/registry.hpp"
 #include "mesh/quality.hpp"
-#include "physics/dirichlet.hpp"
-#include "physics/terms.hpp"
 #include "solver/petsc_session.hpp"
-#include "app/run_case.hpp"
-#include "app/wrinkling.hpp"
 
 namespace plisse::app {
 namespace {
@@ -60,9 +59,8 @@ void check_case(const CheckOptions& options) {
   const Case c = parse_case_file(options.case_file, options.overrides);
   const Mesh mesh = load_perturbed_mesh(c);  // with the imperfection, as `plisse run` builds it
   // The same rules `plisse run` applies before solving (symmetry planes, conflicting conditions).
-  const auto constraints = collect_constraints(c, mesh);
-  check_free_displacements(c, mesh, constraints);
-  make_terms(c, mesh, constraints);  // loads, cavities and dies validate their surfaces here
+  // Material, conditions and terms: loads, cavities and dies validate their surfaces here.
+  build_model_parts(c, mesh);
   {
     PetscSession petsc({"-no_signal_handler", c.solver.petsc_options});
     check_solver_options(c, {});

@@ -11,13 +11,11 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/model_builder.hpp"
 #include "app/wrinkling.hpp"
 #include "core/error.hpp"
 #include "io/checkpoint.hpp"
 #include "io/json_file.hpp"
-#include "material/registry.hpp"
-#include "physics/dirichlet.hpp"
-#include "physics/terms.hpp"
 #include "solver/petsc_session.hpp"
 
 namespace plisse::app {
@@ -80,20 +78,16 @@ void recompute_wrinkles(const WrinklesOptions& options) {
                      "output.wrinkles.rings_deg=[0,30,60]");
 
   const Mesh mesh = load_perturbed_mesh(c);
-  std::map<std::string, double> params = c.material.params;
-  AnyMaterial material = make_material(c.material.model, params);
-  const auto constraints = collect_constraints(c, mesh);
+  ModelParts parts = build_model_parts(c, mesh);
   PetscSession petsc({"-no_signal_handler"});
-  MixedModel model(mesh, material,
-                   c.material.inverse_bulk_modulus(),
-                   constraints, make_terms(c, mesh, constraints));
+  const std::unique_ptr<MixedModel> model = make_model(mesh, std::move(parts));
   try {
-    model.restore({checkpoint.state, checkpoint.bubbles, checkpoint.term_states});
+    model->restore({checkpoint.state, checkpoint.bubbles, checkpoint.term_states});
   } catch (const Error& e) {
     throw InputError({(dir / "checkpoint.bin").string(), 0, 0, "DIR"}, e.what());
   }
   const WrinkleMeter meter(c, mesh);
-  const WrinkleMeter::Result result = meter.evaluate(model, model.element_fields());
+  const WrinkleMeter::Result result = meter.evaluate(*model, model->element_fields());
   summary["wrinkles"] = wrinkles_json(c, result);
   write_json_file(summary_path, summary);
 

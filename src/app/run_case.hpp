@@ -4,33 +4,22 @@
 #include <vector>
 
 #include "io/case.hpp"
-#include "mesh/mesh.hpp"
-#include "physics/dirichlet.hpp"
 
 namespace plisse::app {
 
 struct RunOptions {
   std::string case_file;
-  std::string output_directory;          ///< empty: runs/<case file stem>
-  std::vector<std::string> overrides;    ///< --set key.path=value
+  std::string output_directory;            ///< empty: runs/<case file stem>
+  std::vector<std::string> overrides;      ///< --set key.path=value
   std::vector<std::string> petsc_options;  ///< --petsc "-snes_monitor ..."
-  std::string resume_directory;          ///< --resume DIR: continue from DIR/checkpoint.bin
-  int ranks = 1;                         ///< -n N: MPI ranks (run under mpiexec)
+  std::string resume_directory;            ///< --resume DIR: continue from DIR/checkpoint.bin
+  int ranks = 1;                           ///< -n N: MPI ranks (run under mpiexec)
 };
-
-/// What the case file allows but this build cannot solve yet (second-order meshes, the
-/// incremental scheme), each as an InputError naming the key. `plisse run` refuses the first; `plisse check` lists them as warnings.
-std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh);
 
 /// Checks the PETSc options of the case (solver.petsc_options) and of the command line (--petsc)
 /// against plisse's solver set-up; PETSc's refusal becomes an InputError at that key. Needs a
 /// live PetscSession that holds the options.
 void check_solver_options(const Case& c, const std::vector<std::string>& command_line_options);
-
-/// InputError (key `boundary`) when the boundary conditions prescribe every displacement, so
-/// that nothing is left to solve.
-void check_free_displacements(const Case& c, const Mesh& mesh,
-                              const std::vector<ConstrainedComponent>& constraints);
 
 /// Runs the case. Returns normally when the run reached its end time; throws InputError for bad
 /// input (nothing is solved) and SolverError when the solver stopped early or SIGINT/SIGTERM

@@ -1,7 +1,9 @@
 #pragma once
 /// A plisse case: the typed, validated contents of a case file (YAML).
 ///
-/// Keys of the file are the member names below (STYLE.md section 2). Every value that refers to
+/// Keys of the file are the member names below. The sections are made of the parameter types of
+/// the layers that use them (Ramp, BoundaryCondition, Cavity in physics/; SteppingSettings,
+/// NewtonSettings in solver/), so those layers never see this file. Every value that refers to
 /// the user's input keeps its InputPlace, so later checks (tags against the mesh, material rules)
 /// can name the file, line, column and key. The parser (`parse_case_file`) fills and validates
 /// everything that can be checked without the mesh; `check_case_against_mesh` does the rest.
@@ -17,26 +19,15 @@
 #include "core/types.hpp"
 #include "mesh/generate.hpp"
 #include "mesh/mesh.hpp"
+#include "mesh/surface_ref.hpp"
+#include "physics/boundary_condition.hpp"
+#include "physics/cavity_settings.hpp"
+#include "physics/die_contact_settings.hpp"
+#include "physics/die_geometry.hpp"
+#include "physics/ramp.hpp"
+#include "solver/stepping_settings.hpp"
 
 namespace plisse {
-
-/// A reference to a tagged surface of the mesh, with where it was named.
-struct SurfaceRef {
-  std::string name;
-  InputPlace place;
-};
-
-/// Linear time ramp: factor 0 for t <= start, 1 for t >= end, linear between (end > start >= 0).
-/// A load "held constant" after its ramp keeps factor 1.
-struct Ramp {
-  double start = 0.0;  ///< [s]
-  double end = 1.0;    ///< [s]; default: the case's solver.end_time
-  double factor(double t) const {
-    if (t <= start) return 0.0;
-    if (t >= end) return 1.0;
-    return (t - start) / (end - start);
-  }
-};
 
 struct MeshSection {
   std::optional<std::string> file;            ///< `file:` resolved against the case directory
@@ -70,21 +61,6 @@ struct MaterialSection {
   double inverse_bulk_modulus() const { return exact_incompressibility ? 0.0 : 1.0 / bulk_modulus; }
 };
 
-enum class BoundaryType { fixed, symmetry, displacement };
-
-/// Dirichlet condition on the nodes of a tagged surface.
-struct BoundaryCondition {
-  BoundaryType type = BoundaryType::fixed;
-  std::string name;  ///< optional, unique; the reaction force on the surface is reported in the
-                     ///< history as `force_x:<name>`, `force_y:<name>`, `force_z:<name>`
-  SurfaceRef surface;
-  /// `displacement` only: prescribed components [mm] at the end of the ramp; an empty optional
-  /// (`~`/null in YAML) leaves that component free.
-  std::array<std::optional<double>, 3> value{};
-  Ramp ramp;
-  InputPlace place;
-};
-
 enum class LoadType { pressure, gravity };
 
 struct Load {
@@ -96,24 +72,6 @@ struct Load {
   Ramp ramp;
   InputPlace place;
 };
-
-enum class CavityControl { volume, gas };
-
-/// A closed (or closed by symmetry planes) surface enclosing a fluid region.
-struct Cavity {
-  std::string name;  ///< history columns `volume:<name>`, `pressure:<name>`
-  SurfaceRef surface;
-  CavityControl control = CavityControl::volume;
-  double volume_ratio = 1.0;      ///< volume: V(end of ramp) / V0, > 0
-  double initial_pressure = 0.0;  ///< gas: gauge pressure at t = 0 [MPa], >= 0
-  double mass_ratio = 1.0;        ///< gas: gas mass at end of ramp / initial mass, > 0
-  double ambient_pressure = 0.1;  ///< gas: absolute ambient pressure [MPa], > 0
-  Ramp ramp;
-  InputPlace place;
-};
-
-enum class DieShape { plane, sphere, cylinder };
-enum class ContactKind { frictionless, sticking };
 
 /// A rigid analytic die with prescribed motion.
 struct Die {
@@ -141,32 +99,6 @@ struct Probe {
 };
 
 enum class Scheme { total_lagrangian, incremental };
-enum class LineSearch { bt, basic, l2, cp };
-
-enum class LinearSolverType { direct, iterative };
-
-/// The solver of the linear system K dx = -R of each Newton iteration (`solver.newton.linear`).
-/// direct: MUMPS LDL^T (LU for an unsymmetric tangent). iterative: flexible GMRES preconditioned
-/// by a Schur-complement field split of the mixed u-p system with algebraic multigrid (hypre
-/// BoomerAMG) on the displacement block (solver/linear_solver.hpp). The stability check and the
-/// eigenmodes factorise with MUMPS whatever the choice here.
-struct LinearSolverSettings {
-  LinearSolverType type = LinearSolverType::direct;
-  /// iterative: GMRES stops when ||K dx + R|| <= rtol ||R|| (true, unpreconditioned residual);
-  /// in (0, 1). The Newton residual then falls by about this factor per iteration at least.
-  double rtol = 1e-6;
-  int max_iterations = 1000;  ///< iterative: GMRES iterations per Newton iteration, >= 1
-  int restart = 50;           ///< iterative: Krylov vectors kept before a restart, >= 1
-  InputPlace place;           ///< where `linear:` is (empty when not given)
-};
-
-struct NewtonSettings {
-  double rtol = 1e-8;        ///< relative residual tolerance, in (0, 1)
-  double atol = 1e-10;       ///< absolute residual tolerance [N], >= 0
-  int max_iterations = 25;   ///< >= 1
-  LineSearch line_search = LineSearch::bt;
-  LinearSolverSettings linear;
-};
 
 struct StabilitySettings {
   bool check = false;          ///< inertia of the tangent at every converged step
@@ -183,21 +115,13 @@ struct StabilitySettings {
   InputPlace place;            ///< where `stability:` is
 };
 
-struct SolverSettings {
+/// `solver:`: the stepping and Newton settings (solver/stepping_settings.hpp) and what the app
+/// maps to the other layers.
+struct SolverSettings : SteppingSettings {
   Scheme scheme = Scheme::total_lagrangian;
-  double end_time = 1.0;       ///< [s], > 0
-  int steps = 10;              ///< initial number of steps (initial step = end_time/steps), >= 1
-  int max_steps = 10000;       ///< >= 1
-  double min_step = 1e-8;      ///< smallest step as a fraction of end_time, in (0, 1]
-  double max_step = 1.0;       ///< largest step as a fraction of end_time, in (0, 1]
-  double growth = 1.5;         ///< step growth after easy steps, >= 1
-  double cutback = 0.5;        ///< step reduction after a failure, in (0, 1)
-  int easy_iterations = 4;     ///< a step is easy when Newton takes at most this many iterations
-  double viscosity = 0.0;      ///< viscous stabilisation [MPa s], >= 0
-  int max_augmentations = 20;  ///< multiplier updates per step (augmented Lagrangian contact)
-  NewtonSettings newton;
+  double viscosity = 0.0;  ///< viscous stabilisation [MPa s], >= 0
   StabilitySettings stability;
-  std::string petsc_options;   ///< extra PETSc options, e.g. "-ksp_type preonly -pc_type lu"
+  std::string petsc_options;       ///< extra PETSc options, e.g. "-ksp_type preonly -pc_type lu"
   InputPlace petsc_options_place;  ///< where they are written (for PETSc's refusals)
 };
 

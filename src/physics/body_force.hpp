@@ -2,7 +2,8 @@
 /// Body force rho g (dead load on the reference volume), e.g. gravity.
 #include <vector>
 
-#include "io/case.hpp"
+#include "mesh/mesh.hpp"
+#include "physics/ramp.hpp"
 #include "physics/model_term.hpp"
 
 namespace plisse {

@@ -142,9 +142,4 @@ std::vector<double> CavityTerm::history_values(double, std::span<const double> x
   return {x[pressure_dof_], volume(x)};
 }
 
-std::unique_ptr<ModelTerm> make_cavity_term(const Cavity& cavity, const Mesh& mesh,
-                                            const std::vector<ConstrainedComponent>& constraints) {
-  return std::make_unique<CavityTerm>(cavity, mesh, constraints);
-}
-
 }  // namespace plisse

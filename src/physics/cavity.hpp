@@ -7,7 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "io/case.hpp"
+#include "mesh/mesh.hpp"
+#include "physics/cavity_settings.hpp"
 #include "physics/dirichlet.hpp"
 #include "physics/model_term.hpp"
 
@@ -60,9 +61,5 @@ class CavityTerm : public ModelTerm {
   bool symmetric_ = false;
   int pressure_dof_ = -1;
 };
-
-/// The term for `cavity` (borrows `mesh`).
-std::unique_ptr<ModelTerm> make_cavity_term(const Cavity& cavity, const Mesh& mesh,
-                                            const std::vector<ConstrainedComponent>& constraints);
 
 }  // namespace plisse

@@ -4,7 +4,6 @@
 #include <map>
 #include <set>
 
-#include "material/registry.hpp"
 #include "physics/die_surface.hpp"
 #include "physics/surface.hpp"
 
@@ -206,51 +205,9 @@ double DieContact::area(int node) const {
   return it != nodes_.end() && *it == node ? areas_[it - nodes_.begin()] : 0.0;
 }
 
-namespace {
-
-/// The whole boundary except the faces on symmetry planes: those are cuts through the body, and
-/// their area would inflate the tributary area of the nodes on the cut (contact.md, C5).
-std::vector<std::array<int, 3>> default_candidates(const Case& c, const Mesh& mesh) {
-  std::set<std::array<int, 3>> cut;
-  for (const BoundaryCondition& bc : c.boundary) {
-    if (bc.type != BoundaryType::symmetry) continue;
-    for (int t : mesh.surface_tags.at(bc.surface.name)) {
-      auto key = mesh.triangles[t];
-      std::sort(key.begin(), key.end());
-      cut.insert(key);
-    }
-  }
-  std::vector<std::array<int, 3>> out;
-  for (const auto& face : boundary_faces(mesh))
-    if (!cut.count(face)) out.push_back(face);
-  return out;
-}
-
-}  // namespace
-
 double default_die_penalty(double shear_modulus, double element_size) {
   // epsilon = 10 mu / h   (C11)
   return 10.0 * shear_modulus / element_size;
-}
-
-std::unique_ptr<ModelTerm> make_die_term(const Die& die, const Case& c, const Mesh& mesh,
-                                         const std::vector<ConstrainedComponent>&) {
-  const auto candidates =
-      die.surface ? outward_triangles(mesh, die.surface->name) : default_candidates(c, mesh);
-  if (candidates.empty()) throw InputError(die.place, "the die's contact surface is empty");
-  const auto region =
-      die.region ? outward_triangles(mesh, die.region->name) : std::vector<std::array<int, 3>>{};
-  const double h = mean_edge_length(mesh, candidates);
-  DieContactSettings settings;
-  settings.name = die.name;
-  settings.contact = die.contact;
-  settings.tolerance = die.tolerance;
-  settings.touch_slack = 1e-9 * h;
-  settings.penalty =
-      die.penalty > 0.0 ? die.penalty
-                        : default_die_penalty(
-                              shear_modulus(make_material(c.material.model, c.material.params)), h);
-  return std::make_unique<DieContact>(mesh, DieGeometry(die), settings, candidates, region);
 }
 
 }  // namespace plisse

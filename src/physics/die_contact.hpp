@@ -9,21 +9,13 @@
 #include <string>
 #include <vector>
 
-#include "io/case.hpp"
+#include "mesh/mesh.hpp"
+#include "physics/die_contact_settings.hpp"
 #include "physics/die_geometry.hpp"
 #include "physics/dirichlet.hpp"
 #include "physics/model_term.hpp"
 
 namespace plisse {
-
-struct DieContactSettings {
-  std::string name;  ///< history columns force_x:<name> ...
-  ContactKind contact = ContactKind::frictionless;
-  double penalty = 0.0;     ///< epsilon [MPa/mm = N/mm^3], > 0: contact pressure per unit gap
-  double tolerance = 1e-3;  ///< largest penetration (glued: distance to the anchor) [mm], > 0
-  /// A node with gap g <= touch_slack [mm] touches (round-off allowance, contact.md C13).
-  double touch_slack = 0.0;
-};
 
 class DieContact : public ModelTerm {
  public:
@@ -98,11 +90,5 @@ class DieContact : public ModelTerm {
 /// Default penalty when the case gives 0: epsilon = 10 mu / h [MPa/mm], mu the small-strain shear
 /// modulus, h the mean edge length of the contact surface (contact.md, C11).
 double default_die_penalty(double shear_modulus, double element_size);
-
-/// The term for `die` (borrows `mesh`): candidates are the nodes of `die.surface`, or of the whole
-/// boundary without the faces on the case's symmetry planes; the penalty defaults to C11 with the
-/// case's material. Throws InputError (at the die) when the candidate surface is empty.
-std::unique_ptr<ModelTerm> make_die_term(const Die& die, const Case& c, const Mesh& mesh,
-                                         const std::vector<ConstrainedComponent>& constraints);
 
 }  // namespace plisse

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/error.hpp"
+
 namespace plisse {
 
 DieGeometry::DieGeometry(DieShape shape, const Vec3d& point, const Vec3d& normal, const Vec3d& axis,
@@ -20,10 +22,6 @@ DieGeometry::DieGeometry(DieShape shape, const Vec3d& point, const Vec3d& normal
   if (shape != DieShape::plane)
     FE_CHECK(radius > 0.0, "die radius must be > 0 (got " << radius << ")");
 }
-
-DieGeometry::DieGeometry(const Die& die)
-    : DieGeometry(die.shape, die.point, die.normal, die.axis, die.radius, die.displacement,
-                  die.ramp) {}
 
 DieGap DieGeometry::gap(const Vec3d& x, double t) const {
   DieGap out;

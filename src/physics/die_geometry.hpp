@@ -1,9 +1,12 @@
 #pragma once
 /// The surface of a rigid analytic die (plane, sphere, cylinder) translated by a prescribed, ramped
 /// displacement, and the signed gap of a point to it (docs/theory/contact.md, C1-C4).
-#include "io/case.hpp"
+#include "core/types.hpp"
+#include "physics/ramp.hpp"
 
 namespace plisse {
+
+enum class DieShape { plane, sphere, cylinder };
 
 /// Gap of one point x to the die at time t:
 ///   g [mm], positive when x is separated from the die, negative when it penetrates;
@@ -23,8 +26,6 @@ class DieGeometry {
   /// `displacement` [mm] (C1). Throws plisse::Error for a non-unit direction or radius <= 0.
   DieGeometry(DieShape shape, const Vec3d& point, const Vec3d& normal, const Vec3d& axis,
               double radius, const Vec3d& displacement, Ramp ramp);
-  /// The geometry and motion of a case's die.
-  explicit DieGeometry(const Die& die);
 
   DieShape shape() const { return shape_; }
   /// The translation of the die at time t [mm] (C1).

@@ -33,7 +33,8 @@ int coordinate_plane_axis(const Mesh& mesh, const std::vector<int>& triangles, d
   return axis;
 }
 
-std::vector<ConstrainedComponent> collect_constraints(const Case& c, const Mesh& mesh) {
+std::vector<ConstrainedComponent> collect_constraints(
+    const std::vector<BoundaryCondition>& conditions, const Mesh& mesh) {
   std::map<std::pair<int, int>, std::pair<ConstrainedComponent, const BoundaryCondition*>> by_dof;
   auto add = [&](const BoundaryCondition& bc, int node, int comp, double value, const Ramp& ramp) {
     const ConstrainedComponent cc{node, comp, value, ramp};
@@ -50,7 +51,7 @@ std::vector<ConstrainedComponent> collect_constraints(const Case& c, const Mesh&
                                      it->second.second->surface.name + "'");
     }
   };
-  for (const BoundaryCondition& bc : c.boundary) {
+  for (const BoundaryCondition& bc : conditions) {
     const auto tag = mesh.surface_tags.find(bc.surface.name);
     if (tag == mesh.surface_tags.end())
       throw InputError(bc.surface.place, "no surface tag '" + bc.surface.name + "' in the mesh");

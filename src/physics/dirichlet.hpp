@@ -3,7 +3,8 @@
 /// components of nodes.
 #include <vector>
 
-#include "io/case.hpp"
+#include "physics/boundary_condition.hpp"
+#include "physics/ramp.hpp"
 #include "mesh/mesh.hpp"
 
 namespace plisse {
@@ -21,9 +22,10 @@ struct ConstrainedComponent {
 /// is not a plane normal to x, y or z (relative tolerance `tol` on the triangle normals).
 int coordinate_plane_axis(const Mesh& mesh, const std::vector<int>& triangles, double tol = 1e-8);
 
-/// All constrained components of the case, one per (node, component). A node where two
+/// All constrained components of `conditions`, one per (node, component). A node where two
 /// conditions prescribe different motions of the same component is an InputError at the later
 /// condition. Symmetry surfaces must be coordinate planes (x, y or z = const).
-std::vector<ConstrainedComponent> collect_constraints(const Case& c, const Mesh& mesh);
+std::vector<ConstrainedComponent> collect_constraints(
+    const std::vector<BoundaryCondition>& conditions, const Mesh& mesh);
 
 }  // namespace plisse

@@ -5,7 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "io/case.hpp"
+#include "mesh/mesh.hpp"
+#include "physics/ramp.hpp"
 #include "physics/dirichlet.hpp"
 #include "physics/model_term.hpp"
 

@@ -26,7 +26,7 @@
 #include <petscis.h>
 #include <petscksp.h>
 
-#include "io/case.hpp"
+#include "solver/newton_settings.hpp"
 #include "solver/dof_map.hpp"
 
 namespace plisse {

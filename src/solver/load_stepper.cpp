@@ -58,7 +58,7 @@ std::string LoadStepper::describe_failure(const NewtonResult& newton) const {
   return why;
 }
 
-LoadStepper::LoadStepper(MixedModel& model, const SolverSettings& settings)
+LoadStepper::LoadStepper(MixedModel& model, const SteppingSettings& settings)
     : model_(model), settings_(settings), newton_(model, settings.newton) {}
 
 LoadStepper::~LoadStepper() = default;

@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "io/case.hpp"
 #include "solver/eigenmodes.hpp"
 #include "solver/mixed_model.hpp"
 #include "solver/newton_solver.hpp"
 #include "solver/stability.hpp"
+#include "solver/stepping_settings.hpp"
 
 namespace plisse {
 
@@ -76,7 +76,7 @@ struct StepperState {
 
 class LoadStepper {
  public:
-  LoadStepper(MixedModel& model, const SolverSettings& settings);
+  LoadStepper(MixedModel& model, const SteppingSettings& settings);
   ~LoadStepper();
 
   /// Stability check and branch switching (off by default). Throws plisse::Error when
@@ -115,7 +115,7 @@ class LoadStepper {
                        const std::function<void(const std::string&)>& log, bool& switched);
 
   MixedModel& model_;
-  SolverSettings settings_;
+  SteppingSettings settings_;
   NewtonSolver newton_;
   std::optional<StepperState> resume_;
   StepperState current_;

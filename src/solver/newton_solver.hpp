@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "io/case.hpp"
+#include "solver/newton_settings.hpp"
 #include "solver/mixed_model.hpp"
 
 namespace plisse {

@@ -51,7 +51,7 @@ inline IndentationLevel solve_indentation(int divisions) {
     for (int k = 0; k < 3; ++k)
       constraints.push_back({v, k, k == 2 ? -kIndentation : 0.0, Ramp{0.0, 1.0}});
   MixedModel model(mesh, make_material("neo-hookean", {{"c1", 0.5}}), 0.0, constraints);
-  SolverSettings settings;
+  SteppingSettings settings;
   settings.steps = 4;
   settings.max_step = 0.25;
   settings.newton.rtol = 1e-10;

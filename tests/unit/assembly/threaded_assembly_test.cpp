@@ -22,7 +22,7 @@
 #include "io/case.hpp"
 #include "material/registry.hpp"
 #include "physics/dirichlet.hpp"
-#include "physics/terms.hpp"
+#include "app/model_builder.hpp"
 #include "solver/mixed_model.hpp"
 
 namespace plisse {
@@ -40,10 +40,9 @@ std::unique_ptr<TestModel> make_model(const std::string& name, std::vector<std::
   auto m = std::make_unique<TestModel>();
   m->c = parse_case_file(std::string(PLISSE_SOURCE_DIR) + "/examples/" + name, overrides);
   m->mesh = load_case_mesh(m->c);
-  const auto constraints = collect_constraints(m->c, m->mesh);
-  m->model = std::make_unique<MixedModel>(
-      m->mesh, make_material(m->c.material.model, m->c.material.params), 0.0, constraints,
-      make_terms(m->c, m->mesh, constraints));
+  app::ModelParts parts = app::build_model_parts(m->c, m->mesh);
+  parts.inverse_bulk_modulus = 0.0;  // exact incompressibility, whatever the case says
+  m->model = app::make_model(m->mesh, std::move(parts));
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   auto& x = m->model->state();

@@ -8,6 +8,7 @@
 #include <random>
 #include <sstream>
 
+#include "app/model_builder.hpp"
 #include "io/case.hpp"
 #include "mesh/generate.hpp"
 #include "physics/die_surface.hpp"
@@ -262,7 +263,7 @@ TEST(DieContact, TributaryAreasAddUpToTheSurfaceArea) {
               (2.0 + std::sqrt(2.0)) / 3.0 * 2.0 / 3.0, 1e-13);
 }
 
-TEST(MakeDieTerm, DefaultPenaltyIsTenShearModuliPerElementSizeAndSymmetryCutsAreNoContact) {
+TEST(ModelBuilder, DefaultDiePenaltyIsTenShearModuliPerElementSizeAndSymmetryCutsAreNoContact) {
   const std::string text = R"(
 mesh: {generate: cube, edge: 2.0, divisions: 2}
 material: {model: neo-hookean, c1: 0.5}
@@ -275,7 +276,9 @@ dies:
 )";
   const Case c = parse_case_string(text, "contact.yaml");
   const Mesh mesh = load_case_mesh(c);
-  const auto term = make_die_term(c.dies[0], c, mesh, {});
+  const app::ModelParts parts = app::build_model_parts(c, mesh);
+  ASSERT_EQ(parts.terms.size(), 2u);  // the two dies, in the case's order
+  const auto& term = parts.terms[0];
   const auto* contact = dynamic_cast<const DieContact*>(term.get());
   ASSERT_NE(contact, nullptr);
   // mu = 2 c1 = 1 MPa; h = mean edge of the boundary without the symmetry face (the same on all
@@ -291,7 +294,7 @@ dies:
   EXPECT_EQ(term->history_columns(),
             (std::vector<std::string>{"force_x:punch", "force_y:punch", "force_z:punch",
                                       "contact_nodes:punch", "penetration:punch"}));
-  const auto other = make_die_term(c.dies[1], c, mesh, {});
+  const auto& other = parts.terms[1];
   const auto* sticking = dynamic_cast<const DieContact*>(other.get());
   ASSERT_NE(sticking, nullptr);
   EXPECT_EQ(sticking->penalty(), 7.5);

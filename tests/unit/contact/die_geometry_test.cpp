@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include "core/error.hpp"
+
 namespace plisse {
 namespace {
 

@@ -41,7 +41,7 @@ BlockRun press_block(double tolerance) {
       settings, outward_triangles(mesh, "top")));
   MixedModel model(mesh, make_material("neo-hookean", {{"c1", 0.5}}), 0.0, constraints,
                    std::move(terms));
-  SolverSettings solver;
+  SteppingSettings solver;
   solver.steps = 4;
   solver.max_step = 0.25;
   solver.newton.rtol = 1e-10;

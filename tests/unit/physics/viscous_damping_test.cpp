@@ -1,7 +1,7 @@
 // Viscous stabilisation (physics/viscous_damping.hpp, docs/theory/viscous.md): the tangent is the
 // derivative of the residual, the force and the dissipated energy of a prescribed motion match
 // their closed forms, nothing acts without a time increment, checkpoints restore the state, and
-// make_terms creates the term with the wall thickness as length.
+// the model builder creates the term with the wall thickness as length.
 #include "physics/viscous_damping.hpp"
 
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 
 #include "core/error.hpp"
 #include "mesh/generate.hpp"
-#include "physics/terms.hpp"
+#include "app/model_builder.hpp"
 #include "support/term_testing.hpp"
 
 namespace plisse {
@@ -224,8 +224,10 @@ TEST(ViscousDamping, MeanEdgeLengthOfAUnitCubeMesh) {
   EXPECT_NEAR(mean_edge_length(mesh), (3.0 + 2.0 * std::sqrt(2.0) + std::sqrt(3.0)) / 6.0, 1e-14);
 }
 
-TEST(MakeTerms, CreatesViscousDampingWithTheWallThicknessWhenViscosityIsPositive) {
+TEST(ModelBuilder, CreatesViscousDampingWithTheWallThicknessWhenViscosityIsPositive) {
   Case c;
+  c.material.model = "neo-hookean";
+  c.material.params = {{"c1", 0.5}};
   MeshGenerationSpec spec;
   spec.kind = "sheet";
   spec.length = 3.0;
@@ -235,9 +237,9 @@ TEST(MakeTerms, CreatesViscousDampingWithTheWallThicknessWhenViscosityIsPositive
   spec.element_size = 1.0;
   c.mesh.generate = spec;
   const Mesh mesh = generate_mesh(spec);
-  EXPECT_TRUE(make_terms(c, mesh, {}).empty());  // viscosity 0: no term
+  EXPECT_TRUE(app::build_model_parts(c, mesh).terms.empty());  // viscosity 0: no term
   c.solver.viscosity = kEta;
-  const auto terms = make_terms(c, mesh, {});
+  const auto terms = std::move(app::build_model_parts(c, mesh).terms);
   ASSERT_EQ(terms.size(), 1u);
   const auto* term = dynamic_cast<const ViscousDamping*>(terms[0].get());
   ASSERT_NE(term, nullptr);

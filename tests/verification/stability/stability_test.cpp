@@ -40,8 +40,8 @@ Eigen::MatrixXd dense_tangent(MixedModel& model) {
 }
 
 /// Settings of the verification runs: fixed steps (no growth), tight Newton tolerances.
-SolverSettings fixed_steps(int steps) {
-  SolverSettings settings;
+SteppingSettings fixed_steps(int steps) {
+  SteppingSettings settings;
   settings.steps = steps;
   settings.growth = 1.0;
   settings.newton.rtol = 1e-10;
@@ -169,7 +169,7 @@ TEST(LoadStepperStability, RefusesInconsistentOptions) {
   spec.length = 4.0;
   spec.width = 1.0;
   test::ModelOnMesh m = test::clamped_strip(spec);
-  LoadStepper stepper(*m.model, SolverSettings{});
+  LoadStepper stepper(*m.model, SteppingSettings{});
   StabilityOptions o;
   o.branch_switch = true;
   o.perturbation_mm = 0.01;
@@ -399,7 +399,7 @@ TEST(BranchSwitching, ClampedStripDeflectsLaterallyAfterTheSwitch) {
   StabilityOptions options = check_only();
   options.branch_switch = true;
   options.perturbation_mm = 0.01 * spec.thickness;
-  SolverSettings settings = fixed_steps(40);
+  SteppingSettings settings = fixed_steps(40);
   settings.end_time = 0.7;  // to 2.1 eps_cr: before the second mode
   const test::SteppedRun run = test::run_steps(*m.model, settings, options, true);
   print_log(run);

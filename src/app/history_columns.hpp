@@ -1,0 +1,55 @@
+#pragma once
+/// The columns of history.csv as one table: each entry is a group of column names together with
+/// the function that gives their values, so a header and its rows cannot drift apart.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "app/wrinkling.hpp"
+#include "io/case.hpp"
+#include "solver/load_stepper.hpp"
+#include "solver/mixed_model.hpp"
+
+namespace plisse::app {
+
+/// What one history row is computed from: a converged step and the model's state after it.
+/// Everything is borrowed for the duration of HistoryColumns::row.
+struct StepRecord {
+  const StepInfo& info;
+  const MixedModel& model;
+  const std::vector<mini::ElementFields>& fields;  ///< model.element_fields() of the state
+  const BodyAverages& averages;                    ///< model.averages(fields)
+  const WrinkleMeter::Result* wrinkles;            ///< null without output.wrinkles
+};
+
+class HistoryColumns {
+ public:
+  /// The columns of a run of `c` on `model` (borrowed; its terms and mesh must outlive this), in
+  /// the order of the contract: the standard ones (HistoryWriter::standard_columns), each term's
+  /// columns, stretch, the averaged stretches and Cauchy stresses, reactions of named boundary
+  /// conditions, probe displacements (nearest node), volume, min_J, strain_energy, the stability
+  /// columns (solver.stability.check) and the wrinkle columns (output.wrinkles, measured by
+  /// `meter`, borrowed; required then).
+  HistoryColumns(const Case& c, const MixedModel& model, const WrinkleMeter* meter);
+
+  /// All column names, in row order.
+  const std::vector<std::string>& names() const { return names_; }
+  /// The names after the standard columns (what HistoryWriter's constructor takes).
+  std::vector<std::string> extra_names() const;
+  /// The values of one row, in the order of names(). Throws plisse::Error when a group gives
+  /// another count of values than it has names (a programming error, never a user's).
+  std::vector<double> row(const StepRecord& record) const;
+
+ private:
+  using Values = std::function<void(const StepRecord&, std::vector<double>&)>;
+  struct Group {
+    std::vector<std::string> names;
+    Values append;  ///< appends exactly names.size() values
+  };
+  void add(std::vector<std::string> names, Values append);
+
+  std::vector<Group> groups_;
+  std::vector<std::string> names_;
+};
+
+}  // namespace plisse::app

@@ -1,0 +1,119 @@
+#include "app/model_builder.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include "physics/body_force.hpp"
+#include "physics/cavity.hpp"
+#include "physics/die_contact.hpp"
+#include "physics/die_surface.hpp"
+#include "physics/pressure_load.hpp"
+#include "physics/surface.hpp"
+#include "physics/viscous_damping.hpp"
+
+namespace plisse::app {
+namespace {
+
+/// The contact term of `die`: candidates are the nodes of `die.surface`, or of
+/// default_die_candidates; the penalty defaults to contact.md (C11) with the material's
+/// small-strain shear modulus `mu`. Throws InputError (at the die) when the surface is empty.
+std::unique_ptr<ModelTerm> make_die_term(const Die& die, const Case& c, const Mesh& mesh,
+                                         double mu) {
+  const auto candidates =
+      die.surface ? outward_triangles(mesh, die.surface->name) : default_die_candidates(c, mesh);
+  if (candidates.empty()) throw InputError(die.place, "the die's contact surface is empty");
+  const auto region =
+      die.region ? outward_triangles(mesh, die.region->name) : std::vector<std::array<int, 3>>{};
+  const double h = mean_edge_length(mesh, candidates);
+  DieContactSettings settings;
+  settings.name = die.name;
+  settings.contact = die.contact;
+  settings.tolerance = die.tolerance;
+  settings.touch_slack = 1e-9 * h;
+  settings.penalty = die.penalty > 0.0 ? die.penalty : default_die_penalty(mu, h);
+  const DieGeometry geometry(die.shape, die.point, die.normal, die.axis, die.radius,
+                             die.displacement, die.ramp);
+  return std::make_unique<DieContact>(mesh, geometry, settings, candidates, region);
+}
+
+}  // namespace
+
+std::vector<std::array<int, 3>> default_die_candidates(const Case& c, const Mesh& mesh) {
+  std::set<std::array<int, 3>> cut;
+  for (const BoundaryCondition& bc : c.boundary) {
+    if (bc.type != BoundaryType::symmetry) continue;
+    for (int t : mesh.surface_tags.at(bc.surface.name)) {
+      auto key = mesh.triangles[t];
+      std::sort(key.begin(), key.end());
+      cut.insert(key);
+    }
+  }
+  std::vector<std::array<int, 3>> out;
+  for (const auto& face : boundary_faces(mesh))
+    if (!cut.count(face)) out.push_back(face);
+  return out;
+}
+
+void check_free_displacements(const Case& c, const Mesh& mesh,
+                              const std::vector<ConstrainedComponent>& constraints) {
+  // collect_constraints gives one entry per constrained (node, component).
+  if (constraints.size() >= 3 * static_cast<size_t>(mesh.n_nodes()))
+    throw InputError({c.path, 0, 0, "boundary"},
+                     "every displacement is prescribed by the boundary conditions: nothing to "
+                     "solve");
+}
+
+ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
+  ModelParts parts{make_material(c.material.model, c.material.params),
+                   c.material.inverse_bulk_modulus(),
+                   collect_constraints(c.boundary, mesh),
+                   {}};
+  check_free_displacements(c, mesh, parts.constraints);
+  const auto& constraints = parts.constraints;
+  auto& terms = parts.terms;
+  for (const Load& load : c.loads) {
+    switch (load.type) {
+      case LoadType::pressure:
+        terms.push_back(std::make_unique<PressureLoad>(mesh, load.name, load.surface.name,
+                                                       load.value, load.ramp, constraints));
+        break;
+      case LoadType::gravity:
+        terms.push_back(std::make_unique<BodyForce>(
+            mesh, load.name, c.material.density * load.acceleration, load.ramp));
+        break;
+    }
+  }
+  for (const Cavity& cavity : c.cavities)
+    terms.push_back(std::make_unique<CavityTerm>(cavity, mesh, constraints));
+  if (!c.dies.empty()) {
+    const double mu = shear_modulus(parts.material);
+    for (const Die& die : c.dies) terms.push_back(make_die_term(die, c, mesh, mu));
+  }
+  if (c.solver.viscosity > 0.0) {
+    // ℓ of docs/theory/viscous.md (V1): the wall thickness (generated shell, airbag or sheet, or
+    // `mesh.thickness` of a file mesh), else the mean edge length of the mesh.
+    const double length = c.mesh.wall_thickness().value_or(mean_edge_length(mesh));
+    terms.push_back(
+        std::make_unique<ViscousDamping>(mesh, c.solver.viscosity, length, constraints));
+  }
+  return parts;
+}
+
+std::unique_ptr<MixedModel> make_model(const Mesh& mesh, ModelParts parts) {
+  return std::make_unique<MixedModel>(mesh, std::move(parts.material), parts.inverse_bulk_modulus,
+                                      std::move(parts.constraints), std::move(parts.terms));
+}
+
+std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh) {
+  std::vector<InputError> out;
+  if (mesh.order() != 1)
+    out.emplace_back(c.mesh.file ? c.mesh.file_place : c.mesh.place,
+                     "the mesh has second-order (10-node) tetrahedra; the MINI element needs "
+                     "linear ones (a quadratic element is planned)");
+  if (c.solver.scheme != Scheme::total_lagrangian)
+    out.emplace_back(InputPlace{c.path, 0, 0, "solver.scheme"},
+                     "only the total-lagrangian scheme is available yet");
+  return out;
+}
+
+}  // namespace plisse::app

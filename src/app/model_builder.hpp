@@ -1,0 +1,52 @@
+#pragma once
+/// The model builder: the one place that turns a case into the pieces of the discrete model
+/// (material, constrained components, model terms) and validates them against the mesh.
+/// `plisse run`, `plisse check` and `plisse wrinkles` all build through it, so a case is judged
+/// the same way by every command.
+#include <memory>
+#include <vector>
+
+#include "io/case.hpp"
+#include "material/registry.hpp"
+#include "mesh/mesh.hpp"
+#include "physics/dirichlet.hpp"
+#include "physics/model_term.hpp"
+#include "solver/mixed_model.hpp"
+
+namespace plisse::app {
+
+/// What a MixedModel is made of. The terms borrow the mesh they were built on.
+struct ModelParts {
+  AnyMaterial material;                           ///< built once from the registry
+  double inverse_bulk_modulus = 0.0;              ///< 1/κ [1/MPa]; 0 for exact incompressibility
+  std::vector<ConstrainedComponent> constraints;  ///< one per constrained (node, component)
+  /// One term per load, then per cavity, then per die, in the case's order, then the viscous
+  /// damping when solver.viscosity > 0.
+  std::vector<std::unique_ptr<ModelTerm>> terms;
+};
+
+/// Builds the parts of the case's model on `mesh` (the case's mesh, already checked against the
+/// case by load_perturbed_mesh) and validates them: conflicting or non-planar Dirichlet conditions,
+/// every displacement prescribed, empty or open surfaces of loads, cavities and dies. Needs no
+/// PETSc. Throws InputError at the offending key. Borrows `mesh`.
+ModelParts build_model_parts(const Case& c, const Mesh& mesh);
+
+/// The model of `parts` on `mesh` (borrowed). Needs a live PetscSession.
+std::unique_ptr<MixedModel> make_model(const Mesh& mesh, ModelParts parts);
+
+/// InputError (key `boundary`) when `constraints` prescribe every displacement of `mesh`, so
+/// that nothing is left to solve.
+void check_free_displacements(const Case& c, const Mesh& mesh,
+                              const std::vector<ConstrainedComponent>& constraints);
+
+/// The contact surface of a die without `surface:`: the whole boundary except the faces on the
+/// case's symmetry planes, which are cuts through the body whose area would inflate the tributary
+/// area of the nodes on the cut (docs/theory/contact.md, C5).
+std::vector<std::array<int, 3>> default_die_candidates(const Case& c, const Mesh& mesh);
+
+/// What the case file allows but this build cannot solve yet (second-order meshes, the
+/// incremental scheme), each as an InputError naming the key. `plisse run` refuses the first;
+/// `plisse check` lists them as warnings.
+std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh);
+
+}  // namespace plisse::app

@@ -1,0 +1,255 @@
+#include "app/run_recorder.hpp"
+
+#include <sys/resource.h>
+
+#include <filesystem>
+
+#include "io/json_file.hpp"
+#include "io/pvtu_writer.hpp"
+#include "io/vtu_writer.hpp"
+#include "solver/petsc_call.hpp"
+#include "solver/petsc_session.hpp"
+
+namespace plisse::app {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// Peak resident memory of this process [MiB].
+double peak_memory_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;  // Linux reports KiB
+}
+
+/// A step's file: step_NNNN.vtu, or step_NNNN.pvtu listing the ranks' pieces.
+std::string step_name(const MixedModel& model, int step) {
+  const std::string vtu = RunDirectory::step_file_name(step);
+  return model.n_ranks() == 1 ? vtu : vtu.substr(0, vtu.size() - 4) + ".pvtu";
+}
+
+/// The displacement part of an eigenmode as a VTU vector field `mode_<k>`.
+VtuField mode_field(const Mesh& mesh, const Eigenmode& mode, int k) {
+  VtuField f{"mode_" + std::to_string(k), 3, std::vector<double>(3 * mesh.n_nodes())};
+  for (int v = 0; v < mesh.n_nodes(); ++v)
+    for (int i = 0; i < 3; ++i) f.values[3 * v + i] = mode.state[DofMap::dof(v, i)];
+  return f;
+}
+
+/// Point and cell fields of the contract for one converged state (`fields`: its element fields).
+void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model,
+                    const std::vector<mini::ElementFields>& fields,
+                    const std::vector<double>& previous_state, double dt,
+                    const std::vector<VtuField>& extra_point_fields,
+                    const std::vector<VtuField>& extra_cell_fields) {
+  const Mesh& mesh = model.mesh();
+  const int n = mesh.n_nodes();
+  const auto& x = model.state();
+  VtuField displacement{"displacement", 3, std::vector<double>(3 * n)};
+  VtuField velocity{"velocity", 3, std::vector<double>(3 * n)};
+  VtuField pressure{"pressure", 1, std::vector<double>(n)};
+  std::vector<Vec3d> points(mesh.nodes);
+  for (int v = 0; v < n; ++v) {
+    for (int k = 0; k < 3; ++k) {
+      const double u = x[DofMap::dof(v, k)];
+      displacement.values[3 * v + k] = u;
+      velocity.values[3 * v + k] = dt > 0 ? (u - previous_state[DofMap::dof(v, k)]) / dt : 0.0;
+      if (c.output.deformed) points[v][k] += u;
+    }
+    pressure.values[v] = x[DofMap::dof(v, 3)];
+  }
+  const int n_cells = mesh.n_tets();
+  std::vector<Mat3d> cauchy(n_cells);
+  std::vector<double> von_mises(n_cells), jacobian(n_cells);
+  for (int e = 0; e < n_cells; ++e) {
+    cauchy[e] = fields[e].cauchy;
+    von_mises[e] = fields[e].von_mises;
+    jacobian[e] = fields[e].J;
+  }
+  std::vector<VtuField> point_fields = {displacement, velocity, pressure};
+  point_fields.insert(point_fields.end(), extra_point_fields.begin(), extra_point_fields.end());
+  std::vector<VtuField> cell_fields = {make_symmetric_tensor_field("cauchy_stress", cauchy),
+                                       make_scalar_field("von_mises", von_mises),
+                                       make_scalar_field("J", jacobian)};
+  cell_fields.insert(cell_fields.end(), extra_cell_fields.begin(), extra_cell_fields.end());
+  if (model.n_ranks() == 1) {
+    write_vtu(file, mesh, points, point_fields, cell_fields);
+    return;
+  }
+  // Distributed: each rank writes the piece of its own elements ("step_NNNN_pR.vtu"); once all
+  // are written, rank 0 lists them in `file`, the .pvtu.
+  const std::string stem = file.stem().string();
+  const auto piece = [&](int r) { return stem + "_p" + std::to_string(r) + ".vtu"; };
+  write_vtu_piece(file.parent_path() / piece(model.rank()), mesh, points, model.owned_elements(),
+                  point_fields, cell_fields);
+  PLISSE_PETSC(MPI_Barrier(PETSC_COMM_WORLD));
+  if (model.rank() != 0) return;
+  std::vector<std::string> pieces;
+  for (int r = 0; r < model.n_ranks(); ++r) pieces.push_back(piece(r));
+  write_pvtu(file, pieces, describe_fields(point_fields), describe_fields(cell_fields));
+}
+
+}  // namespace
+
+RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdentity identity,
+                         const MixedModel& model, const LoadStepper& stepper,
+                         const WrinkleMeter* meter, const Checkpoint* resume)
+    : case_(c),
+      directory_(directory),
+      identity_(std::move(identity)),
+      model_(model),
+      stepper_(stepper),
+      meter_(meter),
+      root_(PetscSession::rank() == 0),
+      columns_(c, model, meter),
+      previous_state_(model.state()) {
+  std::vector<PvdEntry> pvd_entries;
+  if (resume) {
+    // Every rank checks the files; rank 0 alone keeps writing them.
+    history_.emplace(HistoryWriter::reopen(directory.history_csv()));
+    if (history_->columns() != columns_.names() ||
+        history_->rows().size() < std::size_t(resume->steps))
+      throw InputError({directory.history_csv().string(), 0, 0, "--resume"},
+                       "history.csv does not match the checkpoint");
+    history_->keep_first_rows(resume->steps);
+    for (const PvdEntry& e : read_pvd(directory.solution_pvd()))
+      if (e.time <= resume->time * (1.0 + 1e-12)) pvd_entries.push_back(e);
+    if (!root_) history_.reset();
+  } else if (root_) {
+    history_.emplace(directory.history_csv(), columns_.extra_names());
+  }
+  if (root_) pvd_.emplace(directory.solution_pvd(), pvd_entries);
+}
+
+void RunRecorder::record(const StepInfo& info) {
+  const auto t_out = Clock::now();
+  fields_ = model_.element_fields();
+  const BodyAverages averages = model_.averages(fields_);
+  if (meter_) last_wrinkles_ = meter_->evaluate(model_, fields_);
+  const std::vector<double> row =
+      columns_.row({info, model_, fields_, averages, last_wrinkles_ ? &*last_wrinkles_ : nullptr});
+  if (history_) history_->add_row(row);
+  output_seconds_ += seconds_since(t_out);
+  if (info.new_instability) {
+    nlohmann::json eigenvalues = nlohmann::json::array();
+    for (const Eigenmode& m : info.modes) eigenvalues.push_back(m.eigenvalue);
+    instabilities_.push_back({{"step", info.step},
+                              {"time", info.time},
+                              {"negative_pivots", info.unstable_negative_pivots},
+                              {"expected_negative_pivots", info.expected_negative_pivots},
+                              {"eigenvalues", eigenvalues},
+                              {"branch_switched", info.branch_switched},
+                              {"perturbation_mm", info.perturbation_mm},
+                              {"file", step_name(model_, info.step)}});
+  }
+  if (info.step % case_.output.every == 0 || info.load_factor >= 1.0 || !info.modes.empty())
+    write_step_files(info);
+  previous_state_ = model_.state();
+  last_step_ = info;
+}
+
+void RunRecorder::write_step_files(const StepInfo& info) {
+  const auto t_out = Clock::now();
+  const std::string name = step_name(model_, info.step);
+  std::vector<VtuField> point_fields, cell_fields;
+  for (std::size_t k = 0; k < info.modes.size(); ++k)
+    point_fields.push_back(mode_field(model_.mesh(), info.modes[k], static_cast<int>(k) + 1));
+  if (last_wrinkles_) {
+    std::vector<double> state(last_wrinkles_->tension.element_state.size());
+    for (std::size_t e = 0; e < state.size(); ++e)
+      state[e] = static_cast<double>(last_wrinkles_->tension.element_state[e]);
+    cell_fields.push_back(make_scalar_field("wrinkle_state", state));
+  }
+  write_step_vtu(directory_.directory() / name, case_, model_, fields_, previous_state_, info.dt,
+                 point_fields, cell_fields);
+  if (pvd_) pvd_->add(info.time, name);
+  last_written_ = info.step;
+  output_seconds_ += seconds_since(t_out);
+}
+
+void RunRecorder::save_checkpoint() {
+  const StepperState& st = stepper_.state();
+  const MixedModel::Snapshot snap = model_.snapshot();  // collective
+  if (root_)
+    write_checkpoint(
+        directory_.directory() / "checkpoint.bin",
+        {identity_.fingerprint, st.steps, st.time, st.dt, st.previous_dt, st.previous_state,
+         snap.state, snap.bubbles, snap.term_states, st.negative_pivots});
+}
+
+double RunRecorder::finish(const SteppingResult& result, const StartTimes& times) {
+  if (last_step_.step > 0 && last_written_ != last_step_.step) write_step_files(last_step_);
+  if (last_step_.step > 0) save_checkpoint();
+  // Peak resident memory: of the whole job (sum over the ranks) and of the largest rank.
+  double memory_total = peak_memory_mib(), memory_largest = memory_total;
+  PLISSE_PETSC(
+      MPI_Allreduce(MPI_IN_PLACE, &memory_total, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD));
+  PLISSE_PETSC(
+      MPI_Allreduce(MPI_IN_PLACE, &memory_largest, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD));
+  if (root_)
+    write_json_file(directory_.summary_json(),
+                    summary(result, times, memory_total, memory_largest));
+  return memory_total;
+}
+
+nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTimes& times,
+                                    double memory_total, double memory_largest) const {
+  const Case& c = case_;
+  const Mesh& mesh = model_.mesh();
+  nlohmann::json summary;
+  summary["case"] = identity_.case_file;
+  summary["case_path"] = fs::absolute(identity_.case_file).lexically_normal().string();
+  summary["overrides"] = identity_.overrides;
+  summary["title"] = c.title;
+  summary["completed"] = result.completed;
+  summary["interrupted"] = result.interrupted;
+  if (!result.completed) summary["failure"] = result.failure;
+  summary["nodes"] = mesh.n_nodes();
+  summary["elements"] = mesh.n_tets();
+  summary["dofs"] = model_.dofs().n_dofs();
+  summary["free_dofs"] = model_.n_free();
+  summary["pressure_dofs"] = model_.dofs().n_free_pressure();
+  summary["steps"] = result.steps;
+  summary["newton_iterations"] = result.newton_iterations;
+  summary["cutbacks"] = result.cutbacks;
+  summary["final_time"] = last_step_.time;
+  const PhaseTimes phases = stepper_.times();
+  summary["factorisations"] = phases.factorisations;
+  if (result.newton_iterations > 0) {
+    const double entries = stepper_.factor_entries();
+    if (entries > 0) summary["factor_entries"] = entries;  // fill = entries / tangent nonzeros
+  }
+  summary["wall_time"] = {{"mesh", times.mesh},
+                          {"setup", times.setup},
+                          {"assembly", phases.assembly},
+                          {"linear_solve", phases.linear_solve},
+                          {"factorisation", phases.factorisation},
+                          {"triangular_solve", phases.triangular_solve},
+                          {"output", output_seconds_},
+                          {"total", seconds_since(times.start)}};
+  summary["ranks"] = model_.n_ranks();
+  summary["peak_memory_mib"] = memory_total;
+  summary["peak_memory_per_rank_mib"] = memory_largest;
+  if (c.solver.stability.check) {
+    summary["stability"] = {{"checks", stepper_.stability_checks()},
+                            {"check_seconds", stepper_.stability_seconds()},
+                            {"eigenmode_seconds", stepper_.eigenmode_seconds()},
+                            {"stable_at_end", last_step_.stable},
+                            {"instabilities", instabilities_}};
+  }
+  if (last_wrinkles_) summary["wrinkles"] = wrinkles_json(c, *last_wrinkles_);
+  if (history_ && !history_->rows().empty()) {
+    nlohmann::json final_values;
+    for (std::size_t i = 0; i < history_->columns().size(); ++i)
+      final_values[history_->columns()[i]] = history_->rows().back()[i];
+    summary["final"] = final_values;
+  }
+  return summary;
+}
+
+}  // namespace plisse::app

@@ -1,0 +1,94 @@
+#pragma once
+/// The run recorder: everything a run leaves in its run directory besides the log. It owns
+/// history.csv (rows from HistoryColumns), the VTU files with solution.pvd, checkpoint.bin and
+/// summary.json, and decides when each is written. Distributed runs: rank 0 writes the history,
+/// the PVD index, the checkpoint and the summary; every rank writes its own piece of each VTU step.
+/// The members that write are collective: every rank calls them in the same order.
+#include <chrono>
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/history_columns.hpp"
+#include "app/wrinkling.hpp"
+#include "io/case.hpp"
+#include "io/checkpoint.hpp"
+#include "io/history_writer.hpp"
+#include "io/pvd_writer.hpp"
+#include "io/run_directory.hpp"
+#include "solver/load_stepper.hpp"
+#include "solver/mixed_model.hpp"
+
+namespace plisse::app {
+
+/// What identifies a run in its summary and checkpoint.
+struct RunIdentity {
+  std::string case_file;               ///< as given on the command line
+  std::vector<std::string> overrides;  ///< --set values
+  std::uint64_t fingerprint = 0;       ///< case_fingerprint of both
+};
+
+/// Wall times measured before the recorder exists.
+struct StartTimes {
+  std::chrono::steady_clock::time_point start;  ///< the run's start
+  double mesh = 0.0;                            ///< reading or generating the mesh [s]
+  double setup = 0.0;                           ///< model, stepper and wrinkle meter [s]
+};
+
+class RunRecorder {
+ public:
+  /// Borrows everything (all must outlive the recorder). Opens the run's files in `directory`:
+  /// a new history.csv and solution.pvd, or with `resume` (the checkpoint the model and stepper
+  /// were restored from) the existing ones cut back to the checkpoint's step. Throws InputError
+  /// (key --resume) when the history does not match the checkpoint. `meter` is required when the
+  /// case measures wrinkles.
+  RunRecorder(const Case& c, const RunDirectory& directory, RunIdentity identity,
+              const MixedModel& model, const LoadStepper& stepper, const WrinkleMeter* meter,
+              const Checkpoint* resume);
+
+  /// Records one converged step (the model holds its state): the history row, the wrinkle
+  /// metrics, an instability's record, and the VTU file every output.every steps, at the end of
+  /// the load and at a new instability (its modes seed `imperfection_kind: mode`).
+  void record(const StepInfo& info);
+  /// Writes checkpoint.bin from the model and stepper's last converged state.
+  void save_checkpoint();
+  /// After the stepping: the last step's VTU if it is not written yet, the final checkpoint (the
+  /// state `plisse wrinkles DIR` reads) and summary.json. Returns the job's peak memory [MiB].
+  double finish(const SteppingResult& result, const StartTimes& times);
+
+  /// The last recorded step (step 0 before any).
+  const StepInfo& last_step() const { return last_step_; }
+  /// The wrinkle metrics of the last recorded step, when the case measures them.
+  const std::optional<WrinkleMeter::Result>& last_wrinkles() const { return last_wrinkles_; }
+  /// Time spent computing and writing output so far [s].
+  double output_seconds() const { return output_seconds_; }
+
+ private:
+  void write_step_files(const StepInfo& info);
+  nlohmann::json summary(const SteppingResult& result, const StartTimes& times, double memory_total,
+                         double memory_largest) const;
+
+  const Case& case_;
+  const RunDirectory& directory_;
+  RunIdentity identity_;
+  const MixedModel& model_;
+  const LoadStepper& stepper_;
+  const WrinkleMeter* meter_;
+  bool root_;
+  HistoryColumns columns_;
+  std::optional<HistoryWriter> history_;  ///< rank 0's
+  std::optional<PvdWriter> pvd_;          ///< rank 0's
+  /// Element fields (stress, J) of the last recorded step: computed once per step for the
+  /// history, the wrinkle metrics and the VTU file.
+  std::vector<mini::ElementFields> fields_;
+  std::vector<double> previous_state_;  ///< state of the step before (step velocity)
+  std::optional<WrinkleMeter::Result> last_wrinkles_;
+  nlohmann::json instabilities_ = nlohmann::json::array();
+  StepInfo last_step_;
+  int last_written_ = -1;
+  double output_seconds_ = 0.0;
+};
+
+}  // namespace plisse::app

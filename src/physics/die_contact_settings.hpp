@@ -1,0 +1,19 @@
+#pragma once
+/// The contact law of a rigid die (physics/die_contact.hpp applies it).
+#include <string>
+
+namespace plisse {
+
+enum class ContactKind { frictionless, sticking };
+
+/// Contact law and augmented-Lagrangian parameters of one die (docs/theory/contact.md).
+struct DieContactSettings {
+  std::string name;  ///< history columns force_x:<name> ...
+  ContactKind contact = ContactKind::frictionless;
+  double penalty = 0.0;     ///< epsilon [MPa/mm = N/mm^3], > 0: contact pressure per unit gap
+  double tolerance = 1e-3;  ///< largest penetration (glued: distance to the anchor) [mm], > 0
+  /// A node with gap g <= touch_slack [mm] touches (round-off allowance, contact.md C13).
+  double touch_slack = 0.0;
+};
+
+}  // namespace plisse

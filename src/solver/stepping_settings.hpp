@@ -1,0 +1,21 @@
+#pragma once
+/// Settings of the load stepping (plain data, filled by the case reader from `solver:`).
+#include "solver/newton_settings.hpp"
+
+namespace plisse {
+
+/// Time runs from 0 to end_time in adaptive steps (solver/load_stepper.hpp).
+struct SteppingSettings {
+  double end_time = 1.0;       ///< [s], > 0
+  int steps = 10;              ///< initial number of steps (initial step = end_time/steps), >= 1
+  int max_steps = 10000;       ///< >= 1
+  double min_step = 1e-8;      ///< smallest step as a fraction of end_time, in (0, 1]
+  double max_step = 1.0;       ///< largest step as a fraction of end_time, in (0, 1]
+  double growth = 1.5;         ///< step growth after easy steps, >= 1
+  double cutback = 0.5;        ///< step reduction after a failure, in (0, 1)
+  int easy_iterations = 4;     ///< a step is easy when Newton takes at most this many iterations
+  int max_augmentations = 20;  ///< multiplier updates per step (augmented Lagrangian contact)
+  NewtonSettings newton;
+};
+
+}  // namespace plisse
