@@ -148,12 +148,13 @@ void RunRecorder::record(const StepInfo& info) {
                               {"file", step_name(model_, info.step)}});
   }
   if (info.step % case_.output.every == 0 || info.load_factor >= 1.0 || !info.modes.empty())
-    write_step_files(info);
+    write_step_files(info, previous_state_);
+  last_step_start_ = std::move(previous_state_);
   previous_state_ = model_.state();
   last_step_ = info;
 }
 
-void RunRecorder::write_step_files(const StepInfo& info) {
+void RunRecorder::write_step_files(const StepInfo& info, const std::vector<double>& step_start) {
   const auto t_out = Clock::now();
   const std::string name = step_name(model_, info.step);
   std::vector<VtuField> point_fields, cell_fields;
@@ -165,7 +166,7 @@ void RunRecorder::write_step_files(const StepInfo& info) {
       state[e] = static_cast<double>(last_wrinkles_->tension.element_state[e]);
     cell_fields.push_back(make_scalar_field("wrinkle_state", state));
   }
-  write_step_vtu(directory_.directory() / name, case_, model_, fields_, previous_state_, info.dt,
+  write_step_vtu(directory_.directory() / name, case_, model_, fields_, step_start, info.dt,
                  point_fields, cell_fields);
   if (pvd_) pvd_->add(info.time, name);
   last_written_ = info.step;
@@ -183,7 +184,9 @@ void RunRecorder::save_checkpoint() {
 }
 
 double RunRecorder::finish(const SteppingResult& result, const StartTimes& times) {
-  if (last_step_.step > 0 && last_written_ != last_step_.step) write_step_files(last_step_);
+  // A run that stopped early has not written its last step yet.
+  if (last_step_.step > 0 && last_written_ != last_step_.step)
+    write_step_files(last_step_, last_step_start_);
   if (last_step_.step > 0) save_checkpoint();
   // Peak resident memory: of the whole job (sum over the ranks) and of the largest rank.
   double memory_total = peak_memory_mib(), memory_largest = memory_total;

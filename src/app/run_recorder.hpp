@@ -66,7 +66,9 @@ class RunRecorder {
   double output_seconds() const { return output_seconds_; }
 
  private:
-  void write_step_files(const StepInfo& info);
+  /// The VTU file of `info`'s step, whose state the model holds; `step_start` is the state at the
+  /// start of that step (for the step velocity).
+  void write_step_files(const StepInfo& info, const std::vector<double>& step_start);
   nlohmann::json summary(const SteppingResult& result, const StartTimes& times, double memory_total,
                          double memory_largest) const;
 
@@ -83,7 +85,8 @@ class RunRecorder {
   /// Element fields (stress, J) of the last recorded step: computed once per step for the
   /// history, the wrinkle metrics and the VTU file.
   std::vector<mini::ElementFields> fields_;
-  std::vector<double> previous_state_;  ///< state of the step before (step velocity)
+  std::vector<double> previous_state_;   ///< state at the end of the last recorded step
+  std::vector<double> last_step_start_;  ///< state at the start of the last recorded step
   std::optional<WrinkleMeter::Result> last_wrinkles_;
   nlohmann::json instabilities_ = nlohmann::json::array();
   StepInfo last_step_;

@@ -2,11 +2,14 @@
 // naming the step, the worst element and the reason, and the last converged state written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include "io/history_writer.hpp"
 #include "io/json_file.hpp"
+#include "io/vtu_reader.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {
@@ -31,6 +34,36 @@ TEST(SolverFailure, StopsWithExitStatus1AndNamesStepElementAndReason) {
   if (!h.rows.empty()) {
     EXPECT_TRUE(std::filesystem::exists(dir / "step_0001.vtu"));
   }
+}
+
+// Requirement: a run that stops before its end writes its last converged step with the step
+// velocity v = (u_n - u_{n-1}) / dt of that step. Cube tension with the top pulled 20 mm along a
+// linear ramp over 1 s: the deformation is homogeneous with u_z = 4 t Z, linear in time, so
+// v_z = u_z / t exactly at every node. Two steps of 0.3 s at most: the run stops at t = 0.6 when
+// it reaches solver.max_steps, and output.every is too large for any step to be written before.
+TEST(SolverFailure, LastStepOfAStoppedRunCarriesItsStepVelocity) {
+  const auto dir = test::scratch_directory("stopped-velocity");
+  const std::string case_file =
+      std::string(PLISSE_SOURCE_DIR) + "/examples/cube-tension-neo-hookean.yaml";
+  const int status = test::run_plisse(
+      "run " + case_file + " -o " + dir.string() +
+          " --set solver.steps=2 --set solver.max_steps=2 --set solver.max_step=0.3"
+          " --set output.every=100",
+      dir.string() + ".log");
+  ASSERT_EQ(status, 1);
+  const auto summary = read_json_file(dir / "summary.json");
+  ASSERT_EQ(summary["steps"].get<int>(), 2);
+  const double t = summary["final_time"].get<double>();
+  const VtuField u = read_vtu_point_field(dir / "step_0002.vtu", "displacement");
+  const VtuField v = read_vtu_point_field(dir / "step_0002.vtu", "velocity");
+  ASSERT_EQ(u.values.size(), v.values.size());
+  double largest = 0.0;
+  for (std::size_t i = 2; i < u.values.size(); i += 3) {
+    EXPECT_NEAR(v.values[i], u.values[i] / t, 1e-8 * (1.0 + std::abs(u.values[i] / t)))
+        << "value " << i;
+    largest = std::max(largest, std::abs(v.values[i]));
+  }
+  EXPECT_NEAR(largest, 20.0, 1e-8);  // the top moves at 20 mm/s
 }
 
 }  // namespace
