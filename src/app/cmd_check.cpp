@@ -1,6 +1,6 @@
 // `plisse check CASE.yaml [--set key.path=value ...]`: validates a case and its mesh without
-// solving (DESIGN.md, interface contract) and prints a short summary. Problems are thrown as
-// InputError, which main() reports with file, line, column and key and exit status 2.
+// solving (docs/architecture.md, "Interface contract") and prints a short summary. Problems are
+// thrown as InputError, which main() reports with file, line, column and key and exit status 2.
 #include <iostream>
 #include <memory>
 #include <sstream>

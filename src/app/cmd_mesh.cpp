@@ -1,7 +1,7 @@
-/// `plisse mesh KIND [options] -o FILE.msh`: writes a generated mesh (DESIGN.md, interface
-/// contract). One subcommand per kind of `mesh_kinds()`; its options are that kind's declared
-/// options with dashes (inner_radius -> --inner-radius), so names, units, ranges and defaults
-/// come from the one registry in mesh/generate.cpp.
+/// `plisse mesh KIND [options] -o FILE.msh`: writes a generated mesh (docs/architecture.md,
+/// "Interface contract"). One subcommand per kind of `mesh_kinds()`; its options are that kind's
+/// declared options with dashes (inner_radius -> --inner-radius), so names, units, ranges and
+/// defaults come from the one registry in mesh/generate.cpp.
 #include <iostream>
 #include <memory>
 #include <sstream>

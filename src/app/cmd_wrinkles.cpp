@@ -1,8 +1,8 @@
 // `plisse wrinkles DIR [--set output.wrinkles.KEY=VALUE ...]`: recomputes the wrinkle metrics of
-// the last converged state of a finished (or stopped) run (DESIGN.md, interface contract). The run
-// directory's summary.json names the case and its --set values; checkpoint.bin holds the final
-// state (written at the end of every run). The table replaces "wrinkles" in summary.json and is
-// printed.
+// the last converged state of a finished (or stopped) run (docs/architecture.md, "Interface
+// contract"). The run directory's summary.json names the case and its --set values; checkpoint.bin
+// holds the final state (written at the end of every run). The table replaces "wrinkles" in
+// summary.json and is printed.
 #include <cstdio>
 #include <filesystem>
 #include <iostream>

@@ -1,7 +1,8 @@
 /// plisse command line: `plisse run|check|mesh|materials|wrinkles ...` (see `plisse --help`).
 ///
-/// Exit status (DESIGN.md, interface contract): 0 success; 1 solver failure (last converged state
-/// written) or an internal error; 2 bad input (message names file, line, column, key and rule).
+/// Exit status (docs/architecture.md, "Interface contract"): 0 success; 1 solver failure (last
+/// converged state written) or an internal error; 2 bad input (message names file, line, column,
+/// key and rule).
 #include <CLI/CLI.hpp>
 #include <cstdlib>
 #include <exception>

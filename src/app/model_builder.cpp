@@ -15,7 +15,7 @@ namespace plisse::app {
 namespace {
 
 /// The contact term of `die`: candidates are the nodes of `die.surface`, or of
-/// default_die_candidates; the penalty defaults to contact.md (C11) with the material's
+/// default_die_candidates; the penalty defaults to contact.md (D11) with the material's
 /// small-strain shear modulus `mu`. Throws InputError (at the die) when the surface is empty.
 std::unique_ptr<ModelTerm> make_die_term(const Die& die, const Case& c, const Mesh& mesh,
                                          double mu) {

@@ -41,7 +41,7 @@ void check_free_displacements(const Case& c, const Mesh& mesh,
 
 /// The contact surface of a die without `surface:`: the whole boundary except the faces on the
 /// case's symmetry planes, which are cuts through the body whose area would inflate the tributary
-/// area of the nodes on the cut (docs/theory/contact.md, C5).
+/// area of the nodes on the cut (docs/theory/contact.md, D5).
 std::vector<std::array<int, 3>> default_die_candidates(const Case& c, const Mesh& mesh);
 
 /// What the case file allows but this build cannot solve yet (second-order meshes, the

@@ -2,7 +2,7 @@
 /// What `plisse run`, `plisse check` and `plisse wrinkles` share about wrinkling: the case's mesh
 /// with its imperfection, the stepper's stability options, and the wrinkle metrics of a converged
 /// state (rings, tension-field state) in the form of history columns, VTU fields and the
-/// summary.json table (DESIGN.md, "Wrinkle metrics"; docs/theory/wrinkles.md).
+/// summary.json table (docs/architecture.md, "Stability and wrinkling"; docs/theory/wrinkles.md).
 #include <nlohmann/json.hpp>
 
 #include <array>

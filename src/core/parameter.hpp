@@ -1,6 +1,7 @@
 #pragma once
-/// Declared parameters: name, admissible range, unit and help, in one place (STYLE.md section 4).
-/// The same table validates input, produces error messages and generates documentation.
+/// Declared parameters: name, admissible range, unit and help, in one place (docs/architecture.md,
+/// "Coding conventions"). The same table validates input, produces error messages and generates
+/// documentation.
 #include <cmath>
 #include <limits>
 #include <optional>

@@ -2,7 +2,7 @@
 /// The cubic bubble of the MINI element (P1+/P1) on a tetrahedron.
 ///
 ///   N_b = 256 L_0 L_1 L_2 L_3,   Grad N_b = 256 Σ_c (Π_{d≠c} L_d) Grad L_c
-/// (docs/theory/mixed_up.md, eq. E2). N_b = 1 at the centroid and vanishes on every face, so the
+/// (docs/theory/mixed_up.md, eq. U2). N_b = 1 at the centroid and vanishes on every face, so the
 /// bubble is local to one element [Arnold, Brezzi & Fortin, Calcolo 21 (1984) 337].
 #include <array>
 

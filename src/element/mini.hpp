@@ -2,7 +2,7 @@
 /// The MINI (P1+/P1) mixed displacement-pressure tetrahedron, total Lagrangian, with the bubble
 /// condensed statically and consistently (docs/theory/mixed_up.md).
 ///
-///   Π_e(u, b, p) = ∫_Ωe [ W(F) - p_h (J - 1) - p_h² / (2κ) ] dV                      (E1)
+///   Π_e(u, b, p) = ∫_Ωe [ W(F) - p_h (J - 1) - p_h² / (2κ) ] dV                      (U1)
 ///
 /// W is the isochoric energy of the material, p the pressure (positive in compression),
 /// σ = σ_iso - p I; 1/κ = 0 is exact incompressibility. The kernels are templates on the material:
@@ -62,11 +62,11 @@ bool assemble_mini_uncondensed(const TetGeometry& g, const ElemVec& x_e, const M
 
 /// Condensed residual and tangent of one element in the 16 nodal unknowns x_e.
 ///
-/// Solves r_b(x_e, b) = 0 by Newton's method (C1), warm-started from `bubble` (or from 0 if the
-/// warm start gives det F <= 0; steps into det F <= 0 are halved), to the tolerance (C2); then
-/// returns r_e = r_x(x_e, b*) (linearised at the last iterate, C3) and, if K_e is given, the Schur
-/// complement K_e = K_xx - K_xb K_bb⁻¹ K_bx (C4), which is the exact derivative dr_e/dx_e by the
-/// implicit function theorem (C5).
+/// Solves r_b(x_e, b) = 0 by Newton's method (B1), warm-started from `bubble` (or from 0 if the
+/// warm start gives det F <= 0; steps into det F <= 0 are halved), to the tolerance (B2); then
+/// returns r_e = r_x(x_e, b*) (linearised at the last iterate, B3) and, if K_e is given, the Schur
+/// complement K_e = K_xx - K_xb K_bb⁻¹ K_bx (B4), which is the exact derivative dr_e/dx_e by the
+/// implicit function theorem (B5).
 ///   inverse_bulk_modulus: 1/κ [1/MPa], 0 for exact incompressibility.
 ///   bubble: in, warm start [mm]; out, converged b* (unchanged when the status is not ok).
 ///   r_e [N for u rows, mm³ for p rows], K_e: outputs, overwritten; K_e == nullptr: residual only.
@@ -87,7 +87,7 @@ ElementStatus assemble_mini(const TetGeometry& g, const ElemVec& x_e, const Mate
     status.bubble_iterations = iteration;
     MiniIntegrals sums(g, K_e != nullptr);
     if (!detail::integrate_points(g, s, b, mat, sums, status.min_J)) {
-      // Safeguards (C1): an inadmissible warm start is replaced by b = 0 (x_e may have moved
+      // Safeguards (B1): an inadmissible warm start is replaced by b = 0 (x_e may have moved
       // far since it was stored); a Newton step into det F <= 0 is halved, up to
       // kMaxBubbleHalvings.
       if (iteration == 1 && !b.isZero(0.0)) {
@@ -147,7 +147,7 @@ ElementFields compute_element_fields(const TetGeometry& g, const ElemVec& x_e, c
   return fields;
 }
 
-/// Element energy Π_e (E1) at (x_e, bubble) [mJ = N mm]; its gradient is the uncondensed
+/// Element energy Π_e (U1) at (x_e, bubble) [mJ = N mm]; its gradient is the uncondensed
 /// residual. For tests and line-search diagnostics. Returns NaN when det F <= 0 at a point.
 template <class Material>
 double compute_element_energy(const TetGeometry& g, const ElemVec& x_e, const Material& mat,

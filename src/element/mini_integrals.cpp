@@ -42,13 +42,13 @@ NodalState gather_nodal_state(const TetGeometry& g, const ElemVec& x_e) {
 PointKinematics compute_point_kinematics(const TetGeometry& g, const NodalState& s,
                                          const BubbleVec& bubble, int q) {
   PointKinematics k;
-  const Mat3d H = s.grad_u_linear + bubble * g.grad_bubble[q].transpose();  // (E3)
+  const Mat3d H = s.grad_u_linear + bubble * g.grad_bubble[q].transpose();  // (U3)
   k.F = Mat3d::Identity() + H;
   k.cof.col(0) = k.F.col(1).cross(k.F.col(2));
   k.cof.col(1) = k.F.col(2).cross(k.F.col(0));
   k.cof.col(2) = k.F.col(0).cross(k.F.col(1));
   // det(I + H) - 1 = tr H + ½((tr H)² - tr H²) + det H: exact, and free of the cancellation of
-  // det F - 1 when |H| is small (mixed_up.md, E4).
+  // det F - 1 when |H| is small (mixed_up.md, U4).
   const double trace = H.trace();
   k.J_minus_1 = trace + 0.5 * (trace * trace - (H * H).trace()) + H.determinant();
   k.J = 1.0 + k.J_minus_1;
@@ -137,21 +137,21 @@ BubbleStep compute_bubble_step(const MiniLocalSystem& sys, double element_size) 
     return step;
   step.ok = true;
   step.K_bb_inverse = sys.K_bb.inverse();
-  step.delta = -(step.K_bb_inverse * sys.r_b);  // (C1)
+  step.delta = -(step.K_bb_inverse * sys.r_b);  // (B1)
   step.converged =
-      sys.r_b.norm() <= kBubbleTolerance * (element_size * K_norm + sys.force_scale);  // (C2)
+      sys.r_b.norm() <= kBubbleTolerance * (element_size * K_norm + sys.force_scale);  // (B2)
   return step;
 }
 
 void condense_bubble(const MiniLocalSystem& sys, const BubbleStep& step, ElemVec& r_e,
                      ElemMat* K_e) {
   r_e = sys.r_x;
-  r_e.noalias() += sys.K_xb * step.delta;  // (C3)
+  r_e.noalias() += sys.K_xb * step.delta;  // (B3)
   if (K_e == nullptr) return;
   const ElemBubbleMat K_xb_Kinv = sys.K_xb * step.K_bb_inverse;
   *K_e = sys.K_xx;
   // Coefficient-based product: Eigen's blocked GEMM path is slower at 16x3x16.
-  K_e->noalias() -= K_xb_Kinv.lazyProduct(sys.K_xb.transpose());  // (C4)
+  K_e->noalias() -= K_xb_Kinv.lazyProduct(sys.K_xb.transpose());  // (B4)
 }
 
 }  // namespace plisse::mini

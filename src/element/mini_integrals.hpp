@@ -21,7 +21,7 @@ struct NodalState {
 };
 NodalState gather_nodal_state(const TetGeometry& g, const ElemVec& x_e);
 
-/// Kinematics at one quadrature point (eq. E3).
+/// Kinematics at one quadrature point (eq. U3).
 struct PointKinematics {
   Mat3d F;           ///< I + Grad u_h
   Mat3d cof;         ///< cof F = J F^{-T}, columns f1×f2, f2×f0, f0×f1 of F = [f0 f1 f2]
@@ -40,7 +40,7 @@ struct MiniLocalSystem {
   ElemBubbleMat K_xb;      ///< (K2), (K5)
   Mat3d K_bb;              ///< (K3) [N/mm]
   ElemMat K_xx;            ///< (K1), (K4), (K6); only filled when asked for
-  double force_scale = 0;  ///< f_e of eq. (C2) [N]
+  double force_scale = 0;  ///< f_e of eq. (B2) [N]
 };
 
 /// Quadrature sums of one element evaluation: add every point, then read the blocks.
@@ -71,7 +71,7 @@ class MiniIntegrals {
   std::array<Mat3d, 4> cof_N_;  // Σ w N_a cof F  (K_xx only)
 };
 
-/// One Newton step of the local bubble problem r_b(x, b) = 0 at fixed x (eqs. C1-C2).
+/// One Newton step of the local bubble problem r_b(x, b) = 0 at fixed x (eqs. B1-B2).
 struct BubbleStep {
   bool ok = false;                      ///< false: K_bb singular or not finite
   bool converged = false;               ///< |r_b| <= kBubbleTolerance f_e before the step
@@ -79,7 +79,7 @@ struct BubbleStep {
   Mat3d K_bb_inverse = Mat3d::Zero();
 };
 
-/// Relative tolerance of the bubble solve, |r_b| <= ε (h_e |K_bb| + Σ w |P - p cof F| |g|) (C2).
+/// Relative tolerance of the bubble solve, |r_b| <= ε (h_e |K_bb| + Σ w |P - p cof F| |g|) (B2).
 inline constexpr double kBubbleTolerance = 1e-10;
 /// Most element evaluations of one bubble solve before it is reported as failed.
 inline constexpr int kMaxBubbleIterations = 20;
@@ -88,7 +88,7 @@ inline constexpr int kMaxBubbleHalvings = 4;
 
 BubbleStep compute_bubble_step(const MiniLocalSystem& sys, double element_size);
 
-/// Static condensation (C3)-(C4):  r_e = r_x + K_xb Δb,  K_e = K_xx - K_xb K_bb⁻¹ K_xbᵀ.
+/// Static condensation (B3)-(B4):  r_e = r_x + K_xb Δb,  K_e = K_xx - K_xb K_bb⁻¹ K_xbᵀ.
 /// K_e == nullptr: residual only.
 void condense_bubble(const MiniLocalSystem& sys, const BubbleStep& step, ElemVec& r_e,
                      ElemMat* K_e);

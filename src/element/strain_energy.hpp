@@ -10,7 +10,7 @@
 ///
 /// Why p²/(2κ) and not κ/2 (J - 1)²: the discrete pressure equation of the mixed form (R3)
 /// holds weakly, r_p,a = -∫ N_a ((J - 1) + p_h/κ) dV = 0 for every pressure node a. Since
-/// E_e = Π_e - Σ_a p_a r_p,a (Π_e the mixed functional E1 of element/mini.hpp), summed over the
+/// E_e = Π_e - Σ_a p_a r_p,a (Π_e the mixed functional U1 of element/mini.hpp), summed over the
 /// mesh E = Π at every state that satisfies the pressure equations, with E_e >= 0 term by term
 /// (W >= 0 for the registry's models). Along a displacement path that keeps the bubble and the
 /// pressure equations satisfied,

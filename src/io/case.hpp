@@ -1,12 +1,13 @@
 #pragma once
 /// A plisse case: the typed, validated contents of a case file (YAML).
 ///
-/// Keys of the file are the member names below. The sections are made of the parameter types of
-/// the layers that use them (Ramp, BoundaryCondition, Cavity in physics/; SteppingSettings,
-/// NewtonSettings in solver/), so those layers never see this file. Every value that refers to
-/// the user's input keeps its InputPlace, so later checks (tags against the mesh, material rules)
-/// can name the file, line, column and key. The parser (`parse_case_file`) fills and validates
-/// everything that can be checked without the mesh; `check_case_against_mesh` does the rest.
+/// Keys of the file are the member names below (docs/architecture.md, "Coding conventions"). The
+/// sections are made of the parameter types of the layers that use them (Ramp, BoundaryCondition,
+/// Cavity in physics/; SteppingSettings, NewtonSettings in solver/), so those layers never see
+/// this file. Every value that refers to the user's input keeps its InputPlace, so later checks
+/// (tags against the mesh, material rules) can name the file, line, column and key. The parser
+/// (`parse_case_file`) fills and validates everything that can be checked without the mesh;
+/// `check_case_against_mesh` does the rest.
 ///
 /// Units: mm, MPa, s, tonne/mm^3 (so accelerations are mm/s^2, forces N).
 #include <array>

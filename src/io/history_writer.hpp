@@ -1,6 +1,6 @@
 #pragma once
-/// history.csv: one row per converged step, one column per scalar quantity (DESIGN.md, interface
-/// contract). The first columns are always `step,time,load_factor,newton_iterations,
+/// history.csv: one row per converged step, one column per scalar quantity (docs/architecture.md,
+/// "Interface contract"). The first columns are always `step,time,load_factor,newton_iterations,
 /// residual_norm`; the caller adds named columns such as `pressure:gas`, `volume:cavity`,
 /// `force_y:punch`, `ux:inner`, `negative_pivots`, `stable` when the file is created, and the set
 /// is fixed afterwards.

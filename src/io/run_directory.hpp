@@ -1,6 +1,6 @@
 #pragma once
 /// The output directory of a run (`plisse run CASE -o DIR`) and the names of its files
-/// (DESIGN.md, interface contract): history.csv, summary.json, solution.pvd with
+/// (docs/architecture.md, "Interface contract"): history.csv, summary.json, solution.pvd with
 /// step_NNNN.vtu, and log.txt. Files are written by io/history_writer, io/json_file,
 /// io/pvd_writer with io/vtu_writer, and io/run_log.
 #include <filesystem>

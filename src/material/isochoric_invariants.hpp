@@ -1,7 +1,7 @@
 #pragma once
 /// Isochoric invariants of C = F^T F and the one shared map from an energy W(Ī1, Ī2) to the point
 /// response (W, P = dW/dF, A = dP/dF). Every isotropic model of this folder goes through it, so the
-/// tensor algebra is written, tested and tuned once (STYLE.md section 3).
+/// tensor algebra is written, tested and tuned once (docs/architecture.md, "Coding conventions").
 /// Derivations and equation numbers: docs/theory/materials.md, eqs. (M1)-(M14).
 #include <cmath>
 

@@ -1,8 +1,9 @@
 #pragma once
 /// The material registry: the only map from input-file model names to model types, with each
 /// model's formula and declared parameters (name, range, unit, help, default) and the rules that
-/// tie parameters together (STYLE.md section 4). The same table validates input, builds models,
-/// feeds `plisse materials` and generates docs/materials.md, so code, input and manual agree.
+/// tie parameters together (docs/architecture.md, "Coding conventions"). The same table validates
+/// input, builds models, feeds `plisse materials` and generates docs/materials.md, so code, input
+/// and manual agree.
 #include <cstddef>
 #include <functional>
 #include <map>

@@ -1,6 +1,6 @@
 #pragma once
 /// Geometric imperfections of the reference mesh, to seed wrinkling on purpose instead of by
-/// numerical noise (DESIGN.md "Stability and wrinkling"; docs/theory/imperfections.md).
+/// numerical noise (docs/architecture.md, "Stability and wrinkling"; docs/theory/imperfections.md).
 ///
 /// Both kinds give a displacement field d_j [mm] of the reference nodes with max_j |d_j| = a
 /// exactly (a = the caller's relative amplitude x wall thickness):

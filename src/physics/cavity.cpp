@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "physics/cavity_volume.hpp"
+#include "physics/follower_pressure.hpp"
 #include "physics/pressure_load.hpp"
 #include "physics/surface.hpp"
 
@@ -99,15 +100,10 @@ void CavityTerm::assemble(double t, std::span<const double> x, std::span<double>
       xs[a] = deformed_position(mesh_, x, tri[a]);
       for (int i = 0; i < 3; ++i) dofs[3 * a + i] = node_dof(tri[a], i);
     }
-    const Vec3d c = (xs[1] - xs[0]).cross(xs[2] - xs[0]);
-    six_volume -= xs[0].dot(xs[1].cross(xs[2]));  // (C1)
-    for (int a = 0; a < 3; ++a)
-      for (int i = 0; i < 3; ++i) residual[dofs[3 * a + i]] += p * c[i] / 6.0;  // (C6)
+    six_volume -= xs[0].dot(xs[1].cross(xs[2]));                            // (C1)
+    const Vec3d c = add_follower_pressure_residual(p, xs, dofs, residual);  // (C6)
     if (!tangent) continue;
-    // (C10): follower-pressure stiffness (p/6) dc/dx_b
-    const std::array<Mat3d, 3> dc = {cross_matrix(xs[2] - xs[1]), cross_matrix(xs[0] - xs[2]), cross_matrix(xs[1] - xs[0])};
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b) k.block<3, 3>(3 * a, 3 * b) = (p / 6.0) * dc[b];
+    follower_pressure_stiffness(p, xs, k.topLeftCorner<9, 9>());  // (C10)
     // (C11): column d r_u / d p_c = c/6; row d r_p / d x_a = (1/6) x_{a+1} x x_{a+2}
     for (int a = 0; a < 3; ++a) {
       k.block<3, 1>(3 * a, 9) = c / 6.0;

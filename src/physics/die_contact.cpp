@@ -33,7 +33,7 @@ DieContact::DieContact(const Mesh& mesh, DieGeometry die, DieContactSettings set
     areas_.push_back(area);
   }
   state_.resize(nodes_.size());
-  // Region nodes are glued where they are at t = 0: at their reference positions (C13).
+  // Region nodes are glued where they are at t = 0: at their reference positions (D13).
   std::set<int> region_nodes;
   for (const auto& t : region) region_nodes.insert(t.begin(), t.end());
   for (size_t i = 0; i < nodes_.size(); ++i)
@@ -56,7 +56,7 @@ DieContact::NodeResponse DieContact::respond(int i, double t, std::span<const do
   const double A = areas_[i], eps = settings_.penalty;
   const Vec3d xi = position(i, x);
   if (s.glued) {
-    // Tie to the die point: d = x - (c(t) + s), f = A (Lambda - eps d), K = A eps I   (C12)
+    // Tie to the die point: d = x - (c(t) + s), f = A (Lambda - eps d), K = A eps I   (D12)
     const Vec3d d = xi - (die_.point(t) + s.anchor);
     out.force = A * (s.glue_multiplier - eps * d);
     if (with_tangent) out.K = A * eps * Mat3d::Identity();
@@ -66,12 +66,12 @@ DieContact::NodeResponse DieContact::respond(int i, double t, std::span<const do
   }
   const DieGap gap = die_.gap(xi, t);
   out.violation = std::max(0.0, -gap.g);
-  // lambda_hat = max(0, lambda - eps g), f = A lambda_hat n   (C6)
+  // lambda_hat = max(0, lambda - eps g), f = A lambda_hat n   (D6)
   const double lambda_hat = s.multiplier - eps * gap.g;
   if (lambda_hat <= 0.0) return out;
   out.active = true;
   out.force = A * lambda_hat * gap.n;
-  // K = -df/dx = A (eps n n^T - lambda_hat H)   (C8)
+  // K = -df/dx = A (eps n n^T - lambda_hat H)   (D8)
   if (with_tangent) out.K = A * (eps * gap.n * gap.n.transpose() - lambda_hat * gap.H);
   return out;
 }
@@ -86,7 +86,7 @@ void DieContact::assemble(double t, std::span<const double> x, std::span<double>
     if (!r.active) continue;
     for (int c = 0; c < 3; ++c) {
       dofs[c] = node_dof(nodes_[i], c);
-      residual[dofs[c]] -= r.force[c];  // residual = internal - external force (C7)
+      residual[dofs[c]] -= r.force[c];  // residual = internal - external force (D7)
     }
     if (!tangent) continue;
     k = r.K;
@@ -101,10 +101,10 @@ bool DieContact::update_multipliers(std::span<const double> x) {
     NodeState& s = state_[i];
     const Vec3d xi = position(static_cast<int>(i), x);
     if (s.glued) {
-      // Lambda <- Lambda - eps d   (C14)
+      // Lambda <- Lambda - eps d   (D14)
       s.glue_multiplier -= eps * (xi - (die_.point(time_) + s.anchor));
     } else {
-      // lambda <- max(0, lambda - eps g)   (C9)
+      // lambda <- max(0, lambda - eps g)   (D9)
       s.multiplier = std::max(0.0, s.multiplier - eps * die_.gap(xi, time_).g);
     }
   }
@@ -122,7 +122,7 @@ void DieContact::accept_step(std::span<const double> x) {
       const double lambda_hat = std::max(0.0, s.multiplier - eps * gap.g);
       if (gap.g > settings_.touch_slack && lambda_hat <= 0.0) continue;
       // Glue to the closest die point x - g n, with Lambda = (lambda_hat + eps g) n so the force
-      // of the node does not jump (C13).
+      // of the node does not jump (D13).
       s.glued = true;
       s.anchor = xi - gap.g * gap.n - die_.point(time_);
       s.glue_multiplier = (lambda_hat + eps * gap.g) * gap.n;
@@ -171,7 +171,7 @@ std::vector<double> DieContact::history_values(double t, std::span<const double>
 }
 
 Vec3d DieContact::force_on_die(double t, std::span<const double> x) const {
-  // F_die = - sum_v f_v   (C15)
+  // F_die = - sum_v f_v   (D15)
   Vec3d sum = Vec3d::Zero();
   for (size_t i = 0; i < nodes_.size(); ++i) sum -= respond(static_cast<int>(i), t, x, false).force;
   return sum;
@@ -206,7 +206,7 @@ double DieContact::area(int node) const {
 }
 
 double default_die_penalty(double shear_modulus, double element_size) {
-  // epsilon = 10 mu / h   (C11)
+  // epsilon = 10 mu / h   (D11)
   return 10.0 * shear_modulus / element_size;
 }
 

@@ -19,7 +19,7 @@ namespace plisse {
 
 class DieContact : public ModelTerm {
  public:
-  /// Contact of the nodes of `candidates` (triangles, reference tributary areas C5) with `die`;
+  /// Contact of the nodes of `candidates` (triangles, reference tributary areas D5) with `die`;
   /// sticking only: the nodes of `region` are glued from the start at their reference positions
   /// (their area counts the triangles of both lists, each once). Borrows `mesh`.
   /// Throws plisse::Error when penalty or tolerance is not > 0, or frictionless with a region.
@@ -28,13 +28,13 @@ class DieContact : public ModelTerm {
              const std::vector<std::array<int, 3>>& region = {});
 
   /// Residual -f_v on each node v in contact (f_v: force of the die on the body) and its tangent,
-  /// symmetric (contact.md, C6-C8, C12). Remembers t for the updates below.
+  /// symmetric (contact.md, D6-D8, D12). Remembers t for the updates below.
   void assemble(double t, std::span<const double> x, std::span<double> residual,
                 TangentSink* tangent) override;
   /// When the largest violation at x exceeds the tolerance: Uzawa update of every multiplier
-  /// (C9, C14) and true; else false and nothing changes.
+  /// (D9, D14) and true; else false and nothing changes.
   bool update_multipliers(std::span<const double> x) override;
-  /// Sticking: glues the nodes that touch the die at x (C13); keeps multipliers and glue state.
+  /// Sticking: glues the nodes that touch the die at x (D13); keeps multipliers and glue state.
   void accept_step(std::span<const double> x) override;
   /// Back to the multipliers and glue state of the last accepted step.
   void reject_step() override;
@@ -42,15 +42,15 @@ class DieContact : public ModelTerm {
   std::vector<double> save_state() const override;
   void load_state(std::span<const double> state) override;
 
-  /// force_x/y/z:<name> (force of the body ON the die [N], C15), contact_nodes:<name>,
-  /// penetration:<name> [mm] (largest violation, C10).
+  /// force_x/y/z:<name> (force of the body ON the die [N], D15), contact_nodes:<name>,
+  /// penetration:<name> [mm] (largest violation, D10).
   std::vector<std::string> history_columns() const override;
   std::vector<double> history_values(double t, std::span<const double> x) const override;
 
-  /// Force exerted by the body on the die at (t, x) [N] (C15).
+  /// Force exerted by the body on the die at (t, x) [N] (D15).
   Vec3d force_on_die(double t, std::span<const double> x) const;
   /// Largest constraint violation [mm]: penetration -g of sliding nodes, |x - anchor| of glued
-  /// ones (C10); 0 when nothing touches.
+  /// ones (D10); 0 when nothing touches.
   double violation(double t, std::span<const double> x) const;
   /// Nodes carrying a contact force (sliding with lambda_hat > 0) plus glued nodes.
   int n_contact_nodes(double t, std::span<const double> x) const;
@@ -64,16 +64,16 @@ class DieContact : public ModelTerm {
   /// Per node: what the augmented Lagrangian carries from step to step.
   struct NodeState {
     bool glued = false;
-    double multiplier = 0.0;                ///< lambda [MPa], sliding nodes (C6)
-    Vec3d glue_multiplier = Vec3d::Zero();  ///< Lambda [MPa], glued nodes (C12)
+    double multiplier = 0.0;                ///< lambda [MPa], sliding nodes (D6)
+    Vec3d glue_multiplier = Vec3d::Zero();  ///< Lambda [MPa], glued nodes (D12)
     Vec3d anchor = Vec3d::Zero();           ///< glue point minus the die point at gluing [mm]
   };
-  /// Force of the die on node i and its derivative K = -df/dx (C6-C8, C12).
+  /// Force of the die on node i and its derivative K = -df/dx (D6-D8, D12).
   struct NodeResponse {
     Vec3d force = Vec3d::Zero();
     Mat3d K = Mat3d::Zero();
     bool active = false;     ///< carries a force (sliding) or glued
-    double violation = 0.0;  ///< C10
+    double violation = 0.0;  ///< D10
   };
   NodeResponse respond(int i, double t, std::span<const double> x, bool with_tangent) const;
   Vec3d position(int i, std::span<const double> x) const;
@@ -88,7 +88,7 @@ class DieContact : public ModelTerm {
 };
 
 /// Default penalty when the case gives 0: epsilon = 10 mu / h [MPa/mm], mu the small-strain shear
-/// modulus, h the mean edge length of the contact surface (contact.md, C11).
+/// modulus, h the mean edge length of the contact surface (contact.md, D11).
 double default_die_penalty(double shear_modulus, double element_size);
 
 }  // namespace plisse

@@ -12,7 +12,7 @@ struct DieContactSettings {
   ContactKind contact = ContactKind::frictionless;
   double penalty = 0.0;     ///< epsilon [MPa/mm = N/mm^3], > 0: contact pressure per unit gap
   double tolerance = 1e-3;  ///< largest penetration (glued: distance to the anchor) [mm], > 0
-  /// A node with gap g <= touch_slack [mm] touches (round-off allowance, contact.md C13).
+  /// A node with gap g <= touch_slack [mm] touches (round-off allowance, contact.md D13).
   double touch_slack = 0.0;
 };
 

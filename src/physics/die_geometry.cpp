@@ -28,13 +28,13 @@ DieGap DieGeometry::gap(const Vec3d& x, double t) const {
   const Vec3d c = point(t);
   switch (shape_) {
     case DieShape::plane:
-      // g = n . (x - c), n constant, H = 0   (contact.md, C2)
+      // g = n . (x - c), n constant, H = 0   (contact.md, D2)
       out.g = normal_.dot(x - c);
       out.n = normal_;
       out.H.setZero();
       break;
     case DieShape::sphere: {
-      // g = |x - c| - R, n = (x - c)/|x - c|, H = (I - n n^T)/|x - c|   (C3)
+      // g = |x - c| - R, n = (x - c)/|x - c|, H = (I - n n^T)/|x - c|   (D3)
       const Vec3d r = x - c;
       const double distance = r.norm();
       FE_CHECK(distance > 1e-12 * radius_, "point at the centre of a spherical die: no normal");
@@ -44,7 +44,7 @@ DieGap DieGeometry::gap(const Vec3d& x, double t) const {
       break;
     }
     case DieShape::cylinder: {
-      // r = P (x - c) with P = I - a a^T; g = |r| - R, n = r/|r|, H = (P - n n^T)/|r|   (C4)
+      // r = P (x - c) with P = I - a a^T; g = |r| - R, n = r/|r|, H = (P - n n^T)/|r|   (D4)
       const Mat3d P = Mat3d::Identity() - axis_ * axis_.transpose();
       const Vec3d r = P * (x - c);
       const double distance = r.norm();

@@ -1,6 +1,6 @@
 #pragma once
 /// The surface of a rigid analytic die (plane, sphere, cylinder) translated by a prescribed, ramped
-/// displacement, and the signed gap of a point to it (docs/theory/contact.md, C1-C4).
+/// displacement, and the signed gap of a point to it (docs/theory/contact.md, D1-D4).
 #include "core/types.hpp"
 #include "physics/ramp.hpp"
 
@@ -23,17 +23,17 @@ class DieGeometry {
   /// plane: `point` on the plane, unit `normal` pointing towards the body (the body is on the side
   /// n . (x - point) > 0). sphere: centre `point`, `radius`, body outside. cylinder: `point` on the
   /// axis, unit `axis`, `radius`, body outside. The die translates by ramp.factor(t) *
-  /// `displacement` [mm] (C1). Throws plisse::Error for a non-unit direction or radius <= 0.
+  /// `displacement` [mm] (D1). Throws plisse::Error for a non-unit direction or radius <= 0.
   DieGeometry(DieShape shape, const Vec3d& point, const Vec3d& normal, const Vec3d& axis,
               double radius, const Vec3d& displacement, Ramp ramp);
 
   DieShape shape() const { return shape_; }
-  /// The translation of the die at time t [mm] (C1).
+  /// The translation of the die at time t [mm] (D1).
   Vec3d translation(double t) const { return ramp_.factor(t) * displacement_; }
   /// The reference point (plane point, sphere centre, point on the axis) at time t [mm].
   Vec3d point(double t) const { return point_ + translation(t); }
 
-  /// Gap, normal and normal derivative of the point x [mm] at time t (C2-C4). Throws plisse::Error
+  /// Gap, normal and normal derivative of the point x [mm] at time t (D2-D4). Throws plisse::Error
   /// when x lies on the centre (sphere) or the axis (cylinder), where the normal is undefined.
   DieGap gap(const Vec3d& x, double t) const;
 

@@ -26,7 +26,7 @@ std::map<int, double> tributary_areas(const Mesh& mesh,
   std::map<int, double> area;
   for (const auto& t : triangles) {
     const Vec3d& x0 = mesh.nodes[t[0]];
-    // A_v = sum over the triangles at v of |T| / 3   (contact.md, C5)
+    // A_v = sum over the triangles at v of |T| / 3   (contact.md, D5)
     const double third = (mesh.nodes[t[1]] - x0).cross(mesh.nodes[t[2]] - x0).norm() / 6.0;
     for (int v : t) area[v] += third;
   }

@@ -1,5 +1,5 @@
 #pragma once
-/// The nodes of a contact surface with their tributary areas (docs/theory/contact.md, C5).
+/// The nodes of a contact surface with their tributary areas (docs/theory/contact.md, D5).
 #include <array>
 #include <map>
 #include <vector>
@@ -13,7 +13,7 @@ namespace plisse {
 std::vector<std::array<int, 3>> boundary_faces(const Mesh& mesh);
 
 /// Reference tributary area of every node of `triangles` [mm^2]: a third of the area of each
-/// triangle it is a corner of (C5). Ordered by node index.
+/// triangle it is a corner of (D5). Ordered by node index.
 std::map<int, double> tributary_areas(const Mesh& mesh,
                                       const std::vector<std::array<int, 3>>& triangles);
 

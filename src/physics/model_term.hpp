@@ -1,7 +1,8 @@
 #pragma once
 /// Contributions to the discrete problem beyond the elements: surface loads, body forces, cavities,
-/// contact. A term sees the full state vector of the model (DESIGN.md layout below), adds to the
-/// residual and to the tangent, and may own global scalar unknowns (e.g. a cavity's pressure).
+/// contact. A term sees the full state vector of the model (layout below; docs/architecture.md,
+/// "The path of a case"), adds to the residual and to the tangent, and may own global scalar
+/// unknowns (e.g. a cavity's pressure).
 ///
 /// Full-state layout: kValuesPerNode values per node (ux, uy, uz, p), then the global unknowns of
 /// all terms, in the order the terms were added to the model.

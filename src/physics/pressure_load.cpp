@@ -4,6 +4,7 @@
 #include <map>
 #include <set>
 
+#include "physics/follower_pressure.hpp"
 #include "physics/surface.hpp"
 
 namespace plisse {
@@ -47,8 +48,7 @@ void PressureLoad::assemble(double t, std::span<const double> x, std::span<doubl
                             TangentSink* tangent) {
   const double p = pressure(t);
   if (p == 0.0) return;
-  // External nodal force of a linear triangle: f_a = -p/6 (x1 - x0) x (x2 - x0) for each corner
-  // (loads.md, L2); the residual is internal minus external force.
+  // Residual (loads.md, L2) and load stiffness (L3) of each triangle: the shared kernel.
   std::array<int, 9> dofs;
   Eigen::Matrix<double, 9, 9, Eigen::RowMajor> k;
   for (const auto& tri : triangles_) {
@@ -60,14 +60,9 @@ void PressureLoad::assemble(double t, std::span<const double> x, std::span<doubl
         xs[a][i] += x[dofs[3 * a + i]];
       }
     }
-    const Vec3d c = (xs[1] - xs[0]).cross(xs[2] - xs[0]);
-    for (int a = 0; a < 3; ++a)
-      for (int i = 0; i < 3; ++i) residual[dofs[3 * a + i]] += p * c[i] / 6.0;
+    add_follower_pressure_residual(p, xs, dofs, residual);
     if (!tangent) continue;
-    // dc/dx0 = [x2 - x1]x, dc/dx1 = [x0 - x2]x, dc/dx2 = [x1 - x0]x   (loads.md, L3)
-    const std::array<Mat3d, 3> dc = {cross_matrix(xs[2] - xs[1]), cross_matrix(xs[0] - xs[2]), cross_matrix(xs[1] - xs[0])};
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b) k.block<3, 3>(3 * a, 3 * b) = (p / 6.0) * dc[b];
+    follower_pressure_stiffness(p, xs, k);
     tangent->add(dofs, dofs, std::span<const double>(k.data(), 81));
   }
 }

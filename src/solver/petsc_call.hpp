@@ -1,6 +1,7 @@
 #pragma once
 /// The one way plisse calls PETSc: PLISSE_PETSC(call) turns a nonzero PetscErrorCode into a
-/// plisse::Error naming the call site and PETSc's message (STYLE.md section 7).
+/// plisse::Error naming the call site and PETSc's message (docs/architecture.md, "Coding
+/// conventions").
 #include <petscsys.h>
 
 #include <string>

@@ -1,5 +1,5 @@
-// The bad-input guarantee (DESIGN.md, interface contract; tests/bad-inputs/README.md): for every
-// corpus file, `plisse check` and `plisse run -o <fresh dir>` both
+// The bad-input guarantee (docs/architecture.md, "Interface contract"; tests/bad-inputs/README.md):
+// for every corpus file, `plisse check` and `plisse run -o <fresh dir>` both
 //   - exit with status 2 (bad input), not by a signal, within 20 s;
 //   - print a message that names the file (and line/column when the error is in the YAML), the
 //     key and the broken rule, i.e. every fragment of the file's header;

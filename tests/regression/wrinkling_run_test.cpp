@@ -1,5 +1,5 @@
-// The wrinkling tools through the command line, on small cases (DESIGN.md "Stability and
-// wrinkling", "Wrinkle metrics"):
+// The wrinkling tools through the command line, on small cases (docs/architecture.md,
+// "Stability and wrinkling"):
 //  - a clamped strip shortened past its Euler load (tests/regression/cases/strip-buckling.yaml):
 //    the stability check finds the instability and writes the eigenmodes; the perfect strip stays
 //    straight, a mode-shaped imperfection taken from that run and branch switching both lead to

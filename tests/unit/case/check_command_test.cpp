@@ -1,5 +1,5 @@
 // End to end: the built `plisse check` exits 0 on a valid case and 2 on bad input, with a message
-// naming file:line:column and the key (DESIGN.md, interface contract).
+// naming file:line:column and the key (docs/architecture.md, "Interface contract").
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 

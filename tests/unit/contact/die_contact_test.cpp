@@ -227,7 +227,7 @@ TEST(DieContact, GluedNodesPullBackWhenSeparatedAndAGluedNodeKeepsItsForceAtGlui
   const Vec3d sliding = term.force_on_die(0.0, x);
   term.accept_step(x);
   EXPECT_EQ(term.n_glued(), 9);
-  EXPECT_TRUE(term.force_on_die(0.0, x).isApprox(sliding, 1e-14));  // C13: no jump at gluing
+  EXPECT_TRUE(term.force_on_die(0.0, x).isApprox(sliding, 1e-14));  // D13: no jump at gluing
   // The die lifts 0.5 mm: glued nodes are pulled up (tension), force on the die now -z.
   EXPECT_LT(term.force_on_die(2.0, x).z(), 0.0);
 }

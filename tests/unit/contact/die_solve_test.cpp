@@ -1,6 +1,6 @@
 // A block pressed by a frictionless plane die, solved with the real load stepper: the multiplier
 // updates bring the penetration below the tolerance that the penalty alone misses, and the die
-// force balances the reaction of the fixed bottom (docs/theory/contact.md, C9-C10, C15).
+// force balances the reaction of the fixed bottom (docs/theory/contact.md, D9-D10, D15).
 #include <gtest/gtest.h>
 
 #include <set>

@@ -134,7 +134,7 @@ TEST(MiniElement, UncondensedResidualIsGradientOfEnergyAndTangentIsItsHessian) {
 }
 
 TEST(MiniElement, CondensedResidualIsGradientOfCondensedEnergy) {
-  // Π*(x) = Π(x, b*(x)); dΠ*/dx = r_x + r_b db*/dx = r_x at r_b = 0 (mixed_up.md, C5).
+  // Π*(x) = Π(x, b*(x)); dΠ*/dx = r_x + r_b db*/dx = r_x at r_b = 0 (mixed_up.md, B5).
   const NeoHookean mat{kC1};
   const ConvergedState c = converged_state(3, mat, 0.0);
   const ElemVec scale = unknown_scales(c.g);
@@ -219,7 +219,7 @@ TEST(MiniElement, BubbleSolveConvergesAndIsIndependentOfTheWarmStart) {
   const NeoHookean mat{kC1};
   const ConvergedState c = converged_state(9, mat, 0.0);
   EXPECT_GT(c.bubble.norm(), 1e-3 * c.g.size);  // a non-trivial bubble
-  // The stored bubble solves r_b = 0 to the tolerance (C2).
+  // The stored bubble solves r_b = 0 to the tolerance (B2).
   MiniLocalSystem sys;
   ASSERT_TRUE(assemble_mini_uncondensed(c.g, c.x, mat, 0.0, c.bubble, sys, false));
   EXPECT_LT(sys.r_b.norm(), 1e-12 * sys.force_scale);
@@ -238,7 +238,7 @@ TEST(MiniElement, BubbleSolveConvergesAndIsIndependentOfTheWarmStart) {
 
 TEST(MiniElement, InadmissibleWarmStartIsReplaced) {
   // A stored bubble that inverts the element at the current x_e (e.g. after a large global step)
-  // must not make the element fail: the solve restarts from b = 0 (mixed_up.md, C1).
+  // must not make the element fail: the solve restarts from b = 0 (mixed_up.md, B1).
   const NeoHookean mat{kC1};
   const ConvergedState c = converged_state(4, mat, 0.0);
   BubbleVec b = c.bubble + BubbleVec(3.0, -2.0, 4.0) * c.g.size;

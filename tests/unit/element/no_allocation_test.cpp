@@ -1,6 +1,6 @@
-// assemble_mini and compute_element_fields allocate nothing on the heap (STYLE.md section 5).
-// Counted by interposing malloc in this test executable (glibc: forwarding to __libc_malloc);
-// operator new and Eigen's aligned_malloc both end in malloc.
+// assemble_mini and compute_element_fields allocate nothing on the heap (docs/architecture.md,
+// "Coding conventions"). Counted by interposing malloc in this test executable (glibc: forwarding
+// to __libc_malloc); operator new and Eigen's aligned_malloc both end in malloc.
 #include <gtest/gtest.h>
 
 #include <atomic>

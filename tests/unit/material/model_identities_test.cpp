@@ -88,8 +88,8 @@ TYPED_TEST(ModelIdentities, TangentMatchesCentralDifferencesOfStress) {
   }
 }
 
-// Taylor test (STYLE.md section 8): the central-difference error of a correct derivative falls as
-// h^2.
+// Taylor test (docs/architecture.md, "Tests"): the central-difference error of a correct derivative
+// falls as h^2.
 TYPED_TEST(ModelIdentities, DerivativesConvergeAtSecondOrder) {
   const std::vector<Mat3d> deformations = test::test_deformations();
   for (std::size_t n = 0; n < deformations.size(); ++n) {

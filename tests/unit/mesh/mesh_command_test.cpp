@@ -1,5 +1,5 @@
-// End to end: the built `plisse mesh KIND` writes a readable mesh and prints a summary; bad
-// options exit with status 2 naming the option and the rule (DESIGN.md, interface contract).
+// End to end: the built `plisse mesh KIND` writes a readable mesh and prints a summary; bad options
+// exit with status 2 naming the option and the rule (docs/architecture.md, "Interface contract").
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 

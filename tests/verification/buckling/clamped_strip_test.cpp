@@ -1,7 +1,7 @@
 // Euler buckling of a clamped-clamped strip (L/t = 20, b = 2t, 3 and 4 layers of cubic cells
 // through the thickness) found by lowest_eigenmodes: the lowest eigenvalue of the tangent changes
 // sign on the compressed, unbuckled path at a critical strain that approaches the beam value
-// ε_cr = π² t² / (3 L²) (docs/theory/eigenmodes.md, V1-V3) as the mesh is refined.
+// ε_cr = π² t² / (3 L²) (docs/theory/eigenmodes.md, E6-E8) as the mesh is refined.
 //
 // Tolerances (eigenmodes.md, section 6):
 //  - linear tetrahedra are too stiff in bending; the excess is O(h²): +31 % at 3 layers, +18 % at

@@ -1,8 +1,8 @@
-// Global equilibrium with rigid dies (docs/theory/contact.md, C15): a pressurised thin sphere
+// Global equilibrium with rigid dies (docs/theory/contact.md, D15): a pressurised thin sphere
 // pressed between two plates (the die forces balance each other) and a pressurised dome on a
 // clamped equator pressed by a plate (die force, clamp reaction and pressure resultant balance),
 // both run through `plisse run`. At every converged step no node may penetrate a die by more than
-// its tolerance (C10).
+// its tolerance (D10).
 #include <gtest/gtest.h>
 
 #include <algorithm>
