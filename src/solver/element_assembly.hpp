@@ -64,6 +64,7 @@ class ElementAssembly {
 
   /// The element node lists (a view of this object's storage).
   ElementNodes nodes() const { return {nodes_, Element::kNodes}; }
+  /// Number of elements (all ranks hold all of them).
   int n_elements() const { return static_cast<int>(geometry_.size()); }
 
   /// Adds the residual of the local elements of `distribution` at the full state `state` to

@@ -48,6 +48,7 @@ struct MiniElement {
     return full;
   }
 
+  /// mini::compute_tet_geometry of the corners (throws plisse::Error for a degenerate one).
   static Geometry geometry(const Mesh& mesh, std::span<const int, kNodes> nodes) {
     return mini::compute_tet_geometry(
         {mesh.nodes[nodes[0]], mesh.nodes[nodes[1]], mesh.nodes[nodes[2]], mesh.nodes[nodes[3]]});
@@ -64,6 +65,7 @@ struct MiniElement {
     return mini::assemble_mini(g, x, material, inverse_bulk_modulus, bubble, r, K);
   }
 
+  /// mini::compute_element_fields: volume averages of σ, J, von Mises and p.
   template <class Material>
   static Fields fields(const Geometry& g, const Vector& x, const Material& material,
                        const Internal& bubble) {
@@ -76,6 +78,7 @@ struct MiniElement {
     return mini::compute_strain_energy(g, x, material, inverse_bulk_modulus, bubble).total();
   }
 
+  /// All fields zero (the entries of elements another rank owns, before the sum over ranks).
   static Fields zero_fields() {
     Fields zero;
     zero.cauchy.setZero();
