@@ -1,7 +1,14 @@
 #pragma once
-/// The discrete mixed u-p problem on one mesh: element geometry, material, constraints, the state
-/// (nodal displacements and pressures, element bubbles) and the assembly of the residual and the
-/// consistent tangent over the free dofs into PETSc objects.
+/// The discrete mixed u-p problem on one mesh: material, constraints, the state (nodal
+/// displacements and pressures, the elements' internal state) and the assembly of the residual
+/// and the consistent tangent over the free dofs into PETSc objects. The facade the solvers and
+/// the application use; the work is done by its parts:
+///   - solver/distribution.hpp: the ranks (node partition, equation numbering by rank, local and
+///     owned elements, gathers and reductions);
+///   - solver/tangent_layout.hpp: the exact sparsity of the tangent, built once, and the
+///     precomputed positions of the element matrices in it;
+///   - solver/element_assembly.hpp: the threaded, chunked element loop and its scatter, for the
+///     element policy of the model (solver/mini_element.hpp: the MINI tetrahedron).
 ///
 /// Distributed runs (more than one rank in PETSC_COMM_WORLD): every rank holds the whole mesh and
 /// the whole state; the equations are distributed (solver/partition.hpp). Rank r owns the equations
@@ -25,22 +32,23 @@
 #include "mesh/mesh.hpp"
 #include "physics/dirichlet.hpp"
 #include "physics/model_term.hpp"
+#include "solver/assembly_status.hpp"
+#include "solver/distribution.hpp"
 #include "solver/dof_map.hpp"
+#include "solver/element_policy.hpp"
+#include "solver/mini_element.hpp"
 
 namespace plisse {
 
-/// What went wrong in an assembly, for the step controller and the diagnostics.
-struct AssemblyStatus {
-  bool ok = true;
-  int worst_element = -1;  ///< element with the smallest J (or the failed bubble solve)
-  double min_J = 1.0;
-};
+template <ElementPolicy Element>
+class ElementAssembly;
+class TangentLayout;
 
 /// Volume-averaged quantities of the current state (history columns).
 struct BodyAverages {
-  Mat3d F = Mat3d::Identity();       ///< (1/V0) ∫ F dV
-  Mat3d cauchy = Mat3d::Zero();      ///< (1/v) ∫ σ dv  [MPa]
-  double volume = 0.0;               ///< deformed volume [mm^3]
+  Mat3d F = Mat3d::Identity();   ///< (1/V0) ∫ F dV
+  Mat3d cauchy = Mat3d::Zero();  ///< (1/v) ∫ σ dv  [MPa]
+  double volume = 0.0;           ///< deformed volume [mm^3]
 };
 
 class MixedModel {
@@ -61,23 +69,23 @@ class MixedModel {
   bool symmetric() const;
 
   const Mesh& mesh() const { return mesh_; }
-  const DofMap& dofs() const { return dofs_; }
-  int n_free() const { return dofs_.n_free(); }
+  const DofMap& dofs() const { return distribution_->dofs(); }
+  int n_free() const { return dofs().n_free(); }
 
   /// The communicator of the algebraic objects: PETSC_COMM_SELF on one rank, else PETSC_COMM_WORLD.
-  MPI_Comm comm() const;
-  int rank() const { return rank_; }
-  int n_ranks() const { return size_; }
+  MPI_Comm comm() const { return distribution_->comm(); }
+  int rank() const { return distribution_->rank(); }
+  int n_ranks() const { return distribution_->n_ranks(); }
   /// The equations this rank owns: [first_owned_equation, end_owned_equation).
-  int first_owned_equation() const { return first_equation_; }
-  int end_owned_equation() const { return end_equation_; }
-  int n_owned() const { return end_equation_ - first_equation_; }
+  int first_owned_equation() const { return distribution_->first_equation(); }
+  int end_owned_equation() const { return distribution_->end_equation(); }
+  int n_owned() const { return distribution_->n_owned(); }
   /// The elements this rank evaluates in an assembly: those touching one of its nodes (all of
   /// them on one rank; the cut elements are evaluated by both sides).
-  const std::vector<int>& local_elements() const { return local_elements_; }
+  const std::vector<int>& local_elements() const { return distribution_->local_elements(); }
   /// The elements whose results this rank reports (in output pieces, sums over the body): those
   /// whose first node it owns. Every element is owned by exactly one rank.
-  const std::vector<int>& owned_elements() const { return owned_elements_; }
+  const std::vector<int>& owned_elements() const { return distribution_->owned_elements(); }
   /// A vector over the free dofs with this rank's owned range (for get_free, set_free, residual).
   Vec create_vector() const;
   /// The full state layout (zeros on constrained dofs) of a free-dof vector with the layout of
@@ -114,8 +122,9 @@ class MixedModel {
   Mat create_matrix() const;
 
   /// Threads of the element loops; 0 (the default) takes OMP_NUM_THREADS when it is set, else 1
-  /// (read at process start: Gmsh resets OpenMP's own count to 1 later). Results do not depend on it: elements are evaluated in parallel, a chunk at a
-  /// time, and their contributions added in element order, bit for bit as a serial loop does.
+  /// (read at process start: Gmsh resets OpenMP's own count to 1 later). Results do not depend
+  /// on it: elements are evaluated in parallel, a chunk at a time, and their contributions added
+  /// in element order, bit for bit as a serial loop does (solver/element_assembly.hpp).
   void set_assembly_threads(int n) { threads_ = n; }
   /// The thread count the element loops use.
   int assembly_threads() const;
@@ -126,8 +135,8 @@ class MixedModel {
 
   /// Everything that defines the last converged state, as numbers (checkpoints).
   struct Snapshot {
-    std::vector<double> state;    ///< full state
-    std::vector<double> bubbles;  ///< kDofBubble per element
+    std::vector<double> state;                     ///< full state
+    std::vector<double> bubbles;                   ///< kDofBubble per element
     std::vector<std::vector<double>> term_states;  ///< ModelTerm::save_state, per term
   };
   Snapshot snapshot() const;
@@ -135,7 +144,7 @@ class MixedModel {
   /// fit this model.
   void restore(const Snapshot& s);
 
-  /// Remember / return to the last converged state (state and bubbles).
+  /// Remember / return to the last converged state (state and the elements' bubbles).
   void save_converged();
   void restore_converged();
   const std::vector<double>& converged_state() const { return converged_state_; }
@@ -155,74 +164,21 @@ class MixedModel {
   double strain_energy() const;
 
  private:
-  void element_dofs(int e, std::array<int, mini::kDof>& full) const;
-  mini::ElemVec gather(const std::array<int, mini::kDof>& full) const;
-
-  /// Element results of one chunk of the element loop.
-  struct ElementResult {
-    mini::ElemVec r;
-    mini::ElemMat K;
-    mini::ElementStatus status;
-  };
-  /// Evaluates every element (residual, and tangent when `with_tangent`) in parallel, a chunk at
-  /// a time, and calls scatter(e, result) in element order on the calling thread.
-  template <class Scatter>
-  AssemblyStatus for_each_element(bool with_tangent, Scatter&& scatter);
-  /// Builds the node graph and the per-element positions of the tangent layout (constructor).
-  void build_tangent_layout(const std::vector<std::pair<int, int>>& couplings);
-  /// True when K is an AIJ matrix with this model's layout (made by create_matrix).
-  bool has_tangent_layout(Mat K) const;
-  /// The nodes coupled to each node (node_start_, node_neighbours_; constructor).
-  void build_node_graph(const std::vector<std::pair<int, int>>& couplings);
-  /// Partitions the nodes among the ranks and numbers the equations by rank (constructor).
-  void distribute();
-  /// Calls use(d, value) for every free dof d with its value in `x` (collective: gathers `x`
-  /// to every rank in a distributed run).
-  template <class Use>
-  void for_each_free_value(Vec x, Use&& use) const;
-  /// The same status on every rank: the first rank's failure, else the smallest J of all.
-  AssemblyStatus reduce(const AssemblyStatus& local) const;
-  /// Sums `values` over the ranks in place (each rank contributes what it owns, zeros elsewhere).
-  void sum_over_ranks(double* values, std::size_t count) const;
+  using Elements = ElementAssembly<MiniElement>;
 
   const Mesh& mesh_;
-  AnyMaterial material_;
-  double inverse_bulk_modulus_;
   std::vector<ConstrainedComponent> constraints_;
   std::vector<std::unique_ptr<ModelTerm>> terms_;
-  DofMap dofs_;
-  std::vector<mini::TetGeometry> geometry_;
+  std::unique_ptr<Elements> elements_;          ///< element data and loops
+  std::unique_ptr<Distribution> distribution_;  ///< ranks, equation numbering
+  std::unique_ptr<TangentLayout> layout_;       ///< sparsity and element positions of K
   std::vector<double> state_, converged_state_;
-  std::vector<mini::BubbleVec> bubble_, converged_bubble_;
   std::vector<double> full_residual_;
   std::vector<double> external_force_;
   Ramp external_ramp_;
   double time_ = 0.0;
 
-  // Tangent layout (built once). Free equations of a node are consecutive, so the rows of node a
-  // hold, for each neighbour node b (sorted), the free equations of b as one run of columns, then
-  // the columns of the terms' global unknowns. Entry (row eq_i of node a, column eq_j of node b)
-  // is at row_start_[eq_i - first] + element_shift_[e][4 a + b] + eq_j for the element's local
-  // a, b, where `first` is the first owned equation.
-  std::vector<int> node_start_, node_neighbours_;  ///< node graph, CSR; each node lists itself
-  std::vector<int> node_free_, node_first_equation_;  ///< free components, first free equation
-  std::vector<std::pair<int, int>> extra_entries_;  ///< owned (row, column) beyond the nodes
-  std::vector<PetscInt> row_start_;                 ///< owned rows + 1 row starts (local rows)
-  std::vector<std::array<int, 16>> element_shift_;  ///< per element and local node pair (a, b)
-
-  // Distribution (one rank: rank 0 of 1, everything local and owned).
-  int rank_ = 0, size_ = 1;
-  std::vector<int> node_rank_;
-  int first_equation_ = 0, end_equation_ = 0;
-  std::vector<int> local_elements_;  ///< elements with at least one owned node, ascending
-  std::vector<int> owned_elements_;  ///< elements whose first node is owned, ascending
-  std::vector<PetscInt> columns_;    ///< column equations of the owned rows (CSR with row_start_)
-  std::vector<PetscScalar> local_values_;  ///< owned rows' values (distributed matrix fill)
-  VecScatter gather_all_ = nullptr;        ///< free vector -> every rank's full copy
-  Vec gathered_ = nullptr;
-
   int threads_ = 0;
-  std::vector<ElementResult> chunk_;   ///< element loop buffer, kept between assemblies
   std::vector<double> term_residual_;  ///< residual part discarded by assemble_tangent
   std::vector<PetscInt> equations_;    ///< term-sink scratch (MatSetValues path)
 };

@@ -1,0 +1,258 @@
+#pragma once
+/// The element part of the assembly, written once for any element policy
+/// (solver/element_policy.hpp): the element data (geometry, internal state) and the threaded,
+/// chunked element loop with its scatter into the residual and the tangent.
+///
+/// Threads, same bits: the local elements are evaluated in parallel a chunk at a time (each
+/// writes only its own result buffer and its own internal state), then each chunk is added on
+/// the calling thread in element order. Every entry therefore receives the same floating-point
+/// additions in the same order as a serial loop: the results do not depend on the thread count.
+/// No heap allocation in the loops: the chunk buffer is kept between assemblies.
+///
+/// Uses OpenMP: include it only in code compiled with OpenMP (solver/CMakeLists.txt).
+#include <omp.h>
+#include <petscmat.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <exception>
+#include <span>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "material/registry.hpp"
+#include "mesh/mesh.hpp"
+#include "solver/assembly_status.hpp"
+#include "solver/distribution.hpp"
+#include "solver/element_nodes.hpp"
+#include "solver/element_policy.hpp"
+#include "solver/petsc_call.hpp"
+#include "solver/tangent_layout.hpp"
+
+namespace plisse {
+
+/// Elements evaluated per chunk of the element loop (MINI results 2.2 kB each: 9 MB of buffer).
+/// Each chunk ends in a barrier, which waits for the slowest thread: on a machine with more
+/// runnable processes than cores a descheduled thread holds it for a whole time slice, so chunks
+/// are large (with 512 a 2-thread residual was 8 times slower than a serial one under such load).
+inline constexpr int kChunkElements = 4096;
+
+template <ElementPolicy Element>
+class ElementAssembly {
+ public:
+  using Fields = typename Element::Fields;
+
+  /// The elements of `mesh` (borrowed only here), their geometry and initial internal state;
+  /// `material` and `inverse_bulk_modulus` (1/κ [1/MPa], 0: exactly incompressible) are those of
+  /// every element.
+  ElementAssembly(const Mesh& mesh, AnyMaterial material, double inverse_bulk_modulus)
+      : material_(std::move(material)), inverse_bulk_modulus_(inverse_bulk_modulus) {
+    const int n = Element::n_elements(mesh);
+    nodes_.reserve(static_cast<std::size_t>(n) * Element::kNodes);
+    geometry_.reserve(n);
+    for (int e = 0; e < n; ++e) {
+      const std::array<int, Element::kNodes> nodes = Element::nodes(mesh, e);
+      nodes_.insert(nodes_.end(), nodes.begin(), nodes.end());
+      geometry_.push_back(Element::geometry(mesh, nodes));
+    }
+    internal_.assign(n, Element::initial_internal());
+    converged_internal_ = internal_;
+  }
+
+  /// The element node lists (a view of this object's storage).
+  ElementNodes nodes() const { return {nodes_, Element::kNodes}; }
+  /// Number of elements (all ranks hold all of them).
+  int n_elements() const { return static_cast<int>(geometry_.size()); }
+
+  /// Adds the residual of the local elements of `distribution` at the full state `state` to
+  /// `residual` (full-state layout) and updates their internal state. Collective (the status is
+  /// reduced over the ranks).
+  AssemblyStatus add_residual(const Distribution& distribution, std::span<const double> state,
+                              std::span<double> residual, int threads) {
+    return evaluate(distribution, state, false, threads, [&](int e, const Result& out) {
+      const std::array<int, Element::kDof> full = dofs(e);
+      for (int i = 0; i < Element::kDof; ++i) residual[full[i]] += out.r[i];
+    });
+  }
+
+  /// Adds the tangent of the local elements into the owned rows `values` of a matrix with
+  /// `layout` (TangentLayout::open_values) and updates their internal state. Collective.
+  AssemblyStatus add_tangent(const Distribution& distribution, std::span<const double> state,
+                             const TangentLayout& layout, PetscScalar* values, int threads) {
+    const DofMap& dof_map = distribution.dofs();
+    return evaluate(distribution, state, true, threads, [&](int e, const Result& out) {
+      const std::array<int, Element::kDof> full = dofs(e);
+      std::array<int, Element::kDof> equations;
+      for (int i = 0; i < Element::kDof; ++i) equations[i] = dof_map.equation(full[i]);
+      layout.add_element(e, equations, Element::kLocalNode, out.K, values);
+    });
+  }
+
+  /// The same into the owned rows of any matrix K through MatSetValues (same values, slower).
+  /// Collective.
+  AssemblyStatus add_tangent(const Distribution& distribution, std::span<const double> state, Mat K,
+                             int threads) {
+    const DofMap& dof_map = distribution.dofs();
+    return evaluate(distribution, state, true, threads, [&](int e, const Result& out) {
+      const std::array<int, Element::kDof> full = dofs(e);
+      std::array<PetscInt, Element::kDof> rows, columns;
+      for (int i = 0; i < Element::kDof; ++i) {
+        columns[i] = dof_map.equation(full[i]);
+        rows[i] = distribution.owns_equation(columns[i]) ? columns[i] : -1;  // owned rows only
+      }
+      // PETSc takes row-major blocks; negative indices (constrained) are skipped.
+      const Eigen::Matrix<double, Element::kDof, Element::kDof, Eigen::RowMajor> k_row = out.K;
+      PLISSE_PETSC(MatSetValues(K, Element::kDof, rows.data(), Element::kDof, columns.data(),
+                                k_row.data(), ADD_VALUES));
+    });
+  }
+
+  /// Output fields of every element at `state` (zeros on elements of other ranks before the
+  /// sum): each rank evaluates its owned elements, in parallel. Collective.
+  std::vector<Fields> fields(const Distribution& distribution, std::span<const double> state,
+                             int threads) const {
+    std::vector<Fields> out(n_elements(), Element::zero_fields());
+    const std::vector<int>& owned = distribution.owned_elements();
+    const int n = static_cast<int>(owned.size());
+    std::exception_ptr error;
+    std::visit(
+        [&](const auto& material) {
+#pragma omp parallel for schedule(dynamic, 64) num_threads(threads)
+          for (int k = 0; k < n; ++k) {
+            const int e = owned[k];
+            try {
+              out[e] =
+                  Element::fields(geometry_[e], gather(dofs(e), state), material, internal_[e]);
+            } catch (...) {
+#pragma omp critical(plisse_element_fields_error)
+              if (!error) error = std::current_exception();
+            }
+          }
+        },
+        material_);
+    if (error) std::rethrow_exception(error);
+    // Every element is owned by one rank: the sum of the ranks' arrays is every element's fields.
+    distribution.sum_over_ranks(reinterpret_cast<double*>(out.data()),
+                                out.size() * (sizeof(Fields) / sizeof(double)));
+    return out;
+  }
+
+  /// Stored energy of the body at `state` [mJ]: the sum over the elements in element order of
+  /// each owner's, summed over the ranks. Collective.
+  double strain_energy(const Distribution& distribution, std::span<const double> state) const {
+    double energy = 0.0;
+    for (int e : distribution.owned_elements())
+      energy += Element::strain_energy(geometry_[e], gather(dofs(e), state), material_,
+                                       inverse_bulk_modulus_, internal_[e]);
+    distribution.sum_over_ranks(&energy, 1);
+    return energy;
+  }
+
+  /// Remember / return to the internal state of the last converged state.
+  void save_converged() { converged_internal_ = internal_; }
+  void restore_converged() { internal_ = converged_internal_; }
+
+  /// Doubles of internal state of all elements (kInternalSize per element).
+  std::size_t n_internal_values() const {
+    return internal_.size() * static_cast<std::size_t>(Element::kInternalSize);
+  }
+  /// The converged internal state of every element, element after element, as each element's
+  /// owner holds it. Collective.
+  std::vector<double> converged_values(const Distribution& distribution) const {
+    constexpr int kSize = Element::kInternalSize;
+    std::vector<double> values;
+    values.reserve(n_internal_values());
+    for (const auto& s : converged_internal_)
+      values.insert(values.end(), s.data(), s.data() + kSize);
+    if (distribution.n_ranks() > 1) {
+      // Each rank's internal state is current only on its own elements: the owners' values,
+      // summed with zeros from everyone else.
+      std::vector<char> mine(converged_internal_.size(), 0);
+      for (int e : distribution.owned_elements()) mine[e] = 1;
+      for (std::size_t e = 0; e < mine.size(); ++e)
+        if (!mine[e]) std::fill_n(values.begin() + e * kSize, kSize, 0.0);
+      distribution.sum_over_ranks(values.data(), values.size());
+    }
+    return values;
+  }
+  /// Makes `values` (n_internal_values(), as from converged_values) the current and the
+  /// converged internal state.
+  void restore(std::span<const double> values) {
+    for (std::size_t e = 0; e < internal_.size(); ++e)
+      std::copy_n(values.data() + e * Element::kInternalSize, Element::kInternalSize,
+                  internal_[e].data());
+    converged_internal_ = internal_;
+  }
+
+ private:
+  /// Element results of one chunk of the element loop.
+  struct Result {
+    typename Element::Vector r;
+    typename Element::Matrix K;
+    typename Element::Status status;
+  };
+
+  std::array<int, Element::kDof> dofs(int e) const {
+    return Element::dofs(std::span<const int, Element::kNodes>(
+        nodes_.data() + static_cast<std::size_t>(e) * Element::kNodes, Element::kNodes));
+  }
+  static typename Element::Vector gather(const std::array<int, Element::kDof>& full,
+                                         std::span<const double> state) {
+    typename Element::Vector x;
+    for (int i = 0; i < Element::kDof; ++i) x[i] = state[full[i]];
+    return x;
+  }
+
+  /// Evaluates every local element (residual, and tangent when `with_tangent`) in parallel, a
+  /// chunk at a time, and calls scatter(e, result) in element order on the calling thread.
+  template <class Scatter>
+  AssemblyStatus evaluate(const Distribution& distribution, std::span<const double> state,
+                          bool with_tangent, int threads, Scatter&& scatter) {
+    AssemblyStatus status;
+    const std::vector<int>& local = distribution.local_elements();
+    const int n = static_cast<int>(local.size());
+    chunk_.resize(std::min(n, kChunkElements));
+    std::visit(
+        [&](const auto& material) {
+          for (int first = 0; first < n; first += kChunkElements) {
+            const int last = std::min(n, first + kChunkElements);
+            std::exception_ptr error;
+        // Elements differ in cost (local iterations) and the machine may be shared: small
+        // dynamic batches.
+#pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
+            for (int k = first; k < last; ++k) {
+              try {
+                const int e = local[k];
+                Result& out = chunk_[k - first];
+                out.status = Element::evaluate(geometry_[e], gather(dofs(e), state), material,
+                                               inverse_bulk_modulus_, internal_[e], out.r,
+                                               with_tangent ? &out.K : nullptr);
+              } catch (...) {
+#pragma omp critical(plisse_element_loop_error)
+                if (!error) error = std::current_exception();
+              }
+            }
+            if (error) std::rethrow_exception(error);
+            for (int k = first; k < last; ++k) {
+              const Result& out = chunk_[k - first];
+              track_element(status, out.status.ok, out.status.min_J, local[k]);
+              scatter(local[k], out);
+            }
+          }
+        },
+        material_);
+    return distribution.reduce(status);
+  }
+
+  AnyMaterial material_;
+  double inverse_bulk_modulus_;
+  std::vector<int> nodes_;  ///< Element::kNodes per element
+  std::vector<typename Element::Geometry> geometry_;
+  std::vector<typename Element::Internal> internal_, converged_internal_;
+  std::vector<Result> chunk_;  ///< element loop buffer, kept between assemblies
+};
+
+}  // namespace plisse

@@ -1,0 +1,92 @@
+#pragma once
+/// The MINI (P1+/P1) tetrahedron as an element policy of the assembly (solver/element_policy.hpp
+/// states the contract): 4 corner nodes, 16 unknowns [u0x, u0y, u0z, ..., u3z, p0, ..., p3]
+/// (element/mini_layout.hpp), and the bubble (3 values) as the internal state, condensed by the
+/// kernel (element/mini.hpp) and kept per element as the warm start of its next evaluation.
+#include <array>
+#include <span>
+
+#include "element/mini.hpp"
+#include "element/strain_energy.hpp"
+#include "material/registry.hpp"
+#include "mesh/mesh.hpp"
+#include "solver/dof_map.hpp"
+#include "solver/element_policy.hpp"
+
+namespace plisse {
+
+struct MiniElement {
+  static constexpr int kNodes = mini::kNodes;
+  static constexpr int kDof = mini::kDof;
+  static constexpr int kInternalSize = mini::kDofBubble;
+  using Vector = mini::ElemVec;
+  using Matrix = mini::ElemMat;
+  using Internal = mini::BubbleVec;
+  using Geometry = mini::TetGeometry;
+  using Status = mini::ElementStatus;
+  using Fields = mini::ElementFields;
+
+  /// Local node (0..3) of unknown i: displacement components node by node, then the pressures.
+  static constexpr std::array<int, kDof> kLocalNode = [] {
+    std::array<int, kDof> node{};
+    for (int i = 0; i < kDof; ++i) node[i] = i < mini::kDofU ? i / 3 : i - mini::kDofU;
+    return node;
+  }();
+
+  /// The tetrahedra of the mesh (its corner nodes; edge nodes of a second-order mesh are unused).
+  static int n_elements(const Mesh& mesh) { return mesh.n_tets(); }
+  static std::array<int, kNodes> nodes(const Mesh& mesh, int e) { return mesh.tets[e]; }
+
+  /// Full-state index of every element unknown: node a's (ux, uy, uz) at 3a..3a+2, its pressure
+  /// at kDofU + a.
+  static std::array<int, kDof> dofs(std::span<const int, kNodes> nodes) {
+    std::array<int, kDof> full;
+    for (int a = 0; a < kNodes; ++a) {
+      for (int k = 0; k < 3; ++k) full[3 * a + k] = DofMap::dof(nodes[a], k);
+      full[mini::kDofU + a] = DofMap::dof(nodes[a], 3);
+    }
+    return full;
+  }
+
+  /// mini::compute_tet_geometry of the corners (throws plisse::Error for a degenerate one).
+  static Geometry geometry(const Mesh& mesh, std::span<const int, kNodes> nodes) {
+    return mini::compute_tet_geometry(
+        {mesh.nodes[nodes[0]], mesh.nodes[nodes[1]], mesh.nodes[nodes[2]], mesh.nodes[nodes[3]]});
+  }
+
+  /// No bubble displacement.
+  static Internal initial_internal() { return Internal::Zero(); }
+
+  /// mini::assemble_mini: the condensed residual and tangent; `bubble` is its warm start and
+  /// receives the converged bubble.
+  template <class Material>
+  static Status evaluate(const Geometry& g, const Vector& x, const Material& material,
+                         double inverse_bulk_modulus, Internal& bubble, Vector& r, Matrix* K) {
+    return mini::assemble_mini(g, x, material, inverse_bulk_modulus, bubble, r, K);
+  }
+
+  /// mini::compute_element_fields: volume averages of σ, J, von Mises and p.
+  template <class Material>
+  static Fields fields(const Geometry& g, const Vector& x, const Material& material,
+                       const Internal& bubble) {
+    return mini::compute_element_fields(g, x, material, bubble);
+  }
+
+  /// mini::compute_strain_energy, isochoric plus volumetric part [mJ].
+  static double strain_energy(const Geometry& g, const Vector& x, const AnyMaterial& material,
+                              double inverse_bulk_modulus, const Internal& bubble) {
+    return mini::compute_strain_energy(g, x, material, inverse_bulk_modulus, bubble).total();
+  }
+
+  /// All fields zero (the entries of elements another rank owns, before the sum over ranks).
+  static Fields zero_fields() {
+    Fields zero;
+    zero.cauchy.setZero();
+    zero.J = zero.von_mises = zero.pressure = 0.0;
+    return zero;
+  }
+};
+
+static_assert(ElementPolicy<MiniElement>);
+
+}  // namespace plisse
