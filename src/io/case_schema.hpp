@@ -8,7 +8,7 @@
 /// A section is a variant section when some rows are variant keys (`type`, `shape`, ...): those
 /// are read first, their values name the variant, and a row with `applies_to` is allowed only when
 /// one of its words is among them. Defaults are the struct's own initial values, read from a
-/// value-initialised struct; a row may show another default in words ("[0, end_time]").
+/// value-initialised struct; a row made with add() states its default in words ("[0, end_time]").
 ///
 /// Ownership: rows hold std::functions that capture member pointers and, for nested sections,
 /// copies of the nested schema; a schema is built once and read concurrently without changes.
@@ -104,11 +104,6 @@ class Schema {
     /// Only the listed variants allow the key.
     Row& applies(std::vector<std::string> words) {
       doc.applies_to = std::move(words);
-      return *this;
-    }
-    /// The default as the docs show it, when the struct's value does not say it.
-    Row& shown_default(std::string text) {
-      doc.default_value = std::move(text);
       return *this;
     }
     /// What to do when the key is absent (a default that depends on other sections).
