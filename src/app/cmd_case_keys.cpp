@@ -28,9 +28,11 @@ void print_or_update(const CaseKeysOptions& o) {
     return;
   }
   const std::vector<std::string> sections = o.sections.empty() ? case_key_sections() : o.sections;
+  std::string text;
   for (std::size_t i = 0; i < sections.size(); ++i)
-    std::cout << (i ? "\n" : "") << "<!-- generated: " << sections[i] << " -->\n"
-              << case_keys_markdown(sections[i]) << "<!-- end generated -->\n";
+    text += (i ? "\n" : "") + ("<!-- generated: " + sections[i] + " -->\n") +
+            case_keys_markdown(sections[i]) + "<!-- end generated -->\n";
+  std::cout << text;
 }
 
 }  // namespace
@@ -40,13 +42,13 @@ void add_case_keys_command(CLI::App& app) {
       "case-keys",
       "Print the key tables of the case-file sections (markdown, as in docs/case-file.md)");
   auto o = std::make_shared<CaseKeysOptions>();
-  cmd->add_option("sections", o->sections,
-                  "Sections to print (default: all): title, mesh, material, boundary, loads, "
-                  "cavities, dies, probes, solver, output");
+  auto* sections = cmd->add_option("sections", o->sections, "Sections to print (default: all)")
+                       ->check(CLI::IsMember(case_key_sections()));
   cmd->add_option("--update", o->update,
                   "Rewrite the generated blocks ('<!-- generated: SECTION -->' ... '<!-- end "
                   "generated -->') of this markdown file, e.g. docs/case-file.md, instead of "
-                  "printing");
+                  "printing")
+      ->excludes(sections);
   cmd->callback([o] { print_or_update(*o); });
 }
 
