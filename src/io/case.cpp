@@ -5,6 +5,7 @@
 // yaml_text.cpp, `--set` in case_overrides.cpp, the checks that need the mesh in case_mesh.cpp.
 #include "io/case.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -206,6 +207,36 @@ Schema<MeshSection> mesh_schema() {
         nullptr);
   s.rule("exactly one of `file` and `generate`", nullptr);
   return s;
+}
+
+/// The table of the generators' options (docs/case-file.md, block "mesh-options"), from the mesh
+/// registry: kind, option, type, unit, range, default (MeshGenerationSpec's), meaning.
+std::string mesh_options_markdown() {
+  const MeshGenerationSpec defaults;
+  std::string md =
+      "| kind | option | type | unit | range | default | meaning |\n"
+      "|---|---|---|---|---|---|---|\n";
+  for (const MeshKind& kind : mesh_kinds()) {
+    bool first = true;
+    for (const MeshOption& o : kind.options) {
+      std::string type = "number", fallback;
+      if (o.real) fallback = case_detail::doc_number(defaults.*o.real);
+      if (o.integer) type = "integer", fallback = std::to_string(defaults.*o.integer);
+      if (o.symmetry) {
+        type = case_detail::doc_choice({"full", "half", "quarter", "octant"});
+        fallback = "`" + to_string(defaults.*o.symmetry) + "`";
+      }
+      const std::string range = o.symmetry ? "" : Schema<MeshSection>::range_text(o.range);
+      std::string help;  // a '|' in the help would end the cell
+      for (const char c : o.help) help += c == '|' ? std::string("\\|") : std::string(1, c);
+      md += "|" + (first ? " `" + kind.name + "` |" : std::string(" |")) + " `" + o.key + "` | " +
+            type + " | " + (o.unit == "-" ? "–" : o.unit) + " |" +
+            (range.empty() ? std::string(" |") : " " + range + " |") + " " + fallback + " | " +
+            help + " |\n";
+      first = false;
+    }
+  }
+  return md;
 }
 
 MeshSection read_mesh(const Field& field, ReadContext& context) {
@@ -798,9 +829,14 @@ Case parse_case_file(const std::string& path, const std::vector<std::string>& ov
   return parse_case_string(case_detail::read_case_text(path), path, overrides);
 }
 
-std::vector<std::string> case_key_sections() { return the_case_schema().keys(); }
+std::vector<std::string> case_key_sections() {
+  std::vector<std::string> out = the_case_schema().keys();
+  out.insert(std::find(out.begin(), out.end(), "mesh") + 1, "mesh-options");
+  return out;
+}
 
 std::string case_keys_markdown(const std::string& section) {
+  if (section == "mesh-options") return mesh_options_markdown();
   for (const auto& row : the_case_schema().rows()) {
     if (row.doc.key != section) continue;
     if (row.nested) return case_detail::render_markdown(*row.nested);
