@@ -1,4 +1,5 @@
-/// plisse command line: `plisse run|check|mesh|materials|wrinkles ...` (see `plisse --help`).
+/// plisse command line: `plisse run|check|mesh|materials|case-keys|wrinkles ...`
+/// (see `plisse --help`).
 ///
 /// Exit status (docs/architecture.md, "Interface contract"): 0 success; 1 solver failure (last
 /// converged state written) or an internal error; 2 bad input (message names file, line, column,
@@ -43,6 +44,7 @@ int main(int argc, char** argv) {
   plisse::app::add_check_command(app);
   plisse::app::add_mesh_command(app);
   plisse::app::add_materials_command(app);
+  plisse::app::add_case_keys_command(app);
   plisse::app::add_wrinkles_command(app);
   try {
     app.parse(argc, argv);

@@ -1,109 +1,61 @@
-// The case-file schema: which keys each section has, their types, ranges and defaults, and the
-// rules between them. Reading and locating values is in case_reader.cpp, `--set` in
-// case_overrides.cpp, the checks that need the mesh in case_mesh.cpp. The user's reference for
-// every key here is docs/case-file.md: keep the two in step.
+// The case-file schema: one table per section (key, type, unit, range, default, meaning, the
+// variants a key applies to, the struct member it fills) and the rules between keys, next to the
+// section readers that use them. The tables also generate the key tables of docs/case-file.md
+// (case_keys.hpp). Reading and locating values is in case_reader.cpp, the raw YAML text in
+// yaml_text.cpp, `--set` in case_overrides.cpp, the checks that need the mesh in case_mesh.cpp.
 #include "io/case.hpp"
 
-#include <yaml-cpp/eventhandler.h>
-
 #include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <limits>
-#include <optional>
 #include <sstream>
-#include <string_view>
 
+#include "io/case_keys.hpp"
 #include "io/case_overrides.hpp"
 #include "io/case_reader.hpp"
+#include "io/case_schema.hpp"
+#include "io/yaml_text.hpp"
 #include "material/registry.hpp"
 
 namespace plisse {
 namespace {
 
+using case_detail::Choices;
 using case_detail::Field;
 using case_detail::FieldMap;
 using case_detail::format_number;
 using case_detail::join;
+using case_detail::KeyDoc;
+using case_detail::ReadContext;
+using case_detail::Schema;
 
 const Range kFraction{0.0, 1.0, true, false};  // (0, 1]
 const Range kOpenUnit{0.0, 1.0, true, true};   // (0, 1)
 // A ring at +-90 degrees would be a single point: latitudes are open at the poles.
 const Range kLatitude{-90.0, 90.0, true, true};
 
-const std::vector<std::pair<std::string, BoundaryType>> kBoundaryTypes{
-    {"fixed", BoundaryType::fixed},
-    {"symmetry", BoundaryType::symmetry},
-    {"displacement", BoundaryType::displacement}};
-const std::vector<std::pair<std::string, LoadType>> kLoadTypes{{"pressure", LoadType::pressure},
-                                                               {"gravity", LoadType::gravity}};
-const std::vector<std::pair<std::string, CavityControl>> kCavityControls{
-    {"volume", CavityControl::volume}, {"gas", CavityControl::gas}};
-const std::vector<std::pair<std::string, DieShape>> kDieShapes{
+const Choices<BoundaryType> kBoundaryTypes{{"fixed", BoundaryType::fixed},
+                                           {"symmetry", BoundaryType::symmetry},
+                                           {"displacement", BoundaryType::displacement}};
+const Choices<LoadType> kLoadTypes{{"pressure", LoadType::pressure},
+                                   {"gravity", LoadType::gravity}};
+const Choices<CavityControl> kCavityControls{{"volume", CavityControl::volume},
+                                             {"gas", CavityControl::gas}};
+const Choices<DieShape> kDieShapes{
     {"plane", DieShape::plane}, {"sphere", DieShape::sphere}, {"cylinder", DieShape::cylinder}};
-const std::vector<std::pair<std::string, ContactKind>> kContactKinds{
-    {"frictionless", ContactKind::frictionless}, {"sticking", ContactKind::sticking}};
-const std::vector<std::pair<std::string, Scheme>> kSchemes{
-    {"total-lagrangian", Scheme::total_lagrangian}, {"incremental", Scheme::incremental}};
-const std::vector<std::pair<std::string, LineSearch>> kLineSearches{{"bt", LineSearch::bt},
-                                                                    {"basic", LineSearch::basic},
-                                                                    {"l2", LineSearch::l2},
-                                                                    {"cp", LineSearch::cp}};
-const std::vector<std::pair<std::string, LinearSolverType>> kLinearSolverTypes{
-    {"direct", LinearSolverType::direct}, {"iterative", LinearSolverType::iterative}};
-const std::vector<std::pair<std::string, bool>> kIncompressibility{{"exact", true},
-                                                                   {"nearly", false}};
-const std::vector<std::pair<std::string, std::string>> kImperfectionKinds{{"random", "random"},
-                                                                          {"mode", "mode"}};
-const std::vector<std::pair<std::string, char>> kAxes{{"x", 'x'}, {"y", 'y'}, {"z", 'z'}};
-
-/// Largest case file read [bytes]; real ones are a few kB.
-constexpr std::size_t kMaxCaseFileBytes = std::size_t{16} << 20;
-
-const std::vector<std::string> kSections{"title",    "mesh", "material", "boundary", "loads",
-                                         "cavities", "dies", "probes",   "solver",   "output"};
-
-/// State shared while reading one case: ramp default and the names already used.
-struct Reader {
-  double end_time = 1.0;
-  /// name -> (key path of the entry, its place): boundary conditions, loads, cavities, dies and
-  /// probes share one namespace because their history columns ("force_x:<name>",
-  /// "pressure:<name>", ...) must not collide.
-  std::map<std::string, std::pair<std::string, InputPlace>> names;
-
-  std::string unique_name(const FieldMap& entry) {
-    return unique_name(entry.require("name"), entry);
-  }
-
-  std::string unique_name(const Field& f, const FieldMap& entry) {
-    const std::string name = f.name();
-    const auto [it, inserted] = names.try_emplace(name, entry.self().path(), f.place());
-    if (!inserted) {
-      const InputPlace& first = it->second.second;
-      f.fail("name '" + name + "' is already used by " + it->second.first +
-             (first.line > 0 ? " (line " + std::to_string(first.line) + ")" : std::string()) +
-             "; names of boundary conditions, loads, cavities, dies and probes must be unique");
-    }
-    return name;
-  }
-
-  /// `ramp: [start, end]` [s]; default [0, solver.end_time].
-  Ramp ramp(const FieldMap& entry) const {
-    const auto f = entry.find("ramp");
-    if (!f) return {0.0, end_time};
-    if (!f->node().IsSequence() || f->node().size() != 2)
-      f->fail("expected a list of 2 numbers [start, end] in s, got " + f->describe());
-    const std::vector<double> t = f->reals();
-    if (t[0] < 0.0) f->fail("ramp start must be >= 0 (got " + format_number(t[0]) + ")");
-    if (!(t[1] > t[0]))
-      f->fail("ramp end must be > start (got [" + format_number(t[0]) + ", " + format_number(t[1]) +
-              "])");
-    return {t[0], t[1]};
-  }
-};
+const Choices<ContactKind> kContactKinds{{"frictionless", ContactKind::frictionless},
+                                         {"sticking", ContactKind::sticking}};
+const Choices<Scheme> kSchemes{{"total-lagrangian", Scheme::total_lagrangian},
+                               {"incremental", Scheme::incremental}};
+const Choices<LineSearch> kLineSearches{{"bt", LineSearch::bt},
+                                        {"basic", LineSearch::basic},
+                                        {"l2", LineSearch::l2},
+                                        {"cp", LineSearch::cp}};
+const Choices<LinearSolverType> kLinearSolverTypes{{"direct", LinearSolverType::direct},
+                                                   {"iterative", LinearSolverType::iterative}};
+const Choices<bool> kIncompressibility{{"exact", true}, {"nearly", false}};
+const Choices<std::string> kImperfectionKinds{{"random", "random"}, {"mode", "mode"}};
+const Choices<char> kAxes{{"x", 'x'}, {"y", 'y'}, {"z", 'z'}};
 
 SurfaceRef surface_ref(const Field& f) {
   const std::string name = f.text();
@@ -111,9 +63,96 @@ SurfaceRef surface_ref(const Field& f) {
   return {name, f.place()};
 }
 
-std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
+/// A direction, normalised; the zero vector is an error.
+Vec3d unit_vector(const Field& f) {
+  const Vec3d v = f.vec3();
+  const double norm = v.norm();
+  if (!(norm > 0.0) || !std::isfinite(norm))
+    f.fail("must be a non-zero direction (its length is 0)");
+  return v / norm;
+}
+
+/// `ramp: [start, end]` [s] with 0 <= start < end.
+Ramp read_ramp(const Field& f) {
+  if (!f.node().IsSequence() || f.node().size() != 2)
+    f.fail("expected a list of 2 numbers [start, end] in s, got " + f.describe());
+  const std::vector<double> t = f.reals();
+  if (t[0] < 0.0) f.fail("ramp start must be >= 0 (got " + format_number(t[0]) + ")");
+  if (!(t[1] > t[0]))
+    f.fail("ramp end must be > start (got [" + format_number(t[0]) + ", " + format_number(t[1]) +
+           "])");
+  return {t[0], t[1]};
+}
+
+/// A path relative to the case directory (absolute paths unchanged).
+std::string resolve(const std::string& text, const std::string& directory) {
+  std::filesystem::path p(text);
+  if (p.is_relative() && !directory.empty()) p = std::filesystem::path(directory) / p;
+  return p.string();
+}
+
+/// A surface tag of the mesh, with where it is named.
+template <class S>
+typename Schema<S>::Row& surface_key(Schema<S>& schema, std::string key,
+                                     std::type_identity_t<SurfaceRef S::*> member,
+                                     std::string help) {
+  return schema.add({std::move(key), "surface tag", "–", "", "", {}, std::move(help)},
+                    [member](const Field& f, S& s, ReadContext&) { s.*member = surface_ref(f); });
+}
+
+/// An optional surface tag of the mesh.
+template <class S>
+typename Schema<S>::Row& optional_surface_key(
+    Schema<S>& schema, std::string key, std::type_identity_t<std::optional<SurfaceRef> S::*> member,
+    std::string fallback, std::string help) {
+  return schema.add(
+      {std::move(key), "surface tag", "–", "", std::move(fallback), {}, std::move(help)},
+      [member](const Field& f, S& s, ReadContext&) { s.*member = surface_ref(f); });
+}
+
+/// The entry's name, unique across conditions, loads, cavities, dies and probes.
+template <class S>
+typename Schema<S>::Row& name_key(Schema<S>& schema, std::type_identity_t<std::string S::*> member,
+                                  std::string help) {
+  return schema.add(
+      {"name", "name", "–", "", "none", {}, std::move(help)},
+      [member](const Field& f, S& s, ReadContext& context) { s.*member = context.unique_name(f); });
+}
+
+/// A time ramp; default [0, solver.end_time].
+template <class S>
+typename Schema<S>::Row& ramp_key(Schema<S>& schema, std::type_identity_t<Ramp S::*> member,
+                                  std::string help) {
+  return schema
+      .add({"ramp", "[start, end]", "s", "0 <= start < end", "[0, end_time]", {}, std::move(help)},
+           [member](const Field& f, S& s, ReadContext&) { s.*member = read_ramp(f); })
+      .when_absent([member](const FieldMap&, S& s, ReadContext& context) {
+        s.*member = {0.0, context.end_time};
+      });
+}
+
+/// A list of entries, each a map read by `entry`.
+template <class S, class E>
+typename Schema<S>::Row& list_key(Schema<S>& schema, std::string key,
+                                  std::type_identity_t<std::vector<E> S::*> member,
+                                  const Schema<E>& entry, std::string help) {
+  auto& row = schema.add({std::move(key), "list", "", "", "empty", {}, std::move(help)},
+                         [member, entry](const Field& f, S& s, ReadContext& context) {
+                           for (const Field& item : f.items()) {
+                             E e;
+                             entry.read(item, e, context);
+                             (s.*member).push_back(std::move(e));
+                           }
+                         });
+  row.nested = entry.doc();
+  return row;
+}
+
+/// "`a`, `b`, `c`".
+std::string code_list(const std::vector<std::string>& words) {
+  std::string out;
+  for (const std::string& w : words) out += (out.empty() ? "`" : ", `") + w + "`";
+  return out;
 }
 
 std::vector<std::string> kind_names() {
@@ -122,7 +161,86 @@ std::vector<std::string> kind_names() {
   return out;
 }
 
-MeshSection read_mesh(const Field& field, const std::string& directory) {
+std::vector<std::string> model_names() {
+  std::vector<std::string> out;
+  for (const MaterialModelInfo& info : material_models()) out.push_back(info.name);
+  return out;
+}
+
+/// `mesh:`. Its variant is which of `file` and `generate` is given; the generators' options come
+/// from the mesh registry (mesh_kinds) and are read in read_mesh.
+Schema<MeshSection> mesh_schema() {
+  Schema<MeshSection> s;
+  s.place(&MeshSection::place, true);
+  s.add({"file",
+         "path",
+         "–",
+         "",
+         "",
+         {"file"},
+         "a Gmsh `.msh` file (v2 or v4, ASCII or binary); a relative path is read from the "
+         "directory of the case file. Physical groups of dimension 2 become surface tags"},
+        [](const Field& f, MeshSection& m, ReadContext& context) {
+          const std::string text = f.text();
+          if (text.empty()) f.fail("the mesh file name must not be empty");
+          m.file = resolve(text, context.directory);
+          m.file_place = f.place();
+        });
+  s.add({"thickness",
+         "number",
+         "mm",
+         Range::positive().describe(),
+         "none",
+         {"file"},
+         "the wall thickness of a shell read from a file: imperfections, branch switching and "
+         "the wrinkle threshold are relative to it"},
+        [](const Field& f, MeshSection& m, ReadContext&) {
+          m.file_thickness = f.real(Range::positive());
+        });
+  s.add({"generate",
+         case_detail::doc_choice(kind_names()),
+         "–",
+         "",
+         "",
+         {"generate"},
+         "generate the mesh; the kind's options (below) may follow"},
+        nullptr);
+  s.rule("exactly one of `file` and `generate`", nullptr);
+  return s;
+}
+
+/// The table of the generators' options (docs/case-file.md, block "mesh-options"), from the mesh
+/// registry: kind, option, type, unit, range, default (MeshGenerationSpec's), meaning.
+std::string mesh_options_markdown() {
+  const MeshGenerationSpec defaults;
+  std::string md =
+      "| kind | option | type | unit | range | default | meaning |\n"
+      "|---|---|---|---|---|---|---|\n";
+  for (const MeshKind& kind : mesh_kinds()) {
+    bool first = true;
+    for (const MeshOption& o : kind.options) {
+      std::string type = "number", fallback;
+      if (o.real) fallback = case_detail::doc_number(defaults.*o.real);
+      if (o.integer) type = "integer", fallback = std::to_string(defaults.*o.integer);
+      if (o.symmetry) {
+        type = case_detail::doc_choice({"full", "half", "quarter", "octant"});
+        fallback = "`" + to_string(defaults.*o.symmetry) + "`";
+      }
+      const std::string range = o.symmetry ? "" : Schema<MeshSection>::range_text(o.range);
+      std::string help;  // a '|' in the help would end the cell
+      for (const char c : o.help) help += c == '|' ? std::string("\\|") : std::string(1, c);
+      md += "|" + (first ? " `" + kind.name + "` |" : std::string(" |")) + " `" + o.key + "` | " +
+            type + " | " + (o.unit == "-" ? "–" : o.unit) + " |" +
+            (range.empty() ? std::string(" |") : " " + range + " |") + " " + fallback + " | " +
+            help + " |\n";
+      first = false;
+    }
+  }
+  return md;
+}
+
+MeshSection read_mesh(const Field& field, ReadContext& context) {
+  static const Schema<MeshSection> schema = mesh_schema();
   const FieldMap m = field.map();
   MeshSection s;
   s.place = field.key_place();
@@ -138,14 +256,8 @@ MeshSection read_mesh(const Field& field, const std::string& directory) {
     for (const MeshOption& o : k.options) all_options.push_back(o.key);
 
   if (file) {
-    m.check_keys({"file", "thickness"}, "a mesh read from a file", all_options);
-    if (const auto t = m.find("thickness")) s.file_thickness = t->real(Range::positive());
-    const std::string text = file->text();
-    if (text.empty()) file->fail("the mesh file name must not be empty");
-    std::filesystem::path p(text);
-    if (p.is_relative() && !directory.empty()) p = std::filesystem::path(directory) / p;
-    s.file = p.string();
-    s.file_place = file->place();
+    schema.check_keys(m, {"file"}, "a mesh read from a file", {}, all_options);
+    schema.read_rows(m, s, context, {"file"});
     return s;
   }
 
@@ -157,9 +269,10 @@ MeshSection read_mesh(const Field& field, const std::string& directory) {
       rule += " (did you mean '" + *guess + "'?)";
     generate->fail(rule);
   }
-  std::vector<std::string> allowed{"generate"};
-  for (const MeshOption& o : kind->options) allowed.push_back(o.key);
-  m.check_keys(allowed, "generate: " + kind->name, with(all_options, {"file"}));
+  std::vector<std::string> options;
+  for (const MeshOption& o : kind->options) options.push_back(o.key);
+  all_options.push_back("file");
+  schema.check_keys(m, {"generate"}, "generate: " + kind->name, options, all_options);
 
   MeshGenerationSpec spec;
   spec.kind = kind->name;
@@ -183,43 +296,76 @@ MeshSection read_mesh(const Field& field, const std::string& directory) {
   return s;
 }
 
-MaterialSection read_material(const Field& field) {
+/// `material:`. Its variant is the model; the model's parameters come from the material registry
+/// (material/registry.hpp), which also checks them, and are read in read_material.
+Schema<MaterialSection> material_schema() {
+  Schema<MaterialSection> s;
+  s.place(&MaterialSection::place, true);
+  s.add({"model",
+         "name",
+         "–",
+         "a registered model",
+         "",
+         {},
+         code_list(model_names()) + " ([materials.md](materials.md))"},
+        [](const Field& f, MaterialSection& m, ReadContext&) {
+          m.model = f.text();
+          if (find_material_model(m.model)) return;
+          std::string rule =
+              "unknown material model '" + m.model + "'; known models: " + join(model_names());
+          if (const auto guess = case_detail::closest_match(m.model, model_names()))
+            rule += " (did you mean '" + *guess + "'?)";
+          f.fail(rule);
+        })
+      .required()
+      .variant = true;
+  s.choice<bool>("incompressibility", &MaterialSection::exact_incompressibility, kIncompressibility,
+                 "exact: mixed u–p with κ = ∞ (the paper's case); nearly: finite bulk modulus");
+  s.add({"bulk_modulus",
+         "number",
+         "MPa",
+         Range::positive().describe(),
+         "required with `nearly`",
+         {},
+         "κ"},
+        [](const Field& f, MaterialSection& m, ReadContext&) {
+          if (m.exact_incompressibility)
+            f.fail_at_key(
+                "bulk_modulus applies only with 'incompressibility: nearly' (exact "
+                "incompressibility has an infinite bulk modulus)");
+          m.bulk_modulus = f.real(Range::positive());
+        })
+      .when_absent([](const FieldMap& map, MaterialSection& m, ReadContext&) {
+        if (m.exact_incompressibility) return;
+        InputPlace p = map.find("incompressibility")->place();
+        p.key = case_detail::child_path(map.self().path(), "bulk_modulus");
+        throw InputError(p, "required with 'incompressibility: nearly' (bulk modulus in MPa, > 0)");
+      });
+  s.real("density", &MaterialSection::density, Range::non_negative(), "tonne/mm³",
+         "needed (> 0) by gravity loads");
+  s.rule("`bulk_modulus` is required with `incompressibility: nearly` and refused with `exact`",
+         nullptr);
+  s.rule(
+      "the model's parameters (e.g. `c1` for `neo-hookean`) are keys of this section too; their "
+      "units, ranges, defaults and the rules between them are in [materials.md](materials.md)",
+      nullptr);
+  return s;
+}
+
+MaterialSection read_material(const Field& field, ReadContext& context) {
+  static const Schema<MaterialSection> schema = material_schema();
   const FieldMap m = field.map();
   MaterialSection s;
   s.place = field.key_place();
-  const Field model = m.require("model");
-  s.model = model.text();
-  std::vector<std::string> models;
-  for (const MaterialModelInfo& info : material_models()) models.push_back(info.name);
+  schema.read_key("model", m, s, context);
   const MaterialModelInfo* info = find_material_model(s.model);
-  if (!info) {
-    std::string rule = "unknown material model '" + s.model + "'; known models: " + join(models);
-    if (const auto guess = case_detail::closest_match(s.model, models))
-      rule += " (did you mean '" + *guess + "'?)";
-    model.fail(rule);
-  }
-  std::vector<std::string> allowed{"model", "incompressibility", "bulk_modulus", "density"};
-  for (const ParamSpec& p : info->params) allowed.push_back(p.name);
+  std::vector<std::string> params;
+  for (const ParamSpec& p : info->params) params.push_back(p.name);
   std::vector<std::string> other_params;
   for (const MaterialModelInfo& other : material_models())
     for (const ParamSpec& p : other.params) other_params.push_back(p.name);
-  m.check_keys(allowed, "model '" + info->name + "'", other_params);
-
-  s.exact_incompressibility = m.choice("incompressibility", true, kIncompressibility);
-  const auto bulk = m.find("bulk_modulus");
-  if (s.exact_incompressibility && bulk)
-    bulk->fail_at_key(
-        "bulk_modulus applies only with 'incompressibility: nearly' (exact "
-        "incompressibility has an infinite bulk modulus)");
-  if (!s.exact_incompressibility) {
-    if (!bulk) {
-      InputPlace p = m.find("incompressibility")->place();
-      p.key = case_detail::child_path(field.path(), "bulk_modulus");
-      throw InputError(p, "required with 'incompressibility: nearly' (bulk modulus in MPa, > 0)");
-    }
-    s.bulk_modulus = bulk->real(Range::positive());
-  }
-  s.density = m.real("density", 0.0, Range::non_negative());
+  schema.check_keys(m, {s.model}, "model '" + info->name + "'", params, other_params);
+  schema.read_rows(m, s, context, {s.model});
 
   for (const ParamSpec& p : info->params) {
     const auto f = m.find(p.name);
@@ -234,7 +380,7 @@ MaterialSection read_material(const Field& field) {
     if (const auto it = s.param_places.find(v.key); it != s.param_places.end())
       p = it->second;
     else if (v.key == "model")
-      p = model.place();
+      p = m.find("model")->place();
     p.key = case_detail::child_path(field.path(), v.key);
     std::string rule = v.rule;
     if (violations.size() > 1)
@@ -247,469 +393,414 @@ MaterialSection read_material(const Field& field) {
   return s;
 }
 
-BoundaryCondition read_boundary(const Field& field, Reader& reader) {
-  const FieldMap m = field.map();
-  BoundaryCondition bc;
-  bc.place = field.place();
-  const Field type = m.require("type");
-  bc.type = type.choice(kBoundaryTypes);
-  const std::string variant = "type '" + type.text() + "'";
-  if (bc.type == BoundaryType::displacement)
-    m.check_keys({"type", "name", "surface", "value", "ramp"}, variant);
-  else
-    m.check_keys({"type", "name", "surface"}, variant, {"value", "ramp"});
-  if (const auto f = m.find("name")) bc.name = reader.unique_name(*f, m);
-  bc.surface = surface_ref(m.require("surface"));
-  if (bc.type != BoundaryType::displacement) return bc;
-
-  const Field value = m.require("value");
-  if (!value.node().IsSequence() || value.node().size() != 3)
-    value.fail(
-        "expected a list of 3 displacements [ux, uy, uz] in mm, ~ for a free component, got " +
-        value.describe());
-  const std::vector<Field> items = value.items();
-  bool any = false;
-  for (int k = 0; k < 3; ++k) {
-    if (items[k].is_null()) continue;
-    bc.value[k] = items[k].real();
-    any = true;
-  }
-  if (!any) value.fail("at least one component must be prescribed (all three are ~)");
-  bc.ramp = reader.ramp(m);
-  return bc;
+/// `boundary:` items: Dirichlet conditions on the nodes of a tagged surface.
+Schema<BoundaryCondition> boundary_schema() {
+  Schema<BoundaryCondition> s;
+  s.place(&BoundaryCondition::place, false);
+  s.variant<BoundaryType>("type", &BoundaryCondition::type, kBoundaryTypes,
+                          "fixed: u = 0; symmetry: zero normal displacement (the surface must be "
+                          "planar); displacement: prescribed components")
+      .required();
+  name_key(s, &BoundaryCondition::name,
+           "when given, the reaction force on the surface is reported as `force_x:<name>`, "
+           "`force_y:<name>`, `force_z:<name>`");
+  surface_key(s, "surface", &BoundaryCondition::surface, "where the condition acts").required();
+  s.add({"value",
+         "list of 3 numbers or `~`",
+         "mm",
+         "",
+         "",
+         {"displacement"},
+         "displacement at the end of the ramp; `~` leaves a component free; at least one "
+         "component must be given"},
+        [](const Field& f, BoundaryCondition& bc, ReadContext&) {
+          if (!f.node().IsSequence() || f.node().size() != 3)
+            f.fail(
+                "expected a list of 3 displacements [ux, uy, uz] in mm, ~ for a free component, "
+                "got " +
+                f.describe());
+          const std::vector<Field> items = f.items();
+          bool any = false;
+          for (int k = 0; k < 3; ++k) {
+            if (items[k].is_null()) continue;
+            bc.value[k] = items[k].real();
+            any = true;
+          }
+          if (!any) f.fail("at least one component must be prescribed (all three are ~)");
+        })
+      .required();
+  ramp_key(s, &BoundaryCondition::ramp, "time ramp of `value`").applies({"displacement"});
+  return s;
 }
 
-Load read_load(const Field& field, Reader& reader, const MaterialSection& material) {
-  const FieldMap m = field.map();
-  Load load;
-  load.place = field.place();
-  const Field type = m.require("type");
-  load.type = type.choice(kLoadTypes);
-  const std::string variant = "type '" + type.text() + "'";
-  if (load.type == LoadType::pressure)
-    m.check_keys({"type", "name", "surface", "value", "ramp"}, variant, {"acceleration"});
-  else
-    m.check_keys({"type", "name", "acceleration", "ramp"}, variant, {"surface", "value"});
-  load.name = reader.unique_name(m);
-  if (load.type == LoadType::pressure) {
-    load.surface = surface_ref(m.require("surface"));
-    load.value = m.require("value").real();
-  } else {
-    load.acceleration = m.require("acceleration").vec3();
-    if (!(material.density > 0.0))
-      type.fail("a gravity load needs material.density > 0 (got " +
-                format_number(material.density) + ")");
-  }
-  load.ramp = reader.ramp(m);
-  return load;
+/// `loads:` items.
+Schema<Load> load_schema() {
+  Schema<Load> s;
+  s.place(&Load::place, false);
+  s.variant<LoadType>("type", &Load::type, kLoadTypes,
+                      "pressure: a follower pressure on a surface; gravity: a body force")
+      .required();
+  name_key(s, &Load::name, "history column `pressure:<name>`").required();
+  surface_key(s, "surface", &Load::surface, "the loaded surface").required().applies({"pressure"});
+  s.real("value", &Load::value, Range::any(), "MPa",
+         "follower pressure at the end of the ramp; positive pushes against the outward normal "
+         "of the body (inflates from `inner`)")
+      .required()
+      .applies({"pressure"});
+  s.vec3("acceleration", &Load::acceleration, "mm/s²", "e.g. `[0, -9810, 0]`")
+      .required()
+      .applies({"gravity"});
+  ramp_key(s, &Load::ramp, "time ramp of the load");
+  s.rule("a gravity load needs `material.density` > 0",
+         [](const FieldMap& m, const Load& load, const ReadContext& context) {
+           if (load.type == LoadType::gravity && !(context.density > 0.0))
+             m.require("type").fail("a gravity load needs material.density > 0 (got " +
+                                    format_number(context.density) + ")");
+         });
+  return s;
 }
 
-Cavity read_cavity(const Field& field, Reader& reader) {
-  const FieldMap m = field.map();
-  Cavity c;
-  c.place = field.place();
-  c.control = m.choice("control", CavityControl::volume, kCavityControls);
-  const std::vector<std::string> common{"name", "surface", "control", "ramp"};
-  const std::vector<std::string> volume{"volume_ratio"};
-  const std::vector<std::string> gas{"initial_pressure", "mass_ratio", "ambient_pressure"};
-  if (c.control == CavityControl::volume)
-    m.check_keys(with(common, volume), "control 'volume'", gas);
-  else
-    m.check_keys(with(common, gas), "control 'gas'", volume);
-  c.name = reader.unique_name(m);
-  c.surface = surface_ref(m.require("surface"));
-  c.volume_ratio = m.real("volume_ratio", c.volume_ratio, Range::positive());
-  c.initial_pressure = m.real("initial_pressure", c.initial_pressure, Range::non_negative());
-  c.mass_ratio = m.real("mass_ratio", c.mass_ratio, Range::positive());
-  c.ambient_pressure = m.real("ambient_pressure", c.ambient_pressure, Range::positive());
-  c.ramp = reader.ramp(m);
-  return c;
+/// `cavities:` items: a closed surface (or one closed by symmetry planes) enclosing a fluid.
+Schema<Cavity> cavity_schema() {
+  Schema<Cavity> s;
+  s.place(&Cavity::place, false);
+  name_key(s, &Cavity::name, "history columns `volume:<name>`, `pressure:<name>`").required();
+  surface_key(s, "surface", &Cavity::surface, "the cavity's wall").required();
+  s.variant<CavityControl>("control", &Cavity::control, kCavityControls,
+                           "prescribed volume, or an ideal gas");
+  ramp_key(s, &Cavity::ramp, "time ramp of the volume ratio or the mass ratio");
+  s.real("volume_ratio", &Cavity::volume_ratio, Range::positive(), "–", "V(end of ramp) / V0")
+      .applies({"volume"});
+  s.real("initial_pressure", &Cavity::initial_pressure, Range::non_negative(), "MPa",
+         "gauge pressure of the gas at t = 0, at the undeformed cavity volume (it fixes the "
+         "amount of gas)")
+      .applies({"gas"});
+  s.real("mass_ratio", &Cavity::mass_ratio, Range::positive(), "–",
+         "gas mass at end of ramp / initial mass")
+      .applies({"gas"});
+  s.real("ambient_pressure", &Cavity::ambient_pressure, Range::positive(), "MPa",
+         "absolute ambient pressure")
+      .applies({"gas"});
+  return s;
 }
 
-/// A direction, normalised; the zero vector is an error.
-Vec3d unit_vector(const Field& f) {
-  const Vec3d v = f.vec3();
-  const double norm = v.norm();
-  if (!(norm > 0.0) || !std::isfinite(norm))
-    f.fail("must be a non-zero direction (its length is 0)");
-  return v / norm;
+/// `dies:` items: rigid analytic dies with prescribed motion.
+Schema<Die> die_schema() {
+  Schema<Die> move;
+  move.vec3("displacement", &Die::displacement, "mm", "displacement reached at the end of `ramp`");
+  ramp_key(move, &Die::ramp, "time ramp of the motion");
+
+  Schema<Die> s;
+  s.place(&Die::place, false);
+  name_key(s, &Die::name,
+           "history columns `force_x:<name>`, `force_y:<name>`, `force_z:<name>` (force of the "
+           "body on the die, N), `contact_nodes:<name>` (nodes in contact or glued), "
+           "`penetration:<name>` (largest penetration, mm)")
+      .required();
+  s.variant<DieShape>("shape", &Die::shape, kDieShapes, "the die's surface").required();
+  s.vec3("point", &Die::point, "mm",
+         "plane: a point of it; sphere: centre; cylinder: a point of the axis")
+      .required();
+  s.variant<ContactKind>("contact", &Die::contact, kContactKinds,
+                         "unilateral sliding contact, or nodes that touch stay glued");
+  optional_surface_key(s, "surface", &Die::surface,
+                       "whole boundary except the faces on symmetry planes",
+                       "candidate contact surface");
+  s.nested_here("move", move).when_absent([](const FieldMap&, Die& d, ReadContext& context) {
+    d.ramp = {0.0, context.end_time};  // a die without `move` stays put; its ramp is unused
+  });
+  s.real("penalty", &Die::penalty, Range::non_negative(), "MPa/mm",
+         "contact penalty; 0 chooses 10 μ / h (μ the small-strain shear modulus, h the mean edge "
+         "length of the contact surface; docs/theory/contact.md, D11)");
+  s.real("tolerance", &Die::tolerance, Range::positive(), "mm",
+         "allowed penetration: the augmented-Lagrangian multipliers are updated until no node "
+         "penetrates more (at most `solver.max_augmentations` times per step)");
+  s.add({"normal",
+         "vector",
+         "–",
+         "non-zero",
+         "",
+         {"plane"},
+         "normal pointing towards the body; normalised"},
+        [](const Field& f, Die& d, ReadContext&) { d.normal = unit_vector(f); })
+      .required();
+  s.add({"axis", "vector", "–", "non-zero", "", {"cylinder"}, "axis direction; normalised"},
+        [](const Field& f, Die& d, ReadContext&) { d.axis = unit_vector(f); })
+      .required();
+  s.real("radius", &Die::radius, Range::positive(), "mm", "radius of the sphere or cylinder")
+      .required()
+      .applies({"sphere", "cylinder"});
+  optional_surface_key(s, "region", &Die::region, "none", "glued to the die from the start")
+      .applies({"sticking"});
+  return s;
 }
 
-Die read_die(const Field& field, Reader& reader) {
-  const FieldMap m = field.map();
-  Die d;
-  d.place = field.place();
-  const Field shape = m.require("shape");
-  d.shape = shape.choice(kDieShapes);
-  d.contact = m.choice("contact", ContactKind::frictionless, kContactKinds);
-  std::vector<std::string> allowed{"name",    "shape", "point",   "contact",
-                                   "surface", "move",  "penalty", "tolerance"};
-  if (d.shape == DieShape::plane) allowed.push_back("normal");
-  if (d.shape == DieShape::cylinder) allowed.push_back("axis");
-  if (d.shape != DieShape::plane) allowed.push_back("radius");
-  if (d.contact == ContactKind::sticking) allowed.push_back("region");
-  const std::string variant = "shape '" + shape.text() + "' with contact '" +
-                              (d.contact == ContactKind::sticking ? "sticking" : "frictionless") +
-                              "'";
-  m.check_keys(allowed, variant, {"normal", "axis", "radius", "region"});
-
-  d.name = reader.unique_name(m);
-  d.point = m.require("point").vec3();
-  if (d.shape == DieShape::plane) d.normal = unit_vector(m.require("normal"));
-  if (d.shape == DieShape::cylinder) d.axis = unit_vector(m.require("axis"));
-  if (d.shape != DieShape::plane) d.radius = m.require("radius").real(Range::positive());
-  if (const auto f = m.find("region")) d.region = surface_ref(*f);
-  if (const auto f = m.find("surface")) d.surface = surface_ref(*f);
-  d.penalty = m.real("penalty", d.penalty, Range::non_negative());
-  d.tolerance = m.real("tolerance", d.tolerance, Range::positive());
-  d.ramp = {0.0, reader.end_time};  // a die without `move` stays put; its ramp is unused
-  if (const auto move = m.find("move")) {
-    const FieldMap mm = move->map();
-    mm.check_keys({"displacement", "ramp"});
-    if (const auto f = mm.find("displacement")) d.displacement = f->vec3();
-    d.ramp = reader.ramp(mm);
-  }
-  return d;
-}
-
-Probe read_probe(const Field& field, Reader& reader) {
-  const FieldMap m = field.map();
-  m.check_keys({"name", "point"});
-  Probe p;
-  p.place = field.place();
-  p.name = reader.unique_name(m);
-  p.point = m.require("point").vec3();
-  return p;
+/// `probes:` items: named points reported as displacement columns.
+Schema<Probe> probe_schema() {
+  Schema<Probe> s;
+  s.place(&Probe::place, false);
+  name_key(s, &Probe::name, "history columns `ux:<name>`, `uy:<name>`, `uz:<name>`").required();
+  s.vec3("point", &Probe::point, "mm", "the mesh node nearest to this point is reported")
+      .required();
+  return s;
 }
 
 /// `solver.newton.linear`: the iterative solver's keys do not apply to the direct one.
-LinearSolverSettings read_linear_solver(const Field& field) {
-  const FieldMap m = field.map();
-  LinearSolverSettings s;
-  s.place = field.key_place();
-  s.type = m.choice("type", s.type, kLinearSolverTypes);
-  const std::vector<std::string> iterative{"rtol", "max_iterations", "restart"};
-  if (s.type == LinearSolverType::direct)
-    m.check_keys({"type"}, "type 'direct'", iterative);
-  else
-    m.check_keys(with({"type"}, iterative), "type 'iterative'");
-  s.rtol = m.real("rtol", s.rtol, kOpenUnit);
-  s.max_iterations = m.integer("max_iterations", s.max_iterations, Range::at_least(1));
-  s.restart = m.integer("restart", s.restart, Range::at_least(1));
+Schema<LinearSolverSettings> linear_solver_schema() {
+  Schema<LinearSolverSettings> s;
+  s.place(&LinearSolverSettings::place, true);
+  s.variant<LinearSolverType>("type", &LinearSolverSettings::type, kLinearSolverTypes,
+                              "solver of each Newton iteration's linear system: MUMPS "
+                              "factorisation, or GMRES with a field-split preconditioner (below)");
+  s.real("rtol", &LinearSolverSettings::rtol, kOpenUnit, "–",
+         "GMRES stops when the true residual ‖K dx + R‖ ≤ rtol ‖R‖")
+      .applies({"iterative"});
+  s.integer("max_iterations", &LinearSolverSettings::max_iterations, Range::at_least(1),
+            "GMRES iterations per Newton iteration; more counts as a failed linear solve (the "
+            "step is cut back)")
+      .applies({"iterative"});
+  s.integer("restart", &LinearSolverSettings::restart, Range::at_least(1),
+            "Krylov vectors kept before GMRES restarts (memory: about 2 × restart vectors of the "
+            "unknowns)")
+      .applies({"iterative"});
   return s;
 }
 
-SolverSettings read_solver(const Field& field, const std::string& directory) {
-  const FieldMap m = field.map();
-  m.check_keys({"scheme", "end_time", "steps", "max_steps", "min_step", "max_step", "growth",
-                "cutback", "easy_iterations", "viscosity", "max_augmentations", "newton", "stability",
-                "petsc_options"});
-  SolverSettings s;
-  s.scheme = m.choice("scheme", s.scheme, kSchemes);
-  s.end_time = m.real("end_time", s.end_time, Range::positive());
-  s.steps = m.integer("steps", s.steps, Range::at_least(1));
-  s.max_steps = m.integer("max_steps", s.max_steps, Range::at_least(1));
-  s.min_step = m.real("min_step", s.min_step, kFraction);
-  s.max_step = m.real("max_step", s.max_step, kFraction);
-  s.growth = m.real("growth", s.growth, Range::at_least(1.0));
-  s.cutback = m.real("cutback", s.cutback, kOpenUnit);
-  s.easy_iterations = m.integer("easy_iterations", s.easy_iterations, Range::at_least(1));
-  s.viscosity = m.real("viscosity", s.viscosity, Range::non_negative());
-  s.max_augmentations =
-      m.integer("max_augmentations", s.max_augmentations, Range::at_least(0));
-  if (const auto f = m.find("petsc_options"); f && !f->is_null()) {
-    s.petsc_options = f->text();
-    s.petsc_options_place = f->place();
-    // PETSc reads "-name [value] -name [value] ...": a word before the first option, or two words
-    // in a row, is not read as anything and PETSc ignores it without a word (a forgotten dash in
-    // "ksp_type preonly" silently kept the default solver).
-    std::istringstream words(s.petsc_options);
-    bool after_value = true;  // nothing may come before the first "-option"
-    for (std::string word; words >> word;) {
-      const bool option = word.size() > 1 && word[0] == '-';
-      if (!option && after_value)
-        f->fail("'" + word +
-                "' is neither a PETSc option (options start with '-') nor the value of the "
-                "option before it; expected e.g. '-ksp_type preonly -pc_type lu'");
-      after_value = !option;
-    }
-  }
-  if (s.min_step > s.max_step)
-    (m.has("min_step") ? *m.find("min_step") : *m.find("max_step"))
-        .fail("min_step must be <= max_step (got min_step " + format_number(s.min_step) +
-              ", max_step " + format_number(s.max_step) + ")");
-  if (s.steps > s.max_steps)
-    (m.has("steps") ? *m.find("steps") : *m.find("max_steps"))
-        .fail("steps must be <= max_steps (got steps " + std::to_string(s.steps) + ", max_steps " +
-              std::to_string(s.max_steps) + ")");
-
-  if (const auto f = m.find("newton")) {
-    const FieldMap n = f->map();
-    n.check_keys({"rtol", "atol", "max_iterations", "line_search", "linear"});
-    NewtonSettings& ns = s.newton;
-    ns.rtol = n.real("rtol", ns.rtol, kOpenUnit);
-    ns.atol = n.real("atol", ns.atol, Range::non_negative());
-    ns.max_iterations = n.integer("max_iterations", ns.max_iterations, Range::at_least(1));
-    ns.line_search = n.choice("line_search", ns.line_search, kLineSearches);
-    if (const auto l = n.find("linear"); l && !l->is_null()) ns.linear = read_linear_solver(*l);
-  }
-  if (const auto f = m.find("stability")) {
-    const FieldMap st = f->map();
-    st.check_keys({"check", "branch_switch", "modes", "imperfection", "imperfection_kind", "seed",
-                   "imperfection_from", "imperfection_mode", "branch_amplitude"});
-    StabilitySettings& ss = s.stability;
-    ss.place = f->key_place();
-    ss.check = st.boolean("check", ss.check);
-    ss.branch_switch = st.boolean("branch_switch", ss.branch_switch);
-    ss.modes = st.integer("modes", ss.modes, Range::at_least(1));
-    ss.imperfection = st.real("imperfection", ss.imperfection, Range::non_negative());
-    ss.imperfection_kind = st.choice("imperfection_kind", ss.imperfection_kind, kImperfectionKinds);
-    ss.seed = st.integer("seed", ss.seed, Range::at_least(0));
-    ss.imperfection_mode = st.integer("imperfection_mode", ss.imperfection_mode, Range::at_least(1));
-    ss.branch_amplitude = st.real("branch_amplitude", ss.branch_amplitude, Range::positive());
-    if (const auto from = st.find("imperfection_from")) {
-      if (ss.imperfection_kind != "mode")
-        from->fail_at_key("imperfection_from needs 'imperfection_kind: mode'");
-      const std::string text = from->text();
-      if (text.empty()) from->fail("must name a run directory or a .vtu file");
-      std::filesystem::path p(text);
-      if (p.is_relative() && !directory.empty()) p = std::filesystem::path(directory) / p;
-      ss.imperfection_from = p.string();
-    }
-    if (ss.imperfection_kind == "mode" && ss.imperfection > 0.0 && ss.imperfection_from.empty())
-      throw InputError(ss.place,
-                       "'imperfection_kind: mode' needs 'imperfection_from: DIR', the run whose "
-                       "eigenmode shapes the imperfection");
-    if (ss.branch_switch && !ss.check)
-      st.find("branch_switch")
-          ->fail(
-              "branch_switch needs 'check: true' (the instability it switches at is found by "
-              "the stability check)");
-  }
+/// `solver.newton`.
+Schema<NewtonSettings> newton_schema() {
+  Schema<NewtonSettings> s;
+  s.real("rtol", &NewtonSettings::rtol, kOpenUnit, "–", "relative residual tolerance");
+  s.real("atol", &NewtonSettings::atol, Range::non_negative(), "N", "absolute residual tolerance");
+  s.integer("max_iterations", &NewtonSettings::max_iterations, Range::at_least(1),
+            "Newton iterations per step before the step counts as failed");
+  s.choice<LineSearch>("line_search", &NewtonSettings::line_search, kLineSearches,
+                       "PETSc SNES line search");
+  s.nested<LinearSolverSettings>("linear", &NewtonSettings::linear, linear_solver_schema())
+      .null_is_absent();
   return s;
 }
 
-OutputSettings read_output(const Field& field) {
-  const FieldMap m = field.map();
-  m.check_keys({"every", "checkpoint_every", "deformed", "stretch_axis", "wrinkles"});
-  OutputSettings s;
-  s.every = m.integer("every", s.every, Range::at_least(1));
-  s.checkpoint_every = m.integer("checkpoint_every", s.checkpoint_every, Range::at_least(0));
-  s.deformed = m.boolean("deformed", s.deformed);
-  if (const auto f = m.find("stretch_axis")) s.stretch_axis = f->choice(kAxes);
-  if (const auto f = m.find("wrinkles")) {
-    const FieldMap w = f->map();
-    w.check_keys({"axis", "center", "rings_deg", "threshold", "min_count", "surface"});
-    s.wrinkles.place = f->key_place();
-    s.wrinkles.axis = w.choice("axis", s.wrinkles.axis, kAxes);
-    if (const auto c = w.find("center")) s.wrinkles.center = c->vec3();
-    s.wrinkles.min_count = w.integer("min_count", s.wrinkles.min_count, Range::at_least(1));
-    if (const auto sf = w.find("surface")) {
-      s.wrinkles.surface = sf->text();
-      s.wrinkles.surface_place = sf->place();
-    }
-    if (const auto r = w.find("rings_deg")) s.wrinkles.rings_deg = r->reals(kLatitude);
-    s.wrinkles.threshold = w.real("threshold", s.wrinkles.threshold, Range::positive());
-  }
+/// `solver.stability`.
+Schema<StabilitySettings> stability_schema() {
+  Schema<StabilitySettings> s;
+  s.place(&StabilitySettings::place, true);
+  s.boolean("check", &StabilitySettings::check, "inertia of the tangent at every converged step");
+  s.boolean("branch_switch", &StabilitySettings::branch_switch,
+            "perturb along the critical mode when stability is lost");
+  s.integer("modes", &StabilitySettings::modes, Range::at_least(1),
+            "eigenmodes computed at an instability");
+  s.real("imperfection", &StabilitySettings::imperfection, Range::non_negative(), "–",
+         "imperfection amplitude / wall thickness");
+  s.choice<std::string>("imperfection_kind", &StabilitySettings::imperfection_kind,
+                        kImperfectionKinds,
+                        "random: a random perturbation of the nodes; mode: an eigenmode of an "
+                        "earlier run (`imperfection_from`)");
+  s.integer("seed", &StabilitySettings::seed, Range::at_least(0),
+            "seed of the random imperfection");
+  s.add({"imperfection_from",
+         "path",
+         "–",
+         "",
+         "none",
+         {},
+         "run directory (or one of its `.vtu` files) whose eigenmode shapes the imperfection; "
+         "relative to the case file"},
+        [](const Field& f, StabilitySettings& st, ReadContext& context) {
+          const std::string text = f.text();
+          if (text.empty()) f.fail("must name a run directory or a .vtu file");
+          st.imperfection_from = resolve(text, context.directory);
+        });
+  s.integer("imperfection_mode", &StabilitySettings::imperfection_mode, Range::at_least(1),
+            "which mode (`mode_N` field) of that run");
+  s.real("branch_amplitude", &StabilitySettings::branch_amplitude, Range::positive(), "–",
+         "size of the perturbation along the critical mode at a branch switch / wall thickness");
+  s.rule("`imperfection_from` needs `imperfection_kind: mode`",
+         [](const FieldMap& m, const StabilitySettings& st, const ReadContext&) {
+           if (const auto from = m.find("imperfection_from");
+               from && st.imperfection_kind != "mode")
+             from->fail_at_key("imperfection_from needs 'imperfection_kind: mode'");
+         });
+  s.rule(
+      "`imperfection_kind: mode` with `imperfection` > 0 needs `imperfection_from`",
+      [](const FieldMap&, const StabilitySettings& st, const ReadContext&) {
+        if (st.imperfection_kind == "mode" && st.imperfection > 0.0 && st.imperfection_from.empty())
+          throw InputError(st.place,
+                           "'imperfection_kind: mode' needs 'imperfection_from: DIR', the run "
+                           "whose eigenmode shapes the imperfection");
+      });
+  s.rule("`branch_switch` needs `check: true`",
+         [](const FieldMap& m, const StabilitySettings& st, const ReadContext&) {
+           if (st.branch_switch && !st.check)
+             m.find("branch_switch")
+                 ->fail(
+                     "branch_switch needs 'check: true' (the instability it switches at is found "
+                     "by the stability check)");
+         });
   return s;
 }
 
-/// Length of the well-formed UTF-8 sequence of 2 to 4 bytes at text[i] (RFC 3629, section 4), or 0.
-std::size_t utf8_sequence_length(const std::string& text, std::size_t i) {
-  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
-  std::size_t n = 0;
-  if (byte(i) >= 0xc2 && byte(i) <= 0xdf) n = 2;
-  if (byte(i) >= 0xe0 && byte(i) <= 0xef) n = 3;
-  if (byte(i) >= 0xf0 && byte(i) <= 0xf4) n = 4;
-  if (n == 0 || i + n > text.size()) return 0;
-  for (std::size_t k = 1; k < n; ++k)
-    if ((byte(i + k) & 0xc0) != 0x80) return 0;
-  return n;
+/// `solver:`. The stepping keys may be members of a base struct of SolverSettings: the member
+/// pointers convert to pointers to members of SolverSettings.
+Schema<SolverSettings> solver_schema() {
+  using S = SolverSettings;
+  Schema<S> s;
+  s.choice<Scheme>("scheme", &S::scheme, kSchemes,
+                   "total-Lagrangian Newton (step-size independent), or the paper's incremental "
+                   "velocity scheme");
+  s.real("end_time", &S::end_time, Range::positive(), "s", "end of the (pseudo-)time");
+  s.integer("steps", &S::steps, Range::at_least(1),
+            "initial number of steps (first step = end_time / steps)");
+  s.integer("max_steps", &S::max_steps, Range::at_least(1), "largest number of steps");
+  s.real("min_step", &S::min_step, kFraction, "–", "smallest step, fraction of end_time");
+  s.real("max_step", &S::max_step, kFraction, "–", "largest step, fraction of end_time");
+  s.real("growth", &S::growth, Range::at_least(1.0), "–", "step growth after easy steps");
+  s.real("cutback", &S::cutback, kOpenUnit, "–", "step reduction after a failed step");
+  s.integer("easy_iterations", &S::easy_iterations, Range::at_least(1),
+            "a step is easy when Newton needs at most this many iterations");
+  s.real("viscosity", &S::viscosity, Range::non_negative(), "MPa s",
+         "viscous stabilisation through snap-throughs: nodal forces η V_i v_i / ℓ² against the "
+         "step velocity (ℓ the wall thickness, else the mean edge length; "
+         "docs/theory/viscous.md); history column `dissipated_energy` [mJ] — keep it small "
+         "against the strain energy");
+  s.integer("max_augmentations", &S::max_augmentations, Range::at_least(0),
+            "multiplier updates per step for augmented-Lagrangian contact before the step counts "
+            "as failed");
+  s.nested<NewtonSettings>("newton", &S::newton, newton_schema());
+  s.nested<StabilitySettings>("stability", &S::stability, stability_schema());
+  s.add({"petsc_options",
+         "text",
+         "–",
+         "",
+         "empty",
+         {},
+         "extra PETSc options, e.g. `-ksp_type preonly -pc_type lu`"},
+        [](const Field& f, S& solver, ReadContext&) {
+          solver.petsc_options = f.text();
+          solver.petsc_options_place = f.place();
+          // PETSc reads "-name [value] -name [value] ...": a word before the first option, or two
+          // words in a row, is not read as anything and PETSc ignores it without a word (a
+          // forgotten dash in "ksp_type preonly" silently kept the default solver).
+          std::istringstream words(solver.petsc_options);
+          bool after_value = true;  // nothing may come before the first "-option"
+          for (std::string word; words >> word;) {
+            const bool option = word.size() > 1 && word[0] == '-';
+            if (!option && after_value)
+              f.fail("'" + word +
+                     "' is neither a PETSc option (options start with '-') nor the value of the "
+                     "option before it; expected e.g. '-ksp_type preonly -pc_type lu'");
+            after_value = !option;
+          }
+        })
+      .null_is_absent();
+  s.rule("`min_step` <= `max_step`", [](const FieldMap& m, const S& solver, const ReadContext&) {
+    if (solver.min_step > solver.max_step)
+      (m.has("min_step") ? *m.find("min_step") : *m.find("max_step"))
+          .fail("min_step must be <= max_step (got min_step " + format_number(solver.min_step) +
+                ", max_step " + format_number(solver.max_step) + ")");
+  });
+  s.rule("`steps` <= `max_steps`", [](const FieldMap& m, const S& solver, const ReadContext&) {
+    if (solver.steps > solver.max_steps)
+      (m.has("steps") ? *m.find("steps") : *m.find("max_steps"))
+          .fail("steps must be <= max_steps (got steps " + std::to_string(solver.steps) +
+                ", max_steps " + std::to_string(solver.max_steps) + ")");
+  });
+  return s;
 }
 
-/// Offset of the first byte YAML does not allow in a UTF-8 stream (YAML 1.2, section 5.1,
-/// c-printable): a control character other than tab, line feed and carriage return, DEL, or a
-/// byte that does not begin a well-formed UTF-8 sequence; npos when there is none. yaml-cpp
-/// passes such bytes into messages and values, so a binary file gave errors full of raw bytes.
-/// Streams with a UTF-16 or UTF-32 byte order mark are left to yaml-cpp.
-std::size_t first_non_text_byte(const std::string& text) {
-  using namespace std::string_view_literals;
-  for (const std::string_view bom : {"\xFE\xFF"sv, "\xFF\xFE"sv, "\0\0\xFE\xFF"sv})
-    if (std::string_view(text).substr(0, bom.size()) == bom) return std::string::npos;
-  for (std::size_t i = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0; i < text.size();) {
-    const auto ch = static_cast<unsigned char>(text[i]);
-    if (ch >= 0x80) {
-      const std::size_t n = utf8_sequence_length(text, i);
-      if (n == 0) return i;
-      i += n;
-      continue;
-    }
-    if ((ch < 0x20 && ch != '\t' && ch != '\n' && ch != '\r') || ch == 0x7f) return i;
-    ++i;
-  }
-  return std::string::npos;
+/// `output.wrinkles`.
+Schema<WrinkleSettings> wrinkle_schema() {
+  Schema<WrinkleSettings> s;
+  s.place(&WrinkleSettings::place, true);
+  s.choice<char>("axis", &WrinkleSettings::axis, kAxes,
+                 "axis of the rings on which wrinkles are measured");
+  s.vec3("center", &WrinkleSettings::center, "mm",
+         "a point on that axis (the centre of the latitudes)");
+  s.add({"rings_deg",
+         "list of numbers",
+         "deg",
+         kLatitude.describe(),
+         "empty (no wrinkle metrics)",
+         {},
+         "latitudes of the rings (0 is the equator; ±90 would be a single point)"},
+        [](const Field& f, WrinkleSettings& w, ReadContext&) { w.rings_deg = f.reals(kLatitude); });
+  s.real("threshold", &WrinkleSettings::threshold, Range::positive(), "–",
+         "a ring is wrinkled when its amplitude exceeds threshold × wall thickness");
+  s.integer("min_count", &WrinkleSettings::min_count, Range::at_least(1),
+            "smaller full-circle wave counts (a shift, an ovalisation) are global shape changes, "
+            "not wrinkles");
+  s.add({"surface",
+         "surface tag",
+         "–",
+         "",
+         "`" + WrinkleSettings{}.surface + "`",
+         {},
+         "the surface the rings are drawn on"},
+        [](const Field& f, WrinkleSettings& w, ReadContext&) {
+          w.surface = f.text();
+          w.surface_place = f.place();
+        });
+  return s;
 }
 
-/// Offset of the start of 0-based line `line` of `text` (npos past the end).
-std::size_t line_start(const std::string& text, int line) {
-  std::size_t start = 0;
-  for (int l = 0; l < line && start != std::string::npos; ++l) {
-    start = text.find('\n', start);
-    if (start != std::string::npos) ++start;
-  }
-  return start;
+/// `output:`.
+Schema<OutputSettings> output_schema() {
+  Schema<OutputSettings> s;
+  s.integer("every", &OutputSettings::every, Range::at_least(1),
+            "write a VTU file every N converged steps (the last one always)");
+  s.integer("checkpoint_every", &OutputSettings::checkpoint_every, Range::at_least(0),
+            "write `checkpoint.bin` every N converged steps (0: only when interrupted); `plisse "
+            "run CASE --resume DIR` continues from it");
+  s.boolean("deformed", &OutputSettings::deformed,
+            "write deformed instead of reference coordinates");
+  s.add({"stretch_axis",
+         case_detail::doc_choice({"x", "y", "z"}),
+         "–",
+         "",
+         "none",
+         {},
+         "adds the history column `stretch` (volume-averaged stretch along that axis)"},
+        [](const Field& f, OutputSettings& o, ReadContext&) { o.stretch_axis = f.choice(kAxes); });
+  s.nested<WrinkleSettings>("wrinkles", &OutputSettings::wrinkles, wrinkle_schema());
+  return s;
 }
 
-/// Whether 0-based line `line` of `text` has a tab in its indentation.
-bool indented_with_tab(const std::string& text, int line) {
-  const std::size_t start = line_start(text, line);
-  for (std::size_t i = start; i != std::string::npos && i < text.size(); ++i) {
-    if (text[i] == '\t') return true;
-    if (text[i] != ' ') return false;
-  }
-  return false;
+/// The top level: one row per section, in the order the allowed keys are listed.
+Schema<Case> case_schema() {
+  Schema<Case> s;
+  s.add({"title", "text", "–", "", "empty", {}, "one-line description, written to the run log"},
+        [](const Field& f, Case& c, ReadContext&) { c.title = f.text(); })
+      .null_is_absent();
+  s.add({"mesh", "map", "", "", "", {}, "the mesh, read from a file or generated"},
+        [](const Field& f, Case& c, ReadContext& context) { c.mesh = read_mesh(f, context); })
+      .required()
+      .nested = mesh_schema().doc();
+  s.add({"material", "map", "", "", "", {}, "the material model and its parameters"},
+        [](const Field& f, Case& c, ReadContext& context) {
+          c.material = read_material(f, context);
+          context.density = c.material.density;
+        })
+      .required()
+      .nested = material_schema().doc();
+  list_key(s, "boundary", &Case::boundary, boundary_schema(), "Dirichlet conditions");
+  list_key(s, "loads", &Case::loads, load_schema(), "pressure and gravity loads");
+  list_key(s, "cavities", &Case::cavities, cavity_schema(), "fluid-filled cavities");
+  list_key(s, "dies", &Case::dies, die_schema(), "rigid dies");
+  list_key(s, "probes", &Case::probes, probe_schema(), "displacement probes");
+  s.nested<SolverSettings>("solver", &Case::solver, solver_schema());
+  s.nested<OutputSettings>("output", &Case::output, output_schema());
+  return s;
 }
 
-/// Finds a quoted scalar that is never closed. yaml-cpp ends such a scalar at the end of the input
-/// instead of reporting it, so `title: "abc` swallows the rest of the file into one text value and
-/// the sections after it silently vanish. The parser's events give each scalar's mark (a byte
-/// offset, at the scalar's tag or anchor if it has one); the quote found there must be closed.
-class UnclosedQuoteFinder : public YAML::EventHandler {
- public:
-  explicit UnclosedQuoteFinder(const std::string& text) : text_(text) {
-    if (text_.rfind("\xEF\xBB\xBF", 0) == 0) bom_ = 3;  // yaml-cpp's offsets skip a UTF-8 BOM
-  }
-  /// The mark of the first unclosed quoted scalar, if any.
-  const std::optional<YAML::Mark>& found() const { return found_; }
-  /// Documents seen so far, and where the second one starts (its first node, else its start).
-  int documents() const { return documents_; }
-  std::optional<YAML::Mark> second_document() const {
-    return second_node_ ? second_node_ : second_document_;
-  }
-
-  void OnScalar(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t,
-                const std::string&) override {
-    note(mark);
-    if (tag == "?" || found_) return;  // plain scalars have no quotes
-    std::size_t i = static_cast<std::size_t>(mark.pos) + bom_;
-    // Skip the node's properties: "!tag" and "&anchor", each followed by blanks.
-    while (i < text_.size() && (text_[i] == '!' || text_[i] == '&')) {
-      while (i < text_.size() && !std::isspace(static_cast<unsigned char>(text_[i]))) ++i;
-      while (i < text_.size() && (text_[i] == ' ' || text_[i] == '\t')) ++i;
-    }
-    if (i >= text_.size() || (text_[i] != '"' && text_[i] != '\'')) return;  // block scalar
-    if (!closed(i)) found_ = mark;
-  }
-  void OnDocumentStart(const YAML::Mark& mark) override {
-    if (++documents_ == 2) second_document_ = mark;
-  }
-  void OnDocumentEnd() override {}
-  void OnNull(const YAML::Mark& mark, YAML::anchor_t) override { note(mark); }
-  void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { note(mark); }
-  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
-                       YAML::EmitterStyle::value) override {
-    note(mark);
-  }
-  void OnSequenceEnd() override {}
-  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
-                  YAML::EmitterStyle::value) override {
-    note(mark);
-  }
-  void OnMapEnd() override {}
-
- private:
-  void note(const YAML::Mark& mark) {
-    if (documents_ == 2 && !second_node_) second_node_ = mark;
-  }
-  /// Whether the quote at `open` has its closing quote: `\"` escapes inside double quotes
-  /// (YAML 1.2, section 7.3.1), `''` inside single quotes (section 7.3.2).
-  bool closed(std::size_t open) const {
-    const char quote = text_[open];
-    for (std::size_t i = open + 1; i < text_.size(); ++i) {
-      if (quote == '"' && text_[i] == '\\') {
-        ++i;
-      } else if (text_[i] == quote) {
-        if (quote == '\'' && i + 1 < text_.size() && text_[i + 1] == '\'') {
-          ++i;
-          continue;
-        }
-        return true;
-      }
-    }
-    return false;
-  }
-
-  const std::string& text_;
-  std::size_t bom_ = 0;
-  std::optional<YAML::Mark> found_;
-  int documents_ = 0;
-  std::optional<YAML::Mark> second_document_, second_node_;
-};
+const Schema<Case>& the_case_schema() {
+  static const Schema<Case> schema = case_schema();
+  return schema;
+}
 
 }  // namespace
 
 Case parse_case_string(const std::string& text, const std::string& name,
                        const std::vector<std::string>& overrides) {
-  if (const std::size_t at = first_non_text_byte(text); at != std::string::npos) {
-    const auto before = text.begin() + static_cast<std::ptrdiff_t>(at);
-    const int line = 1 + static_cast<int>(std::count(text.begin(), before, '\n'));
-    const std::size_t newline = at == 0 ? std::string::npos : text.rfind('\n', at - 1);
-    const int column = static_cast<int>(newline == std::string::npos ? at + 1 : at - newline);
-    char byte[8];
-    std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned char>(text[at]));
-    throw InputError({name, line, column, ""},
-                     std::string("the case file is not YAML text: byte ") + byte +
-                         " is not a printable UTF-8 character (is it a binary file?)");
-  }
-  // One pass over the events first, stopping at a second document: yaml-cpp 0.7 returns empty
-  // documents forever on some malformed text (a lone ','; yaml-cpp issue #1040), so LoadAll may
-  // only see text with at most one document.
-  UnclosedQuoteFinder finder(text);
-  {
-    std::istringstream in(text);
-    YAML::Parser parser(in);
-    try {
-      while (finder.documents() < 2 && parser.HandleNextDocument(finder)) {
-      }
-    } catch (const YAML::Exception&) {  // LoadAll below reports it with its place
-    }
-  }
-  if (const auto& m = finder.second_document()) {
-    // A second document starts at a '---' line, or where yaml-cpp gave up on the first one (a
-    // stray ',' or ']' at the top level): say which.
-    bool marker = false;  // a '---' line at the mark or before it, past blank and comment lines
-    for (int l = m->is_null() ? -1 : m->line; l >= 0 && !marker; --l) {
-      const std::size_t start = line_start(text, l);
-      if (start == std::string::npos) continue;
-      const std::string line = text.substr(start, text.find('\n', start) - start);
-      marker = line.compare(0, 3, "---") == 0;
-      const std::size_t first = line.find_first_not_of(" \t\r");
-      if (l < m->line && first != std::string::npos && line[first] != '#') break;
-    }
-    throw InputError({name, m->is_null() ? 0 : m->line + 1, m->is_null() ? 0 : m->column + 1, ""},
-                     marker ? "a case file holds one YAML document, this is a second one (remove "
-                              "the '---' line before it or split the file)"
-                            : "YAML syntax error: the case's top-level map cannot continue here "
-                              "(a stray ',', ']' or '}'?)");
-  }
-  std::vector<YAML::Node> documents;
-  try {
-    documents = YAML::LoadAll(text);
-  } catch (const YAML::Exception& e) {
-    const bool marked = !e.mark.is_null();
-    std::string rule = "YAML syntax error: " + e.msg;
-    // yaml-cpp's messages for a tab in the indentation ("illegal map value", ...) do not say so.
-    if (marked && (indented_with_tab(text, e.mark.line) ||
-                   (e.mark.line > 0 && indented_with_tab(text, e.mark.line - 1))))
-      rule += " (this line or the one before is indented with a tab: YAML indents with spaces)";
-    throw InputError({name, marked ? e.mark.line + 1 : 0, marked ? e.mark.column + 1 : 0, ""},
-                     rule);
-  }
-  if (const auto& m = finder.found())
-    throw InputError({name, m->line + 1, m->column + 1, ""},
-                     "YAML syntax error: this quoted value is never closed (its closing quote "
-                     "is missing, so it would run to the end of the file)");
-  YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
+  YAML::Node root = case_detail::load_case_document(text, name);
   if (!root.IsDefined() || root.IsNull())
     throw InputError({name, 0, 0, ""}, "the case file is empty");
   if (!root.IsMap())
@@ -718,49 +809,40 @@ Case parse_case_string(const std::string& text, const std::string& name,
   const case_detail::Source source(name, case_detail::apply_overrides(root, overrides));
   const Field top_field(source, root, YAML::Node(), "");
   const FieldMap top = top_field.map();
-  top.check_keys(kSections);
+  const Schema<Case>& schema = the_case_schema();
+  schema.check_keys(top, {}, "");
 
   Case c;
   c.path = name;
   c.directory = std::filesystem::path(name).parent_path().string();
-  Reader reader;
-  if (const auto f = top.find("solver")) c.solver = read_solver(*f, c.directory);
-  reader.end_time = c.solver.end_time;
-  if (const auto f = top.find("title"); f && !f->is_null()) c.title = f->text();
-  c.mesh = read_mesh(top.require("mesh"), c.directory);
-  c.material = read_material(top.require("material"));
-  if (const auto f = top.find("boundary"))
-    for (const Field& item : f->items()) c.boundary.push_back(read_boundary(item, reader));
-  if (const auto f = top.find("loads"))
-    for (const Field& item : f->items()) c.loads.push_back(read_load(item, reader, c.material));
-  if (const auto f = top.find("cavities"))
-    for (const Field& item : f->items()) c.cavities.push_back(read_cavity(item, reader));
-  if (const auto f = top.find("dies"))
-    for (const Field& item : f->items()) c.dies.push_back(read_die(item, reader));
-  if (const auto f = top.find("probes"))
-    for (const Field& item : f->items()) c.probes.push_back(read_probe(item, reader));
-  if (const auto f = top.find("output")) c.output = read_output(*f);
+  ReadContext context;
+  context.directory = c.directory;
+  // Every ramp defaults to [0, solver.end_time]: the solver goes first.
+  schema.read_key("solver", top, c, context);
+  context.end_time = c.solver.end_time;
+  for (const std::string& key : schema.keys())
+    if (key != "solver") schema.read_key(key, top, c, context);
   return c;
 }
 
 Case parse_case_file(const std::string& path, const std::vector<std::string>& overrides) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError({path, 0, 0, ""}, "the case file does not exist");
-  if (fs::is_directory(path, ec))
-    throw InputError({path, 0, 0, ""}, "is a directory, not a case file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({path, 0, 0, ""}, "the case file cannot be opened for reading");
-  // Read at most kMaxCaseFileBytes + 1: a device such as /dev/zero (or a huge file given by
-  // mistake) would otherwise fill the memory before the YAML parser sees a byte.
-  std::string text(kMaxCaseFileBytes + 1, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  text.resize(static_cast<std::size_t>(in.gcount()));
-  if (text.size() > kMaxCaseFileBytes)
-    throw InputError({path, 0, 0, ""}, "the case file is larger than " +
-                                           std::to_string(kMaxCaseFileBytes >> 20) +
-                                           " MiB; a case file is a short YAML text");
-  return parse_case_string(text, path, overrides);
+  return parse_case_string(case_detail::read_case_text(path), path, overrides);
+}
+
+std::vector<std::string> case_key_sections() {
+  std::vector<std::string> out = the_case_schema().keys();
+  out.insert(std::find(out.begin(), out.end(), "mesh") + 1, "mesh-options");
+  return out;
+}
+
+std::string case_keys_markdown(const std::string& section) {
+  if (section == "mesh-options") return mesh_options_markdown();
+  for (const auto& row : the_case_schema().rows()) {
+    if (row.doc.key != section) continue;
+    if (row.nested) return case_detail::render_markdown(*row.nested);
+    return case_detail::render_markdown({{row.doc}, {}});
+  }
+  throw Error("no case-file section '" + section + "'; sections: " + join(case_key_sections()));
 }
 
 }  // namespace plisse

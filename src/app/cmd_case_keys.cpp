@@ -1,0 +1,55 @@
+/// `plisse case-keys [SECTION ...] [--update FILE]`: the key tables of the case-file sections
+/// (key, type, unit, default, range, variants, meaning, rules between keys), generated from the
+/// case-file schema; `--update` refreshes the generated blocks of the manual docs/case-file.md.
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/commands.hpp"
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/case_keys.hpp"
+
+namespace plisse::app {
+namespace {
+
+struct CaseKeysOptions {
+  std::vector<std::string> sections;
+  std::string update;
+};
+
+void print_or_update(const CaseKeysOptions& o) {
+  if (!o.update.empty()) {
+    const std::string doc = read_file(o.update);
+    const std::string fresh = refresh_case_key_blocks(doc);
+    if (fresh != doc) write_file_atomically(o.update, fresh);
+    std::cout << o.update << (fresh != doc ? ": key tables regenerated\n" : ": up to date\n");
+    return;
+  }
+  const std::vector<std::string> sections = o.sections.empty() ? case_key_sections() : o.sections;
+  std::string text;
+  for (std::size_t i = 0; i < sections.size(); ++i)
+    text += (i ? "\n" : "") + ("<!-- generated: " + sections[i] + " -->\n") +
+            case_keys_markdown(sections[i]) + "<!-- end generated -->\n";
+  std::cout << text;
+}
+
+}  // namespace
+
+void add_case_keys_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "case-keys",
+      "Print the key tables of the case-file sections (markdown, as in docs/case-file.md)");
+  auto o = std::make_shared<CaseKeysOptions>();
+  auto* sections = cmd->add_option("sections", o->sections, "Sections to print (default: all)")
+                       ->check(CLI::IsMember(case_key_sections()));
+  cmd->add_option("--update", o->update,
+                  "Rewrite the generated blocks ('<!-- generated: SECTION -->' ... '<!-- end "
+                  "generated -->') of this markdown file, e.g. docs/case-file.md, instead of "
+                  "printing")
+      ->excludes(sections);
+  cmd->callback([o] { print_or_update(*o); });
+}
+
+}  // namespace plisse::app
