@@ -1,4 +1,5 @@
-// Where the time of one Newton iteration goes, on a real case (bench/README in docs/performance.md).
+// Where the time of one Newton iteration goes, on a real case (bench/README in
+// docs/performance.md).
 //
 //   plisse-newton-profile CASE.yaml [--time T] [--steps N] [--repeat R] [--set key=value ...]
 //
@@ -16,7 +17,6 @@
 // Newton iteration and PETSc's counts of symbolic and numeric factorisations.
 // Export OPENBLAS_NUM_THREADS=1 on a shared machine; OMP_NUM_THREADS sets assembly threads.
 #include <petscksp.h>
-
 #include <time.h>
 
 #include <chrono>
@@ -26,10 +26,10 @@
 #include <string>
 #include <vector>
 
+#include "app/model_builder.hpp"
 #include "io/case.hpp"
 #include "material/registry.hpp"
 #include "physics/dirichlet.hpp"
-#include "app/model_builder.hpp"
 #include "solver/mixed_model.hpp"
 #include "solver/newton_solver.hpp"
 #include "solver/petsc_call.hpp"
@@ -67,8 +67,8 @@ Timing time_calls(int repeat, const std::function<void()>& f) {
 }
 
 void print(const char* what, const Timing& t) {
-  std::printf("  %-38s wall best %8.4f s  mean %8.4f s   cpu best %8.4f s\n", what, t.best,
-              t.mean, t.cpu);
+  std::printf("  %-38s wall best %8.4f s  mean %8.4f s   cpu best %8.4f s\n", what, t.best, t.mean,
+              t.cpu);
 }
 
 /// Counts tangent entries and drops them (the terms' own cost without any scatter).
@@ -101,10 +101,14 @@ int run(int argc, char** argv) {
   std::vector<std::string> overrides;
   for (int i = 2; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
-    if (key == "--time") target_time = std::stod(value);
-    else if (key == "--steps") steps = std::stoi(value);
-    else if (key == "--repeat") repeat = std::stoi(value);
-    else if (key == "--set") overrides.push_back(value);
+    if (key == "--time")
+      target_time = std::stod(value);
+    else if (key == "--steps")
+      steps = std::stoi(value);
+    else if (key == "--repeat")
+      repeat = std::stoi(value);
+    else if (key == "--set")
+      overrides.push_back(value);
     else {
       std::fprintf(stderr, "unknown option %s\n", key.c_str());
       return 2;
@@ -119,9 +123,8 @@ int run(int argc, char** argv) {
   PLISSE_PETSC(PetscLogDefaultBegin());
   const std::unique_ptr<MixedModel> model_owner = app::make_model(mesh, std::move(parts));
   MixedModel& model = *model_owner;
-  std::printf("%s: %d nodes, %d tetrahedra, %d unknowns; %d assembly threads\n",
-              case_file.c_str(), mesh.n_nodes(), mesh.n_tets(), model.n_free(),
-              model.assembly_threads());
+  std::printf("%s: %d nodes, %d tetrahedra, %d unknowns; %d assembly threads\n", case_file.c_str(),
+              mesh.n_nodes(), mesh.n_tets(), model.n_free(), model.assembly_threads());
 
   NewtonSolver newton(model, c.solver.newton);
   const double dt = target_time / steps;
@@ -136,9 +139,11 @@ int run(int argc, char** argv) {
   }
 
   std::printf("after the steps: %d assembly threads\n", model.assembly_threads());
-  std::printf("pieces of one Newton iteration at t = %.4g + dt: the state extrapolated from the "
-              "last two steps (as a predictor), bubbles from the last converged step; %d calls "
-              "each:\n", target_time, repeat);
+  std::printf(
+      "pieces of one Newton iteration at t = %.4g + dt: the state extrapolated from the "
+      "last two steps (as a predictor), bubbles from the last converged step; %d calls "
+      "each:\n",
+      target_time, repeat);
   const MixedModel::Snapshot converged = model.snapshot();
   // From the converged state: bubbles converged there, nodal values moved one step ahead.
   const auto from_converged = [&] {
@@ -167,11 +172,13 @@ int run(int argc, char** argv) {
           bubble_iterations = 0;
           for (int e = 0; e < mesh.n_tets(); ++e) {
             for (int a = 0; a < 4; ++a) {
-              for (int i = 0; i < 3; ++i) x[3 * a + i] = model.state()[DofMap::dof(mesh.tets[e][a], i)];
+              for (int i = 0; i < 3; ++i)
+                x[3 * a + i] = model.state()[DofMap::dof(mesh.tets[e][a], i)];
               x[12 + a] = model.state()[DofMap::dof(mesh.tets[e][a], 3)];
             }
             mini::BubbleVec b(converged.bubbles.data() + 3 * e);
-            const auto st = mini::assemble_mini(geometry[e], x, mat, 0.0, b, r, tangent ? &k : nullptr);
+            const auto st =
+                mini::assemble_mini(geometry[e], x, mat, 0.0, b, r, tangent ? &k : nullptr);
             bubble_iterations += st.bubble_iterations;
           }
         },
@@ -181,24 +188,33 @@ int run(int argc, char** argv) {
   print("element kernel, with tangent", time_calls(repeat, [&] { kernel(true); }));
   std::printf("  (%.2f bubble evaluations per element)\n",
               static_cast<double>(bubble_iterations) / mesh.n_tets());
-  print("assemble_residual", time_calls(repeat, [&] { from_converged(); model.assemble_residual(f); }));
-  print("assemble_tangent", time_calls(repeat, [&] { from_converged(); model.assemble_tangent(K); }));
+  print("assemble_residual", time_calls(repeat, [&] {
+          from_converged();
+          model.assemble_residual(f);
+        }));
+  print("assemble_tangent", time_calls(repeat, [&] {
+          from_converged();
+          model.assemble_tangent(K);
+        }));
   print("  of which MatZeroEntries", time_calls(repeat, [&] { PLISSE_PETSC(MatZeroEntries(K)); }));
   print("restore + predictor (included above)", time_calls(repeat, from_converged));
   std::vector<double> scratch(model.state().size());
   NullSink sink;
   print("terms, residual only", time_calls(repeat, [&] {
-          for (auto& term : model.terms()) term->assemble(model.time(), model.state(), scratch, nullptr);
+          for (auto& term : model.terms())
+            term->assemble(model.time(), model.state(), scratch, nullptr);
         }));
   print("terms, with tangent (no-op sink)", time_calls(repeat, [&] {
-          for (auto& term : model.terms()) term->assemble(model.time(), model.state(), scratch, &sink);
+          for (auto& term : model.terms())
+            term->assemble(model.time(), model.state(), scratch, &sink);
         }));
   from_converged();
   model.assemble_tangent(K);
 
   MatInfo info;
   PLISSE_PETSC(MatGetInfo(K, MAT_LOCAL, &info));
-  std::printf("  matrix: %.0f nonzeros (%.1f per row)\n", info.nz_used, info.nz_used / model.n_free());
+  std::printf("  matrix: %.0f nonzeros (%.1f per row)\n", info.nz_used,
+              info.nz_used / model.n_free());
   KSP ksp = nullptr;
   PC pc = nullptr;
   PLISSE_PETSC(KSPCreate(PETSC_COMM_SELF, &ksp));
@@ -228,7 +244,8 @@ int run(int argc, char** argv) {
   Vec du = nullptr;
   PLISSE_PETSC(VecDuplicate(f, &du));
   model.assemble_residual(f);
-  print("solve (forward/backward)", time_calls(repeat, [&] { PLISSE_PETSC(KSPSolve(ksp, f, du)); }));
+  print("solve (forward/backward)",
+        time_calls(repeat, [&] { PLISSE_PETSC(KSPSolve(ksp, f, du)); }));
   KSPDestroy(&ksp);
   VecDestroy(&du);
   MatDestroy(&K);
@@ -248,8 +265,10 @@ int run(int argc, char** argv) {
   const double cpu = cpu_seconds() - c0;
   const PhaseTimes after = newton.times();
   const int its = std::max(r.iterations, 1);
-  std::printf("one load step through SNES: %d iterations, %.3f s (%.4f s per iteration), "
-              "cpu %.3f s\n", r.iterations, wall, wall / its, cpu);
+  std::printf(
+      "one load step through SNES: %d iterations, %.3f s (%.4f s per iteration), "
+      "cpu %.3f s\n",
+      r.iterations, wall, wall / its, cpu);
   std::printf("  %d residual and %d tangent assemblies\n",
               event_count("SNESFunctionEval") - residuals_before,
               event_count("SNESJacobianEval") - tangents_before);

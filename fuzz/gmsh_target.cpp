@@ -54,7 +54,8 @@ void check_postconditions(const Mesh& m) {
       if (!index_ok(v, n_nodes)) throw Finding("triangle edge node index out of range");
   for (const auto& [name, indices] : m.surface_tags)
     for (int i : indices)
-      if (!index_ok(i, m.triangles.size())) throw Finding("surface tag '" + name + "' out of range");
+      if (!index_ok(i, m.triangles.size()))
+        throw Finding("surface tag '" + name + "' out of range");
   for (const auto& [name, indices] : m.volume_tags)
     for (int i : indices)
       if (!index_ok(i, m.tets.size())) throw Finding("volume tag '" + name + "' out of range");
@@ -71,9 +72,9 @@ void check_gmsh_is_clean() {
   std::vector<std::string> models;
   gmsh::model::list(models);
   if (!entities.empty() || !views.empty() || models.size() != 1)
-    throw Finding("Gmsh state survived a read: " + std::to_string(entities.size()) +
-                  " entities, " + std::to_string(views.size()) + " views, " +
-                  std::to_string(models.size()) + " models");
+    throw Finding("Gmsh state survived a read: " + std::to_string(entities.size()) + " entities, " +
+                  std::to_string(views.size()) + " views, " + std::to_string(models.size()) +
+                  " models");
   if (!session.take_errors().empty()) throw Finding("Gmsh errors logged by an earlier session");
 }
 

@@ -42,7 +42,8 @@ void launch_ranks(int ranks, const RunOptions& options) {
   // This executable, then the arguments it was given (its -n is checked in the children).
   char self[4096];
   const ssize_t length = ::readlink("/proc/self/exe", self, sizeof self - 1);
-  if (length <= 0) throw Error("cannot find this executable (/proc/self/exe) to start it under mpiexec");
+  if (length <= 0)
+    throw Error("cannot find this executable (/proc/self/exe) to start it under mpiexec");
   self[length] = '\0';
   words.emplace_back(self);
   for (int i = 1; i < command_line().argc; ++i) words.emplace_back(command_line().argv[i]);

@@ -58,8 +58,9 @@ void recompute_wrinkles(const WrinklesOptions& options) {
   for (const std::string& o : options.overrides)
     if (o.rfind("output.wrinkles.", 0) != 0)
       throw InputError({"command line", 0, 0, "--set"},
-                       "'" + o + "': only output.wrinkles.* can change after the run (anything "
-                       "else would not match the computed state)");
+                       "'" + o +
+                           "': only output.wrinkles.* can change after the run (anything "
+                           "else would not match the computed state)");
   if (!fs::exists(case_path, ec))
     throw InputError({summary_path.string(), 0, 0, "case_path"},
                      "the case file of this run, " + case_path + ", no longer exists");
@@ -70,8 +71,9 @@ void recompute_wrinkles(const WrinklesOptions& options) {
   const Checkpoint checkpoint = read_checkpoint(dir / "checkpoint.bin");
   if (checkpoint.case_fingerprint != case_fingerprint(case_path, run_overrides))
     throw InputError({(dir / "checkpoint.bin").string(), 0, 0, "DIR"},
-                     "the case file " + case_path + " changed since this run: its state no longer "
-                     "matches the case");
+                     "the case file " + case_path +
+                         " changed since this run: its state no longer "
+                         "matches the case");
   if (!c.output.wrinkles.enabled())
     throw InputError({case_path, 0, 0, "output.wrinkles.rings_deg"},
                      "no rings to measure: give their latitudes, e.g. --set "
@@ -91,10 +93,11 @@ void recompute_wrinkles(const WrinklesOptions& options) {
   summary["wrinkles"] = wrinkles_json(c, result);
   write_json_file(summary_path, summary);
 
-  std::printf("plisse wrinkles: %s, step %d at t = %g: %s (max amplitude %.4g mm, threshold %.4g mm)\n",
-              dir.string().c_str(), checkpoint.steps, checkpoint.time,
-              result.rings.wrinkled ? "wrinkled" : "not wrinkled", result.rings.max_amplitude,
-              result.rings.threshold);
+  std::printf(
+      "plisse wrinkles: %s, step %d at t = %g: %s (max amplitude %.4g mm, threshold %.4g mm)\n",
+      dir.string().c_str(), checkpoint.steps, checkpoint.time,
+      result.rings.wrinkled ? "wrinkled" : "not wrinkled", result.rings.max_amplitude,
+      result.rings.threshold);
   std::printf("  %14s %7s %16s %16s %14s %7s\n", "latitude [deg]", "count", "amplitude [mm]",
               "wavelength [mm]", "radius [mm]", "points");
   for (const RingMetrics& r : result.rings.rings)

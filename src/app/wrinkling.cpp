@@ -29,11 +29,13 @@ fs::path find_mode_file(const Case& c, const std::string& field) {
   place.key = "solver.stability.imperfection_from";
   std::error_code ec;
   if (!fs::exists(from, ec))
-    throw InputError(place, "'" + from.string() + "' does not exist (a run directory or a .vtu file)");
+    throw InputError(place,
+                     "'" + from.string() + "' does not exist (a run directory or a .vtu file)");
   if (!fs::is_directory(from, ec)) return from;
   const fs::path pvd = from / "solution.pvd";
   if (!fs::exists(pvd, ec))
-    throw InputError(place, "'" + from.string() + "' holds no solution.pvd: not a plisse run directory");
+    throw InputError(place,
+                     "'" + from.string() + "' holds no solution.pvd: not a plisse run directory");
   std::vector<PvdEntry> entries;
   try {
     entries = read_pvd(pvd);
@@ -49,9 +51,10 @@ fs::path find_mode_file(const Case& c, const std::string& field) {
       // A damaged step file cannot hold the mode; keep looking.
     }
   }
-  throw InputError(place, "no step of the run in '" + from.string() + "' holds the field '" + field +
-                              "' (modes are written at the step where the stability check finds "
-                              "a new instability: run that case with solver.stability.check: true)");
+  throw InputError(place,
+                   "no step of the run in '" + from.string() + "' holds the field '" + field +
+                       "' (modes are written at the step where the stability check finds "
+                       "a new instability: run that case with solver.stability.check: true)");
 }
 
 std::vector<Vec3d> mode_shape(const Case& c, const Mesh& mesh) {
@@ -63,16 +66,17 @@ std::vector<Vec3d> mode_shape(const Case& c, const Mesh& mesh) {
   try {
     values = read_vtu_point_field(file, field);
   } catch (const Error& e) {
-    throw InputError(place, "cannot read the field '" + field + "' of " + file.string() + ": " + e.what());
+    throw InputError(place,
+                     "cannot read the field '" + field + "' of " + file.string() + ": " + e.what());
   }
   if (values.n_components != 3 ||
       values.values.size() != 3 * static_cast<std::size_t>(mesh.n_nodes()))
-    throw InputError(place, file.string() + " has " +
-                                std::to_string(values.values.size() / std::max(values.n_components, 1)) +
-                                " points with " + std::to_string(values.n_components) +
-                                " components in '" + field + "'; this case's mesh has " +
-                                std::to_string(mesh.n_nodes()) +
-                                " nodes (the mode must come from a run on the same mesh)");
+    throw InputError(
+        place, file.string() + " has " +
+                   std::to_string(values.values.size() / std::max(values.n_components, 1)) +
+                   " points with " + std::to_string(values.n_components) + " components in '" +
+                   field + "'; this case's mesh has " + std::to_string(mesh.n_nodes()) +
+                   " nodes (the mode must come from a run on the same mesh)");
   std::vector<Vec3d> shape(mesh.n_nodes());
   for (int v = 0; v < mesh.n_nodes(); ++v)
     shape[v] = Vec3d(values.values[3 * v], values.values[3 * v + 1], values.values[3 * v + 2]);
@@ -80,7 +84,8 @@ std::vector<Vec3d> mode_shape(const Case& c, const Mesh& mesh) {
 }
 
 double triangle_area(const Mesh& mesh, const std::array<int, 3>& t) {
-  return 0.5 * (mesh.nodes[t[1]] - mesh.nodes[t[0]]).cross(mesh.nodes[t[2]] - mesh.nodes[t[0]]).norm();
+  return 0.5 *
+         (mesh.nodes[t[1]] - mesh.nodes[t[0]]).cross(mesh.nodes[t[2]] - mesh.nodes[t[0]]).norm();
 }
 
 }  // namespace

@@ -3,9 +3,8 @@
 /// with its imperfection, the stepper's stability options, and the wrinkle metrics of a converged
 /// state (rings, tension-field state) in the form of history columns, VTU fields and the
 /// summary.json table (docs/architecture.md, "Stability and wrinkling"; docs/theory/wrinkles.md).
-#include <nlohmann/json.hpp>
-
 #include <array>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>

@@ -59,22 +59,22 @@ class SolverError : public Error {
 
 }  // namespace plisse
 
-#define FE_CHECK(cond, msg)                                                                   \
-  do {                                                                                        \
-    if (!(cond)) {                                                                            \
-      std::ostringstream fe_check_stream_;                                                    \
-      fe_check_stream_ << msg;                                                                \
-      throw ::plisse::Error(fe_check_stream_.str());                                          \
-    }                                                                                         \
+#define FE_CHECK(cond, msg)                          \
+  do {                                               \
+    if (!(cond)) {                                   \
+      std::ostringstream fe_check_stream_;           \
+      fe_check_stream_ << msg;                       \
+      throw ::plisse::Error(fe_check_stream_.str()); \
+    }                                                \
   } while (false)
 
 #ifdef NDEBUG
 #define FE_ASSERT(cond) ((void)0)
 #else
-#define FE_ASSERT(cond)                                                                       \
-  do {                                                                                        \
-    if (!(cond))                                                                              \
+#define FE_ASSERT(cond)                                                                          \
+  do {                                                                                           \
+    if (!(cond))                                                                                 \
       throw ::plisse::Error(std::string("internal error: assertion failed: ") + #cond + " at " + \
-                            __FILE__ + ":" + std::to_string(__LINE__));                       \
+                            __FILE__ + ":" + std::to_string(__LINE__));                          \
   } while (false)
 #endif

@@ -9,7 +9,8 @@
 
 namespace plisse {
 
-/// An admissible interval for a real parameter. Bounds may be open or closed; values must be finite.
+/// An admissible interval for a real parameter. Bounds may be open or closed; values must be
+/// finite.
 struct Range {
   double lower = -std::numeric_limits<double>::infinity();
   double upper = std::numeric_limits<double>::infinity();
@@ -18,9 +19,13 @@ struct Range {
 
   static Range any() { return {}; }
   static Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true, true}; }
-  static Range non_negative() { return {0.0, std::numeric_limits<double>::infinity(), false, true}; }
+  static Range non_negative() {
+    return {0.0, std::numeric_limits<double>::infinity(), false, true};
+  }
   static Range closed(double lo, double hi) { return {lo, hi, false, false}; }
-  static Range at_least(double lo) { return {lo, std::numeric_limits<double>::infinity(), false, true}; }
+  static Range at_least(double lo) {
+    return {lo, std::numeric_limits<double>::infinity(), false, true};
+  }
 
   /// Empty when `value` is admissible, otherwise the rule broken, e.g. "must be > 0 (got -1)".
   std::optional<std::string> violation(double value) const;

@@ -4,8 +4,10 @@
 
 namespace plisse {
 
-template <class T> using Mat3 = Eigen::Matrix<T, 3, 3>;
-template <class T> using Vec3 = Eigen::Matrix<T, 3, 1>;
+template <class T>
+using Mat3 = Eigen::Matrix<T, 3, 3>;
+template <class T>
+using Vec3 = Eigen::Matrix<T, 3, 1>;
 using Mat3d = Mat3<double>;
 using Vec3d = Vec3<double>;
 /// Fourth-order tensor acting on vec(F) (9 components, column-major vec).

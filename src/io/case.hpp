@@ -31,7 +31,7 @@
 namespace plisse {
 
 struct MeshSection {
-  std::optional<std::string> file;            ///< `file:` resolved against the case directory
+  std::optional<std::string> file;             ///< `file:` resolved against the case directory
   std::optional<MeshGenerationSpec> generate;  ///< `generate: KIND` plus the kind's options
   InputPlace place;                            ///< where `mesh:` is
   InputPlace file_place;                       ///< where the `file:` value is (file meshes)
@@ -54,9 +54,9 @@ struct MaterialSection {
   std::string model;                     ///< registry name, e.g. "neo-hookean"
   std::map<std::string, double> params;  ///< validated against the material registry
   std::map<std::string, InputPlace> param_places;
-  bool exact_incompressibility = true;   ///< `incompressibility: exact | nearly`
-  double bulk_modulus = 0.0;             ///< [MPa], > 0, required when nearly incompressible
-  double density = 0.0;                  ///< [tonne/mm^3], >= 0 (gravity loads)
+  bool exact_incompressibility = true;  ///< `incompressibility: exact | nearly`
+  double bulk_modulus = 0.0;            ///< [MPa], > 0, required when nearly incompressible
+  double density = 0.0;                 ///< [tonne/mm^3], >= 0 (gravity loads)
   InputPlace place;
   /// 1/κ [1/MPa] as the mixed formulation takes it: 0 for exact incompressibility.
   double inverse_bulk_modulus() const { return exact_incompressibility ? 0.0 : 1.0 / bulk_modulus; }
@@ -66,9 +66,9 @@ enum class LoadType { pressure, gravity };
 
 struct Load {
   LoadType type = LoadType::pressure;
-  std::string name;     ///< unique; history column `pressure:<name>`
-  SurfaceRef surface;   ///< pressure only
-  double value = 0.0;   ///< pressure [MPa], positive pushes against the body's outward normal
+  std::string name;    ///< unique; history column `pressure:<name>`
+  SurfaceRef surface;  ///< pressure only
+  double value = 0.0;  ///< pressure [MPa], positive pushes against the body's outward normal
   Vec3d acceleration = Vec3d::Zero();  ///< gravity only [mm/s^2], e.g. [0, -9810, 0]
   Ramp ramp;
   InputPlace place;
@@ -78,17 +78,17 @@ struct Load {
 struct Die {
   std::string name;  ///< history columns `force_x:<name>` ...
   DieShape shape = DieShape::plane;
-  Vec3d point = Vec3d::Zero();   ///< plane: a point; sphere/cylinder: centre / a point on the axis
+  Vec3d point = Vec3d::Zero();    ///< plane: a point; sphere/cylinder: centre / a point on the axis
   Vec3d normal = Vec3d::UnitY();  ///< plane: unit normal pointing towards the body (normalised)
   Vec3d axis = Vec3d::UnitZ();    ///< cylinder: axis direction (normalised)
   double radius = 0.0;            ///< sphere, cylinder [mm], > 0
   ContactKind contact = ContactKind::frictionless;
-  std::optional<SurfaceRef> region;  ///< sticking: glued from the start on this tag
-  std::optional<SurfaceRef> surface;  ///< candidate contact surface (default: whole boundary)
+  std::optional<SurfaceRef> region;    ///< sticking: glued from the start on this tag
+  std::optional<SurfaceRef> surface;   ///< candidate contact surface (default: whole boundary)
   Vec3d displacement = Vec3d::Zero();  ///< `move.displacement` [mm] at the end of the ramp
   Ramp ramp;                           ///< `move.ramp`
-  double penalty = 0.0;    ///< [MPa/mm]; 0: chosen from the material and mesh
-  double tolerance = 1e-3;  ///< allowed penetration [mm], > 0
+  double penalty = 0.0;                ///< [MPa/mm]; 0: chosen from the material and mesh
+  double tolerance = 1e-3;             ///< allowed penetration [mm], > 0
   InputPlace place;
 };
 
@@ -107,13 +107,13 @@ struct StabilitySettings {
   int modes = 4;               ///< eigenmodes computed at an instability, >= 1
   double imperfection = 0.0;   ///< amplitude / wall thickness, >= 0
   std::string imperfection_kind = "random";  ///< random | mode
-  int seed = 1;                ///< random imperfection seed
+  int seed = 1;                              ///< random imperfection seed
   /// mode: the run directory (or a .vtu file in it) whose `mode_<imperfection_mode>` point field
   /// shapes the imperfection; resolved against the case directory.
   std::string imperfection_from;
-  int imperfection_mode = 1;   ///< >= 1
+  int imperfection_mode = 1;      ///< >= 1
   double branch_amplitude = 0.1;  ///< perturbation along the critical mode / wall thickness, > 0
-  InputPlace place;            ///< where `stability:` is
+  InputPlace place;               ///< where `stability:` is
 };
 
 /// `solver:`: the stepping and Newton settings (solver/stepping_settings.hpp) and what the app
@@ -127,22 +127,22 @@ struct SolverSettings : SteppingSettings {
 };
 
 struct WrinkleSettings {
-  char axis = 'y';                    ///< 'x' | 'y' | 'z'
-  Vec3d center = Vec3d::Zero();       ///< a point on the axis [mm]
-  std::vector<double> rings_deg;      ///< latitudes [deg] in (-90, 90)
-  double threshold = 0.1;             ///< wrinkled when amplitude > threshold * thickness, > 0
-  int min_count = 3;                  ///< smaller full-circle counts are global shape modes, >= 1
-  std::string surface = "outer";      ///< the tagged surface the rings lie on
-  InputPlace place;                   ///< where `wrinkles:` is
+  char axis = 'y';                ///< 'x' | 'y' | 'z'
+  Vec3d center = Vec3d::Zero();   ///< a point on the axis [mm]
+  std::vector<double> rings_deg;  ///< latitudes [deg] in (-90, 90)
+  double threshold = 0.1;         ///< wrinkled when amplitude > threshold * thickness, > 0
+  int min_count = 3;              ///< smaller full-circle counts are global shape modes, >= 1
+  std::string surface = "outer";  ///< the tagged surface the rings lie on
+  InputPlace place;               ///< where `wrinkles:` is
   InputPlace surface_place;
   bool enabled() const { return !rings_deg.empty(); }
 };
 
 struct OutputSettings {
-  int every = 1;                 ///< VTU every N converged steps (the last one always), >= 1
-  int checkpoint_every = 10;     ///< checkpoint every N converged steps (and on SIGINT/SIGTERM),
-                                 ///< >= 0; 0: only on signals
-  bool deformed = false;         ///< write deformed coordinates instead of reference ones
+  int every = 1;              ///< VTU every N converged steps (the last one always), >= 1
+  int checkpoint_every = 10;  ///< checkpoint every N converged steps (and on SIGINT/SIGTERM),
+                              ///< >= 0; 0: only on signals
+  bool deformed = false;      ///< write deformed coordinates instead of reference ones
   /// Optional 'x' | 'y' | 'z': adds a history column `stretch` = volume average of F along that
   /// axis (the columns `cauchy_xx` ... `cauchy_xz`, deformed-volume averages, are always there).
   std::optional<char> stretch_axis;

@@ -90,9 +90,11 @@ void check_wall_thickness(const Case& c) {
                                       : "the generated cube has no wall";
   const StabilitySettings& st = c.solver.stability;
   if (st.imperfection > 0.0)
-    throw InputError(st.place, "the imperfection amplitude is relative to the wall thickness: " + why);
+    throw InputError(st.place,
+                     "the imperfection amplitude is relative to the wall thickness: " + why);
   if (st.branch_switch)
-    throw InputError(st.place, "the branch-switching perturbation is relative to the wall thickness: " + why);
+    throw InputError(st.place,
+                     "the branch-switching perturbation is relative to the wall thickness: " + why);
   if (c.output.wrinkles.enabled())
     throw InputError(c.output.wrinkles.place,
                      "the wrinkle threshold is relative to the wall thickness: " + why);

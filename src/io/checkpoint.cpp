@@ -17,13 +17,15 @@ constexpr std::uint32_t kVersion = 2;  // 2: negative_pivots after the term stat
 
 class Writer {
  public:
-  template <class T> void value(const T& v) {
+  template <class T>
+  void value(const T& v) {
     const auto* p = reinterpret_cast<const char*>(&v);
     bytes_.append(p, sizeof(T));
   }
   void doubles(const std::vector<double>& v) {
     value<std::uint64_t>(v.size());
-    if (!v.empty()) bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
+    if (!v.empty())
+      bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
   }
   void raw(const char* p, size_t n) { bytes_.append(p, n); }
   const std::string& bytes() const { return bytes_; }
@@ -34,8 +36,10 @@ class Writer {
 
 class Reader {
  public:
-  Reader(std::string bytes, std::filesystem::path path) : bytes_(std::move(bytes)), path_(std::move(path)) {}
-  template <class T> T value() {
+  Reader(std::string bytes, std::filesystem::path path)
+      : bytes_(std::move(bytes)), path_(std::move(path)) {}
+  template <class T>
+  T value() {
     need(sizeof(T));
     T v;
     std::memcpy(&v, bytes_.data() + at_, sizeof(T));
@@ -46,7 +50,8 @@ class Reader {
     const auto n = value<std::uint64_t>();
     if (n > (bytes_.size() - at_) / sizeof(double)) fail("truncated or corrupt (array too long)");
     std::vector<double> v(n);
-    if (n > 0) std::memcpy(v.data(), bytes_.data() + at_, n * sizeof(double));  // data() may be null
+    if (n > 0)
+      std::memcpy(v.data(), bytes_.data() + at_, n * sizeof(double));  // data() may be null
     at_ += n * sizeof(double);
     return v;
   }

@@ -10,14 +10,14 @@
 namespace plisse {
 
 struct Checkpoint {
-  std::uint64_t case_fingerprint = 0;  ///< of the case text and its --set overrides
-  int steps = 0;                       ///< converged steps
-  double time = 0.0;                   ///< of the last converged step [s]
-  double dt = 0.0;                     ///< next step size
-  double previous_dt = 0.0;            ///< last step size
-  std::vector<double> previous_state;  ///< converged state before the last one
-  std::vector<double> state;           ///< last converged full state
-  std::vector<double> bubbles;         ///< element bubbles of that state
+  std::uint64_t case_fingerprint = 0;            ///< of the case text and its --set overrides
+  int steps = 0;                                 ///< converged steps
+  double time = 0.0;                             ///< of the last converged step [s]
+  double dt = 0.0;                               ///< next step size
+  double previous_dt = 0.0;                      ///< last step size
+  std::vector<double> previous_state;            ///< converged state before the last one
+  std::vector<double> state;                     ///< last converged full state
+  std::vector<double> bubbles;                   ///< element bubbles of that state
   std::vector<std::vector<double>> term_states;  ///< per model term (contact history ...)
   int negative_pivots = -1;  ///< stability check: of the last converged step (-1: not checked)
 };

@@ -24,7 +24,8 @@ struct ArrudaBoyce {
                                                    19.0 / 7000.0, 519.0 / 673750.0};
 
   /// W(F) for any scalar type (dual numbers in tests). Precondition: det F > 0.
-  template <class T> T energy(const Mat3<T>& F) const {
+  template <class T>
+  T energy(const Mat3<T>& F) const {
     const IsochoricInvariants<T> inv = compute_isochoric_invariants(F);
     const double beta = 1.0 / (lambda_m * lambda_m);
     T W = 0.0 * inv.I1bar;

@@ -16,7 +16,8 @@ struct Fung {
   double gamma = 0.0;  ///< [-], > 0 (stiffening exponent)
 
   /// W(F) for any scalar type (dual numbers in tests). Precondition: det F > 0.
-  template <class T> T energy(const Mat3<T>& F) const {
+  template <class T>
+  T energy(const Mat3<T>& F) const {
     using std::exp;
     const IsochoricInvariants<T> inv = compute_isochoric_invariants(F);
     return mu / (2.0 * gamma) * (exp(gamma * (inv.I1bar - 3.0)) - 1.0);

@@ -18,7 +18,8 @@ struct Gent {
   double jm = 0.0;  ///< [-], > 0: limit of Ī1 - 3
 
   /// W(F) for any scalar type (dual numbers in tests). Preconditions: det F > 0, Ī1 - 3 < jm.
-  template <class T> T energy(const Mat3<T>& F) const {
+  template <class T>
+  T energy(const Mat3<T>& F) const {
     using std::log;
     const IsochoricInvariants<T> inv = compute_isochoric_invariants(F);
     return -0.5 * mu * jm * log(1.0 - (inv.I1bar - 3.0) / jm);

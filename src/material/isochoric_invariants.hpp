@@ -11,7 +11,8 @@
 namespace plisse {
 
 /// J = det F, Ī1 = J^{-2/3} I1, Ī2 = J^{-4/3} I2 of C = F^T F  (materials.md, M1-M3).
-template <class T> struct IsochoricInvariants {
+template <class T>
+struct IsochoricInvariants {
   T J;
   T I1bar;
   T I2bar;
@@ -19,7 +20,8 @@ template <class T> struct IsochoricInvariants {
 
 /// The invariants for any scalar type (double, or a dual number in tests). No domain check: for
 /// det F <= 0 the result is NaN. The hot path uses compute_isochoric_kinematics instead.
-template <class T> IsochoricInvariants<T> compute_isochoric_invariants(const Mat3<T>& F) {
+template <class T>
+IsochoricInvariants<T> compute_isochoric_invariants(const Mat3<T>& F) {
   using std::exp;  // dual-number overloads are found by argument-dependent lookup
   using std::log;
   const Mat3<T> C = F.transpose() * F;
@@ -71,7 +73,8 @@ PointResponse compute_isochoric_response(const IsochoricKinematics& kin,
 /// The whole evaluation for a model that provides
 ///   InvariantDerivatives invariant_derivatives(double I1bar, double I2bar) const;
 /// Throws InadmissibleDeformation as compute_isochoric_kinematics (and as the model does).
-template <class Model> PointResponse evaluate_isochoric(const Model& model, const Mat3d& F) {
+template <class Model>
+PointResponse evaluate_isochoric(const Model& model, const Mat3d& F) {
   const IsochoricKinematics k = compute_isochoric_kinematics(F);
   return compute_isochoric_response(k, model.invariant_derivatives(k.I1bar, k.I2bar));
 }

@@ -18,7 +18,8 @@ struct MooneyRivlin {
   double c2 = 0.0;  ///< [MPa], >= 0, c1 + c2 > 0
 
   /// W(F) for any scalar type (dual numbers in tests). Precondition: det F > 0.
-  template <class T> T energy(const Mat3<T>& F) const {
+  template <class T>
+  T energy(const Mat3<T>& F) const {
     const IsochoricInvariants<T> inv = compute_isochoric_invariants(F);
     return c1 * (inv.I1bar - 3.0) + c2 * (inv.I2bar - 3.0);
   }

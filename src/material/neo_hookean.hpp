@@ -13,7 +13,8 @@ struct NeoHookean {
   double c1 = 0.0;  ///< [MPa], > 0
 
   /// W(F) for any scalar type (dual numbers in tests). Precondition: det F > 0.
-  template <class T> T energy(const Mat3<T>& F) const {
+  template <class T>
+  T energy(const Mat3<T>& F) const {
     const IsochoricInvariants<T> inv = compute_isochoric_invariants(F);
     return c1 * (inv.I1bar - 3.0);
   }

@@ -18,14 +18,15 @@ std::string number(double v) {  // same format as core/parameter.cpp, so message
 }
 
 /// A declared parameter bound to the model member it sets.
-template <class Model> struct BoundParam {
+template <class Model>
+struct BoundParam {
   ParamSpec spec;
   double Model::*member;
 };
 
-template <class Model> BoundParam<Model> param(std::string name, double Model::*member, Range range,
-                                               std::string unit, std::string help,
-                                               std::optional<double> default_value = std::nullopt) {
+template <class Model>
+BoundParam<Model> param(std::string name, double Model::*member, Range range, std::string unit,
+                        std::string help, std::optional<double> default_value = std::nullopt) {
   return {ParamSpec{std::move(name), range, std::move(unit), std::move(help), default_value},
           member};
 }
@@ -34,8 +35,9 @@ struct ModelText {
   std::string name, formula, shear_modulus, reference, note;
 };
 
-template <class Model> MaterialModelInfo add(ModelText text, std::vector<BoundParam<Model>> params,
-                                             std::vector<CrossRule> rules = {}) {
+template <class Model>
+MaterialModelInfo add(ModelText text, std::vector<BoundParam<Model>> params,
+                      std::vector<CrossRule> rules = {}) {
   MaterialModelInfo info;
   info.name = std::move(text.name);
   info.formula = std::move(text.formula);

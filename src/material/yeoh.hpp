@@ -17,7 +17,8 @@ struct Yeoh {
   double c3 = 0.0;  ///< [MPa], >= 0
 
   /// W(F) for any scalar type (dual numbers in tests). Precondition: det F > 0.
-  template <class T> T energy(const Mat3<T>& F) const {
+  template <class T>
+  T energy(const Mat3<T>& F) const {
     const IsochoricInvariants<T> inv = compute_isochoric_invariants(F);
     const T x = inv.I1bar - 3.0;
     return x * (c1 + x * (c2 + x * c3));

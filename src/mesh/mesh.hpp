@@ -15,8 +15,8 @@
 namespace plisse {
 
 struct Mesh {
-  std::vector<Vec3d> nodes;                  ///< reference coordinates [mm]
-  std::vector<std::array<int, 4>> tets;      ///< corner nodes, positively oriented (det > 0)
+  std::vector<Vec3d> nodes;                        ///< reference coordinates [mm]
+  std::vector<std::array<int, 4>> tets;            ///< corner nodes, positively oriented (det > 0)
   std::vector<std::array<int, 6>> tet_edge_nodes;  ///< second order only: Gmsh edge order
                                                    ///< (01, 12, 20, 30, 32, 31); else empty
   std::vector<std::array<int, 3>> triangles;       ///< boundary triangles (corner nodes)

@@ -3,8 +3,8 @@
 #include <gmsh.h>
 
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <numbers>

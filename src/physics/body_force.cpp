@@ -19,7 +19,8 @@ void BodyForce::assemble(double t, std::span<const double>, std::span<double> re
                          TangentSink*) {
   const Vec3d f = ramp_.factor(t) * force_density_;
   for (size_t v = 0; v < nodal_volume_.size(); ++v)
-    for (int i = 0; i < 3; ++i) residual[node_dof(static_cast<int>(v), i)] -= f[i] * nodal_volume_[v];
+    for (int i = 0; i < 3; ++i)
+      residual[node_dof(static_cast<int>(v), i)] -= f[i] * nodal_volume_[v];
 }
 
 }  // namespace plisse

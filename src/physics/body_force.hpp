@@ -3,8 +3,8 @@
 #include <vector>
 
 #include "mesh/mesh.hpp"
-#include "physics/ramp.hpp"
 #include "physics/model_term.hpp"
+#include "physics/ramp.hpp"
 
 namespace plisse {
 

@@ -12,7 +12,8 @@ int coordinate_plane_axis(const Mesh& mesh, const std::vector<int>& triangles, d
   int axis = -1;
   for (int t : triangles) {
     const auto& tri = mesh.triangles[t];
-    const Vec3d n = (mesh.nodes[tri[1]] - mesh.nodes[tri[0]]).cross(mesh.nodes[tri[2]] - mesh.nodes[tri[0]]);
+    const Vec3d n =
+        (mesh.nodes[tri[1]] - mesh.nodes[tri[0]]).cross(mesh.nodes[tri[2]] - mesh.nodes[tri[0]]);
     const double norm = n.norm();
     if (norm == 0.0) continue;  // degenerate triangles are reported by the mesh check
     int a = 0;
@@ -41,8 +42,9 @@ std::vector<ConstrainedComponent> collect_constraints(
     auto [it, inserted] = by_dof.try_emplace({node, comp}, cc, &bc);
     if (inserted) return;
     const ConstrainedComponent& old = it->second.first;
-    const bool same = (old.value == 0.0 && value == 0.0) ||
-                      (old.value == value && old.ramp.start == ramp.start && old.ramp.end == ramp.end);
+    const bool same =
+        (old.value == 0.0 && value == 0.0) ||
+        (old.value == value && old.ramp.start == ramp.start && old.ramp.end == ramp.end);
     if (!same) {
       const char* axis = "xyz";
       throw InputError(bc.place, "node " + std::to_string(node) + " already has its " +

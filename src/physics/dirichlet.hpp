@@ -3,16 +3,16 @@
 /// components of nodes.
 #include <vector>
 
+#include "mesh/mesh.hpp"
 #include "physics/boundary_condition.hpp"
 #include "physics/ramp.hpp"
-#include "mesh/mesh.hpp"
 
 namespace plisse {
 
 /// One constrained displacement component: u_component(node, t) = value * ramp.factor(t).
 struct ConstrainedComponent {
   int node = 0;
-  int component = 0;  ///< 0, 1, 2 = x, y, z
+  int component = 0;   ///< 0, 1, 2 = x, y, z
   double value = 0.0;  ///< [mm] at the end of the ramp
   Ramp ramp;
   double at(double t) const { return value * ramp.factor(t); }

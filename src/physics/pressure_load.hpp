@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "mesh/mesh.hpp"
-#include "physics/ramp.hpp"
 #include "physics/dirichlet.hpp"
 #include "physics/model_term.hpp"
+#include "physics/ramp.hpp"
 
 namespace plisse {
 

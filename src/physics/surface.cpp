@@ -31,8 +31,8 @@ std::vector<std::array<int, 3>> outward_triangles(const Mesh& mesh, const std::s
     auto key = tri;
     std::sort(key.begin(), key.end());
     const int opposite = wanted.at(key);
-    FE_CHECK(opposite >= 0, "triangle " << t << " of surface '" << name
-                                        << "' is not a face of any tetrahedron");
+    FE_CHECK(opposite >= 0,
+             "triangle " << t << " of surface '" << name << "' is not a face of any tetrahedron");
     const Vec3d& x0 = mesh.nodes[tri[0]];
     const Vec3d n = (mesh.nodes[tri[1]] - x0).cross(mesh.nodes[tri[2]] - x0);
     if (n.dot(mesh.nodes[opposite] - x0) > 0) std::swap(tri[1], tri[2]);

@@ -7,8 +7,9 @@ namespace plisse {
 DofMap::DofMap(int n_nodes, int n_global, const std::vector<ConstrainedComponent>& constrained,
                const std::vector<int>& node_order)
     : equation_(static_cast<size_t>(kPerNode) * n_nodes + n_global, 0), n_nodes_(n_nodes) {
-  FE_CHECK(node_order.empty() || node_order.size() == static_cast<size_t>(n_nodes),
-           "DofMap: a node order of " << node_order.size() << " entries for " << n_nodes << " nodes");
+  FE_CHECK(
+      node_order.empty() || node_order.size() == static_cast<size_t>(n_nodes),
+      "DofMap: a node order of " << node_order.size() << " entries for " << n_nodes << " nodes");
   for (const auto& c : constrained) equation_[dof(c.node, c.component)] = -1;
   const auto number = [&](int d) {
     if (equation_[d] < 0) return;

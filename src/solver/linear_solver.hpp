@@ -26,8 +26,8 @@
 #include <petscis.h>
 #include <petscksp.h>
 
-#include "solver/newton_settings.hpp"
 #include "solver/dof_map.hpp"
+#include "solver/newton_settings.hpp"
 
 namespace plisse {
 

@@ -14,10 +14,14 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 const char* line_search_type(LineSearch ls) {
   switch (ls) {
-    case LineSearch::bt: return SNESLINESEARCHBT;
-    case LineSearch::basic: return SNESLINESEARCHBASIC;
-    case LineSearch::l2: return SNESLINESEARCHL2;
-    case LineSearch::cp: return SNESLINESEARCHCP;
+    case LineSearch::bt:
+      return SNESLINESEARCHBT;
+    case LineSearch::basic:
+      return SNESLINESEARCHBASIC;
+    case LineSearch::l2:
+      return SNESLINESEARCHL2;
+    case LineSearch::cp:
+      return SNESLINESEARCHCP;
   }
   return SNESLINESEARCHBT;
 }
@@ -133,8 +137,8 @@ PhaseTimes NewtonSolver::times() const {
     return static_cast<double>(info.time);
   };
   for (const char* name : {"MatCholFctrSym", "MatCholFctrNum", "MatLUFactorSym", "MatLUFactorNum"})
-    t.factorisation += event_time(name, std::string(name).find("Num") != std::string::npos
-                                            ? &t.factorisations : nullptr);
+    t.factorisation += event_time(
+        name, std::string(name).find("Num") != std::string::npos ? &t.factorisations : nullptr);
   t.triangular_solve = event_time("MatSolve", nullptr);
   return t;
 }

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "solver/newton_settings.hpp"
 #include "solver/mixed_model.hpp"
+#include "solver/newton_settings.hpp"
 
 namespace plisse {
 
@@ -24,11 +24,12 @@ struct NewtonResult {
 
 /// Wall time spent per phase [s], accumulated over all solves.
 struct PhaseTimes {
-  double assembly = 0.0;       ///< residual and tangent assembly
-  double linear_solve = 0.0;   ///< everything in SNES but assembly: factorisation, solves, line search
-  double factorisation = 0.0;  ///< symbolic and numeric factorisation (PETSc's event log)
+  double assembly = 0.0;  ///< residual and tangent assembly
+  double linear_solve =
+      0.0;  ///< everything in SNES but assembly: factorisation, solves, line search
+  double factorisation = 0.0;     ///< symbolic and numeric factorisation (PETSc's event log)
   double triangular_solve = 0.0;  ///< forward/backward substitution (PETSc's event log)
-  int factorisations = 0;      ///< numeric factorisations
+  int factorisations = 0;         ///< numeric factorisations
 };
 
 /// Sets plisse's defaults on `snes` (tolerances, line search, direct solve with MUMPS: LDL^T when

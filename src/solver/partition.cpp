@@ -45,9 +45,9 @@ std::vector<int> partition_here(const std::vector<int>& start, const std::vector
 
 std::vector<int> partition_graph(const std::vector<int>& start, const std::vector<int>& adjacency,
                                  const std::vector<int>& weights, int parts, MPI_Comm comm) {
-  FE_CHECK(!start.empty() && weights.size() + 1 == start.size(),
-           "partition_graph: " << weights.size() << " weights for " << start.size() - 1
-                               << " vertices");
+  FE_CHECK(
+      !start.empty() && weights.size() + 1 == start.size(),
+      "partition_graph: " << weights.size() << " weights for " << start.size() - 1 << " vertices");
   FE_CHECK(parts >= 1, "partition_graph: " << parts << " parts");
   const int n = static_cast<int>(weights.size());
   if (parts == 1) return std::vector<int>(n, 0);

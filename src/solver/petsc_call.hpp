@@ -9,12 +9,13 @@
 #include "core/error.hpp"
 
 namespace plisse::detail {
-[[noreturn]] void throw_petsc_error(PetscErrorCode code, const char* call, const char* file, int line);
+[[noreturn]] void throw_petsc_error(PetscErrorCode code, const char* call, const char* file,
+                                    int line);
 }  // namespace plisse::detail
 
-#define PLISSE_PETSC(...)                                                                  \
-  do {                                                                                     \
-    const PetscErrorCode plisse_petsc_code_ = (__VA_ARGS__);                               \
-    if (plisse_petsc_code_ != 0)                                                           \
+#define PLISSE_PETSC(...)                                                                        \
+  do {                                                                                           \
+    const PetscErrorCode plisse_petsc_code_ = (__VA_ARGS__);                                     \
+    if (plisse_petsc_code_ != 0)                                                                 \
       ::plisse::detail::throw_petsc_error(plisse_petsc_code_, #__VA_ARGS__, __FILE__, __LINE__); \
   } while (false)

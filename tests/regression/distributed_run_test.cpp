@@ -32,17 +32,19 @@ using test::example;
 using test::run_plisse_captured;
 using test::scratch_directory;
 
-const std::string kStrip = std::string(PLISSE_SOURCE_DIR) + "/tests/regression/cases/strip-buckling.yaml";
+const std::string kStrip =
+    std::string(PLISSE_SOURCE_DIR) + "/tests/regression/cases/strip-buckling.yaml";
 const std::string kCoarseIndentation =
     " --set mesh.element_size=3 --set mesh.inner_radius=12 --set dies[0].point=[0,15,0]"
     " --set dies[1].point=[0,-13,0] --set dies[0].move.displacement=[0,-4,0]"
     " --set output.wrinkles.rings_deg=[30,50]";
 
 /// Runs `plisse run CASE ARGS` on `ranks` ranks into a fresh directory; returns the directory.
-fs::path run(const std::string& name, const std::string& case_file, const std::string& args, int ranks) {
+fs::path run(const std::string& name, const std::string& case_file, const std::string& args,
+             int ranks) {
   const fs::path dir = scratch_directory("distributed-" + name + "-" + std::to_string(ranks));
-  const auto r = run_plisse_captured("run -n " + std::to_string(ranks) + " '" + case_file + "' -o '" +
-                                     dir.string() + "'" + args);
+  const auto r = run_plisse_captured("run -n " + std::to_string(ranks) + " '" + case_file +
+                                     "' -o '" + dir.string() + "'" + args);
   EXPECT_EQ(r.status, 0) << r.output;
   return dir;
 }
@@ -91,11 +93,14 @@ double field_difference(const fs::path& a, const fs::path& b, const std::string&
 }
 
 TEST(DistributedRun, IndentationIsTheSameOnOneAndTwoRanks) {
-  const fs::path one = run("indentation", example("sphere-indentation.yaml"), kCoarseIndentation, 1);
-  const fs::path two = run("indentation", example("sphere-indentation.yaml"), kCoarseIndentation, 2);
+  const fs::path one =
+      run("indentation", example("sphere-indentation.yaml"), kCoarseIndentation, 1);
+  const fs::path two =
+      run("indentation", example("sphere-indentation.yaml"), kCoarseIndentation, 2);
   // Newton stops at rtol 1e-8 of the residual: the states agree to about that.
   expect_same_history(one, two, 1e-6);
-  const nlohmann::json s1 = read_json_file(one / "summary.json"), s2 = read_json_file(two / "summary.json");
+  const nlohmann::json s1 = read_json_file(one / "summary.json"),
+                       s2 = read_json_file(two / "summary.json");
   EXPECT_EQ(s1["ranks"], 1);
   EXPECT_EQ(s2["ranks"], 2);
   for (const char* key : {"steps", "newton_iterations", "cutbacks", "free_dofs", "completed"})
@@ -109,10 +114,12 @@ TEST(DistributedRun, IndentationIsTheSameOnOneAndTwoRanks) {
                            std::to_string(int(s1["steps"]));
   ASSERT_TRUE(fs::exists(two / (last + "_p0.vtu")));
   ASSERT_TRUE(fs::exists(two / (last + "_p1.vtu")));
-  EXPECT_EQ(read_vtu_point_count(one / (last + ".vtu")), read_vtu_point_count(two / (last + ".pvtu")));
+  EXPECT_EQ(read_vtu_point_count(one / (last + ".vtu")),
+            read_vtu_point_count(two / (last + ".pvtu")));
   EXPECT_LT(field_difference(one / (last + ".vtu"), two / (last + ".pvtu"), "displacement"), 1e-6);
   EXPECT_LT(field_difference(one / (last + ".vtu"), two / (last + ".pvtu"), "pressure"), 1e-6);
-  EXPECT_EQ(read_vtu_summary(one / (last + ".vtu")).n_cells, read_vtu_summary(two / (last + ".pvtu")).n_cells);
+  EXPECT_EQ(read_vtu_summary(one / (last + ".vtu")).n_cells,
+            read_vtu_summary(two / (last + ".pvtu")).n_cells);
 }
 
 TEST(DistributedRun, BucklingModesAndBranchSwitchingAreTheSameOnTwoRanks) {
@@ -147,7 +154,8 @@ TEST(DistributedRun, BucklingModesAndBranchSwitchingAreTheSameOnTwoRanks) {
   // the one-rank run's .vtu.
   const auto seeded = [&](const fs::path& source) {
     return " --set solver.stability.imperfection=0.01 --set solver.stability.imperfection_kind=mode"
-           " --set solver.stability.imperfection_from='" + source.string() + "'";
+           " --set solver.stability.imperfection_from='" +
+           source.string() + "'";
   };
   expect_same_history(run("strip-seeded-by-1", kStrip, seeded(one), 1),
                       run("strip-seeded-by-2", kStrip, seeded(two), 1), 1e-6);
@@ -155,11 +163,13 @@ TEST(DistributedRun, BucklingModesAndBranchSwitchingAreTheSameOnTwoRanks) {
 
 TEST(DistributedRun, IterativeSolverOnTwoRanksMatchesTheClosedForm) {
   // Homogeneous uniaxial tension of the neo-Hookean cube: sigma_zz = 2 c1 (lambda^2 - 1/lambda).
-  const std::string args = " --set solver.newton.linear.type=iterative --set solver.newton.linear.rtol=1e-10";
+  const std::string args =
+      " --set solver.newton.linear.type=iterative --set solver.newton.linear.rtol=1e-10";
   const fs::path two = run("cube-iterative", example("cube-tension-neo-hookean.yaml"), args, 2);
   const HistoryTable h = read_history(two / "history.csv");
   const auto col = [&](const std::string& name) {
-    return static_cast<std::size_t>(std::find(h.columns.begin(), h.columns.end(), name) - h.columns.begin());
+    return static_cast<std::size_t>(std::find(h.columns.begin(), h.columns.end(), name) -
+                                    h.columns.begin());
   };
   ASSERT_LT(col("cauchy_zz"), h.columns.size());
   ASSERT_LT(col("stretch"), h.columns.size());
@@ -178,11 +188,11 @@ TEST(DistributedRun, IterativeSolverOnTwoRanksMatchesTheClosedForm) {
 TEST(DistributedRun, RankCountOutsideTheJobIsABadInput) {
   // Inside an MPI job of 2 ranks, -n must say 2.
   const fs::path dir = scratch_directory("distributed-mismatch");
-  const std::string command = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
-                              "OMPI_MCA_rmaps_base_oversubscribe=1 mpiexec -q -n 2 " +
-                              std::string(PLISSE_BINARY_DIR) + "/bin/plisse run -n 3 '" +
-                              example("cube-tension-neo-hookean.yaml") + "' -o '" + dir.string() +
-                              "' 2>&1";
+  const std::string command =
+      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
+      "OMPI_MCA_rmaps_base_oversubscribe=1 mpiexec -q -n 2 " +
+      std::string(PLISSE_BINARY_DIR) + "/bin/plisse run -n 3 '" +
+      example("cube-tension-neo-hookean.yaml") + "' -o '" + dir.string() + "' 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   ASSERT_NE(pipe, nullptr);
   std::string output;

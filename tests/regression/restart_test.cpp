@@ -88,7 +88,9 @@ void expect_same_history(const fs::path& a, const fs::path& b) {
 
 TEST(Restart, KilledRunResumesToTheUninterruptedHistory) {
   const fs::path reference = test::scratch_directory("restart-reference");
-  ASSERT_EQ(test::run_plisse("run " + kCase + " -o " + reference.string(), reference.string() + ".log"), 0);
+  ASSERT_EQ(
+      test::run_plisse("run " + kCase + " -o " + reference.string(), reference.string() + ".log"),
+      0);
 
   const fs::path killed = test::scratch_directory("restart-killed");
   const pid_t pid = start_run(killed);
@@ -99,7 +101,9 @@ TEST(Restart, KilledRunResumesToTheUninterruptedHistory) {
   ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed";
   expect_readable(killed);
 
-  ASSERT_EQ(test::run_plisse("run " + kCase + " --resume " + killed.string(), killed.string() + ".resume.log"), 0)
+  ASSERT_EQ(test::run_plisse("run " + kCase + " --resume " + killed.string(),
+                             killed.string() + ".resume.log"),
+            0)
       << "see " << killed.string() << ".resume.log";
   expect_same_history(reference, killed);
   expect_readable(killed);
@@ -116,7 +120,8 @@ TEST(Restart, ContactHistorySurvivesAKill) {
   const std::string every = "output.checkpoint_every=1";
   const fs::path reference = test::scratch_directory("restart-contact-reference");
   ASSERT_EQ(test::run_plisse("run " + case_file + " --set " + every + " -o " + reference.string(),
-                             reference.string() + ".log"), 0);
+                             reference.string() + ".log"),
+            0);
   const size_t total = read_history(reference / "history.csv").rows.size();
   const fs::path killed = test::scratch_directory("restart-contact-killed");
   const pid_t pid = start_run(killed, case_file, every);
@@ -125,8 +130,10 @@ TEST(Restart, ContactHistorySurvivesAKill) {
   int status = 0;
   waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed";
-  ASSERT_EQ(test::run_plisse("run " + case_file + " --set " + every + " --resume " + killed.string(),
-                             killed.string() + ".resume.log"), 0)
+  ASSERT_EQ(
+      test::run_plisse("run " + case_file + " --set " + every + " --resume " + killed.string(),
+                       killed.string() + ".resume.log"),
+      0)
       << "see " << killed.string() << ".resume.log";
   expect_same_history(reference, killed);
 }
@@ -144,15 +151,18 @@ TEST(Restart, TerminatedRunStopsWithCheckpointAndExitStatus1) {
   const auto summary = read_json_file(dir / "summary.json");
   EXPECT_TRUE(summary["interrupted"].get<bool>());
   expect_readable(dir);
-  ASSERT_EQ(test::run_plisse("run " + kCase + " --resume " + dir.string(), dir.string() + ".resume.log"), 0);
+  ASSERT_EQ(
+      test::run_plisse("run " + kCase + " --resume " + dir.string(), dir.string() + ".resume.log"),
+      0);
   EXPECT_TRUE(read_json_file(dir / "summary.json")["completed"].get<bool>());
 }
 
 TEST(Restart, CheckpointOfAnotherCaseIsRefused) {
   const fs::path dir = test::scratch_directory("restart-other-case");
   ASSERT_EQ(test::run_plisse("run " + kCase + " -o " + dir.string(), dir.string() + ".log"), 0);
-  const int status = test::run_plisse(
-      "run " + kCase + " --set material.c1=0.3 --resume " + dir.string(), dir.string() + ".bad.log");
+  const int status =
+      test::run_plisse("run " + kCase + " --set material.c1=0.3 --resume " + dir.string(),
+                       dir.string() + ".bad.log");
   EXPECT_EQ(status, 2);
   std::ifstream in(dir.string() + ".bad.log");
   const std::string text((std::istreambuf_iterator<char>(in)), {});

@@ -17,8 +17,10 @@ namespace {
 
 TEST(SolverFailure, StopsWithExitStatus1AndNamesStepElementAndReason) {
   const auto dir = test::scratch_directory("solver-failure");
-  const std::string case_file = std::string(PLISSE_SOURCE_DIR) + "/tests/regression/failure-case.yaml";
-  const int status = test::run_plisse("run " + case_file + " -o " + dir.string(), dir.string() + ".log");
+  const std::string case_file =
+      std::string(PLISSE_SOURCE_DIR) + "/tests/regression/failure-case.yaml";
+  const int status =
+      test::run_plisse("run " + case_file + " -o " + dir.string(), dir.string() + ".log");
   EXPECT_EQ(status, 1);
   std::ifstream in(dir.string() + ".log");
   const std::string text((std::istreambuf_iterator<char>(in)), {});

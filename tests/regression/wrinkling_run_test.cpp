@@ -26,7 +26,8 @@ namespace fs = std::filesystem;
 using test::run_plisse_captured;
 using test::scratch_directory;
 
-const std::string kStrip = std::string(PLISSE_SOURCE_DIR) + "/tests/regression/cases/strip-buckling.yaml";
+const std::string kStrip =
+    std::string(PLISSE_SOURCE_DIR) + "/tests/regression/cases/strip-buckling.yaml";
 
 std::vector<double> column(const HistoryTable& h, const std::string& name) {
   const auto it = std::find(h.columns.begin(), h.columns.end(), name);
@@ -82,7 +83,8 @@ TEST_F(StripBuckling, CheckFindsTheInstabilityAndWritesItsModes) {
   const HistoryTable h = read_history(*perfect_ / "history.csv");
   const auto stable = column(h, "stable"), time = column(h, "time"), uz = column(h, "uz:middle");
   for (std::size_t k = 0; k < time.size(); ++k) {
-    EXPECT_EQ(stable[k], time[k] < i["time"].get<double>() - 1e-12 ? 1.0 : 0.0) << "t = " << time[k];
+    EXPECT_EQ(stable[k], time[k] < i["time"].get<double>() - 1e-12 ? 1.0 : 0.0)
+        << "t = " << time[k];
     // The perfect strip stays straight: only the Poisson thickening of the wall (eps t / 2).
     EXPECT_LT(std::abs(uz[k]), 0.01) << "t = " << time[k];
   }
@@ -93,7 +95,8 @@ TEST_F(StripBuckling, ModeImperfectionAndBranchSwitchingReachTheBuckledBranch) {
   auto r = run_plisse_captured("run '" + kStrip + "' -o '" + imperfect.string() +
                                "' --set solver.stability.imperfection=0.01"
                                " --set solver.stability.imperfection_kind=mode"
-                               " --set solver.stability.imperfection_from='" + perfect_->string() + "'");
+                               " --set solver.stability.imperfection_from='" +
+                               perfect_->string() + "'");
   ASSERT_EQ(r.status, 0) << r.output;
   const fs::path switched = scratch_directory("strip-switched");
   r = run_plisse_captured("run '" + kStrip + "' -o '" + switched.string() +
@@ -124,9 +127,11 @@ TEST(StripBucklingInput, ModeFromARunWithoutModesIsRefused) {
   auto r = run_plisse_captured("run '" + kStrip + "' -o '" + plain.string() +
                                "' --set solver.end_time=0.1 --set solver.stability.check=false");
   ASSERT_EQ(r.status, 0) << r.output;
-  r = run_plisse_captured("check '" + kStrip + "' --set solver.stability.imperfection=0.01"
+  r = run_plisse_captured("check '" + kStrip +
+                          "' --set solver.stability.imperfection=0.01"
                           " --set solver.stability.imperfection_kind=mode"
-                          " --set solver.stability.imperfection_from='" + plain.string() + "'");
+                          " --set solver.stability.imperfection_from='" +
+                          plain.string() + "'");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("solver.stability.imperfection_from"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("mode_1"), std::string::npos) << r.output;
@@ -179,11 +184,13 @@ TEST(WrinkleTable, RunWritesItAndPlisseWrinklesReproducesIt) {
   const HistoryTable h = read_history(dir / "history.csv");
   for (double s : column(h, "stable")) EXPECT_EQ(s, 1.0);
   for (double a : column(h, "wrinkle_amplitude")) EXPECT_LT(a, 0.1);
-  const auto expected = column(h, "expected_negative_pivots"), negative = column(h, "negative_pivots");
+  const auto expected = column(h, "expected_negative_pivots"),
+             negative = column(h, "negative_pivots");
   for (std::size_t k = 0; k < negative.size(); ++k) EXPECT_EQ(negative[k], expected[k]);
   EXPECT_EQ(expected.front(), run["pressure_dofs"].get<double>());
-  const fs::path last = dir / ("step_" + std::string(4 - std::to_string(h.rows.size()).size(), '0') +
-                               std::to_string(h.rows.size()) + ".vtu");
+  const fs::path last =
+      dir / ("step_" + std::string(4 - std::to_string(h.rows.size()).size(), '0') +
+             std::to_string(h.rows.size()) + ".vtu");
   bool has_state = false;
   for (const auto& f : read_vtu_summary(last).cell_fields) has_state |= f.name == "wrinkle_state";
   EXPECT_TRUE(has_state) << last;

@@ -19,8 +19,8 @@ inline std::filesystem::path scratch_directory(const std::string& name) {
 
 /// Runs `plisse ARGS` with stdout and stderr captured in `log`; returns the exit status.
 inline int run_plisse(const std::string& args, const std::filesystem::path& log) {
-  const std::string command = std::string(PLISSE_BINARY_DIR) + "/bin/plisse " + args + " > '" +
-                              log.string() + "' 2>&1";
+  const std::string command =
+      std::string(PLISSE_BINARY_DIR) + "/bin/plisse " + args + " > '" + log.string() + "' 2>&1";
   const int status = std::system(command.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }

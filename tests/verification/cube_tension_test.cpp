@@ -58,23 +58,21 @@ TEST(CubeTension, NeoHookeanMatchesClosedFormAtEveryStep) {
 
 TEST(CubeTension, MooneyRivlinMatchesPaperEquation7AtEveryStep) {
   const double c1 = 0.2, c2 = 0.05;
-  expect_closed_form({"cube-tension-mooney-rivlin.yaml", [=](double l) {
-                        return 2 * c1 * (l * l - 1 / l) - 2 * c2 * (1 / (l * l) - l);
-                      },
-                      [=](double l) {
-                        return c1 * (l * l + 2 / l - 3) + c2 * (2 * l + 1 / (l * l) - 3);
-                      }});
+  expect_closed_form(
+      {"cube-tension-mooney-rivlin.yaml",
+       [=](double l) { return 2 * c1 * (l * l - 1 / l) - 2 * c2 * (1 / (l * l) - l); },
+       [=](double l) { return c1 * (l * l + 2 / l - 3) + c2 * (2 * l + 1 / (l * l) - 3); }});
 }
 
 TEST(CubeTension, FungMatchesClosedFormAtEveryStep) {
   const double mu = 0.5, gamma = 0.1;
-  expect_closed_form({"cube-tension-fung.yaml", [=](double l) {
-                        const double I1 = l * l + 2 / l;
-                        return mu * std::exp(gamma * (I1 - 3)) * (l * l - 1 / l);
-                      },
-                      [=](double l) {
-                        return mu / (2 * gamma) * std::expm1(gamma * (l * l + 2 / l - 3));
-                      }});
+  expect_closed_form(
+      {"cube-tension-fung.yaml",
+       [=](double l) {
+         const double I1 = l * l + 2 / l;
+         return mu * std::exp(gamma * (I1 - 3)) * (l * l - 1 / l);
+       },
+       [=](double l) { return mu / (2 * gamma) * std::expm1(gamma * (l * l + 2 / l - 3)); }});
 }
 
 }  // namespace

@@ -7,12 +7,12 @@ namespace {
 
 TEST(ManufacturedSolutionFine, ExactIncompressibilityNeoHookeanConvergesOptimally) {
   ASSERT_NO_FATAL_FAILURE(expect_optimal_rates("MMS, neo-Hookean, exact incompressibility (fine)",
-                       exact_incompressible_neo_hookean(), {8, 16, 32}));
+                                               exact_incompressible_neo_hookean(), {8, 16, 32}));
 }
 
 TEST(ManufacturedSolutionFine, NearIncompressibilityMooneyRivlinConvergesOptimally) {
   ASSERT_NO_FATAL_FAILURE(expect_optimal_rates("MMS, Mooney-Rivlin, kappa = 100 mu (fine)",
-                       near_incompressible_mooney_rivlin(), {8, 16, 32}));
+                                               near_incompressible_mooney_rivlin(), {8, 16, 32}));
 }
 
 }  // namespace

@@ -19,10 +19,10 @@
 #include <utility>
 #include <vector>
 
+#include "app/model_builder.hpp"
 #include "io/case.hpp"
 #include "material/registry.hpp"
 #include "physics/dirichlet.hpp"
-#include "app/model_builder.hpp"
 #include "solver/mixed_model.hpp"
 
 namespace plisse {
@@ -129,8 +129,10 @@ void expect_direct_fill_equals_mat_set_values(MixedModel& model) {
   int missing = 0, differ = 0, nonzero_extra = 0;
   for (const auto& [ij, v] : kp) {
     const auto it = kd.find(ij);
-    if (it == kd.end()) ++missing;
-    else differ += it->second != v;
+    if (it == kd.end())
+      ++missing;
+    else
+      differ += it->second != v;
   }
   // create_matrix may hold explicit zeros MatSetValues never created (whole node blocks).
   for (const auto& [ij, v] : kd) nonzero_extra += !kp.count(ij) && v != 0.0;

@@ -45,7 +45,8 @@ TEST(CheckCommand, EverySectionParsesButAnOpenCavityWallIsRefused) {
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("complete.yaml:54:3: key 'solver.stability'"), std::string::npos)
       << r.output;
-  r = run_plisse("check " + kCases + "complete.yaml --set solver.stability.imperfection=0 "
+  r = run_plisse("check " + kCases +
+                 "complete.yaml --set solver.stability.imperfection=0 "
                  "--set solver.stability.branch_switch=false --set 'output.wrinkles.rings_deg=[]'");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("complete.yaml:26:30: key 'cavities[0].surface'"), std::string::npos)

@@ -1,9 +1,10 @@
+#include "core/parameter.hpp"
+
 #include <gtest/gtest.h>
 
 #include <limits>
 
 #include "core/error.hpp"
-#include "core/parameter.hpp"
 
 namespace plisse {
 namespace {

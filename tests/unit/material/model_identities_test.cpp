@@ -18,7 +18,8 @@ namespace {
 /// response is checked on terms no production model uses yet.
 struct CoupledTestModel {
   double c = 0.3, d = 0.2, a = 0.05, b = 0.02, e = 0.04;
-  template <class T> T energy(const Mat3<T>& F) const {
+  template <class T>
+  T energy(const Mat3<T>& F) const {
     const IsochoricInvariants<T> inv = compute_isochoric_invariants(F);
     const T x = inv.I1bar - 3.0, y = inv.I2bar - 3.0;
     return c * x + d * y + a * x * y + b * y * y + e * x * x;
@@ -36,18 +37,41 @@ struct CoupledTestModel {
   double shear_modulus() const { return 2.0 * (c + d); }
 };
 
-template <class M> M sample();
-template <> NeoHookean sample() { return {0.7}; }
-template <> MooneyRivlin sample() { return {0.6, 0.25}; }
-template <> Fung sample() { return {1.1, 0.4}; }
-template <> Yeoh sample() { return {0.5, -0.05, 0.01}; }
-template <> Gent sample() { return {1.2, 60.0}; }
-template <> ArrudaBoyce sample() { return {0.9, 3.0}; }
-template <> CoupledTestModel sample() { return {}; }
+template <class M>
+M sample();
+template <>
+NeoHookean sample() {
+  return {0.7};
+}
+template <>
+MooneyRivlin sample() {
+  return {0.6, 0.25};
+}
+template <>
+Fung sample() {
+  return {1.1, 0.4};
+}
+template <>
+Yeoh sample() {
+  return {0.5, -0.05, 0.01};
+}
+template <>
+Gent sample() {
+  return {1.2, 60.0};
+}
+template <>
+ArrudaBoyce sample() {
+  return {0.9, 3.0};
+}
+template <>
+CoupledTestModel sample() {
+  return {};
+}
 
 double max_abs(const auto& m) { return m.cwiseAbs().maxCoeff(); }
 
-template <class M> class ModelIdentities : public ::testing::Test {
+template <class M>
+class ModelIdentities : public ::testing::Test {
  protected:
   const M model = sample<M>();
   double W(const Mat3d& F) const { return model.evaluate(F).W; }

@@ -13,7 +13,8 @@ namespace {
 
 constexpr std::array<double, 7> kStretches = {0.5, 0.8, 1.05, 1.5, 2.0, 3.5, 5.0};
 
-template <class Model> double stress_difference(const Model& model, double l) {
+template <class Model>
+double stress_difference(const Model& model, double l) {
   const Mat3d F = Vec3d(1.0 / std::sqrt(l), 1.0 / std::sqrt(l), l).asDiagonal();
   const Mat3d sigma = model.evaluate(F).P * F.transpose() / F.determinant();
   return sigma(2, 2) - sigma(0, 0);

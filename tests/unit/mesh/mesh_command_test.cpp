@@ -6,11 +6,10 @@
 #include <cstdio>
 #include <string>
 
-#include "support/run_plisse.hpp"
-
 #include "mesh/gmsh_io.hpp"
 #include "mesh/quality.hpp"
 #include "mesh_test_util.hpp"
+#include "support/run_plisse.hpp"
 
 namespace plisse {
 namespace {

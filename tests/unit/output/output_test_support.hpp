@@ -79,8 +79,8 @@ inline nlohmann::json run_python_fixture(const std::string& script, const std::s
   return nlohmann::json::parse(output);
 }
 
-/// Runs tests/unit/output/fixtures/read_output.py KIND FILE and returns its JSON output. Fails the test
-/// (ADD_FAILURE, returns null) if the script exits with an error.
+/// Runs tests/unit/output/fixtures/read_output.py KIND FILE and returns its JSON output. Fails the
+/// test (ADD_FAILURE, returns null) if the script exits with an error.
 inline nlohmann::json read_with_python(const std::string& kind, const std::filesystem::path& file) {
   return run_python_fixture("read_output.py", kind + " '" + file.string() + "'");
 }

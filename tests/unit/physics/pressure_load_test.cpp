@@ -1,11 +1,12 @@
 // Follower pressure: the tangent is the derivative of the residual (central differences), the
 // resultant of a closed surface vanishes, and the symmetry rule for open surfaces holds.
+#include "physics/pressure_load.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "mesh/generate.hpp"
-#include "physics/pressure_load.hpp"
 #include "physics/surface.hpp"
 #include "support/term_testing.hpp"
 
@@ -39,7 +40,8 @@ TEST(PressureLoad, TangentIsDerivativeOfResidualOnAnOpenSurface) {
     auto xp = x, xm = x;
     xp[j] += h;
     xm[j] -= h;
-    const Eigen::VectorXd fd = (term_residual(load, 1.0, xp) - term_residual(load, 1.0, xm)) / (2 * h);
+    const Eigen::VectorXd fd =
+        (term_residual(load, 1.0, xp) - term_residual(load, 1.0, xm)) / (2 * h);
     max_error = std::max(max_error, (fd - sink.K.col(j)).cwiseAbs().maxCoeff());
   }
   // The residual is quadratic in x, so central differences are exact up to round-off.

@@ -8,9 +8,9 @@
 
 #include <cmath>
 
+#include "app/model_builder.hpp"
 #include "core/error.hpp"
 #include "mesh/generate.hpp"
-#include "app/model_builder.hpp"
 #include "support/term_testing.hpp"
 
 namespace plisse {

@@ -1,5 +1,7 @@
 // The pieces of a distributed run that can be checked in one process: the node partition
 // (solver/partition.hpp) and the equation numbering by a node order (solver/dof_map.hpp).
+#include "solver/partition.hpp"
+
 #include <gtest/gtest.h>
 #include <petscsys.h>
 
@@ -7,7 +9,6 @@
 #include <vector>
 
 #include "solver/dof_map.hpp"
-#include "solver/partition.hpp"
 
 namespace plisse {
 namespace {

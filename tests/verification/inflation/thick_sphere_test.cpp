@@ -58,8 +58,9 @@ void expect_convergence(const std::string& label, const std::string& overrides,
   const double coarse = max_relative_error(label, overrides, 1.4, 3, dW);
   const double medium = max_relative_error(label, overrides, 1.0, 4, dW);
   const double fine = max_relative_error(label, overrides, 0.7, 6, dW);
-  std::printf("%s: max relative pressure error %.4f (h 1.4, 3 layers), %.4f (1.0, 4), %.4f (0.7, 6)\n",
-              label.c_str(), coarse, medium, fine);
+  std::printf(
+      "%s: max relative pressure error %.4f (h 1.4, 3 layers), %.4f (1.0, 4), %.4f (0.7, 6)\n",
+      label.c_str(), coarse, medium, fine);
   EXPECT_LT(fine, 0.01);
   EXPECT_LT(medium, coarse);
   EXPECT_LT(fine, medium);
@@ -78,7 +79,8 @@ TEST(ThickSphereInflation, MooneyRivlinFollowsOgdensIntegral) {
                      "--set material.model=mooney-rivlin --set material.c1=0.4 "
                      "--set material.c2=0.1",
                      [=](double l) {
-                       return 4 * c1 * (l - std::pow(l, -5)) + 4 * c2 * (l * l * l - std::pow(l, -3));
+                       return 4 * c1 * (l - std::pow(l, -5)) +
+                              4 * c2 * (l * l * l - std::pow(l, -3));
                      });
 }
 
