@@ -1,6 +1,8 @@
-// Rendering the case-file schema as markdown, and the names shared by the entries of a case.
+// Rendering the case-file schema as markdown, the names shared by the entries of a case, and
+// paths relative to the case file.
 #include "io/case_schema.hpp"
 
+#include <filesystem>
 #include <sstream>
 
 namespace plisse::case_detail {
@@ -34,6 +36,12 @@ std::string doc_number(double value) {
   }
   while (exponent.size() > 1 && exponent[0] == '0') exponent.erase(0, 1);
   return mantissa + "e" + sign + exponent;
+}
+
+std::string resolve_path(const std::string& text, const std::string& directory) {
+  std::filesystem::path p(text);
+  if (p.is_relative() && !directory.empty()) p = std::filesystem::path(directory) / p;
+  return p.string();
 }
 
 std::string doc_choice(const std::vector<std::string>& words) {

@@ -53,6 +53,9 @@ std::string render_markdown(const SectionDoc& doc);
 /// A number as the docs write it: up to 12 significant digits, exponents without padding ("1e-8").
 std::string doc_number(double value);
 
+/// `text` as a path relative to the case `directory` (an absolute path is returned unchanged).
+std::string resolve_path(const std::string& text, const std::string& directory);
+
 /// "`a` \| `b` \| `c`": a choice between words, in a markdown table cell.
 std::string doc_choice(const std::vector<std::string>& words);
 
