@@ -14,6 +14,36 @@
 namespace plisse::app {
 namespace {
 
+/// The contact surface of a die without `surface:`: the whole boundary except the faces on the
+/// case's symmetry planes, which are cuts through the body whose area would inflate the tributary
+/// area of the nodes on the cut (docs/theory/contact.md, D5).
+std::vector<std::array<int, 3>> default_die_candidates(const Case& c, const Mesh& mesh) {
+  std::set<std::array<int, 3>> cut;
+  for (const BoundaryCondition& bc : c.boundary) {
+    if (bc.type != BoundaryType::symmetry) continue;
+    for (int t : mesh.surface_tags.at(bc.surface.name)) {
+      auto key = mesh.triangles[t];
+      std::sort(key.begin(), key.end());
+      cut.insert(key);
+    }
+  }
+  std::vector<std::array<int, 3>> out;
+  for (const auto& face : boundary_faces(mesh))
+    if (!cut.count(face)) out.push_back(face);
+  return out;
+}
+
+/// InputError (key `boundary`) when `constraints` prescribe every displacement of `mesh`, so
+/// that nothing is left to solve.
+void check_free_displacements(const Case& c, const Mesh& mesh,
+                              const std::vector<ConstrainedComponent>& constraints) {
+  // collect_constraints gives one entry per constrained (node, component).
+  if (constraints.size() >= 3 * static_cast<size_t>(mesh.n_nodes()))
+    throw InputError({c.path, 0, 0, "boundary"},
+                     "every displacement is prescribed by the boundary conditions: nothing to "
+                     "solve");
+}
+
 /// The contact term of `die`: candidates are the nodes of `die.surface`, or of
 /// default_die_candidates; the penalty defaults to contact.md (D11) with the material's
 /// small-strain shear modulus `mu`. Throws InputError (at the die) when the surface is empty.
@@ -37,31 +67,6 @@ std::unique_ptr<ModelTerm> make_die_term(const Die& die, const Case& c, const Me
 }
 
 }  // namespace
-
-std::vector<std::array<int, 3>> default_die_candidates(const Case& c, const Mesh& mesh) {
-  std::set<std::array<int, 3>> cut;
-  for (const BoundaryCondition& bc : c.boundary) {
-    if (bc.type != BoundaryType::symmetry) continue;
-    for (int t : mesh.surface_tags.at(bc.surface.name)) {
-      auto key = mesh.triangles[t];
-      std::sort(key.begin(), key.end());
-      cut.insert(key);
-    }
-  }
-  std::vector<std::array<int, 3>> out;
-  for (const auto& face : boundary_faces(mesh))
-    if (!cut.count(face)) out.push_back(face);
-  return out;
-}
-
-void check_free_displacements(const Case& c, const Mesh& mesh,
-                              const std::vector<ConstrainedComponent>& constraints) {
-  // collect_constraints gives one entry per constrained (node, component).
-  if (constraints.size() >= 3 * static_cast<size_t>(mesh.n_nodes()))
-    throw InputError({c.path, 0, 0, "boundary"},
-                     "every displacement is prescribed by the boundary conditions: nothing to "
-                     "solve");
-}
 
 ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
   ModelParts parts{make_material(c.material.model, c.material.params),

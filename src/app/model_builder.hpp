@@ -34,16 +34,6 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh);
 /// The model of `parts` on `mesh` (borrowed). Needs a live PetscSession.
 std::unique_ptr<MixedModel> make_model(const Mesh& mesh, ModelParts parts);
 
-/// InputError (key `boundary`) when `constraints` prescribe every displacement of `mesh`, so
-/// that nothing is left to solve.
-void check_free_displacements(const Case& c, const Mesh& mesh,
-                              const std::vector<ConstrainedComponent>& constraints);
-
-/// The contact surface of a die without `surface:`: the whole boundary except the faces on the
-/// case's symmetry planes, which are cuts through the body whose area would inflate the tributary
-/// area of the nodes on the cut (docs/theory/contact.md, D5).
-std::vector<std::array<int, 3>> default_die_candidates(const Case& c, const Mesh& mesh);
-
 /// What the case file allows but this build cannot solve yet (second-order meshes, the
 /// incremental scheme), each as an InputError naming the key. `plisse run` refuses the first;
 /// `plisse check` lists them as warnings.

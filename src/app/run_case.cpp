@@ -1,6 +1,5 @@
 #include "app/run_case.hpp"
 
-#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +9,7 @@
 #include "app/run_recorder.hpp"
 #include "app/wrinkling.hpp"
 #include "core/error.hpp"
+#include "core/wall_clock.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case.hpp"
 #include "io/checkpoint.hpp"
@@ -23,7 +23,6 @@ namespace plisse::app {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
 volatile std::sig_atomic_t g_interrupt = 0;
 extern "C" void on_interrupt(int) { g_interrupt = 1; }
@@ -78,10 +77,6 @@ void check_same_mesh_on_every_rank(const Mesh& mesh) {
         "reproducible here); write the mesh once with `plisse mesh` and use mesh.file");
 }
 
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
 /// Ends a distributed job after an error on this rank alone: prints it, then MPI_Abort (exit
 /// status 1), since the other ranks may be waiting in a collective call.
 [[noreturn]] void abort_all_ranks(std::exception_ptr error) {
@@ -121,7 +116,7 @@ namespace {
 struct PreparedRun {
   const RunOptions& options;
   const Case& c;
-  Clock::time_point start;
+  WallClock::time_point start;
   fs::path out_dir;
   std::uint64_t fingerprint;
   const std::optional<Checkpoint>& checkpoint;
@@ -184,7 +179,7 @@ void solve_and_write(PreparedRun run) {
   const std::optional<Checkpoint>& checkpoint = run.checkpoint;
   const bool root = PetscSession::rank() == 0;
 
-  const auto t0 = Clock::now();
+  const auto t0 = WallClock::now();
   const std::size_t n_constrained = run.parts.constraints.size();
   const std::unique_ptr<MixedModel> model = make_model(run.mesh, std::move(run.parts));
   LoadStepper stepper(*model, c.solver);
@@ -255,7 +250,7 @@ void solve_and_write(PreparedRun run) {
 }  // namespace
 
 void run_case(const RunOptions& options) {
-  const auto t_start = Clock::now();
+  const auto t_start = WallClock::now();
   const Case c = parse_case_file(options.case_file, options.overrides);
   if (!options.resume_directory.empty() && !options.output_directory.empty() &&
       fs::weakly_canonical(options.resume_directory) !=
@@ -275,7 +270,7 @@ void run_case(const RunOptions& options) {
                        "the checkpoint was written for another case file or other --set values");
   }
 
-  auto t0 = Clock::now();
+  auto t0 = WallClock::now();
   const Mesh mesh = load_perturbed_mesh(c);
   if (const auto unsupported = unsupported_features(c, mesh); !unsupported.empty())
     throw unsupported.front();

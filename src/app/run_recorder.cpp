@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "core/wall_clock.hpp"
 #include "io/json_file.hpp"
 #include "io/pvtu_writer.hpp"
 #include "io/vtu_writer.hpp"
@@ -14,11 +15,6 @@ namespace plisse::app {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 /// Peak resident memory of this process [MiB].
 double peak_memory_mib() {
@@ -127,7 +123,7 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
 }
 
 void RunRecorder::record(const StepInfo& info) {
-  const auto t_out = Clock::now();
+  const auto t_out = WallClock::now();
   fields_ = model_.element_fields();
   const BodyAverages averages = model_.averages(fields_);
   if (meter_) last_wrinkles_ = meter_->evaluate(model_, fields_);
@@ -155,7 +151,7 @@ void RunRecorder::record(const StepInfo& info) {
 }
 
 void RunRecorder::write_step_files(const StepInfo& info, const std::vector<double>& step_start) {
-  const auto t_out = Clock::now();
+  const auto t_out = WallClock::now();
   const std::string name = step_name(model_, info.step);
   std::vector<VtuField> point_fields, cell_fields;
   for (std::size_t k = 0; k < info.modes.size(); ++k)

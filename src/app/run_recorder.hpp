@@ -4,7 +4,6 @@
 /// summary.json, and decides when each is written. Distributed runs: rank 0 writes the history,
 /// the PVD index, the checkpoint and the summary; every rank writes its own piece of each VTU step.
 /// The members that write are collective: every rank calls them in the same order.
-#include <chrono>
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -13,6 +12,7 @@
 
 #include "app/history_columns.hpp"
 #include "app/wrinkling.hpp"
+#include "core/wall_clock.hpp"
 #include "io/case.hpp"
 #include "io/checkpoint.hpp"
 #include "io/history_writer.hpp"
@@ -32,9 +32,9 @@ struct RunIdentity {
 
 /// Wall times measured before the recorder exists.
 struct StartTimes {
-  std::chrono::steady_clock::time_point start;  ///< the run's start
-  double mesh = 0.0;                            ///< reading or generating the mesh [s]
-  double setup = 0.0;                           ///< model, stepper and wrinkle meter [s]
+  WallClock::time_point start;  ///< the run's start
+  double mesh = 0.0;            ///< reading or generating the mesh [s]
+  double setup = 0.0;           ///< model, stepper and wrinkle meter [s]
 };
 
 class RunRecorder {

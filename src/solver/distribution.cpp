@@ -77,6 +77,14 @@ std::vector<double> Distribution::full_from_free(Vec x) const {
   return full;
 }
 
+void Distribution::owned_from_full(std::span<const double> full, Vec x) const {
+  PetscScalar* a = nullptr;
+  PLISSE_PETSC(VecGetArray(x, &a));
+  for (int d = 0; d < dofs_.n_dofs(); ++d)
+    if (const int eq = dofs_.equation(d); owns_equation(eq)) a[eq - first_equation_] = full[d];
+  PLISSE_PETSC(VecRestoreArray(x, &a));
+}
+
 AssemblyStatus Distribution::reduce(const AssemblyStatus& local) const {
   if (size_ == 1) return local;
   // (failed, min J, worst element) of every rank; every rank picks the same one.

@@ -14,6 +14,7 @@
 #include <petscvec.h>
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "physics/dirichlet.hpp"
@@ -64,6 +65,9 @@ class Distribution {
   void for_each_free_value(Vec x, Use&& use) const;
   /// The full state layout (zeros on constrained dofs) of `x`. Collective.
   std::vector<double> full_from_free(Vec x) const;
+  /// The reverse: writes the entries of `full` (full-state layout) on this rank's owned free
+  /// equations into `x` (a vector of create_vector's layout). Not collective.
+  void owned_from_full(std::span<const double> full, Vec x) const;
 
   /// The same status on every rank: the first rank's failure, else the smallest J of all.
   /// Collective.

@@ -109,15 +109,7 @@ void MixedModel::set_external_force(std::vector<double> force, Ramp ramp) {
   external_ramp_ = ramp;
 }
 
-void MixedModel::get_free(Vec x) const {
-  PetscScalar* a = nullptr;
-  PLISSE_PETSC(VecGetArray(x, &a));
-  const int first = first_owned_equation();
-  for (int d = 0; d < dofs().n_dofs(); ++d)
-    if (const int eq = dofs().equation(d); distribution_->owns_equation(eq))
-      a[eq - first] = state_[d];
-  PLISSE_PETSC(VecRestoreArray(x, &a));
-}
+void MixedModel::get_free(Vec x) const { distribution_->owned_from_full(state_, x); }
 
 void MixedModel::set_free(Vec x) {
   distribution_->for_each_free_value(x, [&](int d, double value) { state_[d] = value; });
@@ -133,13 +125,7 @@ AssemblyStatus MixedModel::assemble_residual(Vec f) {
     for (size_t d = 0; d < full_residual_.size(); ++d)
       full_residual_[d] -= factor * external_force_[d];
   }
-  const int first = first_owned_equation();
-  PetscScalar* a = nullptr;
-  PLISSE_PETSC(VecGetArray(f, &a));
-  for (int d = 0; d < dofs().n_dofs(); ++d)
-    if (const int eq = dofs().equation(d); distribution_->owns_equation(eq))
-      a[eq - first] = full_residual_[d];
-  PLISSE_PETSC(VecRestoreArray(f, &a));
+  distribution_->owned_from_full(full_residual_, f);
   return status;
 }
 

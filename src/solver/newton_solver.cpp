@@ -1,16 +1,13 @@
 #include "solver/newton_solver.hpp"
 
-#include <chrono>
 #include <string>
 
+#include "core/wall_clock.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/petsc_call.hpp"
 
 namespace plisse {
 namespace {
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 const char* line_search_type(LineSearch ls) {
   switch (ls) {
@@ -99,7 +96,7 @@ NewtonSolver::~NewtonSolver() {
 PetscErrorCode NewtonSolver::form_function(SNES snes, Vec x, Vec f, void* context) {
   auto* self = static_cast<NewtonSolver*>(context);
   try {
-    const auto t0 = std::chrono::steady_clock::now();
+    const auto t0 = WallClock::now();
     self->model_.set_free(x);
     self->last_status_ = self->model_.assemble_residual(f);
     self->times_.assembly += seconds_since(t0);
@@ -115,7 +112,7 @@ PetscErrorCode NewtonSolver::form_function(SNES snes, Vec x, Vec f, void* contex
 PetscErrorCode NewtonSolver::form_jacobian(SNES, Vec x, Mat J, Mat, void* context) {
   auto* self = static_cast<NewtonSolver*>(context);
   try {
-    const auto t0 = std::chrono::steady_clock::now();
+    const auto t0 = WallClock::now();
     self->model_.set_free(x);
     self->model_.assemble_tangent(J);
     self->times_.assembly += seconds_since(t0);
@@ -168,7 +165,7 @@ NewtonResult NewtonSolver::solve() {
   error_ = nullptr;
   model_.get_free(x_);
   const double assembly_before = times_.assembly;
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = WallClock::now();
   const PetscErrorCode code = SNESSolve(snes_, nullptr, x_);
   const double elapsed = seconds_since(t0);
   times_.linear_solve += elapsed - (times_.assembly - assembly_before);
