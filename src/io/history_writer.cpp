@@ -26,6 +26,15 @@ void append_row(std::string& out, std::span<const double> values) {
   out += '\n';
 }
 
+/// Why `name` cannot be a history column (empty, or a character the plain CSV form cannot hold
+/// back: ',' splits, '"' would start a quoted field, a line break ends the header), or nullptr.
+const char* column_name_problem(std::string_view name) {
+  if (name.empty()) return "is empty";
+  if (name.find_first_of(",\"\r\n") != std::string_view::npos)
+    return "contains ',', '\"' or a line break";
+  return nullptr;
+}
+
 std::vector<std::string> split_commas(std::string_view line) {
   std::vector<std::string> parts;
   std::size_t begin = 0;
@@ -52,10 +61,9 @@ HistoryWriter::HistoryWriter(std::filesystem::path path,
   table_.columns.insert(table_.columns.end(), extra_columns.begin(), extra_columns.end());
   std::set<std::string_view> seen;
   for (const std::string& name : table_.columns) {
-    FE_CHECK(!name.empty(), "history '" << path_.string() << "': empty column name");
-    FE_CHECK(name.find_first_of(",\"\r\n") == std::string::npos,
-             "history '" << path_.string() << "': column name '" << name
-                         << "' contains ',', '\"' or a line break");
+    const char* problem = column_name_problem(name);
+    FE_CHECK(problem == nullptr,
+             "history '" << path_.string() << "': column name '" << name << "' " << problem);
     FE_CHECK(seen.insert(name).second,
              "history '" << path_.string() << "': column '" << name << "' appears twice");
   }
@@ -124,7 +132,20 @@ HistoryTable read_history(const std::filesystem::path& path) {
     ++line_number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line_number == 1) {
+      // The writer's rules for column names hold for the reader too, so a history that is read
+      // and rewritten (a restart) reads back the same.
       table.columns = split_commas(line);
+      std::set<std::string_view> seen;
+      std::size_t column = 1;  // 1-based character column of the name in the line
+      for (const std::string& name : table.columns) {
+        if (const char* problem = column_name_problem(name))
+          throw InputError({path.string(), 1, static_cast<int>(column), name},
+                           std::string("column name ") + problem);
+        if (!seen.insert(name).second)
+          throw InputError({path.string(), 1, static_cast<int>(column), name},
+                           "column name appears twice");
+        column += name.size() + 1;
+      }
       continue;
     }
     if (line.empty()) continue;

@@ -27,9 +27,10 @@ struct HistoryTable {
   std::vector<std::vector<double>> rows;
 };
 
-/// Reads a history.csv written by HistoryWriter (or any CSV of that shape: a header line, then
-/// comma-separated numbers). Throws plisse::InputError with the file, line, column number and
-/// column name of the first malformed entry.
+/// Reads a history.csv written by HistoryWriter (or any CSV of that shape: a header line of column
+/// names as the writer accepts them, then comma-separated numbers; a CR before each LF is
+/// allowed). Throws plisse::InputError with the file, line, column number and column name of the
+/// first malformed entry.
 HistoryTable read_history(const std::filesystem::path& path);
 
 class HistoryWriter {

@@ -142,5 +142,30 @@ TEST(HistoryWriter, MalformedFileGivesInputErrorWithPlace) {
   EXPECT_THROW(HistoryWriter::reopen(path), InputError);  // not a plisse history
 }
 
+// The reader holds column names to the writer's rules, so a restart's rewrite of a history reads
+// back as it was read: a name the writer could not write back unchanged is refused, with its
+// place. (A header "...,x\r\r\n" once read as the column "x\r" and came back as "x".)
+TEST(HistoryWriter, ColumnNamesTheWriterWouldRefuseAreInputErrors) {
+  const ScratchDir dir;
+  const auto path = dir / "history.csv";
+  const std::string standard = "step,time,load_factor,newton_iterations,residual_norm";
+  for (const std::string& extra :
+       {std::string("x\r"), std::string("\"x\""), std::string("x,x"), std::string("")}) {
+    std::ofstream(path, std::ios::binary) << standard << "," << extra << "\r\n";
+    try {
+      read_history(path);
+      FAIL() << "accepted the extra column(s) '" << extra << "'";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.place().line, 1);
+      EXPECT_EQ(e.place().column, static_cast<int>(standard.size() + 2) +
+                                      (extra == "x,x" ? 2 : 0));  // the second "x"
+    }
+  }
+  std::ofstream(path, std::ios::binary) << standard << ",x\r\n1,2,3,4,5,6\r\n";
+  const HistoryTable table = read_history(path);  // one CR before the LF is a Windows line end
+  EXPECT_EQ(table.columns.back(), "x");
+  EXPECT_EQ(table.rows.at(0).back(), 6.0);
+}
+
 }  // namespace
 }  // namespace plisse
