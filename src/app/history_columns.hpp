@@ -17,9 +17,9 @@ namespace plisse::app {
 struct StepRecord {
   const StepInfo& info;
   const MixedModel& model;
-  const std::vector<mini::ElementFields>& fields;  ///< model.element_fields() of the state
-  const BodyAverages& averages;                    ///< model.averages(fields)
-  const WrinkleMeter::Result* wrinkles;            ///< null without output.wrinkles
+  const std::vector<ElementFields>& fields;  ///< model.element_fields() of the state
+  const BodyAverages& averages;              ///< model.averages(fields)
+  const WrinkleMeter::Result* wrinkles;      ///< null without output.wrinkles
 };
 
 class HistoryColumns {

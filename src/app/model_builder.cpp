@@ -72,7 +72,8 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
   ModelParts parts{make_material(c.material.model, c.material.params),
                    c.material.inverse_bulk_modulus(),
                    collect_constraints(c.boundary, mesh),
-                   {}};
+                   {},
+                   c.element};
   check_free_displacements(c, mesh, parts.constraints);
   const auto& constraints = parts.constraints;
   auto& terms = parts.terms;
@@ -106,15 +107,20 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
 
 std::unique_ptr<MixedModel> make_model(const Mesh& mesh, ModelParts parts) {
   return std::make_unique<MixedModel>(mesh, std::move(parts.material), parts.inverse_bulk_modulus,
-                                      std::move(parts.constraints), std::move(parts.terms));
+                                      std::move(parts.constraints), std::move(parts.terms),
+                                      parts.element);
 }
 
 std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh) {
   std::vector<InputError> out;
-  if (mesh.order() != 1)
+  if (mesh.order() != mesh_order_of(c.element))
     out.emplace_back(c.mesh.file ? c.mesh.file_place : c.mesh.place,
-                     "the mesh has second-order (10-node) tetrahedra; the MINI element needs "
-                     "linear ones (a quadratic element is planned)");
+                     c.element == ElementFamily::mini
+                         ? "the mesh has second-order (10-node) tetrahedra; the MINI element needs "
+                           "linear ones (set `element: taylor-hood` to run them as P2/P1)"
+                         : "the mesh has linear (4-node) tetrahedra; the Taylor-Hood element needs "
+                           "second-order (10-node) ones (export the mesh with order 2, e.g. "
+                           "gmsh -3 -order 2, or let plisse generate it)");
   if (c.solver.scheme != Scheme::total_lagrangian)
     out.emplace_back(InputPlace{c.path, 0, 0, "solver.scheme"},
                      "only the total-lagrangian scheme is available yet");

@@ -23,6 +23,7 @@ struct ModelParts {
   /// One term per load, then per cavity, then per die, in the case's order, then the viscous
   /// damping when solver.viscosity > 0.
   std::vector<std::unique_ptr<ModelTerm>> terms;
+  ElementFamily element = ElementFamily::mini;  ///< the case's `element`
 };
 
 /// Builds the parts of the case's model on `mesh` (the case's mesh, already checked against the
@@ -34,9 +35,9 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh);
 /// The model of `parts` on `mesh` (borrowed). Needs a live PetscSession.
 std::unique_ptr<MixedModel> make_model(const Mesh& mesh, ModelParts parts);
 
-/// What the case file allows but this build cannot solve yet (second-order meshes, the
-/// incremental scheme), each as an InputError naming the key. `plisse run` refuses the first;
-/// `plisse check` lists them as warnings.
+/// What the case file allows but this build cannot solve (a mesh whose order does not fit the
+/// element, the incremental scheme), each as an InputError naming the key. `plisse run` refuses the
+/// first; `plisse check` lists them as warnings.
 std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh);
 
 }  // namespace plisse::app

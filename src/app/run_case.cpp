@@ -265,6 +265,12 @@ void run_case(const RunOptions& options) {
   std::optional<Checkpoint> checkpoint;
   if (!options.resume_directory.empty()) {
     checkpoint = read_checkpoint(out_dir / "checkpoint.bin");
+    if (checkpoint->element != c.element)
+      throw InputError(
+          {(out_dir / "checkpoint.bin").string(), 0, 0, "--resume"},
+          "the checkpoint was written by a run with `element: " + to_string(checkpoint->element) +
+              "`, this case has `element: " + to_string(c.element) +
+              "`; a run cannot change its element family");
     if (checkpoint->case_fingerprint != fingerprint)
       throw InputError({(out_dir / "checkpoint.bin").string(), 0, 0, "--resume"},
                        "the checkpoint was written for another case file or other --set values");

@@ -39,7 +39,7 @@ VtuField mode_field(const Mesh& mesh, const Eigenmode& mode, int k) {
 
 /// Point and cell fields of the contract for one converged state (`fields`: its element fields).
 void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model,
-                    const std::vector<mini::ElementFields>& fields,
+                    const std::vector<ElementFields>& fields,
                     const std::vector<double>& previous_state, double dt,
                     const std::vector<VtuField>& extra_point_fields,
                     const std::vector<VtuField>& extra_cell_fields) {
@@ -48,7 +48,7 @@ void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model
   const auto& x = model.state();
   VtuField displacement{"displacement", 3, std::vector<double>(3 * n)};
   VtuField velocity{"velocity", 3, std::vector<double>(3 * n)};
-  VtuField pressure{"pressure", 1, std::vector<double>(n)};
+  VtuField pressure{"pressure", 1, model.nodal_pressures()};
   std::vector<Vec3d> points(mesh.nodes);
   for (int v = 0; v < n; ++v) {
     for (int k = 0; k < 3; ++k) {
@@ -57,7 +57,6 @@ void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model
       velocity.values[3 * v + k] = dt > 0 ? (u - previous_state[DofMap::dof(v, k)]) / dt : 0.0;
       if (c.output.deformed) points[v][k] += u;
     }
-    pressure.values[v] = x[DofMap::dof(v, 3)];
   }
   const int n_cells = mesh.n_tets();
   std::vector<Mat3d> cauchy(n_cells);
@@ -175,8 +174,8 @@ void RunRecorder::save_checkpoint() {
   if (root_)
     write_checkpoint(
         directory_.directory() / "checkpoint.bin",
-        {identity_.fingerprint, st.steps, st.time, st.dt, st.previous_dt, st.previous_state,
-         snap.state, snap.bubbles, snap.term_states, st.negative_pivots});
+        {identity_.fingerprint, model_.element_family(), st.steps, st.time, st.dt, st.previous_dt,
+         st.previous_state, snap.state, snap.bubbles, snap.term_states, st.negative_pivots});
 }
 
 double RunRecorder::finish(const SteppingResult& result, const StartTimes& times) {

@@ -84,7 +84,7 @@ class RunRecorder {
   std::optional<PvdWriter> pvd_;          ///< rank 0's
   /// Element fields (stress, J) of the last recorded step: computed once per step for the
   /// history, the wrinkle metrics and the VTU file.
-  std::vector<mini::ElementFields> fields_;
+  std::vector<ElementFields> fields_;
   std::vector<double> previous_state_;   ///< state at the end of the last recorded step
   std::vector<double> last_step_start_;  ///< state at the start of the last recorded step
   std::optional<WrinkleMeter::Result> last_wrinkles_;

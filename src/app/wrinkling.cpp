@@ -146,7 +146,7 @@ WrinkleMeter::WrinkleMeter(const Case& c, const Mesh& mesh) : surface_(c.output.
 }
 
 WrinkleMeter::Result WrinkleMeter::evaluate(const MixedModel& model,
-                                            const std::vector<mini::ElementFields>& fields) const {
+                                            const std::vector<ElementFields>& fields) const {
   const Mesh& mesh = model.mesh();
   const std::vector<Vec3d> u = nodal_displacements(model);
   Result r;

@@ -40,7 +40,7 @@ class WrinkleMeter {
     TensionField tension;
   };
   /// Metrics of the model's current state, whose element_fields() are `fields`.
-  Result evaluate(const MixedModel& model, const std::vector<mini::ElementFields>& fields) const;
+  Result evaluate(const MixedModel& model, const std::vector<ElementFields>& fields) const;
 
   /// History columns and their values: wrinkle_amplitude (largest ring amplitude, mm),
   /// wrinkle_count (count of that ring), wrinkled_fraction (outer area fraction in the wrinkled

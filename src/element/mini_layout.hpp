@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 
 #include "core/types.hpp"
+#include "element/element_fields.hpp"
 
 namespace plisse::mini {
 
@@ -33,12 +34,6 @@ struct ElementStatus {
 };
 
 /// Volume averages over one tetrahedron (for output).
-struct ElementFields {
-  Mat3d cauchy;      ///< (1/V) ∫ σ dV,  σ = J⁻¹ P Fᵀ - p I  [MPa]
-  double J;          ///< (1/V) ∫ det F dV  [-]
-  double von_mises;  ///< sqrt(3/2 dev σ̄ : dev σ̄) of the averaged Cauchy stress σ̄  [MPa]
-  double pressure;   ///< (1/V) ∫ p_h dV  [MPa], the element's pressure unknown (positive in
-                     ///< compression); not -tr σ̄ / 3, which differs by the isochoric part
-};
+using ElementFields = plisse::ElementFields;
 
 }  // namespace plisse::mini

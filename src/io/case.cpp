@@ -48,6 +48,8 @@ const Choices<ContactKind> kContactKinds{{"frictionless", ContactKind::frictionl
                                          {"sticking", ContactKind::sticking}};
 const Choices<bool> kIncompressibility{{"exact", true}, {"nearly", false}};
 const Choices<char> kAxes{{"x", 'x'}, {"y", 'y'}, {"z", 'z'}};
+const Choices<ElementFamily> kElementFamilies{{"mini", ElementFamily::mini},
+                                              {"taylor-hood", ElementFamily::taylor_hood}};
 
 SurfaceRef surface_ref(const Field& f) {
   const std::string name = f.text();
@@ -593,6 +595,10 @@ Schema<Case> case_schema() {
   s.add({"title", "text", "–", "", "empty", {}, "one-line description, written to the run log"},
         [](const Field& f, Case& c, ReadContext&) { c.title = f.text(); })
       .null_is_absent();
+  s.choice<ElementFamily>(
+      "element", &Case::element, kElementFamilies,
+      "mini: linear tetrahedra (P1+/P1); taylor-hood: 10-node tetrahedra (P2/P1), which bend right "
+      "with one or two elements through a wall; generated meshes are then made second-order");
   s.add({"mesh", "map", "", "", "", {}, "the mesh, read from a file or generated"},
         [](const Field& f, Case& c, ReadContext& context) { c.mesh = read_mesh(f, context); })
       .required()

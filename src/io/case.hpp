@@ -18,6 +18,7 @@
 
 #include "core/error.hpp"
 #include "core/types.hpp"
+#include "element/element_family.hpp"
 #include "mesh/generate.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/surface_ref.hpp"
@@ -153,6 +154,9 @@ struct Case {
   std::string path;       ///< the case file as given
   std::string directory;  ///< its directory (relative paths in the case resolve against it)
   std::string title;      ///< optional one-line description
+  /// The element of every tetrahedron; Taylor-Hood needs a second-order mesh (generated ones are
+  /// made second-order for it).
+  ElementFamily element = ElementFamily::mini;
   MeshSection mesh;
   MaterialSection material;
   std::vector<BoundaryCondition> boundary;

@@ -13,7 +13,8 @@ static_assert(std::endian::native == std::endian::little, "checkpoints are littl
 
 constexpr char kMagic[8] = {'P', 'L', 'I', 'S', 'S', 'E', 'C', 'K'};
 constexpr char kTrailer[8] = {'E', 'N', 'D', 'C', 'K', 'P', 'T', '1'};
-constexpr std::uint32_t kVersion = 2;  // 2: negative_pivots after the term states
+// 2: negative_pivots after the term states; 3: the element family after the fingerprint
+constexpr std::uint32_t kVersion = 3;
 
 class Writer {
  public:
@@ -98,6 +99,7 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& c) {
   w.raw(kMagic, sizeof kMagic);
   w.value(kVersion);
   w.value(c.case_fingerprint);
+  w.value<std::uint32_t>(c.element == ElementFamily::mini ? 0 : 1);
   w.value<std::int64_t>(c.steps);
   w.value(c.time);
   w.value(c.dt);
@@ -120,6 +122,9 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
   if (r.value<std::uint32_t>() != kVersion) r.fail("written by another version of plisse");
   Checkpoint c;
   c.case_fingerprint = r.value<std::uint64_t>();
+  const auto element = r.value<std::uint32_t>();
+  if (element > 1) r.fail("unknown element family");
+  c.element = element == 0 ? ElementFamily::mini : ElementFamily::taylor_hood;
   c.steps = static_cast<int>(r.value<std::int64_t>());
   c.time = r.value<double>();
   c.dt = r.value<double>();

@@ -7,17 +7,20 @@
 #include <string>
 #include <vector>
 
+#include "element/element_family.hpp"
+
 namespace plisse {
 
 struct Checkpoint {
   std::uint64_t case_fingerprint = 0;            ///< of the case text and its --set overrides
+  ElementFamily element = ElementFamily::mini;   ///< the element of the run
   int steps = 0;                                 ///< converged steps
   double time = 0.0;                             ///< of the last converged step [s]
   double dt = 0.0;                               ///< next step size
   double previous_dt = 0.0;                      ///< last step size
   std::vector<double> previous_state;            ///< converged state before the last one
   std::vector<double> state;                     ///< last converged full state
-  std::vector<double> bubbles;                   ///< element bubbles of that state
+  std::vector<double> bubbles;                   ///< elements' internal state (MINI: bubbles)
   std::vector<std::vector<double>> term_states;  ///< per model term (contact history ...)
   int negative_pivots = -1;  ///< stability check: of the last converged step (-1: not checked)
 };

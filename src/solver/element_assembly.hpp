@@ -151,6 +151,23 @@ class ElementAssembly {
     return energy;
   }
 
+  /// Calls visit(e, V0, ∫ F dV) for every element e in element order at `state`: its reference
+  /// volume [mm^3] and the integral of the deformation gradient over it (Element::
+  /// deformation_integral). `mesh` is the mesh the assembly was built from. Every rank, all
+  /// elements (the state is whole on every rank).
+  template <class Visit>
+  void for_each_deformation(const Mesh& mesh, std::span<const double> state, Visit&& visit) const {
+    for (int e = 0; e < n_elements(); ++e) {
+      double volume = 0.0;
+      const Mat3d integral = Element::deformation_integral(
+          mesh,
+          std::span<const int, Element::kNodes>(
+              nodes_.data() + static_cast<std::size_t>(e) * Element::kNodes, Element::kNodes),
+          geometry_[e], gather(dofs(e), state), volume);
+      visit(e, volume, integral);
+    }
+  }
+
   /// Remember / return to the internal state of the last converged state.
   void save_converged() { converged_internal_ = internal_; }
   void restore_converged() { internal_ = converged_internal_; }

@@ -2,12 +2,14 @@
 /// What an element type provides to the assembly (solver/element_assembly.hpp): a compile-time
 /// policy type, all static, that the one element loop, the scatter into the residual and the
 /// tangent, the output fields and the checkpoints are written against. A new element family is a
-/// new policy; the loop is not copied. solver/mini_element.hpp is the MINI tetrahedron's.
+/// new policy; the loop is not copied. solver/mini_element.hpp is the MINI tetrahedron's,
+/// solver/taylor_hood_element.hpp the Taylor-Hood tetrahedron's.
 ///
 /// Sizes
 ///   kNodes         nodes in the element's node list (the width of its ElementNodes; the tangent
-///                  layout stores one position per pair of them). MINI: 4.
-///   kDof           element unknowns seen by the global solver, all nodal values. MINI: 16.
+///                  layout stores one position per pair of them). MINI: 4, Taylor-Hood: 10.
+///   kDof           element unknowns seen by the global solver, all nodal values. MINI: 16,
+///                  Taylor-Hood: 34.
 ///   kInternalSize  doubles of internal state per element, condensed out of the global system
 ///                  and carried from one evaluation to the next (a warm start). MINI: 3 (bubble).
 ///                  May be 0.
@@ -33,6 +35,8 @@
 ///       unknowns x; updates `internal` (left unchanged when the status is not ok).
 ///   fields(g, x, material, internal)         output averages at (x, internal).
 ///   strain_energy(g, x, material, 1/κ, internal)  stored energy [mJ] at (x, internal).
+///   deformation_integral(mesh, nodes, g, x, V0)  ∫ F dV over the element at x; V0 receives its
+///                                            reference volume.
 ///   zero_fields()                            Fields of zeros.
 #include <array>
 #include <concepts>
@@ -51,7 +55,7 @@ concept ElementPolicy = requires(const Mesh& mesh, std::span<const int, E::kNode
                                  const typename E::Geometry& g, const typename E::Vector& x,
                                  const std::variant_alternative_t<0, AnyMaterial>& material,
                                  const AnyMaterial& any_material, typename E::Internal& internal,
-                                 typename E::Vector& r, typename E::Matrix* K) {
+                                 typename E::Vector& r, typename E::Matrix* K, double& volume) {
   { E::kNodes } -> std::convertible_to<int>;
   { E::kDof } -> std::convertible_to<int>;
   { E::kInternalSize } -> std::convertible_to<int>;
@@ -66,6 +70,7 @@ concept ElementPolicy = requires(const Mesh& mesh, std::span<const int, E::kNode
   { E::fields(g, x, material, internal) } -> std::same_as<typename E::Fields>;
   { E::strain_energy(g, x, any_material, 0.0, internal) } -> std::same_as<double>;
   { E::zero_fields() } -> std::same_as<typename E::Fields>;
+  { E::deformation_integral(mesh, nodes, g, x, volume) } -> std::same_as<Mat3d>;
 }
 &&sizeof(typename E::Fields) % sizeof(double) == 0;
 

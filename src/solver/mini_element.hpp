@@ -24,7 +24,7 @@ struct MiniElement {
   using Internal = mini::BubbleVec;
   using Geometry = mini::TetGeometry;
   using Status = mini::ElementStatus;
-  using Fields = mini::ElementFields;
+  using Fields = ElementFields;
 
   /// Local node (0..3) of unknown i: displacement components node by node, then the pressures.
   static constexpr std::array<int, kDof> kLocalNode = [] {
@@ -76,6 +76,22 @@ struct MiniElement {
   static double strain_energy(const Geometry& g, const Vector& x, const AnyMaterial& material,
                               double inverse_bulk_modulus, const Internal& bubble) {
     return mini::compute_strain_energy(g, x, material, inverse_bulk_modulus, bubble).total();
+  }
+
+  /// ∫ F dV over the element and its reference volume V0. The bubble vanishes on the element's
+  /// boundary, so the mean of F is that of its linear part: ∫ F dV = V0 dx dX⁻¹ (divergence
+  /// theorem), with dX, dx the edge vectors X_a - X_0 and x_a - x_0 (a = 1..3).
+  static Mat3d deformation_integral(const Mesh& mesh, std::span<const int, kNodes> nodes,
+                                    const Geometry& /*g*/, const Vector& x, double& volume) {
+    const Vec3d X0 = mesh.nodes[nodes[0]];
+    Mat3d dX, dx;
+    for (int a = 1; a < 4; ++a) {
+      dX.col(a - 1) = mesh.nodes[nodes[a]] - X0;
+      dx.col(a - 1) = dX.col(a - 1);
+      for (int k = 0; k < 3; ++k) dx(k, a - 1) += x[mini::dof_u(a, k)] - x[mini::dof_u(0, k)];
+    }
+    volume = dX.determinant() / 6.0;
+    return volume * dx * dX.inverse();
   }
 
   /// All fields zero (the entries of elements another rank owns, before the sum over ranks).

@@ -7,12 +7,26 @@
 #include <set>
 
 #include "solver/element_assembly.hpp"
+#include "solver/mini_element.hpp"
 #include "solver/node_graph.hpp"
 #include "solver/petsc_call.hpp"
 #include "solver/tangent_layout.hpp"
+#include "solver/taylor_hood_element.hpp"
 
 namespace plisse {
 namespace {
+/// The nodes of `mesh` that are not a corner of a tetrahedron (the edge nodes of a second-order
+/// mesh, and nodes no element uses), in increasing order.
+std::vector<int> non_corner_nodes(const Mesh& mesh) {
+  std::vector<char> corner(mesh.n_nodes(), 0);
+  for (const auto& tet : mesh.tets)
+    for (int v : tet) corner[v] = 1;
+  std::vector<int> nodes;
+  for (int v = 0; v < mesh.n_nodes(); ++v)
+    if (!corner[v]) nodes.push_back(v);
+  return nodes;
+}
+
 int count_global_unknowns(const std::vector<std::unique_ptr<ModelTerm>>& terms) {
   int n = 0;
   for (const auto& term : terms) n += term->n_global_unknowns();
@@ -61,11 +75,21 @@ bool MixedModel::symmetric() const {
 
 MixedModel::MixedModel(const Mesh& mesh, AnyMaterial material, double inverse_bulk_modulus,
                        std::vector<ConstrainedComponent> constraints,
-                       std::vector<std::unique_ptr<ModelTerm>> terms)
-    : mesh_(mesh),
-      constraints_(std::move(constraints)),
-      terms_(std::move(terms)),
-      elements_(std::make_unique<Elements>(mesh, std::move(material), inverse_bulk_modulus)) {
+                       std::vector<std::unique_ptr<ModelTerm>> terms, ElementFamily family)
+    : mesh_(mesh), family_(family), constraints_(std::move(constraints)), terms_(std::move(terms)) {
+  FE_CHECK(mesh.order() == mesh_order_of(family),
+           "the " << to_string(family) << " element needs a mesh of order " << mesh_order_of(family)
+                  << ", this one has order " << mesh.order());
+  if (family == ElementFamily::mini) {
+    elements_ = std::make_unique<ElementAssembly<MiniElement>>(mesh, std::move(material),
+                                                               inverse_bulk_modulus);
+  } else {
+    elements_ = std::make_unique<ElementAssembly<TaylorHoodElement>>(mesh, std::move(material),
+                                                                     inverse_bulk_modulus);
+    // The pressure is linear: the edge nodes' pressure values are not unknowns.
+    for (int v : non_corner_nodes(mesh)) constraints_.push_back({v, 3, 0.0, Ramp{}});
+  }
+  const ElementNodes element_nodes = visit_elements([](const auto& e) { return e.nodes(); });
   const int n_global = count_global_unknowns(terms_);
   int next_global = 0;
   for (auto& term : terms_) {
@@ -76,9 +100,9 @@ MixedModel::MixedModel(const Mesh& mesh, AnyMaterial material, double inverse_bu
   // (row, column) full-state dofs the terms couple, beyond the elements.
   std::vector<std::pair<int, int>> couplings;
   for (const auto& term : terms_) term->add_couplings(couplings);
-  const NodeGraph graph = build_node_graph(mesh.n_nodes(), elements_->nodes(), couplings);
-  distribution_ = std::make_unique<Distribution>(graph, elements_->nodes(), n_global, constraints_);
-  layout_ = std::make_unique<TangentLayout>(graph, elements_->nodes(), *distribution_, couplings);
+  const NodeGraph graph = build_node_graph(mesh.n_nodes(), element_nodes, couplings);
+  distribution_ = std::make_unique<Distribution>(graph, element_nodes, n_global, constraints_);
+  layout_ = std::make_unique<TangentLayout>(graph, element_nodes, *distribution_, couplings);
   state_.assign(dofs().n_dofs(), 0.0);
   full_residual_.assign(state_.size(), 0.0);
   save_converged();
@@ -117,8 +141,11 @@ void MixedModel::set_free(Vec x) {
 
 AssemblyStatus MixedModel::assemble_residual(Vec f) {
   std::fill(full_residual_.begin(), full_residual_.end(), 0.0);
-  const AssemblyStatus status =
-      elements_->add_residual(*distribution_, state_, full_residual_, assembly_threads());
+  const AssemblyStatus status = std::visit(
+      [&](auto& e) {
+        return e->add_residual(*distribution_, state_, full_residual_, assembly_threads());
+      },
+      elements_);
   for (auto& term : terms_) term->assemble(time_, state_, full_residual_, nullptr);
   if (!external_force_.empty()) {
     const double factor = external_ramp_.factor(time_);
@@ -136,13 +163,19 @@ AssemblyStatus MixedModel::assemble_tangent(Mat K) {
     // Each entry receives its element contributions in element order, then the terms', exactly
     // as MatSetValues(ADD_VALUES) would add them: the same bits.
     PetscScalar* values = layout_->open_values(K);
-    status = elements_->add_tangent(*distribution_, state_, *layout_, values, assembly_threads());
+    status = std::visit(
+        [&](auto& e) {
+          return e->add_tangent(*distribution_, state_, *layout_, values, assembly_threads());
+        },
+        elements_);
     TangentLayout::TermSink sink(*layout_, values);
     for (auto& term : terms_) term->assemble(time_, state_, term_residual_, &sink);
     layout_->close_values(K, values);
   } else {
     PLISSE_PETSC(MatZeroEntries(K));
-    status = elements_->add_tangent(*distribution_, state_, K, assembly_threads());
+    status = std::visit(
+        [&](auto& e) { return e->add_tangent(*distribution_, state_, K, assembly_threads()); },
+        elements_);
     EquationSink sink(K, dofs(), first_owned_equation(), end_owned_equation(), equations_);
     for (auto& term : terms_) term->assemble(time_, state_, term_residual_, &sink);
   }
@@ -162,38 +195,43 @@ bool MixedModel::update_multipliers() {
 MixedModel::Snapshot MixedModel::snapshot() const {
   Snapshot s;
   s.state = converged_state_;
-  s.bubbles = elements_->converged_values(*distribution_);
+  s.bubbles = visit_elements([&](const auto& e) { return e.converged_values(*distribution_); });
   for (const auto& term : terms_) s.term_states.push_back(term->save_state());
   return s;
 }
 
 void MixedModel::restore(const Snapshot& s) {
-  FE_CHECK(s.state.size() == state_.size() && s.bubbles.size() == elements_->n_internal_values() &&
+  const std::size_t n_internal =
+      visit_elements([](const auto& e) { return e.n_internal_values(); });
+  FE_CHECK(s.state.size() == state_.size() && s.bubbles.size() == n_internal &&
                s.term_states.size() == terms_.size(),
            "the checkpoint does not fit this model (" << s.state.size() << " values for "
                                                       << state_.size() << " dofs)");
   state_ = s.state;
-  elements_->restore(s.bubbles);
+  std::visit([&](auto& e) { e->restore(s.bubbles); }, elements_);
   for (size_t k = 0; k < terms_.size(); ++k) terms_[k]->load_state(s.term_states[k]);
   converged_state_ = state_;
 }
 
 void MixedModel::save_converged() {
   converged_state_ = state_;
-  elements_->save_converged();
+  std::visit([](auto& e) { e->save_converged(); }, elements_);
   for (auto& term : terms_) term->accept_step(state_);
 }
 
 void MixedModel::restore_converged() {
   state_ = converged_state_;
-  elements_->restore_converged();
+  std::visit([](auto& e) { e->restore_converged(); }, elements_);
   for (auto& term : terms_) term->reject_step();
 }
 
 Vec3d MixedModel::reaction(const std::vector<int>& triangles) const {
   std::set<int> nodes;
-  for (int t : triangles)
+  for (int t : triangles) {
     for (int v : mesh_.triangles[t]) nodes.insert(v);
+    if (mesh_.order() == 2)
+      for (int v : mesh_.triangle_edge_nodes[t]) nodes.insert(v);
+  }
   Vec3d force = Vec3d::Zero();
   for (int v : nodes)
     if (distribution_->owns_node(v))  // the residual is complete on the owned nodes only
@@ -203,42 +241,45 @@ Vec3d MixedModel::reaction(const std::vector<int>& triangles) const {
   return force;
 }
 
-std::vector<mini::ElementFields> MixedModel::element_fields() const {
-  return elements_->fields(*distribution_, state_, assembly_threads());
+std::vector<ElementFields> MixedModel::element_fields() const {
+  return visit_elements(
+      [&](const auto& e) { return e.fields(*distribution_, state_, assembly_threads()); });
+}
+
+std::vector<double> MixedModel::nodal_pressures() const {
+  std::vector<double> p(mesh_.n_nodes());
+  for (int v = 0; v < mesh_.n_nodes(); ++v) p[v] = state_[DofMap::dof(v, 3)];
+  if (family_ == ElementFamily::taylor_hood)
+    for (int e = 0; e < mesh_.n_tets(); ++e)
+      for (int k = 0; k < 6; ++k) {
+        const auto [i, j] = taylor_hood::kEdgeCorners[k];
+        p[mesh_.tet_edge_nodes[e][k]] = 0.5 * (p[mesh_.tets[e][i]] + p[mesh_.tets[e][j]]);
+      }
+  return p;
 }
 
 double MixedModel::strain_energy() const {
-  return elements_->strain_energy(*distribution_, state_);
+  return visit_elements([&](const auto& e) { return e.strain_energy(*distribution_, state_); });
 }
 
 BodyAverages MixedModel::averages() const { return averages(element_fields()); }
 
-BodyAverages MixedModel::averages(const std::vector<mini::ElementFields>& fields) const {
+BodyAverages MixedModel::averages(const std::vector<ElementFields>& fields) const {
   FE_CHECK(
       fields.size() == static_cast<std::size_t>(mesh_.n_tets()),
       "averages: " << fields.size() << " element fields for " << mesh_.n_tets() << " elements");
   BodyAverages avg;
   avg.F.setZero();
   double reference_volume = 0.0;
-  for (int e = 0; e < mesh_.n_tets(); ++e) {
-    const auto& tet = mesh_.tets[e];
-    const Vec3d X0 = mesh_.nodes[tet[0]];
-    Mat3d dX, dx;
-    for (int a = 1; a < 4; ++a) {
-      dX.col(a - 1) = mesh_.nodes[tet[a]] - X0;
-      dx.col(a - 1) = dX.col(a - 1);
-      for (int k = 0; k < 3; ++k)
-        dx(k, a - 1) += state_[DofMap::dof(tet[a], k)] - state_[DofMap::dof(tet[0], k)];
-    }
-    const double V0 = dX.determinant() / 6.0;
-    // The bubble vanishes on the element boundary, so the mean of F over the tet is the F of its
-    // linear part: F_mean = dx dX^-1 (divergence theorem).
-    avg.F += V0 * dx * dX.inverse();
-    const double v = fields[e].J * V0;
-    avg.cauchy += v * fields[e].cauchy;
-    avg.volume += v;
-    reference_volume += V0;
-  }
+  visit_elements([&](const auto& elements) {
+    elements.for_each_deformation(mesh_, state_, [&](int e, double V0, const Mat3d& F_integral) {
+      avg.F += F_integral;
+      const double v = fields[e].J * V0;
+      avg.cauchy += v * fields[e].cauchy;
+      avg.volume += v;
+      reference_volume += V0;
+    });
+  });
   avg.F /= reference_volume;
   if (avg.volume > 0) avg.cauchy /= avg.volume;
   return avg;

@@ -8,7 +8,10 @@
 ///   - solver/tangent_layout.hpp: the exact sparsity of the tangent, built once, and the
 ///     precomputed positions of the element matrices in it;
 ///   - solver/element_assembly.hpp: the threaded, chunked element loop and its scatter, for the
-///     element policy of the model (solver/mini_element.hpp: the MINI tetrahedron).
+///     element policy of the model's family (solver/mini_element.hpp: the MINI tetrahedron on a
+///     linear mesh; solver/taylor_hood_element.hpp: the Taylor-Hood tetrahedron on a second-order
+///     mesh, whose edge nodes carry displacements only: the model constrains their pressure
+///     values to 0).
 ///
 /// Distributed runs (more than one rank in PETSC_COMM_WORLD): every rank holds the whole mesh and
 /// the whole state; the equations are distributed (solver/partition.hpp). Rank r owns the equations
@@ -25,9 +28,11 @@
 #include <array>
 #include <memory>
 #include <utility>
+#include <variant>
 #include <vector>
 
-#include "element/mini.hpp"
+#include "element/element_family.hpp"
+#include "element/element_fields.hpp"
 #include "material/registry.hpp"
 #include "mesh/mesh.hpp"
 #include "physics/dirichlet.hpp"
@@ -37,6 +42,7 @@
 #include "solver/dof_map.hpp"
 #include "solver/element_policy.hpp"
 #include "solver/mini_element.hpp"
+#include "solver/taylor_hood_element.hpp"
 
 namespace plisse {
 
@@ -55,10 +61,12 @@ class MixedModel {
  public:
   /// Borrows `mesh` (must outlive the model). `inverse_bulk_modulus` is 1/κ, 0 for exact
   /// incompressibility. `terms` (loads, ...) are owned by the model; their global unknowns follow
-  /// the nodal values in the full state, in the order given.
+  /// the nodal values in the full state, in the order given. `family` is the element of every
+  /// tetrahedron; the mesh must have its order (mesh_order_of; plisse::Error otherwise).
   MixedModel(const Mesh& mesh, AnyMaterial material, double inverse_bulk_modulus,
              std::vector<ConstrainedComponent> constraints,
-             std::vector<std::unique_ptr<ModelTerm>> terms = {});
+             std::vector<std::unique_ptr<ModelTerm>> terms = {},
+             ElementFamily family = ElementFamily::mini);
 
   ~MixedModel();
   MixedModel(const MixedModel&) = delete;
@@ -69,6 +77,7 @@ class MixedModel {
   bool symmetric() const;
 
   const Mesh& mesh() const { return mesh_; }
+  ElementFamily element_family() const { return family_; }
   const DofMap& dofs() const { return distribution_->dofs(); }
   int n_free() const { return dofs().n_free(); }
 
@@ -136,7 +145,7 @@ class MixedModel {
   /// Everything that defines the last converged state, as numbers (checkpoints).
   struct Snapshot {
     std::vector<double> state;                     ///< full state
-    std::vector<double> bubbles;                   ///< kDofBubble per element
+    std::vector<double> bubbles;                   ///< elements' internal state (MINI: bubbles)
     std::vector<std::vector<double>> term_states;  ///< ModelTerm::save_state, per term
   };
   Snapshot snapshot() const;
@@ -153,23 +162,36 @@ class MixedModel {
   /// the last assemble_residual.
   Vec3d reaction(const std::vector<int>& triangles) const;
 
+  /// The pressure field at every node [MPa]: the nodal unknowns, and on the edge nodes of a
+  /// Taylor-Hood model (which carry no pressure unknown) the linear interpolation, the mean of
+  /// the edge's two corners (for output).
+  std::vector<double> nodal_pressures() const;
+
   /// Per-element Cauchy stress, J and von Mises at the current state.
-  std::vector<mini::ElementFields> element_fields() const;
+  std::vector<ElementFields> element_fields() const;
   BodyAverages averages() const;
   /// The same from element_fields() of the current state, when the caller already has them.
-  BodyAverages averages(const std::vector<mini::ElementFields>& fields) const;
-  /// Stored energy of the body at the current state [mJ = N mm]: the sum of
-  /// mini::compute_strain_energy over the elements (isochoric W plus, nearly incompressible, the
-  /// volumetric p^2/(2 kappa) part; element/strain_energy.hpp).
+  BodyAverages averages(const std::vector<ElementFields>& fields) const;
+  /// Stored energy of the body at the current state [mJ = N mm]: the sum over the elements of
+  /// the isochoric W plus, nearly incompressible, the volumetric p^2/(2 kappa) part
+  /// (element/strain_energy.hpp; element/taylor_hood.hpp).
   double strain_energy() const;
 
  private:
-  using Elements = ElementAssembly<MiniElement>;
+  /// The element assembly of the model's family.
+  using Elements = std::variant<std::unique_ptr<ElementAssembly<MiniElement>>,
+                                std::unique_ptr<ElementAssembly<TaylorHoodElement>>>;
+  /// f(assembly) on the model's element assembly (either family).
+  template <class F>
+  decltype(auto) visit_elements(F&& f) const {
+    return std::visit([&](const auto& e) -> decltype(auto) { return f(*e); }, elements_);
+  }
 
   const Mesh& mesh_;
+  ElementFamily family_;
   std::vector<ConstrainedComponent> constraints_;
   std::vector<std::unique_ptr<ModelTerm>> terms_;
-  std::unique_ptr<Elements> elements_;          ///< element data and loops
+  Elements elements_;                           ///< element data and loops
   std::unique_ptr<Distribution> distribution_;  ///< ranks, equation numbering
   std::unique_ptr<TangentLayout> layout_;       ///< sparsity and element positions of K
   std::vector<double> state_, converged_state_;

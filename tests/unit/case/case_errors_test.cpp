@@ -44,7 +44,7 @@ TEST(CaseErrors, UnknownKeysListTheAllowedOnesAndSuggestTypos) {
   const InputError section = case_error(kMinimalCase + "laods: []\n");
   EXPECT_INPUT_ERROR(section, "case.yaml", 3, 1, "laods", "unknown key 'laods'");
   EXPECT_NE(section.rule().find("did you mean 'loads'?"), std::string::npos) << section.rule();
-  EXPECT_NE(section.rule().find("allowed keys: title, mesh, material, boundary, loads"),
+  EXPECT_NE(section.rule().find("allowed keys: title, element, mesh, material, boundary, loads"),
             std::string::npos)
       << section.rule();
 
