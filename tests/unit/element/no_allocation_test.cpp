@@ -1,4 +1,4 @@
-// assemble_mini and compute_element_fields allocate nothing on the heap (docs/architecture.md,
+// The MINI and Taylor-Hood kernels (assemble, element fields) allocate nothing on the heap (docs/architecture.md,
 // "Coding conventions"). Counted by interposing malloc in this test executable (glibc: forwarding
 // to __libc_malloc); operator new and Eigen's aligned_malloc both end in malloc.
 #include <gtest/gtest.h>
@@ -7,6 +7,7 @@
 #include <cstddef>
 
 #include "element/mini.hpp"
+#include "element/taylor_hood.hpp"
 #include "element_test_support.hpp"
 #include "material/fung.hpp"
 #include "material/neo_hookean.hpp"
@@ -78,6 +79,36 @@ TEST(MiniElement, KernelsDoNotAllocate) {
   }
   EXPECT_EQ(allocations_during_kernels(NeoHookean{0.5}), 0);
   EXPECT_EQ(allocations_during_kernels(Fung{1.0, 2.0}), 0);
+}
+
+template <class Material>
+long allocations_during_taylor_hood_kernels(const Material& mat) {
+  const auto corners = test::random_tet(3);
+  std::array<Vec3d, taylor_hood::kNodes> X;
+  for (int a = 0; a < 4; ++a) X[a] = corners[a];
+  for (int k = 0; k < 6; ++k)
+    X[4 + k] = 0.5 * (corners[taylor_hood::kEdgeCorners[k][0]] +
+                      corners[taylor_hood::kEdgeCorners[k][1]]);
+  const taylor_hood::Geometry g = taylor_hood::compute_geometry(X);
+  (void)taylor_hood::reference_derivatives();  // the table is built once, outside the count
+  taylor_hood::ElemVec x = taylor_hood::ElemVec::Zero();
+  for (int i = 0; i < taylor_hood::kDofU; ++i) x(i) = 0.01 * g.size * ((i * 7) % 5 - 2);
+  taylor_hood::ElemVec r;
+  taylor_hood::ElemMat K;
+  counting = true;
+  allocations = 0;
+  const taylor_hood::ElementStatus s1 = taylor_hood::assemble(g, x, mat, 0.0, r, &K);
+  const taylor_hood::ElementStatus s2 = taylor_hood::assemble(g, x, mat, 1e-3, r, nullptr);
+  const ElementFields f = taylor_hood::compute_element_fields(g, x, mat);
+  counting = false;
+  EXPECT_TRUE(s1.ok && s2.ok);
+  EXPECT_GT(f.J, 0.0);
+  return allocations.load();
+}
+
+TEST(TaylorHoodElement, KernelsDoNotAllocate) {
+  EXPECT_EQ(allocations_during_taylor_hood_kernels(NeoHookean{0.5}), 0);
+  EXPECT_EQ(allocations_during_taylor_hood_kernels(Fung{1.0, 2.0}), 0);
 }
 
 }  // namespace
