@@ -137,9 +137,9 @@ void log_header(RunLog& log, const PreparedRun& run, const fs::path& directory,
   for (const auto& o : run.options.overrides) log.info("  --set " + o);
   char line[256];
   std::snprintf(line, sizeof line,
-                "mesh: %d nodes, %d tetrahedra; unknowns: %d (%d pressure), %zu constrained",
-                mesh.n_nodes(), mesh.n_tets(), model.n_free(), model.dofs().n_free_pressure(),
-                n_constrained);
+                "mesh: %d nodes, %d tetrahedra (%s); unknowns: %d (%d pressure), %zu constrained",
+                mesh.n_nodes(), mesh.n_tets(), to_string(model.element_family()).c_str(),
+                model.n_free(), model.dofs().n_free_pressure(), n_constrained);
   log.info(line);
   if (model.n_ranks() == 1) return;
   // Each rank evaluates the elements touching its nodes: the cut elements twice.

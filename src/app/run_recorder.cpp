@@ -209,6 +209,7 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
   if (!result.completed) summary["failure"] = result.failure;
   summary["nodes"] = mesh.n_nodes();
   summary["elements"] = mesh.n_tets();
+  summary["element"] = to_string(model_.element_family());
   summary["dofs"] = model_.dofs().n_dofs();
   summary["free_dofs"] = model_.n_free();
   summary["pressure_dofs"] = model_.dofs().n_free_pressure();
