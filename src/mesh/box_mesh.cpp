@@ -2,12 +2,14 @@
 
 #include "core/error.hpp"
 #include "mesh/boundary_tags.hpp"
+#include "mesh/second_order.hpp"
 
 namespace plisse {
 
-Mesh make_box_mesh(const Vec3d& extent, const std::array<int, 3>& cells) {
+Mesh make_box_mesh(const Vec3d& extent, const std::array<int, 3>& cells, int order) {
   const int nx = cells[0], ny = cells[1], nz = cells[2];
   FE_CHECK(nx >= 1 && ny >= 1 && nz >= 1, "make_box_mesh: cell counts must be >= 1");
+  FE_CHECK(order == 1 || order == 2, "make_box_mesh: order must be 1 or 2");
   Mesh mesh;
   auto coordinate = [](double length, int i, int n) { return i == n ? length : length * i / n; };
   auto node = [&](int i, int j, int k) { return i + (nx + 1) * (j + (ny + 1) * k); };
@@ -53,6 +55,7 @@ Mesh make_box_mesh(const Vec3d& extent, const std::array<int, 3>& cells) {
     if (all(2, extent.z())) return static_cast<int>(kTop);
     return -1;
   });
+  if (order == 2) add_straight_edge_nodes(mesh);
   return mesh;
 }
 

@@ -14,6 +14,8 @@ namespace plisse {
 /// Nodes on the faces x = 0, x = extent.x etc. have that coordinate exactly.
 /// Tags: left x = 0, right x = Lx, front y = 0, back y = Ly, bottom z = 0, top z = Lz, and
 /// sym_x = left, sym_y = front, sym_z = bottom. All tetrahedra positive; 6 nx ny nz of them.
-Mesh make_box_mesh(const Vec3d& extent, const std::array<int, 3>& cells);
+/// `order` 2 adds the straight edge midpoints as edge nodes (10-node tetrahedra, 6-node
+/// triangles; add_straight_edge_nodes), which are exact for the flat-sided box.
+Mesh make_box_mesh(const Vec3d& extent, const std::array<int, 3>& cells, int order = 1);
 
 }  // namespace plisse

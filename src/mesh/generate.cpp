@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -67,6 +68,9 @@ const std::vector<MeshKind>& mesh_kinds() {
     const Range layers = Range::closed(1, 64);
     const auto thickness_help = "wall thickness";
     const auto layers_help = "tetrahedra through the thickness (exactly)";
+    const MeshOption order =
+        integer_option("order", &Spec::order, Range::closed(1, 2),
+                       "element order: 1 (4-node tetrahedra) or 2 (10-node, one node per edge)");
     std::vector<MeshKind> k;
     k.push_back({"cube",
                  "cube [0, edge]^3, structured (6 tetrahedra per cell); tags left/right (x), "
@@ -74,7 +78,8 @@ const std::vector<MeshKind>& mesh_kinds() {
                  "bottom/top (z), sym_x = left, sym_y = front, sym_z = bottom",
                  {real_option("edge", &Spec::edge, "mm", size, "edge length"),
                   integer_option("divisions", &Spec::divisions, Range::closed(1, 200),
-                                 "element divisions per edge")}});
+                                 "element divisions per edge"),
+                  order}});
     k.push_back({"spherical-shell",
                  "hollow sphere, inner radius R, layers of prisms cut into tetrahedra; tags inner, "
                  "outer and "
@@ -84,7 +89,7 @@ const std::vector<MeshKind>& mesh_kinds() {
                   integer_option("layers", &Spec::layers, layers, layers_help),
                   real_option("element_size", &Spec::element_size, "mm", size,
                               "target element edge on the inner surface (<= inner_radius)"),
-                  symmetry_option()}});
+                  symmetry_option(), order}});
     k.push_back(
         {"airbag",
          "round airbag: closed oblate shell, mid-surface x^2/r^2 + (2y/height)^2 + z^2/r^2 = 1, "
@@ -99,7 +104,7 @@ const std::vector<MeshKind>& mesh_kinds() {
           integer_option("layers", &Spec::layers, layers, layers_help),
           real_option("element_size", &Spec::element_size, "mm", size,
                       "target element edge on the mid-surface (<= height/2)"),
-          symmetry_option()}});
+          symmetry_option(), order}});
     k.push_back(
         {"sheet",
          "flat sheet [0, length] x [0, width] x [0, thickness], structured; tags as the cube",
@@ -107,7 +112,8 @@ const std::vector<MeshKind>& mesh_kinds() {
           real_option("width", &Spec::width, "mm", size, "extent along y"),
           real_option("thickness", &Spec::thickness, "mm", size, "extent along z"),
           integer_option("layers", &Spec::layers, layers, layers_help),
-          real_option("element_size", &Spec::element_size, "mm", size, "in-plane element size")}});
+          real_option("element_size", &Spec::element_size, "mm", size, "in-plane element size"),
+          order}});
     return k;
   }();
   return kinds;
@@ -204,37 +210,67 @@ Mesh generate_mesh(const MeshGenerationSpec& spec) {
   validate_mesh_spec(spec);
   if (spec.kind == "cube")
     return make_box_mesh(Vec3d(spec.edge, spec.edge, spec.edge),
-                         {spec.divisions, spec.divisions, spec.divisions});
+                         {spec.divisions, spec.divisions, spec.divisions}, spec.order);
   if (spec.kind == "sheet")
     return make_box_mesh(Vec3d(spec.length, spec.width, spec.thickness),
                          {sheet_cells(spec.length, spec.element_size),
-                          sheet_cells(spec.width, spec.element_size), spec.layers});
+                          sheet_cells(spec.width, spec.element_size), spec.layers},
+                         spec.order);
+  using Midpoint = std::function<Vec3d(int k1, int j1, int k2, int j2)>;
   if (spec.kind == "spherical-shell") {
     const double R = spec.inner_radius;
     const auto surface = mesh_spheroid_surface(R, R, spec.element_size, spec.symmetry);
     std::vector<Vec3d> direction;
     direction.reserve(surface.nodes.size());
     for (const auto& p : surface.nodes) direction.push_back(p / p.norm());
+    auto radius = [&](int j) { return layer_value(R, R + spec.thickness, j, spec.layers); };
     // Node k of layer j at radius r_j = R + j t / layers along the k-th direction.
-    return make_layered_shell(surface, spec.layers, spec.symmetry, [&](int k, int j) {
-      return Vec3d(layer_value(R, R + spec.thickness, j, spec.layers) *
-                   direction[static_cast<std::size_t>(k)]);
-    });
+    const auto position = [&](int k, int j) {
+      return Vec3d(radius(j) * direction[static_cast<std::size_t>(k)]);
+    };
+    // Edge nodes on the true spheres: radius (r_j1 + r_j2)/2 along the mean direction, so an edge
+    // within one layer sphere stays on it and a through-wall edge (k1 = k2) is straight.
+    Midpoint midpoint;
+    if (spec.order == 2)
+      midpoint = [&](int k1, int j1, int k2, int j2) {
+        const auto d1 = static_cast<std::size_t>(k1), d2 = static_cast<std::size_t>(k2);
+        const Vec3d d =
+            k1 == k2 ? direction[d1] : Vec3d((direction[d1] + direction[d2]).normalized());
+        return Vec3d(0.5 * (radius(j1) + radius(j2)) * d);
+      };
+    return make_layered_shell(surface, spec.layers, spec.symmetry, position, midpoint);
   }
   // airbag: mid-surface x^2/a^2 + y^2/c^2 + z^2/a^2 = 1, wall offset along the unit normal
-  // n ~ (x/a^2, y/c^2, z/a^2) by s_j = -t/2 + j t / layers.
+  // n ~ (x/a^2, y/c^2, z/a^2) by o_j = -t/2 + j t / layers.
   const double a = spec.radius, c = spec.height / 2.0, t = spec.thickness;
   const auto surface = mesh_spheroid_surface(a, c, spec.element_size, spec.symmetry);
+  auto unit_normal = [&](const Vec3d& p) {
+    const Vec3d n(p.x() / (a * a), p.y() / (c * c), p.z() / (a * a));
+    return Vec3d(n / n.norm());
+  };
   std::vector<Vec3d> normal;
   normal.reserve(surface.nodes.size());
-  for (const auto& p : surface.nodes) {
-    const Vec3d n(p.x() / (a * a), p.y() / (c * c), p.z() / (a * a));
-    normal.push_back(n / n.norm());
-  }
-  return make_layered_shell(surface, spec.layers, spec.symmetry, [&](int k, int j) {
+  for (const auto& p : surface.nodes) normal.push_back(unit_normal(p));
+  auto offset = [&](int j) { return layer_value(-0.5 * t, 0.5 * t, j, spec.layers); };
+  const auto position = [&](int k, int j) {
     const auto i = static_cast<std::size_t>(k);
-    return Vec3d(surface.nodes[i] + layer_value(-0.5 * t, 0.5 * t, j, spec.layers) * normal[i]);
-  });
+    return Vec3d(surface.nodes[i] + offset(j) * normal[i]);
+  };
+  // Edge nodes on the true offset surfaces: the chord's midpoint projected onto the mid-surface
+  // by the radial scaling of mesh_spheroid_surface, offset by the mean of the two layer offsets
+  // along the normal there.
+  Midpoint midpoint;
+  if (spec.order == 2)
+    midpoint = [&](int k1, int j1, int k2, int j2) {
+      const double o = 0.5 * (offset(j1) + offset(j2));
+      const auto i1 = static_cast<std::size_t>(k1), i2 = static_cast<std::size_t>(k2);
+      if (k1 == k2) return Vec3d(surface.nodes[i1] + o * normal[i1]);
+      const Vec3d p = 0.5 * (surface.nodes[i1] + surface.nodes[i2]);
+      const Vec3d m = p / std::sqrt(p.x() * p.x() / (a * a) + p.y() * p.y() / (c * c) +
+                                    p.z() * p.z() / (a * a));
+      return Vec3d(m + o * unit_normal(m));
+    };
+  return make_layered_shell(surface, spec.layers, spec.symmetry, position, midpoint);
 }
 
 }  // namespace plisse

@@ -38,6 +38,8 @@ struct MeshGenerationSpec {
   int layers = 3;                      ///< tetrahedra through the thickness (exactly)
   double element_size = 1.0;           ///< target in-surface element size [mm]
   Symmetry symmetry = Symmetry::full;  ///< shell and airbag only
+  // all kinds
+  int order = 1;  ///< 1: 4-node tetrahedra; 2: 10-node (one node per edge, on curved walls)
 };
 
 /// One declared generator option. Exactly one of the three member pointers is set.
@@ -68,7 +70,10 @@ std::string to_string(Symmetry s);
 /// Generates the mesh described by `spec` (docs/meshes.md). Callers validate input against
 /// `mesh_kinds()` first to report their own place; `generate_mesh` calls `validate_mesh_spec`
 /// again, so an invalid spec never reaches the generators. Every tetrahedron is positively
-/// oriented; boundary triangles have the outward normal by the right-hand rule.
+/// oriented; boundary triangles have the outward normal by the right-hand rule. With
+/// `spec.order` 2 the corner nodes, tetrahedra, triangles and tags are those of order 1, and one
+/// node per edge follows them: the straight midpoint for the cube and the sheet, a point on the
+/// true curved surfaces for the shell and the airbag (docs/meshes.md, "Second-order meshes").
 Mesh generate_mesh(const MeshGenerationSpec& spec);
 
 /// Checks `spec` without generating: the kind is known (key "mesh.generate"), each option of the

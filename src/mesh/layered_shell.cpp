@@ -1,9 +1,11 @@
 #include "mesh/layered_shell.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.hpp"
 #include "mesh/boundary_tags.hpp"
+#include "mesh/second_order.hpp"
 
 namespace plisse {
 
@@ -21,8 +23,10 @@ std::array<bool, 3> cut_planes(Symmetry symmetry) {
   return {false, false, false};
 }
 
-Mesh make_layered_shell(const SurfaceTriangulation& surface, int layers, Symmetry symmetry,
-                        const std::function<Vec3d(int node, int layer)>& position) {
+Mesh make_layered_shell(
+    const SurfaceTriangulation& surface, int layers, Symmetry symmetry,
+    const std::function<Vec3d(int node, int layer)>& position,
+    const std::function<Vec3d(int node1, int layer1, int node2, int layer2)>& midpoint) {
   FE_CHECK(layers >= 1, "make_layered_shell: layers must be >= 1");
   const int n = static_cast<int>(surface.nodes.size());
   Mesh mesh;
@@ -62,6 +66,20 @@ Mesh make_layered_shell(const SurfaceTriangulation& surface, int layers, Symmetr
   for (int axis = 0; axis < 3; ++axis)
     if (!planes[static_cast<std::size_t>(axis)])
       mesh.surface_tags.erase(side_tags[static_cast<std::size_t>(2 + axis)][0]);
+  if (midpoint) {
+    add_edge_nodes(mesh, [&](int a, int b) {
+      Vec3d x = midpoint(a % n, a / n, b % n, b / n);
+      for (int axis = 0; axis < 3; ++axis)
+        if (planes[static_cast<std::size_t>(axis)] &&
+            mesh.nodes[static_cast<std::size_t>(a)][axis] == 0.0 &&
+            mesh.nodes[static_cast<std::size_t>(b)][axis] == 0.0) {
+          FE_CHECK(std::abs(x[axis]) <= 1e-9 * x.norm(),
+                   "layered shell: the edge node between two nodes on a cut plane is off it");
+          x[axis] = 0.0;
+        }
+      return x;
+    });
+  }
   return mesh;
 }
 

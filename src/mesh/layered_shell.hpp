@@ -27,8 +27,16 @@ struct SurfaceTriangulation {
 /// Tags: `inner` (layer 0), `outer` (layer `layers`), and for each plane kept by `symmetry`
 /// (sym_x: x = 0, sym_y: y = 0, sym_z: z = 0) the side faces whose nodes all have that
 /// coordinate exactly 0. Precondition: positions on cut planes have the coordinate exactly 0.
-Mesh make_layered_shell(const SurfaceTriangulation& surface, int layers, Symmetry symmetry,
-                        const std::function<Vec3d(int node, int layer)>& position);
+///
+/// Second order when `midpoint` is given: the edge between node k1 of layer j1 and node k2 of
+/// layer j2 gets one edge node at `midpoint(k1, j1, k2, j2)` (add_edge_nodes; called once per
+/// edge, for the edge's smaller mesh index first), so that curved walls can put it on the true
+/// surface. An edge node whose two ends lie on a cut plane gets that coordinate exactly 0 (the
+/// callback need only be within round-off of it), like the corners.
+Mesh make_layered_shell(
+    const SurfaceTriangulation& surface, int layers, Symmetry symmetry,
+    const std::function<Vec3d(int node, int layer)>& position,
+    const std::function<Vec3d(int node1, int layer1, int node2, int layer2)>& midpoint = {});
 
 /// Which coordinate planes a symmetry cuts: {x = 0, y = 0, z = 0}.
 std::array<bool, 3> cut_planes(Symmetry symmetry);
