@@ -46,7 +46,8 @@ inline Eigen::Matrix<double, 3, kNodes> nodal_displacements(const ElemVec& x_e) 
 }
 
 /// Kinematics at quadrature point q for displacements `u` (3 x 10) and corner pressures `p`.
-inline PointKinematics point_kinematics(const Geometry& g, const Eigen::Matrix<double, 3, kNodes>& u,
+inline PointKinematics point_kinematics(const Geometry& g,
+                                        const Eigen::Matrix<double, 3, kNodes>& u,
                                         const Eigen::Vector4d& p, int q) {
   PointKinematics k;
   k.grad_N = gradients(g, q);

@@ -127,7 +127,11 @@ Mesh load_case_mesh(const Case& c) {
   }
   if (!c.mesh.generate) throw InputError(c.mesh.place, "no mesh file and nothing to generate");
   try {
-    return generate_mesh(*c.mesh.generate);
+    // The element chooses the order of a generated mesh unless `mesh.order` says otherwise (a
+    // mismatch is then reported by the model builder, naming both keys' meaning).
+    MeshGenerationSpec spec = *c.mesh.generate;
+    if (!c.mesh.option_places.count("order")) spec.order = mesh_order_of(c.element);
+    return generate_mesh(spec);
   } catch (const InputError& e) {
     // The generator names the option ("mesh.thickness") but not the case file: place the error at
     // that key's line, or at `mesh:` when the option took its default.

@@ -1,7 +1,8 @@
 // Manufactured solutions on uniformly refined cubes (docs/verification/mms.md): the MINI element
-// must converge at the optimal rates of P1 displacements and P1 pressures, for exact and near
-// incompressibility. Rates are asserted between the two finest levels, where the error is
-// asymptotic; the expected values are 2 (u in L2), 1 (u in H1) and >= 1 (p in L2).
+// must converge at the optimal rates of P1 displacements and P1 pressures, the Taylor-Hood element
+// at those of P2 displacements and P1 pressures, for exact and near incompressibility. Rates are
+// asserted between the two finest levels, where the error is asymptotic; the expected values are
+// 2, 1, >= 1 (MINI) and 3, 2, 2 (Taylor-Hood) for u in L2, u in H1 and p in L2.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -81,6 +82,16 @@ TEST(ManufacturedSolution, ExactIncompressibilityNeoHookeanConvergesOptimally) {
 TEST(ManufacturedSolution, NearIncompressibilityMooneyRivlinConvergesOptimally) {
   expect_optimal_rates("MMS, Mooney-Rivlin, kappa = 100 mu", near_incompressible_mooney_rivlin(),
                        {4, 8, 16});
+}
+
+TEST(ManufacturedSolution, TaylorHoodExactIncompressibilityNeoHookeanConvergesOptimally) {
+  expect_optimal_rates("MMS, Taylor-Hood, neo-Hookean, exact incompressibility",
+                       with_taylor_hood(exact_incompressible_neo_hookean()), {2, 4, 8});
+}
+
+TEST(ManufacturedSolution, TaylorHoodNearIncompressibilityMooneyRivlinConvergesOptimally) {
+  expect_optimal_rates("MMS, Taylor-Hood, Mooney-Rivlin, kappa = 100 mu",
+                       with_taylor_hood(near_incompressible_mooney_rivlin()), {2, 4, 8});
 }
 
 }  // namespace

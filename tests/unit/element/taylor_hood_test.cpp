@@ -37,7 +37,8 @@ std::array<Vec3d, kNodes> ten_nodes(const std::array<Vec3d, 4>& X, double bulge,
   const double height = 3.0 * std::abs(volume) / largest_face;
   for (int k = 0; k < 6; ++k) {
     const Vec3d direction(unit(rng), unit(rng), unit(rng));
-    nodes[4 + k] = 0.5 * (X[kEdgeCorners[k][0]] + X[kEdgeCorners[k][1]]) + bulge * height * direction;
+    nodes[4 + k] =
+        0.5 * (X[kEdgeCorners[k][0]] + X[kEdgeCorners[k][1]]) + bulge * height * direction;
   }
   return nodes;
 }
@@ -63,12 +64,9 @@ ElemVec random_state(unsigned seed, double size, double u_fraction) {
 /// Every registry model, with moduli of the order of kC1.
 std::vector<AnyMaterial> every_material() {
   const std::map<std::string, MaterialValues> values = {
-      {"neo-hookean", {{"c1", 0.5}}},
-      {"mooney-rivlin", {{"c1", 0.35}, {"c2", 0.15}}},
-      {"fung", {{"mu", 1.0}, {"gamma", 1.5}}},
-      {"yeoh", {{"c1", 0.5}, {"c2", -0.05}, {"c3", 0.02}}},
-      {"gent", {{"mu", 1.0}, {"jm", 20.0}}},
-      {"arruda-boyce", {{"mu", 1.0}, {"lambda_m", 3.0}}}};
+      {"neo-hookean", {{"c1", 0.5}}},          {"mooney-rivlin", {{"c1", 0.35}, {"c2", 0.15}}},
+      {"fung", {{"mu", 1.0}, {"gamma", 1.5}}}, {"yeoh", {{"c1", 0.5}, {"c2", -0.05}, {"c3", 0.02}}},
+      {"gent", {{"mu", 1.0}, {"jm", 20.0}}},   {"arruda-boyce", {{"mu", 1.0}, {"lambda_m", 3.0}}}};
   std::vector<AnyMaterial> out;
   for (const MaterialModelInfo& info : material_models()) {
     EXPECT_EQ(values.count(info.name), 1u) << "no parameters for " << info.name;
@@ -78,17 +76,16 @@ std::vector<AnyMaterial> every_material() {
 }
 
 TEST(TaylorHoodShape, PartitionOfUnityAndKroneckerProperty) {
-  const std::array<std::array<double, 4>, kNodes> node_L = {
-      {{1, 0, 0, 0},
-       {0, 1, 0, 0},
-       {0, 0, 1, 0},
-       {0, 0, 0, 1},
-       {.5, .5, 0, 0},
-       {0, .5, .5, 0},
-       {.5, 0, .5, 0},
-       {.5, 0, 0, .5},
-       {0, 0, .5, .5},
-       {0, .5, 0, .5}}};
+  const std::array<std::array<double, 4>, kNodes> node_L = {{{1, 0, 0, 0},
+                                                             {0, 1, 0, 0},
+                                                             {0, 0, 1, 0},
+                                                             {0, 0, 0, 1},
+                                                             {.5, .5, 0, 0},
+                                                             {0, .5, .5, 0},
+                                                             {.5, 0, .5, 0},
+                                                             {.5, 0, 0, .5},
+                                                             {0, 0, .5, .5},
+                                                             {0, .5, 0, .5}}};
   for (int b = 0; b < kNodes; ++b) {
     const auto N = shape_values(node_L[b]);
     for (int a = 0; a < kNodes; ++a) EXPECT_NEAR(N[a], a == b ? 1.0 : 0.0, 1e-15);
