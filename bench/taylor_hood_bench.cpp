@@ -40,7 +40,7 @@ std::vector<BenchElement> make_elements(const Material& mat, double c1) {
     X[3] = Vec3d(0, 0, 1);
     for (int a = 0; a < 4; ++a) X[a] += 0.25 * Vec3d(unit(rng), unit(rng), unit(rng));
     if ((X[1] - X[0]).cross(X[2] - X[0]).dot(X[3] - X[0]) <= 0.05) continue;
-    for (int k = 0; k < 6; ++k) X[4 + k] = 0.5 * (X[kEdgeCorners[k][0]] + X[kEdgeCorners[k][1]]);
+    for (int k = 0; k < 6; ++k) X[4 + k] = 0.5 * (X[kTetEdges[k][0]] + X[kTetEdges[k][1]]);
     BenchElement e;
     e.g = compute_geometry(X);
     for (int i = 0; i < kDof; ++i) e.x(i) = (i < kDofU ? 0.05 * e.g.size : c1) * unit(rng);

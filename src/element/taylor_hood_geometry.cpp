@@ -30,7 +30,7 @@ double jacobian_determinant(const std::array<Vec3d, kNodes>& X, const NodeGradie
 std::array<double, kNodes> shape_values(const std::array<double, 4>& L) {
   std::array<double, kNodes> N;
   for (int a = 0; a < kCorners; ++a) N[a] = L[a] * (2.0 * L[a] - 1.0);
-  for (int k = 0; k < 6; ++k) N[4 + k] = 4.0 * L[kEdgeCorners[k][0]] * L[kEdgeCorners[k][1]];
+  for (int k = 0; k < 6; ++k) N[4 + k] = 4.0 * L[kTetEdges[k][0]] * L[kTetEdges[k][1]];
   return N;
 }
 
@@ -38,7 +38,7 @@ NodeGradients shape_derivatives(const std::array<double, 4>& L) {
   NodeGradients dN;
   for (int a = 0; a < kCorners; ++a) dN.col(a) = (4.0 * L[a] - 1.0) * barycentric_derivative(a);
   for (int k = 0; k < 6; ++k) {
-    const int i = kEdgeCorners[k][0], j = kEdgeCorners[k][1];
+    const int i = kTetEdges[k][0], j = kTetEdges[k][1];
     dN.col(4 + k) = 4.0 * (L[j] * barycentric_derivative(i) + L[i] * barycentric_derivative(j));
   }
   return dN;

@@ -13,6 +13,7 @@
 
 #include "core/types.hpp"
 #include "element/quadrature.hpp"
+#include "mesh/topology.hpp"
 
 namespace plisse::taylor_hood {
 
@@ -28,9 +29,7 @@ constexpr int dof_u(int a, int i) { return 3 * a + i; }
 /// Index in x_e of the pressure of corner a (0..3).
 constexpr int dof_p(int a) { return kDofU + a; }
 
-/// The corners (i, j) of edge node 4 + k, Gmsh's order.
-inline constexpr std::array<std::array<int, 2>, 6> kEdgeCorners = {
-    {{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}}};
+/// The corners (i, j) of edge node 4 + k are kTetEdges[k] (mesh/topology.hpp), Gmsh's order.
 
 /// The quadrature rule: the symmetric 14-point rule of degree 5 with positive weights. It
 /// integrates the stiffness of a straight-sided element in the linearised regime (degree 2) and

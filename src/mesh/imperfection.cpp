@@ -223,6 +223,18 @@ std::vector<Vec3d> compute_random_imperfection(const Mesh& mesh,
       if (on_plane[j] != 0) d[j] -= n.dot(d[j]) * n;
   }
 
+  // A second-order mesh: the field is that of the corners, interpolated linearly along each edge
+  // (I1b), so the edge nodes keep the curved wall's shape and the perturbation has no kink
+  // inside an element.
+  for (std::size_t t = 0; t < mesh.tet_edge_nodes.size(); ++t)
+    for (int k = 0; k < 6; ++k) {
+      const auto [a, b] = kTetEdges[static_cast<std::size_t>(k)];
+      const auto& tet = mesh.tets[t];
+      d[static_cast<std::size_t>(mesh.tet_edge_nodes[t][static_cast<std::size_t>(k)])] =
+          0.5 * (d[static_cast<std::size_t>(tet[static_cast<std::size_t>(a)])] +
+                 d[static_cast<std::size_t>(tet[static_cast<std::size_t>(b)])]);
+    }
+
   double largest = 0.0;
   for (const Vec3d& v : d) largest = std::max(largest, v.norm());
   FE_CHECK(largest > 0.0,

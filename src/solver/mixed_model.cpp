@@ -252,7 +252,7 @@ std::vector<double> MixedModel::nodal_pressures() const {
   if (family_ == ElementFamily::taylor_hood)
     for (int e = 0; e < mesh_.n_tets(); ++e)
       for (int k = 0; k < 6; ++k) {
-        const auto [i, j] = taylor_hood::kEdgeCorners[k];
+        const auto [i, j] = kTetEdges[k];
         p[mesh_.tet_edge_nodes[e][k]] = 0.5 * (p[mesh_.tets[e][i]] + p[mesh_.tets[e][j]]);
       }
   return p;

@@ -88,8 +88,7 @@ long allocations_during_taylor_hood_kernels(const Material& mat) {
   std::array<Vec3d, taylor_hood::kNodes> X;
   for (int a = 0; a < 4; ++a) X[a] = corners[a];
   for (int k = 0; k < 6; ++k)
-    X[4 + k] =
-        0.5 * (corners[taylor_hood::kEdgeCorners[k][0]] + corners[taylor_hood::kEdgeCorners[k][1]]);
+    X[4 + k] = 0.5 * (corners[kTetEdges[k][0]] + corners[kTetEdges[k][1]]);
   const taylor_hood::Geometry g = taylor_hood::compute_geometry(X);
   (void)taylor_hood::reference_derivatives();  // the table is built once, outside the count
   taylor_hood::ElemVec x = taylor_hood::ElemVec::Zero();

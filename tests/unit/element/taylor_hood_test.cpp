@@ -37,8 +37,7 @@ std::array<Vec3d, kNodes> ten_nodes(const std::array<Vec3d, 4>& X, double bulge,
   const double height = 3.0 * std::abs(volume) / largest_face;
   for (int k = 0; k < 6; ++k) {
     const Vec3d direction(unit(rng), unit(rng), unit(rng));
-    nodes[4 + k] =
-        0.5 * (X[kEdgeCorners[k][0]] + X[kEdgeCorners[k][1]]) + bulge * height * direction;
+    nodes[4 + k] = 0.5 * (X[kTetEdges[k][0]] + X[kTetEdges[k][1]]) + bulge * height * direction;
   }
   return nodes;
 }

@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "mesh/generate.hpp"
 #include "mesh/quality.hpp"
+#include "mesh/topology.hpp"
 
 namespace plisse {
 namespace {
@@ -131,6 +132,41 @@ TEST(RandomImperfection, AirbagColumnsMoveRigidlyToo) {
     if (d[j] != d[2 * n + j % n]) ++mismatches;
   EXPECT_EQ(mismatches, 0);
   EXPECT_NEAR(max_norm(d), 0.05, 1e-17);
+}
+
+TEST(RandomImperfection, SecondOrderShellTakesTheCornerFieldLinearAlongEdges) {
+  // (I1b): on a 10-node mesh the corners take the field of the linear mesh (same seed: the same
+  // draws on the same outer corners) and each edge node the mean of its edge's corners, after
+  // the symmetry projection; the perturbed mesh passes the check.
+  MeshGenerationSpec spec;
+  spec.kind = "spherical-shell";
+  spec.inner_radius = 10.0;
+  spec.thickness = kThickness;
+  spec.layers = kLayers;
+  spec.element_size = 2.0;
+  spec.symmetry = Symmetry::quarter;
+  spec.order = 2;
+  Mesh mesh = generate_mesh(spec);
+  const auto d =
+      compute_random_imperfection(mesh, tagged(mesh, "outer"), 0.1, 3, {"sym_x", "sym_z"});
+  const std::vector<Vec3d> linear = random_field(0.1, 3);
+  const double scale = max_norm(d);
+  EXPECT_NEAR(scale, 0.1, 1e-17);
+  // The linear field's largest value is at a corner, so the two scalings agree.
+  for (std::size_t j = 0; j < linear.size(); ++j) EXPECT_LT((d[j] - linear[j]).norm(), 1e-15);
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+    for (int k = 0; k < 6; ++k) {
+      const int m = mesh.tet_edge_nodes[t][k];
+      const Vec3d mean =
+          0.5 * (d[mesh.tets[t][kTetEdges[k][0]]] + d[mesh.tets[t][kTetEdges[k][1]]]);
+      EXPECT_LT((d[m] - mean).norm(), 1e-16);  // the scaling follows the mean: round-off only
+    }
+  for (const std::string tag : {"sym_x", "sym_z"}) {
+    const int axis = tag == "sym_x" ? 0 : 2;
+    for (int t : mesh.surface_tags.at(tag))
+      for (int m : mesh.triangle_edge_nodes[t]) EXPECT_EQ(d[m][axis], 0.0) << tag;
+  }
+  EXPECT_NO_THROW(apply_imperfection(mesh, d));
 }
 
 TEST(RandomImperfection, DisplacementIsAlongTheOutwardNormal) {
