@@ -201,7 +201,7 @@ WrinkleReport evaluate_wrinkles(const std::vector<Vec3d>& reference_nodes,
 
 WrinkleReport evaluate_wrinkles(const Mesh& mesh, const std::vector<Vec3d>& displacement,
                                 const WrinkleOptions& options, const std::string& outer_tag) {
-  return evaluate_wrinkles(mesh.nodes, tagged_triangles(mesh, outer_tag), displacement, options);
+  return evaluate_wrinkles(mesh.nodes, sampling_triangles(mesh, outer_tag), displacement, options);
 }
 
 std::vector<std::array<int, 3>> tagged_triangles(const Mesh& mesh, const std::string& tag) {
@@ -213,6 +213,22 @@ std::vector<std::array<int, 3>> tagged_triangles(const Mesh& mesh, const std::st
     FE_CHECK(t >= 0 && t < static_cast<int>(mesh.triangles.size()),
              "surface tag '" << tag << "': triangle " << t << " out of range");
     out.push_back(mesh.triangles[static_cast<std::size_t>(t)]);
+  }
+  return out;
+}
+
+std::vector<std::array<int, 3>> sampling_triangles(const Mesh& mesh, const std::string& tag) {
+  const std::vector<std::array<int, 3>> corners = tagged_triangles(mesh, tag);  // checks the tag
+  if (mesh.order() == 1) return corners;
+  std::vector<std::array<int, 3>> out;
+  out.reserve(4 * corners.size());
+  for (int t : mesh.surface_tags.at(tag)) {
+    const auto& [a, b, c] = mesh.triangles[static_cast<std::size_t>(t)];
+    const auto& [ab, bc, ca] = mesh.triangle_edge_nodes[static_cast<std::size_t>(t)];
+    out.push_back({a, ab, ca});
+    out.push_back({ab, b, bc});
+    out.push_back({ca, bc, c});
+    out.push_back({ab, bc, ca});
   }
   return out;
 }

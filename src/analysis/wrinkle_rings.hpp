@@ -86,12 +86,19 @@ WrinkleReport evaluate_wrinkles(const std::vector<Vec3d>& reference_nodes,
                                 const std::vector<Vec3d>& displacement,
                                 const WrinkleOptions& options);
 
-/// Same, on the triangles of `mesh` tagged `outer_tag`. Throws Error if the tag is missing.
+/// Same, on the sampling_triangles of `mesh` tagged `outer_tag`. Throws Error if the tag is
+/// missing.
 WrinkleReport evaluate_wrinkles(const Mesh& mesh, const std::vector<Vec3d>& displacement,
                                 const WrinkleOptions& options,
                                 const std::string& outer_tag = "outer");
 
 /// The corner triples of the triangles of `mesh` tagged `tag`. Throws Error if the tag is missing.
 std::vector<std::array<int, 3>> tagged_triangles(const Mesh& mesh, const std::string& tag);
+
+/// The triangles the rings are sampled on (wrinkles.md, W4): those of tagged_triangles on a linear
+/// mesh; on a second-order mesh each 6-node face split into its 4 corner and middle triangles
+/// through the edge nodes, in the face's orientation, so the rings see the quadratic surface at
+/// its nodes (twice the resolution of the corners alone).
+std::vector<std::array<int, 3>> sampling_triangles(const Mesh& mesh, const std::string& tag);
 
 }  // namespace plisse

@@ -140,6 +140,7 @@ WrinkleMeter::WrinkleMeter(const Case& c, const Mesh& mesh) : surface_(c.output.
   options_.thickness = *c.mesh.wall_thickness();
   options_.threshold_fraction = w.threshold;
   triangles_ = tagged_triangles(mesh, surface_);
+  ring_triangles_ = sampling_triangles(mesh, surface_);
   columns_ = assign_columns(mesh.nodes, mesh.tets, triangles_);
   triangle_area_.reserve(triangles_.size());
   for (const auto& t : triangles_) triangle_area_.push_back(triangle_area(mesh, t));
@@ -150,7 +151,7 @@ WrinkleMeter::Result WrinkleMeter::evaluate(const MixedModel& model,
   const Mesh& mesh = model.mesh();
   const std::vector<Vec3d> u = nodal_displacements(model);
   Result r;
-  r.rings = evaluate_wrinkles(mesh.nodes, triangles_, u, options_);
+  r.rings = evaluate_wrinkles(mesh.nodes, ring_triangles_, u, options_);
   std::vector<Mat3d> sigma(fields.size());
   std::vector<double> J(fields.size());
   for (std::size_t e = 0; e < fields.size(); ++e) {

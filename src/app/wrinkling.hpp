@@ -51,7 +51,8 @@ class WrinkleMeter {
  private:
   WrinkleOptions options_;
   std::string surface_;
-  std::vector<std::array<int, 3>> triangles_;
+  std::vector<std::array<int, 3>> triangles_;       ///< the surface's corner triangles
+  std::vector<std::array<int, 3>> ring_triangles_;  ///< sampling_triangles of the surface
   std::vector<int> columns_;
   std::vector<double> triangle_area_;
 };
