@@ -76,7 +76,8 @@ void run(const MeshKind& kind, MeshCommand& cmd) {
 
   std::ostringstream line;
   line << "wrote " << cmd.output << " (Gmsh " << version << (cmd.binary ? " binary" : " ASCII")
-       << "): " << mesh.n_nodes() << " nodes, " << mesh.n_tets() << " tetrahedra; tags:";
+       << "): " << mesh.n_nodes() << " nodes, " << mesh.n_tets() << " tetrahedra"
+       << (mesh.order() == 2 ? " (second order)" : "") << "; tags:";
   bool first = true;
   for (const auto& [name, triangles] : mesh.surface_tags) {
     line << (first ? " " : ", ") << name << " (" << triangles.size() << " triangles)";

@@ -174,5 +174,24 @@ TEST(CaseMesh, GeneratorErrorsArePlacedAtTheOptionOrTheMeshKey) {
   EXPECT_INPUT_ERROR(load_error(defaulted), "case.yaml", 2, 1, "mesh.element_size", "");
 }
 
+TEST(CaseMesh, OrderKeyGeneratesASecondOrderMeshThatPassesTheChecks) {
+  const Case c = parse_case_string(
+      "mesh: {generate: spherical-shell, inner_radius: 10, element_size: 3, layers: 2, "
+      "symmetry: octant, order: 2}\n"
+      "material: {model: neo-hookean, c1: 1}\n"
+      "boundary: [{type: symmetry, surface: sym_x}, {type: symmetry, surface: sym_z}]\n",
+      "case.yaml");
+  ASSERT_TRUE(c.mesh.generate.has_value());
+  EXPECT_EQ(c.mesh.generate->order, 2);
+  EXPECT_EQ(c.mesh.option_places.at("order").line, 1);
+  const Mesh mesh = load_case_mesh(c);
+  EXPECT_EQ(mesh.order(), 2);
+  EXPECT_NO_THROW(check_case_against_mesh(c, mesh));
+  // Declared range [1, 2], reported at the key.
+  EXPECT_INPUT_ERROR(test::case_error("mesh: {generate: cube, order: 3}\n"
+                                      "material: {model: neo-hookean, c1: 1}\n"),
+                     "case.yaml", 1, 31, "mesh.order", "must be in [1, 2] (got 3)");
+}
+
 }  // namespace
 }  // namespace plisse

@@ -17,9 +17,6 @@
 #include "mesh_test_util.hpp"
 
 namespace plisse {
-
-void PrintTo(Symmetry s, std::ostream* out) { *out << to_string(s); }  // for test names (ADL)
-
 namespace {
 
 using test::mesh_volume;

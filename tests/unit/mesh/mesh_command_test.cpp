@@ -3,9 +3,13 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <fstream>
+#include <set>
 #include <string>
 
+#include "mesh/generate.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "mesh/quality.hpp"
 #include "mesh_test_util.hpp"
@@ -42,11 +46,82 @@ TEST(MeshCommand, WritesShellWithSummary) {
   }
 }
 
+/// Element types of the blocks of an ASCII Gmsh 4.1 file's $Elements section.
+std::set<int> element_types_v4_ascii(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line) && line != "$Elements") {
+  }
+  std::size_t n_blocks = 0, n_elements = 0, min_tag = 0, max_tag = 0;
+  in >> n_blocks >> n_elements >> min_tag >> max_tag;
+  std::set<int> types;
+  for (std::size_t b = 0; b < n_blocks && in; ++b) {
+    int dim = 0, entity = 0, type = 0;
+    std::size_t count = 0;
+    in >> dim >> entity >> type >> count;
+    types.insert(type);
+    std::getline(in, line);
+    for (std::size_t e = 0; e < count; ++e) std::getline(in, line);
+  }
+  return types;
+}
+
+TEST(MeshCommand, WritesSecondOrderShellThatReadsBackIdentically) {
+  const auto dir = test::scratch_dir("command_order2");
+  MeshGenerationSpec spec;
+  spec.kind = "spherical-shell";
+  spec.inner_radius = 10.0;
+  spec.thickness = 1.0;
+  spec.layers = 2;
+  spec.element_size = 2.5;
+  spec.symmetry = Symmetry::octant;
+  spec.order = 2;
+  const Mesh expected = generate_mesh(spec);
+  ASSERT_EQ(expected.order(), 2);
+  const std::string options =
+      "mesh spherical-shell --inner-radius 10 --thickness 1 --layers 2 --element-size 2.5 "
+      "--symmetry octant --order 2 ";
+  for (const bool binary : {true, false}) {
+    const std::string path = (dir / (binary ? "binary.msh" : "ascii.msh")).string();
+    const Result r = run_plisse(options + (binary ? "--binary " : "") + "-o " + path);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find(std::to_string(expected.n_nodes()) + " nodes, " +
+                            std::to_string(expected.n_tets()) + " tetrahedra (second order)"),
+              std::string::npos)
+        << r.output;
+    const Mesh mesh = read_gmsh(path);
+    ASSERT_EQ(mesh.order(), 2);
+    EXPECT_EQ(mesh.tets, expected.tets);
+    EXPECT_EQ(mesh.tet_edge_nodes, expected.tet_edge_nodes);
+    EXPECT_EQ(mesh.triangles, expected.triangles);
+    EXPECT_EQ(mesh.triangle_edge_nodes, expected.triangle_edge_nodes);
+    EXPECT_EQ(mesh.surface_tags, expected.surface_tags);
+    ASSERT_EQ(mesh.n_nodes(), expected.n_nodes());
+    if (binary) {
+      EXPECT_EQ(mesh.nodes, expected.nodes);  // bit for bit
+    } else {
+      // ASCII keeps Gmsh's 16 significant digits: coordinates below 11 mm within 1e-14 mm.
+      double worst = 0.0;
+      for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
+        worst = std::max(worst, (mesh.nodes[i] - expected.nodes[i]).cwiseAbs().maxCoeff());
+      EXPECT_LT(worst, 1e-14);
+      // Written as 10-node tetrahedra (Gmsh type 11) and 6-node triangles (type 9) only.
+      EXPECT_EQ(element_types_v4_ascii(path), (std::set<int>{9, 11}));
+    }
+    EXPECT_TRUE(check_mesh(mesh, {"inner", "outer", "sym_x", "sym_y", "sym_z"}).ok());
+  }
+  // The option's range is declared: 3 is refused naming it.
+  const Result r = run_plisse("mesh cube --order 3 -o " + (dir / "x.msh").string());
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("'--order': must be in [1, 2] (got 3)"), std::string::npos) << r.output;
+}
+
 TEST(MeshCommand, HelpListsOptionsWithUnitsAndDefaults) {
   const Result r = run_plisse("mesh airbag --help");
   EXPECT_EQ(r.status, 0) << r.output;
-  for (const char* text : {"--radius FLOAT=50", "--height FLOAT=20", "--thickness", "[mm]",
-                           "--layers INT=3", "--symmetry TEXT=full", "--format INT=4", "--binary"})
+  for (const char* text :
+       {"--radius FLOAT=50", "--height FLOAT=20", "--thickness", "[mm]", "--layers INT=3",
+        "--symmetry TEXT=full", "--order INT=1", "--format INT=4", "--binary"})
     EXPECT_NE(r.output.find(text), std::string::npos) << text << "\n" << r.output;
 }
 

@@ -6,8 +6,16 @@
 #include <filesystem>
 #include <string>
 
+#include "mesh/generate.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/topology.hpp"
+
+namespace plisse {
+
+/// Prints a Symmetry by name (gtest finds it by ADL: parameterised test names and messages).
+inline void PrintTo(Symmetry s, std::ostream* out) { *out << to_string(s); }
+
+}  // namespace plisse
 
 namespace plisse::test {
 
