@@ -8,18 +8,24 @@
 
 namespace plisse {
 
+/// The consistent nodal volumes ∫ N_a dV [mm^3] of every node (docs/theory/loads.md): V_e / 4 per
+/// corner of a linear tetrahedron (L6; the MINI bubble's share is not applied), and for a 10-node
+/// tetrahedron the integrals of its quadratic shape functions with the isoparametric Jacobian
+/// (L10: -V_e / 20 per corner and V_e / 5 per edge node of a straight one). Indexed by node; the
+/// sum is the volume of the mesh. Throws plisse::Error for an invalid 10-node tetrahedron.
+std::vector<double> consistent_nodal_volumes(const Mesh& mesh);
+
 class BodyForce : public ModelTerm {
  public:
   /// `force_density` = rho g [N/mm^3] at the end of `ramp`. The nodal forces are
-  /// f_a = ∫ rho g N_a dV = rho g V_e / 4 per corner; the bubble's share ∫ rho g N_b dV is not
-  /// applied (it changes the solution only within elements, at the order of the discretisation
-  /// error).
+  /// f_a = ∫ rho g N_a dV = rho g V_a with the consistent nodal volumes V_a
+  /// (consistent_nodal_volumes), on linear and on second-order meshes.
   BodyForce(const Mesh& mesh, std::string name, const Vec3d& force_density, Ramp ramp);
   void assemble(double t, std::span<const double> x, std::span<double> residual,
                 TangentSink* tangent) override;
 
  private:
-  std::vector<double> nodal_volume_;  ///< sum of V_e / 4 over the elements of each node [mm^3]
+  std::vector<double> nodal_volume_;  ///< ∫ N_a dV of each node [mm^3]
   std::string name_;
   Vec3d force_density_;
   Ramp ramp_;

@@ -22,14 +22,14 @@ std::string describe_node(const Mesh& mesh, int node) {
 
 CavityTerm::CavityTerm(const Cavity& cavity, const Mesh& mesh,
                        const std::vector<ConstrainedComponent>& constraints)
-    : mesh_(mesh), cavity_(cavity), triangles_(outward_triangles(mesh, cavity.surface.name)) {
+    : mesh_(mesh), cavity_(cavity), faces_(outward_faces(mesh, cavity.surface.name)) {
   const InputPlace& place = cavity.surface.place;
-  if (const auto edge = first_open_edge(mesh, triangles_)) {
+  if (const auto edge = first_open_edge(mesh, faces_)) {
     int count = 0;
-    for (const auto& t : triangles_)
+    for (const auto& f : faces_)
       for (int k = 0; k < 3; ++k)
-        count += (t[k] == (*edge)[0] && t[(k + 1) % 3] == (*edge)[1]) ||
-                 (t[k] == (*edge)[1] && t[(k + 1) % 3] == (*edge)[0]);
+        count += (f.nodes[k] == (*edge)[0] && f.nodes[(k + 1) % 3] == (*edge)[1]) ||
+                 (f.nodes[k] == (*edge)[1] && f.nodes[(k + 1) % 3] == (*edge)[0]);
     std::ostringstream rule;
     rule << "surface '" << cavity.surface.name << "' of cavity '" << cavity.name
          << "' is not closed: the edge between nodes " << describe_node(mesh, (*edge)[0]) << " and "
@@ -47,9 +47,9 @@ CavityTerm::CavityTerm(const Cavity& cavity, const Mesh& mesh,
             "body (e.g. a balloon's 'inner' surface, not 'outer')";
     throw InputError(place, rule.str());
   }
-  const std::set<int> nodes = surface_nodes(triangles_);
+  const std::set<int> nodes = surface_nodes(faces_);
   nodes_.assign(nodes.begin(), nodes.end());
-  symmetric_ = pressure_stiffness_is_symmetric(mesh, triangles_, constraints);
+  symmetric_ = pressure_stiffness_is_symmetric(mesh, faces_, constraints);
 }
 
 void CavityTerm::add_couplings(std::vector<std::pair<int, int>>& pairs) const {
@@ -62,7 +62,7 @@ void CavityTerm::add_couplings(std::vector<std::pair<int, int>>& pairs) const {
 }
 
 double CavityTerm::volume(std::span<const double> x) const {
-  return cavity_volume(mesh_, triangles_, x);
+  return cavity_volume(mesh_, faces_, x);
 }
 
 double CavityTerm::fluid_volume(double p_c, double t) const {
@@ -83,33 +83,58 @@ double CavityTerm::fluid_volume_derivative(double p_c, double t) const {
   return -fluid_volume(p_c, t) / (p_c + cavity_.ambient_pressure);  // (C11)
 }
 
+template <int N>
+void CavityTerm::add_face(const SurfaceFace& face, double p, std::span<const double> x,
+                          std::span<double> residual, TangentSink* tangent,
+                          double& six_volume) const {
+  // One bordered block per face: its 3 N displacement dofs and p_c.
+  constexpr int n = 3 * N;
+  std::array<int, n + 1> dofs;
+  dofs[n] = pressure_dof_;
+  std::array<Vec3d, N> xs;
+  for (int a = 0; a < N; ++a) {
+    xs[a] = deformed_position(mesh_, x, face.nodes[a]);
+    for (int i = 0; i < 3; ++i) dofs[3 * a + i] = node_dof(face.nodes[a], i);
+  }
+  Eigen::Matrix<double, n + 1, n + 1, Eigen::RowMajor> k;
+  if constexpr (N == 3) {
+    six_volume -= xs[0].dot(xs[1].cross(xs[2]));                            // (C1)
+    const Vec3d c = add_follower_pressure_residual(p, xs, dofs, residual);  // (C6)
+    if (!tangent) return;
+    k.setZero();
+    follower_pressure_stiffness(p, xs, k.template topLeftCorner<n, n>());  // (C10)
+    // (C11): column d r_u / d p_c = c/6; row d r_p / d x_a = (1/6) x_{a+1} x x_{a+2}
+    for (int a = 0; a < 3; ++a) {
+      k.template block<3, 1>(3 * a, n) = c / 6.0;
+      k.template block<1, 3>(n, 3 * a) = xs[(a + 1) % 3].cross(xs[(a + 2) % 3]).transpose() / 6.0;
+    }
+  } else {
+    six_volume -= 6.0 * quadratic_cone_volume(xs);                                         // (C12)
+    const std::array<Vec3d, N> g = add_follower_pressure_residual(p, xs, dofs, residual);  // (C6)
+    if (!tangent) return;
+    k.setZero();
+    follower_pressure_stiffness(p, xs, k.template topLeftCorner<n, n>());  // (C10)
+    // (C11, C13): column d r_u / d p_c = g_a; row d r_p / d x_a = gradient of the cone volume
+    const std::array<Vec3d, N> row = quadratic_cone_volume_gradient(xs);
+    for (int a = 0; a < N; ++a) {
+      k.template block<3, 1>(3 * a, n) = g[a];
+      k.template block<1, 3>(n, 3 * a) = row[a].transpose();
+    }
+  }
+  tangent->add(dofs, dofs, std::span<const double>(k.data(), (n + 1) * (n + 1)));
+}
+
 void CavityTerm::assemble(double t, std::span<const double> x, std::span<double> residual,
                           TangentSink* tangent) {
   FE_ASSERT(pressure_dof_ >= 0);
   const double p = x[pressure_dof_];
   const double fluid = fluid_volume(p, t);
-  // One bordered 10 x 10 block per triangle: its 9 displacement dofs and p_c.
-  std::array<int, 10> dofs;
-  dofs[9] = pressure_dof_;
-  Eigen::Matrix<double, 10, 10, Eigen::RowMajor> k;
-  k.setZero();
   double six_volume = 0.0;
-  for (const auto& tri : triangles_) {
-    std::array<Vec3d, 3> xs;
-    for (int a = 0; a < 3; ++a) {
-      xs[a] = deformed_position(mesh_, x, tri[a]);
-      for (int i = 0; i < 3; ++i) dofs[3 * a + i] = node_dof(tri[a], i);
-    }
-    six_volume -= xs[0].dot(xs[1].cross(xs[2]));                            // (C1)
-    const Vec3d c = add_follower_pressure_residual(p, xs, dofs, residual);  // (C6)
-    if (!tangent) continue;
-    follower_pressure_stiffness(p, xs, k.topLeftCorner<9, 9>());  // (C10)
-    // (C11): column d r_u / d p_c = c/6; row d r_p / d x_a = (1/6) x_{a+1} x x_{a+2}
-    for (int a = 0; a < 3; ++a) {
-      k.block<3, 1>(3 * a, 9) = c / 6.0;
-      k.block<1, 3>(9, 3 * a) = xs[(a + 1) % 3].cross(xs[(a + 2) % 3]).transpose() / 6.0;
-    }
-    tangent->add(dofs, dofs, std::span<const double>(k.data(), 100));
+  for (const SurfaceFace& face : faces_) {
+    if (face.n_nodes == 3)
+      add_face<3>(face, p, x, residual, tangent, six_volume);
+    else
+      add_face<6>(face, p, x, residual, tangent, six_volume);
   }
   residual[pressure_dof_] += -(six_volume / 6.0 - fluid);  // (C7)
   if (tangent) {

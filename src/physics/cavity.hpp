@@ -11,6 +11,7 @@
 #include "physics/cavity_settings.hpp"
 #include "physics/dirichlet.hpp"
 #include "physics/model_term.hpp"
+#include "physics/surface.hpp"
 
 namespace plisse {
 
@@ -55,8 +56,13 @@ class CavityTerm : public ModelTerm {
  private:
   const Mesh& mesh_;
   Cavity cavity_;
-  std::vector<std::array<int, 3>> triangles_;  ///< oriented with the body's outward normal
-  std::vector<int> nodes_;                     ///< distinct nodes of the wall
+  /// Adds one face's share of 6 V (C1, C12), residual (C6) and bordered tangent (C10-C11).
+  template <int N>
+  void add_face(const SurfaceFace& face, double p, std::span<const double> x,
+                std::span<double> residual, TangentSink* tangent, double& six_volume) const;
+
+  std::vector<SurfaceFace> faces_;  ///< oriented with the body's outward normal, 3 or 6 nodes
+  std::vector<int> nodes_;          ///< distinct nodes of the wall (corners and edge nodes)
   double reference_volume_ = 0.0;
   bool symmetric_ = false;
   int pressure_dof_ = -1;

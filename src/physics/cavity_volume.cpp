@@ -6,6 +6,7 @@
 #include <map>
 
 #include "physics/model_term.hpp"
+#include "physics/quadratic_triangle.hpp"
 
 namespace plisse {
 
@@ -14,37 +15,72 @@ Vec3d deformed_position(const Mesh& mesh, std::span<const double> state, int nod
          Vec3d(state[node_dof(node, 0)], state[node_dof(node, 1)], state[node_dof(node, 2)]);
 }
 
-double cavity_volume(const Mesh& mesh, const std::vector<std::array<int, 3>>& triangles,
+double quadratic_cone_volume(const std::array<Vec3d, 6>& xs) {
+  double three_volume = 0.0;
+  for (const auto& q : quadratic_triangle::rule_points()) {
+    const auto f = quadratic_triangle::face_frame(xs, q);
+    three_volume += q.weight * f.x.dot(f.x_xi.cross(f.x_eta));  // (cavities.md, C12)
+  }
+  return three_volume / 3.0;
+}
+
+std::array<Vec3d, 6> quadratic_cone_volume_gradient(const std::array<Vec3d, 6>& xs) {
+  std::array<Vec3d, 6> g;
+  g.fill(Vec3d::Zero());
+  for (const auto& q : quadratic_triangle::rule_points()) {
+    const auto f = quadratic_triangle::face_frame(xs, q);
+    const Vec3d c = f.x_xi.cross(f.x_eta), c_xi = f.x_eta.cross(f.x), c_eta = f.x.cross(f.x_xi);
+    for (int a = 0; a < 6; ++a)  // (cavities.md, C13)
+      g[a] += (q.weight / 3.0) * (q.N[a] * c + q.dN_dxi[a] * c_xi + q.dN_deta[a] * c_eta);
+  }
+  return g;
+}
+
+double cavity_volume(const Mesh& mesh, const std::vector<SurfaceFace>& faces,
                      std::span<const double> state) {
   double six_volume = 0.0;
-  for (const auto& t : triangles) {
-    const Vec3d x0 = deformed_position(mesh, state, t[0]);
-    const Vec3d x1 = deformed_position(mesh, state, t[1]);
-    const Vec3d x2 = deformed_position(mesh, state, t[2]);
-    six_volume -= x0.dot(x1.cross(x2));  // (cavities.md, C1)
+  for (const SurfaceFace& f : faces) {
+    if (f.n_nodes == 3) {
+      const Vec3d x0 = deformed_position(mesh, state, f.nodes[0]);
+      const Vec3d x1 = deformed_position(mesh, state, f.nodes[1]);
+      const Vec3d x2 = deformed_position(mesh, state, f.nodes[2]);
+      six_volume -= x0.dot(x1.cross(x2));  // (cavities.md, C1)
+      continue;
+    }
+    std::array<Vec3d, 6> xs;
+    for (int a = 0; a < 6; ++a) xs[a] = deformed_position(mesh, state, f.nodes[a]);
+    six_volume -= 6.0 * quadratic_cone_volume(xs);  // (C12)
   }
   return six_volume / 6.0;
 }
 
 std::optional<std::array<int, 2>> first_open_edge(const Mesh& mesh,
-                                                  const std::vector<std::array<int, 3>>& triangles,
+                                                  const std::vector<SurfaceFace>& faces,
                                                   double relative_tolerance) {
-  std::map<std::array<int, 2>, int> edge_count;
+  // Per corner edge: the faces it belongs to and its edge node (-1 on a linear face).
+  std::map<std::array<int, 2>, std::pair<int, int>> edges;
   Vec3d low = Vec3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
-  for (const auto& t : triangles)
+  for (const auto& f : faces) {
     for (int k = 0; k < 3; ++k) {
-      const int a = t[k], b = t[(k + 1) % 3];
-      ++edge_count[{std::min(a, b), std::max(a, b)}];
-      low = low.cwiseMin(mesh.nodes[a]);
-      high = high.cwiseMax(mesh.nodes[a]);
+      const int a = f.nodes[k], b = f.nodes[(k + 1) % 3];
+      auto& [count, middle] = edges[{std::min(a, b), std::max(a, b)}];
+      ++count;
+      middle = f.edge_node(k);
     }
-  if (triangles.empty()) return std::nullopt;
+    for (int v : f.node_list()) {
+      low = low.cwiseMin(mesh.nodes[v]);
+      high = high.cwiseMax(mesh.nodes[v]);
+    }
+  }
+  if (faces.empty()) return std::nullopt;
   const double tol = relative_tolerance * (high - low).maxCoeff();
-  for (const auto& [edge, count] : edge_count) {
+  for (const auto& [edge, entry] : edges) {
+    const auto [count, middle] = entry;
     if (count == 2) continue;
+    const auto on = [&](int v, int k) { return v < 0 || std::abs(mesh.nodes[v][k]) <= tol; };
     bool on_plane = false;
     for (int k = 0; k < 3 && count == 1 && !on_plane; ++k)
-      on_plane = std::abs(mesh.nodes[edge[0]][k]) <= tol && std::abs(mesh.nodes[edge[1]][k]) <= tol;
+      on_plane = on(edge[0], k) && on(edge[1], k) && on(middle, k);
     if (!on_plane) return edge;
   }
   return std::nullopt;

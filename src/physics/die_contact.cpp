@@ -28,14 +28,13 @@ DieContact::DieContact(const Mesh& mesh, DieGeometry die, DieContactSettings set
       std::sort(t.begin(), t.end());
       if (seen.insert(t).second) all.push_back(t);
     }
-  for (const auto& [node, area] : tributary_areas(mesh_, all)) {
+  for (const auto& [node, area] : tributary_areas(mesh_, faces_with_corners(mesh_, all))) {
     nodes_.push_back(node);
     areas_.push_back(area);
   }
   state_.resize(nodes_.size());
   // Region nodes are glued where they are at t = 0: at their reference positions (D13).
-  std::set<int> region_nodes;
-  for (const auto& t : region) region_nodes.insert(t.begin(), t.end());
+  const std::set<int> region_nodes = surface_nodes(faces_with_corners(mesh_, region));
   for (size_t i = 0; i < nodes_.size(); ++i)
     if (region_nodes.count(nodes_[i])) {
       state_[i].glued = true;

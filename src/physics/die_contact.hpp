@@ -19,9 +19,11 @@ namespace plisse {
 
 class DieContact : public ModelTerm {
  public:
-  /// Contact of the nodes of `candidates` (triangles, reference tributary areas D5) with `die`;
-  /// sticking only: the nodes of `region` are glued from the start at their reference positions
-  /// (their area counts the triangles of both lists, each once). Borrows `mesh`.
+  /// Contact of the nodes of `candidates` (faces named by their corners, reference tributary areas
+  /// D5; on a second-order mesh the edge nodes of the faces with the consistent weights of D16,
+  /// and no corner) with `die`; sticking only: the nodes of `region` are glued from the start at
+  /// their reference positions (their area counts the faces of both lists, each once). Borrows
+  /// `mesh`.
   /// Throws plisse::Error when penalty or tolerance is not > 0, or frictionless with a region.
   DieContact(const Mesh& mesh, DieGeometry die, DieContactSettings settings,
              const std::vector<std::array<int, 3>>& candidates,
@@ -57,7 +59,8 @@ class DieContact : public ModelTerm {
   int n_glued() const;
   bool glued(int node) const;
   double penalty() const { return settings_.penalty; }
-  /// Tributary area of `node` [mm^2]; 0 for a node not on the contact surface.
+  /// Tributary area of `node` [mm^2]; 0 for a node not on the contact surface (or a corner of a
+  /// second-order one, D16).
   double area(int node) const;
 
  private:

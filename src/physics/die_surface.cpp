@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.hpp"
+#include "physics/quadratic_triangle.hpp"
 
 namespace plisse {
 
@@ -21,14 +22,27 @@ std::vector<std::array<int, 3>> boundary_faces(const Mesh& mesh) {
   return out;
 }
 
-std::map<int, double> tributary_areas(const Mesh& mesh,
-                                      const std::vector<std::array<int, 3>>& triangles) {
+std::map<int, double> tributary_areas(const Mesh& mesh, const std::vector<SurfaceFace>& faces) {
   std::map<int, double> area;
-  for (const auto& t : triangles) {
-    const Vec3d& x0 = mesh.nodes[t[0]];
-    // A_v = sum over the triangles at v of |T| / 3   (contact.md, D5)
-    const double third = (mesh.nodes[t[1]] - x0).cross(mesh.nodes[t[2]] - x0).norm() / 6.0;
-    for (int v : t) area[v] += third;
+  for (const SurfaceFace& f : faces) {
+    if (f.n_nodes == 3) {
+      const Vec3d& x0 = mesh.nodes[f.nodes[0]];
+      // A_v = sum over the triangles at v of |T| / 3   (contact.md, D5)
+      const double third =
+          (mesh.nodes[f.nodes[1]] - x0).cross(mesh.nodes[f.nodes[2]] - x0).norm() / 6.0;
+      for (int v : f.corners()) area[v] += third;
+      continue;
+    }
+    std::array<Vec3d, 6> xs;
+    for (int a = 0; a < 6; ++a) xs[a] = mesh.nodes[f.nodes[a]];
+    std::array<double, 6> w{};
+    for (const auto& q : quadratic_triangle::rule_points()) {
+      const auto frame = quadratic_triangle::face_frame(xs, q);
+      const double da = q.weight * frame.x_xi.cross(frame.x_eta).norm();
+      for (int a = 0; a < 6; ++a) w[a] += q.N[a] * da;  // ∫ N_a dA   (D16)
+    }
+    const double corner_share = (w[0] + w[1] + w[2]) / 3.0;
+    for (int a = 3; a < 6; ++a) area[f.nodes[a]] += w[a] + corner_share;
   }
   return area;
 }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "mesh/mesh.hpp"
+#include "physics/surface.hpp"
 
 namespace plisse {
 
@@ -12,10 +13,12 @@ namespace plisse {
 /// its three corner nodes (orientation not normalised).
 std::vector<std::array<int, 3>> boundary_faces(const Mesh& mesh);
 
-/// Reference tributary area of every node of `triangles` [mm^2]: a third of the area of each
-/// triangle it is a corner of (D5). Ordered by node index.
-std::map<int, double> tributary_areas(const Mesh& mesh,
-                                      const std::vector<std::array<int, 3>>& triangles);
+/// Reference tributary area of the nodes of `faces` [mm^2], ordered by node index. A linear face
+/// gives a third of its area to each corner (D5). A 6-node face gives its edge nodes the
+/// consistent weights of a uniform pressure, ∫ N_a dA over the curved reference face, plus a third
+/// of the corners' weights ∫ N_c dA each (0 on a face with a constant Jacobian), and its corners
+/// nothing: they are not contact nodes (D16). The areas of a face sum to its area.
+std::map<int, double> tributary_areas(const Mesh& mesh, const std::vector<SurfaceFace>& faces);
 
 /// Mean reference edge length of `triangles` [mm] (each edge counted once per triangle).
 /// Precondition: `triangles` is not empty.

@@ -57,9 +57,17 @@ std::vector<ConstrainedComponent> collect_constraints(
     const auto tag = mesh.surface_tags.find(bc.surface.name);
     if (tag == mesh.surface_tags.end())
       throw InputError(bc.surface.place, "no surface tag '" + bc.surface.name + "' in the mesh");
+    // The corners of the tagged triangles and, on a second-order mesh, their edge nodes.
     std::set<int> nodes;
-    for (int t : tag->second)
+    for (int t : tag->second) {
       for (int v : mesh.triangles[t]) nodes.insert(v);
+      if (mesh.order() == 2) {
+        FE_CHECK(static_cast<size_t>(t) < mesh.triangle_edge_nodes.size(),
+                 "surface '" << bc.surface.name << "': triangle " << t
+                             << " of the second-order mesh has no edge nodes");
+        for (int v : mesh.triangle_edge_nodes[t]) nodes.insert(v);
+      }
+    }
     switch (bc.type) {
       case BoundaryType::fixed:
         for (int v : nodes)

@@ -22,7 +22,8 @@ struct ConstrainedComponent {
 /// is not a plane normal to x, y or z (relative tolerance `tol` on the triangle normals).
 int coordinate_plane_axis(const Mesh& mesh, const std::vector<int>& triangles, double tol = 1e-8);
 
-/// All constrained components of `conditions`, one per (node, component). A node where two
+/// All constrained components of `conditions`, one per (node, component). A condition holds the
+/// corners of its tagged triangles and, on a second-order mesh, their edge nodes. A node where two
 /// conditions prescribe different motions of the same component is an InputError at the later
 /// condition. Symmetry surfaces must be coordinate planes (x, y or z = const).
 std::vector<ConstrainedComponent> collect_constraints(

@@ -5,30 +5,60 @@
 #include <set>
 
 #include "physics/follower_pressure.hpp"
-#include "physics/surface.hpp"
 
 namespace plisse {
-bool pressure_stiffness_is_symmetric(const Mesh& mesh,
-                                     const std::vector<std::array<int, 3>>& triangles,
+namespace {
+
+/// Adds the residual (loads.md, L2 or L8) and load stiffness (L3 or L9) of one face with N nodes
+/// under the pressure p: the shared kernel.
+template <int N>
+void add_face(const Mesh& mesh, const SurfaceFace& face, double p, std::span<const double> x,
+              std::span<double> residual, TangentSink* tangent) {
+  std::array<int, 3 * N> dofs;
+  std::array<Vec3d, N> xs;
+  for (int a = 0; a < N; ++a) {
+    xs[a] = mesh.nodes[face.nodes[a]];
+    for (int i = 0; i < 3; ++i) {
+      dofs[3 * a + i] = node_dof(face.nodes[a], i);
+      xs[a][i] += x[dofs[3 * a + i]];
+    }
+  }
+  add_follower_pressure_residual(p, xs, dofs, residual);
+  if (!tangent) return;
+  Eigen::Matrix<double, 3 * N, 3 * N, Eigen::RowMajor> k;
+  follower_pressure_stiffness(p, xs, k);
+  tangent->add(dofs, dofs, std::span<const double>(k.data(), 9 * N * N));
+}
+
+}  // namespace
+
+bool pressure_stiffness_is_symmetric(const Mesh& mesh, const std::vector<SurfaceFace>& faces,
                                      const std::vector<ConstrainedComponent>& constraints) {
-  std::map<std::pair<int, int>, int> edge_count;
-  for (const auto& t : triangles)
+  // Per corner edge: the faces it belongs to and its edge node (-1 on a linear face).
+  std::map<std::pair<int, int>, std::pair<int, int>> edges;
+  for (const auto& f : faces)
     for (int k = 0; k < 3; ++k) {
-      const int a = t[k], b = t[(k + 1) % 3];
-      ++edge_count[{std::min(a, b), std::max(a, b)}];
+      const int a = f.nodes[k], b = f.nodes[(k + 1) % 3];
+      auto& [count, middle] = edges[{std::min(a, b), std::max(a, b)}];
+      ++count;
+      middle = f.edge_node(k);
     }
   std::set<std::pair<int, int>> constrained;
   for (const auto& c : constraints) constrained.insert({c.node, c.component});
   const auto fixed = [&](int v) {
     return constrained.count({v, 0}) && constrained.count({v, 1}) && constrained.count({v, 2});
   };
-  for (const auto& [edge, count] : edge_count) {
+  for (const auto& [edge, entry] : edges) {
+    const auto [count, middle] = entry;
     if (count != 1) continue;  // interior edge
     const auto [a, b] = edge;
-    bool ok = fixed(a) && fixed(b);
+    std::vector<int> nodes = {a, b};
+    if (middle >= 0) nodes.push_back(middle);
+    bool ok = std::all_of(nodes.begin(), nodes.end(), fixed);
     for (int k = 0; k < 3 && !ok; ++k)
-      ok = constrained.count({a, k}) && constrained.count({b, k}) &&
-           mesh.nodes[a][k] == mesh.nodes[b][k];
+      ok = std::all_of(nodes.begin(), nodes.end(), [&](int v) {
+        return constrained.count({v, k}) && mesh.nodes[v][k] == mesh.nodes[a][k];
+      });
     if (!ok) return false;
   }
   return true;
@@ -39,31 +69,20 @@ PressureLoad::PressureLoad(const Mesh& mesh, std::string name, const std::string
                            const std::vector<ConstrainedComponent>& constraints)
     : mesh_(mesh),
       name_(std::move(name)),
-      triangles_(outward_triangles(mesh, surface)),
+      faces_(outward_faces(mesh, surface)),
       value_(value),
       ramp_(ramp),
-      symmetric_(pressure_stiffness_is_symmetric(mesh, triangles_, constraints)) {}
+      symmetric_(pressure_stiffness_is_symmetric(mesh, faces_, constraints)) {}
 
 void PressureLoad::assemble(double t, std::span<const double> x, std::span<double> residual,
                             TangentSink* tangent) {
   const double p = pressure(t);
   if (p == 0.0) return;
-  // Residual (loads.md, L2) and load stiffness (L3) of each triangle: the shared kernel.
-  std::array<int, 9> dofs;
-  Eigen::Matrix<double, 9, 9, Eigen::RowMajor> k;
-  for (const auto& tri : triangles_) {
-    std::array<Vec3d, 3> xs;
-    for (int a = 0; a < 3; ++a) {
-      xs[a] = mesh_.nodes[tri[a]];
-      for (int i = 0; i < 3; ++i) {
-        dofs[3 * a + i] = node_dof(tri[a], i);
-        xs[a][i] += x[dofs[3 * a + i]];
-      }
-    }
-    add_follower_pressure_residual(p, xs, dofs, residual);
-    if (!tangent) continue;
-    follower_pressure_stiffness(p, xs, k);
-    tangent->add(dofs, dofs, std::span<const double>(k.data(), 81));
+  for (const SurfaceFace& face : faces_) {
+    if (face.n_nodes == 3)
+      add_face<3>(mesh_, face, p, x, residual, tangent);
+    else
+      add_face<6>(mesh_, face, p, x, residual, tangent);
   }
 }
 

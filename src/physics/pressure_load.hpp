@@ -9,6 +9,7 @@
 #include "physics/dirichlet.hpp"
 #include "physics/model_term.hpp"
 #include "physics/ramp.hpp"
+#include "physics/surface.hpp"
 
 namespace plisse {
 
@@ -32,7 +33,7 @@ class PressureLoad : public ModelTerm {
  private:
   const Mesh& mesh_;
   std::string name_;
-  std::vector<std::array<int, 3>> triangles_;  ///< outward oriented
+  std::vector<SurfaceFace> faces_;  ///< outward oriented, 3 or 6 nodes
   double value_;
   Ramp ramp_;
   bool symmetric_;
@@ -40,10 +41,9 @@ class PressureLoad : public ModelTerm {
 
 /// The load stiffness of a follower pressure is symmetric when the loaded surface is closed, or
 /// when each edge of its boundary lies in a symmetry plane whose normal displacement is
-/// constrained at both ends (or both end nodes are fixed): the boundary term
-/// p (du x dv) . dx then vanishes (docs/theory/loads.md, L5).
-bool pressure_stiffness_is_symmetric(const Mesh& mesh,
-                                     const std::vector<std::array<int, 3>>& triangles,
+/// constrained at its nodes (the two ends, and the edge node of a 6-node face), or all those
+/// nodes are fixed: the boundary term p (du x dv) . dx then vanishes (docs/theory/loads.md, L5).
+bool pressure_stiffness_is_symmetric(const Mesh& mesh, const std::vector<SurfaceFace>& faces,
                                      const std::vector<ConstrainedComponent>& constraints);
 
 }  // namespace plisse

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "element/taylor_hood_geometry.hpp"
 #include "mesh/topology.hpp"
 
 namespace plisse {
@@ -27,6 +28,47 @@ double mean_edge_length(const Mesh& mesh) {
   return sum / (6.0 * static_cast<double>(mesh.tets.size()));
 }
 
+namespace {
+
+/// Calls add(node, V) with the lumped volume V [mm^3] of every node of every tetrahedron
+/// (viscous.md, V1 and V5), element by element.
+template <class Add>
+void for_each_lumped_volume(const Mesh& mesh, Add&& add) {
+  if (mesh.order() == 1) {
+    for (const auto& tet : mesh.tets) {
+      const double quarter = six_signed_volume(mesh.nodes[static_cast<std::size_t>(tet[0])],
+                                               mesh.nodes[static_cast<std::size_t>(tet[1])],
+                                               mesh.nodes[static_cast<std::size_t>(tet[2])],
+                                               mesh.nodes[static_cast<std::size_t>(tet[3])]) /
+                             24.0;  // V_e / 4
+      for (int v : tet) add(v, quarter);
+    }
+    return;
+  }
+  namespace th = taylor_hood;
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    std::array<int, th::kNodes> nodes;
+    std::array<Vec3d, th::kNodes> X;
+    for (std::size_t a = 0; a < th::kNodes; ++a) {
+      nodes[a] = a < th::kCorners ? mesh.tets[t][a] : mesh.tet_edge_nodes[t][a - th::kCorners];
+      X[a] = mesh.nodes[static_cast<std::size_t>(nodes[a])];
+    }
+    // (viscous.md, V5): V_a = V_e m_a / Σ_b m_b with m_a = ∫ N_a² dV (the row sums ∫ N_a dV
+    // would give the corners -V_e / 20, a negative damping).
+    const th::Geometry g = th::compute_geometry(X);
+    std::array<double, th::kNodes> m{};
+    for (std::size_t q = 0; q < th::kQuadPoints; ++q) {
+      const auto N = th::shape_values(th::kQuadrature.points[q]);
+      for (std::size_t a = 0; a < th::kNodes; ++a) m[a] += g.weight[q] * N[a] * N[a];
+    }
+    double sum = 0.0;
+    for (double v : m) sum += v;
+    for (std::size_t a = 0; a < th::kNodes; ++a) add(nodes[a], g.volume * m[a] / sum);
+  }
+}
+
+}  // namespace
+
 ViscousDamping::ViscousDamping(const Mesh& mesh, double viscosity, double length,
                                const std::vector<ConstrainedComponent>& constraints)
     : coefficient_(3 * mesh.nodes.size(), 0.0), u_accepted_(3 * mesh.nodes.size(), 0.0) {
@@ -36,16 +78,10 @@ ViscousDamping::ViscousDamping(const Mesh& mesh, double viscosity, double length
   FE_CHECK(std::isfinite(length) && length > 0.0,
            "viscous stabilisation: length must be finite and > 0 (got " << length << " mm)");
   const double scale = viscosity / (length * length);
-  for (const auto& tet : mesh.tets) {
-    const double quarter = six_signed_volume(mesh.nodes[static_cast<std::size_t>(tet[0])],
-                                             mesh.nodes[static_cast<std::size_t>(tet[1])],
-                                             mesh.nodes[static_cast<std::size_t>(tet[2])],
-                                             mesh.nodes[static_cast<std::size_t>(tet[3])]) /
-                           24.0;  // V_e / 4
-    for (int v : tet)
-      for (std::size_t k = 0; k < 3; ++k)
-        coefficient_[3 * static_cast<std::size_t>(v) + k] += scale * quarter;
-  }
+  for_each_lumped_volume(mesh, [&](int v, double volume) {
+    for (std::size_t k = 0; k < 3; ++k)
+      coefficient_[3 * static_cast<std::size_t>(v) + k] += scale * volume;
+  });
   for (const ConstrainedComponent& c : constraints) {
     FE_CHECK(c.node >= 0 && static_cast<std::size_t>(c.node) < mesh.nodes.size() &&
                  c.component >= 0 && c.component < 3,

@@ -7,7 +7,8 @@
 ///   dF_i / du_i = c_i / Δt I (diagonal, symmetric positive)                                (V2)
 ///   D^{n+1} = D^n + Σ_i F_i · (u_i - u_i^n)   at the converged state of the step             (V3)
 /// η [MPa s] is `solver.viscosity`, ℓ [mm] a length (wall thickness), V_i [mm³] the lumped
-/// reference volume Σ_e V_e / 4 of the elements of node i, u^n and t^n the last accepted state.
+/// reference volume of node i (Σ_e V_e / 4 on linear tetrahedra, V5 on 10-node ones), u^n and
+/// t^n the last accepted state.
 /// F = 0 when Δt <= 0, and on constrained components (fixed, prescribed, symmetry): their residual
 /// rows are not equations, so a force there would not act but would count in D. The force is
 /// not part of the physics: the user checks that the dissipated
@@ -53,7 +54,10 @@ class ViscousDamping : public ModelTerm {
   std::vector<double> history_values(double t, std::span<const double> x) const override;
 
   double dissipated_energy() const { return dissipated_energy_; }  ///< D [mJ]
-  /// c_i = η V_i / ℓ² [N s / mm] of one component (0 when it is constrained).
+  /// c_i = η V_i / ℓ² [N s / mm] of one component (0 when it is constrained). V_i is the lumped
+  /// volume of node i: Σ_e V_e / 4 over its linear tetrahedra; for 10-node tetrahedra the
+  /// diagonally scaled lumping V_e ∫ N_i² dV / Σ_b ∫ N_b² dV (V5: V_e / 36 per corner and
+  /// 4 V_e / 27 per edge node of a straight one), which stays positive.
   double damping_coefficient(int node, int component) const {
     return coefficient_[3 * static_cast<std::size_t>(node) + static_cast<std::size_t>(component)];
   }

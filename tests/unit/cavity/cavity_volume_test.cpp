@@ -53,8 +53,8 @@ TEST_P(ShellVolume, EqualsThePolyhedronAndTheSphereWithinTheChordalError) {
   const ShellCase c = GetParam();
   const double R = 10.0;
   const Mesh mesh = shell(c.symmetry, R);
-  const auto inner = outward_triangles(mesh, "inner");
-  const auto outer = outward_triangles(mesh, "outer");
+  const auto inner = outward_faces(mesh, "inner");
+  const auto outer = outward_faces(mesh, "outer");
   ASSERT_FALSE(first_open_edge(mesh, inner).has_value());
   const auto x = zero_state(mesh);
   const double v_inner = cavity_volume(mesh, inner, x);
@@ -69,7 +69,7 @@ TEST_P(ShellVolume, EqualsThePolyhedronAndTheSphereWithinTheChordalError) {
   // with rho the largest circumradius of a triangle (sagitta <= rho^2 / R over each triangle).
   double rho_max = 0.0;
   for (const auto& t : inner) {
-    const Vec3d a = mesh.nodes[t[0]], b = mesh.nodes[t[1]], d = mesh.nodes[t[2]];
+    const Vec3d a = mesh.nodes[t.nodes[0]], b = mesh.nodes[t.nodes[1]], d = mesh.nodes[t.nodes[2]];
     const double ab = (b - a).norm(), bd = (d - b).norm(), da = (a - d).norm();
     rho_max = std::max(rho_max, ab * bd * da / (2.0 * (b - a).cross(d - a).norm()));
   }
@@ -88,7 +88,7 @@ TEST_P(ShellVolume, EqualsThePolyhedronAndTheSphereWithinTheChordalError) {
 TEST_P(ShellVolume, UniformStretchMultipliesTheVolumeByTheCube) {
   const ShellCase c = GetParam();
   const Mesh mesh = shell(c.symmetry);
-  const auto inner = outward_triangles(mesh, "inner");
+  const auto inner = outward_faces(mesh, "inner");
   const double v0 = cavity_volume(mesh, inner, zero_state(mesh));
   const double s = 1.37;
   auto x = zero_state(mesh);
@@ -106,7 +106,7 @@ INSTANTIATE_TEST_SUITE_P(Symmetries, ShellVolume,
 
 TEST(CavityVolume, ClosedSurfaceIsInvariantUnderRigidMotion) {
   const Mesh mesh = shell(Symmetry::full);
-  const auto inner = outward_triangles(mesh, "inner");
+  const auto inner = outward_faces(mesh, "inner");
   const double v0 = cavity_volume(mesh, inner, zero_state(mesh));
   // Rotation by 0.7 rad about (1, 2, 3) and a translation: the origin no longer matters.
   const Mat3d Q = Eigen::AngleAxisd(0.7, Vec3d(1, 2, 3).normalized()).toRotationMatrix();
@@ -156,7 +156,7 @@ TEST(CavityVolume, WallFacingAwayFromTheCavityIsAnInputError) {
   }
   CavityTerm term(cavity_on("inner"), mesh, {});
   EXPECT_NEAR(term.reference_volume(),
-              cavity_volume(mesh, outward_triangles(mesh, "inner"), zero_state(mesh)), 1e-15);
+              cavity_volume(mesh, outward_faces(mesh, "inner"), zero_state(mesh)), 1e-15);
 }
 
 }  // namespace

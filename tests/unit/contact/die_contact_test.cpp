@@ -254,7 +254,7 @@ TEST(DieContact, RegionIsGluedFromTheStartAndFollowsTheDie) {
 
 TEST(DieContact, TributaryAreasAddUpToTheSurfaceArea) {
   const Mesh mesh = cube(3);
-  const auto areas = tributary_areas(mesh, outward_triangles(mesh, "top"));
+  const auto areas = tributary_areas(mesh, outward_faces(mesh, "top"));
   double sum = 0.0;
   for (const auto& [node, a] : areas) sum += a;
   EXPECT_NEAR(sum, 4.0, 1e-13);

@@ -27,7 +27,7 @@ BlockRun press_block(double tolerance) {
   spec.divisions = 3;
   const Mesh mesh = generate_mesh(spec);
   std::vector<ConstrainedComponent> constraints;
-  for (int v : surface_nodes(outward_triangles(mesh, "bottom")))
+  for (int v : surface_nodes(outward_faces(mesh, "bottom")))
     for (int k = 0; k < 3; ++k) constraints.push_back({v, k, 0.0, Ramp{0.0, 1.0}});
   DieContactSettings settings;
   settings.name = "punch";

@@ -85,7 +85,7 @@ TEST(PressureLoad, ResultantOnAFlatFaceIsPressureTimesArea) {
 
 TEST(PressureLoad, SymmetryPlanesCloseTheBoundaryOfAnOpenSurface) {
   const Mesh mesh = small_cube();
-  const auto top = outward_triangles(mesh, "top");
+  const auto top = outward_faces(mesh, "top");
   std::vector<ConstrainedComponent> constraints;
   for (int v : surface_nodes(top)) {
     const Vec3d& X = mesh.nodes[v];
