@@ -2,7 +2,9 @@
 // 2 mm) inflated through its pressure maximum by a cavity (docs/theory/cavities.md), run with
 // `plisse run`: by prescribed volume (examples/balloon-limit-point.yaml) and by ideal-gas inflow
 // (balloon-gas.yaml here). The maximum of the cavity pressure and the inner stretch there must
-// match the closed form within 1 %.
+// match the closed form within 1 %. With the Taylor-Hood element (10-node tetrahedra, edge nodes
+// on the spheres) one layer of 4 mm elements must match it within 0.1 % (measured: 0.006 % on λa,
+// 0.004 % on P, with 3.3 thousand unknowns against MINI's 2 layers of 2 mm).
 //
 // Reference: the exact thick-wall solution (Ogden, Non-linear Elastic Deformations, section 5.3.1)
 //   P(λa) = ∫_{λb}^{λa} Ŵ'(λ) / (λ³ − 1) dλ,  Ŵ(λ) = c1 (2λ² + λ⁻⁴ − 3),  λb³ = 1 + (A/B)³ (λa³ −
@@ -18,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "io/history_writer.hpp"
 #include "support/run_plisse.hpp"
@@ -62,10 +65,15 @@ size_t column(const HistoryTable& h, const std::string& name) {
   return 0;
 }
 
-HistoryTable run(const std::string& case_file, const std::string& label) {
+/// The Taylor-Hood element on one layer of 4 mm elements.
+const std::string kTaylorHood =
+    " --set element=taylor-hood --set mesh.element_size=4 --set mesh.layers=1";
+
+HistoryTable run(const std::string& case_file, const std::string& label,
+                 const std::string& options = "") {
   const auto dir = test::scratch_directory("cavity-" + label);
   const int status =
-      test::run_plisse("run " + case_file + " -o " + dir.string(), dir.string() + ".log");
+      test::run_plisse("run " + case_file + " -o " + dir.string() + options, dir.string() + ".log");
   EXPECT_EQ(status, 0) << "see " << dir.string() << ".log";
   return read_history(dir / "history.csv");
 }
@@ -92,7 +100,7 @@ Maximum computed_maximum(const HistoryTable& h) {
   return {xm, y[0] + d01 * (xm - x[0]) + d2 * (xm - x[0]) * (xm - x[1])};
 }
 
-void expect_closed_form_maximum(const HistoryTable& h, const char* label) {
+void expect_closed_form_maximum(const HistoryTable& h, const char* label, double tolerance = 0.01) {
   const Maximum exact = thick_wall_maximum();
   const Maximum fe = computed_maximum(h);
   const double thin_lambda = std::pow(7.0, 1.0 / 6.0);
@@ -101,8 +109,8 @@ void expect_closed_form_maximum(const HistoryTable& h, const char* label) {
       "P = %.6f MPa (thick wall %.6f, error %+.3f %%)\n",
       label, fe.lambda, exact.lambda, 100 * (fe.lambda / exact.lambda - 1), thin_lambda,
       fe.pressure, exact.pressure, 100 * (fe.pressure / exact.pressure - 1));
-  EXPECT_NEAR(fe.lambda, exact.lambda, 0.01 * exact.lambda);
-  EXPECT_NEAR(fe.pressure, exact.pressure, 0.01 * exact.pressure);
+  EXPECT_NEAR(fe.lambda, exact.lambda, tolerance * exact.lambda);
+  EXPECT_NEAR(fe.pressure, exact.pressure, tolerance * exact.pressure);
 }
 
 /// Newton converges quadratically with the consistent bordered tangent: few iterations per step.
@@ -139,6 +147,18 @@ TEST(BalloonLimitPoint, IdealGasInflowPassesThePressureMaximumAndKeepsTheGasLaw)
   };
   const double c = invariant(h.rows.front());
   for (const auto& row : h.rows) EXPECT_NEAR(invariant(row), c, 1e-9 * c);
+}
+
+TEST(BalloonLimitPoint, TaylorHoodOnOneLayerPassesTheMaximumWithinATenthOfAPercent) {
+  for (const auto& [file, label] :
+       {std::pair{test::example("balloon-limit-point.yaml"), "volume-taylor-hood"},
+        std::pair{std::string(PLISSE_SOURCE_DIR) + "/tests/verification/cavity/balloon-gas.yaml",
+                  "gas-taylor-hood"}}) {
+    const HistoryTable h = run(file, label, kTaylorHood);
+    ASSERT_GE(h.rows.size(), 10u) << label;
+    expect_closed_form_maximum(h, label, 1e-3);
+    expect_few_newton_iterations(h);
+  }
 }
 
 }  // namespace
