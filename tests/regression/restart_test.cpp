@@ -157,6 +157,44 @@ TEST(Restart, TerminatedRunStopsWithCheckpointAndExitStatus1) {
   EXPECT_TRUE(read_json_file(dir / "summary.json")["completed"].get<bool>());
 }
 
+TEST(Restart, KilledTaylorHoodRunResumesToTheUninterruptedHistory) {
+  const std::string element = "element=taylor-hood";
+  const fs::path reference = test::scratch_directory("restart-th-reference");
+  ASSERT_EQ(test::run_plisse("run " + kCase + " -o " + reference.string() + " --set " + element,
+                             reference.string() + ".log"),
+            0);
+  const fs::path killed = test::scratch_directory("restart-th-killed");
+  const pid_t pid = start_run(killed, kCase, element);
+  wait_for_rows(killed, 6);
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed";
+  expect_readable(killed);
+  ASSERT_EQ(test::run_plisse("run " + kCase + " --set " + element + " --resume " + killed.string(),
+                             killed.string() + ".resume.log"),
+            0)
+      << "see " << killed.string() << ".resume.log";
+  expect_same_history(reference, killed);
+  expect_readable(killed);
+  EXPECT_EQ(read_json_file(killed / "summary.json")["element"].get<std::string>(), "taylor-hood");
+}
+
+TEST(Restart, ResumeWithAnotherElementFamilyIsRefusedByName) {
+  const fs::path dir = test::scratch_directory("restart-other-element");
+  ASSERT_EQ(test::run_plisse("run " + kCase + " -o " + dir.string() + " --set element=taylor-hood",
+                             dir.string() + ".log"),
+            0);
+  const int status = test::run_plisse("run " + kCase + " --resume " + dir.string(),
+                                      dir.string() + ".bad.log");
+  EXPECT_EQ(status, 2);
+  std::ifstream in(dir.string() + ".bad.log");
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(text.find("checkpoint.bin"), std::string::npos) << text;
+  EXPECT_NE(text.find("`element: taylor-hood`"), std::string::npos) << text;
+  EXPECT_NE(text.find("`element: mini`"), std::string::npos) << text;
+}
+
 TEST(Restart, CheckpointOfAnotherCaseIsRefused) {
   const fs::path dir = test::scratch_directory("restart-other-case");
   ASSERT_EQ(test::run_plisse("run " + kCase + " -o " + dir.string(), dir.string() + ".log"), 0);
