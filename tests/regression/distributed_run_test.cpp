@@ -92,11 +92,11 @@ double field_difference(const fs::path& a, const fs::path& b, const std::string&
   return scale > 0 ? difference / scale : difference;
 }
 
-TEST(DistributedRun, IndentationIsTheSameOnOneAndTwoRanks) {
-  const fs::path one =
-      run("indentation", example("sphere-indentation.yaml"), kCoarseIndentation, 1);
-  const fs::path two =
-      run("indentation", example("sphere-indentation.yaml"), kCoarseIndentation, 2);
+/// The coarse indentation on one and two ranks (`label`, `args` added to kCoarseIndentation).
+void expect_indentation_the_same(const std::string& label, const std::string& args) {
+  SCOPED_TRACE(label);
+  const fs::path one = run(label, example("sphere-indentation.yaml"), kCoarseIndentation + args, 1);
+  const fs::path two = run(label, example("sphere-indentation.yaml"), kCoarseIndentation + args, 2);
   // Newton stops at rtol 1e-8 of the residual: the states agree to about that.
   expect_same_history(one, two, 1e-6);
   const nlohmann::json s1 = read_json_file(one / "summary.json"),
@@ -120,6 +120,31 @@ TEST(DistributedRun, IndentationIsTheSameOnOneAndTwoRanks) {
   EXPECT_LT(field_difference(one / (last + ".vtu"), two / (last + ".pvtu"), "pressure"), 1e-6);
   EXPECT_EQ(read_vtu_summary(one / (last + ".vtu")).n_cells,
             read_vtu_summary(two / (last + ".pvtu")).n_cells);
+}
+
+TEST(DistributedRun, IndentationIsTheSameOnOneAndTwoRanks) {
+  expect_indentation_the_same("indentation", "");
+}
+
+// The Taylor-Hood element (10-node tetrahedra: the ranks' pieces carry the edge nodes too) on the
+// balloon through its pressure maximum (a cavity: a global unknown coupled to every wall node).
+TEST(DistributedRun, TaylorHoodBalloonIsTheSameOnOneAndTwoRanks) {
+  const std::string args =
+      " --set element=taylor-hood --set mesh.element_size=4 --set mesh.layers=1";
+  const fs::path one = run("balloon-taylor-hood", example("balloon-limit-point.yaml"), args, 1);
+  const fs::path two = run("balloon-taylor-hood", example("balloon-limit-point.yaml"), args, 2);
+  expect_same_history(one, two, 1e-6);
+  const nlohmann::json s1 = read_json_file(one / "summary.json"),
+                       s2 = read_json_file(two / "summary.json");
+  EXPECT_EQ(s2["ranks"], 2);
+  EXPECT_EQ(s2["element"], "taylor-hood");
+  for (const char* key : {"steps", "newton_iterations", "free_dofs", "completed"})
+    EXPECT_EQ(s1[key], s2[key]) << key;
+  const std::string last = "step_0040";
+  EXPECT_EQ(read_vtu_point_count(one / (last + ".vtu")),
+            read_vtu_point_count(two / (last + ".pvtu")));
+  EXPECT_LT(field_difference(one / (last + ".vtu"), two / (last + ".pvtu"), "displacement"), 1e-6);
+  EXPECT_LT(field_difference(one / (last + ".vtu"), two / (last + ".pvtu"), "pressure"), 1e-6);
 }
 
 TEST(DistributedRun, BucklingModesAndBranchSwitchingAreTheSameOnTwoRanks) {

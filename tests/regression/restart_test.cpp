@@ -185,8 +185,8 @@ TEST(Restart, ResumeWithAnotherElementFamilyIsRefusedByName) {
   ASSERT_EQ(test::run_plisse("run " + kCase + " -o " + dir.string() + " --set element=taylor-hood",
                              dir.string() + ".log"),
             0);
-  const int status = test::run_plisse("run " + kCase + " --resume " + dir.string(),
-                                      dir.string() + ".bad.log");
+  const int status =
+      test::run_plisse("run " + kCase + " --resume " + dir.string(), dir.string() + ".bad.log");
   EXPECT_EQ(status, 2);
   std::ifstream in(dir.string() + ".bad.log");
   const std::string text((std::istreambuf_iterator<char>(in)), {});
