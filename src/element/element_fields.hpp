@@ -13,4 +13,12 @@ struct ElementFields {
                      ///< compression); not -tr σ̄ / 3, which differs by the isochoric part
 };
 
+/// All fields zero.
+inline ElementFields zero_element_fields() {
+  ElementFields zero;
+  zero.cauchy.setZero();
+  zero.J = zero.von_mises = zero.pressure = 0.0;
+  return zero;
+}
+
 }  // namespace plisse

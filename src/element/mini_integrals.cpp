@@ -2,18 +2,10 @@
 
 #include <cmath>
 
+#include "element/kinematics.hpp"
+
 namespace plisse::mini {
 namespace {
-
-/// E(v)_ik = ε_ikm v_m (= -[v]_×). The pressure term of the tangent contracted with two gradients,
-/// G·𝔻·H, equals E(F (G × H)) (mixed_up.md, K1a).
-Mat3d epsilon_dot(const Vec3d& v) {
-  Mat3d E;
-  E << 0.0, v(2), -v(1),  //
-      -v(2), 0.0, v(0),   //
-      v(1), -v(0), 0.0;
-  return E;
-}
 
 /// [v]_× w = v × w.
 Mat3d cross_matrix(const Vec3d& v) { return -epsilon_dot(v); }
@@ -44,13 +36,8 @@ PointKinematics compute_point_kinematics(const TetGeometry& g, const NodalState&
   PointKinematics k;
   const Mat3d H = s.grad_u_linear + bubble * g.grad_bubble[q].transpose();  // (U3)
   k.F = Mat3d::Identity() + H;
-  k.cof.col(0) = k.F.col(1).cross(k.F.col(2));
-  k.cof.col(1) = k.F.col(2).cross(k.F.col(0));
-  k.cof.col(2) = k.F.col(0).cross(k.F.col(1));
-  // det(I + H) - 1 = tr H + ½((tr H)² - tr H²) + det H: exact, and free of the cancellation of
-  // det F - 1 when |H| is small (mixed_up.md, U4).
-  const double trace = H.trace();
-  k.J_minus_1 = trace + 0.5 * (trace * trace - (H * H).trace()) + H.determinant();
+  k.cof = cofactor(k.F);
+  k.J_minus_1 = det_minus_one(H);  // (U4)
   k.J = 1.0 + k.J_minus_1;
   const std::array<double, 4>& N = kQuadrature.points[q];
   k.p = N[0] * s.p(0) + N[1] * s.p(1) + N[2] * s.p(2) + N[3] * s.p(3);

@@ -16,6 +16,7 @@
 
 #include "core/error.hpp"
 #include "element/element_fields.hpp"
+#include "element/kinematics.hpp"
 #include "element/taylor_hood_geometry.hpp"
 #include "material/inadmissible_deformation.hpp"
 #include "material/isochoric_invariants.hpp"
@@ -53,30 +54,13 @@ inline PointKinematics point_kinematics(const Geometry& g,
   k.grad_N = gradients(g, q);
   const Mat3d H = u * k.grad_N.transpose();
   k.F = Mat3d::Identity() + H;
-  k.cof.col(0) = k.F.col(1).cross(k.F.col(2));
-  k.cof.col(1) = k.F.col(2).cross(k.F.col(0));
-  k.cof.col(2) = k.F.col(0).cross(k.F.col(1));
-  const double trace = H.trace();
-  k.J_minus_1 = trace + 0.5 * (trace * trace - (H * H).trace()) + H.determinant();
+  k.cof = cofactor(k.F);
+  k.J_minus_1 = det_minus_one(H);
   k.J = 1.0 + k.J_minus_1;
   const std::array<double, 4>& L = kQuadrature.points[q];
   k.p = L[0] * p(0) + L[1] * p(1) + L[2] * p(2) + L[3] * p(3);
   return k;
 }
-
-namespace detail {
-
-/// E(v)_ik = ε_ikm v_m: the pressure part of the tangent between gradients G and H is
-/// -p E(F (G × H)) (taylor_hood.md, H8; the same identity as the MINI kernel's K1a).
-inline Mat3d epsilon_dot(const Vec3d& v) {
-  Mat3d E;
-  E << 0.0, v(2), -v(1),  //
-      -v(2), 0.0, v(0),   //
-      v(1), -v(0), 0.0;
-  return E;
-}
-
-}  // namespace detail
 
 /// Residual r_e (H7) and, when K_e is not null, the consistent tangent K_e = dr_e/dx_e (H8) of one
 /// element at the element unknowns x_e.
@@ -131,7 +115,7 @@ ElementStatus assemble(const Geometry& g, const ElemVec& x_e, const Material& ma
         const Vec3d Ga = k.grad_N.col(a);
         K.block<3, 3>(dof_u(a, 0), dof_u(b, 0)) +=
             Ga(0) * AG.topRows<3>() + Ga(1) * AG.middleRows<3>(3) + Ga(2) * AG.bottomRows<3>() -
-            detail::epsilon_dot(wpF * Ga.cross(Gb));
+            epsilon_dot(wpF * Ga.cross(Gb));
       }
       const Vec3d cof_G = -w * (k.cof * Gb);
       for (int c = 0; c < kCorners; ++c) K.block<3, 1>(dof_u(b, 0), dof_p(c)) += L[c] * cof_G;

@@ -101,12 +101,7 @@ struct TaylorHoodElement {
     return taylor_hood::deformation_integral(g, x);
   }
 
-  static Fields zero_fields() {
-    Fields zero;
-    zero.cauchy.setZero();
-    zero.J = zero.von_mises = zero.pressure = 0.0;
-    return zero;
-  }
+  static Fields zero_fields() { return zero_element_fields(); }
 };
 
 static_assert(ElementPolicy<TaylorHoodElement>);

@@ -86,31 +86,35 @@ void expect_same_history(const fs::path& a, const fs::path& b) {
     }
 }
 
-TEST(Restart, KilledRunResumesToTheUninterruptedHistory) {
-  const fs::path reference = test::scratch_directory("restart-reference");
-  ASSERT_EQ(
-      test::run_plisse("run " + kCase + " -o " + reference.string(), reference.string() + ".log"),
-      0);
-
-  const fs::path killed = test::scratch_directory("restart-killed");
-  const pid_t pid = start_run(killed);
+/// Runs kCase (with `--set set` when not empty) uninterrupted into `name`-reference, and again
+/// into `name`-killed, killed by SIGKILL after 6 steps and resumed; both must give the same
+/// history and readable files. Returns the killed-and-resumed directory.
+fs::path expect_kill_and_resume(const std::string& name, const std::string& set = "") {
+  const std::string options = set.empty() ? "" : " --set " + set;
+  const fs::path reference = test::scratch_directory(name + "-reference");
+  EXPECT_EQ(test::run_plisse("run " + kCase + " -o " + reference.string() + options,
+                             reference.string() + ".log"),
+            0);
+  const fs::path killed = test::scratch_directory(name + "-killed");
+  const pid_t pid = start_run(killed, kCase, set);
   wait_for_rows(killed, 6);
   kill(pid, SIGKILL);
   int status = 0;
   waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed";
+  EXPECT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed";
   expect_readable(killed);
-
-  ASSERT_EQ(test::run_plisse("run " + kCase + " --resume " + killed.string(),
+  EXPECT_EQ(test::run_plisse("run " + kCase + options + " --resume " + killed.string(),
                              killed.string() + ".resume.log"),
             0)
       << "see " << killed.string() << ".resume.log";
   expect_same_history(reference, killed);
   expect_readable(killed);
-  const auto summary = read_json_file(killed / "summary.json");
-  EXPECT_TRUE(summary["completed"].get<bool>());
+  EXPECT_TRUE(read_json_file(killed / "summary.json")["completed"].get<bool>());
   EXPECT_EQ(read_pvd(killed / "solution.pvd").size(), read_pvd(reference / "solution.pvd").size());
+  return killed;
 }
+
+TEST(Restart, KilledRunResumesToTheUninterruptedHistory) { expect_kill_and_resume("restart"); }
 
 TEST(Restart, ContactHistorySurvivesAKill) {
   // Sticking and frictionless dies carry glue points and multipliers from step to step: they are
@@ -158,25 +162,7 @@ TEST(Restart, TerminatedRunStopsWithCheckpointAndExitStatus1) {
 }
 
 TEST(Restart, KilledTaylorHoodRunResumesToTheUninterruptedHistory) {
-  const std::string element = "element=taylor-hood";
-  const fs::path reference = test::scratch_directory("restart-th-reference");
-  ASSERT_EQ(test::run_plisse("run " + kCase + " -o " + reference.string() + " --set " + element,
-                             reference.string() + ".log"),
-            0);
-  const fs::path killed = test::scratch_directory("restart-th-killed");
-  const pid_t pid = start_run(killed, kCase, element);
-  wait_for_rows(killed, 6);
-  kill(pid, SIGKILL);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed";
-  expect_readable(killed);
-  ASSERT_EQ(test::run_plisse("run " + kCase + " --set " + element + " --resume " + killed.string(),
-                             killed.string() + ".resume.log"),
-            0)
-      << "see " << killed.string() << ".resume.log";
-  expect_same_history(reference, killed);
-  expect_readable(killed);
+  const fs::path killed = expect_kill_and_resume("restart-th", "element=taylor-hood");
   EXPECT_EQ(read_json_file(killed / "summary.json")["element"].get<std::string>(), "taylor-hood");
 }
 

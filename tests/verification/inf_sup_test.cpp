@@ -16,6 +16,7 @@
 #include <string>
 
 #include "mesh/generate.hpp"
+#include "support/second_order_mesh.hpp"
 #include "verification/fixtures/saddle_point.hpp"
 
 namespace plisse::test {
@@ -35,15 +36,6 @@ struct InfSupLevel {
   double eta_p1p1 = 0.0;           ///< checkerboard indicator (IS3) of the lowest P1/P1 mode
   bool A_positive_definite = false;
 };
-
-/// The nodes of boundary triangle t, edge nodes included on a second-order mesh.
-std::vector<int> face_nodes(const Mesh& mesh, int t) {
-  std::vector<int> nodes(mesh.triangles[t].begin(), mesh.triangles[t].end());
-  if (mesh.order() == 2)
-    nodes.insert(nodes.end(), mesh.triangle_edge_nodes[t].begin(),
-                 mesh.triangle_edge_nodes[t].end());
-  return nodes;
-}
 
 std::vector<ConstrainedComponent> constraints_for(const Mesh& mesh, Support support) {
   std::set<int> fixed;
