@@ -71,6 +71,10 @@ void check_case(const CheckOptions& options) {
   out << "plisse check: " << c.path << ": valid\n";
   if (!c.title.empty()) out << "  title     " << c.title << '\n';
   out << "  material  " << material_line(c.material) << '\n';
+  out << "  element   " << to_string(c.element)
+      << (c.element == ElementFamily::mini ? " (P1+/P1, linear tetrahedra)"
+                                           : " (P2/P1, 10-node tetrahedra)")
+      << '\n';
   out << "  mesh      "
       << (c.mesh.file ? "file " + *c.mesh.file : "generated " + c.mesh.generate->kind) << ": "
       << mesh.n_nodes() << " nodes, " << mesh.n_tets() << " tetrahedra"

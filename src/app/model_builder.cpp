@@ -113,14 +113,28 @@ std::unique_ptr<MixedModel> make_model(const Mesh& mesh, ModelParts parts) {
 
 std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh) {
   std::vector<InputError> out;
-  if (mesh.order() != mesh_order_of(c.element))
-    out.emplace_back(c.mesh.file ? c.mesh.file_place : c.mesh.place,
-                     c.element == ElementFamily::mini
-                         ? "the mesh has second-order (10-node) tetrahedra; the MINI element needs "
-                           "linear ones (set `element: taylor-hood` to run them as P2/P1)"
-                         : "the mesh has linear (4-node) tetrahedra; the Taylor-Hood element needs "
-                           "second-order (10-node) ones (export the mesh with order 2, e.g. "
-                           "gmsh -3 -order 2, or let plisse generate it)");
+  if (mesh.order() != mesh_order_of(c.element)) {
+    const bool generated = !c.mesh.file;
+    std::string rule;
+    if (c.element == ElementFamily::mini)
+      rule =
+          "the mesh has second-order (10-node) tetrahedra; the MINI element needs linear ones (" +
+          std::string(generated ? "remove `mesh.order` or set it to 1"
+                                : "set `element: taylor-hood` to run them as P2/P1") +
+          ")";
+    else
+      rule =
+          "the mesh has linear (4-node) tetrahedra; the Taylor-Hood element needs "
+          "second-order (10-node) ones (" +
+          std::string(generated ? "remove `mesh.order` or set it to 2"
+                                : "export the mesh with order 2, e.g. gmsh -3 -order 2") +
+          ")";
+    const auto order = c.mesh.option_places.find("order");
+    out.emplace_back(!generated                            ? c.mesh.file_place
+                     : order != c.mesh.option_places.end() ? order->second
+                                                           : c.mesh.place,
+                     rule);
+  }
   if (c.solver.scheme != Scheme::total_lagrangian)
     out.emplace_back(InputPlace{c.path, 0, 0, "solver.scheme"},
                      "only the total-lagrangian scheme is available yet");

@@ -1,0 +1,52 @@
+// The model builder's judgement of the element family against the mesh order: a generated mesh
+// follows `element` unless `mesh.order` says otherwise, and a mismatch is an input error placed at
+// the key that caused it.
+#include "app/model_builder.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "io/case.hpp"
+
+namespace plisse::app {
+namespace {
+
+const std::string kCube =
+    "mesh: {generate: cube, edge: 2.0, divisions: 1}\nmaterial: {model: neo-hookean, c1: 0.2}\n";
+
+TEST(ModelBuilder, GeneratedMeshTakesTheElementsOrder) {
+  for (const auto& [element, order] : {std::pair{"mini", 1}, std::pair{"taylor-hood", 2}}) {
+    const Case c = parse_case_string(std::string("element: ") + element + "\n" + kCube, "c.yaml");
+    const Mesh mesh = load_case_mesh(c);
+    EXPECT_EQ(mesh.order(), order) << element;
+    EXPECT_TRUE(unsupported_features(c, mesh).empty()) << element;
+    EXPECT_EQ(build_model_parts(c, mesh).element, c.element);
+  }
+}
+
+TEST(ModelBuilder, ExplicitMeshOrderAgainstTheElementIsRefusedAtThatKey) {
+  const std::string text = "element: taylor-hood\n"
+                           "mesh: {generate: cube, edge: 2.0, divisions: 1, order: 1}\n"
+                           "material: {model: neo-hookean, c1: 0.2}\n";
+  const Case c = parse_case_string(text, "c.yaml");
+  const Mesh mesh = load_case_mesh(c);
+  EXPECT_EQ(mesh.order(), 1);
+  const auto errors = unsupported_features(c, mesh);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].place().line, 2);
+  EXPECT_EQ(errors[0].place().key, "mesh.order");
+  EXPECT_NE(errors[0].rule().find("Taylor-Hood element needs second-order"), std::string::npos);
+  EXPECT_NE(errors[0].rule().find("remove `mesh.order`"), std::string::npos);
+
+  const Case mini = parse_case_string(
+      "mesh: {generate: cube, edge: 2.0, divisions: 1, order: 2}\n"
+      "material: {model: neo-hookean, c1: 0.2}\n",
+      "c.yaml");
+  const auto mini_errors = unsupported_features(mini, load_case_mesh(mini));
+  ASSERT_EQ(mini_errors.size(), 1u);
+  EXPECT_NE(mini_errors[0].rule().find("MINI element needs linear ones"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace plisse::app
