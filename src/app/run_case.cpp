@@ -189,9 +189,14 @@ void solve_and_write(PreparedRun run) {
   const StartTimes times{run.start, run.time_mesh, seconds_since(t0)};
 
   const RunDirectory dir(run.out_dir);
+  // What a run killed mid-write left behind (its files themselves are whole: atomic writes).
+  const int stale = root ? remove_stale_temporaries(dir.directory()) : 0;
   RunLog log = root ? RunLog(dir.log_txt()) : RunLog({}, nullptr, nullptr);
   if (root && checkpoint && fs::exists(dir.log_txt())) log.prepend(read_file(dir.log_txt()));
   log_header(log, run, dir.directory(), *model, n_constrained);
+  if (stale > 0)
+    log.info("removed " + std::to_string(stale) +
+             " temporary file(s) an interrupted run left in the output directory");
   if (checkpoint) {
     model->restore({checkpoint->state, checkpoint->bubbles, checkpoint->term_states});
     stepper.resume({checkpoint->steps, checkpoint->time, checkpoint->dt, checkpoint->previous_dt,

@@ -1,9 +1,12 @@
 #include "io/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cerrno>
 #include <system_error>
 #include <utility>
@@ -127,6 +130,30 @@ void AtomicFile::discard() noexcept {
   if (fd_ >= 0) ::close(std::exchange(fd_, -1));
   if (!temporary_.empty()) ::unlink(temporary_.c_str());
   temporary_.clear();
+}
+
+int remove_stale_temporaries(const std::filesystem::path& directory) {
+  int removed = 0;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
+    const std::string name = entry.path().filename().string();
+    // ".<target>.tmp.<pid>.<n>": the pid is the number between the last two dots after ".tmp.".
+    const std::size_t tmp = name.rfind(".tmp.");
+    if (name.empty() || name[0] != '.' || tmp == std::string::npos || tmp == 0) continue;
+    const std::size_t dot = name.find('.', tmp + 5);
+    if (dot == std::string::npos) continue;
+    const std::string pid = name.substr(tmp + 5, dot - tmp - 5), n = name.substr(dot + 1);
+    const auto digits = [](const std::string& text) {
+      return !text.empty() && text.size() < 12 &&
+             std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); });
+    };
+    if (!digits(pid) || !digits(n)) continue;
+    // kill(pid, 0) fails with ESRCH only when no such process exists.
+    if (::kill(static_cast<pid_t>(std::stol(pid)), 0) == 0 || errno != ESRCH) continue;
+    std::error_code remove_error;
+    if (std::filesystem::remove(entry.path(), remove_error)) ++removed;
+  }
+  return removed;
 }
 
 std::string read_file(const std::filesystem::path& path) {

@@ -20,6 +20,13 @@ namespace plisse {
 /// the target is then untouched.
 void write_file_atomically(const std::filesystem::path& target, std::string_view content);
 
+/// Removes from `directory` the temporary files of write_file_atomically and AtomicFile that a
+/// writer killed mid-write left behind (SIGKILL, power loss): the names `.<name>.tmp.<pid>.<n>`
+/// whose process <pid> no longer runs. Temporaries of live processes (another run writing into
+/// the same directory) are kept. Returns how many were removed; a file that cannot be removed is
+/// skipped.
+int remove_stale_temporaries(const std::filesystem::path& directory);
+
 /// The whole content of the file at `path`, for the readers of run-directory files (history,
 /// collection, JSON). A run directory is user input to `plisse wrinkles DIR` and restarts, so a
 /// missing or unreadable file throws plisse::InputError (file = path, rule = "cannot read: "

@@ -26,9 +26,10 @@ TEST(ModelBuilder, GeneratedMeshTakesTheElementsOrder) {
 }
 
 TEST(ModelBuilder, ExplicitMeshOrderAgainstTheElementIsRefusedAtThatKey) {
-  const std::string text = "element: taylor-hood\n"
-                           "mesh: {generate: cube, edge: 2.0, divisions: 1, order: 1}\n"
-                           "material: {model: neo-hookean, c1: 0.2}\n";
+  const std::string text =
+      "element: taylor-hood\n"
+      "mesh: {generate: cube, edge: 2.0, divisions: 1, order: 1}\n"
+      "material: {model: neo-hookean, c1: 0.2}\n";
   const Case c = parse_case_string(text, "c.yaml");
   const Mesh mesh = load_case_mesh(c);
   EXPECT_EQ(mesh.order(), 1);

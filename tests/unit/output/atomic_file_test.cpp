@@ -1,6 +1,10 @@
 #include "io/atomic_file.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <string>
 
 #include "core/error.hpp"
 #include "output_test_support.hpp"
@@ -96,6 +100,24 @@ TEST(AtomicFile, ReadFileReturnsContentAndReportsMissingFileAsInputError) {
     EXPECT_EQ(e.place().file, (dir / "b.txt").string());
     EXPECT_NE(e.rule().find("No such file or directory"), std::string::npos) << e.rule();
   }
+}
+
+TEST(AtomicFile, StaleTemporariesOfDeadWritersAreRemovedLiveOnesKept) {
+  // A real dead process: a child that has exited and been reaped (its pid is free, so kill(pid, 0)
+  // reports ESRCH unless the system reused it within these few lines).
+  const pid_t child = fork();
+  if (child == 0) _exit(0);
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  const ScratchDir dir;
+  const std::string dead = ".step_0006.vtu.tmp." + std::to_string(child) + ".28";
+  const std::string live = ".history.csv.tmp." + std::to_string(::getpid()) + ".3";
+  for (const std::string& name : {dead, live, std::string(".x.tmp.12a.1"),
+                                  std::string("step_0006.vtu"), std::string("a.tmp.1.2")})
+    write_file_atomically(dir / name, "partial");
+  EXPECT_EQ(remove_stale_temporaries(dir.path()), 1);
+  EXPECT_EQ(entries(dir.path()),
+            (std::set<std::string>{live, ".x.tmp.12a.1", "step_0006.vtu", "a.tmp.1.2"}));
 }
 
 }  // namespace
