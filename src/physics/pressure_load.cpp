@@ -51,7 +51,9 @@ bool pressure_stiffness_is_symmetric(const Mesh& mesh, const std::vector<Surface
   for (const auto& [edge, entry] : edges) {
     const auto [count, middle] = entry;
     if (count != 1) continue;  // interior edge
-    const auto [a, b] = edge;
+    // Plain ints, not a structured binding: the lambda below captures `a` (clang < 16 cannot
+    // capture structured bindings).
+    const int a = edge.first, b = edge.second;
     std::vector<int> nodes = {a, b};
     if (middle >= 0) nodes.push_back(middle);
     bool ok = std::all_of(nodes.begin(), nodes.end(), fixed);
