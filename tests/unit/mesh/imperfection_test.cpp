@@ -21,17 +21,19 @@ constexpr double kThickness = 1.0;  // [mm]
 
 /// Quarter spherical shell, inner radius 10 mm, wall 1 mm, 2 layers: node k of layer j is
 /// j n + k (mesh/layered_shell.hpp), so the column of node i is {i mod n + j n}.
+MeshGenerationSpec quarter_shell_spec() {
+  MeshGenerationSpec spec;
+  spec.kind = "spherical-shell";
+  spec.inner_radius = 10.0;
+  spec.thickness = kThickness;
+  spec.layers = kLayers;
+  spec.element_size = 2.0;
+  spec.symmetry = Symmetry::quarter;
+  return spec;
+}
+
 const Mesh& quarter_shell() {
-  static const Mesh mesh = [] {
-    MeshGenerationSpec spec;
-    spec.kind = "spherical-shell";
-    spec.inner_radius = 10.0;
-    spec.thickness = kThickness;
-    spec.layers = kLayers;
-    spec.element_size = 2.0;
-    spec.symmetry = Symmetry::quarter;
-    return generate_mesh(spec);
-  }();
+  static const Mesh mesh = generate_mesh(quarter_shell_spec());
   return mesh;
 }
 
@@ -138,13 +140,7 @@ TEST(RandomImperfection, SecondOrderShellTakesTheCornerFieldLinearAlongEdges) {
   // (I1b): on a 10-node mesh the corners take the field of the linear mesh (same seed: the same
   // draws on the same outer corners) and each edge node the mean of its edge's corners, after
   // the symmetry projection; the perturbed mesh passes the check.
-  MeshGenerationSpec spec;
-  spec.kind = "spherical-shell";
-  spec.inner_radius = 10.0;
-  spec.thickness = kThickness;
-  spec.layers = kLayers;
-  spec.element_size = 2.0;
-  spec.symmetry = Symmetry::quarter;
+  MeshGenerationSpec spec = quarter_shell_spec();
   spec.order = 2;
   Mesh mesh = generate_mesh(spec);
   const auto d =
