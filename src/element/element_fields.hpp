@@ -1,5 +1,7 @@
 #pragma once
 /// Output averages of one element, the same for every element family.
+#include <cmath>
+
 #include "core/types.hpp"
 
 namespace plisse {
@@ -12,6 +14,12 @@ struct ElementFields {
   double pressure;   ///< (1/V) ∫ p_h dV  [MPa], the element's pressure field (positive in
                      ///< compression); not -tr σ̄ / 3, which differs by the isochoric part
 };
+
+/// sqrt(3/2 dev σ : dev σ), the von Mises stress of the Cauchy stress σ [MPa].
+inline double von_mises_stress(const Mat3d& cauchy) {
+  const Mat3d deviator = cauchy - cauchy.trace() / 3.0 * Mat3d::Identity();
+  return std::sqrt(1.5 * deviator.squaredNorm());
+}
 
 /// All fields zero.
 inline ElementFields zero_element_fields() {

@@ -152,8 +152,7 @@ ElementFields compute_element_fields(const Geometry& g, const ElemVec& x_e, cons
     fields.J += w * k.J;
     fields.pressure += w * k.p;
   }
-  const Mat3d deviator = fields.cauchy - fields.cauchy.trace() / 3.0 * Mat3d::Identity();
-  fields.von_mises = std::sqrt(1.5 * deviator.squaredNorm());
+  fields.von_mises = von_mises_stress(fields.cauchy);
   return fields;
 }
 
