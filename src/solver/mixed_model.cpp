@@ -141,11 +141,9 @@ void MixedModel::set_free(Vec x) {
 
 AssemblyStatus MixedModel::assemble_residual(Vec f) {
   std::fill(full_residual_.begin(), full_residual_.end(), 0.0);
-  const AssemblyStatus status = std::visit(
-      [&](auto& e) {
-        return e->add_residual(*distribution_, state_, full_residual_, assembly_threads());
-      },
-      elements_);
+  const AssemblyStatus status = visit_elements([&](auto& e) {
+    return e.add_residual(*distribution_, state_, full_residual_, assembly_threads());
+  });
   for (auto& term : terms_) term->assemble(time_, state_, full_residual_, nullptr);
   if (!external_force_.empty()) {
     const double factor = external_ramp_.factor(time_);
@@ -163,19 +161,16 @@ AssemblyStatus MixedModel::assemble_tangent(Mat K) {
     // Each entry receives its element contributions in element order, then the terms', exactly
     // as MatSetValues(ADD_VALUES) would add them: the same bits.
     PetscScalar* values = layout_->open_values(K);
-    status = std::visit(
-        [&](auto& e) {
-          return e->add_tangent(*distribution_, state_, *layout_, values, assembly_threads());
-        },
-        elements_);
+    status = visit_elements([&](auto& e) {
+      return e.add_tangent(*distribution_, state_, *layout_, values, assembly_threads());
+    });
     TangentLayout::TermSink sink(*layout_, values);
     for (auto& term : terms_) term->assemble(time_, state_, term_residual_, &sink);
     layout_->close_values(K, values);
   } else {
     PLISSE_PETSC(MatZeroEntries(K));
-    status = std::visit(
-        [&](auto& e) { return e->add_tangent(*distribution_, state_, K, assembly_threads()); },
-        elements_);
+    status = visit_elements(
+        [&](auto& e) { return e.add_tangent(*distribution_, state_, K, assembly_threads()); });
     EquationSink sink(K, dofs(), first_owned_equation(), end_owned_equation(), equations_);
     for (auto& term : terms_) term->assemble(time_, state_, term_residual_, &sink);
   }
@@ -208,20 +203,20 @@ void MixedModel::restore(const Snapshot& s) {
            "the checkpoint does not fit this model (" << s.state.size() << " values for "
                                                       << state_.size() << " dofs)");
   state_ = s.state;
-  std::visit([&](auto& e) { e->restore(s.bubbles); }, elements_);
+  visit_elements([&](auto& e) { e.restore(s.bubbles); });
   for (size_t k = 0; k < terms_.size(); ++k) terms_[k]->load_state(s.term_states[k]);
   converged_state_ = state_;
 }
 
 void MixedModel::save_converged() {
   converged_state_ = state_;
-  std::visit([](auto& e) { e->save_converged(); }, elements_);
+  visit_elements([](auto& e) { e.save_converged(); });
   for (auto& term : terms_) term->accept_step(state_);
 }
 
 void MixedModel::restore_converged() {
   state_ = converged_state_;
-  std::visit([](auto& e) { e->restore_converged(); }, elements_);
+  visit_elements([](auto& e) { e.restore_converged(); });
   for (auto& term : terms_) term->reject_step();
 }
 

@@ -184,7 +184,12 @@ class MixedModel {
   /// f(assembly) on the model's element assembly (either family).
   template <class F>
   decltype(auto) visit_elements(F&& f) const {
-    return std::visit([&](const auto& e) -> decltype(auto) { return f(*e); }, elements_);
+    return std::visit([&](const auto& e) -> decltype(auto) { return f(std::as_const(*e)); },
+                      elements_);
+  }
+  template <class F>
+  decltype(auto) visit_elements(F&& f) {
+    return std::visit([&](auto& e) -> decltype(auto) { return f(*e); }, elements_);
   }
 
   const Mesh& mesh_;
