@@ -66,8 +66,9 @@ void expect_readable(const fs::path& dir, bool allow_temporaries = false) {
   EXPECT_NO_THROW(read_pvd(dir / "solution.pvd"));
   for (const auto& entry : fs::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();
-    if (!allow_temporaries)
+    if (!allow_temporaries) {
       EXPECT_EQ(name.find(".tmp"), std::string::npos) << "temporary file left: " << name;
+    }
     if (entry.path().extension() == ".vtu") {
       std::ifstream in(entry.path(), std::ios::binary);
       const std::string text((std::istreambuf_iterator<char>(in)), {});
