@@ -1,7 +1,9 @@
 #include "physics/die_contact.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "physics/die_surface.hpp"
@@ -28,18 +30,31 @@ DieContact::DieContact(const Mesh& mesh, DieGeometry die, DieContactSettings set
       std::sort(t.begin(), t.end());
       if (seen.insert(t).second) all.push_back(t);
     }
-  for (const auto& [node, area] : tributary_areas(mesh_, faces_with_corners(mesh_, all))) {
+  const std::vector<SurfaceFace> faces = faces_with_corners(mesh_, all);
+  const std::map<int, double> contact = tributary_areas(mesh_, faces);
+  const bool sticking = settings_.contact == ContactKind::sticking;
+  // A sticking die also ties the corners of second-order faces, which carry no contact weight
+  // (D16) but a positive tie weight (D17); a frictionless die leaves them out.
+  for (const auto& [node, tie] : tie_areas(mesh_, faces)) {
+    const auto it = contact.find(node);
+    const double area = it == contact.end() ? 0.0 : it->second;
+    if (area == 0.0 && !sticking) continue;
     nodes_.push_back(node);
     areas_.push_back(area);
+    tie_areas_.push_back(sticking ? tie : area);
   }
   state_.resize(nodes_.size());
-  // Region nodes are glued where they are at t = 0: at their reference positions (D13).
+  // Region nodes, and the nodes of a sticking die that lie on it at t = 0, are glued where they
+  // are: at their reference positions (D13).
   const std::set<int> region_nodes = surface_nodes(faces_with_corners(mesh_, region));
-  for (size_t i = 0; i < nodes_.size(); ++i)
-    if (region_nodes.count(nodes_[i])) {
+  for (size_t i = 0; i < nodes_.size(); ++i) {
+    const Vec3d& X = mesh_.nodes[nodes_[i]];
+    if (region_nodes.count(nodes_[i]) ||
+        (sticking && std::abs(die_.gap(X, 0.0).g) <= settings_.touch_slack)) {
       state_[i].glued = true;
-      state_[i].anchor = mesh_.nodes[nodes_[i]] - die_.point(0.0);
+      state_[i].anchor = X - die_.point(0.0);
     }
+  }
   accepted_ = state_;
 }
 
@@ -55,14 +70,16 @@ DieContact::NodeResponse DieContact::respond(int i, double t, std::span<const do
   const double A = areas_[i], eps = settings_.penalty;
   const Vec3d xi = position(i, x);
   if (s.glued) {
-    // Tie to the die point: d = x - (c(t) + s), f = A (Lambda - eps d), K = A eps I   (D12)
+    // Tie to the die point: d = x - (c(t) + s), f = W (Lambda - eps d), K = W eps I   (D12, D17)
+    const double W = tie_areas_[i];
     const Vec3d d = xi - (die_.point(t) + s.anchor);
-    out.force = A * (s.glue_multiplier - eps * d);
-    if (with_tangent) out.K = A * eps * Mat3d::Identity();
+    out.force = W * (s.glue_multiplier - eps * d);
+    if (with_tangent) out.K = W * eps * Mat3d::Identity();
     out.active = true;
     out.violation = d.norm();
     return out;
   }
+  if (A == 0.0) return out;  // a corner of a second-order face: tied once glued, else free (D16)
   const DieGap gap = die_.gap(xi, t);
   out.violation = std::max(0.0, -gap.g);
   // lambda_hat = max(0, lambda - eps g), f = A lambda_hat n   (D6)
@@ -102,7 +119,7 @@ bool DieContact::update_multipliers(std::span<const double> x) {
     if (s.glued) {
       // Lambda <- Lambda - eps d   (D14)
       s.glue_multiplier -= eps * (xi - (die_.point(time_) + s.anchor));
-    } else {
+    } else if (areas_[i] > 0.0) {
       // lambda <- max(0, lambda - eps g)   (D9)
       s.multiplier = std::max(0.0, s.multiplier - eps * die_.gap(xi, time_).g);
     }
@@ -118,13 +135,20 @@ void DieContact::accept_step(std::span<const double> x) {
       if (s.glued) continue;
       const Vec3d xi = position(static_cast<int>(i), x);
       const DieGap gap = die_.gap(xi, time_);
-      const double lambda_hat = std::max(0.0, s.multiplier - eps * gap.g);
+      const double lambda_hat = areas_[i] > 0.0 ? std::max(0.0, s.multiplier - eps * gap.g) : 0.0;
       if (gap.g > settings_.touch_slack && lambda_hat <= 0.0) continue;
-      // Glue to the closest die point x - g n, with Lambda = (lambda_hat + eps g) n so the force
-      // of the node does not jump (D13).
       s.glued = true;
+      if (areas_[i] == 0.0) {
+        // A corner of a second-order face, which may lie inside the die by the sagitta of its
+        // faces (D16): glued where it is, without force (D17).
+        s.anchor = xi - die_.point(time_);
+        s.glue_multiplier = Vec3d::Zero();
+        continue;
+      }
+      // Glue to the closest die point x - g n, with Lambda = ((A / W) lambda_hat + eps g) n so
+      // the force of the node does not jump (D13, D17).
       s.anchor = xi - gap.g * gap.n - die_.point(time_);
-      s.glue_multiplier = (lambda_hat + eps * gap.g) * gap.n;
+      s.glue_multiplier = (areas_[i] / tie_areas_[i] * lambda_hat + eps * gap.g) * gap.n;
     }
   }
   accepted_ = state_;
@@ -194,14 +218,25 @@ int DieContact::n_glued() const {
       std::count_if(state_.begin(), state_.end(), [](const NodeState& s) { return s.glued; }));
 }
 
-bool DieContact::glued(int node) const {
+std::optional<size_t> DieContact::index_of(int node) const {
   const auto it = std::lower_bound(nodes_.begin(), nodes_.end(), node);
-  return it != nodes_.end() && *it == node && state_[it - nodes_.begin()].glued;
+  if (it == nodes_.end() || *it != node) return std::nullopt;
+  return static_cast<size_t>(it - nodes_.begin());
+}
+
+bool DieContact::glued(int node) const {
+  const auto i = index_of(node);
+  return i && state_[*i].glued;
 }
 
 double DieContact::area(int node) const {
-  const auto it = std::lower_bound(nodes_.begin(), nodes_.end(), node);
-  return it != nodes_.end() && *it == node ? areas_[it - nodes_.begin()] : 0.0;
+  const auto i = index_of(node);
+  return i ? areas_[*i] : 0.0;
+}
+
+double DieContact::tie_area(int node) const {
+  const auto i = index_of(node);
+  return i ? tie_areas_[*i] : 0.0;
 }
 
 double default_die_penalty(double shear_modulus, double element_size) {

@@ -5,6 +5,7 @@
 /// area, so forces do not depend on the mesh (docs/theory/contact.md).
 #include <array>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -21,9 +22,10 @@ class DieContact : public ModelTerm {
  public:
   /// Contact of the nodes of `candidates` (faces named by their corners, reference tributary areas
   /// D5; on a second-order mesh the edge nodes of the faces with the consistent weights of D16,
-  /// and no corner) with `die`; sticking only: the nodes of `region` are glued from the start at
-  /// their reference positions (their area counts the faces of both lists, each once). Borrows
-  /// `mesh`.
+  /// and no corner) with `die`. Sticking only: glue is weighted by the tie areas of D17, which
+  /// include the corners of second-order faces; the nodes of `region`, and the nodes that lie on
+  /// the die at t = 0 (|g| <= touch_slack), are glued from the start at their reference positions
+  /// (areas count the faces of both lists, each once). Borrows `mesh`.
   /// Throws plisse::Error when penalty or tolerance is not > 0, or frictionless with a region.
   DieContact(const Mesh& mesh, DieGeometry die, DieContactSettings settings,
              const std::vector<std::array<int, 3>>& candidates,
@@ -62,6 +64,9 @@ class DieContact : public ModelTerm {
   /// Tributary area of `node` [mm^2]; 0 for a node not on the contact surface (or a corner of a
   /// second-order one, D16).
   double area(int node) const;
+  /// Tie area of `node` [mm^2] (D17): the weight of its glue; 0 for a node that the die cannot
+  /// glue (not on the surface, or a corner of a second-order face of a frictionless die).
+  double tie_area(int node) const;
 
  private:
   /// Per node: what the augmented Lagrangian carries from step to step.
@@ -80,12 +85,15 @@ class DieContact : public ModelTerm {
   };
   NodeResponse respond(int i, double t, std::span<const double> x, bool with_tangent) const;
   Vec3d position(int i, std::span<const double> x) const;
+  /// Position of `node` in nodes_, if it is one of the die's nodes.
+  std::optional<size_t> index_of(int node) const;
 
   const Mesh& mesh_;
   DieGeometry die_;
   DieContactSettings settings_;
-  std::vector<int> nodes_;     ///< mesh node of each contact node, increasing
-  std::vector<double> areas_;  ///< reference tributary area [mm^2]
+  std::vector<int> nodes_;         ///< mesh node of each contact node, increasing
+  std::vector<double> areas_;      ///< reference tributary area [mm^2] (D5, D16)
+  std::vector<double> tie_areas_;  ///< reference tie area [mm^2] (D17)
   std::vector<NodeState> state_, accepted_;
   double time_ = 0.0;  ///< time of the last assemble (updates and gluing happen there)
 };

@@ -147,6 +147,22 @@ TEST(DistributedRun, TaylorHoodBalloonIsTheSameOnOneAndTwoRanks) {
   EXPECT_LT(field_difference(one / (last + ".vtu"), two / (last + ".pvtu"), "pressure"), 1e-6);
 }
 
+// A pressurised Taylor-Hood sphere resting with its pole, a corner node, on a sticking floor: the
+// pole is tied from t = 0 (contact.md, D17), so the rigid motion normal to the floor is not left
+// to the linear solver and both runs follow the same path.
+TEST(DistributedRun, TaylorHoodSphereOnAStickingFloorIsTheSameOnOneAndTwoRanks) {
+  const std::string plates =
+      std::string(PLISSE_SOURCE_DIR) + "/tests/verification/contact/sphere-between-plates.yaml";
+  const std::string args = " --set element=taylor-hood";
+  const fs::path one = run("plates-taylor-hood", plates, args, 1);
+  const fs::path two = run("plates-taylor-hood", plates, args, 2);
+  expect_same_history(one, two, 1e-6);
+  const nlohmann::json s1 = read_json_file(one / "summary.json"),
+                       s2 = read_json_file(two / "summary.json");
+  for (const char* key : {"steps", "newton_iterations", "free_dofs", "completed"})
+    EXPECT_EQ(s1[key], s2[key]) << key;
+}
+
 TEST(DistributedRun, BucklingModesAndBranchSwitchingAreTheSameOnTwoRanks) {
   const std::string args = " --set solver.stability.branch_switch=true";
   const fs::path one = run("strip", kStrip, args, 1);

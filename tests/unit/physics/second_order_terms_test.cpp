@@ -494,5 +494,105 @@ TEST(SecondOrderDie, TributaryAreasSumToTheFaceArea) {
   EXPECT_NEAR(shell_sum, exact, 1e-4 * exact);
 }
 
+TEST(SecondOrderDie, TieAreasArePositiveOnEveryNodeAndSumToTheFaceArea) {
+  // One flat face: the diagonal of the 6-node mass matrix, 6 : 32, scaled to the area (D17).
+  const Mesh mesh = quadratic_cube();
+  const auto top = outward_faces(mesh, "top");
+  const auto one = tie_areas(mesh, {top.front()});
+  const Vec3d& x0 = mesh.nodes[top.front().nodes[0]];
+  const double area =
+      0.5 *
+      (mesh.nodes[top.front().nodes[1]] - x0).cross(mesh.nodes[top.front().nodes[2]] - x0).norm();
+  for (int a = 0; a < 6; ++a)
+    EXPECT_NEAR(one.at(top.front().nodes[a]), area * (a < 3 ? 1.0 / 19.0 : 16.0 / 57.0), 1e-15)
+        << "node " << a;
+  double sum = 0.0;
+  for (const auto& [node, w] : tie_areas(mesh, top)) {
+    EXPECT_GT(w, 0.0);
+    sum += w;
+  }
+  EXPECT_NEAR(sum, 4.0, 1e-14);
+  // The curved octant: the same total as the tributary areas (both are the face areas).
+  const Mesh shell = quadratic_shell(Symmetry::octant, 2.0);
+  const auto inner = outward_faces(shell, "inner");
+  double tie_sum = 0.0, tributary_sum = 0.0;
+  for (const auto& [node, w] : tie_areas(shell, inner)) {
+    EXPECT_GT(w, 0.0);
+    tie_sum += w;
+  }
+  for (const auto& [node, w] : tributary_areas(shell, inner)) tributary_sum += w;
+  EXPECT_NEAR(tie_sum, tributary_sum, 1e-12 * tributary_sum);
+}
+
+DieContactSettings sticking_settings() {
+  DieContactSettings s = die_settings();
+  s.contact = ContactKind::sticking;
+  s.touch_slack = 1e-12;
+  return s;
+}
+
+TEST(SecondOrderDie, StickingDieTiesTheCornersThatTouchItAtTheStart) {
+  // A plane lying on the top face at t = 0 glues all its nodes, corners included (D17); moving
+  // the die by `shift` drags the face with eps * area * shift, and every node takes its share.
+  const Mesh mesh = quadratic_cube();
+  const Vec3d shift(0.1, -0.05, 0.02);
+  DieContact die(mesh,
+                 DieGeometry(DieShape::plane, Vec3d(0, 0, 2.0), Vec3d(0, 0, -1), Vec3d::UnitZ(),
+                             0.0, shift, Ramp{0.0, 1.0}),
+                 sticking_settings(), outward_triangles(mesh, "top"));
+  std::set<int> nodes;
+  for (const auto& f : outward_faces(mesh, "top")) nodes.insert(f.nodes.begin(), f.nodes.end());
+  EXPECT_EQ(die.n_glued(), static_cast<int>(nodes.size()));  // 25: 9 corners, 16 edge nodes
+  for (int v : nodes) {
+    EXPECT_TRUE(die.glued(v));
+    EXPECT_GT(die.tie_area(v), 0.0);
+  }
+  const std::vector<double> x(kValuesPerNode * mesh.n_nodes(), 0.0);
+  EXPECT_TRUE(die.force_on_die(1.0, x).isApprox(-40.0 * 4.0 * shift, 1e-14));
+  EXPECT_NEAR(die.violation(1.0, x), shift.norm(), 1e-15);
+  // The tangent of the ties against central differences of the residual (linear in x: exact).
+  const std::vector<double> y = test::random_state(static_cast<int>(x.size()), 7, 0.05);
+  test::DenseSink sink(static_cast<int>(y.size()));
+  std::vector<double> r(y.size(), 0.0);
+  die.assemble(1.0, y, r, &sink);
+  double worst = 0.0;
+  for (int v : nodes)
+    for (int c = 0; c < 3; ++c) {
+      const int j = node_dof(v, c);
+      std::vector<double> plus = y, minus = y;
+      plus[j] += 1e-4;
+      minus[j] -= 1e-4;
+      const Eigen::VectorXd column =
+          (test::term_residual(die, 1.0, plus) - test::term_residual(die, 1.0, minus)) / 2e-4;
+      worst = std::max(worst, (column - sink.K.col(j)).norm() / sink.K.col(j).norm());
+    }
+  EXPECT_LT(worst, 1e-10);
+}
+
+TEST(SecondOrderDie, CornerThatDipsIntoAStickingDieIsGluedWhereItIsWithoutAForceJump) {
+  // A plane 0.01 below the top: every node penetrates; only the edge nodes carry the contact
+  // pressure (D16). At the accepted step the corners are glued where they are, with no force,
+  // and the edge nodes keep their force (D13): the die force does not change.
+  const Mesh mesh = quadratic_cube();
+  DieContact die(mesh,
+                 DieGeometry(DieShape::plane, Vec3d(0, 0, 1.99), Vec3d(0, 0, -1), Vec3d::UnitZ(),
+                             0.0, Vec3d::Zero(), Ramp{0.0, 1.0}),
+                 sticking_settings(), outward_triangles(mesh, "top"));
+  EXPECT_EQ(die.n_glued(), 0);
+  const std::vector<double> x(kValuesPerNode * mesh.n_nodes(), 0.0);
+  std::vector<double> r(x.size(), 0.0);
+  die.assemble(0.5, x, r, nullptr);
+  EXPECT_EQ(die.n_contact_nodes(0.5, x), 16);  // the edge nodes
+  const Vec3d sliding = die.force_on_die(0.5, x);
+  EXPECT_NEAR(sliding.z(), 40.0 * 0.01 * 4.0, 1e-13);
+  die.accept_step(x);
+  EXPECT_EQ(die.n_glued(), 25);
+  EXPECT_TRUE(die.force_on_die(0.5, x).isApprox(sliding, 1e-14));
+  // The edge nodes are glued on the die surface (0.01 away), the corners where they are.
+  EXPECT_NEAR(die.violation(0.5, x), 0.01, 1e-15);
+  for (const auto& f : outward_faces(mesh, "top"))
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(die.area(f.nodes[c]), 0.0);
+}
+
 }  // namespace
 }  // namespace plisse
