@@ -9,6 +9,7 @@
 
 #include "app/commands.hpp"
 #include "core/error.hpp"
+#include "element/element_family.hpp"
 #include "mesh/generate.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "mesh/quality.hpp"
@@ -97,6 +98,7 @@ void add_mesh_command(CLI::App& app) {
     auto* sub = mesh->add_subcommand(kind.name, kind.help);
     auto cmd = std::make_shared<MeshCommand>();
     cmd->spec.kind = kind.name;
+    cmd->spec.order = mesh_order_of(kDefaultElement);  // meshes for a case's default element
     for (const MeshOption& option : kind.options) {
       const std::string flag = "--" + dashed(option.key);
       const std::string unit = option.unit == "-" ? "" : " [" + option.unit + "]";

@@ -126,8 +126,11 @@ std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh) {
       rule =
           "the mesh has linear (4-node) tetrahedra; the Taylor-Hood element needs "
           "second-order (10-node) ones (" +
-          std::string(generated ? "remove `mesh.order` or set it to 2"
-                                : "export the mesh with order 2, e.g. gmsh -3 -order 2") +
+          std::string(generated
+                          ? "remove `mesh.order` or set it to 2, or set `element: mini`"
+                          : "export the mesh with order 2, e.g. gmsh -3 -order 2 or plisse mesh "
+                            "... --order 2, or set `element: mini` to run it with linear "
+                            "elements") +
           ")";
     const auto order = c.mesh.option_places.find("order");
     out.emplace_back(!generated                            ? c.mesh.file_place

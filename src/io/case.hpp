@@ -156,7 +156,7 @@ struct Case {
   std::string title;      ///< optional one-line description
   /// The element of every tetrahedron; Taylor-Hood needs a second-order mesh (generated ones are
   /// made second-order for it).
-  ElementFamily element = ElementFamily::mini;
+  ElementFamily element = kDefaultElement;
   MeshSection mesh;
   MaterialSection material;
   std::vector<BoundaryCondition> boundary;

@@ -70,7 +70,8 @@ const std::vector<MeshKind>& mesh_kinds() {
     const auto layers_help = "tetrahedra through the thickness (exactly)";
     const MeshOption order =
         integer_option("order", &Spec::order, Range::closed(1, 2),
-                       "element order: 1 (4-node tetrahedra) or 2 (10-node, one node per edge)");
+                       "element order: 1 (4-node tetrahedra) or 2 (10-node, one node per edge); "
+                       "in a case file the order of its `element` when not given");
     std::vector<MeshKind> k;
     k.push_back({"cube",
                  "cube [0, edge]^3, structured (6 tetrahedra per cell); tags left/right (x), "

@@ -184,13 +184,17 @@ TEST(DistributedRun, BucklingModesAndBranchSwitchingAreTheSameOnTwoRanks) {
   const std::string file1 = i1[0]["file"], file2 = i2[0]["file"];
   EXPECT_EQ(fs::path(file2).extension(), ".pvtu");
   EXPECT_LT(field_difference(one / file1, two / file2, "mode_1"), 1e-6);
-  // The partition is deterministic: a second run on 2 ranks writes the same history, byte for byte.
+  // The partition is deterministic: a second run on 2 ranks cuts the mesh into the same pieces and
+  // follows the same path. Not byte for byte: MUMPS assembles the contributions of the two ranks
+  // in the order they arrive, which changes the last bits of a factorisation from run to run
+  // (seen here as 1e-16 relative differences after a dozen steps).
   const fs::path again = run("strip-again", kStrip, args, 2);
-  std::ifstream h2(two / "history.csv"), h3(again / "history.csv");
-  const std::string first((std::istreambuf_iterator<char>(h2)), std::istreambuf_iterator<char>());
-  const std::string second((std::istreambuf_iterator<char>(h3)), std::istreambuf_iterator<char>());
-  EXPECT_FALSE(first.empty());
-  EXPECT_EQ(first, second);
+  expect_same_history(two, again, 1e-9);
+  const std::string last_piece = fs::path(file2).stem().string();
+  for (const char* piece : {"_p0.vtu", "_p1.vtu"})
+    EXPECT_EQ(read_vtu_point_count(two / (last_piece + piece)),
+              read_vtu_point_count(again / (last_piece + piece)))
+        << piece;
   // A mode imperfection read from the distributed run's .pvtu seeds the same run as one read from
   // the one-rank run's .vtu.
   const auto seeded = [&](const fs::path& source) {

@@ -23,6 +23,10 @@ TEST(ModelBuilder, GeneratedMeshTakesTheElementsOrder) {
     EXPECT_TRUE(unsupported_features(c, mesh).empty()) << element;
     EXPECT_EQ(build_model_parts(c, mesh).element, c.element);
   }
+  // Without the key: the Taylor-Hood element on a second-order mesh (docs/case-file.md).
+  const Case plain = parse_case_string(kCube, "c.yaml");
+  EXPECT_EQ(plain.element, ElementFamily::taylor_hood);
+  EXPECT_EQ(load_case_mesh(plain).order(), 2);
 }
 
 TEST(ModelBuilder, ExplicitMeshOrderAgainstTheElementIsRefusedAtThatKey) {
@@ -41,6 +45,7 @@ TEST(ModelBuilder, ExplicitMeshOrderAgainstTheElementIsRefusedAtThatKey) {
   EXPECT_NE(errors[0].rule().find("remove `mesh.order`"), std::string::npos);
 
   const Case mini = parse_case_string(
+      "element: mini\n"
       "mesh: {generate: cube, edge: 2.0, divisions: 1, order: 2}\n"
       "material: {model: neo-hookean, c1: 0.2}\n",
       "c.yaml");

@@ -265,6 +265,7 @@ TEST(DieContact, TributaryAreasAddUpToTheSurfaceArea) {
 
 TEST(ModelBuilder, DefaultDiePenaltyIsTenShearModuliPerElementSizeAndSymmetryCutsAreNoContact) {
   const std::string text = R"(
+element: mini
 mesh: {generate: cube, edge: 2.0, divisions: 2}
 material: {model: neo-hookean, c1: 0.5}
 boundary:

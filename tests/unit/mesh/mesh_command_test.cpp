@@ -26,7 +26,7 @@ TEST(MeshCommand, WritesShellWithSummary) {
   const std::string path = (test::scratch_dir("command") / "s.msh").string();
   const Result r = run_plisse(
       "mesh spherical-shell --inner-radius 10 --thickness 1 --layers 2 --element-size 2.5 "
-      "--symmetry octant "
+      "--symmetry octant --order 1 "
       "--format 2 --binary -o " +
       path);
   ASSERT_EQ(r.status, 0) << r.output;
@@ -121,7 +121,7 @@ TEST(MeshCommand, HelpListsOptionsWithUnitsAndDefaults) {
   EXPECT_EQ(r.status, 0) << r.output;
   for (const char* text :
        {"--radius FLOAT=50", "--height FLOAT=20", "--thickness", "[mm]", "--layers INT=3",
-        "--symmetry TEXT=full", "--order INT=1", "--format INT=4", "--binary"})
+        "--symmetry TEXT=full", "--order INT=2", "--format INT=4", "--binary"})
     EXPECT_NE(r.output.find(text), std::string::npos) << text << "\n" << r.output;
 }
 
