@@ -1,6 +1,6 @@
 """Parameter studies: run one case for several values of a key and write a Markdown report.
 
-Usage: scripts/study STUDY.yaml [--runs DIR] [--docs DIR] [--reuse] [--only VALUE...]
+Usage: scripts/study STUDY.yaml [--runs DIR] [--docs DIR] [--reuse | --report-only]
 
 A study file names a case, the key to vary and its values (docs/studies/README.md):
 
@@ -9,10 +9,13 @@ A study file names a case, the key to vary and its values (docs/studies/README.m
     case: ../examples/sphere-indentation.yaml   # relative to the study file
     set: [solver.stability.check=true]          # overrides for every run (optional)
     vary: {key: mesh.layers, values: [1, 2, 3, 4], label: tetrahedra through the wall}
+    convergence: {label: "elements of 0.5 mm", set: [mesh.element_size=0.5]}   # optional
     discussion: |
       Markdown written under the table.
 
-Each run is `build/bin/plisse run CASE -o RUNS/<name>/<key>=<value> --set key=value ...`; the
+Each run is `build/bin/plisse run CASE -o RUNS/<name>/<key>=<value> --set key=value ...`; with
+`convergence`, each value runs a second time with its overrides added (a finer mesh), into
+`RUNS/<name>/<key>=<value>+fine`, and the table gets that run's wrinkle count and amplitude. The
 report reads each run's summary.json (wrinkle table, steps, times), history.csv and last VTU
 (deformed outer surface coloured by its normal deviation from the axisymmetric mean shape).
 A run that fails (exit status 1) is reported as such with its message; bad input (2) stops.
@@ -52,7 +55,7 @@ def load_study(path):
         fail(f"{path}: {e}")
     if not isinstance(s, dict):
         fail(f"{path}: expected a map (name, title, case, vary, ...)")
-    allowed = {"name", "title", "case", "set", "vary", "discussion", "intro"}
+    allowed = {"name", "title", "case", "set", "vary", "convergence", "discussion", "intro"}
     for key in s:
         if key not in allowed:
             fail(f"{path}: key '{key}': unknown key; allowed: {', '.join(sorted(allowed))}")
@@ -63,6 +66,10 @@ def load_study(path):
     if not isinstance(vary, dict) or "key" not in vary or not isinstance(vary.get("values"), list) \
             or not vary["values"]:
         fail(f"{path}: key 'vary': needs 'key' and a non-empty list 'values'")
+    conv = s.get("convergence")
+    if conv is not None and (not isinstance(conv, dict) or not isinstance(conv.get("set"), list)
+                             or not conv["set"] or set(conv) - {"label", "set"}):
+        fail(f"{path}: key 'convergence': needs a non-empty list 'set' (and optionally 'label')")
     s["case"] = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(path)), s["case"]))
     if not os.path.isfile(s["case"]):
         fail(f"{path}: key 'case': no such file {s['case']}")
@@ -76,12 +83,14 @@ def yaml_value(v):
         else str(v)
 
 
-def run_one(study, value, run_dir, reuse):
+def run_one(study, value, run_dir, reuse, extra=(), report_only=False):
     summary = os.path.join(run_dir, "summary.json")
     if reuse and os.path.isfile(summary):
         return {"status": "reused", "seconds": None}
+    if report_only:
+        return {"status": "not run", "seconds": None, "message": "not run"}
     cmd = [os.path.join(ROOT, "build", "bin", "plisse"), "run", study["case"], "-o", run_dir]
-    for o in study["set"] + [f"{study['vary']['key']}={yaml_value(value)}"]:
+    for o in study["set"] + [f"{study['vary']['key']}={yaml_value(value)}"] + list(extra):
         cmd += ["--set", o]
     print("scripts/study: " + " ".join(cmd), flush=True)
     t0 = time.time()
@@ -95,6 +104,20 @@ def run_one(study, value, run_dir, reuse):
     last = [l for l in proc.stdout.splitlines() if l.strip()]
     return {"status": "ok" if proc.returncode == 0 else "failed", "seconds": seconds,
             "message": last[-1] if last else ""}
+
+
+def read_summary(run_dir):
+    path = os.path.join(run_dir, "summary.json")
+    if not os.path.isfile(path):
+        return {}
+    with open(path) as f:
+        return json.load(f)
+
+
+def largest_ring(summary):
+    """The ring of largest amplitude in a run's summary, or None."""
+    rings = (summary.get("wrinkles") or {}).get("rings", [])
+    return max(rings, key=lambda g: g.get("amplitude", 0.0), default=None)
 
 
 def read_history(run_dir):
@@ -165,6 +188,8 @@ def surface_figure(vtu, case_wrinkles, path, title):
     mesh = meshio.read(vtu)
     X = mesh.points
     tets = mesh.cells_dict.get("tetra")
+    if tets is None and "tetra10" in mesh.cells_dict:
+        tets = mesh.cells_dict["tetra10"][:, :4]  # corners: the figure draws flat triangles
     if tets is None or "displacement" not in mesh.point_data:
         return False
     x = X + mesh.point_data["displacement"]
@@ -211,12 +236,31 @@ def fmt(v, spec="{:.3g}"):
     return spec.format(v) if isinstance(v, float) else str(v)
 
 
+def fine_columns(result, label):
+    """The finer-mesh columns of a table row: largest amplitude and its count (with the time the
+    finer run stopped at, when it stopped early); none without a convergence run."""
+    fine = result.get("fine")
+    if fine is None:
+        return []
+    s = fine["summary"]
+    if not s:
+        return [fine["info"].get("message") or "failed", "–"]
+    best = largest_ring(s)
+    amplitude = fmt((s.get("wrinkles") or {}).get("max_amplitude"))
+    if not s.get("completed"):
+        amplitude += f" (stopped at t = {fmt(s.get('final_time'), '{:.4g}')})"
+    return [amplitude, fmt(best.get("count") if best else None)]
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("study")
     ap.add_argument("--runs", default=os.path.join(ROOT, "runs", "studies"))
     ap.add_argument("--docs", default=os.path.join(ROOT, "docs", "studies"))
     ap.add_argument("--reuse", action="store_true", help="keep runs that already have summary.json")
+    ap.add_argument("--report-only", action="store_true",
+                    help="run nothing: write the report from the runs already there (a run "
+                         "without summary.json is reported as not run)")
     args = ap.parse_args()
     study = load_study(args.study)
     name, key = study["name"], study["vary"]["key"]
@@ -228,11 +272,15 @@ def main():
     for value in study["vary"]["values"]:
         run_dir = os.path.join(args.runs, name, f"{key}={yaml_value(value)}")
         os.makedirs(os.path.dirname(run_dir), exist_ok=True)
-        info = run_one(study, value, run_dir, args.reuse)
-        summary = {}
-        if os.path.isfile(os.path.join(run_dir, "summary.json")):
-            with open(os.path.join(run_dir, "summary.json")) as f:
-                summary = json.load(f)
+        info = run_one(study, value, run_dir, args.reuse or args.report_only,
+                       report_only=args.report_only)
+        summary = read_summary(run_dir)
+        fine = None
+        if study.get("convergence"):
+            fine_dir = run_dir + "+fine"
+            fine_info = run_one(study, value, fine_dir, args.reuse or args.report_only,
+                                study["convergence"]["set"], args.report_only)
+            fine = {"info": fine_info, "summary": read_summary(fine_dir)}
         history = read_history(run_dir)
         figure = None
         vtu = last_vtu(run_dir)
@@ -242,7 +290,7 @@ def main():
                                   f"{label} = {value}"):
                 figure = None
         results.append({"value": value, "info": info, "summary": summary, "history": history,
-                        "figure": figure, "run_dir": run_dir})
+                        "figure": figure, "run_dir": run_dir, "fine": fine})
 
     # Amplitude and count against the parameter.
     xs = [r["value"] for r in results]
@@ -250,8 +298,7 @@ def main():
     amp = [((r["summary"].get("wrinkles") or {}).get("max_amplitude", np.nan)) for r in results]
     count = []
     for r in results:
-        rings = (r["summary"].get("wrinkles") or {}).get("rings", [])
-        best = max(rings, key=lambda g: g.get("amplitude", 0.0), default=None)
+        best = largest_ring(r["summary"])
         count.append(best["count"] if best else np.nan)
     fig, ax1 = plt.subplots(figsize=(6, 3.6))
     pos = xs if numeric else list(range(len(xs)))
@@ -262,6 +309,13 @@ def main():
         ax1.set_xscale("log")
     ax2 = ax1.twinx()
     ax2.plot(pos, count, "s--", color="tab:blue", label="count")
+    if study.get("convergence"):
+        fine = [(r["fine"] or {}).get("summary") or {} for r in results]
+        ax1.plot(pos, [(f.get("wrinkles") or {}).get("max_amplitude", np.nan) for f in fine], "o:",
+                 color="tab:red", markerfacecolor="none", label="max amplitude, finer mesh")
+        ax2.plot(pos, [(largest_ring(f) or {}).get("count", np.nan) for f in fine], "s:",
+                 color="tab:blue", markerfacecolor="none", label="count, finer mesh")
+        ax1.legend(loc="upper left", fontsize=8, handles=ax1.get_lines() + ax2.get_lines())
     ax2.set_ylabel("wrinkle count (ring of max amplitude)", color="tab:blue")
     if not numeric:
         ax1.set_xticks(pos, [str(v) for v in xs])
@@ -278,23 +332,30 @@ def main():
              ".", ""]
     if study.get("intro"):
         lines += [study["intro"].strip(), ""]
+    conv = study.get("convergence")
+    conv_label = (conv.get("label") or ", ".join(conv["set"])) if conv else None
+    if conv:
+        lines += [f"The last two columns repeat each run on the finer mesh ({conv_label}: " +
+                  ", ".join(f"`--set {o}`" for o in conv["set"]) +
+                  "): the largest ring amplitude and its wave count there.", ""]
     lines += [f"| {label} | outcome | steps | Newton its | unknowns | wall time [s] | stable at every step |"
               " instability at t | wrinkled | max amplitude [mm] | count | wavelength [mm] |"
-              " tension field: taut / wrinkled / slack elements |",
-              "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+              " tension field: taut / wrinkled / slack elements |" +
+              (" max amplitude, finer mesh [mm] | count, finer mesh |" if conv else ""),
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|" + ("---|---|" if conv else "")]
     failures = []
     for r, a, m in zip(results, amp, count):
         s, h = r["summary"], r["history"]
         w = s.get("wrinkles") or {}
-        rings = w.get("rings", [])
-        best = max(rings, key=lambda g: g.get("amplitude", 0.0), default=None)
+        best = largest_ring(s)
         if s.get("completed"):
             outcome = "completed"
         elif s:
             outcome = f"stopped at t = {fmt(s.get('final_time'), '{:.4g}')} (below)"
             failures.append(f"- {label} = {r['value']}: {s.get('failure', '')}")
         else:
-            outcome = "failed: " + r["info"].get("message", "")
+            outcome = "not run" if r["info"]["status"] == "not run" else \
+                "failed: " + r["info"].get("message", "")
         stable = h.get("stable")
         first_unstable = None
         if stable is not None and len(stable):
@@ -309,7 +370,13 @@ def main():
             fmt(int(m) if isinstance(m, (int, float)) and not math.isnan(m) else None),
             fmt(best.get("wavelength") if best else None),
             " / ".join(str((w.get("tension_field") or {}).get(k, "–"))
-                       for k in ("taut", "wrinkled", "slack"))]) + " |")
+                       for k in ("taut", "wrinkled", "slack"))] + fine_columns(r, label)) + " |")
+    for r in results:
+        fs = (r["fine"] or {}).get("summary")
+        if r["fine"] is not None and r["fine"]["info"]["status"] != "not run" \
+                and not fs.get("completed"):
+            failures.append(f"- {label} = {r['value']}, finer mesh: " +
+                            (fs.get("failure", "") if fs else r["fine"]["info"].get("message", "")))
     if failures:
         lines += ["", "Runs that stopped:", ""] + failures
     lines += ["", f"![amplitude and count against {label}]({trend})", ""]

@@ -160,10 +160,16 @@ void log_header(RunLog& log, const PreparedRun& run, const fs::path& directory,
 std::string progress_line(const StepInfo& info, bool wrinkled, double elapsed) {
   char line[320];
   char stability[96] = "";
-  if (info.negative_pivots >= 0)
-    std::snprintf(stability, sizeof stability,
-                  info.stable ? "  stable" : "  UNSTABLE (%d/%d neg. pivots)", info.negative_pivots,
-                  info.expected_negative_pivots);
+  // Unstable: more negative pivots than a stable state has; singular: as many, but a null pivot
+  // (a critical point, or a direction without stiffness).
+  if (info.negative_pivots >= 0 && info.stable)
+    std::snprintf(stability, sizeof stability, "  stable");
+  else if (info.negative_pivots >= 0 && info.negative_pivots != info.expected_negative_pivots)
+    std::snprintf(stability, sizeof stability, "  UNSTABLE (%d/%d neg. pivots)",
+                  info.negative_pivots, info.expected_negative_pivots);
+  else if (info.negative_pivots >= 0)
+    std::snprintf(stability, sizeof stability, "  SINGULAR (%d zero pivot%s)", info.zero_pivots,
+                  info.zero_pivots == 1 ? "" : "s");
   std::snprintf(line, sizeof line,
                 "step %4d  t %.5g  load %.4f  dt %.3g  newton %2d  |R| %.3e%s%s%s  elapsed %.1fs",
                 info.step, info.time, info.load_factor, info.dt, info.newton_iterations,
