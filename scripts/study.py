@@ -280,7 +280,13 @@ def main():
             fine_dir = run_dir + "+fine"
             fine_info = run_one(study, value, fine_dir, args.reuse or args.report_only,
                                 study["convergence"]["set"], args.report_only)
-            fine = {"info": fine_info, "summary": read_summary(fine_dir)}
+            fine = {"info": fine_info, "summary": read_summary(fine_dir), "figure": None}
+            fine_vtu = last_vtu(fine_dir)
+            if fine_vtu:
+                figure_fine = f"{name}/surface_{yaml_value(value)}_fine.png"
+                if surface_figure(fine_vtu, wrinkle_settings, os.path.join(args.docs, figure_fine),
+                                  f"{label} = {value}, {study['convergence'].get('label', 'finer mesh')}"):
+                    fine["figure"] = figure_fine
         history = read_history(run_dir)
         figure = None
         vtu = last_vtu(run_dir)
@@ -315,7 +321,7 @@ def main():
                  color="tab:red", markerfacecolor="none", label="max amplitude, finer mesh")
         ax2.plot(pos, [(largest_ring(f) or {}).get("count", np.nan) for f in fine], "s:",
                  color="tab:blue", markerfacecolor="none", label="count, finer mesh")
-        ax1.legend(loc="upper left", fontsize=8, handles=ax1.get_lines() + ax2.get_lines())
+        ax1.legend(loc="best", fontsize=8, handles=ax1.get_lines() + ax2.get_lines())
     ax2.set_ylabel("wrinkle count (ring of max amplitude)", color="tab:blue")
     if not numeric:
         ax1.set_xticks(pos, [str(v) for v in xs])
@@ -356,8 +362,12 @@ def main():
         else:
             outcome = "not run" if r["info"]["status"] == "not run" else \
                 "failed: " + r["info"].get("message", "")
+        # Unstable: more negative pivots than a stable state has (a state with the expected count
+        # and a null pivot is singular, not unstable; the log says SINGULAR).
         stable = h.get("stable")
         first_unstable = None
+        if "negative_pivots" in h and "expected_negative_pivots" in h and len(h["time"]):
+            stable = (h["negative_pivots"] <= h["expected_negative_pivots"]).astype(float)
         if stable is not None and len(stable):
             bad = np.where(stable < 0.5)[0]
             first_unstable = h["time"][bad[0]] if len(bad) else None
@@ -397,6 +407,8 @@ def main():
     for r in results:
         if r["figure"]:
             lines += [f"![{label} = {r['value']}]({r['figure']})", ""]
+        if r["fine"] and r["fine"]["figure"]:
+            lines += [f"![{label} = {r['value']}, finer mesh]({r['fine']['figure']})", ""]
     if study.get("discussion"):
         lines += ["## Discussion", "", study["discussion"].strip(), ""]
     report = os.path.join(args.docs, f"{name}.md")
