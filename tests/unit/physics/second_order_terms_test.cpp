@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <numbers>
 #include <set>
 
@@ -467,6 +468,16 @@ TEST(SecondOrderDie, UniformPressOnAFlatFaceGivesTheConsistentPressureLoad) {
   EXPECT_NEAR(history[2], 40.0 * depth * 4.0, 1e-13);  // force on the die: +z, eps depth A
 }
 
+/// The sum of per-node weights, each expected positive.
+double sum_of_positive(const std::map<int, double>& weights) {
+  double sum = 0.0;
+  for (const auto& [node, w] : weights) {
+    EXPECT_GT(w, 0.0) << "node " << node;
+    sum += w;
+  }
+  return sum;
+}
+
 TEST(SecondOrderDie, TributaryAreasSumToTheFaceArea) {
   // Flat face with edge nodes moved within its plane: the Jacobian varies, the area does not.
   Mesh mesh = quadratic_cube();
@@ -477,12 +488,7 @@ TEST(SecondOrderDie, TributaryAreasSumToTheFaceArea) {
       if (X.x() > 0.0 && X.x() < 2.0 && X.y() > 0.0 && X.y() < 2.0)
         X += Vec3d(0.04 * std::sin(7.0 * X.y()), -0.03 * std::cos(5.0 * X.x()), 0.0);
     }
-  double sum = 0.0;
-  for (const auto& [node, area] : tributary_areas(mesh, top)) {
-    EXPECT_GT(area, 0.0);
-    sum += area;
-  }
-  EXPECT_NEAR(sum, 4.0, 1e-14);
+  EXPECT_NEAR(sum_of_positive(tributary_areas(mesh, top)), 4.0, 1e-14);
   // A curved face: the sum is the area of the curved octant, 4 pi R^2 / 8 up to the O(h^4) error
   // of the quadratic surface (and the rule's error on the non-polynomial |x_ξ × x_η|).
   const Mesh shell = quadratic_shell(Symmetry::octant, 2.0);
@@ -506,22 +512,12 @@ TEST(SecondOrderDie, TieAreasArePositiveOnEveryNodeAndSumToTheFaceArea) {
   for (int a = 0; a < 6; ++a)
     EXPECT_NEAR(one.at(top.front().nodes[a]), area * (a < 3 ? 1.0 / 19.0 : 16.0 / 57.0), 1e-15)
         << "node " << a;
-  double sum = 0.0;
-  for (const auto& [node, w] : tie_areas(mesh, top)) {
-    EXPECT_GT(w, 0.0);
-    sum += w;
-  }
-  EXPECT_NEAR(sum, 4.0, 1e-14);
+  EXPECT_NEAR(sum_of_positive(tie_areas(mesh, top)), 4.0, 1e-14);
   // The curved octant: the same total as the tributary areas (both are the face areas).
   const Mesh shell = quadratic_shell(Symmetry::octant, 2.0);
   const auto inner = outward_faces(shell, "inner");
-  double tie_sum = 0.0, tributary_sum = 0.0;
-  for (const auto& [node, w] : tie_areas(shell, inner)) {
-    EXPECT_GT(w, 0.0);
-    tie_sum += w;
-  }
-  for (const auto& [node, w] : tributary_areas(shell, inner)) tributary_sum += w;
-  EXPECT_NEAR(tie_sum, tributary_sum, 1e-12 * tributary_sum);
+  const double tributary_sum = sum_of_positive(tributary_areas(shell, inner));
+  EXPECT_NEAR(sum_of_positive(tie_areas(shell, inner)), tributary_sum, 1e-12 * tributary_sum);
 }
 
 DieContactSettings sticking_settings() {
