@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "core/error.hpp"
+
 namespace plisse {
 
 double tet_signed_volume(const Mesh& mesh, int t) {
@@ -53,6 +55,19 @@ std::vector<BoundaryFace> compute_boundary_faces(const Mesh& mesh) {
     i = j;
   }
   return faces;
+}
+
+std::set<int> triangle_nodes(const Mesh& mesh, const std::vector<int>& triangles) {
+  std::set<int> nodes;
+  for (int t : triangles) {
+    for (int v : mesh.triangles[t]) nodes.insert(v);
+    if (mesh.order() == 2) {
+      FE_CHECK(static_cast<std::size_t>(t) < mesh.triangle_edge_nodes.size(),
+               "triangle " << t << " of the second-order mesh has no edge nodes");
+      for (int v : mesh.triangle_edge_nodes[t]) nodes.insert(v);
+    }
+  }
+  return nodes;
 }
 
 }  // namespace plisse

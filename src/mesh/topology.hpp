@@ -7,6 +7,7 @@
 /// Its faces, numbered by the opposite corner, are listed so that the right-hand rule gives the
 /// outward normal: face k is opposite corner k (Gmsh/FEniCS style "face k misses node k").
 #include <array>
+#include <set>
 #include <vector>
 
 #include "core/types.hpp"
@@ -35,6 +36,11 @@ double tet_signed_volume(const Mesh& mesh, int t);
 /// Swaps corners 1 and 2 of tetrahedron `t` (and, for a second-order mesh, its edge nodes
 /// accordingly), which flips the sign of its volume.
 void flip_tet(Mesh& mesh, int t);
+
+/// The nodes of the boundary triangles `triangles` (indices into mesh.triangles): their corners
+/// and, on a second-order mesh, their edge nodes. Throws plisse::Error when a triangle of a
+/// second-order mesh has no edge nodes.
+std::set<int> triangle_nodes(const Mesh& mesh, const std::vector<int>& triangles);
 
 /// A face of the tetrahedral mesh that belongs to exactly one tetrahedron.
 struct BoundaryFace {

@@ -6,6 +6,8 @@
 #include <string>
 #include <utility>
 
+#include "mesh/topology.hpp"
+
 namespace plisse {
 
 int coordinate_plane_axis(const Mesh& mesh, const std::vector<int>& triangles, double tol) {
@@ -58,16 +60,7 @@ std::vector<ConstrainedComponent> collect_constraints(
     if (tag == mesh.surface_tags.end())
       throw InputError(bc.surface.place, "no surface tag '" + bc.surface.name + "' in the mesh");
     // The corners of the tagged triangles and, on a second-order mesh, their edge nodes.
-    std::set<int> nodes;
-    for (int t : tag->second) {
-      for (int v : mesh.triangles[t]) nodes.insert(v);
-      if (mesh.order() == 2) {
-        FE_CHECK(static_cast<size_t>(t) < mesh.triangle_edge_nodes.size(),
-                 "surface '" << bc.surface.name << "': triangle " << t
-                             << " of the second-order mesh has no edge nodes");
-        for (int v : mesh.triangle_edge_nodes[t]) nodes.insert(v);
-      }
-    }
+    const std::set<int> nodes = triangle_nodes(mesh, tag->second);
     switch (bc.type) {
       case BoundaryType::fixed:
         for (int v : nodes)

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <set>
 
+#include "mesh/topology.hpp"
 #include "solver/element_assembly.hpp"
 #include "solver/mini_element.hpp"
 #include "solver/node_graph.hpp"
@@ -221,12 +222,7 @@ void MixedModel::restore_converged() {
 }
 
 Vec3d MixedModel::reaction(const std::vector<int>& triangles) const {
-  std::set<int> nodes;
-  for (int t : triangles) {
-    for (int v : mesh_.triangles[t]) nodes.insert(v);
-    if (mesh_.order() == 2)
-      for (int v : mesh_.triangle_edge_nodes[t]) nodes.insert(v);
-  }
+  const std::set<int> nodes = triangle_nodes(mesh_, triangles);
   Vec3d force = Vec3d::Zero();
   for (int v : nodes)
     if (distribution_->owns_node(v))  // the residual is complete on the owned nodes only

@@ -28,14 +28,13 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <set>
 #include <string>
 
 #include "element/element_family.hpp"
 #include "mesh/generate.hpp"
+#include "mesh/topology.hpp"
 #include "solver/mixed_model.hpp"
 #include "solver/newton_solver.hpp"
-#include "support/second_order_mesh.hpp"
 
 namespace plisse {
 namespace {
@@ -70,10 +69,7 @@ void expect_quadratic_convergence(const NewtonCase& c) {
   const Vec3d top_motion = c.motion_scale * Vec3d(0.3, 0.15, 0.4);  // [mm]
   std::vector<ConstrainedComponent> constraints;
   auto constrain = [&](const std::string& tag, const Vec3d& value) {
-    std::set<int> nodes;
-    for (int t : mesh.surface_tags.at(tag))
-      for (int v : test::face_nodes(mesh, t)) nodes.insert(v);
-    for (int v : nodes)
+    for (int v : triangle_nodes(mesh, mesh.surface_tags.at(tag)))
       for (int k = 0; k < 3; ++k) constraints.push_back({v, k, value(k), Ramp{0.0, 1.0}});
   };
   constrain("bottom", Vec3d::Zero());
