@@ -4,20 +4,10 @@
 #include <limits>
 
 #include "io/history_writer.hpp"
+#include "mesh/topology.hpp"
 
 namespace plisse::app {
 namespace {
-
-int nearest_node(const Mesh& mesh, const Vec3d& point) {
-  int best = 0;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (int v = 0; v < mesh.n_nodes(); ++v)
-    if (const double d = (mesh.nodes[v] - point).squaredNorm(); d < best_distance) {
-      best_distance = d;
-      best = v;
-    }
-  return best;
-}
 
 /// "<prefix>x:<name>", "<prefix>y:<name>", "<prefix>z:<name>".
 std::vector<std::string> xyz_columns(const std::string& prefix, const std::string& name) {

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <set>
 
+#include "mesh/topology.hpp"
 #include "physics/body_force.hpp"
 #include "physics/cavity.hpp"
+#include "physics/dead_load.hpp"
 #include "physics/die_contact.hpp"
 #include "physics/die_surface.hpp"
 #include "physics/pressure_load.hpp"
@@ -86,6 +88,20 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
       case LoadType::gravity:
         terms.push_back(std::make_unique<BodyForce>(
             mesh, load.name, c.material.density * load.acceleration, load.ramp));
+        break;
+      case LoadType::traction: {
+        const auto faces = outward_faces(mesh, load.surface.name);
+        terms.push_back(
+            std::make_unique<DeadLoad>(load.name,
+                                       load.traction ? traction_forces(mesh, faces, *load.traction)
+                                                     : total_force(mesh, faces, *load.force),
+                                       load.ramp));
+        break;
+      }
+      case LoadType::point_force:
+        terms.push_back(std::make_unique<DeadLoad>(
+            load.name, std::vector<NodalForce>{{nearest_node(mesh, load.point), *load.force}},
+            load.ramp));
         break;
     }
   }

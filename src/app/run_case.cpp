@@ -15,6 +15,7 @@
 #include "io/checkpoint.hpp"
 #include "io/run_directory.hpp"
 #include "io/run_log.hpp"
+#include "mesh/topology.hpp"
 #include "solver/load_stepper.hpp"
 #include "solver/petsc_call.hpp"
 #include "solver/petsc_session.hpp"
@@ -141,6 +142,15 @@ void log_header(RunLog& log, const PreparedRun& run, const fs::path& directory,
                 mesh.n_nodes(), mesh.n_tets(), to_string(model.element_family()).c_str(),
                 model.n_free(), model.dofs().n_free_pressure(), n_constrained);
   log.info(line);
+  for (const Load& load : c.loads) {
+    if (load.type != LoadType::point_force) continue;
+    const int v = nearest_node(mesh, load.point);
+    const Vec3d& x = mesh.nodes[v];
+    std::snprintf(line, sizeof line,
+                  "load '%s': on node %d at [%.6g, %.6g, %.6g], %.3g mm from its point",
+                  load.name.c_str(), v, x.x(), x.y(), x.z(), (x - load.point).norm());
+    log.info(line);
+  }
   if (model.n_ranks() == 1) return;
   // Each rank evaluates the elements touching its nodes: the cut elements twice.
   const int owned = model.n_owned();

@@ -39,7 +39,9 @@ const Choices<BoundaryType> kBoundaryTypes{{"fixed", BoundaryType::fixed},
                                            {"symmetry", BoundaryType::symmetry},
                                            {"displacement", BoundaryType::displacement}};
 const Choices<LoadType> kLoadTypes{{"pressure", LoadType::pressure},
-                                   {"gravity", LoadType::gravity}};
+                                   {"gravity", LoadType::gravity},
+                                   {"traction", LoadType::traction},
+                                   {"point-force", LoadType::point_force}};
 const Choices<CavityControl> kCavityControls{{"volume", CavityControl::volume},
                                              {"gas", CavityControl::gas}};
 const Choices<DieShape> kDieShapes{
@@ -55,6 +57,13 @@ SurfaceRef surface_ref(const Field& f) {
   const std::string name = f.text();
   if (name.empty()) f.fail("a surface tag name must not be empty");
   return {name, f.place()};
+}
+
+/// A vector that is not zero (a load of zero is a mistake, not a way to switch it off).
+Vec3d non_zero_vector(const Field& f) {
+  const Vec3d v = f.vec3();
+  if (v.isZero(0.0)) f.fail("must not be the zero vector (leave the load out instead)");
+  return v;
 }
 
 /// A direction, normalised; the zero vector is an error.
@@ -425,10 +434,18 @@ Schema<Load> load_schema() {
   Schema<Load> s;
   s.place(&Load::place, false);
   s.variant<LoadType>("type", &Load::type, kLoadTypes,
-                      "pressure: a follower pressure on a surface; gravity: a body force")
+                      "pressure: a follower pressure on a surface; gravity: a body force; "
+                      "traction: a dead traction on a surface; point-force: a dead force on "
+                      "the node nearest a point")
       .required();
-  name_key(s, &Load::name, "history column `pressure:<name>`").required();
-  surface_key(s, "surface", &Load::surface, "the loaded surface").required().applies({"pressure"});
+  name_key(s, &Load::name,
+           "history column `pressure:<name>` (pressure); `load_x:<name>`, `load_y:<name>`, "
+           "`load_z:<name>` (the applied force) and `work:<name>` (its work) for traction and "
+           "point-force")
+      .required();
+  surface_key(s, "surface", &Load::surface, "the loaded surface")
+      .required()
+      .applies({"pressure", "traction"});
   s.real("value", &Load::value, Range::any(), "MPa",
          "follower pressure at the end of the ramp; positive pushes against the outward normal "
          "of the body (inflates from `inner`)")
@@ -437,7 +454,54 @@ Schema<Load> load_schema() {
   s.vec3("acceleration", &Load::acceleration, "mm/s²", "e.g. `[0, -9810, 0]`")
       .required()
       .applies({"gravity"});
+  s.add({"traction",
+         "vector",
+         "MPa",
+         "",
+         "",
+         {"traction"},
+         "traction per unit undeformed area at the end of the ramp, fixed in direction and "
+         "magnitude (a dead load); non-zero"},
+        [](const Field& f, Load& load, ReadContext&) { load.traction = non_zero_vector(f); });
+  s.add({"force",
+         "vector",
+         "N",
+         "",
+         "",
+         {"traction", "point-force"},
+         "traction: the total force at the end of the ramp, spread over the surface in "
+         "proportion to undeformed area; point-force: the force on the node nearest `point` "
+         "(required); dead, non-zero"},
+        [](const Field& f, Load& load, ReadContext&) { load.force = non_zero_vector(f); });
+  s.add({"point",
+         "vector",
+         "mm",
+         "",
+         "",
+         {"point-force"},
+         "where the force acts: on the mesh node nearest this point of the undeformed body "
+         "(refused when farther from it than the longest edge at that node)"},
+        [](const Field& f, Load& load, ReadContext&) {
+          load.point = f.vec3();
+          load.point_place = f.place();
+        })
+      .required();
   ramp_key(s, &Load::ramp, "time ramp of the load");
+  s.rule("a traction load needs exactly one of `traction` and `force`",
+         [](const FieldMap& m, const Load& load, const ReadContext&) {
+           if (load.type != LoadType::traction) return;
+           if (load.traction && load.force)
+             m.require("force").fail_at_key(
+                 "give either `traction` (per unit area) or `force` (in total), not both");
+           if (!load.traction && !load.force)
+             m.self().fail_at_key(
+                 "a traction load needs `traction` (MPa, per unit undeformed area) or `force` "
+                 "(N, in total)");
+         });
+  s.rule("a point-force load needs `force`",
+         [](const FieldMap& m, const Load& load, const ReadContext&) {
+           if (load.type == LoadType::point_force && !load.force) m.require("force");
+         });
   s.rule("a gravity load needs `material.density` > 0",
          [](const FieldMap& m, const Load& load, const ReadContext& context) {
            if (load.type == LoadType::gravity && !(context.density > 0.0))
@@ -611,7 +675,8 @@ Schema<Case> case_schema() {
       .required()
       .nested = material_schema().doc();
   list_key(s, "boundary", &Case::boundary, boundary_schema(), "Dirichlet conditions");
-  list_key(s, "loads", &Case::loads, load_schema(), "pressure and gravity loads");
+  list_key(s, "loads", &Case::loads, load_schema(),
+           "pressure, gravity, traction and point-force loads");
   list_key(s, "cavities", &Case::cavities, cavity_schema(), "fluid-filled cavities");
   list_key(s, "dies", &Case::dies, die_schema(), "rigid dies");
   list_key(s, "probes", &Case::probes, probe_schema(), "displacement probes");

@@ -63,14 +63,21 @@ struct MaterialSection {
   double inverse_bulk_modulus() const { return exact_incompressibility ? 0.0 : 1.0 / bulk_modulus; }
 };
 
-enum class LoadType { pressure, gravity };
+enum class LoadType { pressure, gravity, traction, point_force };
 
 struct Load {
   LoadType type = LoadType::pressure;
-  std::string name;    ///< unique; history column `pressure:<name>`
-  SurfaceRef surface;  ///< pressure only
+  std::string name;    ///< unique; history columns `pressure:<name>` or `load_x:<name>` ...
+  SurfaceRef surface;  ///< pressure and traction
   double value = 0.0;  ///< pressure [MPa], positive pushes against the body's outward normal
   Vec3d acceleration = Vec3d::Zero();  ///< gravity only [mm/s^2], e.g. [0, -9810, 0]
+  /// traction: a dead traction [MPa] per unit undeformed area (exactly one of `traction`, `force`)
+  std::optional<Vec3d> traction;
+  /// traction: the total force [N] spread over the surface in proportion to undeformed area;
+  /// point-force: the force on the node nearest `point`. Non-zero.
+  std::optional<Vec3d> force;
+  Vec3d point = Vec3d::Zero();  ///< point-force only [mm]
+  InputPlace point_place;       ///< where `point` is written
   Ramp ramp;
   InputPlace place;
 };

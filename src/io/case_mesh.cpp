@@ -9,6 +9,7 @@
 #include "io/case_reader.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "mesh/quality.hpp"
+#include "mesh/topology.hpp"
 
 namespace plisse {
 namespace {
@@ -80,6 +81,25 @@ std::pair<double, double> planarity(const Mesh& mesh, const std::vector<int>& tr
   for (int v : nodes)
     deviation = std::max(deviation, std::abs(normal.dot(mesh.nodes[v] - centroid)));
   return {deviation, kPlanarityTolerance * mean_edge};
+}
+
+/// A point force acts on the node nearest its point: a point farther from that node than the
+/// longest edge there lies off the body (a wrong coordinate or unit), and is refused.
+void check_point_force(const Mesh& mesh, const Load& load) {
+  const auto text = [](const Vec3d& v) {
+    std::string out = "[";  // appended, not "[" + ...: g++ 12 warns falsely (-Wrestrict) there
+    for (int i = 0; i < 3; ++i) out += format_number(v[i]) + (i < 2 ? ", " : "]");
+    return out;
+  };
+  const int v = nearest_node(mesh, load.point);
+  const double distance = (mesh.nodes[v] - load.point).norm();
+  const double longest = longest_edge_at(mesh, v);
+  if (distance > longest)
+    throw InputError(load.point_place,
+                     "point-force '" + load.name + "': the point " + text(load.point) + " is " +
+                         format_number(distance) + " mm from the nearest node " +
+                         text(mesh.nodes[v]) + ", farther than the longest edge there (" +
+                         format_number(longest) + " mm): give a point on the body");
 }
 
 /// Imperfections, branch switching and the wrinkle threshold are relative to the wall thickness: a
@@ -157,8 +177,11 @@ Mesh load_case_mesh(const Case& c) {
 
 void check_case_against_mesh(const Case& c, const Mesh& mesh) {
   for (const BoundaryCondition& bc : c.boundary) check_surface(c, mesh, bc.surface);
-  for (const Load& load : c.loads)
-    if (load.type == LoadType::pressure) check_surface(c, mesh, load.surface);
+  for (const Load& load : c.loads) {
+    if (load.type == LoadType::pressure || load.type == LoadType::traction)
+      check_surface(c, mesh, load.surface);
+    if (load.type == LoadType::point_force) check_point_force(mesh, load);
+  }
   for (const Cavity& cavity : c.cavities) check_surface(c, mesh, cavity.surface);
   for (const Die& die : c.dies) {
     if (die.region) check_surface(c, mesh, *die.region);

@@ -53,7 +53,9 @@ Schema<NewtonSettings> newton_schema() {
   s.integer("max_iterations", &NewtonSettings::max_iterations, Range::at_least(1),
             "Newton iterations per step before the step counts as failed");
   s.choice<LineSearch>("line_search", &NewtonSettings::line_search, kLineSearches,
-                       "PETSc SNES line search");
+                       "PETSc SNES line search: bt backtracks on the residual norm, basic "
+                       "takes full steps, l2 and cp minimise along the step (cp suits "
+                       "slender bodies in bending, whose full step first raises the residual)");
   s.nested<LinearSolverSettings>("linear", &NewtonSettings::linear, linear_solver_schema())
       .null_is_absent();
   return s;

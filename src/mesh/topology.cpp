@@ -1,6 +1,7 @@
 #include "mesh/topology.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 #include "core/error.hpp"
@@ -68,6 +69,34 @@ std::set<int> triangle_nodes(const Mesh& mesh, const std::vector<int>& triangles
     }
   }
   return nodes;
+}
+
+int nearest_node(const Mesh& mesh, const Vec3d& point) {
+  int best = 0;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (int v = 0; v < mesh.n_nodes(); ++v)
+    if (const double d = (mesh.nodes[v] - point).squaredNorm(); d < best_distance) {
+      best_distance = d;
+      best = v;
+    }
+  return best;
+}
+
+double longest_edge_at(const Mesh& mesh, int v) {
+  double longest = 0.0;
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    const auto& tet = mesh.tets[t];
+    bool touches = std::find(tet.begin(), tet.end(), v) != tet.end();
+    if (!touches && t < mesh.tet_edge_nodes.size()) {
+      const auto& edges = mesh.tet_edge_nodes[t];
+      touches = std::find(edges.begin(), edges.end(), v) != edges.end();
+    }
+    if (!touches) continue;
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b)
+        longest = std::max(longest, (mesh.nodes[tet[a]] - mesh.nodes[tet[b]]).norm());
+  }
+  return longest;
 }
 
 }  // namespace plisse

@@ -42,6 +42,14 @@ void flip_tet(Mesh& mesh, int t);
 /// second-order mesh has no edge nodes.
 std::set<int> triangle_nodes(const Mesh& mesh, const std::vector<int>& triangles);
 
+/// The node nearest to `point` (on equal distance the lower index): corners and, on a
+/// second-order mesh, edge nodes alike. O(n_nodes). Precondition: the mesh has nodes.
+int nearest_node(const Mesh& mesh, const Vec3d& point);
+
+/// The longest edge [mm] of the tetrahedra that have node `v` as a corner or an edge node (the
+/// corner edges: a curved 10-node edge counts by its chord). 0 for a node of no tetrahedron.
+double longest_edge_at(const Mesh& mesh, int v);
+
 /// A face of the tetrahedral mesh that belongs to exactly one tetrahedron.
 struct BoundaryFace {
   std::array<int, 3> nodes;  ///< corner nodes, outward normal by the right-hand rule
