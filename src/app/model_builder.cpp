@@ -9,6 +9,7 @@
 #include "physics/dead_load.hpp"
 #include "physics/die_contact.hpp"
 #include "physics/die_surface.hpp"
+#include "physics/follower_traction.hpp"
 #include "physics/pressure_load.hpp"
 #include "physics/surface.hpp"
 #include "physics/viscous_damping.hpp"
@@ -96,6 +97,15 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
                                        load.traction ? traction_forces(mesh, faces, *load.traction)
                                                      : total_force(mesh, faces, *load.force),
                                        load.ramp));
+        break;
+      }
+      case LoadType::follower_traction: {
+        FollowerTractionValues values;
+        values.normal = load.normal;
+        values.shear = load.shear;
+        if (load.direction) values.direction = *load.direction;
+        terms.push_back(std::make_unique<FollowerTraction>(mesh, load.name, load.surface.name,
+                                                           values, load.ramp, constraints));
         break;
       }
       case LoadType::point_force:

@@ -41,7 +41,8 @@ const Choices<BoundaryType> kBoundaryTypes{{"fixed", BoundaryType::fixed},
 const Choices<LoadType> kLoadTypes{{"pressure", LoadType::pressure},
                                    {"gravity", LoadType::gravity},
                                    {"traction", LoadType::traction},
-                                   {"point-force", LoadType::point_force}};
+                                   {"point-force", LoadType::point_force},
+                                   {"follower-traction", LoadType::follower_traction}};
 const Choices<CavityControl> kCavityControls{{"volume", CavityControl::volume},
                                              {"gas", CavityControl::gas}};
 const Choices<DieShape> kDieShapes{
@@ -436,16 +437,16 @@ Schema<Load> load_schema() {
   s.variant<LoadType>("type", &Load::type, kLoadTypes,
                       "pressure: a follower pressure on a surface; gravity: a body force; "
                       "traction: a dead traction on a surface; point-force: a dead force on "
-                      "the node nearest a point")
+                      "the node nearest a point; follower-traction: normal and shear tractions "
+                      "that turn with the deformed surface")
       .required();
   name_key(s, &Load::name,
            "history column `pressure:<name>` (pressure); `load_x:<name>`, `load_y:<name>`, "
-           "`load_z:<name>` (the applied force) and `work:<name>` (its work) for traction and "
-           "point-force")
+           "`load_z:<name>` (the applied force) and `work:<name>` (its work) for the others")
       .required();
   surface_key(s, "surface", &Load::surface, "the loaded surface")
       .required()
-      .applies({"pressure", "traction"});
+      .applies({"pressure", "traction", "follower-traction"});
   s.real("value", &Load::value, Range::any(), "MPa",
          "follower pressure at the end of the ramp; positive pushes against the outward normal "
          "of the body (inflates from `inner`)")
@@ -486,7 +487,35 @@ Schema<Load> load_schema() {
           load.point_place = f.place();
         })
       .required();
+  s.real("normal", &Load::normal, Range::any(), "MPa",
+         "traction per unit deformed area along the deformed outward normal at the end of the "
+         "ramp (a negative value pushes inwards, as a pressure)")
+      .applies({"follower-traction"});
+  s.real("shear", &Load::shear, Range::any(), "MPa",
+         "traction per unit deformed area along `direction` projected onto the deformed surface, "
+         "at the end of the ramp")
+      .applies({"follower-traction"});
+  s.add({"direction",
+         "vector",
+         "–",
+         "",
+         "",
+         {"follower-traction"},
+         "the shear's direction, normalised: the shear acts along its projection onto the "
+         "deformed surface (nowhere where the surface is normal to it); required with a shear"},
+        [](const Field& f, Load& load, ReadContext&) { load.direction = unit_vector(f); });
   ramp_key(s, &Load::ramp, "time ramp of the load");
+  s.rule(
+      "a follower-traction load needs a non-zero `normal` or `shear`, and `direction` with a "
+      "shear",
+      [](const FieldMap& m, const Load& load, const ReadContext&) {
+        if (load.type != LoadType::follower_traction) return;
+        if (load.normal == 0.0 && load.shear == 0.0)
+          m.self().fail_at_key(
+              "a follower traction needs a non-zero `normal` or `shear` (MPa per unit "
+              "deformed area)");
+        if (load.shear != 0.0 && !load.direction) m.require("direction");
+      });
   s.rule("a traction load needs exactly one of `traction` and `force`",
          [](const FieldMap& m, const Load& load, const ReadContext&) {
            if (load.type != LoadType::traction) return;

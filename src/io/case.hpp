@@ -63,7 +63,7 @@ struct MaterialSection {
   double inverse_bulk_modulus() const { return exact_incompressibility ? 0.0 : 1.0 / bulk_modulus; }
 };
 
-enum class LoadType { pressure, gravity, traction, point_force };
+enum class LoadType { pressure, gravity, traction, point_force, follower_traction };
 
 struct Load {
   LoadType type = LoadType::pressure;
@@ -78,6 +78,11 @@ struct Load {
   std::optional<Vec3d> force;
   Vec3d point = Vec3d::Zero();  ///< point-force only [mm]
   InputPlace point_place;       ///< where `point` is written
+  /// follower-traction: per unit deformed area, along the outward normal [MPa] ...
+  double normal = 0.0;
+  /// ... and along the unit projection of `direction` onto the deformed surface [MPa]
+  double shear = 0.0;
+  std::optional<Vec3d> direction;  ///< follower-traction, normalised; required with a shear
   Ramp ramp;
   InputPlace place;
 };

@@ -178,7 +178,8 @@ Mesh load_case_mesh(const Case& c) {
 void check_case_against_mesh(const Case& c, const Mesh& mesh) {
   for (const BoundaryCondition& bc : c.boundary) check_surface(c, mesh, bc.surface);
   for (const Load& load : c.loads) {
-    if (load.type == LoadType::pressure || load.type == LoadType::traction)
+    if (load.type == LoadType::pressure || load.type == LoadType::traction ||
+        load.type == LoadType::follower_traction)
       check_surface(c, mesh, load.surface);
     if (load.type == LoadType::point_force) check_point_force(mesh, load);
   }

@@ -30,7 +30,7 @@ TEST(ConsistentNodalAreas, LinearFacesGiveAThirdOfEachTriangleToEachCorner) {
   EXPECT_NEAR(sum_of_areas(areas), 6.0, 1e-14);
   for (const auto& [node, area] : areas) {
     const Vec3d& X = mesh.nodes[node];
-    const bool interior_x = X.x() > 0.0 && X.x() < 3.0, interior_y = X.y() > 0.0 && X.y() < 2.0;
+    const bool interior_x = X.x() > 0.0 && X.x()<3.0, interior_y = X.y()> 0.0 && X.y() < 2.0;
     if (interior_x && interior_y) {
       EXPECT_NEAR(area, 1.0, 1e-14) << "node " << node;
     }
@@ -46,8 +46,7 @@ TEST(ConsistentNodalAreas, StraightQuadraticFacesGiveNothingToCornersAndAThirdTo
   std::map<int, double> expected;
   for (const SurfaceFace& f : faces) {
     const Vec3d& X0 = mesh.nodes[f.nodes[0]];
-    const double A =
-        0.5 * (mesh.nodes[f.nodes[1]] - X0).cross(mesh.nodes[f.nodes[2]] - X0).norm();
+    const double A = 0.5 * (mesh.nodes[f.nodes[1]] - X0).cross(mesh.nodes[f.nodes[2]] - X0).norm();
     for (int a = 0; a < 3; ++a) expected[f.nodes[a]] += 0.0;
     for (int a = 3; a < 6; ++a) expected[f.nodes[a]] += A / 3.0;
   }
@@ -62,7 +61,7 @@ TEST(ConsistentNodalAreas, CurvedQuadraticFaceIntegratesItsTrueArea) {
   // collapsed square (0.7511563...); the degree-4 rule on |X_ξ × X_η|, not a polynomial, gives
   // 0.7513334: 2.4e-4 relative, its quadrature error on this strongly curved patch.
   Mesh mesh;  // the face's nodes only: the areas need no tetrahedra
-  mesh.nodes = {Vec3d(0, 0, 0),     Vec3d(1, 0, 1),       Vec3d(0, 1, 1),
+  mesh.nodes = {Vec3d(0, 0, 0),      Vec3d(1, 0, 1),       Vec3d(0, 1, 1),
                 Vec3d(0.5, 0, 0.25), Vec3d(0.5, 0.5, 0.5), Vec3d(0, 0.5, 0.25)};
   SurfaceFace face;
   face.n_nodes = 6;

@@ -51,11 +51,13 @@ constexpr double kTraction = 1.0;  // [MPa] per undeformed area, on the 5 x 5 mm
 /// Deformations, 1984, section 7.2). Solved for λ by Newton.
 double stretch_under(double P) {
   double l = 1.0;
-  for (int k = 0; k < 50; ++k) l -= (2 * kC1 * (l - 1 / (l * l)) - P) / (2 * kC1 * (1 + 2 / (l * l * l)));
+  for (int k = 0; k < 50; ++k)
+    l -= (2 * kC1 * (l - 1 / (l * l)) - P) / (2 * kC1 * (1 + 2 / (l * l * l)));
   return l;
 }
 
-std::string block_case(const std::string& element, const std::string& load, int steps) {
+std::string block_case(const std::string& element, const std::string& load, int steps,
+                       const std::string& type = "traction") {
   return "element: " + element +
          "\n"
          "mesh: {generate: cube, edge: 5.0, divisions: 2}\n"
@@ -65,8 +67,8 @@ std::string block_case(const std::string& element, const std::string& load, int 
          "  - {type: symmetry, surface: sym_y}\n"
          "  - {type: symmetry, surface: sym_z}\n"
          "loads:\n"
-         "  - {type: traction, name: pull, surface: top, " +
-         load +
+         "  - {type: " +
+         type + ", name: pull, surface: top, " + load +
          "}\n"
          "solver:\n"
          "  steps: " +
@@ -129,21 +131,41 @@ TEST(EndTraction, WorkConvergesToTheStoredEnergyAtSecondOrderInTheStep) {
   EXPECT_LT(ratio, 4.4) << "errors " << error[0] << ", " << error[1];
 }
 
+TEST(FollowerNormalTraction, IsTheCauchyStressOfTheBlockWithBothElements) {
+  // A follower traction T along the deformed normal acts per unit deformed area: it is the Cauchy
+  // stress σ_zz = 2 c1 (λ^2 − 1/λ) of the homogeneous stretch, and its resultant T times the
+  // deformed face area 25/λ mm^2 (the lateral stretches are 1/sqrt(λ)).
+  for (const std::string element : {"mini", "taylor-hood"}) {
+    const HistoryTable h = run_case(test::scratch_directory("follower-normal-" + element),
+                                    block_case(element, "normal: 1.0", 4, "follower-traction"));
+    ASSERT_EQ(h.rows.size(), 4u);
+    for (const auto& row : h.rows) {
+      const double T = row[column(h, "load_factor")] * kTraction;
+      double l = 1.0;  // Newton on 2 c1 (λ^2 − 1/λ) = T
+      for (int k = 0; k < 50; ++k)
+        l -= (2 * kC1 * (l * l - 1 / l) - T) / (2 * kC1 * (2 * l + 1 / (l * l)));
+      EXPECT_NEAR(row[column(h, "stretch")], l, 1e-9 * l) << element << ", T = " << T;
+      EXPECT_NEAR(row[column(h, "cauchy_zz")], T, 1e-8 * T) << element;
+      EXPECT_NEAR(row[column(h, "load_z:pull")], T * 25.0 / l, 1e-9 * T * 25.0) << element;
+    }
+  }
+}
+
 // --- A point force ----------------------------------------------------------------------------
 
 TEST(PointForce, ClampedBaseCarriesTheForceAndTheLogNamesTheNode) {
   for (const std::string element : {"mini", "taylor-hood"}) {
     const auto dir = test::scratch_directory("point-force-" + element);
-    const HistoryTable h = run_case(
-        dir, "element: " + element +
-                 "\n"
-                 "mesh: {generate: cube, edge: 5.0, divisions: 2}\n"
-                 "material: {model: neo-hookean, c1: 0.25}\n"
-                 "boundary: [{type: fixed, name: base, surface: bottom}]\n"
-                 "loads:\n"
-                 "  - {type: point-force, name: tip, point: [2.5, 2.6, 5.1],"
-                 " force: [0.2, -0.1, -0.5]}\n"
-                 "solver: {steps: 2, newton: {rtol: 1.0e-12, atol: 1.0e-14}}\n");
+    const HistoryTable h =
+        run_case(dir, "element: " + element +
+                          "\n"
+                          "mesh: {generate: cube, edge: 5.0, divisions: 2}\n"
+                          "material: {model: neo-hookean, c1: 0.25}\n"
+                          "boundary: [{type: fixed, name: base, surface: bottom}]\n"
+                          "loads:\n"
+                          "  - {type: point-force, name: tip, point: [2.5, 2.6, 5.1],"
+                          " force: [0.2, -0.1, -0.5]}\n"
+                          "solver: {steps: 2, newton: {rtol: 1.0e-12, atol: 1.0e-14}}\n");
     ASSERT_FALSE(h.rows.empty());
     const auto& last = h.rows.back();
     const double F[3] = {0.2, -0.1, -0.5};
@@ -170,9 +192,9 @@ TEST(PointForce, PointOffTheBodyIsRefusedByRunAndCheck) {
          "boundary: [{type: fixed, surface: bottom}]\n"
          "loads: [{type: point-force, name: tip, point: [2.5, 2.5, 50], force: [0, 0, 1]}]\n";
   for (const std::string command : {"run", "check"}) {
-    const auto r = test::run_plisse_captured(command + " " + (dir / "case.yaml").string() +
-                                             (command == "run" ? " -o " + (dir / "run").string()
-                                                               : std::string()));
+    const auto r = test::run_plisse_captured(
+        command + " " + (dir / "case.yaml").string() +
+        (command == "run" ? " -o " + (dir / "run").string() : std::string()));
     EXPECT_EQ(r.status, 2) << r.output;
     EXPECT_NE(r.output.find("is 45 mm from the nearest node [2.5, 2.5, 5]"), std::string::npos)
         << r.output;
