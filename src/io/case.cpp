@@ -548,9 +548,53 @@ Schema<Cavity> cavity_schema() {
   surface_key(s, "surface", &Cavity::surface, "the cavity's wall").required();
   s.variant<CavityControl>("control", &Cavity::control, kCavityControls,
                            "prescribed volume, or an ideal gas");
-  ramp_key(s, &Cavity::ramp, "time ramp of the volume ratio or the mass ratio");
-  s.real("volume_ratio", &Cavity::volume_ratio, Range::positive(), "–", "V(end of ramp) / V0")
-      .applies({"volume"});
+  ramp_key(s, &Cavity::ramp, "time ramp of the volume or the mass ratio");
+  const auto target = [](VolumeTarget which, double Cavity::*member, Range range) {
+    return [=](const Field& f, Cavity& c, ReadContext&) {
+      c.*member = f.real(range);
+      c.target = which;
+      c.target_place = f.place();
+    };
+  };
+  s.add({"volume_ratio",
+         "number",
+         "–",
+         Range::positive().describe(),
+         "1",
+         {"volume"},
+         "V(end of ramp) / V0; the default 1 holds the initial volume"},
+        target(VolumeTarget::ratio, &Cavity::volume_ratio, Range::positive()));
+  s.add({"volume",
+         "number",
+         "mm³",
+         Range::positive().describe(),
+         "",
+         {"volume"},
+         "V at the end of the ramp, absolute"},
+        target(VolumeTarget::absolute, &Cavity::volume, Range::positive()));
+  s.add({"volume_change",
+         "number",
+         "mm³",
+         "",
+         "",
+         {"volume"},
+         "V(end of ramp) − V0: what a cavity that starts flat (V0 = 0, e.g. under a clamped "
+         "sheet) takes in; non-zero"},
+        target(VolumeTarget::change, &Cavity::volume_change, Range::any()));
+  s.rule("at most one of `volume_ratio`, `volume` and `volume_change`",
+         [](const FieldMap& m, const Cavity&, const ReadContext&) {
+           const std::vector<std::string> keys = {"volume_ratio", "volume", "volume_change"};
+           std::vector<std::string> given;
+           for (const std::string& key : keys)
+             if (m.has(key)) given.push_back(key);
+           if (given.size() > 1)
+             m.require(given[1]).fail_at_key(
+                 "give one of `volume_ratio`, `volume` and "
+                 "`volume_change`, not both `" +
+                 given[0] + "` and `" + given[1] + "`");
+           if (const auto f = m.find("volume_change"); f && f->real() == 0.0)
+             f->fail("must not be 0 (leave it out to hold the initial volume)");
+         });
   s.real("initial_pressure", &Cavity::initial_pressure, Range::non_negative(), "MPa",
          "gauge pressure of the gas at t = 0, at the undeformed cavity volume (it fixes the "
          "amount of gas)")

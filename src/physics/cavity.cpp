@@ -1,5 +1,6 @@
 #include "physics/cavity.hpp"
 
+#include <cmath>
 #include <map>
 #include <sstream>
 
@@ -39,13 +40,39 @@ CavityTerm::CavityTerm(const Cavity& cavity, const Mesh& mesh,
     throw InputError(place, rule.str());
   }
   reference_volume_ = volume(std::vector<double>(kValuesPerNode * mesh.n_nodes(), 0.0));
-  if (!(reference_volume_ > 0.0)) {
+  // A wall that lies in the planes that close it (a flat sheet's face on z = 0) encloses nothing:
+  // V0 is then round-off of the wall's size, taken as 0 (C8).
+  double area = 0.0;
+  for (const SurfaceFace& f : faces_) {
+    const Vec3d& X0 = mesh.nodes[f.nodes[0]];
+    area += 0.5 * (mesh.nodes[f.nodes[1]] - X0).cross(mesh.nodes[f.nodes[2]] - X0).norm();
+  }
+  const bool flat = std::abs(reference_volume_) <= kFlatVolumeTolerance * area * std::sqrt(area);
+  if (flat) reference_volume_ = 0.0;
+  if (reference_volume_ < 0.0) {
     std::ostringstream rule;
     rule << "surface '" << cavity.surface.name << "' of cavity '" << cavity.name
          << "' encloses the volume " << reference_volume_
-         << " mm^3, which is not positive: a cavity lies on the side of its wall away from the "
+         << " mm^3, which is negative: a cavity lies on the side of its wall away from the "
             "body (e.g. a balloon's 'inner' surface, not 'outer')";
     throw InputError(place, rule.str());
+  }
+  if (flat && cavity.control == CavityControl::gas)
+    throw InputError(place, "cavity '" + cavity.name + "' starts flat (its wall '" +
+                                cavity.surface.name +
+                                "' encloses no volume), so an ideal gas in it has no initial "
+                                "amount: use `control: volume` with `volume` or `volume_change`");
+  if (flat && cavity.control == CavityControl::volume && cavity.target == VolumeTarget::ratio)
+    throw InputError(cavity.target_place.line > 0 ? cavity.target_place : place,
+                     "cavity '" + cavity.name + "' starts flat (its wall '" + cavity.surface.name +
+                         "' encloses no volume), so a volume ratio has nothing to multiply: "
+                         "give `volume` (mm^3) or `volume_change` (mm^3) instead");
+  if (cavity.control == CavityControl::volume && !(final_volume() > 0.0)) {
+    std::ostringstream rule;
+    rule << "cavity '" << cavity.name << "': the volume at the end of the ramp, V0 + "
+         << "volume_change = " << reference_volume_ << " + " << cavity.volume_change << " = "
+         << final_volume() << " mm^3, is not positive";
+    throw InputError(cavity.target_place.line > 0 ? cavity.target_place : place, rule.str());
   }
   const std::set<int> nodes = surface_nodes(faces_);
   nodes_.assign(nodes.begin(), nodes.end());
@@ -68,7 +95,7 @@ double CavityTerm::volume(std::span<const double> x) const {
 double CavityTerm::fluid_volume(double p_c, double t) const {
   const double ramp = cavity_.ramp.factor(t);
   if (cavity_.control == CavityControl::volume)  // (cavities.md, C8)
-    return reference_volume_ * (1.0 + (cavity_.volume_ratio - 1.0) * ramp);
+    return reference_volume_ + (final_volume() - reference_volume_) * ramp;
   // (C9): V_c = (p0 + p_amb) V0 m(t) / (p_c + p_amb)
   const double p_amb = cavity_.ambient_pressure;
   FE_CHECK(p_c + p_amb > 0.0, "cavity '" << cavity_.name
@@ -76,6 +103,18 @@ double CavityTerm::fluid_volume(double p_c, double t) const {
                                          << p_c + p_amb << " MPa is not positive");
   const double mass = 1.0 + (cavity_.mass_ratio - 1.0) * ramp;
   return (cavity_.initial_pressure + p_amb) * reference_volume_ * mass / (p_c + p_amb);
+}
+
+double CavityTerm::final_volume() const {
+  switch (cavity_.target) {
+    case VolumeTarget::ratio:
+      return reference_volume_ * cavity_.volume_ratio;
+    case VolumeTarget::absolute:
+      return cavity_.volume;
+    case VolumeTarget::change:
+      return reference_volume_ + cavity_.volume_change;
+  }
+  return reference_volume_;
 }
 
 double CavityTerm::fluid_volume_derivative(double p_c, double t) const {

@@ -20,10 +20,16 @@ namespace plisse {
 ///   -(V(x) - V_c(p_c, t)) = 0   (cavities.md, C7)
 /// with V_c the prescribed volume (C8) or the volume of an isothermal ideal gas at p_c (C9).
 /// History columns `pressure:<name>` (p_c) and `volume:<name>` (V, C1).
+/// A cavity whose reference volume is below this fraction of A^{3/2} (A the wall's area) starts
+/// flat: V0 = 0 (cavities.md, C8).
+inline constexpr double kFlatVolumeTolerance = 1e-12;
+
 class CavityTerm : public ModelTerm {
  public:
   /// Borrows `mesh`. Throws InputError at `cavity.surface.place` when the surface breaks the
-  /// closure rule (C2) or encloses no positive volume. `constraints` decide symmetric().
+  /// closure rule (C2) or encloses a negative volume, and when a wall that starts flat (V0 below
+  /// kFlatVolumeTolerance A^{3/2}, A its area) has gas or a volume ratio, or the prescribed
+  /// final volume is not positive. `constraints` decide symmetric().
   CavityTerm(const Cavity& cavity, const Mesh& mesh,
              const std::vector<ConstrainedComponent>& constraints);
 
@@ -47,6 +53,8 @@ class CavityTerm : public ModelTerm {
   /// V(x) [mm^3] (C1) and the reference volume V0 = V(0).
   double volume(std::span<const double> x) const;
   double reference_volume() const { return reference_volume_; }
+  /// Volume control: the prescribed volume at the end of the ramp (C8).
+  double final_volume() const;
   /// V_c(p_c, t) and its derivative d V_c / d p_c (C8, C9).
   double fluid_volume(double p_c, double t) const;
   double fluid_volume_derivative(double p_c, double t) const;

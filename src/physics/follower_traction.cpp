@@ -13,11 +13,10 @@ namespace {
 /// The centroid rule of a 3-node face in the layout of the 6-node rule points: exact for the
 /// constant a of a flat triangle.
 const quadratic_triangle::RulePoint& linear_centroid() {
-  static const quadratic_triangle::RulePoint point{
-      {1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0, 0.0, 0.0, 0.0},
-      {-1.0, 1.0, 0.0, 0.0, 0.0, 0.0},
-      {-1.0, 0.0, 1.0, 0.0, 0.0, 0.0},
-      0.5};
+  static const quadratic_triangle::RulePoint point{{1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0, 0.0, 0.0, 0.0},
+                                                   {-1.0, 1.0, 0.0, 0.0, 0.0, 0.0},
+                                                   {-1.0, 0.0, 1.0, 0.0, 0.0, 0.0},
+                                                   0.5};
   return point;
 }
 
@@ -38,7 +37,7 @@ void follower_traction_face(const FollowerTractionValues& v, double factor,
     }
     const Vec3d a = x_xi.cross(x_eta);  // n da = a dξ dη
     const double area = a.norm();
-    Vec3d g = sigma * a;  // force per unit reference area of the face map   (L14)
+    Vec3d g = sigma * a;                  // force per unit reference area of the face map   (L14)
     Mat3d G = sigma * Mat3d::Identity();  // dg/da                             (L15)
     if (tau != 0.0 && area > 0.0) {
       const Vec3d normal = a / area;
@@ -86,8 +85,8 @@ FollowerTraction::FollowerTraction(const Mesh& mesh, std::string name, const std
   nodes_.assign(nodes.begin(), nodes.end());
   for (const SurfaceFace& face : faces_)
     for (int v : face.node_list())
-      face_node_index_.push_back(static_cast<int>(
-          std::lower_bound(nodes_.begin(), nodes_.end(), v) - nodes_.begin()));
+      face_node_index_.push_back(
+          static_cast<int>(std::lower_bound(nodes_.begin(), nodes_.end(), v) - nodes_.begin()));
   u_accepted_.assign(nodes_.size(), Vec3d::Zero());
   f_accepted_.assign(nodes_.size(), Vec3d::Zero());
 }
@@ -168,9 +167,8 @@ std::vector<double> FollowerTraction::save_state() const {
 
 void FollowerTraction::load_state(std::span<const double> state) {
   const std::size_t expected = 2 + 6 * nodes_.size();
-  FE_CHECK(state.size() == expected, "load '" << name_ << "': checkpoint state has "
-                                              << state.size() << " values, expected "
-                                              << expected);
+  FE_CHECK(state.size() == expected, "load '" << name_ << "': checkpoint state has " << state.size()
+                                              << " values, expected " << expected);
   for (double v : state)
     FE_CHECK(std::isfinite(v), "load '" << name_ << "': checkpoint state is not finite");
   t_accepted_ = t_current_ = state[0];

@@ -103,7 +103,8 @@ TEST(FollowerTraction, RigidRotationOfBodyAndDirectionRotatesTheForces) {
     const Vec3d u = Q * mesh.nodes[a] - mesh.nodes[a];
     for (int i = 0; i < 3; ++i) x[node_dof(a, i)] = u[i];
   }
-  const Eigen::VectorXd r0 = term_residual(reference, 1.0, zero), r = term_residual(rotated, 1.0, x);
+  const Eigen::VectorXd r0 = term_residual(reference, 1.0, zero),
+                        r = term_residual(rotated, 1.0, x);
   double max_error = 0.0;
   for (int a = 0; a < mesh.n_nodes(); ++a) {
     const Vec3d f0(r0[node_dof(a, 0)], r0[node_dof(a, 1)], r0[node_dof(a, 2)]);
