@@ -16,6 +16,7 @@
 #include "io/run_directory.hpp"
 #include "io/run_log.hpp"
 #include "mesh/topology.hpp"
+#include "solver/linear_solver.hpp"
 #include "solver/load_stepper.hpp"
 #include "solver/petsc_call.hpp"
 #include "solver/petsc_session.hpp"
@@ -197,6 +198,9 @@ void solve_and_write(PreparedRun run) {
 
   const auto t0 = WallClock::now();
   const std::size_t n_constrained = run.parts.constraints.size();
+  // A rigid cap borders the tangent with one multiplier per tied component: MUMPS needs more
+  // working space than it estimates (linear_solver.hpp, request_factor_workspace).
+  if (!c.caps.empty()) request_factor_workspace(100);
   const std::unique_ptr<MixedModel> model = make_model(run.mesh, std::move(run.parts));
   LoadStepper stepper(*model, c.solver);
   stepper.set_stability(stability_options(c));

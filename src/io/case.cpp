@@ -659,6 +659,86 @@ Schema<Die> die_schema() {
   return s;
 }
 
+/// A list of three numbers or `~` (free) [unit]: at least one must be given when `need_one`.
+std::array<std::optional<double>, 3> optional_components(const Field& f, const std::string& what) {
+  if (!f.node().IsSequence() || f.node().size() != 3)
+    f.fail("expected a list of 3 " + what + ", ~ for a free component, got " + f.describe());
+  std::array<std::optional<double>, 3> out;
+  const std::vector<Field> items = f.items();
+  for (int k = 0; k < 3; ++k)
+    if (!items[k].is_null()) out[k] = items[k].real();
+  return out;
+}
+
+/// `caps:` items: rigid end caps.
+Schema<Cap> cap_schema() {
+  Schema<Cap> s;
+  s.place(&Cap::place, false);
+  name_key(s, &Cap::name,
+           "history columns `force_x:<name>` ... (the cap's force on the body, N), "
+           "`moment_x:<name>` ... (its moment about the moved reference point, N mm), "
+           "`ux:<name>` ... (the reference point's displacement) and `rx:<name>` ... (the "
+           "rotation vector, rad)")
+      .required();
+  surface_key(s, "surface", &Cap::surface, "the nodes tied to the cap").required();
+  s.add({"point",
+         "vector",
+         "mm",
+         "",
+         "mean of the nodes",
+         {},
+         "the reference point the cap moves and turns about"},
+        [](const Field& f, Cap& c, ReadContext&) { c.point = f.vec3(); });
+  s.add({"displacement",
+         "list of 3 numbers or `~`",
+         "mm",
+         "",
+         "[~, ~, ~]",
+         {},
+         "the reference point's displacement at the end of the ramp; `~` leaves a component "
+         "free (loaded by `force`)"},
+        [](const Field& f, Cap& c, ReadContext&) {
+          c.displacement = optional_components(f, "displacements");
+        });
+  s.add({"rotation",
+         "list of 3 numbers or `~`",
+         "rad",
+         "angle < 2π",
+         "[~, ~, ~]",
+         {},
+         "rotation vector at the end of the ramp (axis times angle); `~` leaves a component "
+         "free (loaded by `moment`)"},
+        [](const Field& f, Cap& c, ReadContext&) {
+          c.rotation = optional_components(f, "rotation components");
+          double s2 = 0.0;
+          for (const auto& r : c.rotation) s2 += r ? *r * *r : 0.0;
+          if (!(std::sqrt(s2) < 6.283185307179586))
+            f.fail("the rotation angle " + format_number(std::sqrt(s2)) +
+                   " rad must be below 2π (a rotation vector cannot describe more)");
+        });
+  s.vec3("force", &Cap::force, "N",
+         "force on the cap at the end of the ramp, on its free displacement components");
+  s.vec3("moment", &Cap::moment, "N mm",
+         "moment on the cap at the end of the ramp, on its free rotation components (work "
+         "conjugate to the rotation vector: about a fixed axis, the moment about that axis)");
+  ramp_key(s, &Cap::ramp, "time ramp of the prescribed motion, force and moment");
+  s.rule("`force` and `moment` only on free components (`~` in `displacement`, `rotation`)",
+         [](const FieldMap& m, const Cap& c, const ReadContext&) {
+           const char* axes = "xyz";
+           for (int k = 0; k < 3; ++k) {
+             if (c.displacement[k] && c.force[k] != 0.0)
+               m.require("force").fail(std::string("force component ") + axes[k] +
+                                       " acts on a prescribed displacement: give `~` for it "
+                                       "in `displacement`, or no force");
+             if (c.rotation[k] && c.moment[k] != 0.0)
+               m.require("moment").fail(std::string("moment component ") + axes[k] +
+                                        " acts on a prescribed rotation: give `~` for it in "
+                                        "`rotation`, or no moment");
+           }
+         });
+  return s;
+}
+
 /// `probes:` items: named points reported as displacement columns.
 Schema<Probe> probe_schema() {
   Schema<Probe> s;
@@ -752,6 +832,7 @@ Schema<Case> case_schema() {
            "pressure, gravity, traction and point-force loads");
   list_key(s, "cavities", &Case::cavities, cavity_schema(), "fluid-filled cavities");
   list_key(s, "dies", &Case::dies, die_schema(), "rigid dies");
+  list_key(s, "caps", &Case::caps, cap_schema(), "rigid end caps");
   list_key(s, "probes", &Case::probes, probe_schema(), "displacement probes");
   s.nested<SolverSettings>("solver", &Case::solver, solver_schema());
   s.nested<OutputSettings>("output", &Case::output, output_schema());

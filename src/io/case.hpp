@@ -106,6 +106,19 @@ struct Die {
 };
 
 /// A named point reported as ux/uy/uz columns (nearest node).
+/// A rigid end cap (physics/rigid_cap.hpp): the nodes of `surface` tied to a reference point.
+struct Cap {
+  std::string name;  ///< history columns `force_x:<name>`, `moment_x:<name>`, `ux:<name>`, ...
+  SurfaceRef surface;
+  std::optional<Vec3d> point;  ///< reference point [mm]; default: the mean of the surface's nodes
+  std::array<std::optional<double>, 3> displacement;  ///< prescribed [mm]; empty: free
+  std::array<std::optional<double>, 3> rotation;      ///< prescribed [rad]; empty: free
+  Vec3d force = Vec3d::Zero();                        ///< [N] on the free displacements
+  Vec3d moment = Vec3d::Zero();                       ///< [N mm] on the free rotations
+  Ramp ramp;
+  InputPlace place;
+};
+
 struct Probe {
   std::string name;
   Vec3d point = Vec3d::Zero();
@@ -175,6 +188,7 @@ struct Case {
   std::vector<Load> loads;
   std::vector<Cavity> cavities;
   std::vector<Die> dies;
+  std::vector<Cap> caps;
   std::vector<Probe> probes;
   SolverSettings solver;
   OutputSettings output;

@@ -184,6 +184,7 @@ void check_case_against_mesh(const Case& c, const Mesh& mesh) {
     if (load.type == LoadType::point_force) check_point_force(mesh, load);
   }
   for (const Cavity& cavity : c.cavities) check_surface(c, mesh, cavity.surface);
+  for (const Cap& cap : c.caps) check_surface(c, mesh, cap.surface);
   for (const Die& die : c.dies) {
     if (die.region) check_surface(c, mesh, *die.region);
     if (die.surface) check_surface(c, mesh, *die.surface);

@@ -67,6 +67,12 @@ FieldIndexSets make_field_index_sets(MPI_Comm comm, const DofMap& dofs, PetscInt
   return sets;
 }
 
+void request_factor_workspace(int percent) {
+  const std::string value = std::to_string(percent);
+  for (const char* prefix : {"", "stability_"})
+    set_default_option(prefix, "mat_mumps_icntl_14", value.c_str());
+}
+
 void configure_iterative(KSP ksp, IS u, IS p, const LinearSolverSettings& settings) {
   FE_CHECK((u == nullptr) == (p == nullptr), "configure_iterative: give both index sets or none");
   // Flexible GMRES: right preconditioning, so the tolerance applies to the true residual

@@ -73,4 +73,10 @@ FieldIndexSets make_field_index_sets(MPI_Comm comm, const DofMap& dofs, PetscInt
 /// Calling it again on the same KSP replaces the earlier split.
 void configure_iterative(KSP ksp, IS u, IS p, const LinearSolverSettings& settings);
 
+/// Asks MUMPS for `percent` % more working space than its analysis estimates (ICNTL(14)) in the
+/// Newton and stability factorisations, unless the user gave that option. A tangent bordered by
+/// many multipliers (a rigid cap's ties) delays pivots beyond MUMPS' default 20 %, which fails
+/// with INFO(1) = -9. Call before the solvers are set up; needs PETSc initialised.
+void request_factor_workspace(int percent);
+
 }  // namespace plisse

@@ -1,0 +1,141 @@
+#include "physics/rigid_cap.hpp"
+
+#include <set>
+
+#include "core/error.hpp"
+#include "physics/rotation.hpp"
+
+namespace plisse {
+
+RigidCap::RigidCap(const Mesh& mesh, RigidCapSettings settings, const std::vector<int>& nodes,
+                   const std::vector<ConstrainedComponent>& constraints)
+    : mesh_(mesh), settings_(std::move(settings)) {
+  std::set<std::pair<int, int>> constrained;
+  for (const auto& c : constraints) constrained.insert({c.node, c.component});
+  for (int v : nodes) {
+    const std::size_t before = ties_.size();
+    for (int i = 0; i < 3; ++i)
+      if (!constrained.count({v, i})) ties_.push_back({v, i});
+    if (ties_.size() == before) continue;
+    nodes_.push_back(v);
+    first_tie_.push_back(static_cast<int>(before));
+  }
+  first_tie_.push_back(static_cast<int>(ties_.size()));
+  FE_CHECK(!ties_.empty(), "cap '" << settings_.name
+                                   << "': every component of its nodes is already prescribed by "
+                                      "the boundary conditions: nothing to tie");
+  for (int m = 0; m < 6; ++m) {
+    const auto& given = m < 3 ? settings_.displacement[m] : settings_.rotation[m - 3];
+    free_index_[m] = given ? -1 : n_free_++;
+  }
+}
+
+int RigidCap::n_global_unknowns() const { return n_ties() + n_free_; }
+
+std::array<double, 6> RigidCap::motion(double t, std::span<const double> x) const {
+  const double factor = settings_.ramp.factor(t);
+  std::array<double, 6> q{};
+  for (int m = 0; m < 6; ++m) {
+    const auto& given = m < 3 ? settings_.displacement[m] : settings_.rotation[m - 3];
+    q[m] = given ? factor * *given : x[motion_dof(m)];
+  }
+  return q;
+}
+
+void RigidCap::add_couplings(std::vector<std::pair<int, int>>& pairs) const {
+  for (int k = 0; k < n_ties(); ++k) {
+    const int l = multiplier_dof(k), u = node_dof(ties_[k].node, ties_[k].component);
+    pairs.emplace_back(l, u);
+    pairs.emplace_back(u, l);
+    pairs.emplace_back(l, l);
+    for (int m = 0; m < 6; ++m)
+      if (const int q = motion_dof(m); q >= 0) {
+        pairs.emplace_back(l, q);
+        pairs.emplace_back(q, l);
+      }
+  }
+  for (int m = 0; m < 6; ++m)
+    for (int n = 0; n < 6; ++n)
+      if (motion_dof(m) >= 0 && motion_dof(n) >= 0) pairs.emplace_back(motion_dof(m), motion_dof(n));
+}
+
+void RigidCap::assemble(double t, std::span<const double> x, std::span<double> residual,
+                        TangentSink* tangent) {
+  const std::array<double, 6> q = motion(t, x);
+  const Vec3d u_c(q[0], q[1], q[2]), theta(q[3], q[4], q[5]);
+  const double factor = settings_.ramp.factor(t);
+  Mat3d theta_theta = Mat3d::Zero();  // −Σ λ_a,i ∂²(R d_a)_i/∂θ∂θ   (G7)
+  Vec3d force_on_cap = Vec3d::Zero(), moment_rows = Vec3d::Zero();
+  for (std::size_t j = 0; j < nodes_.size(); ++j) {
+    const int v = nodes_[j];
+    const Vec3d d = mesh_.nodes[v] - settings_.point;
+    const RotatedVector w = rotate(theta, d);
+    // g = x_a − (X_c + u_c) − R d   (G4)
+    Vec3d g;
+    for (int i = 0; i < 3; ++i) g[i] = d[i] + x[node_dof(v, i)] - u_c[i] - w.value[i];
+    for (int k = first_tie_[j]; k < first_tie_[j + 1]; ++k) {
+      const int i = ties_[k].component, l = multiplier_dof(k), u = node_dof(v, i);
+      const double lambda = x[l];
+      residual[u] += lambda;  // (G5)
+      residual[l] += g[i];
+      force_on_cap[i] += lambda;
+      moment_rows += lambda * w.jacobian.row(i).transpose();
+      theta_theta -= lambda * w.hessian[i];
+      if (!tangent) continue;
+      const double one = 1.0;
+      tangent->add({&u, 1}, {&l, 1}, {&one, 1});
+      tangent->add({&l, 1}, {&u, 1}, {&one, 1});
+      for (int m = 0; m < 6; ++m) {
+        const int dof = motion_dof(m);
+        if (dof < 0) continue;
+        // ∂g_i/∂u_c = −e_i, ∂g_i/∂θ = −J_i   (G5), and the transposed entry of row m
+        const double entry = m < 3 ? -(i == m ? 1.0 : 0.0) : -w.jacobian(i, m - 3);
+        if (entry == 0.0) continue;
+        tangent->add({&l, 1}, {&dof, 1}, {&entry, 1});
+        tangent->add({&dof, 1}, {&l, 1}, {&entry, 1});
+      }
+    }
+  }
+  // Rows of the free motions: −Σ λ − F and −Σ J^T λ − M   (G6)
+  for (int m = 0; m < 6; ++m) {
+    const int dof = motion_dof(m);
+    if (dof < 0) continue;
+    residual[dof] += m < 3 ? -force_on_cap[m] - factor * settings_.force[m]
+                           : -moment_rows[m - 3] - factor * settings_.moment[m - 3];
+    if (!tangent || m < 3) continue;
+    for (int n = 3; n < 6; ++n) {
+      const int other = motion_dof(n);
+      if (other < 0) continue;
+      const double entry = theta_theta(m - 3, n - 3);
+      tangent->add({&dof, 1}, {&other, 1}, {&entry, 1});
+    }
+  }
+}
+
+std::vector<std::string> RigidCap::history_columns() const {
+  std::vector<std::string> out;
+  for (const char* prefix : {"force_", "moment_", "u", "r"})
+    for (const char* axis : {"x", "y", "z"})
+      out.push_back(std::string(prefix) + axis + ":" + settings_.name);
+  return out;
+}
+
+std::vector<double> RigidCap::history_values(double t, std::span<const double> x) const {
+  const std::array<double, 6> q = motion(t, x);
+  const Vec3d centre = settings_.point + Vec3d(q[0], q[1], q[2]);
+  Vec3d force = Vec3d::Zero(), moment = Vec3d::Zero();
+  for (std::size_t j = 0; j < nodes_.size(); ++j) {
+    const int v = nodes_[j];
+    Vec3d on_body = Vec3d::Zero();  // the cap's force on the node: −λ   (G5)
+    for (int k = first_tie_[j]; k < first_tie_[j + 1]; ++k)
+      on_body[ties_[k].component] = -x[multiplier_dof(k)];
+    Vec3d position = mesh_.nodes[v];
+    for (int i = 0; i < 3; ++i) position[i] += x[node_dof(v, i)];
+    force += on_body;
+    moment += (position - centre).cross(on_body);
+  }
+  return {force.x(), force.y(), force.z(), moment.x(), moment.y(), moment.z(),
+          q[0],      q[1],      q[2],      q[3],       q[4],       q[5]};
+}
+
+}  // namespace plisse

@@ -1,0 +1,113 @@
+// Rigid cap (docs/theory/caps.md, G4-G7): the tangent is the derivative of the residual and
+// symmetric, with every motion free or some prescribed; components a boundary condition already
+// prescribes are not tied; the couplings cover every tangent entry.
+#include "physics/rigid_cap.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "mesh/box_mesh.hpp"
+#include "mesh/topology.hpp"
+#include "support/term_testing.hpp"
+
+namespace plisse {
+namespace {
+
+using test::DenseSink;
+using test::random_state;
+using test::term_residual;
+
+struct CapSetup {
+  Mesh mesh;
+  std::unique_ptr<RigidCap> cap;
+  int n = 0;  ///< full-state size
+};
+
+CapSetup make_cap(bool all_free, const std::vector<ConstrainedComponent>& constraints = {}) {
+  CapSetup s;
+  s.mesh = make_box_mesh({2.0, 2.0, 1.0}, {2, 2, 1}, 2);
+  RigidCapSettings settings;
+  settings.name = "cap";
+  settings.point = Vec3d(1.0, 0.8, 1.1);
+  settings.force = Vec3d(0.3, -0.2, 0.1);
+  settings.moment = Vec3d(-0.4, 0.25, 0.6);
+  settings.ramp = {0.0, 2.0};
+  if (!all_free) {
+    settings.displacement = {std::nullopt, 0.2, std::nullopt};
+    settings.rotation = {0.3, std::nullopt, -0.1};
+    settings.force.y() = 0.0;
+    settings.moment.x() = settings.moment.z() = 0.0;
+  }
+  const std::set<int> nodes = triangle_nodes(s.mesh, s.mesh.surface_tags.at("top"));
+  s.cap = std::make_unique<RigidCap>(s.mesh, settings, std::vector<int>(nodes.begin(), nodes.end()),
+                                     constraints);
+  s.cap->set_first_global_dof(kValuesPerNode * s.mesh.n_nodes());
+  s.n = kValuesPerNode * s.mesh.n_nodes() + s.cap->n_global_unknowns();
+  return s;
+}
+
+void expect_tangent_is_derivative(CapSetup& s) {
+  auto x = random_state(s.n, 17, 0.2);
+  for (int k = kValuesPerNode * s.mesh.n_nodes(); k < s.n; ++k) x[k] *= 5.0;  // λ, θ of O(1)
+  DenseSink sink(s.n);
+  std::vector<double> r(s.n, 0.0);
+  s.cap->assemble(1.0, x, r, &sink);
+  const double h = 1e-6, scale = sink.K.cwiseAbs().maxCoeff();
+  double max_error = 0.0;
+  for (int j = 0; j < s.n; ++j) {
+    auto xp = x, xm = x;
+    xp[j] += h;
+    xm[j] -= h;
+    const Eigen::VectorXd fd =
+        (term_residual(*s.cap, 1.0, xp) - term_residual(*s.cap, 1.0, xm)) / (2 * h);
+    max_error = std::max(max_error, (fd - sink.K.col(j)).cwiseAbs().maxCoeff());
+  }
+  EXPECT_LT(max_error, 1e-8 * scale);
+  EXPECT_LT((sink.K - sink.K.transpose()).cwiseAbs().maxCoeff(), 1e-14 * scale);
+  // Every non-zero entry is among the declared couplings or in the nodal block.
+  std::vector<std::pair<int, int>> pairs;
+  s.cap->add_couplings(pairs);
+  const std::set<std::pair<int, int>> declared(pairs.begin(), pairs.end());
+  const int nodal = kValuesPerNode * s.mesh.n_nodes();
+  for (int i = 0; i < s.n; ++i)
+    for (int j = 0; j < s.n; ++j)
+      if (sink.K(i, j) != 0.0 && (i >= nodal || j >= nodal)) {
+        EXPECT_TRUE(declared.count({i, j})) << "entry " << i << ", " << j;
+      }
+}
+
+TEST(RigidCap, TangentIsTheSymmetricDerivativeWithEveryMotionFree) {
+  CapSetup s = make_cap(true);
+  EXPECT_EQ(s.cap->n_global_unknowns(), s.cap->n_ties() + 6);
+  expect_tangent_is_derivative(s);
+}
+
+TEST(RigidCap, TangentIsTheSymmetricDerivativeWithSomeMotionsPrescribed) {
+  CapSetup s = make_cap(false);
+  EXPECT_EQ(s.cap->n_global_unknowns(), s.cap->n_ties() + 3);
+  expect_tangent_is_derivative(s);
+  // Prescribed motions follow the ramp: half-way at t = 1.
+  const std::vector<double> x(s.n, 0.0);
+  const auto q = s.cap->motion(1.0, x);
+  EXPECT_DOUBLE_EQ(q[1], 0.1);
+  EXPECT_DOUBLE_EQ(q[3], 0.15);
+  EXPECT_DOUBLE_EQ(q[5], -0.05);
+}
+
+TEST(RigidCap, ComponentsPrescribedByABoundaryConditionAreNotTied) {
+  const Mesh mesh = make_box_mesh({2.0, 2.0, 1.0}, {2, 2, 1}, 2);
+  const std::set<int> nodes = triangle_nodes(mesh, mesh.surface_tags.at("top"));
+  const int first = *nodes.begin();
+  const CapSetup s = make_cap(true, {{first, 2, 0.0, {}}});
+  EXPECT_EQ(s.cap->n_ties(), 3 * static_cast<int>(nodes.size()) - 1);
+  EXPECT_EQ(s.cap->negative_directions(), s.cap->n_ties());
+  RigidCapSettings settings;
+  std::vector<ConstrainedComponent> all;
+  for (int v : nodes)
+    for (int i = 0; i < 3; ++i) all.push_back({v, i, 0.0, {}});
+  EXPECT_THROW(RigidCap(mesh, settings, std::vector<int>(nodes.begin(), nodes.end()), all), Error);
+}
+
+}  // namespace
+}  // namespace plisse
