@@ -56,7 +56,8 @@ void RigidCap::add_couplings(std::vector<std::pair<int, int>>& pairs) const {
   }
   for (int m = 0; m < 6; ++m)
     for (int n = 0; n < 6; ++n)
-      if (motion_dof(m) >= 0 && motion_dof(n) >= 0) pairs.emplace_back(motion_dof(m), motion_dof(n));
+      if (motion_dof(m) >= 0 && motion_dof(n) >= 0)
+        pairs.emplace_back(motion_dof(m), motion_dof(n));
 }
 
 void RigidCap::assemble(double t, std::span<const double> x, std::span<double> residual,

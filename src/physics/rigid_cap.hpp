@@ -58,13 +58,15 @@ class RigidCap : public ModelTerm {
   };
   /// Full-state index of the multiplier of tie k, and of free motion m (0..5; -1 if prescribed).
   int multiplier_dof(int k) const { return first_dof_ + k; }
-  int motion_dof(int m) const { return free_index_[m] < 0 ? -1 : first_dof_ + n_ties() + free_index_[m]; }
+  int motion_dof(int m) const {
+    return free_index_[m] < 0 ? -1 : first_dof_ + n_ties() + free_index_[m];
+  }
 
   const Mesh& mesh_;
   RigidCapSettings settings_;
-  std::vector<Tie> ties_;           ///< by node, then component
-  std::vector<int> nodes_;          ///< the tied nodes (each with at least one tie)
-  std::vector<int> first_tie_;      ///< per tied node: index of its first tie; nodes_.size() + 1
+  std::vector<Tie> ties_;          ///< by node, then component
+  std::vector<int> nodes_;         ///< the tied nodes (each with at least one tie)
+  std::vector<int> first_tie_;     ///< per tied node: index of its first tie; nodes_.size() + 1
   std::array<int, 6> free_index_;  ///< index among the free motions, -1 if prescribed
   int n_free_ = 0;
   int first_dof_ = -1;

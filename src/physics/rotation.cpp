@@ -34,16 +34,16 @@ RotatedVector rotate(const Vec3d& theta, const Vec3d& d) {
            "rotation angle " << std::sqrt(s) << " rad is beyond 2 pi");
   const auto [a, da, dda] = series(s, 1);
   const auto [b, db, ddb] = series(s, 2);
-  const Vec3d c = theta.cross(d);           // θ × d
-  const double p = theta.dot(d);            // θ · d
-  const Vec3d v = p * theta - s * d;        // θ × (θ × d)
+  const Vec3d c = theta.cross(d);     // θ × d
+  const double p = theta.dot(d);      // θ · d
+  const Vec3d v = p * theta - s * d;  // θ × (θ × d)
   RotatedVector out;
-  out.value = d + a * c + b * v;            // (G1)
+  out.value = d + a * c + b * v;  // (G1)
   // ∂c/∂θ_j = e_j × d = −[d]× e_j;  ∂v/∂θ_j = e_j p + θ d_j − 2 θ_j d   (G2)
   const Mat3d dc = -cross_matrix(d);
   const Mat3d dv = p * Mat3d::Identity() + theta * d.transpose() - 2.0 * d * theta.transpose();
-  out.jacobian = 2.0 * da * c * theta.transpose() + a * dc + 2.0 * db * v * theta.transpose() +
-                 b * dv;
+  out.jacobian =
+      2.0 * da * c * theta.transpose() + a * dc + 2.0 * db * v * theta.transpose() + b * dv;
   // (G3): second derivatives, component i of R d.
   for (int i = 0; i < 3; ++i) {
     Mat3d H;

@@ -38,8 +38,7 @@ TEST_P(Rotation, JacobianAndHessianAreTheDerivativesOfTheValue) {
     const Vec3d column = (p.value - m.value) / (2 * h);
     EXPECT_LT((column - w.jacobian.col(j)).norm(), 1e-9) << "θ = " << theta.transpose();
     for (int i = 0; i < 3; ++i) {
-      const Vec3d row_derivative =
-          (p.jacobian.row(i) - m.jacobian.row(i)).transpose() / (2 * h);
+      const Vec3d row_derivative = (p.jacobian.row(i) - m.jacobian.row(i)).transpose() / (2 * h);
       EXPECT_LT((row_derivative - w.hessian[i].col(j)).norm(), 1e-8)
           << "component " << i << ", θ = " << theta.transpose();
     }
@@ -54,9 +53,7 @@ INSTANTIATE_TEST_SUITE_P(Angles, Rotation,
                                            Vec3d(0.3, 0, 0), Vec3d(0.5, -1.0, 1.5),
                                            Vec3d(-2.0, 1.0, 2.2), Vec3d(0, 0, 6.0)));
 
-TEST(Rotation, AngleBeyondTwoPiIsRefused) {
-  EXPECT_THROW(rotate(Vec3d(0, 7.0, 0), kD), Error);
-}
+TEST(Rotation, AngleBeyondTwoPiIsRefused) { EXPECT_THROW(rotate(Vec3d(0, 7.0, 0), kD), Error); }
 
 }  // namespace
 }  // namespace plisse

@@ -42,16 +42,16 @@ double last(const HistoryTable& h, const std::string& column) {
 TEST(RigidCap, BodyHungOnATurnedCapFollowsTheRigidMotion) {
   const Vec3d theta(0.5, -1.0, 1.5), shift(0.1, 0.2, 0.3), centre(1.0, 1.0, 0.0);
   for (const std::string element : {"mini", "taylor-hood"}) {
-    const HistoryTable h = run_case(
-        "rotation-" + element,
-        "element: " + element +
-            "\n"
-            "mesh: {generate: cube, edge: 2.0, divisions: 2}\n"
-            "material: {model: neo-hookean, c1: 0.25}\n"
-            "caps: [{name: cap, surface: bottom, displacement: [0.1, 0.2, 0.3],"
-            " rotation: [0.5, -1.0, 1.5]}]\n"
-            "probes: [{name: a, point: [2, 2, 2]}, {name: b, point: [0, 2, 1]}]\n"
-            "solver: {steps: 4, newton: {rtol: 1.0e-11, atol: 1.0e-13}}\n");
+    const HistoryTable h =
+        run_case("rotation-" + element,
+                 "element: " + element +
+                     "\n"
+                     "mesh: {generate: cube, edge: 2.0, divisions: 2}\n"
+                     "material: {model: neo-hookean, c1: 0.25}\n"
+                     "caps: [{name: cap, surface: bottom, displacement: [0.1, 0.2, 0.3],"
+                     " rotation: [0.5, -1.0, 1.5]}]\n"
+                     "probes: [{name: a, point: [2, 2, 2]}, {name: b, point: [0, 2, 1]}]\n"
+                     "solver: {steps: 4, newton: {rtol: 1.0e-11, atol: 1.0e-13}}\n");
     ASSERT_FALSE(h.rows.empty());
     const Eigen::AngleAxisd R(theta.norm(), theta.normalized());
     for (const auto& [probe, X] : {std::pair<std::string, Vec3d>{"a", Vec3d(2, 2, 2)},
@@ -72,15 +72,14 @@ TEST(RigidCap, BodyHungOnATurnedCapFollowsTheRigidMotion) {
 TEST(RigidCap, FreeCapPassesItsForceAndMomentToTheBody) {
   for (const std::string element : {"mini", "taylor-hood"}) {
     const HistoryTable h = run_case(
-        "free-" + element,
-        "element: " + element +
-            "\n"
-            "mesh: {generate: cube, edge: 2.0, divisions: 2}\n"
-            "material: {model: neo-hookean, c1: 0.25}\n"
-            "boundary: [{type: fixed, name: base, surface: bottom}]\n"
-            "caps: [{name: cap, surface: top, rotation: [0, ~, 0],"
-            " force: [0.01, 0.02, -0.03], moment: [0, 0.004, 0]}]\n"
-            "solver: {steps: 2, newton: {rtol: 1.0e-12, atol: 1.0e-14}}\n");
+        "free-" + element, "element: " + element +
+                               "\n"
+                               "mesh: {generate: cube, edge: 2.0, divisions: 2}\n"
+                               "material: {model: neo-hookean, c1: 0.25}\n"
+                               "boundary: [{type: fixed, name: base, surface: bottom}]\n"
+                               "caps: [{name: cap, surface: top, rotation: [0, ~, 0],"
+                               " force: [0.01, 0.02, -0.03], moment: [0, 0.004, 0]}]\n"
+                               "solver: {steps: 2, newton: {rtol: 1.0e-12, atol: 1.0e-14}}\n");
     ASSERT_FALSE(h.rows.empty());
     const double F[3] = {0.01, 0.02, -0.03};
     const char* axes[3] = {"x", "y", "z"};
@@ -102,14 +101,14 @@ TEST(RigidCap, EndMomentBendsAStripIntoACircularArc) {
   // rotation φ = M L / (E I) = 0.2 rad (E = 6 c1 = 3 MPa, I = b t^3 / 12 = 1/6 mm^4) and, for any
   // φ, the arc's end at ux = L (sin φ / φ − 1), uz = −L (1 − cos φ) / φ.
   const double L = 20.0, M = 0.005, EI = 3.0 / 6.0;
-  const HistoryTable h = run_case(
-      "bending",
-      "mesh: {generate: sheet, length: 20.0, width: 2.0, thickness: 1.0, layers: 1,"
-      " element_size: 1.0}\n"
-      "material: {model: neo-hookean, c1: 0.5}\n"
-      "boundary: [{type: fixed, name: clamp, surface: left}]\n"
-      "caps: [{name: end, surface: right, moment: [0, 0.005, 0]}]\n"
-      "solver: {steps: 4, newton: {rtol: 1.0e-11, atol: 1.0e-14}}\n");
+  const HistoryTable h =
+      run_case("bending",
+               "mesh: {generate: sheet, length: 20.0, width: 2.0, thickness: 1.0, layers: 1,"
+               " element_size: 1.0}\n"
+               "material: {model: neo-hookean, c1: 0.5}\n"
+               "boundary: [{type: fixed, name: clamp, surface: left}]\n"
+               "caps: [{name: end, surface: right, moment: [0, 0.005, 0]}]\n"
+               "solver: {steps: 4, newton: {rtol: 1.0e-11, atol: 1.0e-14}}\n");
   ASSERT_EQ(h.rows.size(), 4u);
   std::size_t factor = 0, ry = 0, uz = 0, my = 0;
   for (std::size_t i = 0; i < h.columns.size(); ++i) {
