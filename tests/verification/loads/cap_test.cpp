@@ -14,7 +14,7 @@
 
 #include "core/types.hpp"
 #include "io/history_writer.hpp"
-#include "support/run_plisse.hpp"
+#include "support/run_case.hpp"
 
 namespace plisse {
 namespace {
@@ -22,21 +22,11 @@ namespace {
 namespace fs = std::filesystem;
 
 HistoryTable run_case(const std::string& name, const std::string& yaml) {
-  const fs::path dir = test::scratch_directory("cap-" + name);
-  fs::create_directories(dir);
-  std::ofstream(dir / "case.yaml") << yaml;
-  const int status = test::run_plisse(
-      "run " + (dir / "case.yaml").string() + " -o " + (dir / "run").string(), dir / "log.txt");
-  EXPECT_EQ(status, 0) << "see " << (dir / "log.txt").string();
-  if (status != 0) return {};
-  return read_history(dir / "run" / "history.csv");
+  return test::run_case_text(test::scratch_directory("cap-" + name), yaml);
 }
 
 double last(const HistoryTable& h, const std::string& column) {
-  for (std::size_t i = 0; i < h.columns.size(); ++i)
-    if (h.columns[i] == column) return h.rows.back()[i];
-  ADD_FAILURE() << "no column " << column;
-  return 0.0;
+  return h.rows.back()[test::history_column(h, column)];
 }
 
 TEST(RigidCap, BodyHungOnATurnedCapFollowsTheRigidMotion) {

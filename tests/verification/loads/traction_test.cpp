@@ -15,31 +15,15 @@
 #include "mesh/box_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "mesh/second_order.hpp"
-#include "support/run_plisse.hpp"
+#include "support/run_case.hpp"
 
 namespace plisse {
 namespace {
 
 namespace fs = std::filesystem;
 
-/// Writes `yaml` as `dir`/case.yaml, runs it into `dir`/run and returns the history (an empty
-/// table, with a test failure, when the run fails).
-HistoryTable run_case(const fs::path& dir, const std::string& yaml) {
-  fs::create_directories(dir);
-  std::ofstream(dir / "case.yaml") << yaml;
-  const int status = test::run_plisse(
-      "run " + (dir / "case.yaml").string() + " -o " + (dir / "run").string(), dir / "log.txt");
-  EXPECT_EQ(status, 0) << "see " << (dir / "log.txt").string();
-  if (status != 0) return {};
-  return read_history(dir / "run" / "history.csv");
-}
-
-std::size_t column(const HistoryTable& h, const std::string& name) {
-  for (std::size_t i = 0; i < h.columns.size(); ++i)
-    if (h.columns[i] == name) return i;
-  ADD_FAILURE() << "no column " << name;
-  return 0;
-}
+using test::history_column;
+using test::run_case_text;
 
 // --- A block under an end traction ------------------------------------------------------------
 
@@ -81,11 +65,12 @@ std::string block_case(const std::string& element, const std::string& load, int 
 void expect_closed_form_block(const std::string& element, const std::string& load) {
   const auto dir = test::scratch_directory("traction-block-" + element + "-" +
                                            std::to_string(std::hash<std::string>{}(load) % 1000));
-  const HistoryTable h = run_case(dir, block_case(element, load, 4));
+  const HistoryTable h = run_case_text(dir, block_case(element, load, 4));
   ASSERT_EQ(h.rows.size(), 4u);
-  const std::size_t factor = column(h, "load_factor"), stretch = column(h, "stretch"),
-                    lz = column(h, "load_z:pull"), lx = column(h, "load_x:pull"),
-                    sxx = column(h, "cauchy_xx"), szz = column(h, "cauchy_zz");
+  const std::size_t factor = history_column(h, "load_factor"),
+                    stretch = history_column(h, "stretch"), lz = history_column(h, "load_z:pull"),
+                    lx = history_column(h, "load_x:pull"), sxx = history_column(h, "cauchy_xx"),
+                    szz = history_column(h, "cauchy_zz");
   for (const auto& row : h.rows) {
     const double P = row[factor] * kTraction;
     const double l = stretch_under(P);
@@ -117,13 +102,13 @@ TEST(EndTraction, WorkConvergesToTheStoredEnergyAtSecondOrderInTheStep) {
   for (int k = 0; k < 2; ++k) {
     const int steps = 5 << k;
     const HistoryTable h =
-        run_case(test::scratch_directory("traction-work-" + std::to_string(steps)),
-                 block_case("mini", "traction: [0, 0, 1.0]", steps));
+        run_case_text(test::scratch_directory("traction-work-" + std::to_string(steps)),
+                      block_case("mini", "traction: [0, 0, 1.0]", steps));
     ASSERT_EQ(h.rows.size(), static_cast<std::size_t>(steps));
-    const double l = h.rows.back()[column(h, "stretch")];
+    const double l = h.rows.back()[history_column(h, "stretch")];
     const double stored = kC1 * (l * l + 2 / l - 3) * 125.0;
-    EXPECT_NEAR(h.rows.back()[column(h, "strain_energy")], stored, 1e-8 * stored);
-    error[k] = h.rows.back()[column(h, "work:pull")] - stored;
+    EXPECT_NEAR(h.rows.back()[history_column(h, "strain_energy")], stored, 1e-8 * stored);
+    error[k] = h.rows.back()[history_column(h, "work:pull")] - stored;
   }
   EXPECT_LT(std::abs(error[1]), 0.01 * 86.6) << "within 1 % with 10 steps";
   const double ratio = error[0] / error[1];
@@ -136,17 +121,18 @@ TEST(FollowerNormalTraction, IsTheCauchyStressOfTheBlockWithBothElements) {
   // stress σ_zz = 2 c1 (λ^2 − 1/λ) of the homogeneous stretch, and its resultant T times the
   // deformed face area 25/λ mm^2 (the lateral stretches are 1/sqrt(λ)).
   for (const std::string element : {"mini", "taylor-hood"}) {
-    const HistoryTable h = run_case(test::scratch_directory("follower-normal-" + element),
-                                    block_case(element, "normal: 1.0", 4, "follower-traction"));
+    const HistoryTable h =
+        run_case_text(test::scratch_directory("follower-normal-" + element),
+                      block_case(element, "normal: 1.0", 4, "follower-traction"));
     ASSERT_EQ(h.rows.size(), 4u);
     for (const auto& row : h.rows) {
-      const double T = row[column(h, "load_factor")] * kTraction;
+      const double T = row[history_column(h, "load_factor")] * kTraction;
       double l = 1.0;  // Newton on 2 c1 (λ^2 − 1/λ) = T
       for (int k = 0; k < 50; ++k)
         l -= (2 * kC1 * (l * l - 1 / l) - T) / (2 * kC1 * (2 * l + 1 / (l * l)));
-      EXPECT_NEAR(row[column(h, "stretch")], l, 1e-9 * l) << element << ", T = " << T;
-      EXPECT_NEAR(row[column(h, "cauchy_zz")], T, 1e-8 * T) << element;
-      EXPECT_NEAR(row[column(h, "load_z:pull")], T * 25.0 / l, 1e-9 * T * 25.0) << element;
+      EXPECT_NEAR(row[history_column(h, "stretch")], l, 1e-9 * l) << element << ", T = " << T;
+      EXPECT_NEAR(row[history_column(h, "cauchy_zz")], T, 1e-8 * T) << element;
+      EXPECT_NEAR(row[history_column(h, "load_z:pull")], T * 25.0 / l, 1e-9 * T * 25.0) << element;
     }
   }
 }
@@ -157,24 +143,24 @@ TEST(PointForce, ClampedBaseCarriesTheForceAndTheLogNamesTheNode) {
   for (const std::string element : {"mini", "taylor-hood"}) {
     const auto dir = test::scratch_directory("point-force-" + element);
     const HistoryTable h =
-        run_case(dir, "element: " + element +
-                          "\n"
-                          "mesh: {generate: cube, edge: 5.0, divisions: 2}\n"
-                          "material: {model: neo-hookean, c1: 0.25}\n"
-                          "boundary: [{type: fixed, name: base, surface: bottom}]\n"
-                          "loads:\n"
-                          "  - {type: point-force, name: tip, point: [2.5, 2.6, 5.1],"
-                          " force: [0.2, -0.1, -0.5]}\n"
-                          "solver: {steps: 2, newton: {rtol: 1.0e-12, atol: 1.0e-14}}\n");
+        run_case_text(dir, "element: " + element +
+                               "\n"
+                               "mesh: {generate: cube, edge: 5.0, divisions: 2}\n"
+                               "material: {model: neo-hookean, c1: 0.25}\n"
+                               "boundary: [{type: fixed, name: base, surface: bottom}]\n"
+                               "loads:\n"
+                               "  - {type: point-force, name: tip, point: [2.5, 2.6, 5.1],"
+                               " force: [0.2, -0.1, -0.5]}\n"
+                               "solver: {steps: 2, newton: {rtol: 1.0e-12, atol: 1.0e-14}}\n");
     ASSERT_FALSE(h.rows.empty());
     const auto& last = h.rows.back();
     const double F[3] = {0.2, -0.1, -0.5};
     const char* axes[3] = {"x", "y", "z"};
     for (int i = 0; i < 3; ++i) {
       // Equilibrium: the reaction of the base balances the force, to the Newton tolerance.
-      EXPECT_NEAR(last[column(h, std::string("force_") + axes[i] + ":base")], -F[i], 1e-9)
+      EXPECT_NEAR(last[history_column(h, std::string("force_") + axes[i] + ":base")], -F[i], 1e-9)
           << element << " component " << axes[i];
-      EXPECT_DOUBLE_EQ(last[column(h, std::string("load_") + axes[i] + ":tip")], F[i]);
+      EXPECT_DOUBLE_EQ(last[history_column(h, std::string("load_") + axes[i] + ":tip")], F[i]);
     }
     std::ifstream log(dir / "run" / "log.txt");
     const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
@@ -227,7 +213,7 @@ fs::path write_cook_mesh(const fs::path& dir, int n, int order) {
 double cook_tip_deflection(const std::string& element, int n) {
   const auto dir = test::scratch_directory("cook-" + element + "-" + std::to_string(n));
   const fs::path mesh = write_cook_mesh(dir, n, element == "mini" ? 1 : 2);
-  const HistoryTable h = run_case(
+  const HistoryTable h = run_case_text(
       dir, "element: " + element + "\nmesh: {file: " + mesh.string() +
                "}\n"
                "material: {model: neo-hookean, c1: 40.097, incompressibility: nearly,"
@@ -240,8 +226,8 @@ double cook_tip_deflection(const std::string& element, int n) {
                "probes: [{name: tip, point: [48, 60, 0]}]\n"
                "solver: {steps: 4, newton: {rtol: 1.0e-10, atol: 1.0e-12}}\n");
   if (h.rows.empty()) return NAN;
-  EXPECT_NEAR(h.rows.back()[column(h, "load_y:shear")], 32.0, 1e-12);
-  return h.rows.back()[column(h, "uy:tip")];
+  EXPECT_NEAR(h.rows.back()[history_column(h, "load_y:shear")], 32.0, 1e-12);
+  return h.rows.back()[history_column(h, "uy:tip")];
 }
 
 /// The limit of a sequence converging geometrically (Richardson / Aitken from its last three
