@@ -8,7 +8,9 @@
 //    an instability, its eigenmodes (SLEPc on the distributed tangent) and branch switching, and
 //    a mode imperfection read back from the .pvtu of the distributed run;
 //  - the paper's cube tension with the iterative linear solver on two ranks against the closed
-//    form (homogeneous deformation).
+//    form (homogeneous deformation);
+//  - a strip under a point force, a dead resultant, a follower traction and a rigid end cap
+//    (tests/regression/cases/strip-loads.yaml).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -49,15 +51,19 @@ fs::path run(const std::string& name, const std::string& case_file, const std::s
   return dir;
 }
 
-/// Columns that belong together (the components of a stress, a force or a displacement): a
+/// Columns that belong together (the components of a stress, a force, a moment, a displacement or
+/// a rotation vector): a
 /// component that is zero up to rounding is compared on the scale of its largest sibling.
 std::string column_group(const std::string& name) {
   const std::size_t colon = name.find(':');
   const std::string suffix = colon == std::string::npos ? "" : name.substr(colon);
   if (name.rfind("cauchy_", 0) == 0) return "cauchy";
   if (name.rfind("stretch", 0) == 0) return "stretch";
-  if (name.rfind("force_", 0) == 0) return "force" + suffix;
-  if (name.size() > 2 && name[0] == 'u' && name[2] == ':') return "u" + suffix;
+  for (const char* vector : {"force_", "load_", "moment_"})
+    if (name.rfind(vector, 0) == 0) return vector + suffix;
+  // ux:<name> ... (displacements), rx:<name> ... (a cap's rotation vector)
+  if (name.size() > 2 && (name[0] == 'u' || name[0] == 'r') && name[2] == ':')
+    return name.substr(0, 1) + suffix;
   return name;
 }
 
@@ -157,6 +163,20 @@ TEST(DistributedRun, TaylorHoodSphereOnAStickingFloorIsTheSameOnOneAndTwoRanks) 
   const fs::path one = run("plates-taylor-hood", plates, args, 1);
   const fs::path two = run("plates-taylor-hood", plates, args, 2);
   expect_same_history(one, two, 1e-6);
+  const nlohmann::json s1 = read_json_file(one / "summary.json"),
+                       s2 = read_json_file(two / "summary.json");
+  for (const char* key : {"steps", "newton_iterations", "free_dofs", "completed"})
+    EXPECT_EQ(s1[key], s2[key]) << key;
+}
+
+// A rigid cap (a multiplier per tied node and component, and free motions: global unknowns owned
+// by the last rank), a point force, a dead resultant and a follower traction on one strip.
+TEST(DistributedRun, CapAndTractionsAreTheSameOnTwoRanks) {
+  const std::string strip =
+      std::string(PLISSE_SOURCE_DIR) + "/tests/regression/cases/strip-loads.yaml";
+  const fs::path one = run("strip-loads", strip, "", 1);
+  const fs::path two = run("strip-loads", strip, "", 2);
+  expect_same_history(one, two, 1e-9);
   const nlohmann::json s1 = read_json_file(one / "summary.json"),
                        s2 = read_json_file(two / "summary.json");
   for (const char* key : {"steps", "newton_iterations", "free_dofs", "completed"})
