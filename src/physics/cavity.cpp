@@ -94,8 +94,12 @@ double CavityTerm::volume(std::span<const double> x) const {
 
 double CavityTerm::fluid_volume(double p_c, double t) const {
   const double ramp = cavity_.ramp.factor(t);
-  if (cavity_.control == CavityControl::volume)  // (cavities.md, C8)
+  if (cavity_.control == CavityControl::volume) {  // (cavities.md, C8)
+    // The ratio form as written before `volume` and `volume_change` existed: the same bits.
+    if (cavity_.target == VolumeTarget::ratio)
+      return reference_volume_ * (1.0 + (cavity_.volume_ratio - 1.0) * ramp);
     return reference_volume_ + (final_volume() - reference_volume_) * ramp;
+  }
   // (C9): V_c = (p0 + p_amb) V0 m(t) / (p_c + p_amb)
   const double p_amb = cavity_.ambient_pressure;
   FE_CHECK(p_c + p_amb > 0.0, "cavity '" << cavity_.name
