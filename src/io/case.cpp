@@ -18,6 +18,7 @@
 #include "io/case_solver_schema.hpp"
 #include "io/yaml_text.hpp"
 #include "material/registry.hpp"
+#include "physics/rotation.hpp"
 
 namespace plisse {
 namespace {
@@ -390,6 +391,17 @@ MaterialSection read_material(const Field& field, ReadContext& context) {
   return s;
 }
 
+/// A list of three numbers, `~` for a free (absent) component; `what` names them in the error.
+std::array<std::optional<double>, 3> optional_components(const Field& f, const std::string& what) {
+  if (!f.node().IsSequence() || f.node().size() != 3)
+    f.fail("expected a list of 3 " + what + ", ~ for a free component, got " + f.describe());
+  std::array<std::optional<double>, 3> out;
+  const std::vector<Field> items = f.items();
+  for (int k = 0; k < 3; ++k)
+    if (!items[k].is_null()) out[k] = items[k].real();
+  return out;
+}
+
 /// `boundary:` items: Dirichlet conditions on the nodes of a tagged surface.
 Schema<BoundaryCondition> boundary_schema() {
   Schema<BoundaryCondition> s;
@@ -411,19 +423,9 @@ Schema<BoundaryCondition> boundary_schema() {
          "displacement at the end of the ramp; `~` leaves a component free; at least one "
          "component must be given"},
         [](const Field& f, BoundaryCondition& bc, ReadContext&) {
-          if (!f.node().IsSequence() || f.node().size() != 3)
-            f.fail(
-                "expected a list of 3 displacements [ux, uy, uz] in mm, ~ for a free component, "
-                "got " +
-                f.describe());
-          const std::vector<Field> items = f.items();
-          bool any = false;
-          for (int k = 0; k < 3; ++k) {
-            if (items[k].is_null()) continue;
-            bc.value[k] = items[k].real();
-            any = true;
-          }
-          if (!any) f.fail("at least one component must be prescribed (all three are ~)");
+          bc.value = optional_components(f, "displacements [ux, uy, uz] in mm");
+          if (!bc.value[0] && !bc.value[1] && !bc.value[2])
+            f.fail("at least one component must be prescribed (all three are ~)");
         })
       .required();
   ramp_key(s, &BoundaryCondition::ramp, "time ramp of `value`").applies({"displacement"});
@@ -659,17 +661,6 @@ Schema<Die> die_schema() {
   return s;
 }
 
-/// A list of three numbers or `~` (free) [unit]: at least one must be given when `need_one`.
-std::array<std::optional<double>, 3> optional_components(const Field& f, const std::string& what) {
-  if (!f.node().IsSequence() || f.node().size() != 3)
-    f.fail("expected a list of 3 " + what + ", ~ for a free component, got " + f.describe());
-  std::array<std::optional<double>, 3> out;
-  const std::vector<Field> items = f.items();
-  for (int k = 0; k < 3; ++k)
-    if (!items[k].is_null()) out[k] = items[k].real();
-  return out;
-}
-
 /// `caps:` items: rigid end caps.
 Schema<Cap> cap_schema() {
   Schema<Cap> s;
@@ -712,7 +703,7 @@ Schema<Cap> cap_schema() {
           c.rotation = optional_components(f, "rotation components");
           double s2 = 0.0;
           for (const auto& r : c.rotation) s2 += r ? *r * *r : 0.0;
-          if (!(std::sqrt(s2) < 6.283185307179586))
+          if (!(std::sqrt(s2) < kMaxRotationAngle))
             f.fail("the rotation angle " + format_number(std::sqrt(s2)) +
                    " rad must be below 2π (a rotation vector cannot describe more)");
         });

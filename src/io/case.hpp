@@ -68,7 +68,7 @@ enum class LoadType { pressure, gravity, traction, point_force, follower_tractio
 struct Load {
   LoadType type = LoadType::pressure;
   std::string name;    ///< unique; history columns `pressure:<name>` or `load_x:<name>` ...
-  SurfaceRef surface;  ///< pressure and traction
+  SurfaceRef surface;  ///< pressure, traction and follower-traction
   double value = 0.0;  ///< pressure [MPa], positive pushes against the body's outward normal
   Vec3d acceleration = Vec3d::Zero();  ///< gravity only [mm/s^2], e.g. [0, -9810, 0]
   /// traction: a dead traction [MPa] per unit undeformed area (exactly one of `traction`, `force`)
@@ -105,7 +105,6 @@ struct Die {
   InputPlace place;
 };
 
-/// A named point reported as ux/uy/uz columns (nearest node).
 /// A rigid end cap (physics/rigid_cap.hpp): the nodes of `surface` tied to a reference point.
 struct Cap {
   std::string name;  ///< history columns `force_x:<name>`, `moment_x:<name>`, `ux:<name>`, ...
@@ -119,6 +118,7 @@ struct Cap {
   InputPlace place;
 };
 
+/// A named point reported as ux/uy/uz columns (nearest node).
 struct Probe {
   std::string name;
   Vec3d point = Vec3d::Zero();
