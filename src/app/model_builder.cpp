@@ -70,34 +70,6 @@ std::unique_ptr<ModelTerm> make_die_term(const Die& die, const Case& c, const Me
   return std::make_unique<DieContact>(mesh, geometry, settings, candidates, region);
 }
 
-/// The rigid cap term of `cap`: its surface's nodes, its reference point (default: their mean).
-/// Throws InputError (at the cap) when the boundary conditions leave nothing to tie.
-std::unique_ptr<ModelTerm> make_cap_term(const Cap& cap, const Mesh& mesh,
-                                         const std::vector<ConstrainedComponent>& constraints) {
-  const std::set<int> nodes = triangle_nodes(mesh, mesh.surface_tags.at(cap.surface.name));
-  RigidCapSettings settings;
-  settings.name = cap.name;
-  if (cap.point) {
-    settings.point = *cap.point;
-  } else {
-    for (int v : nodes) settings.point += mesh.nodes[v];
-    settings.point /= static_cast<double>(nodes.size());
-  }
-  settings.displacement = cap.displacement;
-  settings.rotation = cap.rotation;
-  settings.force = cap.force;
-  settings.moment = cap.moment;
-  settings.ramp = cap.ramp;
-  try {
-    return std::make_unique<RigidCap>(mesh, settings, std::vector<int>(nodes.begin(), nodes.end()),
-                                      constraints);
-  } catch (const InputError&) {
-    throw;
-  } catch (const Error& e) {
-    throw InputError(cap.place, e.what());
-  }
-}
-
 }  // namespace
 
 ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
@@ -146,7 +118,7 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
   }
   for (const Cavity& cavity : c.cavities)
     terms.push_back(std::make_unique<CavityTerm>(cavity, mesh, constraints));
-  for (const Cap& cap : c.caps) terms.push_back(make_cap_term(cap, mesh, constraints));
+  for (const Cap& cap : c.caps) terms.push_back(std::make_unique<RigidCap>(cap, mesh, constraints));
   if (!c.dies.empty()) {
     const double mu = shear_modulus(parts.material);
     for (const Die& die : c.dies) terms.push_back(make_die_term(die, c, mesh, mu));

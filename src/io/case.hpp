@@ -23,6 +23,7 @@
 #include "mesh/mesh.hpp"
 #include "mesh/surface_ref.hpp"
 #include "physics/boundary_condition.hpp"
+#include "physics/cap_settings.hpp"
 #include "physics/cavity_settings.hpp"
 #include "physics/die_contact_settings.hpp"
 #include "physics/die_geometry.hpp"
@@ -102,19 +103,6 @@ struct Die {
   Ramp ramp;                           ///< `move.ramp`
   double penalty = 0.0;                ///< [MPa/mm]; 0: chosen from the material and mesh
   double tolerance = 1e-3;             ///< allowed penetration [mm], > 0
-  InputPlace place;
-};
-
-/// A rigid end cap (physics/rigid_cap.hpp): the nodes of `surface` tied to a reference point.
-struct Cap {
-  std::string name;  ///< history columns `force_x:<name>`, `moment_x:<name>`, `ux:<name>`, ...
-  SurfaceRef surface;
-  std::optional<Vec3d> point;  ///< reference point [mm]; default: the mean of the surface's nodes
-  std::array<std::optional<double>, 3> displacement;  ///< prescribed [mm]; empty: free
-  std::array<std::optional<double>, 3> rotation;      ///< prescribed [rad]; empty: free
-  Vec3d force = Vec3d::Zero();                        ///< [N] on the free displacements
-  Vec3d moment = Vec3d::Zero();                       ///< [N mm] on the free rotations
-  Ramp ramp;
   InputPlace place;
 };
 

@@ -3,13 +3,22 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "mesh/topology.hpp"
 #include "physics/rotation.hpp"
 
 namespace plisse {
 
-RigidCap::RigidCap(const Mesh& mesh, RigidCapSettings settings, const std::vector<int>& nodes,
+RigidCap::RigidCap(const Cap& cap, const Mesh& mesh,
                    const std::vector<ConstrainedComponent>& constraints)
-    : mesh_(mesh), settings_(std::move(settings)) {
+    : mesh_(mesh), settings_(cap) {
+  const std::set<int> nodes = triangle_nodes(mesh, mesh.surface_tags.at(cap.surface.name));
+  if (cap.point) {
+    point_ = *cap.point;
+  } else {
+    point_ = Vec3d::Zero();
+    for (int v : nodes) point_ += mesh.nodes[v];
+    point_ /= static_cast<double>(nodes.size());
+  }
   std::set<std::pair<int, int>> constrained;
   for (const auto& c : constraints) constrained.insert({c.node, c.component});
   for (int v : nodes) {
@@ -21,9 +30,10 @@ RigidCap::RigidCap(const Mesh& mesh, RigidCapSettings settings, const std::vecto
     first_tie_.push_back(static_cast<int>(before));
   }
   first_tie_.push_back(static_cast<int>(ties_.size()));
-  FE_CHECK(!ties_.empty(), "cap '" << settings_.name
-                                   << "': every component of its nodes is already prescribed by "
-                                      "the boundary conditions: nothing to tie");
+  if (ties_.empty())
+    throw InputError(cap.place, "cap '" + cap.name +
+                                    "': every component of its nodes is already prescribed by "
+                                    "the boundary conditions: nothing to tie");
   for (int m = 0; m < 6; ++m) {
     const auto& given = m < 3 ? settings_.displacement[m] : settings_.rotation[m - 3];
     free_index_[m] = given ? -1 : n_free_++;
@@ -69,7 +79,7 @@ void RigidCap::assemble(double t, std::span<const double> x, std::span<double> r
   Vec3d force_on_cap = Vec3d::Zero(), moment_rows = Vec3d::Zero();
   for (std::size_t j = 0; j < nodes_.size(); ++j) {
     const int v = nodes_[j];
-    const Vec3d d = mesh_.nodes[v] - settings_.point;
+    const Vec3d d = mesh_.nodes[v] - point_;
     const RotatedVector w = rotate(theta, d);
     // g = x_a − (X_c + u_c) − R d   (G4)
     Vec3d g;
@@ -123,7 +133,7 @@ std::vector<std::string> RigidCap::history_columns() const {
 
 std::vector<double> RigidCap::history_values(double t, std::span<const double> x) const {
   const std::array<double, 6> q = motion(t, x);
-  const Vec3d centre = settings_.point + Vec3d(q[0], q[1], q[2]);
+  const Vec3d centre = point_ + Vec3d(q[0], q[1], q[2]);
   Vec3d force = Vec3d::Zero(), moment = Vec3d::Zero();
   for (std::size_t j = 0; j < nodes_.size(); ++j) {
     const int v = nodes_[j];

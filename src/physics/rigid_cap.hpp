@@ -9,30 +9,18 @@
 #include <vector>
 
 #include "mesh/mesh.hpp"
+#include "physics/cap_settings.hpp"
 #include "physics/dirichlet.hpp"
 #include "physics/model_term.hpp"
-#include "physics/ramp.hpp"
 
 namespace plisse {
 
-struct RigidCapSettings {
-  std::string name;
-  Vec3d point = Vec3d::Zero();  ///< the reference point X_c [mm]
-  /// Prescribed displacement of X_c [mm] and rotation vector [rad] at the end of the ramp, by
-  /// component; an empty one is free.
-  std::array<std::optional<double>, 3> displacement, rotation;
-  Vec3d force = Vec3d::Zero();   ///< [N] on the free displacement components, ramped
-  Vec3d moment = Vec3d::Zero();  ///< [N mm] on the free rotation components, ramped (G6)
-  Ramp ramp;
-};
-
 class RigidCap : public ModelTerm {
  public:
-  /// Ties every node of `nodes` (a tagged surface's corners and edge nodes) to the cap, except
-  /// the components that `constraints` already prescribe (the boundary condition wins there).
-  /// Borrows `mesh`. Throws plisse::Error when nothing is left to tie.
-  RigidCap(const Mesh& mesh, RigidCapSettings settings, const std::vector<int>& nodes,
-           const std::vector<ConstrainedComponent>& constraints);
+  /// Ties every node of `cap.surface` (corners and edge nodes) to the cap, except the components
+  /// that `constraints` already prescribe (the boundary condition wins there). Borrows `mesh`.
+  /// Throws InputError at `cap.place` when nothing is left to tie.
+  RigidCap(const Cap& cap, const Mesh& mesh, const std::vector<ConstrainedComponent>& constraints);
 
   /// One multiplier per tie, then one unknown per free motion of the cap.
   int n_global_unknowns() const override;
@@ -63,7 +51,8 @@ class RigidCap : public ModelTerm {
   }
 
   const Mesh& mesh_;
-  RigidCapSettings settings_;
+  Cap settings_;
+  Vec3d point_;                    ///< the reference point X_c [mm]
   std::vector<Tie> ties_;          ///< by node, then component
   std::vector<int> nodes_;         ///< the tied nodes (each with at least one tie)
   std::vector<int> first_tie_;     ///< per tied node: index of its first tie; nodes_.size() + 1

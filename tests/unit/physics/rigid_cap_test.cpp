@@ -27,8 +27,9 @@ struct CapSetup {
 CapSetup make_cap(bool all_free, const std::vector<ConstrainedComponent>& constraints = {}) {
   CapSetup s;
   s.mesh = make_box_mesh({2.0, 2.0, 1.0}, {2, 2, 1}, 2);
-  RigidCapSettings settings;
+  Cap settings;
   settings.name = "cap";
+  settings.surface = {"top", {}};
   settings.point = Vec3d(1.0, 0.8, 1.1);
   settings.force = Vec3d(0.3, -0.2, 0.1);
   settings.moment = Vec3d(-0.4, 0.25, 0.6);
@@ -39,9 +40,7 @@ CapSetup make_cap(bool all_free, const std::vector<ConstrainedComponent>& constr
     settings.force.y() = 0.0;
     settings.moment.x() = settings.moment.z() = 0.0;
   }
-  const std::set<int> nodes = triangle_nodes(s.mesh, s.mesh.surface_tags.at("top"));
-  s.cap = std::make_unique<RigidCap>(s.mesh, settings, std::vector<int>(nodes.begin(), nodes.end()),
-                                     constraints);
+  s.cap = std::make_unique<RigidCap>(settings, s.mesh, constraints);
   s.cap->set_first_global_dof(kValuesPerNode * s.mesh.n_nodes());
   s.n = kValuesPerNode * s.mesh.n_nodes() + s.cap->n_global_unknowns();
   return s;
@@ -102,11 +101,12 @@ TEST(RigidCap, ComponentsPrescribedByABoundaryConditionAreNotTied) {
   const CapSetup s = make_cap(true, {{first, 2, 0.0, {}}});
   EXPECT_EQ(s.cap->n_ties(), 3 * static_cast<int>(nodes.size()) - 1);
   EXPECT_EQ(s.cap->negative_directions(), s.cap->n_ties());
-  RigidCapSettings settings;
+  Cap settings;
+  settings.surface = {"top", {}};
   std::vector<ConstrainedComponent> all;
   for (int v : nodes)
     for (int i = 0; i < 3; ++i) all.push_back({v, i, 0.0, {}});
-  EXPECT_THROW(RigidCap(mesh, settings, std::vector<int>(nodes.begin(), nodes.end()), all), Error);
+  EXPECT_THROW(RigidCap(settings, mesh, all), InputError);
 }
 
 }  // namespace
