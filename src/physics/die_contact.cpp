@@ -6,6 +6,7 @@
 #include <optional>
 #include <set>
 
+#include "physics/cavity_volume.hpp"
 #include "physics/die_surface.hpp"
 #include "physics/surface.hpp"
 
@@ -59,8 +60,7 @@ DieContact::DieContact(const Mesh& mesh, DieGeometry die, DieContactSettings set
 }
 
 Vec3d DieContact::position(int i, std::span<const double> x) const {
-  const int v = nodes_[i];
-  return mesh_.nodes[v] + Vec3d(x[node_dof(v, 0)], x[node_dof(v, 1)], x[node_dof(v, 2)]);
+  return deformed_position(mesh_, x, nodes_[i]);
 }
 
 DieContact::NodeResponse DieContact::respond(int i, double t, std::span<const double> x,

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "physics/cavity_volume.hpp"
 #include "physics/pressure_load.hpp"
 #include "physics/quadratic_triangle.hpp"
 
@@ -127,10 +128,7 @@ std::vector<Vec3d> FollowerTraction::nodal_forces(double t, std::span<const doub
   std::size_t index = 0;
   for (const SurfaceFace& face : faces_) {
     const int n = face.n_nodes;
-    for (int a = 0; a < n; ++a) {
-      xs[a] = mesh_.nodes[face.nodes[a]];
-      for (int i = 0; i < 3; ++i) xs[a][i] += x[node_dof(face.nodes[a], i)];
-    }
+    for (int a = 0; a < n; ++a) xs[a] = deformed_position(mesh_, x, face.nodes[a]);
     follower_traction_face(values_, factor, {xs.data(), static_cast<std::size_t>(n)}, f, nullptr);
     for (int a = 0; a < n; ++a)
       out[face_node_index_[index++]] += Vec3d(f[3 * a], f[3 * a + 1], f[3 * a + 2]);
@@ -138,8 +136,7 @@ std::vector<Vec3d> FollowerTraction::nodal_forces(double t, std::span<const doub
   return out;
 }
 
-double FollowerTraction::work(double t, std::span<const double> x) const {
-  const std::vector<Vec3d> forces = nodal_forces(t, x);
+double FollowerTraction::work(const std::vector<Vec3d>& forces, std::span<const double> x) const {
   double w = work_;
   for (std::size_t j = 0; j < nodes_.size(); ++j) {
     const int v = nodes_[j];
@@ -150,8 +147,9 @@ double FollowerTraction::work(double t, std::span<const double> x) const {
 }
 
 void FollowerTraction::accept_step(std::span<const double> x) {
-  work_ = work(t_current_, x);
-  f_accepted_ = nodal_forces(t_current_, x);
+  std::vector<Vec3d> forces = nodal_forces(t_current_, x);
+  work_ = work(forces, x);
+  f_accepted_ = std::move(forces);
   for (std::size_t j = 0; j < nodes_.size(); ++j)
     for (int i = 0; i < 3; ++i) u_accepted_[j][i] = x[node_dof(nodes_[j], i)];
   t_accepted_ = t_current_;
@@ -185,9 +183,10 @@ std::vector<std::string> FollowerTraction::history_columns() const {
 }
 
 std::vector<double> FollowerTraction::history_values(double t, std::span<const double> x) const {
+  const std::vector<Vec3d> forces = nodal_forces(t, x);
   Vec3d total = Vec3d::Zero();
-  for (const Vec3d& f : nodal_forces(t, x)) total += f;
-  return {total.x(), total.y(), total.z(), work(t, x)};
+  for (const Vec3d& f : forces) total += f;
+  return {total.x(), total.y(), total.z(), work(forces, x)};
 }
 
 }  // namespace plisse

@@ -56,8 +56,9 @@ class FollowerTraction : public ModelTerm {
  private:
   /// The external nodal forces at (t, x), by loaded node (nodes_ order).
   std::vector<Vec3d> nodal_forces(double t, std::span<const double> x) const;
-  /// W at (t, x) after the last accepted step: W_n + ½ Σ (f_n + f) · (u − u_n)   (L16).
-  double work(double t, std::span<const double> x) const;
+  /// W at x, whose nodal forces are `forces` (nodal_forces), after the last accepted step:
+  /// W_n + ½ Σ (f_n + f) · (u − u_n)   (L16).
+  double work(const std::vector<Vec3d>& forces, std::span<const double> x) const;
 
   const Mesh& mesh_;
   std::string name_;

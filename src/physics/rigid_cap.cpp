@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "mesh/topology.hpp"
+#include "physics/cavity_volume.hpp"
 #include "physics/rotation.hpp"
 
 namespace plisse {
@@ -140,10 +141,8 @@ std::vector<double> RigidCap::history_values(double t, std::span<const double> x
     Vec3d on_body = Vec3d::Zero();  // the cap's force on the node: −λ   (G5)
     for (int k = first_tie_[j]; k < first_tie_[j + 1]; ++k)
       on_body[ties_[k].component] = -x[multiplier_dof(k)];
-    Vec3d position = mesh_.nodes[v];
-    for (int i = 0; i < 3; ++i) position[i] += x[node_dof(v, i)];
     force += on_body;
-    moment += (position - centre).cross(on_body);
+    moment += (deformed_position(mesh_, x, v) - centre).cross(on_body);
   }
   return {force.x(), force.y(), force.z(), moment.x(), moment.y(), moment.z(),
           q[0],      q[1],      q[2],      q[3],       q[4],       q[5]};
