@@ -16,8 +16,7 @@ namespace plisse {
 struct Cap {
   std::string name;  ///< history columns `force_x:<name>`, `moment_x:<name>`, `ux:<name>`, ...
   SurfaceRef surface;
-  std::optional<Vec3d>
-      point;  ///< reference point X_c [mm]; default: the mean of the surface's nodes
+  std::optional<Vec3d> point;  ///< reference point X_c [mm]; default: mean of the nodes
   /// Prescribed displacement of X_c [mm] and rotation vector [rad] at the end of the ramp, by
   /// component; an empty one is free.
   std::array<std::optional<double>, 3> displacement, rotation;
