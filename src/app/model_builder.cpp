@@ -63,6 +63,7 @@ std::unique_ptr<ModelTerm> make_die_term(const Die& die, const Case& c, const Me
   settings.name = die.name;
   settings.contact = die.contact;
   settings.tolerance = die.tolerance;
+  settings.friction = die.friction;
   settings.touch_slack = 1e-9 * h;
   settings.penalty = die.penalty > 0.0 ? die.penalty : default_die_penalty(mu, h);
   const DieGeometry geometry(die.shape, die.point, die.normal, die.axis, die.radius,

@@ -155,6 +155,9 @@ void RunRecorder::write_step_files(const StepInfo& info, const std::vector<doubl
   std::vector<VtuField> point_fields, cell_fields;
   for (std::size_t k = 0; k < info.modes.size(); ++k)
     point_fields.push_back(mode_field(model_.mesh(), info.modes[k], static_cast<int>(k) + 1));
+  for (const auto& term : model_.terms())
+    for (const NodeField& f : term->node_fields(info.time, model_.state(), model_.mesh().n_nodes()))
+      point_fields.push_back(make_scalar_field(f.name, f.values));
   if (last_wrinkles_) {
     std::vector<double> state(last_wrinkles_->tension.element_state.size());
     for (std::size_t e = 0; e < state.size(); ++e)

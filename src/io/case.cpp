@@ -49,7 +49,8 @@ const Choices<CavityControl> kCavityControls{{"volume", CavityControl::volume},
 const Choices<DieShape> kDieShapes{
     {"plane", DieShape::plane}, {"sphere", DieShape::sphere}, {"cylinder", DieShape::cylinder}};
 const Choices<ContactKind> kContactKinds{{"frictionless", ContactKind::frictionless},
-                                         {"sticking", ContactKind::sticking}};
+                                         {"sticking", ContactKind::sticking},
+                                         {"coulomb", ContactKind::coulomb}};
 const Choices<bool> kIncompressibility{{"exact", true}, {"nearly", false}};
 const Choices<char> kAxes{{"x", 'x'}, {"y", 'y'}, {"z", 'z'}};
 const Choices<ElementFamily> kElementFamilies{{"mini", ElementFamily::mini},
@@ -621,14 +622,18 @@ Schema<Die> die_schema() {
   name_key(s, &Die::name,
            "history columns `force_x:<name>`, `force_y:<name>`, `force_z:<name>` (force of the "
            "body on the die, N), `contact_nodes:<name>` (nodes in contact or glued), "
-           "`penetration:<name>` (largest penetration, mm)")
+           "`penetration:<name>` (largest penetration, mm); Coulomb: `stick_nodes:<name>`, "
+           "`slip_nodes:<name>`. Point field `contact_<name>` in the step files: 0 free, 1 "
+           "sliding, 2 sticking")
       .required();
   s.variant<DieShape>("shape", &Die::shape, kDieShapes, "the die's surface").required();
   s.vec3("point", &Die::point, "mm",
          "plane: a point of it; sphere: centre; cylinder: a point of the axis")
       .required();
   s.variant<ContactKind>("contact", &Die::contact, kContactKinds,
-                         "unilateral sliding contact, or nodes that touch stay glued");
+                         "unilateral sliding contact; nodes that touch stay glued; or Coulomb "
+                         "friction: a node sticks while its tangential traction is below "
+                         "`friction` times its contact pressure, else slides");
   optional_surface_key(s, "surface", &Die::surface,
                        "whole boundary except the faces on symmetry planes",
                        "candidate contact surface");
@@ -639,8 +644,9 @@ Schema<Die> die_schema() {
          "contact penalty; 0 chooses 10 μ / h (μ the small-strain shear modulus, h the mean edge "
          "length of the contact surface; docs/theory/contact.md, D11)");
   s.real("tolerance", &Die::tolerance, Range::positive(), "mm",
-         "allowed penetration: the augmented-Lagrangian multipliers are updated until no node "
-         "penetrates more (at most `solver.max_augmentations` times per step)");
+         "allowed penetration (and, for a sticking node of a Coulomb die, tangential slip in "
+         "a step): the augmented-Lagrangian multipliers are updated until no node exceeds it "
+         "(at most `solver.max_augmentations` times per step)");
   s.add({"normal",
          "vector",
          "–",
@@ -658,6 +664,10 @@ Schema<Die> die_schema() {
       .applies({"sphere", "cylinder"});
   optional_surface_key(s, "region", &Die::region, "none", "glued to the die from the start")
       .applies({"sticking"});
+  s.real("friction", &Die::friction, Range::non_negative(), "–",
+         "Coulomb friction coefficient (0 slides without friction)")
+      .required()
+      .applies({"coulomb"});
   return s;
 }
 

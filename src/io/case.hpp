@@ -103,6 +103,7 @@ struct Die {
   Ramp ramp;                           ///< `move.ramp`
   double penalty = 0.0;                ///< [MPa/mm]; 0: chosen from the material and mesh
   double tolerance = 1e-3;             ///< allowed penetration [mm], > 0
+  double friction = 0.0;               ///< coulomb: friction coefficient, >= 0
   InputPlace place;
 };
 

@@ -22,6 +22,10 @@ DieContact::DieContact(const Mesh& mesh, DieGeometry die, DieContactSettings set
                                               << settings_.tolerance << ")");
   FE_CHECK(region.empty() || settings_.contact == ContactKind::sticking,
            "die '" << settings_.name << "': only a sticking die glues a region");
+  FE_CHECK(settings_.friction >= 0.0, "die '" << settings_.name << "': friction must be >= 0 (got "
+                                              << settings_.friction << ")");
+  FE_CHECK(settings_.friction == 0.0 || settings_.contact == ContactKind::coulomb,
+           "die '" << settings_.name << "': only a Coulomb die has a friction coefficient");
   // Each triangle once, whichever list it comes from, so a region inside the candidate surface
   // does not double the area.
   std::set<std::array<int, 3>> seen;
@@ -45,6 +49,10 @@ DieContact::DieContact(const Mesh& mesh, DieGeometry die, DieContactSettings set
     tie_areas_.push_back(sticking ? tie : area);
   }
   state_.resize(nodes_.size());
+  // Coulomb nodes stick, when they touch, from where they are at t = 0 (D18).
+  if (settings_.contact == ContactKind::coulomb)
+    for (size_t i = 0; i < nodes_.size(); ++i)
+      state_[i].anchor = mesh_.nodes[nodes_[i]] - die_.point(0.0);
   // Region nodes, and the nodes of a sticking die that lie on it at t = 0, are glued where they
   // are: at their reference positions (D13).
   const std::set<int> region_nodes = surface_nodes(faces_with_corners(mesh_, region));
@@ -73,9 +81,9 @@ DieContact::NodeResponse DieContact::respond(int i, double t, std::span<const do
     // Tie to the die point: d = x - (c(t) + s), f = W (Lambda - eps d), K = W eps I   (D12, D17)
     const double W = tie_areas_[i];
     const Vec3d d = xi - (die_.point(t) + s.anchor);
-    out.force = W * (s.glue_multiplier - eps * d);
+    out.force = W * (s.vector_multiplier - eps * d);
     if (with_tangent) out.K = W * eps * Mat3d::Identity();
-    out.active = true;
+    out.contact = Contact::sticking;
     out.violation = d.norm();
     return out;
   }
@@ -85,11 +93,48 @@ DieContact::NodeResponse DieContact::respond(int i, double t, std::span<const do
   // lambda_hat = max(0, lambda - eps g), f = A lambda_hat n   (D6)
   const double lambda_hat = s.multiplier - eps * gap.g;
   if (lambda_hat <= 0.0) return out;
-  out.active = true;
+  out.contact = Contact::sliding;
   out.force = A * lambda_hat * gap.n;
   // K = -df/dx = A (eps n n^T - lambda_hat H)   (D8)
   if (with_tangent) out.K = A * (eps * gap.n * gap.n.transpose() - lambda_hat * gap.H);
+  if (settings_.contact == ContactKind::coulomb)
+    add_friction(i, t, xi, gap, lambda_hat, with_tangent, out);
   return out;
+}
+
+void DieContact::add_friction(int i, double t, const Vec3d& xi, const DieGap& gap,
+                              double lambda_hat, bool with_tangent, NodeResponse& out) const {
+  const NodeState& s = state_[i];
+  const double A = areas_[i], eps = settings_.penalty, mu = settings_.friction;
+  const Vec3d& n = gap.n;
+  const Mat3d P = Mat3d::Identity() - n * n.transpose();
+  // Slip in the step r, its tangential part d and the trial traction tau* = P Lambda - eps d
+  // (D18).
+  const Vec3d r = xi - die_.point(t) - s.anchor;
+  const Vec3d d = P * r;
+  const Vec3d trial = P * s.vector_multiplier - eps * d;
+  const double bound = mu * lambda_hat, size = trial.norm();
+  const bool sticks = bound > 0.0 && size <= bound;
+  // tau = tau* inside the cone, bound tau*/|tau*| on it   (D19)
+  out.traction = sticks || size == 0.0 ? trial : Vec3d((bound / size) * trial);
+  out.force += A * out.traction;
+  out.contact = sticks ? Contact::sticking : Contact::sliding;
+  if (sticks) out.violation = std::max(out.violation, d.norm());
+  // Sliding with a zero trial traction (friction 0 at a node that has not slipped): tau = 0.
+  if (!with_tangent || (!sticks && size == 0.0)) return;
+  // d tau*/dx, with dP/dx acting on a vector v: -(n . v) H - n (H v)^T   (D20)
+  const Vec3d& Lambda = s.vector_multiplier;
+  const Mat3d dtrial = -n.dot(Lambda) * gap.H - n * (gap.H * Lambda).transpose() -
+                       eps * (P - n.dot(r) * gap.H - n * (gap.H * r).transpose());
+  if (sticks) {
+    out.K -= A * dtrial;
+    return;
+  }
+  // On the cone: d tau/dx = t (mu d lambda_hat/dx) + (bound/|tau*|) (I - t t^T) d tau*/dx, with
+  // d lambda_hat/dx = -eps n^T   (D20)
+  const Vec3d unit = trial / size;
+  out.K -= A * (-mu * eps * unit * n.transpose() +
+                (bound / size) * (Mat3d::Identity() - unit * unit.transpose()) * dtrial);
 }
 
 void DieContact::assemble(double t, std::span<const double> x, std::span<double> residual,
@@ -99,7 +144,7 @@ void DieContact::assemble(double t, std::span<const double> x, std::span<double>
   Eigen::Matrix<double, 3, 3, Eigen::RowMajor> k;
   for (size_t i = 0; i < nodes_.size(); ++i) {
     const NodeResponse r = respond(static_cast<int>(i), t, x, tangent != nullptr);
-    if (!r.active) continue;
+    if (r.contact == Contact::none) continue;
     for (int c = 0; c < 3; ++c) {
       dofs[c] = node_dof(nodes_[i], c);
       residual[dofs[c]] -= r.force[c];  // residual = internal - external force (D7)
@@ -110,16 +155,31 @@ void DieContact::assemble(double t, std::span<const double> x, std::span<double>
   }
 }
 
+DieContact::Contact DieContact::reported_contact(int i, double t, std::span<const double> x) const {
+  const Contact c = respond(i, t, x, false).contact;
+  // After accept_step a Coulomb node that slid sits on its cone's surface with no slip since:
+  // what it did in that step is its state.
+  if (c == Contact::none || settings_.contact != ContactKind::coulomb) return c;
+  return state_[i].slid ? Contact::sliding : Contact::sticking;
+}
+
+bool DieContact::symmetric() const {
+  return settings_.contact != ContactKind::coulomb || settings_.friction == 0.0;
+}
+
 bool DieContact::update_multipliers(std::span<const double> x) {
   if (violation(time_, x) <= settings_.tolerance) return false;
   const double eps = settings_.penalty;
+  const bool coulomb = settings_.contact == ContactKind::coulomb;
   for (size_t i = 0; i < nodes_.size(); ++i) {
     NodeState& s = state_[i];
     const Vec3d xi = position(static_cast<int>(i), x);
     if (s.glued) {
       // Lambda <- Lambda - eps d   (D14)
-      s.glue_multiplier -= eps * (xi - (die_.point(time_) + s.anchor));
+      s.vector_multiplier -= eps * (xi - (die_.point(time_) + s.anchor));
     } else if (areas_[i] > 0.0) {
+      // Lambda <- tau, from the multipliers before this update   (D21)
+      if (coulomb) s.vector_multiplier = respond(static_cast<int>(i), time_, x, false).traction;
       // lambda <- max(0, lambda - eps g)   (D9)
       s.multiplier = std::max(0.0, s.multiplier - eps * die_.gap(xi, time_).g);
     }
@@ -142,13 +202,23 @@ void DieContact::accept_step(std::span<const double> x) {
         // A corner of a second-order face, which may lie inside the die by the sagitta of its
         // faces (D16): glued where it is, without force (D17).
         s.anchor = xi - die_.point(time_);
-        s.glue_multiplier = Vec3d::Zero();
+        s.vector_multiplier = Vec3d::Zero();
         continue;
       }
       // Glue to the closest die point x - g n, with Lambda = ((A / W) lambda_hat + eps g) n so
       // the force of the node does not jump (D13, D17).
       s.anchor = xi - gap.g * gap.n - die_.point(time_);
-      s.glue_multiplier = (areas_[i] / tie_areas_[i] * lambda_hat + eps * gap.g) * gap.n;
+      s.vector_multiplier = (areas_[i] / tie_areas_[i] * lambda_hat + eps * gap.g) * gap.n;
+    }
+  } else if (settings_.contact == ContactKind::coulomb) {
+    // The next step starts from the traction reached and sticks from here   (D22)
+    std::vector<NodeResponse> responses(nodes_.size());
+    for (size_t i = 0; i < nodes_.size(); ++i)
+      responses[i] = respond(static_cast<int>(i), time_, x, false);
+    for (size_t i = 0; i < nodes_.size(); ++i) {
+      state_[i].vector_multiplier = responses[i].traction;
+      state_[i].anchor = position(static_cast<int>(i), x) - die_.point(time_);
+      state_[i].slid = responses[i].contact == Contact::sliding;
     }
   }
   accepted_ = state_;
@@ -160,9 +230,9 @@ std::vector<double> DieContact::save_state() const {
   std::vector<double> out;
   out.reserve(8 * accepted_.size());
   for (const NodeState& s : accepted_) {
-    out.push_back(s.glued ? 1.0 : 0.0);
+    out.push_back(s.glued ? 1.0 : s.slid ? 2.0 : 0.0);
     out.push_back(s.multiplier);
-    out.insert(out.end(), s.glue_multiplier.data(), s.glue_multiplier.data() + 3);
+    out.insert(out.end(), s.vector_multiplier.data(), s.vector_multiplier.data() + 3);
     out.insert(out.end(), s.anchor.data(), s.anchor.data() + 3);
   }
   return out;
@@ -175,9 +245,10 @@ void DieContact::load_state(std::span<const double> state) {
   for (size_t i = 0; i < accepted_.size(); ++i) {
     const double* v = state.data() + 8 * i;
     NodeState& s = accepted_[i];
-    s.glued = v[0] != 0.0;
+    s.glued = v[0] == 1.0;
+    s.slid = v[0] == 2.0;
     s.multiplier = v[1];
-    s.glue_multiplier = Vec3d(v[2], v[3], v[4]);
+    s.vector_multiplier = Vec3d(v[2], v[3], v[4]);
     s.anchor = Vec3d(v[5], v[6], v[7]);
   }
   state_ = accepted_;
@@ -185,12 +256,38 @@ void DieContact::load_state(std::span<const double> state) {
 
 std::vector<std::string> DieContact::history_columns() const {
   const std::string& n = settings_.name;
-  return {"force_x:" + n, "force_y:" + n, "force_z:" + n, "contact_nodes:" + n, "penetration:" + n};
+  std::vector<std::string> columns = {"force_x:" + n, "force_y:" + n, "force_z:" + n,
+                                      "contact_nodes:" + n, "penetration:" + n};
+  if (settings_.contact == ContactKind::coulomb) {
+    columns.push_back("stick_nodes:" + n);
+    columns.push_back("slip_nodes:" + n);
+  }
+  return columns;
 }
 
 std::vector<double> DieContact::history_values(double t, std::span<const double> x) const {
   const Vec3d f = force_on_die(t, x);
-  return {f[0], f[1], f[2], static_cast<double>(n_contact_nodes(t, x)), violation(t, x)};
+  std::vector<double> values = {f[0], f[1], f[2], static_cast<double>(n_contact_nodes(t, x)),
+                                violation(t, x)};
+  if (settings_.contact == ContactKind::coulomb) {
+    int stick = 0, slip = 0;
+    for (size_t i = 0; i < nodes_.size(); ++i) {
+      const Contact c = reported_contact(static_cast<int>(i), t, x);
+      stick += c == Contact::sticking;
+      slip += c == Contact::sliding;
+    }
+    values.push_back(stick);
+    values.push_back(slip);
+  }
+  return values;
+}
+
+std::vector<NodeField> DieContact::node_fields(double t, std::span<const double> x,
+                                               int n_nodes) const {
+  NodeField field{"contact_" + settings_.name, std::vector<double>(n_nodes, 0.0)};
+  for (size_t i = 0; i < nodes_.size(); ++i)
+    field.values[nodes_[i]] = static_cast<double>(reported_contact(static_cast<int>(i), t, x));
+  return {field};
 }
 
 Vec3d DieContact::force_on_die(double t, std::span<const double> x) const {
@@ -209,13 +306,24 @@ double DieContact::violation(double t, std::span<const double> x) const {
 
 int DieContact::n_contact_nodes(double t, std::span<const double> x) const {
   int n = 0;
-  for (size_t i = 0; i < nodes_.size(); ++i) n += respond(static_cast<int>(i), t, x, false).active;
+  for (size_t i = 0; i < nodes_.size(); ++i)
+    n += respond(static_cast<int>(i), t, x, false).contact != Contact::none;
   return n;
 }
 
 int DieContact::n_glued() const {
   return static_cast<int>(
       std::count_if(state_.begin(), state_.end(), [](const NodeState& s) { return s.glued; }));
+}
+
+std::pair<int, int> DieContact::sticking_and_sliding(double t, std::span<const double> x) const {
+  std::pair<int, int> out{0, 0};
+  for (size_t i = 0; i < nodes_.size(); ++i) {
+    const Contact c = respond(static_cast<int>(i), t, x, false).contact;
+    out.first += c == Contact::sticking;
+    out.second += c == Contact::sliding;
+  }
+  return out;
 }
 
 std::optional<size_t> DieContact::index_of(int node) const {

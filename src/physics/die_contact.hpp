@@ -1,13 +1,16 @@
 #pragma once
 /// Contact between the body and a rigid analytic die (plane, sphere, cylinder) with prescribed
-/// motion: frictionless (unilateral) or sticking ("bilateral sticking": a node that touches stays
-/// glued to the die point it touched). Node-based augmented Lagrangian with a penalty per unit
-/// area, so forces do not depend on the mesh (docs/theory/contact.md).
+/// motion: frictionless (unilateral), sticking ("bilateral sticking": a node that touches stays
+/// glued to the die point it touched) or Coulomb friction (a node in contact sticks while its
+/// tangential traction is below the coefficient times its pressure, else slides). Node-based
+/// augmented Lagrangian with a penalty per unit area, so forces do not depend on the mesh
+/// (docs/theory/contact.md).
 #include <array>
 #include <memory>
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mesh/mesh.hpp"
@@ -26,28 +29,35 @@ class DieContact : public ModelTerm {
   /// include the corners of second-order faces; the nodes of `region`, and the nodes that lie on
   /// the die at t = 0 (|g| <= touch_slack), are glued from the start at their reference positions
   /// (areas count the faces of both lists, each once). Borrows `mesh`.
-  /// Throws plisse::Error when penalty or tolerance is not > 0, or frictionless with a region.
+  /// Throws plisse::Error when penalty or tolerance is not > 0, friction is < 0 or given to
+  /// another law than Coulomb, or a region is given to a die that does not stick.
   DieContact(const Mesh& mesh, DieGeometry die, DieContactSettings settings,
              const std::vector<std::array<int, 3>>& candidates,
              const std::vector<std::array<int, 3>>& region = {});
 
-  /// Residual -f_v on each node v in contact (f_v: force of the die on the body) and its tangent,
-  /// symmetric (contact.md, D6-D8, D12). Remembers t for the updates below.
+  /// Residual -f_v on each node v in contact (f_v: force of the die on the body) and its tangent
+  /// (contact.md, D6-D8, D12, D18-D20). Remembers t for the updates below.
   void assemble(double t, std::span<const double> x, std::span<double> residual,
                 TangentSink* tangent) override;
+  /// Coulomb friction with a coefficient > 0 slides along the die's surface with an unsymmetric
+  /// tangent (D20).
+  bool symmetric() const override;
   /// When the largest violation at x exceeds the tolerance: Uzawa update of every multiplier
-  /// (D9, D14) and true; else false and nothing changes.
+  /// (D9, D14, D21) and true; else false and nothing changes.
   bool update_multipliers(std::span<const double> x) override;
-  /// Sticking: glues the nodes that touch the die at x (D13); keeps multipliers and glue state.
+  /// Sticking: glues the nodes that touch the die at x (D13). Coulomb: the tangential traction
+  /// and the stick point of every node start the next step from x (D22). Keeps the multipliers.
   void accept_step(std::span<const double> x) override;
   /// Back to the multipliers and glue state of the last accepted step.
   void reject_step() override;
-  /// Glue flags, anchors and multipliers of the accepted step (8 numbers per contact node).
+  /// Glue (1) or slide (2) flags, anchors and multipliers of the accepted step (8 numbers per
+  /// contact node).
   std::vector<double> save_state() const override;
   void load_state(std::span<const double> state) override;
 
   /// force_x/y/z:<name> (force of the body ON the die [N], D15), contact_nodes:<name>,
-  /// penetration:<name> [mm] (largest violation, D10).
+  /// penetration:<name> [mm] (largest violation, D10); Coulomb also stick_nodes:<name> and
+  /// slip_nodes:<name>.
   std::vector<std::string> history_columns() const override;
   std::vector<double> history_values(double t, std::span<const double> x) const override;
 
@@ -58,7 +68,16 @@ class DieContact : public ModelTerm {
   double violation(double t, std::span<const double> x) const;
   /// Nodes carrying a contact force (sliding with lambda_hat > 0) plus glued nodes.
   int n_contact_nodes(double t, std::span<const double> x) const;
+  /// The contact state of every mesh node, `contact_<name>`: 0 free (or not a contact node),
+  /// 1 sliding, 2 sticking (glued, or a Coulomb node within its friction cone); a Coulomb node
+  /// in contact reports how it ended the last accepted step.
+  std::vector<NodeField> node_fields(double t, std::span<const double> x,
+                                     int n_nodes) const override;
   int n_glued() const;
+  /// Coulomb: the nodes in contact within their friction cone (first) and on it, sliding
+  /// (second), at (t, x) in the step being solved (D19). The history columns stick_nodes and
+  /// slip_nodes, written after accept_step, report how the nodes ended the accepted step.
+  std::pair<int, int> sticking_and_sliding(double t, std::span<const double> x) const;
   bool glued(int node) const;
   double penalty() const { return settings_.penalty; }
   /// Tributary area of `node` [mm^2]; 0 for a node not on the contact surface (or a corner of a
@@ -72,18 +91,34 @@ class DieContact : public ModelTerm {
   /// Per node: what the augmented Lagrangian carries from step to step.
   struct NodeState {
     bool glued = false;
-    double multiplier = 0.0;                ///< lambda [MPa], sliding nodes (D6)
-    Vec3d glue_multiplier = Vec3d::Zero();  ///< Lambda [MPa], glued nodes (D12)
-    Vec3d anchor = Vec3d::Zero();           ///< glue point minus the die point at gluing [mm]
+    bool slid = false;  ///< Coulomb: the node slid in the last accepted step
+
+    double multiplier = 0.0;  ///< lambda [MPa], sliding and Coulomb nodes (D6)
+    /// Lambda [MPa]: glued nodes, the tie multiplier (D12); Coulomb nodes, the tangential
+    /// traction (D18).
+    Vec3d vector_multiplier = Vec3d::Zero();
+    /// Glued: glue point minus the die point at gluing; Coulomb: the node's position minus the
+    /// die point at the last accepted step, from which it sticks (D18) [mm].
+    Vec3d anchor = Vec3d::Zero();
   };
-  /// Force of the die on node i and its derivative K = -df/dx (D6-D8, D12).
+  enum class Contact { none = 0, sliding = 1, sticking = 2 };  ///< the values of node_fields
+  /// Force of the die on node i and its derivative K = -df/dx (D6-D8, D12, D18-D20).
   struct NodeResponse {
     Vec3d force = Vec3d::Zero();
     Mat3d K = Mat3d::Zero();
-    bool active = false;     ///< carries a force (sliding) or glued
-    double violation = 0.0;  ///< D10
+    Contact contact = Contact::none;  ///< none: no force (and not glued)
+    double violation = 0.0;           ///< D10
+    /// Coulomb: the tangential traction tau (D19) [MPa].
+    Vec3d traction = Vec3d::Zero();
   };
+  /// Adds the Coulomb friction of node i (D18-D20) to `out`, which holds its normal response
+  /// with lambda_hat > 0 at the gap `gap`.
+  void add_friction(int i, double t, const Vec3d& xi, const DieGap& gap, double lambda_hat,
+                    bool with_tangent, NodeResponse& out) const;
   NodeResponse respond(int i, double t, std::span<const double> x, bool with_tangent) const;
+  /// The state reported for node i at (t, x): a Coulomb node in contact, how it ended the last
+  /// accepted step.
+  Contact reported_contact(int i, double t, std::span<const double> x) const;
   Vec3d position(int i, std::span<const double> x) const;
   /// Position of `node` in nodes_, if it is one of the die's nodes.
   std::optional<size_t> index_of(int node) const;

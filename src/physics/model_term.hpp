@@ -28,6 +28,12 @@ class TangentSink {
                    std::span<const double> values) = 0;
 };
 
+/// One value per mesh node, written as a point field of the step files.
+struct NodeField {
+  std::string name;
+  std::vector<double> values;
+};
+
 class ModelTerm {
  public:
   virtual ~ModelTerm() = default;
@@ -67,6 +73,11 @@ class ModelTerm {
   /// Named history columns and their values at (t, x).
   virtual std::vector<std::string> history_columns() const { return {}; }
   virtual std::vector<double> history_values(double /*t*/, std::span<const double> /*x*/) const {
+    return {};
+  }
+  /// Point fields at (t, x), each with one value per mesh node (`n_nodes` of them).
+  virtual std::vector<NodeField> node_fields(double /*t*/, std::span<const double> /*x*/,
+                                             int /*n_nodes*/) const {
     return {};
   }
 };

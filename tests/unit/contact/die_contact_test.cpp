@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <sstream>
 
@@ -128,6 +129,200 @@ INSTANTIATE_TEST_SUITE_P(ShapesAndKinds, DieContactTangent,
                                            TangentCase{DieShape::sphere, ContactKind::sticking},
                                            TangentCase{DieShape::cylinder, ContactKind::sticking}),
                          tangent_case_name);
+
+struct CoulombCase {
+  DieShape shape;
+  double friction;
+  bool sticks;  ///< whether the nodes in contact stick (else they slide) at the tested state
+};
+
+std::string coulomb_case_name(const ::testing::TestParamInfo<CoulombCase>& info) {
+  const char* shapes[] = {"Plane", "Sphere", "Cylinder"};
+  return std::string(shapes[static_cast<int>(info.param.shape)]) +
+         (info.param.sticks ? "Sticking" : "Sliding");
+}
+
+DieContactSettings coulomb(double friction, double tolerance = 1e-12) {
+  DieContactSettings s = settings(ContactKind::coulomb, 3.0, tolerance);
+  s.friction = friction;
+  return s;
+}
+
+/// Sticking and sliding nodes of a Coulomb die at (t, x), in the step being solved.
+std::pair<int, int> stick_and_slip(const DieContact& term, double t, std::span<const double> x) {
+  return term.sticking_and_sliding(t, x);
+}
+
+/// stick_nodes:<die> and slip_nodes:<die> of a Coulomb die at (t, x) (after an accepted step).
+std::pair<int, int> stick_and_slip_columns(const DieContact& term, double t,
+                                           std::span<const double> x) {
+  const std::vector<double> v = term.history_values(t, x);
+  return {static_cast<int>(v.at(5)), static_cast<int>(v.at(6))};
+}
+
+class DieContactCoulombTangent : public ::testing::TestWithParam<CoulombCase> {};
+
+TEST_P(DieContactCoulombTangent, IsTheDerivativeOfTheResidual) {
+  const Mesh mesh = cube();
+  const int n = n_dofs(mesh);
+  DieContact term(mesh, die(GetParam().shape), coulomb(GetParam().friction), boundary_faces(mesh));
+  EXPECT_FALSE(term.symmetric());
+  // Accepted at t = 0 with the nodes that touch pressed (one Uzawa update): they carry lambda > 0
+  // and stick from their reference positions. At t = 1 the die has moved 0.3 mm down, which for
+  // each shape has a component along its surface at the nodes in contact; an update there gives
+  // the tangential multipliers Lambda a value, then a random state is tested (D18-D20).
+  const std::vector<double> zero(n, 0.0);
+  std::vector<double> r(n, 0.0);
+  term.assemble(0.0, zero, r, nullptr);
+  ASSERT_TRUE(term.update_multipliers(zero));
+  term.accept_step(zero);
+  const double t = 1.0;
+  const auto x = random_state(n, 11, 0.01);
+  term.assemble(t, x, r, nullptr);
+  ASSERT_TRUE(term.update_multipliers(x));
+  const auto [stick, slip] = stick_and_slip(term, t, x);
+  EXPECT_EQ(stick + slip, term.n_contact_nodes(t, x));
+  if (GetParam().sticks) {
+    EXPECT_GT(stick, 0);
+    EXPECT_EQ(slip, 0);
+  } else {
+    EXPECT_GT(slip, 0);  // the node under a sphere's or a cylinder's axis moves normal to it
+  }
+  DenseSink sink(n);
+  std::fill(r.begin(), r.end(), 0.0);
+  term.assemble(t, x, r, &sink);
+  const double h = 1e-6, scale = sink.K.cwiseAbs().maxCoeff();
+  double max_error = 0.0;
+  for (int j = 0; j < n; ++j) {
+    auto xp = x, xm = x;
+    xp[j] += h;
+    xm[j] -= h;
+    const Eigen::VectorXd fd = (term_residual(term, t, xp) - term_residual(term, t, xm)) / (2 * h);
+    max_error = std::max(max_error, (fd - sink.K.col(j)).cwiseAbs().maxCoeff());
+  }
+  std::ostringstream relative;
+  relative << std::scientific << max_error / scale;
+  RecordProperty("fd_relative_error", relative.str());
+  // Smooth away from the cone's surface and the kink lambda_hat = 0: as for D8.
+  EXPECT_LT(max_error, 1e-8 * scale);
+  // Sliding, the tangent is unsymmetric (the cone's radius grows with the pressure, D20).
+  if (!GetParam().sticks) {
+    EXPECT_GT((sink.K - sink.K.transpose()).cwiseAbs().maxCoeff(), 1e-6 * scale);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(ShapesAndStates, DieContactCoulombTangent,
+                         ::testing::Values(CoulombCase{DieShape::plane, 0.05, false},
+                                           CoulombCase{DieShape::sphere, 0.05, false},
+                                           CoulombCase{DieShape::cylinder, 0.05, false},
+                                           CoulombCase{DieShape::plane, 50.0, true},
+                                           CoulombCase{DieShape::sphere, 50.0, true},
+                                           CoulombCase{DieShape::cylinder, 50.0, true}),
+                         coulomb_case_name);
+
+/// A flat die 0.05 mm into the top face of the cube (normal -z), translated along x by `slide`
+/// over t in [0, 1].
+DieGeometry sliding_plane(double slide) {
+  return DieGeometry(DieShape::plane, Vec3d(0, 0, 1.95), Vec3d(0, 0, -1), Vec3d::UnitZ(), 0.0,
+                     Vec3d(slide, 0, 0), Ramp{0.0, 1.0});
+}
+
+TEST(DieContactCoulomb, ASlidingFaceCarriesFrictionTimesItsPressureAgainstTheSlip) {
+  const Mesh mesh = cube();
+  const auto top = outward_triangles(mesh, "top");
+  DieContact term(mesh, sliding_plane(0.2), coulomb(0.3), top);
+  const std::vector<double> x(n_dofs(mesh), 0.0);
+  std::vector<double> r(x.size(), 0.0);
+  term.assemble(0.0, x, r, nullptr);
+  term.accept_step(x);
+  // At t = 1 the die has slid 0.2 mm along +x over the fixed face: each node's trial traction
+  // eps * 0.2 = 0.6 MPa exceeds mu * eps * 0.05 = 0.045 MPa, so all 9 slide, and the die drags
+  // the body along +x with mu times the normal force (D19): the body pushes the die up (+z) and
+  // along -x.
+  const Vec3d f = term.force_on_die(1.0, x);
+  EXPECT_NEAR(f.z(), 3.0 * 4.0 * 0.05, 1e-14);
+  EXPECT_NEAR(f.x(), -0.3 * f.z(), 1e-14);
+  EXPECT_NEAR(f.y(), 0.0, 1e-14);
+  EXPECT_EQ(stick_and_slip(term, 1.0, x), std::make_pair(0, 9));
+  // Penetration alone counts as violation for sliding nodes.
+  EXPECT_NEAR(term.violation(1.0, x), 0.05, 1e-14);
+  // Accepted, the nodes start the next step on the cone's surface, with no slip since: the
+  // history reports that they slid (and the point field gives 1 at the 9 top nodes).
+  term.assemble(1.0, x, r, nullptr);
+  term.accept_step(x);
+  EXPECT_EQ(stick_and_slip_columns(term, 1.0, x), std::make_pair(0, 9));
+  EXPECT_TRUE(term.force_on_die(1.0, x).isApprox(f, 1e-14));
+  const std::vector<NodeField> fields = term.node_fields(1.0, x, mesh.n_nodes());
+  ASSERT_EQ(fields.size(), 1u);
+  EXPECT_EQ(fields[0].name, "contact_die");
+  EXPECT_EQ(std::count(fields[0].values.begin(), fields[0].values.end(), 1.0), 9);
+  EXPECT_EQ(std::count(fields[0].values.begin(), fields[0].values.end(), 0.0), mesh.n_nodes() - 9);
+  // Friction 0 is the frictionless die, residual and tangent.
+  DieContact none(mesh, sliding_plane(0.2), coulomb(0.0), top);
+  DieContact frictionless(mesh, sliding_plane(0.2), settings(ContactKind::frictionless), top);
+  EXPECT_TRUE(none.symmetric());
+  const auto y = random_state(n_dofs(mesh), 5, 0.01);
+  for (DieContact* t : {&none, &frictionless}) {
+    t->assemble(0.0, x, r, nullptr);
+    t->accept_step(x);
+  }
+  DenseSink a(n_dofs(mesh)), b(n_dofs(mesh));
+  std::vector<double> ra(x.size(), 0.0), rb(x.size(), 0.0);
+  none.assemble(1.0, y, ra, &a);
+  frictionless.assemble(1.0, y, rb, &b);
+  EXPECT_EQ(ra, rb);
+  EXPECT_EQ((a.K - b.K).cwiseAbs().maxCoeff(), 0.0);
+}
+
+TEST(DieContactCoulomb, StickingNodesAreHeldWhereTheyTouchedUntilTheConeIsReached) {
+  const Mesh mesh = cube();
+  const auto top = outward_triangles(mesh, "top");
+  const std::vector<double> x(n_dofs(mesh), 0.0);
+  std::vector<double> r(x.size(), 0.0);
+  // A slide of 0.01 mm: trial traction eps * 0.01 = 0.03 MPa < mu * 0.15 MPa with mu = 0.3, so
+  // the nodes stick, and each Uzawa update adds eps * slip to the tangential traction (D21), as
+  // it adds eps * penetration to the pressure (D9).
+  DieContact term(mesh, sliding_plane(0.01), coulomb(0.3, 1e-3), top);
+  term.assemble(0.0, x, r, nullptr);
+  term.accept_step(x);
+  term.assemble(1.0, x, r, nullptr);
+  EXPECT_EQ(stick_and_slip(term, 1.0, x), std::make_pair(9, 0));
+  EXPECT_NEAR(term.violation(1.0, x), 0.05, 1e-14);  // the penetration is larger here
+  const double pressure = 3.0 * 0.05;
+  EXPECT_NEAR(term.force_on_die(1.0, x).x(), -4.0 * 3.0 * 0.01, 1e-14);
+  ASSERT_TRUE(term.update_multipliers(x));  // lambda = 0.15 MPa, Lambda = 0.03 MPa
+  EXPECT_NEAR(term.force_on_die(1.0, x).x(), -4.0 * 2.0 * 3.0 * 0.01, 1e-14);
+  EXPECT_NEAR(term.force_on_die(1.0, x).z(), 4.0 * 2.0 * pressure, 1e-14);
+  EXPECT_EQ(stick_and_slip(term, 1.0, x), std::make_pair(9, 0));
+  // With mu = 0.1 the cone's radius 0.015 MPa is below the trial traction: the nodes slide with
+  // mu lambda_hat (D19).
+  DieContact slippery(mesh, sliding_plane(0.01), coulomb(0.1, 1e-3), top);
+  slippery.assemble(0.0, x, r, nullptr);
+  slippery.accept_step(x);
+  EXPECT_EQ(stick_and_slip(slippery, 1.0, x), std::make_pair(0, 9));
+  EXPECT_NEAR(slippery.force_on_die(1.0, x).x(), -0.1 * 4.0 * pressure, 1e-14);
+  // A rejected step forgets all of it; an accepted one keeps the traction and sticks from there.
+  term.reject_step();
+  EXPECT_NEAR(term.force_on_die(1.0, x).x(), -4.0 * 3.0 * 0.01, 1e-14);
+  term.assemble(1.0, x, r, nullptr);
+  term.update_multipliers(x);
+  term.accept_step(x);
+  const std::vector<double> saved = term.save_state();
+  EXPECT_NEAR(term.force_on_die(1.0, x).x(), -4.0 * 2.0 * 3.0 * 0.01, 1e-14);
+  DieContact restored(mesh, sliding_plane(0.01), coulomb(0.3, 1e-3), top);
+  restored.load_state(saved);
+  EXPECT_TRUE(restored.force_on_die(1.0, x).isApprox(term.force_on_die(1.0, x), 1e-15));
+  EXPECT_NEAR(restored.violation(1.0, x), 0.05, 1e-15);  // no slip since the accepted step
+}
+
+TEST(DieContactCoulomb, RefusesANegativeCoefficientAndFrictionOnOtherLaws) {
+  const Mesh mesh = cube();
+  const auto top = outward_triangles(mesh, "top");
+  EXPECT_THROW(DieContact(mesh, sliding_plane(0.0), coulomb(-0.1), top), Error);
+  DieContactSettings glue = settings(ContactKind::sticking);
+  glue.friction = 0.2;
+  EXPECT_THROW(DieContact(mesh, sliding_plane(0.0), glue, top), Error);
+}
 
 TEST(DieContact, UniformPenetrationGivesPenaltyTimesAreaTimesDepthOnEveryMesh) {
   // A flat die 0.05 mm into the top face (area 4 mm^2): force eps * 4 * 0.05, whatever the mesh.
