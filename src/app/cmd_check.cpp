@@ -95,7 +95,8 @@ void check_case(const CheckOptions& options) {
     std::cerr << "plisse check: warning: " << e.what() << " (plisse run refuses this case)\n";
   out << "  case      " << count(c.boundary.size(), "boundary condition") << ", "
       << count(c.loads.size(), "load") << ", " << count(c.cavities.size(), "cavity", "cavities")
-      << ", " << count(c.dies.size(), "die") << ", " << count(c.probes.size(), "probe") << '\n';
+      << ", " << count(c.dies.size(), "die") << ", " << count(c.caps.size(), "cap") << ", "
+      << count(c.contacts.size(), "contact") << ", " << count(c.probes.size(), "probe") << '\n';
   out << "  solver    "
       << (c.solver.scheme == Scheme::total_lagrangian ? "total-lagrangian" : "incremental")
       << ", end_time " << number(c.solver.end_time) << " s, " << c.solver.steps

@@ -13,6 +13,7 @@
 #include "physics/pressure_load.hpp"
 #include "physics/rigid_cap.hpp"
 #include "physics/surface.hpp"
+#include "physics/surface_contact.hpp"
 #include "physics/viscous_damping.hpp"
 
 namespace plisse::app {
@@ -46,6 +47,24 @@ void check_free_displacements(const Case& c, const Mesh& mesh,
     throw InputError({c.path, 0, 0, "boundary"},
                      "every displacement is prescribed by the boundary conditions: nothing to "
                      "solve");
+}
+
+/// The term of a `contacts:` item; penalty and search distance default to the surfaces' mean
+/// edge length h (surface-contact.md, N8) with the material's small-strain shear modulus `mu`.
+std::unique_ptr<ModelTerm> make_surface_contact_term(const SurfaceContactPair& pair,
+                                                     const Mesh& mesh, double mu) {
+  const bool self = pair.self.has_value();
+  const auto first = outward_triangles(mesh, self ? pair.self->name : pair.first->name);
+  const auto second = self ? first : outward_triangles(mesh, pair.second->name);
+  std::vector<std::array<int, 3>> both = first;
+  if (!self) both.insert(both.end(), second.begin(), second.end());
+  const double h = mean_edge_length(mesh, both);
+  SurfaceContactSettings settings;
+  settings.name = pair.name;
+  settings.tolerance = pair.tolerance;
+  settings.penalty = pair.penalty > 0.0 ? pair.penalty : default_surface_contact_penalty(mu, h);
+  settings.search_distance = pair.search_distance > 0.0 ? pair.search_distance : h;
+  return std::make_unique<SurfaceContact>(mesh, settings, first, second, self);
 }
 
 /// The contact term of `die`: candidates are the nodes of `die.surface`, or of
@@ -124,6 +143,8 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
     const double mu = shear_modulus(parts.material);
     for (const Die& die : c.dies) terms.push_back(make_die_term(die, c, mesh, mu));
   }
+  for (const SurfaceContactPair& pair : c.contacts)
+    terms.push_back(make_surface_contact_term(pair, mesh, shear_modulus(parts.material)));
   if (c.solver.viscosity > 0.0) {
     // ℓ of docs/theory/viscous.md (V1): the wall thickness (generated shell, airbag or sheet, or
     // `mesh.thickness` of a file mesh), else the mean edge length of the mesh.

@@ -671,6 +671,59 @@ Schema<Die> die_schema() {
   return s;
 }
 
+/// `contacts:` items: contact between tagged surfaces of the body.
+Schema<SurfaceContactPair> contact_schema() {
+  using Pair = SurfaceContactPair;
+  Schema<Pair> s;
+  s.place(&Pair::place, false);
+  name_key(
+      s, &Pair::name,
+      "history columns `force_x:<name>`, `force_y:<name>`, `force_z:<name>` (force of the "
+      "second surface on the first, N), `contact_nodes:<name>`, `penetration:<name>` "
+      "(largest penetration, mm); point field `contact_<name>` (contact pressure per reference "
+      "area at the nodes of the first surface, MPa)")
+      .required();
+  s.add({"surfaces",
+         "list of 2 surface tags",
+         "–",
+         "two different tags",
+         "",
+         {},
+         "the nodes of the first surface are kept out of the faces of the second (give the more "
+         "finely meshed one first)"},
+        [](const Field& f, Pair& p, ReadContext&) {
+          if (!f.node().IsSequence() || f.node().size() != 2)
+            f.fail("expected a list of 2 surface tags, got " + f.describe());
+          const std::vector<Field> items = f.items();
+          p.first = surface_ref(items[0]);
+          p.second = surface_ref(items[1]);
+          if (p.first->name == p.second->name)
+            items[1].fail(
+                "names the surface '" + p.first->name +
+                "' twice: for contact of a surface with itself give `self: " + p.first->name + "`");
+        });
+  optional_surface_key(s, "self", &Pair::self, "none",
+                       "a surface in contact with itself (folds, faces pressed together)");
+  s.rule("exactly one of `surfaces` and `self`",
+         [](const FieldMap& m, const Pair&, const ReadContext&) {
+           if (m.has("surfaces") && m.has("self"))
+             m.require("self").fail_at_key("give `surfaces` or `self`, not both");
+           if (!m.has("surfaces") && !m.has("self"))
+             m.self().fail_at_key("give `surfaces: [first, second]` or `self: <surface>`");
+         });
+  s.real("penalty", &Pair::penalty, Range::non_negative(), "MPa/mm",
+         "contact penalty; 0 chooses 10 μ / h (μ the small-strain shear modulus, h the mean edge "
+         "length of the surfaces; docs/theory/surface-contact.md)");
+  s.real("tolerance", &Pair::tolerance, Range::positive(), "mm",
+         "allowed penetration: the multipliers are updated until no node penetrates more (at "
+         "most `solver.max_augmentations` times per step)");
+  s.real("search_distance", &Pair::search_distance, Range::non_negative(), "mm",
+         "a node pairs with a face when it lies within this distance of the face's plane; 0 "
+         "chooses the mean edge length of the surfaces. A node that penetrates deeper in one "
+         "Newton iteration is not seen");
+  return s;
+}
+
 /// `caps:` items: rigid end caps.
 Schema<Cap> cap_schema() {
   Schema<Cap> s;
@@ -834,6 +887,8 @@ Schema<Case> case_schema() {
   list_key(s, "cavities", &Case::cavities, cavity_schema(), "fluid-filled cavities");
   list_key(s, "dies", &Case::dies, die_schema(), "rigid dies");
   list_key(s, "caps", &Case::caps, cap_schema(), "rigid end caps");
+  list_key(s, "contacts", &Case::contacts, contact_schema(),
+           "contact between surfaces of the body, or of a surface with itself");
   list_key(s, "probes", &Case::probes, probe_schema(), "displacement probes");
   s.nested<SolverSettings>("solver", &Case::solver, solver_schema());
   s.nested<OutputSettings>("output", &Case::output, output_schema());

@@ -107,6 +107,19 @@ struct Die {
   InputPlace place;
 };
 
+/// `contacts:` item: contact between two tagged surfaces of the body, or of one surface with
+/// itself (physics/surface_contact.hpp).
+struct SurfaceContactPair {
+  std::string name;                  ///< history columns `force_x:<name>` ...
+  std::optional<SurfaceRef> first;   ///< `surfaces: [first, second]`: nodes of first ...
+  std::optional<SurfaceRef> second;  ///< ... kept out of the faces of second
+  std::optional<SurfaceRef> self;    ///< `self:` one surface against itself
+  double penalty = 0.0;              ///< [MPa/mm]; 0: chosen from the material and mesh
+  double tolerance = 1e-3;           ///< allowed penetration [mm], > 0
+  double search_distance = 0.0;      ///< [mm]; 0: the mean edge length of the surfaces
+  InputPlace place;
+};
+
 /// A named point reported as ux/uy/uz columns (nearest node).
 struct Probe {
   std::string name;
@@ -178,6 +191,7 @@ struct Case {
   std::vector<Cavity> cavities;
   std::vector<Die> dies;
   std::vector<Cap> caps;
+  std::vector<SurfaceContactPair> contacts;
   std::vector<Probe> probes;
   SolverSettings solver;
   OutputSettings output;

@@ -185,6 +185,9 @@ void check_case_against_mesh(const Case& c, const Mesh& mesh) {
   }
   for (const Cavity& cavity : c.cavities) check_surface(c, mesh, cavity.surface);
   for (const Cap& cap : c.caps) check_surface(c, mesh, cap.surface);
+  for (const SurfaceContactPair& p : c.contacts)
+    for (const auto* ref : {&p.first, &p.second, &p.self})
+      if (*ref) check_surface(c, mesh, **ref);
   for (const Die& die : c.dies) {
     if (die.region) check_surface(c, mesh, *die.region);
     if (die.surface) check_surface(c, mesh, *die.surface);

@@ -18,7 +18,8 @@ std::string ReadContext::unique_name(const Field& f) {
     const InputPlace& first = it->second.second;
     f.fail("name '" + name + "' is already used by " + it->second.first +
            (first.line > 0 ? " (line " + std::to_string(first.line) + ")" : std::string()) +
-           "; names of boundary conditions, loads, cavities, dies, caps and probes must be unique");
+           "; names of boundary conditions, loads, cavities, dies, caps, contacts and probes must "
+           "be unique");
   }
   return name;
 }

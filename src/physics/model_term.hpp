@@ -44,6 +44,10 @@ class ModelTerm {
   virtual void set_first_global_dof(int /*dof*/) {}
   /// Tangent couplings beyond those of the elements (row, column), by full-state index.
   virtual void add_couplings(std::vector<std::pair<int, int>>& /*pairs*/) const {}
+  /// True when the couplings add_couplings reports have grown since the model last read them
+  /// (asked after every accepted step and restored checkpoint): the model then rebuilds the
+  /// tangent's sparsity (e.g. contact between surfaces whose pairs change as the body moves).
+  virtual bool couplings_changed() { return false; }
   /// False when the term's tangent is not symmetric (the solver then uses LU instead of LDL^T).
   virtual bool symmetric() const { return true; }
   /// Negative eigenvalues this term's global unknowns add to a stable tangent: a multiplier-like

@@ -100,7 +100,10 @@ MixedModel::MixedModel(const Mesh& mesh, AnyMaterial material, double inverse_bu
   }
   // (row, column) full-state dofs the terms couple, beyond the elements.
   std::vector<std::pair<int, int>> couplings;
-  for (const auto& term : terms_) term->add_couplings(couplings);
+  for (const auto& term : terms_) {
+    term->couplings_changed();  // what they report now is the pattern's start
+    term->add_couplings(couplings);
+  }
   const NodeGraph graph = build_node_graph(mesh.n_nodes(), element_nodes, couplings);
   distribution_ = std::make_unique<Distribution>(graph, element_nodes, n_global, constraints_);
   layout_ = std::make_unique<TangentLayout>(graph, element_nodes, *distribution_, couplings);
@@ -207,12 +210,28 @@ void MixedModel::restore(const Snapshot& s) {
   visit_elements([&](auto& e) { e.restore(s.bubbles); });
   for (size_t k = 0; k < terms_.size(); ++k) terms_[k]->load_state(s.term_states[k]);
   converged_state_ = state_;
+  refresh_couplings();
 }
 
 void MixedModel::save_converged() {
   converged_state_ = state_;
   visit_elements([](auto& e) { e.save_converged(); });
   for (auto& term : terms_) term->accept_step(state_);
+  refresh_couplings();
+}
+
+void MixedModel::refresh_couplings() {
+  bool changed = false;
+  for (auto& term : terms_) changed = term->couplings_changed() || changed;
+  if (!changed) return;
+  // The distribution (ranks, equation numbers) was made from the first graph and stays: only
+  // the pattern of the owned rows grows.
+  const ElementNodes element_nodes = visit_elements([](const auto& e) { return e.nodes(); });
+  std::vector<std::pair<int, int>> couplings;
+  for (const auto& term : terms_) term->add_couplings(couplings);
+  const NodeGraph graph = build_node_graph(mesh_.n_nodes(), element_nodes, couplings);
+  layout_ = std::make_unique<TangentLayout>(graph, element_nodes, *distribution_, couplings);
+  ++pattern_version_;
 }
 
 void MixedModel::restore_converged() {

@@ -129,6 +129,9 @@ class MixedModel {
   /// declare), entries zero, flagged symmetric when the tangent is: sequential on one rank, else
   /// distributed by the owned equation ranges. The caller owns it.
   Mat create_matrix() const;
+  /// Changes whenever the sparsity of the tangent changes (a term's couplings grew after an
+  /// accepted step): a matrix made by create_matrix before no longer fits; make a new one.
+  int pattern_version() const { return pattern_version_; }
 
   /// Threads of the element loops; 0 (the default) takes OMP_NUM_THREADS when it is set, else 1
   /// (read at process start: Gmsh resets OpenMP's own count to 1 later). Results do not depend
@@ -199,6 +202,10 @@ class MixedModel {
   Elements elements_;                           ///< element data and loops
   std::unique_ptr<Distribution> distribution_;  ///< ranks, equation numbering
   std::unique_ptr<TangentLayout> layout_;       ///< sparsity and element positions of K
+  int pattern_version_ = 0;                     ///< counts rebuilds of layout_
+  /// Rebuilds layout_ from the elements and the terms' current couplings when a term's couplings
+  /// grew (ModelTerm::couplings_changed); the distribution stays.
+  void refresh_couplings();
   std::vector<double> state_, converged_state_;
   std::vector<double> full_residual_;
   std::vector<double> external_force_;

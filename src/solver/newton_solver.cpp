@@ -68,6 +68,7 @@ NewtonSolver::NewtonSolver(MixedModel& model, const NewtonSettings& settings) : 
   x_ = model.create_vector();
   PLISSE_PETSC(VecDuplicate(x_, &r_));
   K_ = model.create_matrix();
+  pattern_version_ = model.pattern_version();
   PLISSE_PETSC(SNESCreate(model.comm(), &snes_));
   PLISSE_PETSC(SNESSetType(snes_, SNESNEWTONLS));
   PLISSE_PETSC(SNESSetFunction(snes_, r_, &NewtonSolver::form_function, this));
@@ -164,6 +165,14 @@ NewtonResult NewtonSolver::solve() {
   NewtonResult result;
   error_ = nullptr;
   model_.get_free(x_);
+  if (model_.pattern_version() != pattern_version_) {
+    // The tangent's sparsity grew (contact pairs): a new matrix, which the factorisation
+    // analyses anew.
+    MatDestroy(&K_);
+    K_ = model_.create_matrix();
+    pattern_version_ = model_.pattern_version();
+    PLISSE_PETSC(SNESSetJacobian(snes_, K_, K_, &NewtonSolver::form_jacobian, this));
+  }
   const double assembly_before = times_.assembly;
   const auto t0 = WallClock::now();
   const PetscErrorCode code = SNESSolve(snes_, nullptr, x_);

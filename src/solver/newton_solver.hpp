@@ -64,6 +64,7 @@ class NewtonSolver {
   SNES snes_ = nullptr;
   Vec x_ = nullptr, r_ = nullptr;
   Mat K_ = nullptr;
+  int pattern_version_ = 0;  ///< the model's pattern_version when K_ was made
   std::vector<PetscReal> history_;
   std::exception_ptr error_;
   AssemblyStatus last_status_;

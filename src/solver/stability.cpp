@@ -14,6 +14,7 @@ int expected_negative_pivots(const MixedModel& model) {
 
 InertiaCheck::InertiaCheck(MixedModel& model) : model_(model), symmetric_(model.symmetric()) {
   K_ = model.create_matrix();
+  pattern_version_ = model.pattern_version();
   PLISSE_PETSC(PetscLogStageGetId("Stability check", &stage_));
   if (stage_ < 0) PLISSE_PETSC(PetscLogStageRegister("Stability check", &stage_));
   PLISSE_PETSC(PCCreate(model.comm(), &pc_));
@@ -59,6 +60,14 @@ Inertia InertiaCheck::compute() {
     explicit StageGuard(PetscLogStage stage) { PLISSE_PETSC(PetscLogStagePush(stage)); }
     ~StageGuard() { PetscLogStagePop(); }
   } stage_guard(stage_);
+  if (model_.pattern_version() != pattern_version_) {
+    // The tangent's sparsity grew: new matrices (S_ and Kt_ follow K_).
+    MatDestroy(&S_);
+    MatDestroy(&Kt_);
+    MatDestroy(&K_);
+    K_ = model_.create_matrix();
+    pattern_version_ = model_.pattern_version();
+  }
   const AssemblyStatus status = model_.assemble_tangent(K_);
   FE_CHECK(status.ok,
            "stability check: the tangent cannot be assembled at the converged state "

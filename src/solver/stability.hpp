@@ -56,6 +56,7 @@ class InertiaCheck {
   MixedModel& model_;
   bool symmetric_ = true;
   Mat K_ = nullptr;                ///< tangent over the free dofs
+  int pattern_version_ = 0;        ///< the model's pattern_version when K_ was made
   Mat Kt_ = nullptr;               ///< K^T (unsymmetric models only)
   Mat S_ = nullptr;                ///< 0.5 (K + K^T) (unsymmetric models only)
   PetscObjectState pattern_ = -1;  ///< nonzero state of K_ when S_ was built

@@ -183,6 +183,16 @@ TEST(DistributedRun, CapAndTractionsAreTheSameOnTwoRanks) {
     EXPECT_EQ(s1[key], s2[key]) << key;
 }
 
+TEST(DistributedRun, SelfContactAndContactPatchTestAreTheSameOnTwoRanks) {
+  // The pillow's contact pairs change and its tangent's sparsity grows as the faces approach
+  // (surface-contact.md, N4 and N6); every rank finds the same pairs from the same state.
+  const std::string pillow = std::string(PLISSE_SOURCE_DIR) + "/examples/pillow-deflated.yaml";
+  expect_same_history(run("pillow", pillow, "", 1), run("pillow", pillow, "", 2), 1e-6);
+  const std::string blocks =
+      std::string(PLISSE_SOURCE_DIR) + "/tests/verification/contact/two-blocks-pressed.yaml";
+  expect_same_history(run("blocks", blocks, "", 1), run("blocks", blocks, "", 2), 1e-8);
+}
+
 TEST(DistributedRun, BucklingModesAndBranchSwitchingAreTheSameOnTwoRanks) {
   const std::string args = " --set solver.stability.branch_switch=true";
   const fs::path one = run("strip", kStrip, args, 1);

@@ -24,7 +24,8 @@ TEST(CheckCommand, ValidCaseExitsZeroWithASummary) {
   EXPECT_NE(r.output.find("neo-hookean: c1 = 0.1 MPa"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("678 nodes, 2412 tetrahedra"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("inner (402 triangles)"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("3 boundary conditions, 0 loads, 1 cavity, 0 dies, 1 probe\n"),
+  EXPECT_NE(r.output.find(
+                "3 boundary conditions, 0 loads, 1 cavity, 0 dies, 0 caps, 0 contacts, 1 probe\n"),
             std::string::npos)
       << r.output;
 }
