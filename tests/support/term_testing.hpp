@@ -2,6 +2,7 @@
 /// Helpers for finite-difference checks of model terms on small problems: a TangentSink that
 /// collects the tangent into a dense matrix over the full state, random states, the residual alone.
 #include <Eigen/Dense>
+#include <algorithm>
 #include <random>
 #include <span>
 #include <vector>
@@ -35,6 +36,22 @@ inline Eigen::VectorXd term_residual(ModelTerm& term, double t, const std::vecto
   std::vector<double> r(x.size(), 0.0);
   term.assemble(t, x, r, nullptr);
   return Eigen::Map<Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size()));
+}
+
+/// Largest |central difference of the residual - K| over the columns of K (step h; pressure
+/// columns skipped when `skip_pressures`, for terms that do not depend on them).
+inline double max_tangent_error(ModelTerm& term, double t, const std::vector<double>& x,
+                                const Eigen::MatrixXd& K, double h, bool skip_pressures = false) {
+  double max_error = 0.0;
+  for (int j = 0; j < static_cast<int>(x.size()); ++j) {
+    if (skip_pressures && j % kValuesPerNode == 3) continue;
+    auto xp = x, xm = x;
+    xp[j] += h;
+    xm[j] -= h;
+    const Eigen::VectorXd fd = (term_residual(term, t, xp) - term_residual(term, t, xm)) / (2 * h);
+    max_error = std::max(max_error, (fd - K.col(j)).cwiseAbs().maxCoeff());
+  }
+  return max_error;
 }
 
 }  // namespace plisse::test

@@ -102,14 +102,7 @@ TEST_P(DieContactTangent, IsTheDerivativeOfTheResidualAndSymmetric) {
   std::fill(r.begin(), r.end(), 0.0);
   term.assemble(t, x, r, &sink);
   const double h = 1e-6, scale = sink.K.cwiseAbs().maxCoeff();
-  double max_error = 0.0;
-  for (int j = 0; j < n; ++j) {
-    auto xp = x, xm = x;
-    xp[j] += h;
-    xm[j] -= h;
-    const Eigen::VectorXd fd = (term_residual(term, t, xp) - term_residual(term, t, xm)) / (2 * h);
-    max_error = std::max(max_error, (fd - sink.K.col(j)).cwiseAbs().maxCoeff());
-  }
+  const double max_error = test::max_tangent_error(term, t, x, sink.K, h);
   std::ostringstream relative;
   relative << std::scientific << max_error / scale;
   RecordProperty("fd_relative_error", relative.str());
@@ -192,14 +185,7 @@ TEST_P(DieContactCoulombTangent, IsTheDerivativeOfTheResidual) {
   std::fill(r.begin(), r.end(), 0.0);
   term.assemble(t, x, r, &sink);
   const double h = 1e-6, scale = sink.K.cwiseAbs().maxCoeff();
-  double max_error = 0.0;
-  for (int j = 0; j < n; ++j) {
-    auto xp = x, xm = x;
-    xp[j] += h;
-    xm[j] -= h;
-    const Eigen::VectorXd fd = (term_residual(term, t, xp) - term_residual(term, t, xm)) / (2 * h);
-    max_error = std::max(max_error, (fd - sink.K.col(j)).cwiseAbs().maxCoeff());
-  }
+  const double max_error = test::max_tangent_error(term, t, x, sink.K, h);
   std::ostringstream relative;
   relative << std::scientific << max_error / scale;
   RecordProperty("fd_relative_error", relative.str());
