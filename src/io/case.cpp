@@ -623,8 +623,9 @@ Schema<Die> die_schema() {
            "history columns `force_x:<name>`, `force_y:<name>`, `force_z:<name>` (force of the "
            "body on the die, N), `contact_nodes:<name>` (nodes in contact or glued), "
            "`penetration:<name>` (largest penetration, mm); Coulomb: `stick_nodes:<name>`, "
-           "`slip_nodes:<name>`. Point field `contact_<name>` in the step files: 0 free, 1 "
-           "sliding, 2 sticking")
+           "`slip_nodes:<name>`. Point fields in the step files: `contact_<name>` (0 free, 1 "
+           "sliding, 2 sticking), `contact_pressure_<name>` (MPa per reference area), "
+           "`gap_<name>` (signed gap to the die, mm)")
       .required();
   s.variant<DieShape>("shape", &Die::shape, kDieShapes, "the die's surface").required();
   s.vec3("point", &Die::point, "mm",

@@ -284,10 +284,21 @@ std::vector<double> DieContact::history_values(double t, std::span<const double>
 
 std::vector<NodeField> DieContact::node_fields(double t, std::span<const double> x,
                                                int n_nodes) const {
-  NodeField field{"contact_" + settings_.name, std::vector<double>(n_nodes, 0.0)};
-  for (size_t i = 0; i < nodes_.size(); ++i)
-    field.values[nodes_[i]] = static_cast<double>(reported_contact(static_cast<int>(i), t, x));
-  return {field};
+  const std::string& name = settings_.name;
+  NodeField state{"contact_" + name, std::vector<double>(n_nodes, 0.0)};
+  NodeField pressure{"contact_pressure_" + name, std::vector<double>(n_nodes, 0.0)};
+  NodeField gap{"gap_" + name, std::vector<double>(n_nodes, 0.0)};
+  for (size_t i = 0; i < nodes_.size(); ++i) {
+    const int v = nodes_[i];
+    state.values[v] = static_cast<double>(reported_contact(static_cast<int>(i), t, x));
+    const DieGap g = die_.gap(position(static_cast<int>(i), x), t);
+    gap.values[v] = g.g;
+    // The normal part of the die's force per reference area (D15): the contact pressure.
+    const double weight = state_[i].glued ? tie_areas_[i] : areas_[i];
+    if (weight > 0.0)
+      pressure.values[v] = respond(static_cast<int>(i), t, x, false).force.dot(g.n) / weight;
+  }
+  return {state, pressure, gap};
 }
 
 Vec3d DieContact::force_on_die(double t, std::span<const double> x) const {

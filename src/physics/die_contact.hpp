@@ -68,9 +68,11 @@ class DieContact : public ModelTerm {
   double violation(double t, std::span<const double> x) const;
   /// Nodes carrying a contact force (sliding with lambda_hat > 0) plus glued nodes.
   int n_contact_nodes(double t, std::span<const double> x) const;
-  /// The contact state of every mesh node, `contact_<name>`: 0 free (or not a contact node),
-  /// 1 sliding, 2 sticking (glued, or a Coulomb node within its friction cone); a Coulomb node
-  /// in contact reports how it ended the last accepted step.
+  /// Point fields over the mesh nodes, 0 off the die's contact surface: `contact_<name>`, the
+  /// contact state: 0 free, 1 sliding, 2 sticking (glued, or a Coulomb node within its friction
+  /// cone; a Coulomb node in contact reports how it ended the last accepted step);
+  /// `contact_pressure_<name>`, the normal part of the die's force per reference area [MPa],
+  /// positive when the die pushes; `gap_<name>`, the signed gap to the die [mm] (D2-D4).
   std::vector<NodeField> node_fields(double t, std::span<const double> x,
                                      int n_nodes) const override;
   int n_glued() const;

@@ -239,10 +239,18 @@ TEST(DieContactCoulomb, ASlidingFaceCarriesFrictionTimesItsPressureAgainstTheSli
   EXPECT_EQ(stick_and_slip_columns(term, 1.0, x), std::make_pair(0, 9));
   EXPECT_TRUE(term.force_on_die(1.0, x).isApprox(f, 1e-14));
   const std::vector<NodeField> fields = term.node_fields(1.0, x, mesh.n_nodes());
-  ASSERT_EQ(fields.size(), 1u);
+  ASSERT_EQ(fields.size(), 3u);
   EXPECT_EQ(fields[0].name, "contact_die");
   EXPECT_EQ(std::count(fields[0].values.begin(), fields[0].values.end(), 1.0), 9);
   EXPECT_EQ(std::count(fields[0].values.begin(), fields[0].values.end(), 0.0), mesh.n_nodes() - 9);
+  // The contact pressure eps * 0.05 and the gap -0.05 mm at the 9 top nodes, 0 elsewhere.
+  EXPECT_EQ(fields[1].name, "contact_pressure_die");
+  EXPECT_EQ(fields[2].name, "gap_die");
+  for (int v = 0; v < mesh.n_nodes(); ++v) {
+    const bool top = mesh.nodes[v].z() == 2.0;
+    EXPECT_NEAR(fields[1].values[v], top ? 3.0 * 0.05 : 0.0, 1e-14) << "node " << v;
+    EXPECT_NEAR(fields[2].values[v], top ? -0.05 : 0.0, 1e-14) << "node " << v;
+  }
   // Friction 0 is the frictionless die, residual and tangent.
   DieContact none(mesh, sliding_plane(0.2), coulomb(0.0), top);
   DieContact frictionless(mesh, sliding_plane(0.2), settings(ContactKind::frictionless), top);
