@@ -22,10 +22,18 @@ namespace {
 
 const std::string kCaseDir = std::string(PLISSE_SOURCE_DIR) + "/tests/verification/contact/";
 
-TEST(SurfaceContactPatchTest, BlocksOnNonMatchingMeshesPassAUniformPressure) {
-  const auto dir = test::scratch_directory("surface-contact-patch");
-  const int status = test::run_plisse(
-      "run " + kCaseDir + "two-blocks-pressed.yaml -o " + dir.string(), dir.string() + ".log");
+/// The patch test with `element`; `force_tolerance`: allowed relative error of the top's force.
+void expect_patch_test(const std::string& element, double force_tolerance) {
+  SCOPED_TRACE(element);
+  const auto dir = test::scratch_directory("surface-contact-patch-" + element);
+  // Taylor-Hood: the same geometry meshed with 10-node tetrahedra by Gmsh.
+  const std::string options =
+      element == "mini"
+          ? ""
+          : " --set element=" + element + " --set mesh.file=meshes/two-blocks-order2.msh";
+  const int status =
+      test::run_plisse("run " + kCaseDir + "two-blocks-pressed.yaml -o " + dir.string() + options,
+                       dir.string() + ".log");
   ASSERT_EQ(status, 0) << "see " << dir.string() << ".log";
   const HistoryTable h = read_history(dir / "history.csv");
   ASSERT_FALSE(h.rows.empty());
@@ -36,12 +44,13 @@ TEST(SurfaceContactPatchTest, BlocksOnNonMatchingMeshesPassAUniformPressure) {
     const double lambda = (4.0 - 0.2 * t) / 4.0;
     const double force = 2.0 * c1 * (lambda - 1.0 / (lambda * lambda)) * 16.0;  // P A0 < 0
     // The top's reaction is the homogeneous block's force: the discretisation error of the
-    // interface alone (measured 9e-5 relative at the end).
-    EXPECT_NEAR(row[col("force_z:top")], force, 3e-4 * std::abs(force)) << "t = " << t;
+    // interface alone (measured at the end 9e-5 relative with MINI, 4.9e-4 with Taylor-Hood).
+    EXPECT_NEAR(row[col("force_z:top")], force, force_tolerance * std::abs(force)) << "t = " << t;
     // The lower block pushes the upper one up with the force the top pushes it down.
     EXPECT_NEAR(row[col("force_z:interface")], -row[col("force_z:top")], 1e-10 * std::abs(force));
-    // The faces tilt slightly where the interface is not uniform: a small tangential part.
-    EXPECT_NEAR(row[col("force_x:interface")], 0.0, 1e-5 * std::abs(force));
+    // The faces tilt slightly where the interface is not uniform: a small tangential part
+    // (measured 2e-6 of the force with MINI, 3.4e-5 with Taylor-Hood).
+    EXPECT_NEAR(row[col("force_x:interface")], 0.0, 1e-4 * std::abs(force));
     EXPECT_LE(row[col("penetration:interface")], tolerance) << "t = " << t;
     // The interface (half height) moves down by half the top's displacement; the free corner
     // expands as the homogeneous block does, 4 (lambda^-1/2 - 1).
@@ -55,7 +64,8 @@ TEST(SurfaceContactPatchTest, BlocksOnNonMatchingMeshesPassAUniformPressure) {
   // interior of the interface, not node by node on non-matching meshes (the master face's nodes
   // receive the nodes' forces by its shape functions, not as the consistent load of a uniform
   // pressure), so the nodes' pressures scatter about P: measured median error 1e-5, 80 % of the
-  // nodes within 1.7 %, the worst (at the free edges) 8.5 %. The pressure field of the blocks is
+  // nodes within 1.6 % (MINI) and 1.9 % (Taylor-Hood, 147 edge nodes), the worst (at the free
+  // edges) 8.5 % and 11 %. The pressure field of the blocks is
   // that of the homogeneous block, -tr(sigma)/3 = -(lambda^2 - 1/lambda)/3 for c1 = 0.5, except
   // near the interface's free edges.
   const double lambda = 0.95, P = -2.0 * c1 * (lambda - 1.0 / (lambda * lambda));
@@ -73,19 +83,29 @@ TEST(SurfaceContactPatchTest, BlocksOnNonMatchingMeshesPassAUniformPressure) {
   const auto quantile = [](const std::vector<double>& v, double q) {
     return v[static_cast<size_t>(q * static_cast<double>(v.size() - 1))];
   };
-  RecordProperty("contact_pressure_min_median_max", std::to_string(contact.front() / P) + " " +
-                                                        std::to_string(quantile(contact, 0.5) / P) +
-                                                        " " + std::to_string(contact.back() / P));
+  ::testing::Test::RecordProperty("contact_pressure_min_median_max",
+                                  std::to_string(contact.front() / P) + " " +
+                                      std::to_string(quantile(contact, 0.5) / P) + " " +
+                                      std::to_string(contact.back() / P));
   EXPECT_NEAR(quantile(contact, 0.5), P, 1e-3 * P);
   EXPECT_NEAR(quantile(contact, 0.1), P, 0.03 * P);
   EXPECT_NEAR(quantile(contact, 0.9), P, 0.03 * P);
-  EXPECT_NEAR(contact.front(), P, 0.12 * P);
-  EXPECT_NEAR(contact.back(), P, 0.12 * P);
+  EXPECT_NEAR(contact.front(), P, 0.15 * P);
+  EXPECT_NEAR(contact.back(), P, 0.15 * P);
   const double hydrostatic = -(lambda * lambda - 1.0 / lambda) / 3.0;
   const std::vector<double> pressure = sorted_nonzero("pressure");
   EXPECT_NEAR(quantile(pressure, 0.5), hydrostatic, 1e-3 * hydrostatic);
   EXPECT_NEAR(quantile(pressure, 0.1), hydrostatic, 0.03 * hydrostatic);
   EXPECT_NEAR(quantile(pressure, 0.9), hydrostatic, 0.03 * hydrostatic);
+}
+
+TEST(SurfaceContactPatchTest, BlocksOnNonMatchingMeshesPassAUniformPressure) {
+  expect_patch_test("mini", 3e-4);
+}
+
+TEST(SurfaceContactPatchTest, TaylorHoodBlocksOnNonMatchingMeshesPassAUniformPressure) {
+  // The facets are the flat sub-triangles of the 6-node faces (N1), which are flat here.
+  expect_patch_test("taylor-hood", 1e-3);
 }
 
 /// The gap between the middles of the pillow's inner faces, 3.6 mm at the start [mm].

@@ -2,6 +2,8 @@
 // but not joined (each has its own nodes there), meshed with different element sizes (1 mm below,
 // 0.7 mm above), so the two faces of the interface do not match.
 // Regenerate with:  gmsh -3 -format msh22 two-blocks.geo -o two-blocks.msh
+//              and:  gmsh -3 -order 2 -format msh22 two-blocks.geo -o two-blocks-order2.msh
+// (the second-order mesh, for the Taylor-Hood element)
 SetFactory("OpenCASCADE");
 Box(1) = {0, 0, 0, 4, 4, 2};
 Box(2) = {0, 0, 2, 4, 4, 2};
