@@ -287,12 +287,15 @@ bool SurfaceContact::update_multipliers(std::span<const double> x) {
     again = true;
   }
   // The pairs were held during the iterations; where the converged state pairs a node
-  // differently, the step is solved again with the new pairs (N4).
-  std::vector<int> found = find_pairs(x, pairs_);
-  if (found != pairs_) {
-    pairs_ = std::move(found);
-    again = true;
-  }
+  // differently and the node carries a force with either pair, the step is solved again with
+  // the new pairs (N4). A node without force under both changes nothing in the residual.
+  const std::vector<Contact> before = contacts(x);
+  pairs_ = find_pairs(x, pairs_);
+  const std::vector<Contact> after = contacts(x);
+  for (size_t i = 0; i < nodes_.size(); ++i)
+    if (before[i].facet != after[i].facet &&
+        (before[i].lambda_hat > 0.0 || after[i].lambda_hat > 0.0))
+      again = true;
   return again;
 }
 
