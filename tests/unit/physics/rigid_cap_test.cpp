@@ -53,15 +53,7 @@ void expect_tangent_is_derivative(CapSetup& s) {
   std::vector<double> r(s.n, 0.0);
   s.cap->assemble(1.0, x, r, &sink);
   const double h = 1e-6, scale = sink.K.cwiseAbs().maxCoeff();
-  double max_error = 0.0;
-  for (int j = 0; j < s.n; ++j) {
-    auto xp = x, xm = x;
-    xp[j] += h;
-    xm[j] -= h;
-    const Eigen::VectorXd fd =
-        (term_residual(*s.cap, 1.0, xp) - term_residual(*s.cap, 1.0, xm)) / (2 * h);
-    max_error = std::max(max_error, (fd - sink.K.col(j)).cwiseAbs().maxCoeff());
-  }
+  const double max_error = test::max_tangent_error(*s.cap, 1.0, x, sink.K, h);
   EXPECT_LT(max_error, 1e-8 * scale);
   EXPECT_LT((sink.K - sink.K.transpose()).cwiseAbs().maxCoeff(), 1e-14 * scale);
   // Every non-zero entry is among the declared couplings or in the nodal block.
