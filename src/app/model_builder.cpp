@@ -50,7 +50,8 @@ void check_free_displacements(const Case& c, const Mesh& mesh,
 }
 
 /// The term of a `contacts:` item; penalty and search distance default to the surfaces' mean
-/// edge length h (surface-contact.md, N8) with the material's small-strain shear modulus `mu`.
+/// edge length h (surface-contact.md, N8): the penalty the dies' 10 mu / h (contact.md, D11) with
+/// the material's small-strain shear modulus `mu`.
 std::unique_ptr<ModelTerm> make_surface_contact_term(const SurfaceContactPair& pair,
                                                      const Mesh& mesh, double mu) {
   const bool self = pair.self.has_value();
@@ -62,7 +63,7 @@ std::unique_ptr<ModelTerm> make_surface_contact_term(const SurfaceContactPair& p
   SurfaceContactSettings settings;
   settings.name = pair.name;
   settings.tolerance = pair.tolerance;
-  settings.penalty = pair.penalty > 0.0 ? pair.penalty : default_surface_contact_penalty(mu, h);
+  settings.penalty = pair.penalty > 0.0 ? pair.penalty : default_die_penalty(mu, h);
   settings.search_distance = pair.search_distance > 0.0 ? pair.search_distance : h;
   return std::make_unique<SurfaceContact>(mesh, settings, first, second, self);
 }
@@ -139,12 +140,13 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
   for (const Cavity& cavity : c.cavities)
     terms.push_back(std::make_unique<CavityTerm>(cavity, mesh, constraints));
   for (const Cap& cap : c.caps) terms.push_back(std::make_unique<RigidCap>(cap, mesh, constraints));
-  if (!c.dies.empty()) {
+  if (!c.dies.empty() || !c.contacts.empty()) {
+    // The contact penalties' default scale (contact.md, D11).
     const double mu = shear_modulus(parts.material);
     for (const Die& die : c.dies) terms.push_back(make_die_term(die, c, mesh, mu));
+    for (const SurfaceContactPair& pair : c.contacts)
+      terms.push_back(make_surface_contact_term(pair, mesh, mu));
   }
-  for (const SurfaceContactPair& pair : c.contacts)
-    terms.push_back(make_surface_contact_term(pair, mesh, shear_modulus(parts.material)));
   if (c.solver.viscosity > 0.0) {
     // ℓ of docs/theory/viscous.md (V1): the wall thickness (generated shell, airbag or sheet, or
     // `mesh.thickness` of a file mesh), else the mean edge length of the mesh.

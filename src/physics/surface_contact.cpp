@@ -191,19 +191,31 @@ std::vector<int> SurfaceContact::find_pairs(std::span<const double> x,
   return out;
 }
 
+NodeFacetGap SurfaceContact::gap(size_t i, int facet, std::span<const double> x,
+                                 bool with_hessian) const {
+  const auto& t = facets_[facet];
+  return node_facet_gap(deformed_position(mesh_, x, nodes_[i]), deformed_position(mesh_, x, t[0]),
+                        deformed_position(mesh_, x, t[1]), deformed_position(mesh_, x, t[2]),
+                        with_hessian);
+}
+
 std::vector<SurfaceContact::Contact> SurfaceContact::contacts(std::span<const double> x) const {
   const double eps = settings_.penalty;
   std::vector<Contact> out(nodes_.size());
   for (size_t i = 0; i < nodes_.size(); ++i) {
     const int f = pairs_[i];
     if (f < 0) continue;
-    const auto& t = facets_[f];
-    const NodeFacetGap gap =
-        node_facet_gap(deformed_position(mesh_, x, nodes_[i]), deformed_position(mesh_, x, t[0]),
-                       deformed_position(mesh_, x, t[1]), deformed_position(mesh_, x, t[2]), false);
-    out[i] = {f, gap.g, std::max(0.0, multipliers_[i] - eps * gap.g)};
+    const NodeFacetGap g = gap(i, f, x, false);
+    out[i] = {f, g.g, std::max(0.0, multipliers_[i] - eps * g.g), g.n};
   }
   return out;
+}
+
+double SurfaceContact::largest_penetration(const std::vector<Contact>& contacts) {
+  double worst = 0.0;
+  for (const Contact& c : contacts)
+    if (c.facet >= 0) worst = std::max(worst, -c.gap);
+  return worst;
 }
 
 void SurfaceContact::assemble(double, std::span<const double> x, std::span<double> residual,
@@ -216,18 +228,15 @@ void SurfaceContact::assemble(double, std::span<const double> x, std::span<doubl
     if (c.lambda_hat <= 0.0) continue;
     const auto& t = facets_[c.facet];
     const std::array<int, 4> nodes = {nodes_[i], t[0], t[1], t[2]};
-    const NodeFacetGap gap =
-        node_facet_gap(deformed_position(mesh_, x, nodes[0]), deformed_position(mesh_, x, nodes[1]),
-                       deformed_position(mesh_, x, nodes[2]), deformed_position(mesh_, x, nodes[3]),
-                       tangent != nullptr);
+    const NodeFacetGap g = gap(i, c.facet, x, tangent != nullptr);
     // Pi = A/(2 eps) (lambda_hat^2 - lambda^2): r += -A lambda_hat dg/dx   (N2)
     const double A = areas_[i];
     for (int a = 0; a < 4; ++a)
       for (int k = 0; k < 3; ++k)
-        residual[node_dof(nodes[a], k)] -= A * c.lambda_hat * gap.gradient[3 * a + k];
+        residual[node_dof(nodes[a], k)] -= A * c.lambda_hat * g.gradient[3 * a + k];
     if (!tangent) continue;
     // K = A (eps dg/dx dg/dx^T - lambda_hat d2g/dx2)   (N3)
-    K = A * (eps * gap.gradient * gap.gradient.transpose() - c.lambda_hat * gap.hessian);
+    K = A * (eps * g.gradient * g.gradient.transpose() - c.lambda_hat * g.hessian);
     // Blocks between the node and a facet node go in only when declared (N6); the facet's own
     // nodes share a tetrahedron and are always coupled.
     for (int a = 0; a < 4; ++a)
@@ -277,11 +286,8 @@ bool SurfaceContact::couplings_changed() {
 
 bool SurfaceContact::update_multipliers(std::span<const double> x) {
   const std::vector<Contact> cs = contacts(x);
-  double worst = 0.0;
-  for (const Contact& c : cs)
-    if (c.facet >= 0) worst = std::max(worst, -c.gap);
   bool again = false;
-  if (worst > settings_.tolerance) {
+  if (largest_penetration(cs) > settings_.tolerance) {
     // lambda <- max(0, lambda - eps g) = lambda_hat; 0 without a facet   (N5)
     for (size_t i = 0; i < nodes_.size(); ++i) multipliers_[i] = cs[i].lambda_hat;
     again = true;
@@ -362,32 +368,18 @@ Vec3d SurfaceContact::force(std::span<const double> x) const {
   // (N7)
   const std::vector<Contact> cs = contacts(x);
   Vec3d sum = Vec3d::Zero();
-  for (size_t i = 0; i < nodes_.size(); ++i) {
-    if (cs[i].lambda_hat <= 0.0) continue;
-    const auto& t = facets_[cs[i].facet];
-    const NodeFacetGap gap =
-        node_facet_gap(deformed_position(mesh_, x, nodes_[i]), deformed_position(mesh_, x, t[0]),
-                       deformed_position(mesh_, x, t[1]), deformed_position(mesh_, x, t[2]), false);
-    sum += areas_[i] * cs[i].lambda_hat * gap.n;
-  }
+  for (size_t i = 0; i < nodes_.size(); ++i) sum += areas_[i] * cs[i].lambda_hat * cs[i].normal;
   return sum;
 }
 
 double SurfaceContact::penetration(std::span<const double> x) const {
-  double worst = 0.0;
-  for (const Contact& c : contacts(x))
-    if (c.facet >= 0) worst = std::max(worst, -c.gap);
-  return worst;
+  return largest_penetration(contacts(x));
 }
 
 int SurfaceContact::n_contact_nodes(std::span<const double> x) const {
   int n = 0;
   for (const Contact& c : contacts(x)) n += c.lambda_hat > 0.0;
   return n;
-}
-
-double default_surface_contact_penalty(double shear_modulus, double element_size) {
-  return 10.0 * shear_modulus / element_size;
 }
 
 }  // namespace plisse

@@ -13,6 +13,7 @@
 
 #include "mesh/mesh.hpp"
 #include "physics/model_term.hpp"
+#include "physics/node_facet_gap.hpp"
 
 namespace plisse {
 
@@ -78,11 +79,16 @@ class SurfaceContact : public ModelTerm {
  private:
   /// Gap, multiplier and pair of one node at x.
   struct Contact {
-    int facet = -1;           ///< -1: no facet within reach
-    double gap = 0.0;         ///< [mm]
-    double lambda_hat = 0.0;  ///< max(0, lambda - eps g) [MPa]
+    int facet = -1;                ///< -1: no facet within reach
+    double gap = 0.0;              ///< [mm]
+    double lambda_hat = 0.0;       ///< max(0, lambda - eps g) [MPa]
+    Vec3d normal = Vec3d::Zero();  ///< the facet's unit normal (N9)
   };
   std::vector<Contact> contacts(std::span<const double> x) const;
+  /// The gap of contact node i to `facet` at x, with its derivatives (N9-N13).
+  NodeFacetGap gap(size_t i, int facet, std::span<const double> x, bool with_hessian) const;
+  /// Largest penetration -g of the paired nodes, 0 when none penetrates.
+  static double largest_penetration(const std::vector<Contact>& contacts);
   /// Deformed positions of the facets' nodes (those of both surfaces; the others are zero).
   std::vector<Vec3d> positions(std::span<const double> x) const;
   /// Whether node i may pair with facet f at all (not one of its own or, for self contact,
@@ -105,9 +111,5 @@ class SurfaceContact : public ModelTerm {
   std::set<std::pair<int, int>> declared_;      ///< node pairs in the tangent's sparsity
   bool declared_grew_ = false;
 };
-
-/// Default penalty of a surface contact when the case gives 0: 10 mu / h as for the dies
-/// (contact.md, D11), h the mean edge length of the two surfaces.
-double default_surface_contact_penalty(double shear_modulus, double element_size);
 
 }  // namespace plisse
