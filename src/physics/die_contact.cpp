@@ -155,12 +155,23 @@ void DieContact::assemble(double t, std::span<const double> x, std::span<double>
   }
 }
 
-DieContact::Contact DieContact::reported_contact(int i, double t, std::span<const double> x) const {
-  const Contact c = respond(i, t, x, false).contact;
+DieContact::Contact DieContact::reported(int i, Contact in_step) const {
   // After accept_step a Coulomb node that slid sits on its cone's surface with no slip since:
   // what it did in that step is its state.
-  if (c == Contact::none || settings_.contact != ContactKind::coulomb) return c;
+  if (in_step == Contact::none || settings_.contact != ContactKind::coulomb) return in_step;
   return state_[i].slid ? Contact::sliding : Contact::sticking;
+}
+
+std::pair<int, int> DieContact::count_sticking_and_sliding(double t, std::span<const double> x,
+                                                           bool as_reported) const {
+  std::pair<int, int> out{0, 0};
+  for (size_t i = 0; i < nodes_.size(); ++i) {
+    Contact c = respond(static_cast<int>(i), t, x, false).contact;
+    if (as_reported) c = reported(static_cast<int>(i), c);
+    out.first += c == Contact::sticking;
+    out.second += c == Contact::sliding;
+  }
+  return out;
 }
 
 bool DieContact::symmetric() const {
@@ -270,12 +281,7 @@ std::vector<double> DieContact::history_values(double t, std::span<const double>
   std::vector<double> values = {f[0], f[1], f[2], static_cast<double>(n_contact_nodes(t, x)),
                                 violation(t, x)};
   if (settings_.contact == ContactKind::coulomb) {
-    int stick = 0, slip = 0;
-    for (size_t i = 0; i < nodes_.size(); ++i) {
-      const Contact c = reported_contact(static_cast<int>(i), t, x);
-      stick += c == Contact::sticking;
-      slip += c == Contact::sliding;
-    }
+    const auto [stick, slip] = count_sticking_and_sliding(t, x, true);
     values.push_back(stick);
     values.push_back(slip);
   }
@@ -290,13 +296,13 @@ std::vector<NodeField> DieContact::node_fields(double t, std::span<const double>
   NodeField gap{"gap_" + name, std::vector<double>(n_nodes, 0.0)};
   for (size_t i = 0; i < nodes_.size(); ++i) {
     const int v = nodes_[i];
-    state.values[v] = static_cast<double>(reported_contact(static_cast<int>(i), t, x));
+    const NodeResponse r = respond(static_cast<int>(i), t, x, false);
+    state.values[v] = static_cast<double>(reported(static_cast<int>(i), r.contact));
     const DieGap g = die_.gap(position(static_cast<int>(i), x), t);
     gap.values[v] = g.g;
     // The normal part of the die's force per reference area (D15): the contact pressure.
     const double weight = state_[i].glued ? tie_areas_[i] : areas_[i];
-    if (weight > 0.0)
-      pressure.values[v] = respond(static_cast<int>(i), t, x, false).force.dot(g.n) / weight;
+    if (weight > 0.0) pressure.values[v] = r.force.dot(g.n) / weight;
   }
   return {state, pressure, gap};
 }
@@ -328,13 +334,7 @@ int DieContact::n_glued() const {
 }
 
 std::pair<int, int> DieContact::sticking_and_sliding(double t, std::span<const double> x) const {
-  std::pair<int, int> out{0, 0};
-  for (size_t i = 0; i < nodes_.size(); ++i) {
-    const Contact c = respond(static_cast<int>(i), t, x, false).contact;
-    out.first += c == Contact::sticking;
-    out.second += c == Contact::sliding;
-  }
-  return out;
+  return count_sticking_and_sliding(t, x, false);
 }
 
 std::optional<size_t> DieContact::index_of(int node) const {

@@ -118,9 +118,12 @@ class DieContact : public ModelTerm {
   void add_friction(int i, double t, const Vec3d& xi, const DieGap& gap, double lambda_hat,
                     bool with_tangent, NodeResponse& out) const;
   NodeResponse respond(int i, double t, std::span<const double> x, bool with_tangent) const;
-  /// The state reported for node i at (t, x): a Coulomb node in contact, how it ended the last
-  /// accepted step.
-  Contact reported_contact(int i, double t, std::span<const double> x) const;
+  /// The state reported for node i whose state in the step is `in_step`: a Coulomb node in
+  /// contact, how it ended the last accepted step.
+  Contact reported(int i, Contact in_step) const;
+  /// Nodes sticking (first) and sliding (second) at (t, x): in the step, or `as_reported`.
+  std::pair<int, int> count_sticking_and_sliding(double t, std::span<const double> x,
+                                                 bool as_reported) const;
   Vec3d position(int i, std::span<const double> x) const;
   /// Position of `node` in nodes_, if it is one of the die's nodes.
   std::optional<size_t> index_of(int node) const;
