@@ -98,12 +98,8 @@ MixedModel::MixedModel(const Mesh& mesh, AnyMaterial material, double inverse_bu
     term->set_first_global_dof(DofMap::kPerNode * mesh.n_nodes() + next_global);
     next_global += term->n_global_unknowns();
   }
-  // (row, column) full-state dofs the terms couple, beyond the elements.
-  std::vector<std::pair<int, int>> couplings;
-  for (const auto& term : terms_) {
-    term->couplings_changed();  // what they report now is the pattern's start
-    term->add_couplings(couplings);
-  }
+  for (const auto& term : terms_) term->couplings_changed();  // what they report now is the start
+  const std::vector<std::pair<int, int>> couplings = term_couplings();
   const NodeGraph graph = build_node_graph(mesh.n_nodes(), element_nodes, couplings);
   distribution_ = std::make_unique<Distribution>(graph, element_nodes, n_global, constraints_);
   layout_ = std::make_unique<TangentLayout>(graph, element_nodes, *distribution_, couplings);
@@ -227,11 +223,17 @@ void MixedModel::refresh_couplings() {
   // The distribution (ranks, equation numbers) was made from the first graph and stays: only
   // the pattern of the owned rows grows.
   const ElementNodes element_nodes = visit_elements([](const auto& e) { return e.nodes(); });
-  std::vector<std::pair<int, int>> couplings;
-  for (const auto& term : terms_) term->add_couplings(couplings);
+  const std::vector<std::pair<int, int>> couplings = term_couplings();
   const NodeGraph graph = build_node_graph(mesh_.n_nodes(), element_nodes, couplings);
   layout_ = std::make_unique<TangentLayout>(graph, element_nodes, *distribution_, couplings);
   ++pattern_version_;
+}
+
+std::vector<std::pair<int, int>> MixedModel::term_couplings() const {
+  // (row, column) full-state dofs the terms couple, beyond the elements.
+  std::vector<std::pair<int, int>> couplings;
+  for (const auto& term : terms_) term->add_couplings(couplings);
+  return couplings;
 }
 
 void MixedModel::restore_converged() {

@@ -206,6 +206,8 @@ class MixedModel {
   /// Rebuilds layout_ from the elements and the terms' current couplings when a term's couplings
   /// grew (ModelTerm::couplings_changed); the distribution stays.
   void refresh_couplings();
+  /// The (row, column) couplings all terms declare now (ModelTerm::add_couplings).
+  std::vector<std::pair<int, int>> term_couplings() const;
   std::vector<double> state_, converged_state_;
   std::vector<double> full_residual_;
   std::vector<double> external_force_;

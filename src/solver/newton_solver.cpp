@@ -67,12 +67,10 @@ NewtonSolver::NewtonSolver(MixedModel& model, const NewtonSettings& settings) : 
   if (!logging) PLISSE_PETSC(PetscLogDefaultBegin());
   x_ = model.create_vector();
   PLISSE_PETSC(VecDuplicate(x_, &r_));
-  K_ = model.create_matrix();
-  pattern_version_ = model.pattern_version();
   PLISSE_PETSC(SNESCreate(model.comm(), &snes_));
   PLISSE_PETSC(SNESSetType(snes_, SNESNEWTONLS));
   PLISSE_PETSC(SNESSetFunction(snes_, r_, &NewtonSolver::form_function, this));
-  PLISSE_PETSC(SNESSetJacobian(snes_, K_, K_, &NewtonSolver::form_jacobian, this));
+  make_matrix();
   configure_snes(snes_, settings, model.symmetric());
   if (settings.linear.type == LinearSolverType::iterative) {
     KSP ksp = nullptr;
@@ -92,6 +90,13 @@ NewtonSolver::~NewtonSolver() {
   MatDestroy(&K_);
   VecDestroy(&r_);
   VecDestroy(&x_);
+}
+
+void NewtonSolver::make_matrix() {
+  MatDestroy(&K_);
+  K_ = model_.create_matrix();
+  pattern_version_ = model_.pattern_version();
+  PLISSE_PETSC(SNESSetJacobian(snes_, K_, K_, &NewtonSolver::form_jacobian, this));
 }
 
 PetscErrorCode NewtonSolver::form_function(SNES snes, Vec x, Vec f, void* context) {
@@ -165,14 +170,9 @@ NewtonResult NewtonSolver::solve() {
   NewtonResult result;
   error_ = nullptr;
   model_.get_free(x_);
-  if (model_.pattern_version() != pattern_version_) {
-    // The tangent's sparsity grew (contact pairs): a new matrix, which the factorisation
-    // analyses anew.
-    MatDestroy(&K_);
-    K_ = model_.create_matrix();
-    pattern_version_ = model_.pattern_version();
-    PLISSE_PETSC(SNESSetJacobian(snes_, K_, K_, &NewtonSolver::form_jacobian, this));
-  }
+  // The tangent's sparsity grew (contact pairs): a new matrix, which the factorisation analyses
+  // anew.
+  if (model_.pattern_version() != pattern_version_) make_matrix();
   const double assembly_before = times_.assembly;
   const auto t0 = WallClock::now();
   const PetscErrorCode code = SNESSolve(snes_, nullptr, x_);

@@ -59,6 +59,8 @@ class NewtonSolver {
  private:
   static PetscErrorCode form_function(SNES snes, Vec x, Vec f, void* context);
   static PetscErrorCode form_jacobian(SNES snes, Vec x, Mat J, Mat P, void* context);
+  /// (Re)makes K_ with the model's current sparsity and hands it to SNES.
+  void make_matrix();
 
   MixedModel& model_;
   SNES snes_ = nullptr;
