@@ -66,6 +66,25 @@ DieGeometry die(DieShape shape) {
   return DieGeometry(shape, Vec3d::Zero(), Vec3d::UnitY(), Vec3d::UnitZ(), 1.0, move, Ramp{});
 }
 
+/// The tangent of `term` at (t, x), its largest entry, and its largest difference to central
+/// differences of the residual (h = 1e-6), recorded relative to that entry as fd_relative_error.
+struct CheckedTangent {
+  Eigen::MatrixXd K;
+  double scale;
+  double max_error;
+};
+CheckedTangent checked_tangent(DieContact& term, double t, const std::vector<double>& x) {
+  DenseSink sink(static_cast<int>(x.size()));
+  std::vector<double> r(x.size(), 0.0);
+  term.assemble(t, x, r, &sink);
+  const double scale = sink.K.cwiseAbs().maxCoeff();
+  const double max_error = test::max_tangent_error(term, t, x, sink.K, 1e-6);
+  std::ostringstream relative;
+  relative << std::scientific << max_error / scale;
+  ::testing::Test::RecordProperty("fd_relative_error", relative.str());
+  return {sink.K, scale, max_error};
+}
+
 struct TangentCase {
   DieShape shape;
   ContactKind kind;
@@ -98,18 +117,11 @@ TEST_P(DieContactTangent, IsTheDerivativeOfTheResidualAndSymmetric) {
   ASSERT_TRUE(term.update_multipliers(x));
   const int glued = term.n_glued();
   EXPECT_GT(term.n_contact_nodes(t, x), glued);  // some sliding nodes are in contact too
-  DenseSink sink(n);
-  std::fill(r.begin(), r.end(), 0.0);
-  term.assemble(t, x, r, &sink);
-  const double h = 1e-6, scale = sink.K.cwiseAbs().maxCoeff();
-  const double max_error = test::max_tangent_error(term, t, x, sink.K, h);
-  std::ostringstream relative;
-  relative << std::scientific << max_error / scale;
-  RecordProperty("fd_relative_error", relative.str());
+  const auto [K, scale, max_error] = checked_tangent(term, t, x);
   // Away from the kink lambda - eps g = 0 the residual is smooth (quadratic for the plane and the
   // glue): central differences agree to h^2 |third derivative| + round-off / h ~ 1e-10 relative.
   EXPECT_LT(max_error, 1e-8 * scale);
-  EXPECT_LT((sink.K - sink.K.transpose()).cwiseAbs().maxCoeff(), 1e-14 * scale);
+  EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-14 * scale);
   EXPECT_TRUE(term.symmetric());
 }
 
@@ -181,19 +193,12 @@ TEST_P(DieContactCoulombTangent, IsTheDerivativeOfTheResidual) {
   } else {
     EXPECT_GT(slip, 0);  // the node under a sphere's or a cylinder's axis moves normal to it
   }
-  DenseSink sink(n);
-  std::fill(r.begin(), r.end(), 0.0);
-  term.assemble(t, x, r, &sink);
-  const double h = 1e-6, scale = sink.K.cwiseAbs().maxCoeff();
-  const double max_error = test::max_tangent_error(term, t, x, sink.K, h);
-  std::ostringstream relative;
-  relative << std::scientific << max_error / scale;
-  RecordProperty("fd_relative_error", relative.str());
+  const auto [K, scale, max_error] = checked_tangent(term, t, x);
   // Smooth away from the cone's surface and the kink lambda_hat = 0: as for D8.
   EXPECT_LT(max_error, 1e-8 * scale);
   // Sliding, the tangent is unsymmetric (the cone's radius grows with the pressure, D20).
   if (!GetParam().sticks) {
-    EXPECT_GT((sink.K - sink.K.transpose()).cwiseAbs().maxCoeff(), 1e-6 * scale);
+    EXPECT_GT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-6 * scale);
   }
 }
 
