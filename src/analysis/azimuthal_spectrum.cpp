@@ -144,4 +144,22 @@ void remove_harmonics(const AzimuthGrid& grid, const AzimuthalSpectrum& spectrum
   }
 }
 
+std::vector<double> harmonics_sum(const AzimuthGrid& grid, const AzimuthalSpectrum& spectrum,
+                                  const std::vector<int>& j_list) {
+  for (int j : j_list)
+    FE_CHECK(j >= 0 && j <= spectrum.j_max(), "harmonics_sum: harmonic " << j << " not computed");
+  const PhaseTable table(grid);
+  std::vector<double> g(static_cast<std::size_t>(grid.n_points()), 0.0);
+  for (int k = 0; k < grid.n_points(); ++k) {
+    double v = 0.0;
+    for (int j : j_list) {
+      const std::size_t p = table.index(j, k);
+      const auto i = static_cast<std::size_t>(j);
+      v += spectrum.a[i] * table.cos(p) + spectrum.b[i] * table.sin(p);
+    }
+    g[static_cast<std::size_t>(k)] = v;
+  }
+  return g;
+}
+
 }  // namespace plisse

@@ -55,4 +55,9 @@ AzimuthalSpectrum compute_spectrum(const AzimuthGrid& grid, const std::vector<do
 void remove_harmonics(const AzimuthGrid& grid, const AzimuthalSpectrum& spectrum, int j_end,
                       std::vector<double>& g);
 
+/// The grid signal of the harmonics `j_list` of `spectrum` alone: sum over j in j_list of
+/// a_j cos(.) + b_j sin(.) at every grid point. Precondition: every j in 0..j_max.
+std::vector<double> harmonics_sum(const AzimuthGrid& grid, const AzimuthalSpectrum& spectrum,
+                                  const std::vector<int>& j_list);
+
 }  // namespace plisse

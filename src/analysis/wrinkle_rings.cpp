@@ -18,8 +18,12 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 /// Sectors a ring can span: a full circle or a part bounded by mirror planes.
 constexpr std::array<double, 4> kSectorsDeg = {45.0, 90.0, 180.0, 360.0};
 /// A ring whose largest harmonic amplitude (m >= min_count) is at most this times its mean
-/// radius is flat (round-off level): count 0 (wrinkles.md, W11).
+/// radius is flat (round-off level): count 0 (wrinkles.md, W11); no harmonic at or below this
+/// level belongs to the wrinkle band (W16).
 constexpr double kFlatRelative = 1e-10;
+/// The lowest count that changes the shape of a ring: m = 0 is its mean, m = 1 a shift of the
+/// whole ring (wrinkles.md, W15).
+constexpr int kFirstShapeCount = 2;
 
 /// Sum_k w_k g_k: the mean of a grid signal over the sector.
 double grid_mean(const AzimuthGrid& grid, const std::vector<double>& g) {
@@ -49,6 +53,42 @@ std::vector<double> normal_deviation(const AzimuthGrid& grid, const std::vector<
 
 }  // namespace
 
+const char* ring_decision_name(RingDecision decision) {
+  switch (decision) {
+    case RingDecision::empty:
+      return "empty";
+    case RingDecision::flat:
+      return "flat";
+    case RingDecision::global_shape:
+      return "global_shape";
+    case RingDecision::below_threshold:
+      return "below_threshold";
+    case RingDecision::wrinkled:
+      return "wrinkled";
+  }
+  return "unknown";
+}
+
+std::vector<double> shape_envelope(const std::vector<int>& counts,
+                                   const std::vector<double>& amplitudes) {
+  FE_CHECK(counts.size() == amplitudes.size(), "shape_envelope: one amplitude per count");
+  std::vector<double> envelope(counts.size(), 0.0);
+  for (std::size_t i = 0; i < counts.size(); ++i) {
+    const int m = counts[i];
+    // (W15) E_m = max over 2 <= m' <= max(2, m/2), m' < m, of A_m' (m'/m)^2: the slowest decay
+    // (kinks) of the harmonics of a global shape, continued from counts at most half of m (so
+    // that the flank of a broad wrinkle peak does not raise the envelope of its own top), and
+    // always from the ovalisation m' = 2.
+    for (std::size_t k = 0; k < i; ++k) {
+      const int mk = counts[k];
+      if (mk < kFirstShapeCount || mk >= m || (mk > kFirstShapeCount && 2 * mk > m)) continue;
+      const double r = static_cast<double>(mk) / m;
+      envelope[i] = std::max(envelope[i], amplitudes[k] * r * r);
+    }
+  }
+  return envelope;
+}
+
 void validate_ring_options(const RingOptions& options) {
   FE_CHECK(options.axis >= 0 && options.axis <= 2,
            "wrinkle rings: axis must be 0 (x), 1 (y) or 2 (z), got " << options.axis);
@@ -61,6 +101,8 @@ void validate_ring_options(const RingOptions& options) {
   FE_CHECK(options.max_count >= options.min_count,
            "wrinkle rings: max_count (" << options.max_count << ") must be >= min_count ("
                                         << options.min_count << ")");
+  FE_CHECK(std::isfinite(options.peak_ratio) && options.peak_ratio >= 1.0,
+           "wrinkle rings: peak_ratio must be >= 1, got " << options.peak_ratio);
   if (options.sector_deg) {
     const double s = *options.sector_deg;
     FE_CHECK(std::find(kSectorsDeg.begin(), kSectorsDeg.end(), s) != kSectorsDeg.end(),
@@ -159,20 +201,63 @@ RingMetrics evaluate_ring(const RingSurface& surface, const RingOptions& options
   const int j_max = std::min(m_cap / step, j_grid);
   const AzimuthalSpectrum spectrum =
       compute_spectrum(grid, d, std::min(std::max(j_max, j_first - 1), j_grid));
-  for (int j = 0; j <= j_max; ++j) out.spectrum.emplace_back(j * step, spectrum.amplitude(j));
+  std::vector<int> counts;
+  std::vector<double> amplitudes;
+  for (int j = 0; j <= j_max; ++j) {
+    counts.push_back(j * step);
+    amplitudes.push_back(spectrum.amplitude(j));
+    out.spectrum.emplace_back(j * step, spectrum.amplitude(j));
+  }
+  out.envelope = shape_envelope(counts, amplitudes);  // W15
 
-  // Dominant count among m >= min_count (W11), and the amplitude without m < min_count (W12).
-  double peak = 0.0;
+  // The largest harmonic among m >= min_count, wrinkles or not (W11).
+  const double flat = kFlatRelative * mean_rho;
+  double dominant = 0.0;
   for (int j = j_first; j <= j_max; ++j)
-    if (spectrum.amplitude(j) > peak) {
-      peak = spectrum.amplitude(j);
+    if (spectrum.amplitude(j) > dominant) {
+      dominant = spectrum.amplitude(j);
+      out.dominant_count = j * step;
+    }
+  if (dominant <= flat) out.dominant_count = 0;
+
+  // Wrinkle peaks: the harmonics m >= min_count that stand out of the global shape's envelope
+  // by peak_ratio; the count is the largest of them (W16). The band adds each peak's foot, its
+  // contiguous neighbours m >= min_count above the envelope itself (W17).
+  const auto above = [&](int j, double ratio) {
+    const double A = spectrum.amplitude(j);
+    return A > flat && A > ratio * out.envelope[static_cast<std::size_t>(j)];
+  };
+  std::vector<bool> in_band(static_cast<std::size_t>(j_max) + 1, false);
+  double top = 0.0;
+  for (int j = j_first; j <= j_max; ++j) {
+    if (!above(j, options.peak_ratio)) continue;
+    if (spectrum.amplitude(j) > top) {
+      top = spectrum.amplitude(j);
       out.count = j * step;
     }
-  if (peak <= kFlatRelative * mean_rho) out.count = 0;
+    in_band[static_cast<std::size_t>(j)] = true;
+    for (int i = j - 1; i >= j_first && above(i, 1.0); --i)
+      in_band[static_cast<std::size_t>(i)] = true;
+    for (int i = j + 1; i <= j_max && above(i, 1.0); ++i)
+      in_band[static_cast<std::size_t>(i)] = true;
+  }
+  std::vector<int> band_j;
+  for (int j = j_first; j <= j_max; ++j)
+    if (in_band[static_cast<std::size_t>(j)]) {
+      band_j.push_back(j);
+      out.band.push_back(j * step);
+    }
+  const auto peak_to_peak = [](const std::vector<double>& g) {
+    const auto [lo, hi] = std::minmax_element(g.begin(), g.end());
+    return *hi - *lo;
+  };
+  if (!band_j.empty()) out.amplitude = peak_to_peak(harmonics_sum(grid, spectrum, band_j));  // W17
   remove_harmonics(grid, spectrum, j_first, d);
-  const auto [lo, hi] = std::minmax_element(d.begin(), d.end());
-  out.amplitude = *hi - *lo;
+  out.residual_amplitude = peak_to_peak(d);                              // W12
   out.wavelength = out.count > 0 ? kTwoPi * mean_rho / out.count : 0.0;  // W13
+  out.decision = !band_j.empty()           ? RingDecision::wrinkled
+                 : out.dominant_count == 0 ? RingDecision::flat
+                                           : RingDecision::global_shape;
   return out;
 }
 
@@ -192,8 +277,11 @@ WrinkleReport evaluate_wrinkles(const std::vector<Vec3d>& reference_nodes,
   WrinkleReport report;
   report.threshold = options.threshold_fraction * options.thickness;
   for (double lat : options.rings.latitudes_deg) {
-    report.rings.push_back(evaluate_ring(surface, options.rings, lat));
-    report.max_amplitude = std::max(report.max_amplitude, report.rings.back().amplitude);
+    RingMetrics ring = evaluate_ring(surface, options.rings, lat);
+    if (ring.decision == RingDecision::wrinkled && ring.amplitude <= report.threshold)
+      ring.decision = RingDecision::below_threshold;  // W14
+    report.max_amplitude = std::max(report.max_amplitude, ring.amplitude);
+    report.rings.push_back(std::move(ring));
   }
   report.wrinkled = report.max_amplitude > report.threshold;
   return report;

@@ -24,19 +24,46 @@ struct RingOptions {
   std::vector<double> latitudes_deg;  ///< rings, each in (-90, 90) [deg]
   int min_count = 3;                  ///< full-circle counts below this are global shape modes
   int max_count = 200;                ///< largest full-circle count searched and reported
-  std::optional<double> sector_deg;   ///< 360/180/90/45; default: detected from the mesh
+  /// A harmonic m >= min_count is part of the wrinkles only if its amplitude exceeds this times
+  /// the global shape's envelope at m (wrinkles.md, W15-W16); >= 1.
+  double peak_ratio = 2.0;
+  std::optional<double> sector_deg;  ///< 360/180/90/45; default: detected from the mesh
   /// Subtract the reference ring's own deviation from its mean shape, scaled by the ring's mean
   /// radial stretch (wrinkles.md, W8): facets of the linear surface (sag ~ h^2 / 8R) and
   /// reference imperfections are then not counted as wrinkles.
   bool subtract_reference = true;
 };
 
-/// Metrics of one ring (wrinkles.md, W11-W13). Lengths in mm.
+/// Why a ring is or is not wrinkled (wrinkles.md, W16-W17), in the order the rules are applied.
+enum class RingDecision {
+  empty,            ///< fewer than 4 points: the ring misses the surface
+  flat,             ///< no harmonic m >= min_count above round-off (10^-10 mean radius): the
+                    ///< ring is round, shifted or purely oval
+  global_shape,     ///< harmonics m >= min_count exist, but none stands out of the envelope of
+                    ///< the global shape by peak_ratio: a smooth change of the whole ring
+  below_threshold,  ///< a wrinkle peak, of amplitude <= threshold_fraction * thickness (W14)
+  wrinkled,         ///< a wrinkle peak above the threshold
+};
+
+/// "empty", "flat", "global_shape", "below_threshold", "wrinkled" (the summary.json spelling).
+const char* ring_decision_name(RingDecision decision);
+
+/// Metrics of one ring (wrinkles.md, W11-W17). Lengths in mm.
 struct RingMetrics {
   double latitude_deg = 0.0;
-  int count = 0;             ///< dominant full-circle count m >= min_count; 0 if empty or flat
-  double amplitude = 0.0;    ///< peak-to-peak normal deviation without the modes m < min_count
-  double wavelength = 0.0;   ///< 2 pi mean_radius / count; 0 when count == 0
+  /// Wrinkle count: the harmonic of the wrinkle band with the largest amplitude (W16); 0 when
+  /// the band is empty (empty, flat or global_shape).
+  int count = 0;
+  /// Peak-to-peak of the harmonics of the wrinkle band alone (W17) [mm]; 0 when it is empty.
+  double amplitude = 0.0;
+  double wavelength = 0.0;  ///< 2 pi mean_radius / count; 0 when count == 0
+  /// The largest harmonic m >= min_count whether or not it stands out (W11); 0 if empty or flat.
+  int dominant_count = 0;
+  /// Peak-to-peak normal deviation without the modes m < min_count (W12), wrinkles or not.
+  double residual_amplitude = 0.0;
+  /// The rule that decided (evaluate_ring gives `wrinkled` to every ring with a wrinkle peak;
+  /// evaluate_wrinkles turns those at or below the threshold into `below_threshold`).
+  RingDecision decision = RingDecision::empty;
   double mean_radius = 0.0;  ///< rho-bar of the deformed ring
   int n_points = 0;          ///< sampled ring points (0: the ring misses the surface)
   double sector_deg = 0.0;   ///< sector used (360, 180, 90, 45); 0 if n_points < 4
@@ -44,6 +71,12 @@ struct RingMetrics {
   /// sector, 1 on a full circle; m_cap = min(max_count, half the full-circle equivalent number
   /// of ring points)). A_m is the amplitude (half peak-to-peak) of harmonic m [mm].
   std::vector<std::pair<int, double>> spectrum;
+  /// The global shape's envelope E_m at each count of `spectrum` (W15) [mm]; 0 for m <= 2.
+  std::vector<double> envelope;
+  /// The counts of the wrinkle band, increasing: the peaks m >= min_count with
+  /// A_m > peak_ratio E_m (W16) and the foot of each, its contiguous neighbours m >= min_count
+  /// with A_m > E_m (W17); all above round-off. Empty: no wrinkles.
+  std::vector<int> band;
 };
 
 /// Ring options plus the wrinkled/unwrinkled criterion.
@@ -60,8 +93,15 @@ struct WrinkleReport {
   bool wrinkled = false;           ///< max_amplitude > threshold (wrinkles.md, W14)
 };
 
+/// The global shape's envelope at each entry of `amplitudes` (wrinkles.md, W15): for the count
+/// m_i = counts[i], E_i = max over the entries with 2 <= m_k <= max(2, m_i / 2), m_k < m_i, of
+/// A_k (m_k / m_i)^2; 0 when there is none. `counts` increasing, positive except a leading 0.
+std::vector<double> shape_envelope(const std::vector<int>& counts,
+                                   const std::vector<double>& amplitudes);
+
 /// Throws Error naming the rule if: axis not in 0..2, a latitude not in (-90, 90) or not finite,
-/// min_count < 1, max_count < min_count, sector_deg not one of 45, 90, 180, 360.
+/// min_count < 1, max_count < min_count, sector_deg not one of 45, 90, 180, 360, peak_ratio
+/// not finite or < 1.
 void validate_ring_options(const RingOptions& options);
 
 /// Sector of a ring from the reference azimuths of its points [rad]: the span 2 pi - (largest
@@ -74,13 +114,16 @@ struct DetectedSector {
 DetectedSector detect_sector(std::vector<double> theta);
 
 /// Metrics of the ring at `latitude_deg` on `surface` (wrinkles.md, sections 2-5). A ring that
-/// misses the surface or has fewer than 4 points gets count 0, amplitude 0, sector_deg 0.
+/// misses the surface or has fewer than 4 points gets count 0, amplitude 0, sector_deg 0 and
+/// the decision `empty`. A ring with a wrinkle peak gets `wrinkled` whatever its amplitude (the
+/// threshold is evaluate_wrinkles' business).
 RingMetrics evaluate_ring(const RingSurface& surface, const RingOptions& options,
                           double latitude_deg);
 
 /// All rings of `options.rings` on the outer surface given by `triangles` (node indices into
 /// `reference_nodes`, outward right-hand orientation), with nodal `displacement` (one per node,
-/// mm), and the wrinkled flag. Throws Error on invalid options or inconsistent sizes.
+/// mm), and the wrinkled flag. A ring whose wrinkle amplitude is at most the threshold has the
+/// decision `below_threshold`. Throws Error on invalid options or inconsistent sizes.
 WrinkleReport evaluate_wrinkles(const std::vector<Vec3d>& reference_nodes,
                                 const std::vector<std::array<int, 3>>& triangles,
                                 const std::vector<Vec3d>& displacement,
