@@ -98,11 +98,22 @@ void recompute_wrinkles(const WrinklesOptions& options) {
       dir.string().c_str(), checkpoint.steps, checkpoint.time,
       result.rings.wrinkled ? "wrinkled" : "not wrinkled", result.rings.max_amplitude,
       result.rings.threshold);
-  std::printf("  %14s %7s %16s %16s %14s %7s\n", "latitude [deg]", "count", "amplitude [mm]",
-              "wavelength [mm]", "radius [mm]", "points");
-  for (const RingMetrics& r : result.rings.rings)
-    std::printf("  %14.4g %7d %16.4g %16.4g %14.4g %7d\n", r.latitude_deg, r.count, r.amplitude,
-                r.wavelength, r.mean_radius, r.n_points);
+  std::printf("  %14s %7s %16s %16s %14s %7s  %s\n", "latitude [deg]", "count", "amplitude [mm]",
+              "wavelength [mm]", "radius [mm]", "points", "decision (dominant m: A_m / E_m)");
+  for (const RingMetrics& r : result.rings.rings) {
+    // The largest harmonic m >= min_count against the global shape's envelope (wrinkles.md,
+    // W15-W16): the ratio that decided, the full spectrum being in summary.json.
+    std::string why = ring_decision_name(r.decision);
+    for (std::size_t i = 0; i < r.spectrum.size(); ++i)
+      if (r.dominant_count > 0 && r.spectrum[i].first == r.dominant_count) {
+        char text[96];
+        std::snprintf(text, sizeof text, " (m = %d: %.3g / %.3g mm)", r.dominant_count,
+                      r.spectrum[i].second, r.envelope[i]);
+        why += text;
+      }
+    std::printf("  %14.4g %7d %16.4g %16.4g %14.4g %7d  %s\n", r.latitude_deg, r.count, r.amplitude,
+                r.wavelength, r.mean_radius, r.n_points, why.c_str());
+  }
   const auto& n = result.tension.n_elements;
   std::printf("  tension field (elements): %d taut, %d wrinkled, %d slack\n", n[0], n[1], n[2]);
 }

@@ -137,6 +137,7 @@ WrinkleMeter::WrinkleMeter(const Case& c, const Mesh& mesh) : surface_(c.output.
   options_.rings.center = w.center;
   options_.rings.latitudes_deg = w.rings_deg;
   options_.rings.min_count = w.min_count;
+  options_.rings.peak_ratio = w.peak_ratio;
   options_.thickness = *c.mesh.wall_thickness();
   options_.threshold_fraction = w.threshold;
   triangles_ = tagged_triangles(mesh, surface_);
@@ -186,18 +187,30 @@ std::vector<double> WrinkleMeter::history_values(const Result& r) const {
 
 nlohmann::json wrinkles_json(const Case& c, const WrinkleMeter::Result& r) {
   nlohmann::json rings = nlohmann::json::array();
-  for (const RingMetrics& ring : r.rings.rings)
+  for (const RingMetrics& ring : r.rings.rings) {
+    // [m, A_m, E_m] per harmonic (wrinkles.md, W10, W15): why the ring is or is not wrinkled.
+    nlohmann::json spectrum = nlohmann::json::array();
+    for (std::size_t i = 0; i < ring.spectrum.size(); ++i)
+      spectrum.push_back({ring.spectrum[i].first, ring.spectrum[i].second, ring.envelope[i]});
     rings.push_back({{"latitude_deg", ring.latitude_deg},
+                     {"decision", ring_decision_name(ring.decision)},
                      {"count", ring.count},
                      {"amplitude", ring.amplitude},
                      {"wavelength", ring.wavelength},
+                     {"dominant_count", ring.dominant_count},
+                     {"residual_amplitude", ring.residual_amplitude},
+                     {"band", ring.band},
                      {"mean_radius", ring.mean_radius},
                      {"points", ring.n_points},
-                     {"sector_deg", ring.sector_deg}});
+                     {"sector_deg", ring.sector_deg},
+                     {"spectrum", spectrum}});
+  }
   const auto& n = r.tension.n_elements;
   return {{"wrinkled", r.rings.wrinkled},
           {"max_amplitude", r.rings.max_amplitude},
           {"threshold", r.rings.threshold},
+          {"peak_ratio", c.output.wrinkles.peak_ratio},
+          {"min_count", c.output.wrinkles.min_count},
           {"thickness", *c.mesh.wall_thickness()},
           {"axis", std::string(1, c.output.wrinkles.axis)},
           {"surface", c.output.wrinkles.surface},

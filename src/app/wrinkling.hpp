@@ -42,9 +42,9 @@ class WrinkleMeter {
   /// Metrics of the model's current state, whose element_fields() are `fields`.
   Result evaluate(const MixedModel& model, const std::vector<ElementFields>& fields) const;
 
-  /// History columns and their values: wrinkle_amplitude (largest ring amplitude, mm),
-  /// wrinkle_count (count of that ring), wrinkled_fraction (outer area fraction in the wrinkled
-  /// state), slack_fraction.
+  /// History columns and their values: wrinkle_amplitude (largest ring wrinkle amplitude, mm;
+  /// 0 when no ring has a wrinkle peak), wrinkle_count (count of that ring, 0 likewise),
+  /// wrinkled_fraction (outer area fraction in the wrinkled state), slack_fraction.
   static std::vector<std::string> history_columns();
   std::vector<double> history_values(const Result& r) const;
 
@@ -57,9 +57,11 @@ class WrinkleMeter {
   std::vector<double> triangle_area_;
 };
 
-/// The summary.json table: {"wrinkled", "max_amplitude", "threshold", "thickness", "axis",
-/// "rings": [{"latitude_deg", "count", "amplitude", "wavelength", "mean_radius", "points",
-/// "sector_deg"}], "tension_field": {"taut", "wrinkled", "slack"} (element counts)}.
+/// The summary.json table: {"wrinkled", "max_amplitude", "threshold", "peak_ratio",
+/// "min_count", "thickness", "axis", "surface", "rings": [{"latitude_deg", "decision", "count",
+/// "amplitude", "wavelength", "dominant_count", "residual_amplitude", "band", "mean_radius",
+/// "points", "sector_deg", "spectrum": [[m, A_m, E_m], ...]}], "tension_field": {"taut",
+/// "wrinkled", "slack"} (element counts)} (docs/case-file.md, "Wrinkle metrics").
 nlohmann::json wrinkles_json(const Case& c, const WrinkleMeter::Result& r);
 
 /// Displacements of every node of the model's current state.

@@ -825,6 +825,10 @@ Schema<WrinkleSettings> wrinkle_schema() {
   s.integer("min_count", &WrinkleSettings::min_count, Range::at_least(1),
             "smaller full-circle wave counts (a shift, an ovalisation) are global shape changes, "
             "not wrinkles");
+  s.real("peak_ratio", &WrinkleSettings::peak_ratio, Range::at_least(1.0), "–",
+         "a harmonic m ≥ min_count is a wrinkle only if its amplitude exceeds peak_ratio × the "
+         "envelope of the global shape there (docs/theory/wrinkles.md, W15–W16); larger is "
+         "stricter");
   s.add({"surface",
          "surface tag",
          "–",

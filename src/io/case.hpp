@@ -160,6 +160,7 @@ struct WrinkleSettings {
   std::vector<double> rings_deg;  ///< latitudes [deg] in (-90, 90)
   double threshold = 0.1;         ///< wrinkled when amplitude > threshold * thickness, > 0
   int min_count = 3;              ///< smaller full-circle counts are global shape modes, >= 1
+  double peak_ratio = 2.0;        ///< a wrinkle peak exceeds this times the shape envelope, >= 1
   std::string surface = "outer";  ///< the tagged surface the rings lie on
   InputPlace place;               ///< where `wrinkles:` is
   InputPlace surface_place;
