@@ -119,6 +119,12 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
     history_.emplace(directory.history_csv(), columns_.extra_names());
   }
   if (root_) pvd_.emplace(directory.solution_pvd(), pvd_entries);
+  // The spectrum of every written step, cut back like the history on --resume.
+  if (root_ && meter_)
+    spectrum_.emplace(
+        resume ? WrinkleSpectrumWriter::reopen(
+                     directory.directory() / WrinkleSpectrumWriter::kFileName, resume->steps)
+               : WrinkleSpectrumWriter(directory.directory() / WrinkleSpectrumWriter::kFileName));
 }
 
 void RunRecorder::record(const StepInfo& info) {
@@ -167,6 +173,7 @@ void RunRecorder::write_step_files(const StepInfo& info, const std::vector<doubl
   write_step_vtu(directory_.directory() / name, case_, model_, fields_, step_start, info.dt,
                  point_fields, cell_fields);
   if (pvd_) pvd_->add(info.time, name);
+  if (spectrum_ && last_wrinkles_) spectrum_->add_step(info.step, info.time, last_wrinkles_->rings);
   last_written_ = info.step;
   output_seconds_ += seconds_since(t_out);
 }

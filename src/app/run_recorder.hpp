@@ -1,9 +1,10 @@
 #pragma once
 /// The run recorder: everything a run leaves in its run directory besides the log. It owns
-/// history.csv (rows from HistoryColumns), the VTU files with solution.pvd, checkpoint.bin and
-/// summary.json, and decides when each is written. Distributed runs: rank 0 writes the history,
-/// the PVD index, the checkpoint and the summary; every rank writes its own piece of each VTU step.
-/// The members that write are collective: every rank calls them in the same order.
+/// history.csv (rows from HistoryColumns), the VTU files with solution.pvd, wrinkle_spectrum.csv,
+/// checkpoint.bin and summary.json, and decides when each is written. Distributed runs: rank 0
+/// writes the history, the PVD index, the checkpoint and the summary; every rank writes its own
+/// piece of each VTU step. The members that write are collective: every rank calls them in the same
+/// order.
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -82,6 +83,8 @@ class RunRecorder {
   HistoryColumns columns_;
   std::optional<HistoryWriter> history_;  ///< rank 0's
   std::optional<PvdWriter> pvd_;          ///< rank 0's
+  /// Rank 0's wrinkle_spectrum.csv, when the case measures wrinkles: a block per written step.
+  std::optional<WrinkleSpectrumWriter> spectrum_;
   /// Element fields (stress, J) of the last recorded step: computed once per step for the
   /// history, the wrinkle metrics and the VTU file.
   std::vector<ElementFields> fields_;

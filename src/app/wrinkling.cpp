@@ -1,10 +1,12 @@
 #include "app/wrinkling.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <filesystem>
 
 #include "analysis/surface_columns.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "io/pvd_writer.hpp"
 #include "io/vtu_reader.hpp"
 #include "mesh/imperfection.hpp"
@@ -227,6 +229,78 @@ std::vector<Vec3d> nodal_displacements(const MixedModel& model) {
   for (int v = 0; v < model.mesh().n_nodes(); ++v)
     u[v] = Vec3d(x[DofMap::dof(v, 0)], x[DofMap::dof(v, 1)], x[DofMap::dof(v, 2)]);
   return u;
+}
+
+namespace {
+
+/// Shortest text that reads back to the same double (as history.csv).
+void append_number(std::string& out, double value) {
+  char text[32];
+  const auto result = std::to_chars(text, text + sizeof text, value);
+  out.append(text, result.ptr);
+}
+
+}  // namespace
+
+const char* WrinkleSpectrumWriter::header() {
+  return "step,time,latitude_deg,m,amplitude,envelope,in_band,decision";
+}
+
+WrinkleSpectrumWriter::WrinkleSpectrumWriter(fs::path path) : path_(std::move(path)) {
+  text_ = std::string(header()) + "\n";
+  write_file_atomically(path_, text_);
+}
+
+WrinkleSpectrumWriter WrinkleSpectrumWriter::reopen(fs::path path, int last_step) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return WrinkleSpectrumWriter(std::move(path));
+  const std::string text = read_file(path);
+  const std::size_t first = text.find('\n');
+  std::string head = text.substr(0, first);
+  if (!head.empty() && head.back() == '\r') head.pop_back();
+  if (head != header())
+    throw InputError(
+        {path.string(), 1, 0, "--resume"},
+        std::string("wrinkle_spectrum.csv does not start with the header ") + header());
+  WrinkleSpectrumWriter writer;
+  writer.path_ = std::move(path);
+  std::string kept = std::string(header()) + "\n";
+  for (std::size_t begin = first == std::string::npos ? text.size() : first + 1;
+       begin < text.size();) {
+    const std::size_t end = std::min(text.find('\n', begin), text.size());
+    const std::string line = text.substr(begin, end - begin);
+    begin = end + 1;
+    int step = -1;
+    const auto parsed = std::from_chars(line.data(), line.data() + line.size(), step);
+    if (parsed.ec == std::errc() && step <= last_step) kept += line + "\n";
+  }
+  writer.text_ = std::move(kept);
+  write_file_atomically(writer.path_, writer.text_);
+  return writer;
+}
+
+void WrinkleSpectrumWriter::add_step(int step, double time, const WrinkleReport& report) {
+  std::string text = text_;
+  for (const RingMetrics& ring : report.rings) {
+    const char* decision = ring_decision_name(ring.decision);
+    for (std::size_t i = 0; i < ring.spectrum.size(); ++i) {
+      const int m = ring.spectrum[i].first;
+      text += std::to_string(step);
+      text += ',';
+      append_number(text, time);
+      text += ',';
+      append_number(text, ring.latitude_deg);
+      text += ',' + std::to_string(m) + ',';
+      append_number(text, ring.spectrum[i].second);
+      text += ',';
+      append_number(text, ring.envelope[i]);
+      text += std::find(ring.band.begin(), ring.band.end(), m) != ring.band.end() ? ",1," : ",0,";
+      text += decision;
+      text += '\n';
+    }
+  }
+  write_file_atomically(path_, text);
+  text_ = std::move(text);
 }
 
 }  // namespace plisse::app

@@ -4,6 +4,7 @@
 /// state (rings, tension-field state) in the form of history columns, VTU fields and the
 /// summary.json table (docs/architecture.md, "Stability and wrinkling"; docs/theory/wrinkles.md).
 #include <array>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -63,6 +64,33 @@ class WrinkleMeter {
 /// "points", "sector_deg", "spectrum": [[m, A_m, E_m], ...]}], "tension_field": {"taut",
 /// "wrinkled", "slack"} (element counts)} (docs/case-file.md, "Wrinkle metrics").
 nlohmann::json wrinkles_json(const Case& c, const WrinkleMeter::Result& r);
+
+/// wrinkle_spectrum.csv of a run directory (docs/case-file.md, "Wrinkle metrics"): each ring's
+/// spectrum at every written step, one row per step, ring and count m, with the columns
+///   step,time,latitude_deg,m,amplitude,envelope,in_band,decision
+/// (A_m and E_m in mm, wrinkles.md W10 and W15; in_band 1 for the counts of the wrinkle band,
+/// W17; decision the ring's, W16-W18), so a user sees how each ring's decision evolved. Numbers
+/// are written as the shortest text that reads back to the same double. The file is rewritten
+/// atomically after each step, like history.csv, so it is always complete.
+class WrinkleSpectrumWriter {
+ public:
+  static constexpr const char* kFileName = "wrinkle_spectrum.csv";
+  static const char* header();
+  /// Creates (or replaces) `path` with the header and no rows.
+  explicit WrinkleSpectrumWriter(std::filesystem::path path);
+  /// Continues the file of a resumed run: keeps the rows of steps <= `last_step` (the
+  /// checkpoint's) and rewrites it. A missing file (a run from before this file existed) is
+  /// started anew; a file with another header throws InputError (key --resume).
+  static WrinkleSpectrumWriter reopen(std::filesystem::path path, int last_step);
+  /// Appends the rows of every ring of `report` at (step, time) and rewrites the file.
+  void add_step(int step, double time, const WrinkleReport& report);
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  WrinkleSpectrumWriter() = default;  // for reopen()
+  std::filesystem::path path_;
+  std::string text_;
+};
 
 /// Displacements of every node of the model's current state.
 std::vector<Vec3d> nodal_displacements(const MixedModel& model);
