@@ -61,6 +61,8 @@ const char* ring_decision_name(RingDecision decision) {
       return "flat";
     case RingDecision::global_shape:
       return "global_shape";
+    case RingDecision::local_shape:
+      return "local_shape";
     case RingDecision::below_threshold:
       return "below_threshold";
     case RingDecision::wrinkled:
@@ -87,6 +89,34 @@ std::vector<double> shape_envelope(const std::vector<int>& counts,
     }
   }
   return envelope;
+}
+
+int wrinkle_valley(const std::vector<int>& counts, const std::vector<double>& amplitudes,
+                   std::size_t peak, double ratio) {
+  FE_CHECK(counts.size() == amplitudes.size() && peak < counts.size(),
+           "wrinkle_valley: one amplitude per count, and the peak among them");
+  // (W18) A wrinkle pattern of several waves is a band-limited peak: its spectrum rises to m*
+  // from a valley. A local change of shape (a flat patch, a dent) has a broad, flat spectrum up
+  // to m ~ circumference / its width, with no valley. The valley must be two consecutive
+  // full-circle counts low: a ring symmetric about a plane (a patch on top and one below) has
+  // its odd harmonics zero, and such a zero is no valley. On a grid of even counts only (a
+  // quarter model) the symmetry is the model's and the odd counts are not there.
+  const int top = counts[peak];
+  // m* <= 2 is a peak only with min_count <= 2, where the user counts the global modes
+  // themselves: there is no lower band to be separated from.
+  if (top <= kFirstShapeCount) return 0;
+  const double level = amplitudes[peak] / ratio;
+  for (std::size_t k = 0; k < peak; ++k) {
+    const int m = counts[k];
+    if (m < std::max(1, top / 2)) continue;
+    double v = amplitudes[k];
+    if (k + 1 < counts.size() && counts[k + 1] == m + 1) {
+      if (k + 1 == peak) continue;  // the pair would hold the peak itself
+      v = std::max(v, amplitudes[k + 1]);
+    }
+    if (v < level) return m;
+  }
+  return -1;
 }
 
 void validate_ring_options(const RingOptions& options) {
@@ -229,8 +259,13 @@ RingMetrics evaluate_ring(const RingSurface& surface, const RingOptions& options
   };
   std::vector<bool> in_band(static_cast<std::size_t>(j_max) + 1, false);
   double top = 0.0;
+  bool above_envelope = false;  // a harmonic passed W16 (whether or not W18 then)
   for (int j = j_first; j <= j_max; ++j) {
     if (!above(j, options.peak_ratio)) continue;
+    above_envelope = true;
+    // (W18) and it must rise from a valley, or it is a local change of shape.
+    if (wrinkle_valley(counts, amplitudes, static_cast<std::size_t>(j), options.peak_ratio) < 0)
+      continue;
     if (spectrum.amplitude(j) > top) {
       top = spectrum.amplitude(j);
       out.count = j * step;
@@ -257,6 +292,7 @@ RingMetrics evaluate_ring(const RingSurface& surface, const RingOptions& options
   out.wavelength = out.count > 0 ? kTwoPi * mean_rho / out.count : 0.0;  // W13
   out.decision = !band_j.empty()           ? RingDecision::wrinkled
                  : out.dominant_count == 0 ? RingDecision::flat
+                 : above_envelope          ? RingDecision::local_shape
                                            : RingDecision::global_shape;
   return out;
 }

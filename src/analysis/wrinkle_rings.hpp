@@ -41,11 +41,15 @@ enum class RingDecision {
                     ///< ring is round, shifted or purely oval
   global_shape,     ///< harmonics m >= min_count exist, but none stands out of the envelope of
                     ///< the global shape by peak_ratio: a smooth change of the whole ring
+  local_shape,      ///< harmonics stand out of the envelope, but none is separated from the
+                    ///< lower counts by a valley (W18): a local change of shape (a flat patch,
+                    ///< a dent), whose spectrum is broad and flat
   below_threshold,  ///< a wrinkle peak, of amplitude <= threshold_fraction * thickness (W14)
   wrinkled,         ///< a wrinkle peak above the threshold
 };
 
-/// "empty", "flat", "global_shape", "below_threshold", "wrinkled" (the summary.json spelling).
+/// "empty", "flat", "global_shape", "local_shape", "below_threshold", "wrinkled" (the
+/// summary.json spelling).
 const char* ring_decision_name(RingDecision decision);
 
 /// Metrics of one ring (wrinkles.md, W11-W17). Lengths in mm.
@@ -74,8 +78,8 @@ struct RingMetrics {
   /// The global shape's envelope E_m at each count of `spectrum` (W15) [mm]; 0 for m <= 2.
   std::vector<double> envelope;
   /// The counts of the wrinkle band, increasing: the peaks m >= min_count with
-  /// A_m > peak_ratio E_m (W16) and the foot of each, its contiguous neighbours m >= min_count
-  /// with A_m > E_m (W17); all above round-off. Empty: no wrinkles.
+  /// A_m > peak_ratio E_m (W16) and a valley below them (W18), and the foot of each, its contiguous
+  /// neighbours m >= min_count with A_m > E_m (W17); all above round-off. Empty: no wrinkles.
   std::vector<int> band;
 };
 
@@ -98,6 +102,14 @@ struct WrinkleReport {
 /// A_k (m_k / m_i)^2; 0 when there is none. `counts` increasing, positive except a leading 0.
 std::vector<double> shape_envelope(const std::vector<int>& counts,
                                    const std::vector<double>& amplitudes);
+
+/// The valley below the harmonic at index `peak` (wrinkles.md, W18): the smallest count m with
+/// max(floor(m*/2), 1) <= m < m* (m* = counts[peak]) whose amplitude, and that of m + 1 when m + 1
+/// is a count below m*, are both below amplitudes[peak] / ratio; -1 when there is none (the
+/// harmonic is not separated from the lower counts: no wrinkle peak); 0 when m* <= 2 (only
+/// with min_count <= 2: no global band below to separate from). `counts` increasing.
+int wrinkle_valley(const std::vector<int>& counts, const std::vector<double>& amplitudes,
+                   std::size_t peak, double ratio);
 
 /// Throws Error naming the rule if: axis not in 0..2, a latitude not in (-90, 90) or not finite,
 /// min_count < 1, max_count < min_count, sector_deg not one of 45, 90, 180, 360, peak_ratio

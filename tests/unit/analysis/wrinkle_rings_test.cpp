@@ -494,6 +494,97 @@ TEST(WrinkleCriterion, WrinklesOnPartOfTheRingAreABroadPeak) {
   }
 }
 
+/// The signed angle theta - c in (-pi, pi].
+double angle_from(double theta, double c) { return std::remainder(theta - c, 2 * kPi); }
+
+/// A ring of radius 11 mm cut flat by chords: one flat patch of `fraction` of the circumference
+/// centred at each azimuth of `centres` (a ring pressed locally by a plate, at first contact).
+RingShape flat_patches(double fraction, std::vector<double> centres) {
+  return [fraction, centres](double t) {
+    const double half = kPi * fraction;
+    double rho = kOuter;
+    for (double c : centres) {
+      const double x = angle_from(t, c);
+      if (std::abs(x) < half) rho = std::min(rho, kOuter * std::cos(half) / std::cos(x));
+    }
+    return rho;
+  };
+}
+
+/// A ring of radius 11 mm with dents of depth `depth` and width `fraction` of the circumference
+/// (cos^2 profile) at the azimuths `centres`.
+RingShape dents(double depth, double fraction, std::vector<double> centres) {
+  return [depth, fraction, centres](double t) {
+    const double half = kPi * fraction;
+    double rho = kOuter;
+    for (double c : centres) {
+      const double x = angle_from(t, c);
+      if (std::abs(x) < half) rho -= depth * std::pow(std::cos(kPi * x / (2 * half)), 2);
+    }
+    return rho;
+  };
+}
+
+TEST(WrinkleCriterion, FlatPatchesAndDentsAreLocalShapesNotWrinkles) {
+  // A local change of shape has a broad, flat spectrum up to m ~ circumference / its width: its
+  // harmonics m = 3-10 stand above the m^-2 envelope of A_2 (W16 alone calls them 3-6 wrinkles),
+  // but no valley separates them from the global band (W18). Patches of 10-30 % of the
+  // circumference (0.5-4.5 mm deep), one or two opposite (odd harmonics zero: no valley either),
+  // dents 0.5 mm deep and 5-20 % wide, one, two apart, two opposite.
+  const Mesh& mesh = shell(Symmetry::full);
+  const std::vector<std::pair<std::string, RingShape>> rings = {
+      {"patch 10 %", flat_patches(0.1, {kPi / 2})},
+      {"patch 20 %", flat_patches(0.2, {kPi / 2})},
+      {"patch 30 %", flat_patches(0.3, {kPi / 2})},
+      {"two patches 10 %", flat_patches(0.1, {kPi / 2, -kPi / 2})},
+      {"two patches 20 %", flat_patches(0.2, {kPi / 2, -kPi / 2})},
+      {"dent 5 %", dents(0.5, 0.05, {0.4})},
+      {"dent 10 %", dents(0.5, 0.1, {0.4})},
+      {"dent 20 %", dents(0.5, 0.2, {0.4})},
+      {"two dents 10 %", dents(0.5, 0.1, {0.4, 2.0})},
+      {"two opposite dents 10 %", dents(0.5, 0.1, {0.4, 0.4 + kPi})},
+  };
+  for (const auto& [name, shape] : rings) {
+    SCOPED_TRACE(name);
+    const WrinkleReport r = evaluate_wrinkles(mesh, shaped(mesh, shape), options_for({0.0}));
+    const RingMetrics& ring = r.rings[0];
+    print_ring(name, ring);
+    EXPECT_GT(ring.residual_amplitude, 0.1);  // "wrinkled" without the criterion
+    EXPECT_TRUE(ring.decision == RingDecision::local_shape ||
+                ring.decision == RingDecision::global_shape)
+        << ring_decision_name(ring.decision);
+    EXPECT_EQ(ring.count, 0);
+    EXPECT_EQ(ring.amplitude, 0.0);
+    EXPECT_TRUE(ring.band.empty());
+    EXPECT_FALSE(r.wrinkled);
+  }
+  // Where W16 alone would call wrinkles, W18 decides (A_4 / E_4 about 3.5 and 100).
+  for (const auto& shape : {flat_patches(0.1, {kPi / 2, -kPi / 2}), dents(0.5, 0.1, {0.4, 2.0})})
+    EXPECT_EQ(evaluate_wrinkles(mesh, shaped(mesh, shape), options_for({0.0})).rings[0].decision,
+              RingDecision::local_shape);
+}
+
+TEST(WrinkleCriterion, WrinkleValley) {
+  // (W18) the valley is two consecutive counts m, m + 1 in [floor(m*/2), m*) below A_m* / ratio.
+  const std::vector<int> counts = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+  // cos 8 theta on an oval: the valley starts at m*/2 = 4.
+  EXPECT_EQ(wrinkle_valley(counts, {0, 0, 1, 0, 0, 0, 0, 0, 0.1}, 8, 2.0), 4);
+  // A flat spectrum (a local patch): none.
+  EXPECT_EQ(wrinkle_valley(counts, {0, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1}, 4, 2.0), -1);
+  // Odd harmonics zero (a ring symmetric about a plane): a zero alone is no valley.
+  EXPECT_EQ(wrinkle_valley(counts, {0, 0, 0.2, 0, 0.2, 0, 0.2, 0, 0.1}, 8, 2.0), -1);
+  EXPECT_EQ(wrinkle_valley(counts, {0, 0, 0.2, 0, 0.2, 0, 0.01, 0, 0.1}, 8, 2.0), 5);
+  // m* = 3: the pair m = 1, 2 (a shift, an ovalisation) must be low.
+  EXPECT_EQ(wrinkle_valley(counts, {0, 0, 0, 0.1, 0, 0, 0, 0, 0}, 3, 2.0), 1);
+  EXPECT_EQ(wrinkle_valley(counts, {0, 0, 0.2, 0.1, 0, 0, 0, 0, 0}, 3, 2.0), -1);
+  // m* = 4: the pair must not hold the peak, so m = 3 alone is not enough.
+  EXPECT_EQ(wrinkle_valley(counts, {0, 0, 0.2, 0, 0.1, 0, 0, 0, 0}, 4, 2.0), -1);
+  // m* = 2 (min_count 2: the user counts the ovalisation): nothing to separate from.
+  EXPECT_EQ(wrinkle_valley(counts, {0, 0.5, 0.1, 0, 0, 0, 0, 0, 0}, 2, 2.0), 0);
+  // Even counts only (a quarter model): one count is a valley.
+  EXPECT_EQ(wrinkle_valley({0, 2, 4, 6, 8}, {0, 0.2, 0.2, 0.01, 0.1}, 4, 2.0), 6);
+}
+
 TEST(WrinkleCriterion, SmallWrinklesAreBelowTheThresholdAndARoundRingIsFlat) {
   const Mesh& mesh = shell(Symmetry::full);
   const CylindricalFrame frame(1, Vec3d::Zero());
