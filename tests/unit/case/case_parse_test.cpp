@@ -280,15 +280,17 @@ TEST(CaseParse, YamlSpellingsOfBooleansAndNumbers) {
   EXPECT_FALSE(c.output.deformed);
 }
 
-TEST(CaseParse, EveryExampleParses) {
-  int n = 0;
-  for (const auto& entry :
-       std::filesystem::directory_iterator(std::string(PLISSE_SOURCE_DIR) + "/examples")) {
-    if (entry.path().extension() != ".yaml") continue;
-    EXPECT_NO_THROW(parse_case_file(entry.path().string())) << entry.path();
-    ++n;
+TEST(CaseParse, EveryExampleAndValidationCaseParses) {
+  for (const char* folder : {"/examples", "/validation"}) {
+    int n = 0;
+    for (const auto& entry :
+         std::filesystem::directory_iterator(std::string(PLISSE_SOURCE_DIR) + folder)) {
+      if (entry.path().extension() != ".yaml") continue;
+      EXPECT_NO_THROW(parse_case_file(entry.path().string())) << entry.path();
+      ++n;
+    }
+    EXPECT_GT(n, 0) << folder;
   }
-  EXPECT_GT(n, 0);
 }
 
 }  // namespace

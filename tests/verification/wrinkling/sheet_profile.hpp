@@ -1,0 +1,82 @@
+#pragma once
+/// The wrinkles across the middle of a stretched sheet (validation/sheet-tension-wrinkling.yaml),
+/// measured as scripts/sheet_wrinkles.py measures them for the study (docs/studies/sheet-tension.md):
+/// the top-surface profile w(y) = u_z along the mirror line x = L/2 of the quarter model, mirrored
+/// about y = 0 to the full width; its amplitude max |w|; its crests (alternating extrema of at
+/// least 10 % of the amplitude); and the wavelength, twice the mean spacing of the zero crossings
+/// between consecutive crests.
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace plisse::test {
+
+struct SheetProfile {
+  double strain = 0.0;      ///< nominal strain, -u_x(clamp) / (L/2)
+  double amplitude = 0.0;   ///< max |w| [mm]
+  int crests = 0;           ///< counted crests across the full width
+  double wavelength = 0.0;  ///< [mm]; 0 with fewer than two crests
+};
+
+/// The profile of one state: `reference` and `displacement` per node of the quarter model.
+inline SheetProfile measure_sheet(const std::vector<Vec3d>& reference,
+                                  const std::vector<Vec3d>& displacement) {
+  double half_length = 0.0, z_min = 1e300, z_max = -1e300;
+  for (const Vec3d& x : reference) {
+    half_length = std::max(half_length, x.x());
+    z_min = std::min(z_min, x.z());
+    z_max = std::max(z_max, x.z());
+  }
+  SheetProfile p;
+  double clamp_sum = 0.0;
+  int clamp_nodes = 0;
+  std::vector<std::pair<double, double>> line;  // (y, w)
+  for (std::size_t i = 0; i < reference.size(); ++i) {
+    const Vec3d& x = reference[i];
+    if (x.x() < 1e-9 * half_length) {
+      clamp_sum += displacement[i].x();
+      ++clamp_nodes;
+    }
+    if (x.z() > 0.5 * (z_min + z_max) && std::abs(x.x() - half_length) < 1e-6 * half_length)
+      line.emplace_back(x.y(), displacement[i].z());
+  }
+  p.strain = -clamp_sum / clamp_nodes / half_length;
+  std::sort(line.begin(), line.end());
+  std::vector<double> y, w;
+  for (auto it = line.rbegin(); it != line.rend(); ++it)
+    if (it->first > 1e-9) y.push_back(-it->first), w.push_back(it->second);
+  for (const auto& [yi, wi] : line) y.push_back(yi), w.push_back(wi);
+  for (double wi : w) p.amplitude = std::max(p.amplitude, std::abs(wi));
+  if (p.amplitude == 0.0) return p;
+
+  // Alternating extrema of at least 10 % of the amplitude (of two of one sign, the larger).
+  std::vector<std::size_t> crest;
+  const std::size_t n = w.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const double left = k > 0 ? w[k - 1] : -w[k], right = k + 1 < n ? w[k + 1] : -w[k];
+    const bool extremum =
+        (w[k] > 0 && w[k] >= left && w[k] >= right) || (w[k] < 0 && w[k] <= left && w[k] <= right);
+    if (!extremum || std::abs(w[k]) < 0.1 * p.amplitude) continue;
+    if (!crest.empty() && (w[crest.back()] > 0) == (w[k] > 0)) {
+      if (std::abs(w[k]) > std::abs(w[crest.back()])) crest.back() = k;
+      continue;
+    }
+    crest.push_back(k);
+  }
+  p.crests = static_cast<int>(crest.size());
+  std::vector<double> zeros;
+  for (std::size_t c = 0; c + 1 < crest.size(); ++c)
+    for (std::size_t k = crest[c]; k < crest[c + 1]; ++k)
+      if ((w[k] > 0) != (w[k + 1] > 0) && w[k + 1] != 0.0) {
+        zeros.push_back(y[k] - w[k] * (y[k + 1] - y[k]) / (w[k + 1] - w[k]));
+        break;
+      }
+  if (zeros.size() >= 2)
+    p.wavelength = 2.0 * (zeros.back() - zeros.front()) / static_cast<double>(zeros.size() - 1);
+  return p;
+}
+
+}  // namespace plisse::test
