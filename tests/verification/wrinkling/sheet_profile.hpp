@@ -1,10 +1,10 @@
 #pragma once
 /// The wrinkles across the middle of a stretched sheet (validation/sheet-tension-wrinkling.yaml),
-/// measured as scripts/sheet_wrinkles.py measures them for the study (docs/studies/sheet-tension.md):
-/// the top-surface profile w(y) = u_z along the mirror line x = L/2 of the quarter model, mirrored
-/// about y = 0 to the full width; its amplitude max |w|; its crests (alternating extrema of at
-/// least 10 % of the amplitude); and the wavelength, twice the mean spacing of the zero crossings
-/// between consecutive crests.
+/// measured as scripts/sheet_wrinkles.py measures them for the study
+/// (docs/studies/sheet-tension.md): the top-surface profile w(y) = u_z along the mirror line x =
+/// L/2 of the quarter model, mirrored about y = 0 to the full width; its amplitude max |w|; its
+/// crests (alternating extrema of at least 10 % of the amplitude); and the wavelength, twice the
+/// mean spacing of the zero crossings between consecutive crests.
 #include <algorithm>
 #include <cmath>
 #include <utility>
