@@ -93,6 +93,8 @@ void check_case(const CheckOptions& options) {
     out << "            warning: " << report.warnings[i] << '\n';
   for (const InputError& e : unsupported_features(c, mesh))
     std::cerr << "plisse check: warning: " << e.what() << " (plisse run refuses this case)\n";
+  for (const InputError& e : setup_warnings(c))
+    std::cerr << "plisse check: warning: " << e.what() << '\n';
   out << "  case      " << count(c.boundary.size(), "boundary condition") << ", "
       << count(c.loads.size(), "load") << ", " << count(c.cavities.size(), "cavity", "cavities")
       << ", " << count(c.dies.size(), "die") << ", " << count(c.caps.size(), "cap") << ", "

@@ -1,6 +1,7 @@
 #include "app/model_builder.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <set>
 
 #include "mesh/topology.hpp"
@@ -161,6 +162,33 @@ std::unique_ptr<MixedModel> make_model(const Mesh& mesh, ModelParts parts) {
   return std::make_unique<MixedModel>(mesh, std::move(parts.material), parts.inverse_bulk_modulus,
                                       std::move(parts.constraints), std::move(parts.terms),
                                       parts.element);
+}
+
+std::vector<InputError> setup_warnings(const Case& c) {
+  std::vector<InputError> out;
+  const double end = c.solver.end_time;
+  const auto number = [](double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return std::string(text);
+  };
+  const auto check = [&](const Ramp& ramp, const InputPlace& entry, const std::string& what) {
+    const InputPlace place{entry.file, entry.line, entry.column, entry.key + ".ramp"};
+    if (ramp.start >= end)
+      out.emplace_back(place, what + " starts at " + number(ramp.start) +
+                                  " s, not before solver.end_time (" + number(end) +
+                                  " s): it is never applied");
+    else if (ramp.end > end)
+      out.emplace_back(place, what + " ends at " + number(ramp.end) +
+                                  " s, after solver.end_time (" + number(end) +
+                                  " s): the run ends at " + number(100.0 * ramp.factor(end)) +
+                                  " % of it");
+  };
+  for (const Load& load : c.loads) check(load.ramp, load.place, "load '" + load.name + "'");
+  for (const Die& die : c.dies)
+    if (die.displacement != Vec3d::Zero())
+      check(die.ramp, die.place, "the motion of die '" + die.name + "'");
+  return out;
 }
 
 std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh) {

@@ -143,6 +143,7 @@ void log_header(RunLog& log, const PreparedRun& run, const fs::path& directory,
                 mesh.n_nodes(), mesh.n_tets(), to_string(model.element_family()).c_str(),
                 model.n_free(), model.dofs().n_free_pressure(), n_constrained);
   log.info(line);
+  for (const InputError& e : setup_warnings(c)) log.warn(e.what());
   for (const Load& load : c.loads) {
     if (load.type != LoadType::point_force) continue;
     const int v = nearest_node(mesh, load.point);

@@ -799,7 +799,18 @@ Schema<Probe> probe_schema() {
   Schema<Probe> s;
   s.place(&Probe::place, false);
   name_key(s, &Probe::name, "history columns `ux:<name>`, `uy:<name>`, `uz:<name>`").required();
-  s.vec3("point", &Probe::point, "mm", "the mesh node nearest to this point is reported")
+  s.add({"point",
+         "vector",
+         "mm",
+         "",
+         "",
+         {},
+         "the mesh node nearest to this point of the undeformed body is reported (refused when "
+         "farther from it than the longest edge at that node)"},
+        [](const Field& f, Probe& probe, ReadContext&) {
+          probe.point = f.vec3();
+          probe.point_place = f.place();
+        })
       .required();
   return s;
 }

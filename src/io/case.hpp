@@ -125,6 +125,7 @@ struct Probe {
   std::string name;
   Vec3d point = Vec3d::Zero();
   InputPlace place;
+  InputPlace point_place;  ///< where `point` is written
 };
 
 enum class Scheme { total_lagrangian, incremental };

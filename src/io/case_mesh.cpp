@@ -83,23 +83,24 @@ std::pair<double, double> planarity(const Mesh& mesh, const std::vector<int>& tr
   return {deviation, kPlanarityTolerance * mean_edge};
 }
 
-/// A point force acts on the node nearest its point: a point farther from that node than the
-/// longest edge there lies off the body (a wrong coordinate or unit), and is refused.
-void check_point_force(const Mesh& mesh, const Load& load) {
+/// A point force acts on, and a probe reports, the node nearest its point: a point farther from
+/// that node than the longest edge there lies off the body (a wrong coordinate or unit), and is
+/// refused. `what` names the entry ("point-force 'tip'", "probe 'centre'").
+void check_point_on_body(const Mesh& mesh, const Vec3d& point, const InputPlace& place,
+                         const std::string& what) {
   const auto text = [](const Vec3d& v) {
     std::string out = "[";  // appended, not "[" + ...: g++ 12 warns falsely (-Wrestrict) there
     for (int i = 0; i < 3; ++i) out += format_number(v[i]) + (i < 2 ? ", " : "]");
     return out;
   };
-  const int v = nearest_node(mesh, load.point);
-  const double distance = (mesh.nodes[v] - load.point).norm();
+  const int v = nearest_node(mesh, point);
+  const double distance = (mesh.nodes[v] - point).norm();
   const double longest = longest_edge_at(mesh, v);
   if (distance > longest)
-    throw InputError(load.point_place,
-                     "point-force '" + load.name + "': the point " + text(load.point) + " is " +
-                         format_number(distance) + " mm from the nearest node " +
-                         text(mesh.nodes[v]) + ", farther than the longest edge there (" +
-                         format_number(longest) + " mm): give a point on the body");
+    throw InputError(place, what + ": the point " + text(point) + " is " + format_number(distance) +
+                                " mm from the nearest node " + text(mesh.nodes[v]) +
+                                ", farther than the longest edge there (" + format_number(longest) +
+                                " mm): give a point on the body");
 }
 
 /// Imperfections, branch switching and the wrinkle threshold are relative to the wall thickness: a
@@ -181,8 +182,11 @@ void check_case_against_mesh(const Case& c, const Mesh& mesh) {
     if (load.type == LoadType::pressure || load.type == LoadType::traction ||
         load.type == LoadType::follower_traction)
       check_surface(c, mesh, load.surface);
-    if (load.type == LoadType::point_force) check_point_force(mesh, load);
+    if (load.type == LoadType::point_force)
+      check_point_on_body(mesh, load.point, load.point_place, "point-force '" + load.name + "'");
   }
+  for (const Probe& probe : c.probes)
+    check_point_on_body(mesh, probe.point, probe.point_place, "probe '" + probe.name + "'");
   for (const Cavity& cavity : c.cavities) check_surface(c, mesh, cavity.surface);
   for (const Cap& cap : c.caps) check_surface(c, mesh, cap.surface);
   for (const SurfaceContactPair& p : c.contacts)

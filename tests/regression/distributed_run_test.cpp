@@ -39,6 +39,7 @@ const std::string kStrip =
 const std::string kCoarseIndentation =
     " --set mesh.element_size=3 --set mesh.inner_radius=12 --set dies[0].point=[0,15,0]"
     " --set dies[1].point=[0,-13,0] --set dies[0].move.displacement=[0,-4,0]"
+    " --set probes[0].point=[0,13,0]"
     " --set output.wrinkles.rings_deg=[30,50]";
 
 /// Runs `plisse run CASE ARGS` on `ranks` ranks into a fresh directory; returns the directory.

@@ -54,5 +54,37 @@ TEST(ModelBuilder, ExplicitMeshOrderAgainstTheElementIsRefusedAtThatKey) {
   EXPECT_NE(mini_errors[0].rule().find("MINI element needs linear ones"), std::string::npos);
 }
 
+// A ramp past solver.end_time leaves the load unfinished when the run ends (a silently partial
+// result unless meant), one that starts at or after it never acts: warnings at the ramp's key.
+TEST(ModelBuilder, RampsBeyondTheEndTimeAreWarnedAboutAtTheirKeys) {
+  const std::string text =
+      kCube +
+      "boundary: [{type: fixed, surface: bottom}]\n"
+      "loads:\n"
+      "  - {type: pressure, name: p, surface: top, value: 0.01, ramp: [0, 4]}\n"
+      "  - {type: pressure, name: q, surface: left, value: 0.01}\n"
+      "dies:\n"
+      "  - {name: plate, shape: plane, point: [0, 0, 3], normal: [0, 0, -1],\n"
+      "     move: {displacement: [0, 0, -1], ramp: [2, 3]}}\n"
+      "solver: {end_time: 2.0}\n";
+  const auto warnings = setup_warnings(parse_case_string(text, "c.yaml"));
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_EQ(warnings[0].place().key, "loads[0].ramp");
+  EXPECT_EQ(warnings[0].place().line, 5);
+  EXPECT_NE(warnings[0].rule().find("load 'p' ends at 4 s, after solver.end_time (2 s): the run "
+                                    "ends at 50 % of it"),
+            std::string::npos)
+      << warnings[0].rule();
+  EXPECT_EQ(warnings[1].place().key, "dies[0].ramp");
+  EXPECT_NE(warnings[1].rule().find("die 'plate' starts at 2 s, not before solver.end_time (2 s): "
+                                    "it is never applied"),
+            std::string::npos)
+      << warnings[1].rule();
+  // The same case run to 4 s: nothing to say (the default ramps follow end_time).
+  const Case whole = parse_case_string(
+      text.substr(0, text.find("solver:")) + "solver: {end_time: 4.0}\n", "c.yaml");
+  EXPECT_TRUE(setup_warnings(whole).empty());
+}
+
 }  // namespace
 }  // namespace plisse::app
