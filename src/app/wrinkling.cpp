@@ -7,6 +7,7 @@
 #include "analysis/surface_columns.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/history_writer.hpp"
 #include "io/pvd_writer.hpp"
 #include "io/vtu_reader.hpp"
 #include "mesh/imperfection.hpp"
@@ -230,17 +231,6 @@ std::vector<Vec3d> nodal_displacements(const MixedModel& model) {
     u[v] = Vec3d(x[DofMap::dof(v, 0)], x[DofMap::dof(v, 1)], x[DofMap::dof(v, 2)]);
   return u;
 }
-
-namespace {
-
-/// Shortest text that reads back to the same double (as history.csv).
-void append_number(std::string& out, double value) {
-  char text[32];
-  const auto result = std::to_chars(text, text + sizeof text, value);
-  out.append(text, result.ptr);
-}
-
-}  // namespace
 
 const char* WrinkleSpectrumWriter::header() {
   return "step,time,latitude_deg,m,amplitude,envelope,in_band,decision";

@@ -9,14 +9,14 @@
 #include "io/atomic_file.hpp"
 
 namespace plisse {
-namespace {
 
-/// Shortest text that reads back to the same double (std::to_chars round-trip guarantee).
 void append_number(std::string& out, double value) {
-  char text[32];
+  char text[32];  // std::to_chars round-trip guarantee: the shortest text of `value`
   const auto result = std::to_chars(text, text + sizeof text, value);
   out.append(text, result.ptr);
 }
+
+namespace {
 
 void append_row(std::string& out, std::span<const double> values) {
   for (std::size_t i = 0; i < values.size(); ++i) {

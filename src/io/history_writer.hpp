@@ -20,6 +20,10 @@
 
 namespace plisse {
 
+/// Appends the shortest text that reads back to the same double (std::to_chars), as history.csv
+/// writes its numbers; for other CSV files of a run (wrinkle_spectrum.csv).
+void append_number(std::string& out, double value);
+
 /// The content of a history.csv: column names and rows of numbers (rows[i].size() ==
 /// columns.size()).
 struct HistoryTable {
