@@ -25,6 +25,7 @@ Cerda & Mahadevan's; with runs of several thicknesses, the fitted exponent of t 
 The same definitions are asserted by tests/verification/wrinkling/sheet_tension_slow_test.cpp.
 """
 import argparse
+import functools
 import glob
 import math
 import os
@@ -118,6 +119,7 @@ def cerda_mahadevan(strain, length, thickness, poisson=0.5):
         3.0 * (1.0 - poisson**2) * strain) ** 0.25
 
 
+@functools.lru_cache(maxsize=None)
 def run_geometry(run):
     """(full length L, thickness t) of a run, from the clamp's nodes in its first VTU (an
     imperfection leaves the clamped edge where it was)."""
@@ -126,10 +128,9 @@ def run_geometry(run):
     return 2.0 * X[:, 0].max(), X[clamp, 2].max() - X[clamp, 2].min()
 
 
-def surface_figure(run, path, title):
+def surface_figure(run, rows, path, title):
     """Top view of the whole deformed sheet (the quarter mirrored twice), coloured by u_z, at the
-    written step of largest centre deflection."""
-    rows, _ = measure(run)
+    written step of largest centre deflection (`rows` from measure(run))."""
     step = max(rows, key=lambda r: r[2])[0]
     mesh = meshio.read(os.path.join(run, f"step_{step:04d}.vtu"))
     X, u = mesh.points, mesh.point_data["displacement"]
@@ -200,7 +201,7 @@ def figures(results, folder, prefix=""):
 
     for run, (rows, profiles) in results.items():
         name = os.path.basename(run.rstrip("/"))
-        surface_figure(run, os.path.join(folder, f"surface_{name}.png"),
+        surface_figure(run, rows, os.path.join(folder, f"surface_{name}.png"),
                        run_label(run, profiles))
         _, t = run_geometry(run)
         fig, ax = plt.subplots(figsize=(6, 3.2))
