@@ -9,6 +9,7 @@
 #include "mesh/box_mesh.hpp"
 #include "mesh/layered_shell.hpp"
 #include "mesh/spheroid_surface.hpp"
+#include "mesh/tube_mesh.hpp"
 
 namespace plisse {
 namespace {
@@ -115,6 +116,20 @@ const std::vector<MeshKind>& mesh_kinds() {
           integer_option("layers", &Spec::layers, layers, layers_help),
           real_option("element_size", &Spec::element_size, "mm", size, "in-plane element size"),
           order}});
+    // The tube (air beam): axis x, bent in the x-y plane, so its half is z >= 0 like the shells'.
+    k.push_back(
+        {"tube",
+         "open tube along x from 0 to length, wall centred on the mid radius, structured; tags "
+         "inner, outer, left (x = 0), right (x = length) and sym_z (half)",
+         {real_option("radius", &Spec::radius, "mm", size, "mid-surface radius R"),
+          real_option("length", &Spec::length, "mm", size, "length along x"),
+          real_option("thickness", &Spec::thickness, "mm", size, "wall thickness (< 2 radius)"),
+          integer_option("layers", &Spec::layers, layers, layers_help),
+          real_option("element_size", &Spec::element_size, "mm", size,
+                      "target element edge along and about the axis (<= radius)"),
+          MeshOption{"symmetry", "-", "part meshed: full | half (z >= 0)", nullptr, nullptr,
+                     &Spec::symmetry, Range::any()},
+          order}});
     return k;
   }();
   return kinds;
@@ -154,6 +169,10 @@ double estimate_n_tets(const MeshGenerationSpec& spec) {
   if (spec.kind == "sheet")
     return 6.0 * std::max(1.0, std::round(spec.length / spec.element_size)) *
            std::max(1.0, std::round(spec.width / spec.element_size)) * spec.layers;
+  if (spec.kind == "tube")
+    return 6.0 * std::max(1.0, std::round(spec.length / spec.element_size)) *
+           tube_divisions_around(spec.radius, spec.element_size, spec.symmetry == Symmetry::half) *
+           spec.layers;
   if (spec.kind == "spherical-shell")
     return 3.0 * spec.layers * f *
            estimate_spheroid_triangles(spec.inner_radius, spec.inner_radius, spec.element_size);
@@ -199,6 +218,16 @@ void validate_mesh_spec(const MeshGenerationSpec& spec) {
       reject("element_size",
              "must be <= height/2 = " + number(c) + " mm (got " + number(spec.element_size) + ")");
   }
+  if (spec.kind == "tube") {
+    if (spec.symmetry != Symmetry::full && spec.symmetry != Symmetry::half)
+      reject("symmetry", "a tube is meshed full or half (z >= 0), not " + to_string(spec.symmetry));
+    if (!(spec.thickness < 2.0 * spec.radius))
+      reject("thickness", "must be < 2 radius = " + number(2.0 * spec.radius) + " mm (got " +
+                              number(spec.thickness) + ")");
+    if (spec.element_size > spec.radius)
+      reject("element_size", "must be <= radius = " + number(spec.radius) + " mm (got " +
+                                 number(spec.element_size) + ")");
+  }
   const double n = estimate_n_tets(spec);
   if (n > kMaxGeneratedTets) {
     const std::string key = spec.kind == "cube" ? "divisions" : "element_size";
@@ -217,6 +246,9 @@ Mesh generate_mesh(const MeshGenerationSpec& spec) {
                          {sheet_cells(spec.length, spec.element_size),
                           sheet_cells(spec.width, spec.element_size), spec.layers},
                          spec.order);
+  if (spec.kind == "tube")
+    return make_tube_mesh(spec.radius, spec.length, spec.thickness, spec.layers, spec.element_size,
+                          spec.symmetry == Symmetry::half, spec.order);
   using Midpoint = std::function<Vec3d(int k1, int j1, int k2, int j2)>;
   if (spec.kind == "spherical-shell") {
     const double R = spec.inner_radius;

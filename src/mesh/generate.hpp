@@ -1,5 +1,5 @@
 #pragma once
-/// Generated meshes (through the Gmsh API): cube, spherical shell, airbag, sheet.
+/// Generated meshes (through the Gmsh API): cube, spherical shell, airbag, sheet, tube.
 ///
 /// The options of each kind are declared once in `mesh_kinds()` (key, unit, range, help, default);
 /// the case-file parser (`mesh:` section) and `plisse mesh KIND --key value` both read that table,
@@ -21,13 +21,14 @@ enum class Symmetry { full, half, quarter, octant };
 
 /// All generator inputs. Which members a kind uses is declared in `mesh_kinds()`.
 struct MeshGenerationSpec {
-  std::string kind;  ///< "cube" | "spherical-shell" | "airbag" | "sheet"
+  std::string kind;  ///< "cube" | "spherical-shell" | "airbag" | "sheet" | "tube"
   // cube: [0, edge]^3
   double edge = 5.0;  ///< [mm]
   int divisions = 4;  ///< element divisions per edge
   // spherical-shell: inner radius, wall thickness
   double inner_radius = 10.0;  ///< [mm]
-  // airbag: oblate closed shell, equatorial radius and total height of the mid-surface
+  // airbag: oblate closed shell, equatorial radius and total height of the mid-surface;
+  // tube: mid-surface radius (radius) and length (length)
   double radius = 50.0;  ///< [mm]
   double height = 20.0;  ///< [mm]
   // sheet: [0, length] x [0, width] x [0, thickness]
@@ -37,7 +38,7 @@ struct MeshGenerationSpec {
   double thickness = 1.0;              ///< wall/sheet thickness [mm]
   int layers = 3;                      ///< tetrahedra through the thickness (exactly)
   double element_size = 1.0;           ///< target in-surface element size [mm]
-  Symmetry symmetry = Symmetry::full;  ///< shell and airbag only
+  Symmetry symmetry = Symmetry::full;  ///< shell and airbag; tube: full or half
   // all kinds
   int order = 1;  ///< 1: 4-node tetrahedra; 2: 10-node (one node per edge, on curved walls)
 };

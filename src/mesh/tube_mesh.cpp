@@ -1,0 +1,103 @@
+#include "mesh/tube_mesh.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "core/error.hpp"
+#include "mesh/boundary_tags.hpp"
+#include "mesh/second_order.hpp"
+
+namespace plisse {
+
+int tube_divisions_around(double radius, double h, bool half) {
+  const int n = std::max(3, static_cast<int>(std::lround(std::numbers::pi * radius / h)));
+  return half ? n : 2 * n;
+}
+
+Mesh make_tube_mesh(double radius, double length, double thickness, int layers, double h,
+                    bool half, int order) {
+  FE_CHECK(radius > 0.5 * thickness && length > 0.0 && layers >= 1 && h > 0.0,
+           "make_tube_mesh: needs radius > thickness / 2 > 0, length > 0, layers >= 1, h > 0");
+  FE_CHECK(order == 1 || order == 2, "make_tube_mesh: order must be 1 or 2");
+  const int nx = std::max(1, static_cast<int>(std::lround(length / h)));
+  const int na = tube_divisions_around(radius, h, half);
+  // Node rows about the axis: na + 1 on the half tube (phi = 0 ... pi), na on the full one, whose
+  // row na is row 0 again (the Kuhn cut is the same in every cell, so the seam is conforming).
+  const int rows = half ? na + 1 : na;
+  auto node = [&](int i, int k, int j) { return i + (nx + 1) * (k % rows + rows * j); };
+  const double sweep = half ? std::numbers::pi : 2.0 * std::numbers::pi;
+  // Unit directions (cos phi, sin phi) about the axis; z exactly 0 at phi = 0 and phi = pi.
+  std::vector<std::array<double, 2>> direction(static_cast<std::size_t>(rows));
+  for (int k = 0; k < rows; ++k) {
+    const double phi = sweep * k / na;
+    auto& d = direction[static_cast<std::size_t>(k)];
+    const bool at_pi = half ? k == na : 2 * k == na;
+    d = at_pi ? std::array<double, 2>{-1.0, 0.0} : std::array<double, 2>{std::cos(phi), std::sin(phi)};
+  }
+  auto x_of = [&](int i) { return i == nx ? length : length * i / nx; };
+  auto r_of = [&](int j) {
+    const double inner = radius - 0.5 * thickness;
+    return j == layers ? radius + 0.5 * thickness : inner + j * thickness / layers;
+  };
+  Mesh mesh;
+  mesh.nodes.reserve(static_cast<std::size_t>((nx + 1) * rows * (layers + 1)));
+  for (int j = 0; j <= layers; ++j)
+    for (int k = 0; k < rows; ++k)
+      for (int i = 0; i <= nx; ++i) {
+        const auto& d = direction[static_cast<std::size_t>(k)];
+        mesh.nodes.emplace_back(x_of(i), r_of(j) * d[0], r_of(j) * d[1]);
+      }
+  static constexpr std::array<std::array<int, 3>, 6> kPermutations = {
+      {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
+  mesh.tets.reserve(static_cast<std::size_t>(6 * nx * na * layers));
+  for (int j = 0; j < layers; ++j)
+    for (int k = 0; k < na; ++k)
+      for (int i = 0; i < nx; ++i)
+        for (const auto& p : kPermutations) {
+          std::array<int, 3> corner = {i, k, j};
+          std::array<int, 4> tet{};
+          tet[0] = node(i, k, j);
+          for (std::size_t s = 0; s < 3; ++s) {
+            ++corner[static_cast<std::size_t>(p[s])];
+            tet[s + 1] = node(corner[0], corner[1], corner[2]);
+          }
+          mesh.tets.push_back(tet);
+        }
+  orient_generated_tets(mesh, "tube mesh");
+
+  // Index (i, k, j) of a node, from its number.
+  auto index = [&](int n) {
+    return std::array<int, 3>{n % (nx + 1), (n / (nx + 1)) % rows, n / ((nx + 1) * rows)};
+  };
+  enum Side { kInner, kOuter, kLeft, kRight, kSymZ };
+  tag_boundary(mesh, {{"inner"}, {"outer"}, {"left"}, {"right"}, {"sym_z"}},
+               [&](const BoundaryFace& f) {
+                 auto all = [&](int axis, int value) {
+                   return std::all_of(f.nodes.begin(), f.nodes.end(), [&](int n) {
+                     return index(n)[static_cast<std::size_t>(axis)] == value;
+                   });
+                 };
+                 if (all(2, 0)) return static_cast<int>(kInner);
+                 if (all(2, layers)) return static_cast<int>(kOuter);
+                 if (all(0, 0)) return static_cast<int>(kLeft);
+                 if (all(0, nx)) return static_cast<int>(kRight);
+                 if (half && (all(1, 0) || all(1, na))) return static_cast<int>(kSymZ);
+                 return -1;
+               });
+  if (!half) mesh.surface_tags.erase("sym_z");
+  if (order == 2)
+    add_edge_nodes(mesh, [&](int a, int b) {
+      const auto ia = index(a), ib = index(b);
+      const auto& da = direction[static_cast<std::size_t>(ia[1])];
+      const auto& db = direction[static_cast<std::size_t>(ib[1])];
+      const double dy = da[0] + db[0], dz = da[1] + db[1], norm = std::hypot(dy, dz);
+      const double r = 0.5 * (r_of(ia[2]) + r_of(ib[2]));
+      // Both ends on z = 0 (same row, phi = 0 or pi): dz is exactly 0, so z stays exactly 0.
+      return Vec3d(0.5 * (x_of(ia[0]) + x_of(ib[0])), r * dy / norm, r * dz / norm);
+    });
+  return mesh;
+}
+
+}  // namespace plisse

@@ -1,0 +1,26 @@
+#pragma once
+/// Structured tetrahedral mesh of a thin-walled open tube (tube generator: the air beam).
+#include "mesh/mesh.hpp"
+
+namespace plisse {
+
+/// Number of element divisions about the axis of a tube of mid radius `radius` [mm] with target
+/// element size `h` [mm]: round(pi radius / h), at least 3, for the half tube; twice that for the
+/// full one, so the two meshes have the same nodes on z >= 0.
+int tube_divisions_around(double radius, double h, bool half);
+
+/// The tube whose axis is the x axis from x = 0 to x = `length` [mm], with the wall between the
+/// cylinders r = radius - thickness/2 and r = radius + thickness/2 (r^2 = y^2 + z^2), the whole
+/// tube or (`half`) its part z >= 0. Structured in (x, angle, r): round(length / h) divisions
+/// along x (at least 1), tube_divisions_around(radius, h, half) about the axis (angle phi from +y
+/// towards +z: y = r cos phi, z = r sin phi) and exactly `layers` through the wall; each cell cut
+/// into 6 tetrahedra like the box (Kuhn), the same way in every cell, so the full tube closes on
+/// itself conformingly. Corner nodes lie exactly on the layer cylinders, the end planes x = 0 and
+/// x = length, and (half tube) z = 0.
+/// Tags: `inner`, `outer` (the two cylinders), `left` (x = 0), `right` (x = length), and for the
+/// half tube `sym_z` (z = 0). `order` 2 adds one node per edge on the true cylinders: at the mean
+/// x, the mean radius of its two corners and the mean of their directions about the axis.
+Mesh make_tube_mesh(double radius, double length, double thickness, int layers, double h,
+                    bool half, int order);
+
+}  // namespace plisse
