@@ -414,6 +414,14 @@ VtuField read_point_field(VtuFile& file, const ParsedVtu& parsed, const std::str
   return {name, a->n_components, read_values(file, parsed, *a)};
 }
 
+VtuField read_cell_field(VtuFile& file, const ParsedVtu& parsed, const std::string& name) {
+  const ArrayDecl* a = find_array(parsed, Section::cell_data, name);
+  if (a == nullptr)
+    file.fail("no cell field '" + name +
+              "' (cell fields: " + list_names(parsed.summary.cell_fields) + ")");
+  return {name, a->n_components, read_values(file, parsed, *a)};
+}
+
 /// Deepest element nesting accepted in a .pvtu (plisse writes 4 levels); bounds the tag stack.
 constexpr std::size_t kMaxPvtuDepth = 32;
 
@@ -696,6 +704,15 @@ VtuField read_vtu_point_field(const std::filesystem::path& path, const std::stri
   VtuFile file(path);
   const ParsedVtu parsed = parse(file);
   return read_point_field(file, parsed, name);
+}
+
+VtuField read_vtu_cell_field(const std::filesystem::path& path, const std::string& name) {
+  if (is_pvtu(path))
+    throw Error("PVTU '" + path.string() +
+                "': cell fields are read from one piece (.vtu), not from a .pvtu");
+  VtuFile file(path);
+  const ParsedVtu parsed = parse(file);
+  return read_cell_field(file, parsed, name);
 }
 
 }  // namespace plisse

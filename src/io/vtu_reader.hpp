@@ -63,4 +63,10 @@ std::uint64_t read_vtu_point_count(const std::filesystem::path& path);
 /// that name (the message lists the point fields there are).
 VtuField read_vtu_point_field(const std::filesystem::path& path, const std::string& name);
 
+/// The cell field `name` of the VTU `path`: n_components values per cell, cell-major, as written
+/// (e.g. cauchy_stress: xx, yy, zz, xy, yz, xz per tetrahedron). Serial files only: a .pvtu's
+/// pieces carry no global cell numbering, so a .pvtu is refused. Throws plisse::Error as
+/// read_vtu_summary, and when there is no cell field of that name (the message lists them).
+VtuField read_vtu_cell_field(const std::filesystem::path& path, const std::string& name);
+
 }  // namespace plisse

@@ -79,6 +79,24 @@ TEST(VtuReader, RoundTripIsBitExactForEveryPointField) {
   }
 }
 
+TEST(VtuReader, CellFieldRoundTripIsBitExactAndAPointFieldIsNoCellField) {
+  ScratchDir dir;
+  const Sample s;
+  s.write(dir / "a.vtu");
+  const VtuField read = read_vtu_cell_field(dir / "a.vtu", "J");
+  EXPECT_EQ(read.n_components, 1);
+  EXPECT_EQ(read.values, s.cell_fields[0].values);
+  try {
+    read_vtu_cell_field(dir / "a.vtu", "pressure");
+    ADD_FAILURE() << "a point field was read as a cell field";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("no cell field 'pressure' (cell fields: J)"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(read_vtu_cell_field(dir / "a.pvtu", "J"), Error);
+}
+
 TEST(VtuReader, EmptyPieceAndNoFields) {
   ScratchDir dir;
   write_vtu(dir / "empty.vtu", std::vector<Vec3d>{}, std::vector<std::array<int, 4>>{},
