@@ -16,8 +16,8 @@ int tube_divisions_around(double radius, double h, bool half) {
   return half ? n : 2 * n;
 }
 
-Mesh make_tube_mesh(double radius, double length, double thickness, int layers, double h,
-                    bool half, int order) {
+Mesh make_tube_mesh(double radius, double length, double thickness, int layers, double h, bool half,
+                    int order) {
   FE_CHECK(radius > 0.5 * thickness && length > 0.0 && layers >= 1 && h > 0.0,
            "make_tube_mesh: needs radius > thickness / 2 > 0, length > 0, layers >= 1, h > 0");
   FE_CHECK(order == 1 || order == 2, "make_tube_mesh: order must be 1 or 2");
@@ -34,7 +34,8 @@ Mesh make_tube_mesh(double radius, double length, double thickness, int layers, 
     const double phi = sweep * k / na;
     auto& d = direction[static_cast<std::size_t>(k)];
     const bool at_pi = half ? k == na : 2 * k == na;
-    d = at_pi ? std::array<double, 2>{-1.0, 0.0} : std::array<double, 2>{std::cos(phi), std::sin(phi)};
+    d = at_pi ? std::array<double, 2>{-1.0, 0.0}
+              : std::array<double, 2>{std::cos(phi), std::sin(phi)};
   }
   auto x_of = [&](int i) { return i == nx ? length : length * i / nx; };
   auto r_of = [&](int j) {

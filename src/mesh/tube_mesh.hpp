@@ -20,7 +20,7 @@ int tube_divisions_around(double radius, double h, bool half);
 /// Tags: `inner`, `outer` (the two cylinders), `left` (x = 0), `right` (x = length), and for the
 /// half tube `sym_z` (z = 0). `order` 2 adds one node per edge on the true cylinders: at the mean
 /// x, the mean radius of its two corners and the mean of their directions about the axis.
-Mesh make_tube_mesh(double radius, double length, double thickness, int layers, double h,
-                    bool half, int order);
+Mesh make_tube_mesh(double radius, double length, double thickness, int layers, double h, bool half,
+                    int order);
 
 }  // namespace plisse

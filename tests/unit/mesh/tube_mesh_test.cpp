@@ -2,6 +2,8 @@
 // cut plane, a seam that closes the full tube conformingly, the wall volume against the exact
 // polygonal annulus (linear) and the true annulus (quadratic, error falling as h^4), and the
 // refused options.
+#include "mesh/tube_mesh.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,7 +13,6 @@
 #include "element/taylor_hood_geometry.hpp"
 #include "mesh/generate.hpp"
 #include "mesh/quality.hpp"
-#include "mesh/tube_mesh.hpp"
 #include "mesh_test_util.hpp"
 
 namespace plisse {
@@ -83,7 +84,8 @@ TEST_P(TubeMesh, CountsTagsRadiiAndPolygonVolume) {
   for (int n : tag_nodes(mesh, "left")) EXPECT_EQ(mesh.nodes[static_cast<std::size_t>(n)].x(), 0.0);
   for (int n : tag_nodes(mesh, "right")) EXPECT_EQ(mesh.nodes[static_cast<std::size_t>(n)].x(), L);
   if (half) {
-    for (int n : tag_nodes(mesh, "sym_z")) EXPECT_EQ(mesh.nodes[static_cast<std::size_t>(n)].z(), 0.0);
+    for (int n : tag_nodes(mesh, "sym_z"))
+      EXPECT_EQ(mesh.nodes[static_cast<std::size_t>(n)].z(), 0.0);
   }
   // The tetrahedra tile the prism over the polygonal annulus exactly: N sectors of a full turn,
   // each (ro^2 - ri^2) sin(2 pi / N) / 2.
