@@ -217,15 +217,18 @@ def measure(run, c1):
     previous = None
     for k, (xc, sxx) in rows:
         j = 1 + int(np.argmin(sxx[1:]))
-        current = (k, sxx[j], xc[j])
+        current = (k, sxx[j], xc[j], j)
         if previous and previous[1] > 0.0 >= current[1]:
             f = previous[1] / (previous[1] - current[1])
             ka, kb = previous[0], k
             Fs = F[ka] + f * (F[kb] - F[ka])
             Ms = M[ka] + f * (M[kb] - M[ka]) - Fs * current[2]
-            slack = {"F": Fs, "M_local": Ms, "x": current[2]}
+            slack = {"F": Fs, "M_local": Ms, "x": current[2], "slice": current[3]}
             break
         previous = current
+    if slack:  # membrane theory with the prestress of that slice at the end of the pressure
+        prestress = compressed_row(run, state(dict(files)[check["step"]])[1])[1][slack["slice"]]
+        slack["theory"] = 0.5 * prestress / check["axial_closed"]
     compression = min(sxx[1:].min() for _, (_, sxx) in rows)
     visible = None
     for (ka, a0), (kb, a1) in zip(amplitudes, amplitudes[1:]):
@@ -297,7 +300,8 @@ def print_run(res):
         sl = res["slack"]
         print(
             f"first slack fibre (compressed row, x = {sl['x']:.2f} mm): F L/(pi p r^3) "
-            f"{sl['F'] / uF:.3f}, M there/(pi p r^3) {sl['M_local'] / uM:.3f} (membrane 0.5)"
+            f"{sl['F'] / uF:.3f}, M there/(pi p r^3) {sl['M_local'] / uM:.3f} (membrane 0.5; "
+            f"with the slice's prestress {sl['theory']:.3f})"
         )
     print(
         f"largest axial compression of the compressed row (x >= h): {res['compression']:.4f} MPa"
