@@ -12,7 +12,7 @@
 //  - the compressed fibre goes slack (axial stress 0, membrane beam theory's wrinkling criterion,
 //    Comer & Levy 1963) when the local moment M(x) = M_clamp - F x reaches pi p r^3 / 2 times the
 //    local prestress over pr/2 (the rigid clamp holds the end ring at its unpressurised radius,
-//    which lowers the axial prestress next to it: 5 % at x = 1.5 mm), within 3 %: the membrane
+//    which lowers the axial prestress next to it: 6 % at x = 1.5 mm), within 3 %: the membrane
 //    theory's thin ring puts all fibres at r, while the wall reaches from r - t/2 to r + t/2
 //    (t/r = 1.8 %), which moves the extreme fibre's stress by about that much;
 //  - the wall then carries axial compression, which a membrane cannot: the most compressive
