@@ -359,11 +359,15 @@ def figures(results, folder):
         ax.axhline(0.5, color="tab:blue", ls="--")
         ax.axhline(1.0, color="tab:red", ls="--")
         ax.axhline(0.5 * res["wall_factor"], color="tab:blue", ls=":")
+        _, _, ri0, ro0, _, _, _ = geometry(res["run"])
+        ax.axhline((0.5 * (ri0 + ro0) / res["check"]["r"]) ** 3, color="tab:red", ls="-.",
+                   label=r"$\pi p R^3$: membrane collapse at the clamp's radius")
         ax.plot(res["v"][res["kmax"]], res["M"][res["kmax"]] / res["unit_M"], "s", mfc="none",
                 color="tab:red")
         ax.set_xlabel("tip displacement [mm]")
         ax.grid(alpha=0.3)
     axes[1][0].set_ylabel(r"clamp moment $M / (\pi p r^3)$")
+    axes[1][0].legend(fontsize=7, loc="lower right")
     for ax, res in zip(axes[0], results):
         c = res["check"]
         F, v, b = 2 * res["F"], res["v"], res["bending"]
@@ -435,7 +439,7 @@ def figures(results, folder):
     ax.axvline(0.5, color="tab:blue", ls="--")
     ax.axvline(1.0, color="tab:red", ls="--")
     ax.set_xlabel(r"$F L / (\pi p r^3)$")
-    ax.set_ylabel("wrinkle amplitude / t (compressed side)")
+    ax.set_ylabel("deviation w along the compressed side,\npeak-to-peak / t")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
     fig.tight_layout()

@@ -18,7 +18,7 @@
 //  - the wall then carries axial compression, which a membrane cannot: the most compressive
 //    wall-averaged stress of the compressed generator lies between 0.8 and 1.5 times the
 //    classical axial buckling stress of the wall, E t / (r (3 (1 - nu^2))^(1/2)) = 4 c1 t / r
-//    (Timoshenko & Gere 1961, section 11.4; E = 6 c1, nu = 1/2): that value is for a perfect,
+//    (Timoshenko & Gere 1961, chapter 11; E = 6 c1, nu = 1/2): that value is for a perfect,
 //    uniformly compressed long cylinder; bending's stress gradient and the clamp support the
 //    wall beyond it (measured 1.21);
 //  - the clamp moment stops rising (the section's capacity: it grows by less than 1 % over the
@@ -56,17 +56,17 @@ struct Slice {
 };
 
 struct Step {
-  double time = 0.0, force = 0.0, moment = 0.0, tip = 0.0;  ///< F, |M_clamp|, -uy (half model)
-  std::vector<Slice> row;                                    ///< x <= L/2
+  double time = 0.0, force = 0.0, moment = 0.0, tip = 0.0;     ///< F, |M_clamp|, -uy (half model)
+  std::vector<Slice> row;                                      ///< x <= L/2
   double axial_mid = 0.0, hoop_mid = 0.0, ri = 0.0, ro = 0.0;  ///< at mid-length
 };
 
 TEST(AirBeamSlow, BendingOfAPressurisedTubeAgainstMembraneBeamTheory) {
   const auto dir = test::scratch_directory("air-beam");
-  const int status = test::run_plisse(
-      "run " + std::string(PLISSE_SOURCE_DIR) + "/validation/air-beam-bending.yaml -o " +
-          dir.string() + " --set solver.steps=50 --set solver.max_step=0.02",
-      dir.string() + ".log");
+  const int status = test::run_plisse("run " + std::string(PLISSE_SOURCE_DIR) +
+                                          "/validation/air-beam-bending.yaml -o " + dir.string() +
+                                          " --set solver.steps=50 --set solver.max_step=0.02",
+                                      dir.string() + ".log");
   ASSERT_EQ(status, 0) << "see " << dir.string() << ".log";
   const HistoryTable history = read_history(dir / "history.csv");
   const auto column = [&](const std::string& name) { return test::history_column(history, name); };
@@ -144,8 +144,8 @@ TEST(AirBeamSlow, BendingOfAPressurisedTubeAgainstMembraneBeamTheory) {
     steps.push_back(s);
   }
   // The end of the pressure ramp (t = 0.2), then the bending steps.
-  const auto pressurised = std::find_if(steps.begin(), steps.end(),
-                                        [](const Step& s) { return s.time >= 0.2 - 1e-9; });
+  const auto pressurised =
+      std::find_if(steps.begin(), steps.end(), [](const Step& s) { return s.time >= 0.2 - 1e-9; });
   ASSERT_NE(pressurised, steps.end());
   const Step& p0 = *pressurised;
   const double ri = p0.ri, ro = p0.ro, r = 0.5 * (ri + ro), wall = ro - ri;
@@ -197,8 +197,8 @@ TEST(AirBeamSlow, BendingOfAPressurisedTubeAgainstMembraneBeamTheory) {
   const Step& last = bending.back();
   const auto before = std::find_if(bending.begin(), bending.end(),
                                    [&](const Step& s) { return s.tip >= last.tip - 2.0; });
-  const auto after_start = std::find_if(bending.begin(), bending.end(),
-                                        [&](const Step& s) { return s.tip >= 2.0; });
+  const auto after_start =
+      std::find_if(bending.begin(), bending.end(), [&](const Step& s) { return s.tip >= 2.0; });
   std::cout << "largest clamp moment " << largest / unit_moment << " pi p r^3 (upper bound "
             << wall_factor << "); over the last 2 mm it grows by "
             << last.moment / before->moment - 1.0 << ", over the first 2 mm to "
