@@ -29,6 +29,11 @@ MeshOption integer_option(std::string key, int Spec::*member, Range range, std::
                     range};
 }
 
+/// The refinement `spec` asks for (size 0: none).
+PoleRefinement pole_refinement(const Spec& spec) {
+  return {spec.pole_element_size, spec.pole_radius};
+}
+
 MeshOption symmetry_option() {
   return MeshOption{
       "symmetry",
@@ -73,6 +78,14 @@ const std::vector<MeshKind>& mesh_kinds() {
         integer_option("order", &Spec::order, Range::closed(1, 2),
                        "element order: 1 (4-node tetrahedra) or 2 (10-node, one node per edge); "
                        "in a case file the order of its `element` when not given");
+    // The refinement about the +y pole of the shell and the airbag (PoleRefinement).
+    const MeshOption pole_size = real_option(
+        "pole_element_size", &Spec::pole_element_size, "mm", Range::closed(0.0, 1e6),
+        "element edge within pole_radius of the +y pole, growing by a fifth of the distance "
+        "beyond it up to element_size; 0: no refinement");
+    const MeshOption pole_radius =
+        real_option("pole_radius", &Spec::pole_radius, "mm", Range::closed(0.0, 1e6),
+                    "distance from the +y pole meshed at pole_element_size");
     std::vector<MeshKind> k;
     k.push_back({"cube",
                  "cube [0, edge]^3, structured (6 tetrahedra per cell); tags left/right (x), "
@@ -91,7 +104,7 @@ const std::vector<MeshKind>& mesh_kinds() {
                   integer_option("layers", &Spec::layers, layers, layers_help),
                   real_option("element_size", &Spec::element_size, "mm", size,
                               "target element edge on the inner surface (<= inner_radius)"),
-                  symmetry_option(), order}});
+                  pole_size, pole_radius, symmetry_option(), order}});
     k.push_back(
         {"airbag",
          "round airbag: closed oblate shell, mid-surface x^2/r^2 + (2y/height)^2 + z^2/r^2 = 1, "
@@ -106,7 +119,7 @@ const std::vector<MeshKind>& mesh_kinds() {
           integer_option("layers", &Spec::layers, layers, layers_help),
           real_option("element_size", &Spec::element_size, "mm", size,
                       "target element edge on the mid-surface (<= height/2)"),
-          symmetry_option(), order}});
+          pole_size, pole_radius, symmetry_option(), order}});
     k.push_back(
         {"sheet",
          "flat sheet [0, length] x [0, width] x [0, thickness], structured; tags as the cube",
@@ -164,7 +177,6 @@ std::string to_string(Symmetry s) {
 }
 
 double estimate_n_tets(const MeshGenerationSpec& spec) {
-  const double f = kept_fraction(spec.symmetry);
   if (spec.kind == "cube") return 6.0 * std::pow(static_cast<double>(spec.divisions), 3);
   if (spec.kind == "sheet")
     return 6.0 * std::max(1.0, std::round(spec.length / spec.element_size)) *
@@ -174,12 +186,13 @@ double estimate_n_tets(const MeshGenerationSpec& spec) {
            tube_divisions_around(spec.radius, spec.element_size, spec.symmetry == Symmetry::half) *
            spec.layers;
   if (spec.kind == "spherical-shell")
-    return 3.0 * spec.layers * f *
-           estimate_spheroid_triangles(spec.inner_radius, spec.inner_radius, spec.element_size);
+    return 3.0 * spec.layers *
+           estimate_spheroid_triangles(spec.inner_radius, spec.inner_radius, spec.element_size,
+                                       spec.symmetry, pole_refinement(spec));
   if (spec.kind == "airbag")
-    return 3.0 * spec.layers * f *
+    return 3.0 * spec.layers *
            estimate_spheroid_triangles(spec.radius, std::min(spec.radius, spec.height / 2.0),
-                                       spec.element_size);
+                                       spec.element_size, spec.symmetry, pole_refinement(spec));
   return 0.0;
 }
 
@@ -196,6 +209,13 @@ void validate_mesh_spec(const MeshGenerationSpec& spec) {
     if (option.integer)
       violation = option.range.violation(static_cast<double>(spec.*option.integer));
     if (violation) reject(option.key, *violation);
+  }
+  if (spec.kind == "spherical-shell" || spec.kind == "airbag") {
+    if (spec.pole_element_size > spec.element_size)
+      reject("pole_element_size", "must be <= element_size = " + number(spec.element_size) +
+                                      " mm (got " + number(spec.pole_element_size) + ")");
+    if (spec.pole_radius > 0.0 && spec.pole_element_size == 0.0)
+      reject("pole_radius", "needs pole_element_size > 0 (the size within that radius)");
   }
   if (spec.kind == "spherical-shell" && spec.element_size > spec.inner_radius)
     reject("element_size", "must be <= inner_radius = " + number(spec.inner_radius) + " mm (got " +
@@ -252,7 +272,8 @@ Mesh generate_mesh(const MeshGenerationSpec& spec) {
   using Midpoint = std::function<Vec3d(int k1, int j1, int k2, int j2)>;
   if (spec.kind == "spherical-shell") {
     const double R = spec.inner_radius;
-    const auto surface = mesh_spheroid_surface(R, R, spec.element_size, spec.symmetry);
+    const auto surface =
+        mesh_spheroid_surface(R, R, spec.element_size, spec.symmetry, pole_refinement(spec));
     std::vector<Vec3d> direction;
     direction.reserve(surface.nodes.size());
     for (const auto& p : surface.nodes) direction.push_back(p / p.norm());
@@ -276,7 +297,8 @@ Mesh generate_mesh(const MeshGenerationSpec& spec) {
   // airbag: mid-surface x^2/a^2 + y^2/c^2 + z^2/a^2 = 1, wall offset along the unit normal
   // n ~ (x/a^2, y/c^2, z/a^2) by o_j = -t/2 + j t / layers.
   const double a = spec.radius, c = spec.height / 2.0, t = spec.thickness;
-  const auto surface = mesh_spheroid_surface(a, c, spec.element_size, spec.symmetry);
+  const auto surface =
+      mesh_spheroid_surface(a, c, spec.element_size, spec.symmetry, pole_refinement(spec));
   auto unit_normal = [&](const Vec3d& p) {
     const Vec3d n(p.x() / (a * a), p.y() / (c * c), p.z() / (a * a));
     return Vec3d(n / n.norm());

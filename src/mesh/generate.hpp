@@ -39,6 +39,9 @@ struct MeshGenerationSpec {
   int layers = 3;                      ///< tetrahedra through the thickness (exactly)
   double element_size = 1.0;           ///< target in-surface element size [mm]
   Symmetry symmetry = Symmetry::full;  ///< shell and airbag; tube: full or half
+  // shell and airbag: finer elements about the +y pole (0 = none; docs/meshes.md)
+  double pole_element_size = 0.0;  ///< edge at the pole [mm]
+  double pole_radius = 0.0;        ///< distance from the pole meshed at pole_element_size [mm]
   // all kinds
   int order = 1;  ///< 1: 4-node tetrahedra; 2: 10-node (one node per edge, on curved walls)
 };

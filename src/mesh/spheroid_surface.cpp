@@ -154,18 +154,27 @@ double spheroid_area(double a, double b) {
   return 2.0 * std::numbers::pi * a * a * (1.0 + (1.0 - e2) / e * std::atanh(e));
 }
 
-double estimate_spheroid_triangles(double a, double b, double h) {
+double estimate_spheroid_triangles(double a, double b, double h, Symmetry symmetry,
+                                   const PoleRefinement& pole) {
+  // The kept part: azimuth 2 pi, pi or pi / 2 about y; the meridian from the south pole, or from
+  // the equator when only y >= 0 is kept.
+  const double azimuth = symmetry == Symmetry::full   ? 2.0 * std::numbers::pi
+                         : symmetry == Symmetry::half ? std::numbers::pi
+                                                      : 0.5 * std::numbers::pi;
+  const double first = cut_planes(symmetry)[1] ? 0.0 : -0.5 * std::numbers::pi;
   constexpr int kSteps = 20000;
-  const double dt = std::numbers::pi / kSteps;
+  const double dt = (0.5 * std::numbers::pi - first) / kSteps;
   double n = 0.0;
   for (int i = 0; i < kSteps; ++i) {
-    const double t = -0.5 * std::numbers::pi + (i + 0.5) * dt;
+    const double t = first + (i + 0.5) * dt;
     const double q =
         std::sqrt(a * a * std::sin(t) * std::sin(t) + b * b * std::cos(t) * std::cos(t));
     // Principal radii of a spheroid of revolution: meridian q^3 / (a b), parallel a q / b.
     const double rho = std::min(q * q * q / (a * b), a * q / b);
-    const double s = std::min(h, 2.0 * std::numbers::pi * rho / 12.0);
-    n += 2.0 * std::numbers::pi * a * std::cos(t) * q * dt / (std::sqrt(3.0) / 4.0 * s * s);
+    const double x = a * std::cos(t), y = b * std::sin(t);
+    const double s =
+        std::min(pole.size_at(std::hypot(x, y - b), h), 2.0 * std::numbers::pi * rho / 12.0);
+    n += azimuth * x * q * dt / (std::sqrt(3.0) / 4.0 * s * s);
   }
   return n;
 }
@@ -184,7 +193,8 @@ double kept_fraction(Symmetry symmetry) {
   return 1.0;
 }
 
-SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetry symmetry) {
+SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetry symmetry,
+                                           const PoleRefinement& pole) {
   FE_CHECK(a > 0.0 && b > 0.0 && h > 0.0, "mesh_spheroid_surface: sizes must be positive");
   const auto planes = cut_planes(symmetry);
   const double tolerance = 1e-9 * std::max(a, b);  // cut-plane nodes are within round-off of it
@@ -222,6 +232,24 @@ SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetr
     gmsh::option::setNumber("Mesh.MeshSizeMin", 0.0);
     // At least 12 elements per 2 pi radius of curvature: resolves the rim of a flat airbag.
     gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 12);
+    if (pole.active()) {
+      gmsh::vectorpair points;
+      const double eps = 1e-3 * std::max(a, b);  // larger than OCC's tolerance, no other point
+      gmsh::model::getEntitiesInBoundingBox(-eps, b - eps, -eps, eps, b + eps, eps, points, 0);
+      FE_CHECK(!points.empty(),
+               "spheroid surface: no geometry point at the pole (0, " << b << ", 0)");
+      std::vector<double> tags;
+      for (const auto& [dim, tag] : points) tags.push_back(tag);
+      const int distance = gmsh::model::mesh::field::add("Distance");
+      gmsh::model::mesh::field::setNumbers(distance, "PointsList", tags);
+      const int threshold = gmsh::model::mesh::field::add("Threshold");
+      gmsh::model::mesh::field::setNumber(threshold, "InField", distance);
+      gmsh::model::mesh::field::setNumber(threshold, "SizeMin", pole.size);
+      gmsh::model::mesh::field::setNumber(threshold, "SizeMax", h);
+      gmsh::model::mesh::field::setNumber(threshold, "DistMin", pole.radius);
+      gmsh::model::mesh::field::setNumber(threshold, "DistMax", pole.outer_radius(h));
+      gmsh::model::mesh::field::setAsBackgroundMesh(threshold);
+    }
     gmsh::model::mesh::generate(2);
     session.check_internal("spheroid surface meshing");
 

@@ -196,6 +196,73 @@ INSTANTIATE_TEST_SUITE_P(
                       ShellCase{Symmetry::octant, {"sym_x", "sym_y", "sym_z"}}),
     [](const auto& info) { return to_string(info.param.symmetry); });
 
+// pole_element_size / pole_radius: edges of the asked size near the +y pole, growing by a fifth
+// of the distance beyond pole_radius, back to element_size far away; the estimate behind the
+// 20-million limit counts the refined zone.
+TEST(GenerateShell, RefinedAboutThePole) {
+  MeshGenerationSpec spec;
+  spec.kind = "spherical-shell";
+  spec.inner_radius = 99.5;
+  spec.thickness = 1.0;
+  spec.layers = 1;
+  spec.element_size = 8.0;
+  spec.pole_element_size = 0.5;
+  spec.pole_radius = 3.0;
+  spec.symmetry = Symmetry::octant;
+  const Mesh mesh = generate_mesh(spec);
+  const Vec3d pole(0.0, spec.inner_radius, 0.0);
+  // Mean edge of the inner triangles by the distance of their centroid from the pole.
+  struct Band {
+    double lo, hi, sum = 0.0;
+    int n = 0;
+  };
+  std::vector<Band> bands = {{0.0, 2.0}, {12.0, 16.0}, {60.0, 1e9}};
+  for (int tri : mesh.surface_tags.at("inner")) {
+    const auto& n = mesh.triangles[static_cast<std::size_t>(tri)];
+    const Vec3d c = (mesh.nodes[n[0]] + mesh.nodes[n[1]] + mesh.nodes[n[2]]) / 3.0;
+    const double d = (c - pole).norm();
+    for (auto& b : bands)
+      if (d >= b.lo && d < b.hi)
+        for (int k = 0; k < 3; ++k, ++b.n)
+          b.sum += (mesh.nodes[n[k]] - mesh.nodes[n[(k + 1) % 3]]).norm();
+  }
+  for (const auto& b : bands) ASSERT_GT(b.n, 0) << b.lo;
+  // Gmsh's edges scatter about the target by some 10-20 %: bounds of 30 %.
+  const PoleRefinement pole_zone{spec.pole_element_size, spec.pole_radius};
+  EXPECT_NEAR(bands[0].sum / bands[0].n, 0.5, 0.3 * 0.5);
+  const double mid = pole_zone.size_at(14.0, spec.element_size);  // 0.5 + 0.2 (14 - 3) = 2.7
+  EXPECT_NEAR(mid, 2.7, 1e-12);
+  EXPECT_NEAR(bands[1].sum / bands[1].n, mid, 0.3 * mid);
+  EXPECT_NEAR(bands[2].sum / bands[2].n, 8.0, 0.3 * 8.0);
+  EXPECT_NEAR(pole_zone.outer_radius(8.0), 3.0 + 7.5 / 0.2, 1e-12);
+  // The estimate counts the refined zone: the elements it adds to the plain shell, within 30 %.
+  MeshGenerationSpec plain = spec;
+  plain.pole_element_size = plain.pole_radius = 0.0;
+  const double added = mesh.n_tets() - generate_mesh(plain).n_tets();
+  const double estimated = estimate_n_tets(spec) - estimate_n_tets(plain);
+  EXPECT_GT(added, 0.0);
+  EXPECT_NEAR(estimated / added, 1.0, 0.3) << "estimated " << estimated << ", added " << added;
+  EXPECT_GT(min_tet_volume(mesh), 0.0);
+  expect_clean(mesh, {"inner", "outer", "sym_x", "sym_y", "sym_z"});
+}
+
+TEST(GenerateValidation, PoleRefinementRules) {
+  MeshGenerationSpec spec;
+  spec.kind = "airbag";
+  spec.pole_element_size = 2.0;  // element_size 1
+  std::string key;
+  EXPECT_NE(rule_for(spec, &key).find("must be <= element_size = 1 mm (got 2)"), std::string::npos);
+  EXPECT_EQ(key, "mesh.pole_element_size");
+  spec.pole_element_size = 0.0;
+  spec.pole_radius = 5.0;
+  EXPECT_NE(rule_for(spec, &key).find("needs pole_element_size > 0"), std::string::npos);
+  EXPECT_EQ(key, "mesh.pole_radius");
+  spec.kind = "spherical-shell";
+  spec.pole_element_size = -1.0;
+  EXPECT_NE(rule_for(spec, &key).find("must be in [0, 1000000]"), std::string::npos);
+  EXPECT_EQ(key, "mesh.pole_element_size");
+}
+
 class GenerateAirbag : public ::testing::TestWithParam<Symmetry> {};
 
 TEST_P(GenerateAirbag, WallCentredOnSpheroidAndVolume) {
