@@ -43,8 +43,7 @@ double youngs_modulus() { return 6.0 * kC1; }
 double reissner() { return 8.0 / 3.0 * youngs_modulus() * kThickness * kThickness / kRadius; }
 
 double tau_of(double pressure) {
-  return 3.0 * pressure * kRadius * kRadius /
-         (4.0 * youngs_modulus() * kThickness * kThickness);
+  return 3.0 * pressure * kRadius * kRadius / (4.0 * youngs_modulus() * kThickness * kThickness);
 }
 
 double vella(double tau) {
@@ -101,8 +100,8 @@ Indentation indent(const std::string& name, const std::string& options) {
 
 TEST(ShellIndentationSlow, StiffnessFollowsReissnerAndVellaWithinTheWallsShear) {
   // tau = 0: no pressure, the indenter 0.05 mm above the undeformed outer pole (200.5 mm).
-  const Indentation bare = indent("shell-indentation-tau0",
-                                  " --set loads[0].value=0 --set dies[0].point=[0,201.55,0]");
+  const Indentation bare =
+      indent("shell-indentation-tau0", " --set loads[0].value=0 --set dies[0].point=[0,201.55,0]");
   const Indentation pressurised = indent("shell-indentation-tau4", "");
   ASSERT_GE(bare.fitted, 10);
   ASSERT_GE(pressurised.fitted, 10);
@@ -112,9 +111,9 @@ TEST(ShellIndentationSlow, StiffnessFollowsReissnerAndVellaWithinTheWallsShear) 
   const double pressurised_ratio = pressurised.stiffness / vella(tau);
   const double stiffening = pressurised.stiffness / bare.stiffness;
   std::cout << "k(0) = " << bare.stiffness << " N/mm, " << bare_ratio << " x Reissner's "
-            << reissner() << "; k(4) = " << pressurised.stiffness << " N/mm, "
-            << pressurised_ratio << " x Vella et al.'s " << vella(tau) << "; k(4)/k(0) = "
-            << stiffening << " (theory " << vella(tau) / reissner() << ")\n";
+            << reissner() << "; k(4) = " << pressurised.stiffness << " N/mm, " << pressurised_ratio
+            << " x Vella et al.'s " << vella(tau) << "; k(4)/k(0) = " << stiffening << " (theory "
+            << vella(tau) / reissner() << ")\n";
   EXPECT_GE(bare_ratio, 0.90);
   EXPECT_LE(bare_ratio, 1.0);
   EXPECT_GE(pressurised_ratio, 0.88);
