@@ -406,19 +406,16 @@ std::string list_names(const std::vector<VtuArrayInfo>& fields) {
   return known.empty() ? "none" : known;
 }
 
-VtuField read_point_field(VtuFile& file, const ParsedVtu& parsed, const std::string& name) {
-  const ArrayDecl* a = find_array(parsed, Section::point_data, name);
+/// The point (Section::point_data) or cell (Section::cell_data) field `name`; fails naming the
+/// fields of that kind the file has.
+VtuField read_field(VtuFile& file, const ParsedVtu& parsed, Section section,
+                    const std::string& name) {
+  const bool point = section == Section::point_data;
+  const ArrayDecl* a = find_array(parsed, section, name);
   if (a == nullptr)
-    file.fail("no point field '" + name +
-              "' (point fields: " + list_names(parsed.summary.point_fields) + ")");
-  return {name, a->n_components, read_values(file, parsed, *a)};
-}
-
-VtuField read_cell_field(VtuFile& file, const ParsedVtu& parsed, const std::string& name) {
-  const ArrayDecl* a = find_array(parsed, Section::cell_data, name);
-  if (a == nullptr)
-    file.fail("no cell field '" + name +
-              "' (cell fields: " + list_names(parsed.summary.cell_fields) + ")");
+    file.fail(std::string(point ? "no point field '" : "no cell field '") + name +
+              (point ? "' (point fields: " : "' (cell fields: ") +
+              list_names(point ? parsed.summary.point_fields : parsed.summary.cell_fields) + ")");
   return {name, a->n_components, read_values(file, parsed, *a)};
 }
 
@@ -608,7 +605,7 @@ PieceValues read_piece(const std::filesystem::path& path, const ParsedPvtu& decl
                 " is not a node index (a whole number >= 0)");
     out.global_node.push_back(static_cast<std::uint64_t>(g));
   }
-  if (!field_name.empty()) out.field = read_point_field(file, parsed, field_name);
+  if (!field_name.empty()) out.field = read_field(file, parsed, Section::point_data, field_name);
   return out;
 }
 
@@ -703,7 +700,7 @@ VtuField read_vtu_point_field(const std::filesystem::path& path, const std::stri
   }
   VtuFile file(path);
   const ParsedVtu parsed = parse(file);
-  return read_point_field(file, parsed, name);
+  return read_field(file, parsed, Section::point_data, name);
 }
 
 VtuField read_vtu_cell_field(const std::filesystem::path& path, const std::string& name) {
@@ -712,7 +709,7 @@ VtuField read_vtu_cell_field(const std::filesystem::path& path, const std::strin
                 "': cell fields are read from one piece (.vtu), not from a .pvtu");
   VtuFile file(path);
   const ParsedVtu parsed = parse(file);
-  return read_cell_field(file, parsed, name);
+  return read_field(file, parsed, Section::cell_data, name);
 }
 
 }  // namespace plisse

@@ -6,6 +6,28 @@
 
 namespace plisse {
 
+void append_kuhn_tets(Mesh& mesh, const std::array<int, 3>& cells,
+                      const std::function<int(int, int, int)>& node) {
+  // The six axis permutations (a, b, c); odd ones give negatively oriented paths.
+  static constexpr std::array<std::array<int, 3>, 6> kPermutations = {
+      {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
+  mesh.tets.reserve(mesh.tets.size() +
+                    static_cast<std::size_t>(6 * cells[0] * cells[1] * cells[2]));
+  for (int k = 0; k < cells[2]; ++k)
+    for (int j = 0; j < cells[1]; ++j)
+      for (int i = 0; i < cells[0]; ++i)
+        for (const auto& p : kPermutations) {
+          std::array<int, 3> corner = {i, j, k};
+          std::array<int, 4> tet{};
+          tet[0] = node(i, j, k);
+          for (std::size_t s = 0; s < 3; ++s) {
+            ++corner[static_cast<std::size_t>(p[s])];
+            tet[s + 1] = node(corner[0], corner[1], corner[2]);
+          }
+          mesh.tets.push_back(tet);
+        }
+}
+
 Mesh make_box_mesh(const Vec3d& extent, const std::array<int, 3>& cells, int order) {
   const int nx = cells[0], ny = cells[1], nz = cells[2];
   FE_CHECK(nx >= 1 && ny >= 1 && nz >= 1, "make_box_mesh: cell counts must be >= 1");
@@ -19,23 +41,7 @@ Mesh make_box_mesh(const Vec3d& extent, const std::array<int, 3>& cells, int ord
       for (int i = 0; i <= nx; ++i)
         mesh.nodes.emplace_back(coordinate(extent.x(), i, nx), coordinate(extent.y(), j, ny),
                                 coordinate(extent.z(), k, nz));
-  // The six axis permutations (a, b, c); odd ones give negatively oriented paths, fixed below.
-  static constexpr std::array<std::array<int, 3>, 6> kPermutations = {
-      {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
-  mesh.tets.reserve(static_cast<std::size_t>(6 * nx * ny * nz));
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i)
-        for (const auto& p : kPermutations) {
-          std::array<int, 3> corner = {i, j, k};
-          std::array<int, 4> tet{};
-          tet[0] = node(corner[0], corner[1], corner[2]);
-          for (int s = 0; s < 3; ++s) {
-            ++corner[static_cast<std::size_t>(p[static_cast<std::size_t>(s)])];
-            tet[static_cast<std::size_t>(s + 1)] = node(corner[0], corner[1], corner[2]);
-          }
-          mesh.tets.push_back(tet);
-        }
+  append_kuhn_tets(mesh, cells, node);
   orient_generated_tets(mesh, "box mesh");
 
   enum Side { kLeft, kRight, kFront, kBack, kBottom, kTop };

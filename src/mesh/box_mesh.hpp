@@ -1,6 +1,7 @@
 #pragma once
 /// Structured tetrahedral mesh of a box (cube and sheet generators).
 #include <array>
+#include <functional>
 
 #include "core/types.hpp"
 #include "mesh/mesh.hpp"
@@ -17,5 +18,13 @@ namespace plisse {
 /// `order` 2 adds the straight edge midpoints as edge nodes (10-node tetrahedra, 6-node
 /// triangles; add_straight_edge_nodes), which are exact for the flat-sided box.
 Mesh make_box_mesh(const Vec3d& extent, const std::array<int, 3>& cells, int order = 1);
+
+/// Appends to `mesh.tets` the 6 Kuhn tetrahedra (above) of every cell of a structured grid of
+/// cells[0] x cells[1] x cells[2] cells, cell (i, j, k) having the corner nodes
+/// node(i + a, j + b, k + c), a, b, c in {0, 1}; `node` may wrap an index (a closed tube).
+/// Odd permutations give negatively oriented tetrahedra: callers fix them with
+/// orient_generated_tets.
+void append_kuhn_tets(Mesh& mesh, const std::array<int, 3>& cells,
+                      const std::function<int(int, int, int)>& node);
 
 }  // namespace plisse

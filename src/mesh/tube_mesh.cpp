@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "mesh/boundary_tags.hpp"
+#include "mesh/box_mesh.hpp"
 #include "mesh/second_order.hpp"
 
 namespace plisse {
@@ -50,22 +51,7 @@ Mesh make_tube_mesh(double radius, double length, double thickness, int layers, 
         const auto& d = direction[static_cast<std::size_t>(k)];
         mesh.nodes.emplace_back(x_of(i), r_of(j) * d[0], r_of(j) * d[1]);
       }
-  static constexpr std::array<std::array<int, 3>, 6> kPermutations = {
-      {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
-  mesh.tets.reserve(static_cast<std::size_t>(6 * nx * na * layers));
-  for (int j = 0; j < layers; ++j)
-    for (int k = 0; k < na; ++k)
-      for (int i = 0; i < nx; ++i)
-        for (const auto& p : kPermutations) {
-          std::array<int, 3> corner = {i, k, j};
-          std::array<int, 4> tet{};
-          tet[0] = node(i, k, j);
-          for (std::size_t s = 0; s < 3; ++s) {
-            ++corner[static_cast<std::size_t>(p[s])];
-            tet[s + 1] = node(corner[0], corner[1], corner[2]);
-          }
-          mesh.tets.push_back(tet);
-        }
+  append_kuhn_tets(mesh, {nx, na, layers}, node);
   orient_generated_tets(mesh, "tube mesh");
 
   // Index (i, k, j) of a node, from its number.
