@@ -1,0 +1,261 @@
+"""Where the paper's pressurised sphere wrinkles under a plate: runs and reads
+validation/paper-sphere-squeeze.yaml over the dimensionless groups R/t, p/p_max and d/R
+(docs/studies/paper-sphere.md).
+
+Usage:
+  scripts/paper-sphere --sweep DIR [--slenderness 25,50,100] [--ratios 0.03,0.1,0.3]
+                       [--cell 0.2] [--depth 0.2] [--tag NAME] [--set KEY=VALUE ...]
+        run the case at every (R/t, p/p_max) into DIR/rt-<R/t>_p-<ratio>[_<tag>]
+  scripts/paper-sphere --summary RUN [RUN ...]     one line per run
+  scripts/paper-sphere --figures DIR RUN [...]     map.png and surface_<run>.png, into DIR
+
+Geometry of a point: mid-surface radius R (--radius, 25 mm), wall t = R / (R/t), neo-Hookean c1
+(--c1, 0.0033 MPa, the paper's), pressure p = ratio * p_max with the thin sphere's limit pressure
+p_max = 2.479 c1 t / R. The plate starts 0.2 t above the inflated outer pole (stretch lambda of
+p = (4 c1 t / R)(1/lambda - 1/lambda^7)) and moves down by that gap + depth * R. Elements of
+cell * sqrt(R t) within 0.75 R of the pole (the plate's contact and the ridge around it) and 2.5 mm
+elsewhere (at most R / 10).
+
+Per run, from history.csv and summary.json: the flattening d (inward displacement of the
+mid-surface pole since the last step before contact), the first step the stability check calls
+unstable (negative pivots beyond the pressure unknowns', a bifurcation or limit point) and d / R
+there, the wrinkle verdict and the largest ring amplitude and count at the last step, and the
+tension-field state (fractions of elements taut, wrinkled and slack by membrane theory).
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+CASE = os.path.join(ROOT, "validation", "paper-sphere-squeeze.yaml")
+LIMIT = 2.479  # p_max = LIMIT c1 t / R (thin neo-Hookean sphere)
+GAP = 0.2  # plate above the inflated pole, in wall thicknesses
+POLE_ZONE = 0.75  # refined within POLE_ZONE * R of the pole
+
+
+def inflated_stretch(pressure, c1, radius, thickness):
+    """lambda with p = (4 c1 t / R)(1/lambda - 1/lambda^7), below the limit point (bisection)."""
+    f = lambda s: 4.0 * c1 * thickness / radius * (1.0 / s - s**-7) - pressure
+    lo, hi = 1.0, 7.0 ** (1.0 / 6.0)
+    if f(hi) < 0.0:
+        raise SystemExit(f"p = {pressure:g} MPa is above the sphere's limit pressure")
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if f(mid) < 0.0 else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def limit_pressure(c1, radius, thickness):
+    return LIMIT * c1 * thickness / radius
+
+
+def tau_of(pressure, c1, radius, thickness):
+    """Vella et al.'s dimensionless pressure p R^2 / (4 sqrt(B Y)), nu = 1/2, E = 6 c1."""
+    return pressure * radius**2 / (8.0 * c1 * thickness**2)
+
+
+def point_settings(slenderness, ratio, args):
+    r = args.radius
+    t = r / slenderness
+    p = ratio * limit_pressure(args.c1, r, t)
+    lam = inflated_stretch(p, args.c1, r, t)
+    pole = lam * r + 0.5 * t / lam**2  # outer pole of the inflated sphere (wall volume kept)
+    plate = pole + GAP * t
+    cell = args.cell * math.sqrt(r * t)
+    far = min(2.5, r / 10.0)
+    return [f"mesh.inner_radius={r - 0.5 * t:.6g}", f"mesh.thickness={t:.6g}",
+            f"mesh.pole_element_size={cell:.4g}", f"mesh.element_size={max(far, cell):.4g}",
+            f"mesh.pole_radius={POLE_ZONE * r:.6g}", f"material.c1={args.c1:g}",
+            f"loads[0].value={p:.6e}", f"dies[0].point=[0,{plate:.6f},0]",
+            f"dies[0].move.displacement=[0,{-(GAP * t + args.depth * r):.6f},0]",
+            f"probes[0].point=[0,{r:.6g},0]"]
+
+
+def run_name(slenderness, ratio, tag):
+    name = f"rt-{slenderness:g}_p-{ratio:g}"
+    return f"{name}_{tag}" if tag else name
+
+
+def sweep(directory, args):
+    os.makedirs(directory, exist_ok=True)
+    plisse = os.path.join(ROOT, "build", "bin", "plisse")
+    for slenderness in (float(v) for v in args.slenderness.split(",")):
+        for ratio in (float(v) for v in args.ratios.split(",")):
+            run = os.path.join(directory, run_name(slenderness, ratio, args.tag))
+            if os.path.isfile(os.path.join(run, "summary.json")) and args.reuse:
+                print(f"{run}: kept", flush=True)
+                continue
+            command = [plisse, "run", CASE, "-o", run]
+            for s in point_settings(slenderness, ratio, args) + (args.set or []):
+                command += ["--set", s]
+            print(" ".join(command), flush=True)
+            # A point that stops (no equilibrium, a snap it cannot pass) is part of the map.
+            subprocess.run(command, stdout=subprocess.DEVNULL)
+
+
+def read_history(run):
+    with open(os.path.join(run, "history.csv")) as f:
+        return list(csv.DictReader(f))
+
+
+def geometry(run):
+    """(mid-surface radius, wall thickness) of the run's shell, from its first step file."""
+    import glob
+
+    import meshio
+    import numpy as np
+
+    files = sorted(glob.glob(os.path.join(run, "step_*.vtu")))
+    if not files:
+        raise ValueError("no step files")
+    norm = np.linalg.norm(meshio.read(files[0]).points, axis=1)
+    return 0.5 * (norm.max() + norm.min()), norm.max() - norm.min()
+
+
+def measure(run, c1):
+    with open(os.path.join(run, "summary.json")) as f:
+        summary = json.load(f)
+    rows = read_history(run)
+    radius, thickness = geometry(run)
+    pressure = max(float(r["pressure:gas"]) for r in rows)
+    free = [r for r in rows if float(r["contact_nodes:punch"]) == 0]
+    rest = float(free[-1]["uy:top"]) if free else 0.0
+    depth = [(rest - float(r["uy:top"])) / radius if float(r["contact_nodes:punch"]) > 0
+             else 0.0 for r in rows]
+    unstable = [k for k, r in enumerate(rows) if r.get("stable", "1") in ("0", "0.0")]
+    wrinkles = summary.get("wrinkles", {})
+    rings = wrinkles.get("rings", [])
+    largest = max(rings, key=lambda g: g.get("residual_amplitude") or 0.0) if rings else {}
+    field = wrinkles.get("tension_field", {})
+    elements = sum(field.values()) or 1
+    return {
+        "run": run, "name": os.path.basename(os.path.normpath(run)),
+        "radius": radius, "thickness": thickness, "slenderness": radius / thickness,
+        "pressure": pressure, "ratio": pressure / limit_pressure(c1, radius, thickness),
+        "tau": tau_of(pressure, c1, radius, thickness),
+        "completed": bool(summary.get("completed")), "depth": max(depth),
+        "unstable_depth": depth[unstable[0]] if unstable else None,
+        "unstable_steps": len(unstable), "wrinkled": bool(wrinkles.get("wrinkled")),
+        "amplitude": (largest.get("residual_amplitude") or 0.0) / thickness,
+        "count": largest.get("dominant_count"), "latitude": largest.get("latitude_deg"),
+        "compressed": field.get("wrinkled", 0) / elements, "slack": field.get("slack", 0) / elements,
+        "force": 4.0 * max(float(r["force_y:punch"]) for r in rows),
+        "dofs": summary.get("dofs"), "wall_time": (summary.get("wall_time") or {}).get("total"),
+        "newton": summary.get("newton_iterations"), "steps": summary.get("steps"),
+    }
+
+
+def summary(runs, args):
+    print(f"{'run':<28} {'R/t':>5} {'p/pmax':>7} {'tau':>6} {'done':>4} {'d/R':>6} "
+          f"{'unstable d/R':>12} {'wrinkled':>8} {'A/t':>6} {'m':>4} {'lat':>4} "
+          f"{'compr':>6} {'slack':>6} {'F [N]':>9} {'dofs':>7} {'time [s]':>8}")
+    results = []
+    for run in runs:
+        try:
+            results.append(measure(run, args.c1))
+        except (OSError, KeyError, ValueError) as error:
+            print(f"{run}: not read ({error})", file=sys.stderr)
+    for m in sorted(results, key=lambda m: (m["slenderness"], m["ratio"], m["name"])):
+        onset = "-" if m["unstable_depth"] is None else f"{m['unstable_depth']:.4f}"
+        print(f"{m['name']:<28} {m['slenderness']:5.0f} {m['ratio']:7.3f} {m['tau']:6.2f} "
+              f"{'yes' if m['completed'] else 'no':>4} {m['depth']:6.3f} {onset:>12} "
+              f"{'yes' if m['wrinkled'] else 'no':>8} {m['amplitude']:6.3f} "
+              f"{m['count'] if m['count'] is not None else '-':>4} "
+              f"{m['latitude'] if m['latitude'] is not None else '-':>4} "
+              f"{m['compressed']:6.3f} {m['slack']:6.3f} {m['force']:9.3e} "
+              f"{m['dofs'] or 0:7d} {m['wall_time'] or 0:8.0f}")
+    return results
+
+
+def figures(directory, results, args):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    sys.path.insert(0, os.path.join(ROOT, "scripts"))
+    import study  # the deformed-surface figure of scripts/study
+
+    os.makedirs(directory, exist_ok=True)
+    fig, ax = plt.subplots(figsize=(6.2, 4.6))
+    slender = np.geomspace(5.0, 200.0, 100)
+    # The paper's three pressures on a 1 mm wall of unknown radius R = (R/t) mm.
+    for i, p in enumerate((1e-4, 1e-3, 1e-2)):
+        ratio = p * slender / (LIMIT * args.c1)
+        ax.plot(slender, ratio, "--", color=f"C{i + 2}", lw=1,
+                label=f"paper's {p:g} MPa, t = 1 mm")
+    ax.axhline(1.0, color="k", lw=0.8)
+    ax.text(6, 1.1, "p > p_max: no inflated equilibrium", fontsize=8)
+    # The map holds the base runs (no tag) and the paper's own values (tag "paper"); the other
+    # tagged runs vary contact, element or mesh at a map point and are in the summary table.
+    for m in (m for m in results if "_" not in m["name"].split("_p-")[1] or
+              m["name"].endswith("_paper")):
+        if not m["completed"] and m["unstable_depth"] is None:
+            style = dict(marker="s", color="0.5", mfc="none")
+        elif m["wrinkled"] or m["unstable_depth"] is not None:
+            style = dict(marker="X", color="C3")
+        else:
+            style = dict(marker="o", color="C0")
+        ratio = max(m["ratio"], 3e-3)
+        ax.plot(m["slenderness"], ratio, ms=8, ls="none", **style)
+        note = f"{m['depth']:.2f}" if m["unstable_depth"] is None else f"{m['unstable_depth']:.3f}"
+        ax.annotate(note, (m["slenderness"], ratio), textcoords="offset points", xytext=(6, 4),
+                    fontsize=7)
+    ax.plot([], [], "o", color="C0", label="no wrinkles up to d/R (number)")
+    ax.plot([], [], "X", color="C3", label="unstable or wrinkled at d/R (number)")
+    ax.plot([], [], "s", color="0.5", mfc="none", label="stopped, stable")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlim(5, 200)
+    ax.set_ylim(3e-3, 3.0)
+    ax.set_xlabel("R / t")
+    ax.set_ylabel(r"$p / p_{max}$")
+    ax.legend(fontsize=7, frameon=False, loc="lower right")
+    ax.grid(alpha=0.3, which="both")
+    fig.tight_layout()
+    fig.savefig(os.path.join(directory, "map.png"), dpi=130)
+    plt.close(fig)
+    wrinkles = study.case_wrinkle_settings(CASE)
+    for m in results:
+        vtu = study.last_vtu(m["run"])
+        if vtu:
+            study.surface_figure(vtu, wrinkles, os.path.join(directory, f"surface_{m['name']}.png"),
+                                 f"R/t = {m['slenderness']:.0f}, p = {m['ratio']:.2g} p_max, "
+                                 f"d = {m['depth']:.3f} R")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("runs", nargs="*")
+    parser.add_argument("--summary", action="store_true")
+    parser.add_argument("--sweep", metavar="DIR")
+    parser.add_argument("--slenderness", default="25,50,100", help="R/t values")
+    parser.add_argument("--ratios", default="0.03,0.1,0.3", help="p/p_max values")
+    parser.add_argument("--cell", type=float, default=0.2,
+                        help="element size near the pole over sqrt(R t)")
+    parser.add_argument("--depth", type=float, default=0.2, help="largest d / R")
+    parser.add_argument("--tag", default="", help="suffix of the run folders")
+    parser.add_argument("--reuse", action="store_true", help="keep runs with a summary.json")
+    parser.add_argument("--set", action="append", metavar="KEY=VALUE",
+                        help="passed on to plisse run (e.g. dies[0].contact=sticking)")
+    parser.add_argument("--figures", metavar="DIR")
+    parser.add_argument("--c1", type=float, default=0.0033)
+    parser.add_argument("--radius", type=float, default=25.0, help="mid-surface radius [mm]")
+    args = parser.parse_args()
+    if args.sweep:
+        sweep(args.sweep, args)
+        return
+    if not args.runs:
+        parser.error("no run directories")
+    results = summary(args.runs, args)
+    if args.figures:
+        figures(args.figures, results, args)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
