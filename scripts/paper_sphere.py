@@ -6,7 +6,7 @@ Usage:
   scripts/paper-sphere --sweep DIR [--slenderness 25,50,100] [--ratios 0.03,0.1,0.3]
                        [--cell 0.2] [--depth 0.2] [--tag NAME] [--set KEY=VALUE ...]
         run the case at every (R/t, p/p_max) into DIR/rt-<R/t>_p-<ratio>[_<tag>]
-  scripts/paper-sphere --summary RUN [RUN ...]     one line per run
+  scripts/paper-sphere --summary RUN [RUN ...]     one line per run (--markdown: a table)
   scripts/paper-sphere --figures DIR RUN [...]     map.png and surface_<run>.png, into DIR
 
 Geometry of a point: mid-surface radius R (--radius, 25 mm), wall t = R / (R/t), neo-Hookean c1
@@ -31,22 +31,13 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+from shell_indentation import inflated_stretch  # noqa: E402  (the same thin-sphere law)
 CASE = os.path.join(ROOT, "validation", "paper-sphere-squeeze.yaml")
 LIMIT = 2.479  # p_max = LIMIT c1 t / R (thin neo-Hookean sphere)
 GAP = 0.2  # plate above the inflated pole, in wall thicknesses
 POLE_ZONE = 0.75  # refined within POLE_ZONE * R of the pole
-
-
-def inflated_stretch(pressure, c1, radius, thickness):
-    """lambda with p = (4 c1 t / R)(1/lambda - 1/lambda^7), below the limit point (bisection)."""
-    f = lambda s: 4.0 * c1 * thickness / radius * (1.0 / s - s**-7) - pressure
-    lo, hi = 1.0, 7.0 ** (1.0 / 6.0)
-    if f(hi) < 0.0:
-        raise SystemExit(f"p = {pressure:g} MPa is above the sphere's limit pressure")
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if f(mid) < 0.0 else (lo, mid)
-    return 0.5 * (lo + hi)
+ZERO = 3e-3  # where the map draws p = 0 (its axis is logarithmic)
 
 
 def limit_pressure(c1, radius, thickness):
@@ -102,9 +93,15 @@ def read_history(run):
         return list(csv.DictReader(f))
 
 
-def geometry(run):
-    """(mid-surface radius, wall thickness) of the run's shell, from its first step file."""
+def geometry(run, summary):
+    """(mid-surface radius, wall thickness) of the run's shell: from its --set values, else from
+    its first step file (the case file's own values; an imperfection would blur them)."""
     import glob
+
+    overrides = dict(item.split("=", 1) for item in summary.get("overrides", []) if "=" in item)
+    if "mesh.inner_radius" in overrides and "mesh.thickness" in overrides:
+        thickness = float(overrides["mesh.thickness"])
+        return float(overrides["mesh.inner_radius"]) + 0.5 * thickness, thickness
 
     import meshio
     import numpy as np
@@ -116,11 +113,42 @@ def geometry(run):
     return 0.5 * (norm.max() + norm.min()), norm.max() - norm.min()
 
 
+def hoop_compression(run):
+    """Most compressive hoop membrane stress at the last written step, on the plate and in the
+    free wall, over the classical buckling stress of a sphere E t / (R sqrt(3 (1 - nu^2))) =
+    (2/3) E t / R (E = 6 c1, nu = 1/2): the hoop Cauchy stress minus the stress along the
+    deformed radial direction, per tetrahedron; on the plate means a node in contact."""
+    import glob
+
+    import meshio
+    import numpy as np
+
+    files = sorted(glob.glob(os.path.join(run, "step_*.vtu")))
+    mesh = meshio.read(files[-1])
+    x0 = mesh.points
+    tets = (mesh.cells_dict["tetra10"][:, :4] if "tetra10" in mesh.cells_dict
+            else mesh.cells_dict["tetra"])
+    x = x0 + mesh.point_data["displacement"]
+    centre, current = x0[tets].mean(axis=1), x[tets].mean(axis=1)
+    phi = np.arctan2(centre[:, 2], centre[:, 0])
+    hoop = np.c_[-np.sin(phi), np.zeros_like(phi), np.cos(phi)]
+    normal = current / np.linalg.norm(current, axis=1)[:, None]
+    s = mesh.cell_data["cauchy_stress"][0]  # xx, yy, zz, xy, yz, xz
+    sigma = np.zeros((len(s), 3, 3))
+    for k, (i, j) in enumerate([(0, 0), (1, 1), (2, 2), (0, 1), (1, 2), (0, 2)]):
+        sigma[:, i, j] = sigma[:, j, i] = s[:, k]
+    membrane = (np.einsum("ei,eij,ej->e", hoop, sigma, hoop)
+                - np.einsum("ei,eij,ej->e", normal, sigma, normal))
+    nodes = mesh.cells_dict.get("tetra10", tets)  # a 6-node face carries contact at edge nodes
+    touching = (mesh.point_data["contact_punch"].reshape(-1)[nodes] > 0).any(axis=1)
+    return membrane[touching].min(initial=np.inf), membrane[~touching].min(initial=np.inf)
+
+
 def measure(run, c1):
     with open(os.path.join(run, "summary.json")) as f:
         summary = json.load(f)
     rows = read_history(run)
-    radius, thickness = geometry(run)
+    radius, thickness = geometry(run, summary)
     pressure = max(float(r["pressure:gas"]) for r in rows)
     free = [r for r in rows if float(r["contact_nodes:punch"]) == 0]
     rest = float(free[-1]["uy:top"]) if free else 0.0
@@ -132,7 +160,10 @@ def measure(run, c1):
     largest = max(rings, key=lambda g: g.get("residual_amplitude") or 0.0) if rings else {}
     field = wrinkles.get("tension_field", {})
     elements = sum(field.values()) or 1
+    plate, free_wall = hoop_compression(run)
+    critical = 2.0 / 3.0 * 6.0 * c1 * thickness / radius
     return {
+        "hoop_plate": plate / critical, "hoop_free": free_wall / critical,
         "run": run, "name": os.path.basename(os.path.normpath(run)),
         "radius": radius, "thickness": thickness, "slenderness": radius / thickness,
         "pressure": pressure, "ratio": pressure / limit_pressure(c1, radius, thickness),
@@ -144,30 +175,43 @@ def measure(run, c1):
         "count": largest.get("dominant_count"), "latitude": largest.get("latitude_deg"),
         "compressed": field.get("wrinkled", 0) / elements, "slack": field.get("slack", 0) / elements,
         "force": 4.0 * max(float(r["force_y:punch"]) for r in rows),
-        "dofs": summary.get("dofs"), "wall_time": (summary.get("wall_time") or {}).get("total"),
+        "dofs": summary.get("free_dofs"), "wall_time": (summary.get("wall_time") or {}).get("total"),
         "newton": summary.get("newton_iterations"), "steps": summary.get("steps"),
     }
 
 
 def summary(runs, args):
-    print(f"{'run':<28} {'R/t':>5} {'p/pmax':>7} {'tau':>6} {'done':>4} {'d/R':>6} "
-          f"{'unstable d/R':>12} {'wrinkled':>8} {'A/t':>6} {'m':>4} {'lat':>4} "
-          f"{'compr':>6} {'slack':>6} {'F [N]':>9} {'dofs':>7} {'time [s]':>8}")
     results = []
     for run in runs:
         try:
             results.append(measure(run, args.c1))
         except (OSError, KeyError, ValueError) as error:
             print(f"{run}: not read ({error})", file=sys.stderr)
-    for m in sorted(results, key=lambda m: (m["slenderness"], m["ratio"], m["name"])):
-        onset = "-" if m["unstable_depth"] is None else f"{m['unstable_depth']:.4f}"
-        print(f"{m['name']:<28} {m['slenderness']:5.0f} {m['ratio']:7.3f} {m['tau']:6.2f} "
-              f"{'yes' if m['completed'] else 'no':>4} {m['depth']:6.3f} {onset:>12} "
-              f"{'yes' if m['wrinkled'] else 'no':>8} {m['amplitude']:6.3f} "
-              f"{m['count'] if m['count'] is not None else '-':>4} "
-              f"{m['latitude'] if m['latitude'] is not None else '-':>4} "
-              f"{m['compressed']:6.3f} {m['slack']:6.3f} {m['force']:9.3e} "
-              f"{m['dofs'] or 0:7d} {m['wall_time'] or 0:8.0f}")
+    results.sort(key=lambda m: (m["slenderness"], m["ratio"], m["name"]))
+    header = ["run", "R/t", "p/p_max", "tau", "completed", "d/R reached", "unstable at d/R",
+              "wrinkled", "A/t", "m", "ring [deg]", "compressed", "slack", "hoop free/cr",
+              "hoop plate/cr", "F [N]", "unknowns", "time [s]"]
+    rows = []
+    for m in results:
+        rows.append([m["name"], f"{m['slenderness']:.0f}", f"{m['ratio']:.3g}",
+                     f"{m['tau']:.2f}", "yes" if m["completed"] else "no", f"{m['depth']:.3f}",
+                     "-" if m["unstable_depth"] is None else f"{m['unstable_depth']:.4f}",
+                     "yes" if m["wrinkled"] else "no", f"{m['amplitude']:.3f}",
+                     "-" if m["count"] is None else str(m["count"]),
+                     "-" if m["latitude"] is None else f"{m['latitude']:g}",
+                     f"{m['compressed']:.2f}", f"{m['slack']:.2f}", f"{m['hoop_free']:.2f}",
+                     f"{m['hoop_plate']:.2f}", f"{m['force']:.4g}", str(m["dofs"] or 0),
+                     f"{m['wall_time'] or 0:.0f}"])
+    if args.markdown:
+        print("| " + " | ".join(header) + " |")
+        print("|" + "---|" * len(header))
+        for row in rows:
+            print("| " + " | ".join(row) + " |")
+    else:
+        widths = [max(len(r[k]) for r in rows + [header]) for k in range(len(header))]
+        for row in [header] + rows:
+            print(" ".join(v.rjust(w) if k else v.ljust(w)
+                           for k, (v, w) in enumerate(zip(row, widths))))
     return results
 
 
@@ -178,11 +222,10 @@ def figures(directory, results, args):
     import matplotlib.pyplot as plt
     import numpy as np
 
-    sys.path.insert(0, os.path.join(ROOT, "scripts"))
     import study  # the deformed-surface figure of scripts/study
 
     os.makedirs(directory, exist_ok=True)
-    fig, ax = plt.subplots(figsize=(6.2, 4.6))
+    fig, ax = plt.subplots(figsize=(8.4, 4.8))
     slender = np.geomspace(5.0, 200.0, 100)
     # The paper's three pressures on a 1 mm wall of unknown radius R = (R/t) mm.
     for i, p in enumerate((1e-4, 1e-3, 1e-2)):
@@ -190,7 +233,9 @@ def figures(directory, results, args):
         ax.plot(slender, ratio, "--", color=f"C{i + 2}", lw=1,
                 label=f"paper's {p:g} MPa, t = 1 mm")
     ax.axhline(1.0, color="k", lw=0.8)
-    ax.text(6, 1.1, "p > p_max: no inflated equilibrium", fontsize=8)
+    ax.text(5.5, 1.25, "p > p_max: no inflated equilibrium", fontsize=8)
+    ax.axhline(ZERO, color="0.6", lw=0.5)
+    ax.text(5.5, ZERO * 1.15, "p = 0", fontsize=8, color="0.4")
     # The map holds the base runs (no tag) and the paper's own values (tag "paper"); the other
     # tagged runs vary contact, element or mesh at a map point and are in the summary table.
     for m in (m for m in results if "_" not in m["name"].split("_p-")[1] or
@@ -201,7 +246,7 @@ def figures(directory, results, args):
             style = dict(marker="X", color="C3")
         else:
             style = dict(marker="o", color="C0")
-        ratio = max(m["ratio"], 3e-3)
+        ratio = m["ratio"] if m["ratio"] > 0.0 else ZERO
         ax.plot(m["slenderness"], ratio, ms=8, ls="none", **style)
         note = f"{m['depth']:.2f}" if m["unstable_depth"] is None else f"{m['unstable_depth']:.3f}"
         ax.annotate(note, (m["slenderness"], ratio), textcoords="offset points", xytext=(6, 4),
@@ -212,13 +257,35 @@ def figures(directory, results, args):
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlim(5, 200)
-    ax.set_ylim(3e-3, 3.0)
+    ax.set_ylim(2e-3, 100.0)
     ax.set_xlabel("R / t")
     ax.set_ylabel(r"$p / p_{max}$")
-    ax.legend(fontsize=7, frameon=False, loc="lower right")
+    ax.legend(fontsize=8, frameon=False, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     ax.grid(alpha=0.3, which="both")
     fig.tight_layout()
     fig.savefig(os.path.join(directory, "map.png"), dpi=130)
+    plt.close(fig)
+    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    for i, m in enumerate(sorted(results, key=lambda m: (m["slenderness"], m["ratio"]))):
+        rows = read_history(m["run"])
+        free = [r for r in rows if float(r["contact_nodes:punch"]) == 0]
+        rest = float(free[-1]["uy:top"]) if free else 0.0
+        points = [((rest - float(r["uy:top"])) / m["radius"],
+                   float(r["wrinkle_amplitude"]) / m["thickness"]) for r in rows
+                  if float(r["contact_nodes:punch"]) > 0 and r["wrinkle_amplitude"] != ""]
+        if points:
+            ax.plot(*zip(*points), marker="o", ms=3, lw=1, color=f"C{i % 10}",
+                    ls="-" if "_" not in m["name"].split("_p-")[1] else ":",
+                    label=m["name"])
+    ax.axhline(0.1, color="k", lw=0.8)
+    ax.text(0.005, 0.105, "wrinkle threshold 0.1 t", fontsize=8)
+    ax.set_xlabel("d / R")
+    ax.set_ylabel("largest ring amplitude / t")
+    ax.set_yscale("log")
+    ax.legend(fontsize=6, frameon=False, ncol=2)
+    ax.grid(alpha=0.3, which="both")
+    fig.tight_layout()
+    fig.savefig(os.path.join(directory, "amplitude.png"), dpi=130)
     plt.close(fig)
     wrinkles = study.case_wrinkle_settings(CASE)
     for m in results:
@@ -231,9 +298,10 @@ def figures(directory, results, args):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("runs", nargs="*")
-    parser.add_argument("--summary", action="store_true")
-    parser.add_argument("--sweep", metavar="DIR")
+    parser.add_argument("runs", nargs="*", help="run directories")
+    parser.add_argument("--summary", action="store_true", help="one line per run")
+    parser.add_argument("--markdown", action="store_true", help="the summary as a Markdown table")
+    parser.add_argument("--sweep", metavar="DIR", help="run every (R/t, p/p_max) into DIR")
     parser.add_argument("--slenderness", default="25,50,100", help="R/t values")
     parser.add_argument("--ratios", default="0.03,0.1,0.3", help="p/p_max values")
     parser.add_argument("--cell", type=float, default=0.2,
@@ -243,8 +311,8 @@ def main():
     parser.add_argument("--reuse", action="store_true", help="keep runs with a summary.json")
     parser.add_argument("--set", action="append", metavar="KEY=VALUE",
                         help="passed on to plisse run (e.g. dies[0].contact=sticking)")
-    parser.add_argument("--figures", metavar="DIR")
-    parser.add_argument("--c1", type=float, default=0.0033)
+    parser.add_argument("--figures", metavar="DIR", help="map, amplitudes and surfaces into DIR")
+    parser.add_argument("--c1", type=float, default=0.0033, help="neo-Hookean c1 [MPa]")
     parser.add_argument("--radius", type=float, default=25.0, help="mid-surface radius [mm]")
     args = parser.parse_args()
     if args.sweep:
