@@ -230,6 +230,7 @@ void solve_and_write(PreparedRun run) {
     log.info("resuming after step " + std::to_string(checkpoint->steps) +
              " at t = " + std::to_string(checkpoint->time));
 
+  bool checkpoint_on_stop = false;
   const auto on_step = [&](const StepInfo& info) {
     recorder.record(info);
     const auto& wrinkles = recorder.last_wrinkles();
@@ -240,11 +241,20 @@ void solve_and_write(PreparedRun run) {
       log.warn("interrupted by a signal: writing a checkpoint and stopping after step " +
                std::to_string(info.step));
       recorder.save_checkpoint();
+      checkpoint_on_stop = true;
       stepper.request_stop();
     }
     log.flush();
   };
+  // A signal during a step (Newton iterations, cut-backs, multiplier updates) stops it at once;
+  // the model is back at the last converged step, which the checkpoint then holds.
+  stepper.set_interrupt([&] { return any_rank(run.interrupts.requested()); });
   const SteppingResult result = stepper.run(on_step, [&](const std::string& s) { log.warn(s); });
+  if (result.interrupted && !checkpoint_on_stop && result.steps > 0) {
+    log.warn("interrupted by a signal during step " + std::to_string(result.steps + 1) +
+             ": writing a checkpoint of step " + std::to_string(result.steps) + " and stopping");
+    recorder.save_checkpoint();
+  }
   const double memory = recorder.finish(result, times);
 
   const PhaseTimes phases = stepper.times();
@@ -259,9 +269,17 @@ void solve_and_write(PreparedRun run) {
   const StepInfo& last = recorder.last_step();
   if (result.interrupted) {
     log.flush();
+    // The full command: a resume must repeat the --set values (the checkpoint's fingerprint
+    // holds them), each quoted for the shell (keys such as loads[0].value hold brackets).
+    std::string command = "plisse run " + run.options.case_file;
+    for (const auto& o : run.options.overrides) {
+      std::string quoted = "'";
+      for (char ch : o) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+      command += " --set " + quoted + "'";
+    }
     throw SolverError("interrupted after step " + std::to_string(last.step) +
-                      " at t = " + std::to_string(last.time) + "; continue with: plisse run " +
-                      run.options.case_file + " --resume " + dir.directory().string());
+                      " at t = " + std::to_string(last.time) + "; continue with: " + command +
+                      " --resume " + dir.directory().string());
   }
   if (!result.completed) {
     log.error(result.failure);

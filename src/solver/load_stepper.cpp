@@ -90,6 +90,7 @@ std::string LoadStepper::solve_step(NewtonResult& newton, SteppingResult& result
       result.newton_iterations += newton.iterations;
       if (!newton.converged) return describe_failure(newton);
       if (!model_.update_multipliers()) return {};
+      if (interrupt_ && interrupt_()) return "interrupted";
       if (++augmentations > settings_.max_augmentations)
         return "constraints not met after " + std::to_string(settings_.max_augmentations) +
                " multiplier updates";
@@ -219,6 +220,11 @@ void LoadStepper::check_stability(StepInfo& info, SteppingResult& result,
   current_.negative_pivots = inertia.negative;
 }
 
+void LoadStepper::set_interrupt(std::function<bool()> stop) {
+  interrupt_ = stop;
+  newton_.set_interrupt(std::move(stop));
+}
+
 SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_step,
                                 const std::function<void(const std::string&)>& log) {
   SteppingResult result;
@@ -244,7 +250,14 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
   result.steps = st.steps;
   int cutbacks_this_step = 0;
   char line[256];
+  const auto interrupted = [&] {
+    if (!interrupt_ || !interrupt_()) return false;
+    result.interrupted = true;
+    result.failure = "interrupted during step " + std::to_string(result.steps + 1);
+    return true;
+  };
   while (t < end * (1.0 - 1e-12)) {
+    if (interrupted()) return result;
     if (result.steps >= settings_.max_steps) {
       result.failure = "reached solver.max_steps = " + std::to_string(settings_.max_steps) +
                        " at time " + std::to_string(t);
@@ -268,6 +281,11 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
     const std::string failure = solve_step(newton, result);
     if (!failure.empty()) {
       model_.restore_converged();
+      if (newton.interrupted || interrupted()) {
+        result.interrupted = true;
+        result.failure = "interrupted during step " + std::to_string(result.steps + 1);
+        return result;
+      }
       ++result.cutbacks;
       ++cutbacks_this_step;
       const double new_dt = step * settings_.cutback;

@@ -89,6 +89,11 @@ class LoadStepper {
   const StepperState& state() const { return current_; }
   /// Asks run() to return after the current step (e.g. from a signal handler's flag check).
   void request_stop() { stop_requested_ = true; }
+  /// `stop` is asked before every attempt at a step and after every Newton iteration (on every
+  /// rank at once); when it says true, run() returns `interrupted` at once, the model back at the
+  /// last converged step: a signal is answered within one Newton iteration, also while steps
+  /// fail and are cut back.
+  void set_interrupt(std::function<bool()> stop);
 
   /// Runs to the end. `on_step` is called after every converged step with the model holding it;
   /// `log` receives progress lines.
@@ -120,6 +125,7 @@ class LoadStepper {
   std::optional<StepperState> resume_;
   StepperState current_;
   bool stop_requested_ = false;
+  std::function<bool()> interrupt_;
   StabilityOptions stability_;
   std::unique_ptr<InertiaCheck> inertia_;
   bool told_symmetric_part_ = false;

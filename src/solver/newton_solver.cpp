@@ -83,6 +83,7 @@ NewtonSolver::NewtonSolver(MixedModel& model, const NewtonSettings& settings) : 
   PLISSE_PETSC(SNESSetConvergenceHistory(snes_, history_.data(), nullptr,
                                          static_cast<PetscInt>(history_.size()), PETSC_TRUE));
   PLISSE_PETSC(SNESSetFromOptions(snes_));
+  PLISSE_PETSC(SNESSetConvergenceTest(snes_, &NewtonSolver::converged, this, nullptr));
 }
 
 NewtonSolver::~NewtonSolver() {
@@ -112,6 +113,23 @@ PetscErrorCode NewtonSolver::form_function(SNES snes, Vec x, Vec f, void* contex
     self->error_ = std::current_exception();
     return PETSC_ERR_LIB;
   }
+  return 0;
+}
+
+PetscErrorCode NewtonSolver::converged(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm,
+                                       PetscReal fnorm, SNESConvergedReason* reason,
+                                       void* context) {
+  PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
+  auto* self = static_cast<NewtonSolver*>(context);
+  if (*reason != SNES_CONVERGED_ITERATING || !self->interrupt_) return 0;
+  try {
+    self->interrupted_ = self->interrupt_();
+  } catch (...) {
+    self->error_ = std::current_exception();
+    return PETSC_ERR_LIB;
+  }
+  // PETSc 3.18 has no user reason; any diverged one ends the solve, and `interrupted` says why.
+  if (self->interrupted_) *reason = SNES_DIVERGED_FUNCTION_COUNT;
   return 0;
 }
 
@@ -169,6 +187,7 @@ double NewtonSolver::factor_entries() const {
 NewtonResult NewtonSolver::solve() {
   NewtonResult result;
   error_ = nullptr;
+  interrupted_ = false;
   model_.get_free(x_);
   // The tangent's sparsity grew (contact pairs): a new matrix, which the factorisation analyses
   // anew.
@@ -191,7 +210,9 @@ NewtonResult NewtonSolver::solve() {
   result.converged = reason > 0 && last_status_.ok;
   result.iterations = static_cast<int>(its);
   result.residual_norm = result.residual_history.empty() ? 0.0 : result.residual_history.back();
-  result.reason = SNESConvergedReasons[reason];
+  result.reason = interrupted_ ? "interrupted" : SNESConvergedReasons[reason];
+  result.interrupted = interrupted_;
+  result.converged = result.converged && !interrupted_;
   result.status = last_status_;
   return result;
 }

@@ -5,6 +5,7 @@
 #include <petscsnes.h>
 
 #include <exception>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@ struct NewtonResult {
   std::vector<double> residual_history;  ///< ||R|| at the start and after each iteration
   std::string reason;                    ///< PETSc's converged/diverged reason, in words
   AssemblyStatus status;                 ///< of the last residual evaluation
+  bool interrupted = false;              ///< stopped because set_interrupt's test said so
 };
 
 /// Wall time spent per phase [s], accumulated over all solves.
@@ -50,6 +52,10 @@ class NewtonSolver {
   /// Solves R(x) = 0 from the model's current state (constrained values already applied).
   /// On return the model holds the last iterate, converged or not.
   NewtonResult solve();
+  /// `stop` is asked after every Newton iteration, on every rank at once (it may be collective);
+  /// when it says true, the solve ends unconverged with `interrupted` set (a signal arrived).
+  /// Installed as SNES's convergence test around SNESConvergedDefault.
+  void set_interrupt(std::function<bool()> stop) { interrupt_ = std::move(stop); }
   /// Wall time per phase; the factorisation and solve parts read PETSc's event log.
   PhaseTimes times() const;
   /// Entries of the last MUMPS factorisation (INFOG(29)); -1 when the linear solver is not a
@@ -59,6 +65,8 @@ class NewtonSolver {
  private:
   static PetscErrorCode form_function(SNES snes, Vec x, Vec f, void* context);
   static PetscErrorCode form_jacobian(SNES snes, Vec x, Mat J, Mat P, void* context);
+  static PetscErrorCode converged(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm,
+                                  PetscReal fnorm, SNESConvergedReason* reason, void* context);
   /// (Re)makes K_ with the model's current sparsity and hands it to SNES.
   void make_matrix();
 
@@ -71,6 +79,8 @@ class NewtonSolver {
   std::exception_ptr error_;
   AssemblyStatus last_status_;
   PhaseTimes times_;
+  std::function<bool()> interrupt_;
+  bool interrupted_ = false;  ///< the current solve was stopped by interrupt_
 };
 
 }  // namespace plisse

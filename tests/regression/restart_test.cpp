@@ -1,6 +1,7 @@
 // Requirement: a run killed at any moment (SIGKILL) and resumed with --resume gives the same
 // history as an uninterrupted run (relative difference < 1e-10), and leaves no truncated file;
-// SIGTERM stops a run cleanly with a checkpoint and exit status 1.
+// SIGTERM stops a run cleanly with a checkpoint and exit status 1, also while its steps fail and
+// are cut back (within one Newton iteration, not after the next converged step).
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -163,6 +164,62 @@ TEST(Restart, TerminatedRunStopsWithCheckpointAndExitStatus1) {
       test::run_plisse("run " + kCase + " --resume " + dir.string(), dir.string() + ".resume.log"),
       0);
   EXPECT_TRUE(read_json_file(dir / "summary.json")["completed"].get<bool>());
+}
+
+TEST(Restart, TerminatedWhileStepsFailStopsAtOnceKeepingTheLastConvergedStep) {
+  // The thick sphere under 10 times its limit pressure: steps fail and are cut back from the
+  // first one on (each failed attempt takes seconds), and with solver.min_step = 1e-14 the run
+  // would go on cutting back for minutes at the limit point.
+  const fs::path dir = test::scratch_directory("restart-terminated-failing");
+  const std::string case_file = std::string(PLISSE_SOURCE_DIR) + "/examples/sphere-inflation.yaml";
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const std::string exe = std::string(PLISSE_BINARY_DIR) + "/bin/plisse";
+    const std::string log = dir.string() + ".log";
+    freopen(log.c_str(), "w", stdout);
+    freopen(log.c_str(), "a", stderr);
+    execl(exe.c_str(), exe.c_str(), "run", case_file.c_str(), "-o", dir.c_str(), "--set",
+          "loads[0].value=5", "--set", "solver.min_step=1e-14", nullptr);
+    _exit(127);
+  }
+  // Wait for a failed attempt: the run is then retrying a step.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  std::string log;
+  while (log.find("failed after") == std::string::npos &&
+         std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    std::ifstream in(dir / "log.txt");
+    log.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  ASSERT_NE(log.find("failed after"), std::string::npos) << "no step failed within 2 minutes";
+  const auto sent = std::chrono::steady_clock::now();
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  // One Newton iteration of this 2 000-unknown model takes well under a second; the next
+  // converged step would have taken several failed attempts of seconds each.
+  EXPECT_LT(seconds, 5.0);
+  std::ifstream in(dir / "log.txt");
+  log.assign(std::istreambuf_iterator<char>(in), {});
+  EXPECT_NE(log.find("interrupted by a signal during step"), std::string::npos) << log;
+  const auto summary = read_json_file(dir / "summary.json");
+  EXPECT_TRUE(summary["interrupted"].get<bool>());
+  const size_t steps = history_rows(dir);
+  EXPECT_EQ(summary["steps"].get<size_t>(), steps);
+  if (steps > 0) {
+    EXPECT_TRUE(fs::exists(dir / "checkpoint.bin"));
+  }
+  expect_readable(dir);
+  // The hint is the whole command, --set values included, quoted for the shell.
+  std::ifstream out(dir.string() + ".log");
+  const std::string printed((std::istreambuf_iterator<char>(out)), {});
+  EXPECT_NE(printed.find("--set 'loads[0].value=5' --set 'solver.min_step=1e-14' --resume"),
+            std::string::npos)
+      << printed;
 }
 
 TEST(Restart, KilledTaylorHoodRunResumesToTheUninterruptedHistory) {
