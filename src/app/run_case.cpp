@@ -231,12 +231,21 @@ void solve_and_write(PreparedRun run) {
              " at t = " + std::to_string(checkpoint->time));
 
   bool checkpoint_on_stop = false;
+  WallClock::time_point last_checkpoint = WallClock::now();
   const auto on_step = [&](const StepInfo& info) {
     recorder.record(info);
     const auto& wrinkles = recorder.last_wrinkles();
     log.info(progress_line(info, wrinkles && wrinkles->rings.wrinkled, seconds_since(run.start)));
-    if (c.output.checkpoint_every > 0 && info.step % c.output.checkpoint_every == 0)
+    // By step count, or by wall time (decided on every rank alike: the write is collective).
+    const bool by_count =
+        c.output.checkpoint_every > 0 && info.step % c.output.checkpoint_every == 0;
+    const bool by_time =
+        c.output.checkpoint_minutes > 0.0 &&
+        any_rank(seconds_since(last_checkpoint) >= 60.0 * c.output.checkpoint_minutes);
+    if (by_count || by_time) {
       recorder.save_checkpoint();
+      last_checkpoint = WallClock::now();
+    }
     if (any_rank(run.interrupts.requested())) {
       log.warn("interrupted by a signal: writing a checkpoint and stopping after step " +
                std::to_string(info.step));
@@ -250,11 +259,10 @@ void solve_and_write(PreparedRun run) {
   // the model is back at the last converged step, which the checkpoint then holds.
   stepper.set_interrupt([&] { return any_rank(run.interrupts.requested()); });
   const SteppingResult result = stepper.run(on_step, [&](const std::string& s) { log.warn(s); });
-  if (result.interrupted && !checkpoint_on_stop && result.steps > 0) {
+  // (recorder.finish writes the checkpoint of the last converged step, which the model holds.)
+  if (result.interrupted && !checkpoint_on_stop)
     log.warn("interrupted by a signal during step " + std::to_string(result.steps + 1) +
-             ": writing a checkpoint of step " + std::to_string(result.steps) + " and stopping");
-    recorder.save_checkpoint();
-  }
+             ": stopping; the checkpoint holds step " + std::to_string(result.steps));
   const double memory = recorder.finish(result, times);
 
   const PhaseTimes phases = stepper.times();

@@ -862,6 +862,10 @@ Schema<OutputSettings> output_schema() {
   s.integer("checkpoint_every", &OutputSettings::checkpoint_every, Range::at_least(0),
             "write `checkpoint.bin` every N converged steps (0: only when interrupted); `plisse "
             "run CASE --resume DIR` continues from it");
+  s.real("checkpoint_minutes", &OutputSettings::checkpoint_minutes, Range::non_negative(), "min",
+         "also write `checkpoint.bin` after a converged step when this much wall time has passed "
+         "since the run started or the last checkpoint (0: by step count only), so a long run "
+         "loses at most about that much work");
   s.boolean("deformed", &OutputSettings::deformed,
             "write deformed instead of reference coordinates");
   s.add({"stretch_axis",

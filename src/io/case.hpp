@@ -169,10 +169,12 @@ struct WrinkleSettings {
 };
 
 struct OutputSettings {
-  int every = 1;              ///< VTU every N converged steps (the last one always), >= 1
-  int checkpoint_every = 10;  ///< checkpoint every N converged steps (and on SIGINT/SIGTERM),
-                              ///< >= 0; 0: only on signals
-  bool deformed = false;      ///< write deformed coordinates instead of reference ones
+  int every = 1;                    ///< VTU every N converged steps (the last one always), >= 1
+  int checkpoint_every = 10;        ///< checkpoint every N converged steps (and on SIGINT/SIGTERM),
+                                    ///< >= 0; 0: only on signals
+  double checkpoint_minutes = 5.0;  ///< also checkpoint when this much wall time has passed since
+                                    ///< the last one, >= 0; 0: no time-based checkpoints
+  bool deformed = false;            ///< write deformed coordinates instead of reference ones
   /// Optional 'x' | 'y' | 'z': adds a history column `stretch` = volume average of F along that
   /// axis (the columns `cauchy_xx` ... `cauchy_xz`, deformed-volume averages, are always there).
   std::optional<char> stretch_axis;

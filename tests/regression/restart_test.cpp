@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <thread>
+#include <vector>
 
 #include "io/history_writer.hpp"
 #include "io/json_file.hpp"
@@ -25,20 +26,21 @@ namespace fs = std::filesystem;
 
 const std::string kCase = std::string(PLISSE_SOURCE_DIR) + "/tests/regression/restart-case.yaml";
 
-/// Starts `plisse run case_file -o dir [--set extra]` in the background; returns its pid.
+/// Starts `plisse run case_file -o dir [--set S ...]` in the background; returns its pid.
 pid_t start_run(const fs::path& dir, const std::string& case_file = kCase,
-                const std::string& extra = "") {
+                const std::vector<std::string>& sets = {}) {
+  const std::string exe = std::string(PLISSE_BINARY_DIR) + "/bin/plisse";
+  std::vector<std::string> args = {exe, "run", case_file, "-o", dir.string()};
+  for (const auto& set : sets) args.insert(args.end(), {"--set", set});
   const pid_t pid = fork();
   if (pid == 0) {
-    const std::string exe = std::string(PLISSE_BINARY_DIR) + "/bin/plisse";
     const std::string log = dir.string() + ".log";
     freopen(log.c_str(), "w", stdout);
     freopen(log.c_str(), "a", stderr);
-    if (extra.empty())
-      execl(exe.c_str(), exe.c_str(), "run", case_file.c_str(), "-o", dir.c_str(), nullptr);
-    else
-      execl(exe.c_str(), exe.c_str(), "run", case_file.c_str(), "-o", dir.c_str(), "--set",
-            extra.c_str(), nullptr);
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    execv(exe.c_str(), argv.data());
     _exit(127);
   }
   return pid;
@@ -101,7 +103,8 @@ fs::path expect_kill_and_resume(const std::string& name, const std::string& set 
                              reference.string() + ".log"),
             0);
   const fs::path killed = test::scratch_directory(name + "-killed");
-  const pid_t pid = start_run(killed, kCase, set);
+  const pid_t pid = start_run(
+      killed, kCase, set.empty() ? std::vector<std::string>{} : std::vector<std::string>{set});
   wait_for_rows(killed, 6);
   kill(pid, SIGKILL);
   int status = 0;
@@ -133,7 +136,7 @@ TEST(Restart, ContactHistorySurvivesAKill) {
             0);
   const size_t total = read_history(reference / "history.csv").rows.size();
   const fs::path killed = test::scratch_directory("restart-contact-killed");
-  const pid_t pid = start_run(killed, case_file, every);
+  const pid_t pid = start_run(killed, case_file, {every});
   wait_for_rows(killed, total / 2 + 1);
   kill(pid, SIGKILL);
   int status = 0;
@@ -172,16 +175,7 @@ TEST(Restart, TerminatedWhileStepsFailStopsAtOnceKeepingTheLastConvergedStep) {
   // would go on cutting back for minutes at the limit point.
   const fs::path dir = test::scratch_directory("restart-terminated-failing");
   const std::string case_file = std::string(PLISSE_SOURCE_DIR) + "/examples/sphere-inflation.yaml";
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const std::string exe = std::string(PLISSE_BINARY_DIR) + "/bin/plisse";
-    const std::string log = dir.string() + ".log";
-    freopen(log.c_str(), "w", stdout);
-    freopen(log.c_str(), "a", stderr);
-    execl(exe.c_str(), exe.c_str(), "run", case_file.c_str(), "-o", dir.c_str(), "--set",
-          "loads[0].value=5", "--set", "solver.min_step=1e-14", nullptr);
-    _exit(127);
-  }
+  const pid_t pid = start_run(dir, case_file, {"loads[0].value=5", "solver.min_step=1e-14"});
   // Wait for a failed attempt: the run is then retrying a step.
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
   std::string log;
@@ -220,6 +214,34 @@ TEST(Restart, TerminatedWhileStepsFailStopsAtOnceKeepingTheLastConvergedStep) {
   EXPECT_NE(printed.find("--set 'loads[0].value=5' --set 'solver.min_step=1e-14' --resume"),
             std::string::npos)
       << printed;
+}
+
+TEST(Restart, WallTimeCheckpointsBoundTheWorkLostWithoutAStepCount) {
+  // Step-count checkpoints off: with output.checkpoint_minutes a run killed after a few steps can
+  // still be resumed; without it (0) nothing is there to resume from.
+  for (const std::string minutes : {"1e-9", "0"}) {
+    const fs::path dir = test::scratch_directory("restart-wall-time-" + minutes);
+    const pid_t pid = start_run(
+        dir, kCase, {"output.checkpoint_every=0", "output.checkpoint_minutes=" + minutes});
+    wait_for_rows(dir, 4);
+    kill(pid, SIGKILL);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed";
+    if (minutes == "0") {
+      EXPECT_FALSE(fs::exists(dir / "checkpoint.bin"));
+      continue;
+    }
+    ASSERT_TRUE(fs::exists(dir / "checkpoint.bin"));
+    EXPECT_EQ(test::run_plisse("run " + kCase +
+                                   " --set output.checkpoint_every=0 --set "
+                                   "output.checkpoint_minutes=1e-9 --resume " +
+                                   dir.string(),
+                               dir.string() + ".resume.log"),
+              0)
+        << "see " << dir.string() << ".resume.log";
+    EXPECT_TRUE(read_json_file(dir / "summary.json")["completed"].get<bool>());
+  }
 }
 
 TEST(Restart, KilledTaylorHoodRunResumesToTheUninterruptedHistory) {
