@@ -32,7 +32,7 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from shell_indentation import inflated_stretch  # noqa: E402  (the same thin-sphere law)
+from shell_indentation import inflated_stretch, step_files  # noqa: E402  (thin-sphere law)
 CASE = os.path.join(ROOT, "validation", "paper-sphere-squeeze.yaml")
 LIMIT = 2.479  # p_max = LIMIT c1 t / R (thin neo-Hookean sphere)
 GAP = 0.2  # plate above the inflated pole, in wall thicknesses
@@ -96,8 +96,6 @@ def read_history(run):
 def geometry(run, summary):
     """(mid-surface radius, wall thickness) of the run's shell: from its --set values, else from
     its first step file (the case file's own values; an imperfection would blur them)."""
-    import glob
-
     overrides = dict(item.split("=", 1) for item in summary.get("overrides", []) if "=" in item)
     if "mesh.inner_radius" in overrides and "mesh.thickness" in overrides:
         thickness = float(overrides["mesh.thickness"])
@@ -106,7 +104,7 @@ def geometry(run, summary):
     import meshio
     import numpy as np
 
-    files = sorted(glob.glob(os.path.join(run, "step_*.vtu")))
+    files = step_files(run)
     if not files:
         raise ValueError("no step files")
     norm = np.linalg.norm(meshio.read(files[0]).points, axis=1)
@@ -118,13 +116,10 @@ def hoop_compression(run):
     free wall, over the classical buckling stress of a sphere E t / (R sqrt(3 (1 - nu^2))) =
     (2/3) E t / R (E = 6 c1, nu = 1/2): the hoop Cauchy stress minus the stress along the
     deformed radial direction, per tetrahedron; on the plate means a node in contact."""
-    import glob
-
     import meshio
     import numpy as np
 
-    files = sorted(glob.glob(os.path.join(run, "step_*.vtu")))
-    mesh = meshio.read(files[-1])
+    mesh = meshio.read(step_files(run)[-1])
     x0 = mesh.points
     tets = (mesh.cells_dict["tetra10"][:, :4] if "tetra10" in mesh.cells_dict
             else mesh.cells_dict["tetra"])

@@ -29,8 +29,9 @@ namespace fs = std::filesystem;
 volatile std::sig_atomic_t g_interrupt = 0;
 extern "C" void on_interrupt(int) { g_interrupt = 1; }
 
-/// SIGINT/SIGTERM set a flag for the duration of a run; the run checkpoints after the current step
-/// and stops. The previous handlers come back at the end.
+/// SIGINT/SIGTERM set a flag for the duration of a run; the stepper asks it before every step and
+/// after every Newton iteration, stops with the last converged step and the run checkpoints it. The
+/// previous handlers come back at the end.
 class InterruptGuard {
  public:
   InterruptGuard() {
@@ -230,7 +231,6 @@ void solve_and_write(PreparedRun run) {
     log.info("resuming after step " + std::to_string(checkpoint->steps) +
              " at t = " + std::to_string(checkpoint->time));
 
-  bool checkpoint_on_stop = false;
   WallClock::time_point last_checkpoint = WallClock::now();
   const auto on_step = [&](const StepInfo& info) {
     recorder.record(info);
@@ -246,21 +246,14 @@ void solve_and_write(PreparedRun run) {
       recorder.save_checkpoint();
       last_checkpoint = WallClock::now();
     }
-    if (any_rank(run.interrupts.requested())) {
-      log.warn("interrupted by a signal: writing a checkpoint and stopping after step " +
-               std::to_string(info.step));
-      recorder.save_checkpoint();
-      checkpoint_on_stop = true;
-      stepper.request_stop();
-    }
     log.flush();
   };
-  // A signal during a step (Newton iterations, cut-backs, multiplier updates) stops it at once;
-  // the model is back at the last converged step, which the checkpoint then holds.
+  // SIGINT/SIGTERM stop the stepper before the next step or within the current one (Newton
+  // iterations, cut-backs, multiplier updates); the model is back at the last converged step,
+  // whose checkpoint recorder.finish writes.
   stepper.set_interrupt([&] { return any_rank(run.interrupts.requested()); });
   const SteppingResult result = stepper.run(on_step, [&](const std::string& s) { log.warn(s); });
-  // (recorder.finish writes the checkpoint of the last converged step, which the model holds.)
-  if (result.interrupted && !checkpoint_on_stop)
+  if (result.interrupted)
     log.warn("interrupted by a signal during step " + std::to_string(result.steps + 1) +
              ": stopping; the checkpoint holds step " + std::to_string(result.steps));
   const double memory = recorder.finish(result, times);

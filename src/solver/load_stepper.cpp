@@ -90,7 +90,7 @@ std::string LoadStepper::solve_step(NewtonResult& newton, SteppingResult& result
       result.newton_iterations += newton.iterations;
       if (!newton.converged) return describe_failure(newton);
       if (!model_.update_multipliers()) return {};
-      if (interrupt_ && interrupt_()) return "interrupted";
+      if (interrupt_ && interrupt_()) return "interrupted";  // run() asks again and stops
       if (++augmentations > settings_.max_augmentations)
         return "constraints not met after " + std::to_string(settings_.max_augmentations) +
                " multiplier updates";
@@ -250,14 +250,14 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
   result.steps = st.steps;
   int cutbacks_this_step = 0;
   char line[256];
-  const auto interrupted = [&] {
-    if (!interrupt_ || !interrupt_()) return false;
+  const auto requested = [&] { return interrupt_ && interrupt_(); };
+  const auto stop = [&] {
     result.interrupted = true;
     result.failure = "interrupted during step " + std::to_string(result.steps + 1);
-    return true;
+    return result;
   };
   while (t < end * (1.0 - 1e-12)) {
-    if (interrupted()) return result;
+    if (requested()) return stop();
     if (result.steps >= settings_.max_steps) {
       result.failure = "reached solver.max_steps = " + std::to_string(settings_.max_steps) +
                        " at time " + std::to_string(t);
@@ -281,11 +281,7 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
     const std::string failure = solve_step(newton, result);
     if (!failure.empty()) {
       model_.restore_converged();
-      if (newton.interrupted || interrupted()) {
-        result.interrupted = true;
-        result.failure = "interrupted during step " + std::to_string(result.steps + 1);
-        return result;
-      }
+      if (newton.interrupted || requested()) return stop();
       ++result.cutbacks;
       ++cutbacks_this_step;
       const double new_dt = step * settings_.cutback;
@@ -326,11 +322,6 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
     // After a switch the last increment holds the jump onto the new branch: no extrapolation.
     if (switched) previous_dt = 0.0;
     on_step(info);
-    if (stop_requested_ && t < end * (1.0 - 1e-12)) {
-      result.interrupted = true;
-      result.failure = "interrupted at step " + std::to_string(result.steps);
-      return result;
-    }
   }
   result.completed = true;
   return result;

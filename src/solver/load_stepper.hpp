@@ -60,7 +60,7 @@ struct SteppingResult {
   int newton_iterations = 0;  ///< total over converged and failed attempts
   int cutbacks = 0;
   std::string failure;       ///< why the run stopped early (empty when completed)
-  bool interrupted = false;  ///< stopped on request (request_stop), not by a failure
+  bool interrupted = false;  ///< stopped because set_interrupt's test said so, not by a failure
 };
 
 /// Where the stepping is, so that a run can continue from a checkpoint.
@@ -87,8 +87,6 @@ class LoadStepper {
   void resume(StepperState state) { resume_ = std::move(state); }
   /// The state after the last converged step (valid inside the on_step callback and after run).
   const StepperState& state() const { return current_; }
-  /// Asks run() to return after the current step (e.g. from a signal handler's flag check).
-  void request_stop() { stop_requested_ = true; }
   /// `stop` is asked before every attempt at a step and after every Newton iteration (on every
   /// rank at once); when it says true, run() returns `interrupted` at once, the model back at the
   /// last converged step: a signal is answered within one Newton iteration, also while steps
@@ -124,7 +122,6 @@ class LoadStepper {
   NewtonSolver newton_;
   std::optional<StepperState> resume_;
   StepperState current_;
-  bool stop_requested_ = false;
   std::function<bool()> interrupt_;
   StabilityOptions stability_;
   std::unique_ptr<InertiaCheck> inertia_;

@@ -207,12 +207,11 @@ NewtonResult NewtonSolver::solve() {
   PetscReal* h = nullptr;
   PLISSE_PETSC(SNESGetConvergenceHistory(snes_, &h, nullptr, &n_history));
   result.residual_history.assign(h, h + n_history);
-  result.converged = reason > 0 && last_status_.ok;
+  result.converged = reason > 0 && last_status_.ok;  // an interrupted solve has reason < 0
   result.iterations = static_cast<int>(its);
   result.residual_norm = result.residual_history.empty() ? 0.0 : result.residual_history.back();
   result.reason = interrupted_ ? "interrupted" : SNESConvergedReasons[reason];
   result.interrupted = interrupted_;
-  result.converged = result.converged && !interrupted_;
   result.status = last_status_;
   return result;
 }
