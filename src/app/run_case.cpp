@@ -184,9 +184,10 @@ std::string progress_line(const StepInfo& info, bool wrinkled, double elapsed) {
     std::snprintf(stability, sizeof stability, "  SINGULAR (%d zero pivot%s)", info.zero_pivots,
                   info.zero_pivots == 1 ? "" : "s");
   std::snprintf(line, sizeof line,
-                "step %4d  t %.5g  load %.4f  dt %.3g  newton %2d  |R| %.3e%s%s%s  elapsed %.1fs",
+                "step %4d  t %.5g  load %.4f  dt %.3g  newton %2d  reuse %2d  |R| %.3e%s%s%s  "
+                "elapsed %.1fs",
                 info.step, info.time, info.load_factor, info.dt, info.newton_iterations,
-                info.residual_norm, stability, wrinkled ? "  wrinkled" : "",
+                info.reused_solves, info.residual_norm, stability, wrinkled ? "  wrinkled" : "",
                 info.cutbacks ? "  (after cut-back)" : "", elapsed);
   return line;
 }
@@ -261,11 +262,12 @@ void solve_and_write(PreparedRun run) {
   const PhaseTimes phases = stepper.times();
   char line[256];
   std::snprintf(line, sizeof line,
-                "%s: %d steps, %d Newton iterations, %d cut-backs, %.2fs (assembly %.2fs, "
-                "linear solve %.2fs, output %.2fs), peak memory %.0f MiB",
+                "%s: %d steps, %d Newton iterations (+%d solves with a reused factorisation), %d "
+                "cut-backs, %.2fs (assembly %.2fs, linear solve %.2fs, output %.2fs), peak memory "
+                "%.0f MiB",
                 result.completed ? "done" : "stopped", result.steps, result.newton_iterations,
-                result.cutbacks, seconds_since(run.start), phases.assembly, phases.linear_solve,
-                recorder.output_seconds(), memory);
+                result.reused_solves, result.cutbacks, seconds_since(run.start), phases.assembly,
+                phases.linear_solve, recorder.output_seconds(), memory);
   log.info(line);
   const StepInfo& last = recorder.last_step();
   if (result.interrupted) {

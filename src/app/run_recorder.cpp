@@ -225,6 +225,7 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
   summary["pressure_dofs"] = model_.dofs().n_free_pressure();
   summary["steps"] = result.steps;
   summary["newton_iterations"] = result.newton_iterations;
+  summary["reused_factor_solves"] = result.reused_solves;
   summary["cutbacks"] = result.cutbacks;
   summary["final_time"] = last_step_.time;
   const PhaseTimes phases = stepper_.times();

@@ -56,6 +56,10 @@ Schema<NewtonSettings> newton_schema() {
                        "PETSc SNES line search: bt backtracks on the residual norm, basic "
                        "takes full steps, l2 and cp minimise along the step (cp suits "
                        "slender bodies in bending, whose full step first raises the residual)");
+  s.boolean("reuse_factor", &NewtonSettings::reuse_factor,
+            "direct solver: before factorising, iterate with the last factorisation (the last "
+            "Newton tangent or the stability check's) while each iteration cuts the residual "
+            "tenfold; the convergence test is unchanged (docs/performance.md)");
   s.nested<LinearSolverSettings>("linear", &NewtonSettings::linear, linear_solver_schema())
       .null_is_absent();
   return s;

@@ -82,14 +82,35 @@ int LoadStepper::stability_checks() const { return inertia_ ? inertia_->calls() 
 
 std::string LoadStepper::solve_step(NewtonResult& newton, SteppingResult& result) {
   int augmentations = 0;
+  attempt_reused_ = 0;
+  // Inexact multiplier updates: when the last step needed multiplier updates, this one will
+  // too, and solving to rtol only to move the multipliers again is wasted; its passes go to
+  // sqrt(rtol), and the pass that needs no update more is refined to rtol (docs/theory/contact.md,
+  // "Multiplier updates").
+  const double loose_rtol = last_step_updated_ ? std::sqrt(settings_.newton.rtol) : 0.0;
+  const auto count = [&](const NewtonResult& n) {
+    result.newton_iterations += n.iterations;
+    result.reused_solves += n.reused_solves;
+    attempt_reused_ += n.reused_solves;
+  };
   try {
     // Newton, then (augmented Lagrangian terms) multiplier updates and re-solves until every
     // constraint meets its tolerance.
     while (true) {
-      newton = newton_.solve();
-      result.newton_iterations += newton.iterations;
+      newton = newton_.solve(loose_rtol);
+      count(newton);
       if (!newton.converged) return describe_failure(newton);
-      if (!model_.update_multipliers()) return {};
+      bool again = model_.update_multipliers();
+      if (!again && loose_rtol > 0.0) {
+        newton = newton_.refine();
+        count(newton);
+        if (!newton.converged) return describe_failure(newton);
+        again = model_.update_multipliers();
+      }
+      if (!again) {
+        last_step_updated_ = augmentations > 0;
+        return {};
+      }
       if (interrupt_ && interrupt_()) return "interrupted";  // run() asks again and stops
       if (++augmentations > settings_.max_augmentations)
         return "constraints not met after " + std::to_string(settings_.max_augmentations) +
@@ -128,6 +149,8 @@ void LoadStepper::check_stability(StepInfo& info, SteppingResult& result,
   };
   Inertia inertia;
   if (!inertia_or_log(inertia)) return;
+  // The tangent of the converged state, just factorised: the next solve starts from it.
+  newton_.offer_factor(inertia_->factor());
   // A rise above the previous step is a new instability; before the first check the baseline is
   // the stable count (the reference state is stable).
   const int baseline = current_.negative_pivots >= 0 ? current_.negative_pivots : expected;
@@ -193,11 +216,14 @@ void LoadStepper::check_stability(StepInfo& info, SteppingResult& result,
         }
         model_.save_converged();
         const bool checked = inertia_or_log(inertia);
+        if (checked) newton_.offer_factor(inertia_->factor());
         switched = true;
         info.branch_switched = true;
         info.perturbation_mm = a;
         info.newton_iterations += newton.iterations;
+        info.reused_solves += attempt_reused_;
         info.residual_norm = newton.residual_norm;
+        info.reference_norm = newton.reference_norm;
         info.residual_history = newton.residual_history;
         std::snprintf(line, sizeof line,
                       "step %d: switched branch along mode 1 (eigenvalue %s): amplitude %.4g mm, "
@@ -207,6 +233,7 @@ void LoadStepper::check_stability(StepInfo& info, SteppingResult& result,
                       newton.iterations, checked ? inertia.negative : -1);
         log("  " + std::string(line));
         if (!checked) {
+          newton_.allow_reuse(false);  // stability unknown
           current_.negative_pivots = -1;
           return;
         }
@@ -217,6 +244,7 @@ void LoadStepper::check_stability(StepInfo& info, SteppingResult& result,
   info.negative_pivots = inertia.negative;
   info.zero_pivots = inertia.zero;
   info.stable = inertia.negative == expected && inertia.zero == 0;
+  newton_.allow_reuse(info.stable);
   current_.negative_pivots = inertia.negative;
 }
 
@@ -313,7 +341,9 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
     info.dt = step;
     info.load_factor = t / end;
     info.newton_iterations = newton.iterations;
+    info.reused_solves = attempt_reused_;
     info.residual_norm = newton.residual_norm;
+    info.reference_norm = newton.reference_norm;
     info.residual_history = newton.residual_history;
     info.cutbacks = cutbacks_this_step;
     cutbacks_this_step = 0;

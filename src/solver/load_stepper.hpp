@@ -36,9 +36,15 @@ struct StepInfo {
   double dt = 0.0;
   double load_factor = 0.0;  ///< time / end_time
   int newton_iterations = 0;
+  /// Solves with a factorisation already at hand in the accepted attempt, over all its contact
+  /// passes (NewtonResult::reused_solves; no tangent, no factorisation)
+  int reused_solves = 0;
   double residual_norm = 0.0;
-  std::vector<double> residual_history;
-  int cutbacks = 0;  ///< failed attempts before this step converged
+  /// The ||R|| the last pass's relative test refers to: its first residual (before any reuse
+  /// iterations, and of the loose solve that a refinement continued)
+  double reference_norm = 0.0;
+  std::vector<double> residual_history;  ///< of the last Newton solve of the step
+  int cutbacks = 0;                      ///< failed attempts before this step converged
   // Stability (StabilityOptions::check; stability.md, S7):
   int negative_pivots = -1;          ///< of the accepted state's tangent; -1: not checked
   int zero_pivots = 0;               ///< null pivots (a critical point)
@@ -58,6 +64,7 @@ struct SteppingResult {
   bool completed = false;  ///< reached end_time
   int steps = 0;
   int newton_iterations = 0;  ///< total over converged and failed attempts
+  int reused_solves = 0;      ///< solves with a reused factorisation, same count
   int cutbacks = 0;
   std::string failure;       ///< why the run stopped early (empty when completed)
   bool interrupted = false;  ///< stopped because set_interrupt's test said so, not by a failure
@@ -126,6 +133,8 @@ class LoadStepper {
   StabilityOptions stability_;
   std::unique_ptr<InertiaCheck> inertia_;
   bool told_symmetric_part_ = false;
+  int attempt_reused_ = 0;          ///< reused solves of the current solve_step, all passes
+  bool last_step_updated_ = false;  ///< the last converged solve_step updated multipliers
   double eigenmode_seconds_ = 0.0;
 };
 

@@ -29,6 +29,11 @@ struct NewtonSettings {
   double atol = 1e-10;      ///< absolute residual tolerance [N], >= 0
   int max_iterations = 25;  ///< >= 1
   LineSearch line_search = LineSearch::bt;
+  /// Direct solver only: before factorising anew, iterate x -= F^-1 R(x) with the freshest
+  /// factorisation already at hand (the last Newton tangent, or the stability check's tangent of
+  /// the last converged state) while every such iteration cuts ||R|| at least tenfold; Newton
+  /// proper takes over from the last accepted iterate (newton_solver.hpp).
+  bool reuse_factor = true;
   LinearSolverSettings linear;
 };
 

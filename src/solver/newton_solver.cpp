@@ -1,5 +1,6 @@
 #include "solver/newton_solver.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "core/wall_clock.hpp"
@@ -8,6 +9,12 @@
 
 namespace plisse {
 namespace {
+
+/// A reuse iteration is kept when it cuts ||R|| at least this much (newton_solver.hpp): at this
+/// rate the factor's ten or so solves to rtol 1e-8 cost less than two factorisations.
+constexpr double kReuseContraction = 0.1;
+/// Reuse iterations per solve at most.
+constexpr int kReuseMaxIterations = 12;
 
 const char* line_search_type(LineSearch ls) {
   switch (ls) {
@@ -84,9 +91,18 @@ NewtonSolver::NewtonSolver(MixedModel& model, const NewtonSettings& settings) : 
                                          static_cast<PetscInt>(history_.size()), PETSC_TRUE));
   PLISSE_PETSC(SNESSetFromOptions(snes_));
   PLISSE_PETSC(SNESSetConvergenceTest(snes_, &NewtonSolver::converged, this, nullptr));
+  // The tolerances after the options database (-snes_rtol, -snes_atol), for the reuse iterations.
+  PetscReal atol = 0.0, rtol = 0.0;
+  PLISSE_PETSC(SNESGetTolerances(snes_, &atol, &rtol, nullptr, nullptr, nullptr));
+  atol_ = atol;
+  rtol_ = rtol;
+  reuse_enabled_ = settings.reuse_factor && settings.linear.type == LinearSolverType::direct;
+  PLISSE_PETSC(VecDuplicate(x_, &dx_));
 }
 
 NewtonSolver::~NewtonSolver() {
+  MatDestroy(&reuse_);
+  VecDestroy(&dx_);
   SNESDestroy(&snes_);
   MatDestroy(&K_);
   VecDestroy(&r_);
@@ -121,6 +137,11 @@ PetscErrorCode NewtonSolver::converged(SNES snes, PetscInt it, PetscReal xnorm, 
                                        void* context) {
   PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
   auto* self = static_cast<NewtonSolver*>(context);
+  // Relative to where solve() started, before any reuse iterations and before a refine(): the
+  // test of a plain solve, at this solve's tolerance.
+  if (it == 0 && self->reference_norm_ == 0.0) self->reference_norm_ = fnorm;
+  if (*reason == SNES_CONVERGED_ITERATING && fnorm <= self->pass_rtol_ * self->reference_norm_)
+    *reason = SNES_CONVERGED_FNORM_RELATIVE;
   if (*reason != SNES_CONVERGED_ITERATING || !self->interrupt_) return 0;
   try {
     self->interrupted_ = self->interrupt_();
@@ -137,6 +158,7 @@ PetscErrorCode NewtonSolver::form_jacobian(SNES, Vec x, Mat J, Mat, void* contex
   auto* self = static_cast<NewtonSolver*>(context);
   try {
     const auto t0 = WallClock::now();
+    ++self->jacobians_;
     self->model_.set_free(x);
     self->model_.assemble_tangent(J);
     self->times_.assembly += seconds_since(t0);
@@ -184,30 +206,137 @@ double NewtonSolver::factor_entries() const {
   return entries < 0 ? -1e6 * static_cast<double>(entries) : static_cast<double>(entries);
 }
 
-NewtonResult NewtonSolver::solve() {
+void NewtonSolver::offer_factor(Mat factor) { set_reuse(factor); }
+
+void NewtonSolver::set_reuse(Mat factor) {
+  if (factor == reuse_) return;
+  if (factor) PLISSE_PETSC(PetscObjectReference(reinterpret_cast<PetscObject>(factor)));
+  MatDestroy(&reuse_);
+  reuse_ = factor;
+}
+
+Mat NewtonSolver::own_factor() const {
+  KSP ksp = nullptr;
+  PC pc = nullptr;
+  PLISSE_PETSC(SNESGetKSP(snes_, &ksp));
+  PLISSE_PETSC(KSPGetPC(ksp, &pc));
+  PetscBool is_factor = PETSC_FALSE;
+  PLISSE_PETSC(PetscObjectTypeCompareAny(reinterpret_cast<PetscObject>(pc), &is_factor, PCLU,
+                                         PCCHOLESKY, ""));
+  Mat F = nullptr;
+  if (!is_factor || PCFactorGetMatrix(pc, &F) != 0 || F == nullptr) return nullptr;
+  MatFactorError error = MAT_FACTOR_NOERROR;
+  PLISSE_PETSC(MatFactorGetError(F, &error));
+  return error == MAT_FACTOR_NOERROR ? F : nullptr;
+}
+
+bool NewtonSolver::iterate_with_factor(NewtonResult& result) {
+  const auto residual = [&](Vec x, double& norm) {
+    const auto t0 = WallClock::now();
+    model_.set_free(x);
+    last_status_ = model_.assemble_residual(r_);
+    times_.assembly += seconds_since(t0);
+    PetscReal n = 0.0;
+    PLISSE_PETSC(VecNorm(r_, NORM_2, &n));
+    norm = n;
+    return last_status_.ok;
+  };
+  if (!reuse_) return false;
+  MatFactorError error = MAT_FACTOR_NOERROR;
+  PLISSE_PETSC(MatFactorGetError(reuse_, &error));  // its owner factorised it again and failed
+  if (error != MAT_FACTOR_NOERROR) return false;
+  double norm = 0.0;
+  if (!residual(x_, norm)) return false;  // SNES meets the inverted element and reports it
+  if (reference_norm_ == 0.0) reference_norm_ = norm;
+  const double target = std::max(atol_, pass_rtol_ * reference_norm_);
+  if (norm <= target) return false;  // SNES converges at once
+  result.residual_history.push_back(norm);
+  bool converged = false;
+  for (int k = 0; k < kReuseMaxIterations && !converged; ++k) {
+    PLISSE_PETSC(MatSolve(reuse_, r_, dx_));
+    ++result.reused_solves;
+    PLISSE_PETSC(VecAYPX(dx_, -1.0, x_));  // dx_ = x - F^-1 R(x), the trial iterate
+    double trial = 0.0;
+    // A trial that meets the tolerance is kept whatever its rate: near the round-off floor the
+    // rate is noise, and refusing there would make the outcome depend on the last bits.
+    if (!residual(dx_, trial) || !(trial <= std::max(target, kReuseContraction * norm))) break;
+    PLISSE_PETSC(VecCopy(dx_, x_));
+    norm = trial;
+    result.residual_history.push_back(norm);
+    converged = norm <= target;
+  }
+  // Back to the last kept iterate (after a refused trial the model holds the trial).
+  model_.set_free(x_);
+  if (converged) return true;
+  result.residual_history.pop_back();  // SNES's history starts with the same norm
+  return false;
+}
+
+NewtonResult NewtonSolver::solve(double rtol) {
+  pass_rtol_ = std::max(rtol, rtol_);
+  reference_norm_ = 0.0;  // the first residual of run()
+  return run();
+}
+
+NewtonResult NewtonSolver::refine() {
+  pass_rtol_ = rtol_;  // reference_norm_ stays the last solve's
+  return run();
+}
+
+NewtonResult NewtonSolver::run() {
   NewtonResult result;
   error_ = nullptr;
   interrupted_ = false;
+  jacobians_ = 0;
   model_.get_free(x_);
   // The tangent's sparsity grew (contact pairs): a new matrix, which the factorisation analyses
-  // anew.
-  if (model_.pattern_version() != pattern_version_) make_matrix();
+  // anew; a factor of the old pattern is not reused.
+  if (model_.pattern_version() != pattern_version_) {
+    make_matrix();
+    set_reuse(nullptr);
+  }
   const double assembly_before = times_.assembly;
   const auto t0 = WallClock::now();
-  const PetscErrorCode code = SNESSolve(snes_, nullptr, x_);
+  bool reuse_converged = false;
+  PetscErrorCode code = 0;
+  try {
+    reuse_converged = reuse_enabled_ && reuse_allowed_ && iterate_with_factor(result);
+    if (!reuse_converged) code = SNESSolve(snes_, nullptr, x_);
+  } catch (...) {
+    times_.linear_solve += seconds_since(t0) - (times_.assembly - assembly_before);
+    throw;
+  }
   const double elapsed = seconds_since(t0);
   times_.linear_solve += elapsed - (times_.assembly - assembly_before);
   if (error_) std::rethrow_exception(error_);
   PLISSE_PETSC(code);
   model_.set_free(x_);
+  if (reuse_converged) {
+    result.converged = last_status_.ok;
+    result.residual_norm = result.residual_history.back();
+    result.reason = "CONVERGED_FNORM_RELATIVE with a reused factorisation";
+    result.reference_norm = reference_norm_;
+    result.status = last_status_;
+    return result;
+  }
   SNESConvergedReason reason;
   PLISSE_PETSC(SNESGetConvergedReason(snes_, &reason));
   PetscInt its = 0, n_history = 0;
   PLISSE_PETSC(SNESGetIterationNumber(snes_, &its));
   PetscReal* h = nullptr;
   PLISSE_PETSC(SNESGetConvergenceHistory(snes_, &h, nullptr, &n_history));
-  result.residual_history.assign(h, h + n_history);
+  result.residual_history.insert(result.residual_history.end(), h, h + n_history);
   result.converged = reason > 0 && last_status_.ok;  // an interrupted solve has reason < 0
+  result.reference_norm = reference_norm_;
+  // The freshest factor is now SNES's own, when it factorised in a solve that converged; one made
+  // at the iterates of a failed solve is not reused.
+  if (reuse_enabled_ && jacobians_ > 0) {
+    const Mat own = own_factor();
+    if (result.converged)
+      set_reuse(own);
+    else if (reuse_ == own)
+      set_reuse(nullptr);
+  }
   result.iterations = static_cast<int>(its);
   result.residual_norm = result.residual_history.empty() ? 0.0 : result.residual_history.back();
   result.reason = interrupted_ ? "interrupted" : SNESConvergedReasons[reason];

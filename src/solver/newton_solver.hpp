@@ -2,6 +2,19 @@
 /// Newton-Raphson with line search on a MixedModel through PETSc's SNES, with a direct solver
 /// (MUMPS; Cholesky-type LDL^T for the symmetric tangent) by default. Every option can be
 /// overridden with PETSc's own options (-snes_*, -ksp_*, -pc_*, -mat_mumps_*).
+///
+/// Factor reuse (NewtonSettings::reuse_factor, direct solver). A factorisation costs several
+/// residual evaluations and triangular solves. Before SNES factorises anew, solve() iterates
+///
+///   x_{k+1} = x_k - F^-1 R(x_k)
+///
+/// with the freshest factor F at hand: Newton's own last one (from the previous step, or from
+/// the solve before a contact multiplier update, whose tangent barely differs), or one offered
+/// by the caller (the stability check's LDL^T of the last converged state). An iterate is kept
+/// only when ||R(x_{k+1})|| <= kReuseContraction ||R(x_k)|| and the assembly succeeded; at the
+/// first iterate that is not, SNES's Newton continues from x_k. The convergence test stays the
+/// one of a plain Newton solve: ||R|| <= max(atol, rtol ||R(x_0)||) with x_0 the state solve()
+/// started from, so the answer differs from a solve without reuse only within that tolerance.
 #include <petscsnes.h>
 
 #include <exception>
@@ -19,9 +32,12 @@ struct NewtonResult {
   int iterations = 0;
   double residual_norm = 0.0;
   std::vector<double> residual_history;  ///< ||R|| at the start and after each iteration
-  std::string reason;                    ///< PETSc's converged/diverged reason, in words
-  AssemblyStatus status;                 ///< of the last residual evaluation
-  bool interrupted = false;              ///< stopped because set_interrupt's test said so
+  int reused_solves = 0;  ///< solves with a factor already at hand, kept or not (not counted in
+                          ///< `iterations`: no tangent and no factorisation)
+  double reference_norm = 0.0;  ///< ||R(x_0)|| of the relative test (of the solve refined)
+  std::string reason;           ///< PETSc's converged/diverged reason, in words
+  AssemblyStatus status;        ///< of the last residual evaluation
+  bool interrupted = false;     ///< stopped because set_interrupt's test said so
 };
 
 /// Wall time spent per phase [s], accumulated over all solves.
@@ -49,9 +65,13 @@ class NewtonSolver {
   NewtonSolver(const NewtonSolver&) = delete;
   NewtonSolver& operator=(const NewtonSolver&) = delete;
 
-  /// Solves R(x) = 0 from the model's current state (constrained values already applied).
-  /// On return the model holds the last iterate, converged or not.
-  NewtonResult solve();
+  /// Solves R(x) = 0 from the model's current state (constrained values already applied), to
+  /// ||R|| <= max(atol, rtol ||R(x_0)||); `rtol` > settings' rtol loosens this solve (0: the
+  /// settings'). On return the model holds the last iterate, converged or not.
+  NewtonResult solve(double rtol = 0.0);
+  /// Continues the last solve, from the model's state, to the settings' rtol relative to that
+  /// solve's ||R(x_0)||: a loose solve made tight, as if it had been tight from the start.
+  NewtonResult refine();
   /// `stop` is asked after every Newton iteration, on every rank at once (it may be collective);
   /// when it says true, the solve ends unconverged with `interrupted` set (a signal arrived).
   /// Installed as SNES's convergence test around SNESConvergedDefault.
@@ -61,6 +81,17 @@ class NewtonSolver {
   /// Entries of the last MUMPS factorisation (INFOG(29)); -1 when the linear solver is not a
   /// MUMPS factorisation (e.g. changed by PETSc options) or nothing was factorised yet.
   double factor_entries() const;
+  /// A factorisation of a tangent near the next solve's start (a factored Mat of the same free
+  /// equations, e.g. InertiaCheck::factor), used by the next solve's reuse iterations until a
+  /// fresher one exists; null forgets it. Referenced, not copied: its owner may factorise it
+  /// again later, which is then what the next solve uses.
+  void offer_factor(Mat factor);
+  /// Suspends (false) or resumes factor reuse. The stepper suspends it at states its stability
+  /// check finds unstable: there the modified iteration multiplies the error along a direction
+  /// of negative stiffness by 1 - lambda/lambda_F > 1 (lambda_F, the factor's eigenvalue, of the
+  /// other sign or far smaller), and would push a perfect branch off by amplified round-off,
+  /// which Newton's exact tangent leaves alone.
+  void allow_reuse(bool allowed) { reuse_allowed_ = allowed; }
 
  private:
   static PetscErrorCode form_function(SNES snes, Vec x, Vec f, void* context);
@@ -69,6 +100,14 @@ class NewtonSolver {
                                   PetscReal fnorm, SNESConvergedReason* reason, void* context);
   /// (Re)makes K_ with the model's current sparsity and hands it to SNES.
   void make_matrix();
+  /// SNES's own factor of K_ when its preconditioner is a factorisation, else null.
+  Mat own_factor() const;
+  /// The reuse iterations from the model's state; return with the model at the last kept iterate
+  /// and reference_norm_ set. Counts into `result`; true when that iterate already converged.
+  bool iterate_with_factor(NewtonResult& result);
+  /// solve() and refine() with pass_rtol_ and reference_norm_ set (0: the first ||R||).
+  NewtonResult run();
+  void set_reuse(Mat factor);
 
   MixedModel& model_;
   SNES snes_ = nullptr;
@@ -81,6 +120,14 @@ class NewtonSolver {
   PhaseTimes times_;
   std::function<bool()> interrupt_;
   bool interrupted_ = false;  ///< the current solve was stopped by interrupt_
+  bool reuse_enabled_ = false;
+  bool reuse_allowed_ = true;
+  double rtol_ = 0.0, atol_ = 0.0;
+  Mat reuse_ = nullptr;          ///< the factor of the reuse iterations (referenced), or null
+  Vec dx_ = nullptr;             ///< scratch of the reuse iterations
+  double reference_norm_ = 0.0;  ///< ||R|| where the current solve started (convergence test)
+  double pass_rtol_ = 0.0;       ///< relative tolerance of the current solve
+  int jacobians_ = 0;            ///< tangent assemblies in the current solve
 };
 
 }  // namespace plisse

@@ -53,6 +53,13 @@ Mat InertiaCheck::symmetric_operator() {
   return S_;
 }
 
+Mat InertiaCheck::factor() const {
+  if (!symmetric_ || calls_ == 0) return nullptr;
+  Mat F = nullptr;
+  if (PCFactorGetMatrix(pc_, &F) != 0) return nullptr;
+  return F;
+}
+
 Inertia InertiaCheck::compute() {
   const auto t0 = std::chrono::steady_clock::now();
   // Pops the log stage on every way out.

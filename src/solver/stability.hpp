@@ -41,6 +41,10 @@ class InertiaCheck {
   /// the inertia of K, or of its symmetric part 0.5 (K + K^T) when the model's tangent is not
   /// symmetric (stability.md, S8). Throws plisse::Error on a failed assembly or factorisation.
   Inertia compute();
+  /// The LDL^T factor of the tangent from the last successful compute(), for NewtonSolver's
+  /// factor reuse (NewtonSolver::offer_factor); null when the tangent is unsymmetric (the factor
+  /// is then of its symmetric part, not of the tangent) or nothing was factorised.
+  Mat factor() const;
   /// True when compute() factorises 0.5 (K + K^T) because the tangent is unsymmetric.
   bool uses_symmetric_part() const { return !symmetric_; }
   /// Wall time spent in compute() [s] (assembly + factorisation) and the number of calls.

@@ -348,7 +348,12 @@ TEST(StabilityCheck, ClampedStripGainsOneNegativePivotAtTheEulerStrain) {
   int first = -1, second = -1;
   for (size_t k = 0; k < run.steps.size(); ++k) {
     const StepInfo& s = run.steps[k];
-    EXPECT_LT(run.deflection[k], 1e-10) << "step " << s.step << ": the perfect strip bent";
+    // Round-off, amplified in the step that crosses the critical strain by the reuse iterations
+    // (newton_solver.hpp): from the last stable state's factor they multiply the residual's
+    // component along the softening mode, and the converged residual (rtol 1e-8) leaves a
+    // deflection of r / lambda along a mode of nearly zero stiffness (measured 3.5e-10 mm at
+    // step 20, 5e-14 or less elsewhere). A bent strip deflects by tenths of a millimetre.
+    EXPECT_LT(run.deflection[k], 1e-9) << "step " << s.step << ": the perfect strip bent";
     EXPECT_EQ(s.zero_pivots, 0);
     EXPECT_GE(s.negative_pivots, stable);
     if (s.new_instability && first < 0)
