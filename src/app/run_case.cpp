@@ -20,6 +20,7 @@
 #include "solver/load_stepper.hpp"
 #include "solver/petsc_call.hpp"
 #include "solver/petsc_session.hpp"
+#include "solver/thread_counts.hpp"
 
 namespace plisse::app {
 namespace {
@@ -127,6 +128,7 @@ struct PreparedRun {
   double time_mesh;
   ModelParts parts;
   const InterruptGuard& interrupts;
+  std::string threads;  ///< describe(apply_thread_counts(...)), for the log
 };
 
 /// The log's opening lines: the case, the output directory, the sizes and (distributed) the
@@ -144,6 +146,7 @@ void log_header(RunLog& log, const PreparedRun& run, const fs::path& directory,
                 mesh.n_nodes(), mesh.n_tets(), to_string(model.element_family()).c_str(),
                 model.n_free(), model.dofs().n_free_pressure(), n_constrained);
   log.info(line);
+  log.info("threads: " + run.threads);
   for (const InputError& e : setup_warnings(c)) log.warn(e.what());
   for (const Load& load : c.loads) {
     if (load.type != LoadType::point_force) continue;
@@ -336,13 +339,14 @@ void run_case(const RunOptions& options) {
   PetscSession petsc({"-no_signal_handler", c.solver.petsc_options});
   for (const auto& o : options.petsc_options) PetscSession::insert_options(o);
   check_solver_options(c, options.petsc_options);
+  const ThreadCounts threads = apply_thread_counts(PETSC_COMM_WORLD);
   InterruptGuard interrupts;
   check_same_mesh_on_every_rank(mesh);
   // Input and solver errors from here on arise on every rank alike; anything else (a failed write
   // on one rank) would leave the others waiting in a collective call, so it ends the whole job.
   try {
     solve_and_write({options, c, t_start, out_dir, fingerprint, checkpoint, mesh, time_mesh,
-                     std::move(parts), interrupts});
+                     std::move(parts), interrupts, describe(threads)});
   } catch (const InputError&) {
     throw;
   } catch (const SolverError&) {

@@ -83,6 +83,7 @@ int LoadStepper::stability_checks() const { return inertia_ ? inertia_->calls() 
 std::string LoadStepper::solve_step(NewtonResult& newton, SteppingResult& result) {
   int augmentations = 0;
   attempt_reused_ = 0;
+  attempt_newton_ = 0;
   // Inexact multiplier updates: when the last step needed multiplier updates, this one will
   // too, and solving to rtol only to move the multipliers again is wasted; its passes go to
   // sqrt(rtol), and the pass that needs no update more is refined to rtol (docs/theory/contact.md,
@@ -90,6 +91,7 @@ std::string LoadStepper::solve_step(NewtonResult& newton, SteppingResult& result
   const double loose_rtol = last_step_updated_ ? std::sqrt(settings_.newton.rtol) : 0.0;
   const auto count = [&](const NewtonResult& n) {
     result.newton_iterations += n.iterations;
+    attempt_newton_ += n.iterations;
     result.reused_solves += n.reused_solves;
     attempt_reused_ += n.reused_solves;
   };
@@ -220,7 +222,7 @@ void LoadStepper::check_stability(StepInfo& info, SteppingResult& result,
         switched = true;
         info.branch_switched = true;
         info.perturbation_mm = a;
-        info.newton_iterations += newton.iterations;
+        info.newton_iterations += attempt_newton_;
         info.reused_solves += attempt_reused_;
         info.residual_norm = newton.residual_norm;
         info.reference_norm = newton.reference_norm;
@@ -340,7 +342,7 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
     info.time = t;
     info.dt = step;
     info.load_factor = t / end;
-    info.newton_iterations = newton.iterations;
+    info.newton_iterations = attempt_newton_;
     info.reused_solves = attempt_reused_;
     info.residual_norm = newton.residual_norm;
     info.reference_norm = newton.reference_norm;

@@ -35,6 +35,8 @@ struct StepInfo {
   double time = 0.0;
   double dt = 0.0;
   double load_factor = 0.0;  ///< time / end_time
+  /// Newton iterations (tangents and factorisations) of the accepted attempt, over all its contact
+  /// passes (failed attempts before it are in SteppingResult only)
   int newton_iterations = 0;
   /// Solves with a factorisation already at hand in the accepted attempt, over all its contact
   /// passes (NewtonResult::reused_solves; no tangent, no factorisation)
@@ -134,6 +136,7 @@ class LoadStepper {
   std::unique_ptr<InertiaCheck> inertia_;
   bool told_symmetric_part_ = false;
   int attempt_reused_ = 0;          ///< reused solves of the current solve_step, all passes
+  int attempt_newton_ = 0;          ///< Newton iterations of the current solve_step, all passes
   bool last_step_updated_ = false;  ///< the last converged solve_step updated multipliers
   double eigenmode_seconds_ = 0.0;
 };

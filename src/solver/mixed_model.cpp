@@ -13,6 +13,7 @@
 #include "solver/petsc_call.hpp"
 #include "solver/tangent_layout.hpp"
 #include "solver/taylor_hood_element.hpp"
+#include "solver/thread_counts.hpp"
 
 namespace plisse {
 namespace {
@@ -33,12 +34,6 @@ int count_global_unknowns(const std::vector<std::unique_ptr<ModelTerm>>& terms) 
   for (const auto& term : terms) n += term->n_global_unknowns();
   return n;
 }
-
-/// The default thread count: OpenMP's count as the process started when OMP_NUM_THREADS asks for
-/// one, else 1 (threads pay only on cores nobody else uses; see docs/performance.md). Read during
-/// static initialisation: Gmsh's initialisation later sets OpenMP's count to its own
-/// General.NumThreads (1 by default), which would override OMP_NUM_THREADS.
-const int kOpenMPThreadsAtStart = std::getenv("OMP_NUM_THREADS") ? omp_get_max_threads() : 1;
 
 /// Tangent entries by full-state index into any PETSc matrix, through MatSetValues.
 class EquationSink : public TangentSink {
@@ -117,7 +112,7 @@ std::vector<double> MixedModel::full_from_free(Vec x) const {
 }
 
 int MixedModel::assembly_threads() const {
-  return threads_ > 0 ? threads_ : std::max(1, kOpenMPThreadsAtStart);
+  return threads_ > 0 ? threads_ : default_assembly_threads();
 }
 
 void MixedModel::set_time(double t) {

@@ -133,8 +133,9 @@ class MixedModel {
   /// accepted step): a matrix made by create_matrix before no longer fits; make a new one.
   int pattern_version() const { return pattern_version_; }
 
-  /// Threads of the element loops; 0 (the default) takes OMP_NUM_THREADS when it is set, else 1
-  /// (read at process start: Gmsh resets OpenMP's own count to 1 later). Results do not depend
+  /// Threads of the element loops; 0 (the default) takes default_assembly_threads()
+  /// (solver/thread_counts.hpp: OMP_NUM_THREADS when it is set, else the CPUs per rank once
+  /// apply_thread_counts has run, else 1). Results do not depend
   /// on it: elements are evaluated in parallel, a chunk at a time, and their contributions added
   /// in element order, bit for bit as a serial loop does (solver/element_assembly.hpp).
   void set_assembly_threads(int n) { threads_ = n; }
