@@ -16,6 +16,21 @@ constexpr double kReuseContraction = 0.1;
 /// Reuse iterations per solve at most.
 constexpr int kReuseMaxIterations = 12;
 
+/// The factored matrix of the SNES's preconditioner when it is a factorisation (LU or
+/// Cholesky) that has been set up, else null.
+Mat factor_of(SNES snes) {
+  KSP ksp = nullptr;
+  PC pc = nullptr;
+  PLISSE_PETSC(SNESGetKSP(snes, &ksp));
+  PLISSE_PETSC(KSPGetPC(ksp, &pc));
+  PetscBool is_factor = PETSC_FALSE;
+  PLISSE_PETSC(PetscObjectTypeCompareAny(reinterpret_cast<PetscObject>(pc), &is_factor, PCLU,
+                                         PCCHOLESKY, ""));
+  Mat F = nullptr;
+  if (!is_factor || PCFactorGetMatrix(pc, &F) != 0) return nullptr;
+  return F;
+}
+
 const char* line_search_type(LineSearch ls) {
   switch (ls) {
     case LineSearch::bt:
@@ -187,19 +202,11 @@ PhaseTimes NewtonSolver::times() const {
 }
 
 double NewtonSolver::factor_entries() const {
-  KSP ksp = nullptr;
-  PC pc = nullptr;
-  PLISSE_PETSC(SNESGetKSP(snes_, &ksp));
-  PLISSE_PETSC(KSPGetPC(ksp, &pc));
-  PetscBool is_factor = PETSC_FALSE;
-  PLISSE_PETSC(PetscObjectTypeCompareAny(reinterpret_cast<PetscObject>(pc), &is_factor, PCLU,
-                                         PCCHOLESKY, ""));
-  if (!is_factor) return -1.0;
+  const Mat F = factor_of(snes_);
+  if (F == nullptr) return -1.0;
   MatSolverType type = nullptr;
-  PLISSE_PETSC(PCFactorGetMatSolverType(pc, &type));
+  PLISSE_PETSC(MatFactorGetSolverType(F, &type));
   if (type == nullptr || std::string(type) != MATSOLVERMUMPS) return -1.0;
-  Mat F = nullptr;
-  if (PCFactorGetMatrix(pc, &F) != 0 || F == nullptr) return -1.0;
   PetscInt entries = 0;
   if (MatMumpsGetInfog(F, 29, &entries) != 0) return -1.0;
   // INFOG(29) counts entries; a negative value is the count in millions (MUMPS user guide).
@@ -216,15 +223,8 @@ void NewtonSolver::set_reuse(Mat factor) {
 }
 
 Mat NewtonSolver::own_factor() const {
-  KSP ksp = nullptr;
-  PC pc = nullptr;
-  PLISSE_PETSC(SNESGetKSP(snes_, &ksp));
-  PLISSE_PETSC(KSPGetPC(ksp, &pc));
-  PetscBool is_factor = PETSC_FALSE;
-  PLISSE_PETSC(PetscObjectTypeCompareAny(reinterpret_cast<PetscObject>(pc), &is_factor, PCLU,
-                                         PCCHOLESKY, ""));
-  Mat F = nullptr;
-  if (!is_factor || PCFactorGetMatrix(pc, &F) != 0 || F == nullptr) return nullptr;
+  const Mat F = factor_of(snes_);
+  if (F == nullptr) return nullptr;
   MatFactorError error = MAT_FACTOR_NOERROR;
   PLISSE_PETSC(MatFactorGetError(F, &error));
   return error == MAT_FACTOR_NOERROR ? F : nullptr;
