@@ -87,7 +87,7 @@ std::string LoadStepper::solve_step(NewtonResult& newton, SteppingResult& result
   // Inexact multiplier updates: when the last step needed multiplier updates, this one will
   // too, and solving to rtol only to move the multipliers again is wasted; its passes go to
   // sqrt(rtol), and the pass that needs no update more is refined to rtol (docs/theory/contact.md,
-  // "Multiplier updates").
+  // "Inexact passes").
   const double loose_rtol = last_step_updated_ ? std::sqrt(settings_.newton.rtol) : 0.0;
   const auto count = [&](const NewtonResult& n) {
     result.newton_iterations += n.iterations;

@@ -213,9 +213,7 @@ double NewtonSolver::factor_entries() const {
   return entries < 0 ? -1e6 * static_cast<double>(entries) : static_cast<double>(entries);
 }
 
-void NewtonSolver::offer_factor(Mat factor) { set_reuse(factor); }
-
-void NewtonSolver::set_reuse(Mat factor) {
+void NewtonSolver::offer_factor(Mat factor) {
   if (factor == reuse_) return;
   if (factor) PLISSE_PETSC(PetscObjectReference(reinterpret_cast<PetscObject>(factor)));
   MatDestroy(&reuse_);
@@ -293,7 +291,7 @@ NewtonResult NewtonSolver::run() {
   // anew; a factor of the old pattern is not reused.
   if (model_.pattern_version() != pattern_version_) {
     make_matrix();
-    set_reuse(nullptr);
+    offer_factor(nullptr);
   }
   const double assembly_before = times_.assembly;
   const auto t0 = WallClock::now();
@@ -333,9 +331,9 @@ NewtonResult NewtonSolver::run() {
   if (reuse_enabled_ && jacobians_ > 0) {
     const Mat own = own_factor();
     if (result.converged)
-      set_reuse(own);
+      offer_factor(own);
     else if (reuse_ == own)
-      set_reuse(nullptr);
+      offer_factor(nullptr);
   }
   result.iterations = static_cast<int>(its);
   result.residual_norm = result.residual_history.empty() ? 0.0 : result.residual_history.back();

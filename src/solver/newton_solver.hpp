@@ -107,7 +107,6 @@ class NewtonSolver {
   bool iterate_with_factor(NewtonResult& result);
   /// solve() and refine() with pass_rtol_ and reference_norm_ set (0: the first ||R||).
   NewtonResult run();
-  void set_reuse(Mat factor);
 
   MixedModel& model_;
   SNES snes_ = nullptr;
