@@ -80,7 +80,7 @@ def sweep(directory, args):
             if os.path.isfile(os.path.join(run, "summary.json")) and args.reuse:
                 print(f"{run}: kept", flush=True)
                 continue
-            command = [plisse, "run", CASE, "-o", run]
+            command = [plisse, "run", CASE, "-o", run, "--overwrite"]
             for s in point_settings(slenderness, ratio, args) + (args.set or []):
                 command += ["--set", s]
             print(" ".join(command), flush=True)

@@ -148,7 +148,7 @@ def sweep(directory, args):
         centre = pole + 0.05 + 1.0  # 0.05 mm above the pole; the indenter's radius is 1 mm
         run = os.path.join(directory, f"tau-{tau:g}")
         r, t = args.radius, args.thickness
-        command = [plisse, "run", CASE, "-o", run, "--set", f"loads[0].value={p:.6e}",
+        command = [plisse, "run", CASE, "-o", run, "--overwrite", "--set", f"loads[0].value={p:.6e}",
                    "--set", f"dies[0].point=[0,{centre:.6f},0]",
                    "--set", f"material.c1={args.c1:g}",
                    "--set", f"mesh.inner_radius={r - 0.5 * t:g}", "--set", f"mesh.thickness={t:g}",

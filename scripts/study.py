@@ -89,7 +89,8 @@ def run_one(study, value, run_dir, reuse, extra=(), report_only=False):
         return {"status": "reused", "seconds": None}
     if report_only:
         return {"status": "not run", "seconds": None, "message": "not run"}
-    cmd = [os.path.join(ROOT, "build", "bin", "plisse"), "run", study["case"], "-o", run_dir]
+    cmd = [os.path.join(ROOT, "build", "bin", "plisse"), "run", study["case"], "-o", run_dir,
+           "--overwrite"]
     for o in study["set"] + [f"{study['vary']['key']}={yaml_value(value)}"] + list(extra):
         cmd += ["--set", o]
     print("scripts/study: " + " ".join(cmd), flush=True)

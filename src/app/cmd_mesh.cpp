@@ -2,6 +2,7 @@
 /// "Interface contract"). One subcommand per kind of `mesh_kinds()`; its options are that kind's
 /// declared options with dashes (inner_radius -> --inner-radius), so names, units, ranges and
 /// defaults come from the one registry in mesh/generate.cpp.
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -10,6 +11,7 @@
 #include "app/commands.hpp"
 #include "core/error.hpp"
 #include "element/element_family.hpp"
+#include "io/atomic_file.hpp"
 #include "mesh/generate.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "mesh/quality.hpp"
@@ -73,7 +75,24 @@ void run(const MeshKind& kind, MeshCommand& cmd) {
            "internal error: the generated mesh fails check_mesh: " << report.errors.front());
 
   const double version = cmd.format == 2 ? 2.2 : 4.1;
-  write_gmsh(mesh, cmd.output, version, cmd.binary);
+  // Written beside the target and renamed over it: an interrupted write leaves the earlier file
+  // whole, and the next write of the same name removes what a killed one left.
+  if (cmd.output.size() < 4 || cmd.output.compare(cmd.output.size() - 4, 4, ".msh") != 0)
+    throw option_error("-o",
+                       "the mesh file name must end in .msh (Gmsh picks the format from "
+                       "the extension; got '" +
+                           cmd.output + "')");
+  const std::filesystem::path target(cmd.output);
+  const std::filesystem::path folder =
+      target.parent_path().empty() ? std::filesystem::path(".") : target.parent_path();
+  remove_stale_temporaries(folder, target.filename().string());
+  AtomicPath file(target);
+  try {
+    write_gmsh(mesh, file.temporary().string(), version, cmd.binary);
+  } catch (const InputError& e) {
+    throw InputError({cmd.output, 0, 0, "-o"}, e.rule());
+  }
+  file.commit();
 
   std::ostringstream line;
   line << "wrote " << cmd.output << " (Gmsh " << version << (cmd.binary ? " binary" : " ASCII")

@@ -1,5 +1,7 @@
+#include <sched.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -23,18 +25,35 @@ int launcher_size() {
   return 0;
 }
 
+/// The CPUs this process may run on (its affinity mask), at least 1.
+int available_cpus() {
+  cpu_set_t mask;
+  CPU_ZERO(&mask);
+  if (::sched_getaffinity(0, sizeof mask, &mask) != 0) return 1;
+  return std::max(1, CPU_COUNT(&mask));
+}
+
 /// `-n N` outside an MPI job: starts the same command line under `mpiexec -n N` in place of this
-/// process. Inside a job, N must be the job's size.
-void launch_ranks(int ranks, const RunOptions& options) {
+/// process. Inside a job (mpirun, mpiexec or srun started this process) -n may be left out; when
+/// given, it must be the job's size. More ranks than CPUs only with --oversubscribe: the ranks
+/// would take turns on the cores and wait for each other at every collective call.
+void launch_ranks(int ranks, bool oversubscribe, const RunOptions& options) {
   const int size = launcher_size();
   if (size > 0) {
-    if (size != ranks)
+    if (ranks != 0 && size != ranks)
       throw InputError({"command line", 0, 0, "-n"},
                        "-n " + std::to_string(ranks) + " inside an MPI job of " +
                            std::to_string(size) + " ranks; give the same number or leave -n out");
     return;
   }
-  if (ranks == 1) return;
+  if (ranks <= 1) return;
+  if (const int cpus = available_cpus(); ranks > cpus && !oversubscribe)
+    throw InputError({"command line", 0, 0, "-n"},
+                     "-n " + std::to_string(ranks) + " is more ranks than the " +
+                         std::to_string(cpus) +
+                         " CPUs this process may use: the ranks would wait for each other's "
+                         "cores at every step; give at most " +
+                         std::to_string(cpus) + ", or add --oversubscribe to run them anyway");
   // A case the ranks would all refuse is refused here, once, without the launcher's banners.
   (void)parse_case_file(options.case_file, options.overrides);
   // -q: no launcher banner when the ranks exit with an error status (they report it themselves).
@@ -79,12 +98,18 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--resume", options->resume_directory,
                   "Continue an interrupted run from DIR/checkpoint.bin (same case and --set "
                   "values; DIR is also the output directory)");
+  cmd->add_flag("--overwrite", options->overwrite,
+                "Replace the earlier run in the output directory (its files are removed once the "
+                "case has passed every check); without it, such a directory is refused");
   cmd->add_option("-n,--ranks", options->ranks,
                   "Run on N MPI ranks (distributed; the same as mpiexec -n N plisse run ...). "
                   "Results do not depend on N beyond the solver tolerance")
       ->check(CLI::Range(1, 65536));
-  cmd->callback([options] {
-    launch_ranks(options->ranks, *options);
+  auto oversubscribe = std::make_shared<bool>(false);
+  cmd->add_flag("--oversubscribe", *oversubscribe,
+                "With -n: allow more ranks than the CPUs this process may use");
+  cmd->callback([options, oversubscribe] {
+    launch_ranks(options->ranks, *oversubscribe, *options);
     run_case(*options);
   });
 }

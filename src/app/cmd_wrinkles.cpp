@@ -2,7 +2,8 @@
 // the last converged state of a finished (or stopped) run (docs/architecture.md, "Interface
 // contract"). The run directory's summary.json names the case and its --set values; checkpoint.bin
 // holds the final state (written at the end of every run). The table replaces "wrinkles" in
-// summary.json and is printed.
+// summary.json, with the step measured and the --set values under "recomputed", and is printed.
+// The directory is locked meanwhile: a run writing into it at the same time is refused.
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -16,6 +17,7 @@
 #include "core/error.hpp"
 #include "io/checkpoint.hpp"
 #include "io/json_file.hpp"
+#include "io/run_directory.hpp"
 #include "solver/petsc_session.hpp"
 
 namespace plisse::app {
@@ -44,6 +46,8 @@ void recompute_wrinkles(const WrinklesOptions& options) {
   const fs::path summary_path = dir / "summary.json";
   if (!fs::exists(summary_path, ec))
     throw InputError(place, "holds no summary.json: not a finished plisse run");
+  // A run still writing here would replace summary.json under this command, or the reverse.
+  const DirectoryLock lock(dir, place);
   nlohmann::json summary;
   try {
     summary = read_json_file(summary_path);
@@ -91,6 +95,9 @@ void recompute_wrinkles(const WrinklesOptions& options) {
   const WrinkleMeter meter(c, mesh);
   const WrinkleMeter::Result result = meter.evaluate(*model, model->element_fields());
   summary["wrinkles"] = wrinkles_json(c, result);
+  // summary.json says the table is not the run's own, and what changed.
+  summary["wrinkles"]["recomputed"] = {
+      {"step", checkpoint.steps}, {"time", checkpoint.time}, {"overrides", options.overrides}};
   write_json_file(summary_path, summary);
 
   std::printf(
@@ -98,6 +105,13 @@ void recompute_wrinkles(const WrinklesOptions& options) {
       dir.string().c_str(), checkpoint.steps, checkpoint.time,
       result.rings.wrinkled ? "wrinkled" : "not wrinkled", result.rings.max_amplitude,
       result.rings.threshold);
+  if (summary.contains("completed") && summary["completed"] == false)
+    std::printf(
+        "  note: the run did not reach its end time; step %d is its last converged step%s\n",
+        checkpoint.steps,
+        summary.contains("failure") && summary["failure"].is_string()
+            ? (" (it stopped: " + summary["failure"].get<std::string>() + ")").c_str()
+            : "");
   std::printf("  %14s %7s %16s %16s %14s %7s  %s\n", "latitude [deg]", "count", "amplitude [mm]",
               "wavelength [mm]", "radius [mm]", "points", "decision (dominant m: A_m / E_m)");
   for (const RingMetrics& r : result.rings.rings) {

@@ -99,6 +99,28 @@ void check_same_mesh_on_every_rank(const Mesh& mesh) {
   std::abort();
 }
 
+/// `text` as rank 0 has it, on every rank (collective).
+std::string from_root(std::string text) {
+  if (PetscSession::size() == 1) return text;
+  unsigned long length = text.size();
+  PLISSE_PETSC(MPI_Bcast(&length, 1, MPI_UNSIGNED_LONG, 0, PETSC_COMM_WORLD));
+  text.resize(length);
+  PLISSE_PETSC(MPI_Bcast(text.data(), static_cast<int>(length), MPI_CHAR, 0, PETSC_COMM_WORLD));
+  return text;
+}
+
+/// Why a new run may not write into `directory` (empty: it may): the files of an earlier run.
+std::string earlier_run_refusal(const fs::path& directory) {
+  const std::vector<fs::path> files = run_files(directory);
+  if (files.empty()) return {};
+  std::string names;
+  for (std::size_t i = 0; i < std::min<std::size_t>(files.size(), 3); ++i)
+    names += (i > 0 ? ", " : "") + files[i].filename().string();
+  if (files.size() > 3) names += " and " + std::to_string(files.size() - 3) + " more";
+  return "holds an earlier run (" + names +
+         "); continue it with --resume, replace it with --overwrite, or choose another -o";
+}
+
 }  // namespace
 
 void check_solver_options(const Case& c, const std::vector<std::string>& command_line_options) {
@@ -215,14 +237,33 @@ void solve_and_write(PreparedRun run) {
   const StartTimes times{run.start, run.time_mesh, seconds_since(t0)};
 
   const RunDirectory dir(run.out_dir);
-  // What a run killed mid-write left behind (its files themselves are whole: atomic writes).
-  const int stale = root ? remove_stale_temporaries(dir.directory()) : 0;
-  RunLog log = root ? RunLog(dir.log_txt()) : RunLog({}, nullptr, nullptr);
-  if (root && checkpoint && fs::exists(dir.log_txt())) log.prepend(read_file(dir.log_txt()));
+  // The directory is this run's alone while it runs, and a new run neither mixes its files with
+  // an earlier run's nor replaces them unless asked to. Rank 0 decides for all.
+  const InputPlace place{dir.directory().string(), 0, 0, checkpoint ? "--resume" : "-o"};
+  std::optional<DirectoryLock> lock;
+  std::string refusal;
+  if (root) {
+    try {
+      lock.emplace(dir.directory(), place);
+      if (!checkpoint && !run.options.overwrite) refusal = earlier_run_refusal(dir.directory());
+    } catch (const InputError& e) {
+      refusal = e.rule();
+    }
+  }
+  refusal = from_root(refusal);
+  if (!refusal.empty()) throw InputError(place, refusal);
+  // --overwrite: the earlier run's files go; otherwise what a run killed mid-write left behind
+  // (its files themselves are whole: atomic writes and whole-line appends).
+  const int removed = !root                   ? 0
+                      : run.options.overwrite ? remove_run_files(dir.directory())
+                                              : remove_stale_temporaries(dir.directory());
+  RunLog log = root ? RunLog(dir.log_txt(), checkpoint ? LogStart::append : LogStart::replace)
+                    : RunLog({}, nullptr, nullptr);
   log_header(log, run, dir.directory(), *model, n_constrained);
-  if (stale > 0)
-    log.info("removed " + std::to_string(stale) +
-             " temporary file(s) an interrupted run left in the output directory");
+  if (removed > 0)
+    log.info("removed " + std::to_string(removed) +
+             (run.options.overwrite ? " file(s) of the earlier run (--overwrite)"
+                                    : " temporary file(s) an interrupted run left"));
   if (checkpoint) {
     model->restore({checkpoint->state, checkpoint->bubbles, checkpoint->term_states});
     stepper.resume({checkpoint->steps, checkpoint->time, checkpoint->dt, checkpoint->previous_dt,
@@ -302,6 +343,10 @@ void solve_and_write(PreparedRun run) {
 void run_case(const RunOptions& options) {
   const auto t_start = WallClock::now();
   const Case c = parse_case_file(options.case_file, options.overrides);
+  if (!options.resume_directory.empty() && options.overwrite)
+    throw InputError({"command line", 0, 0, "--overwrite"},
+                     "a resumed run continues the run in its directory; --overwrite would "
+                     "replace it: give one of them");
   if (!options.resume_directory.empty() && !options.output_directory.empty() &&
       fs::weakly_canonical(options.resume_directory) !=
           fs::weakly_canonical(options.output_directory))

@@ -13,7 +13,8 @@ struct RunOptions {
   std::vector<std::string> overrides;      ///< --set key.path=value
   std::vector<std::string> petsc_options;  ///< --petsc "-snes_monitor ..."
   std::string resume_directory;            ///< --resume DIR: continue from DIR/checkpoint.bin
-  int ranks = 1;                           ///< -n N: MPI ranks (run under mpiexec)
+  bool overwrite = false;                  ///< --overwrite: replace an earlier run in the directory
+  int ranks = 0;                           ///< -n N: MPI ranks (run under mpiexec); 0: not given
 };
 
 /// Checks the PETSc options of the case (solver.petsc_options) and of the command line (--petsc)

@@ -237,14 +237,14 @@ const char* WrinkleSpectrumWriter::header() {
 }
 
 WrinkleSpectrumWriter::WrinkleSpectrumWriter(fs::path path) : path_(std::move(path)) {
-  text_ = std::string(header()) + "\n";
-  write_file_atomically(path_, text_);
+  write_file_atomically(path_, std::string(header()) + "\n");
 }
 
 WrinkleSpectrumWriter WrinkleSpectrumWriter::reopen(fs::path path, int last_step) {
   std::error_code ec;
   if (!fs::exists(path, ec)) return WrinkleSpectrumWriter(std::move(path));
-  const std::string text = read_file(path);
+  // A run killed inside a step's write leaves its last line unterminated: it is dropped.
+  const std::string text(complete_lines(read_file(path)));
   const std::size_t first = text.find('\n');
   std::string head = text.substr(0, first);
   if (!head.empty() && head.back() == '\r') head.pop_back();
@@ -264,13 +264,12 @@ WrinkleSpectrumWriter WrinkleSpectrumWriter::reopen(fs::path path, int last_step
     const auto parsed = std::from_chars(line.data(), line.data() + line.size(), step);
     if (parsed.ec == std::errc() && step <= last_step) kept += line + "\n";
   }
-  writer.text_ = std::move(kept);
-  write_file_atomically(writer.path_, writer.text_);
+  write_file_atomically(writer.path_, kept);
   return writer;
 }
 
 void WrinkleSpectrumWriter::add_step(int step, double time, const WrinkleReport& report) {
-  std::string text = text_;
+  std::string text;
   for (const RingMetrics& ring : report.rings) {
     const char* decision = ring_decision_name(ring.decision);
     for (std::size_t i = 0; i < ring.spectrum.size(); ++i) {
@@ -289,8 +288,8 @@ void WrinkleSpectrumWriter::add_step(int step, double time, const WrinkleReport&
       text += '\n';
     }
   }
-  write_file_atomically(path_, text);
-  text_ = std::move(text);
+  if (!file_) file_.emplace(path_, false);
+  file_->append(text);
 }
 
 }  // namespace plisse::app

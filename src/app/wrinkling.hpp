@@ -12,6 +12,7 @@
 
 #include "analysis/tension_field.hpp"
 #include "analysis/wrinkle_rings.hpp"
+#include "io/append_file.hpp"
 #include "io/case.hpp"
 #include "mesh/mesh.hpp"
 #include "solver/load_stepper.hpp"
@@ -70,8 +71,8 @@ nlohmann::json wrinkles_json(const Case& c, const WrinkleMeter::Result& r);
 ///   step,time,latitude_deg,m,amplitude,envelope,in_band,decision
 /// (A_m and E_m in mm, wrinkles.md W10 and W15; in_band 1 for the counts of the wrinkle band,
 /// W17; decision the ring's, W16-W18), so a user sees how each ring's decision evolved. Numbers
-/// are written as the shortest text that reads back to the same double. The file is rewritten
-/// atomically after each step, like history.csv, so it is always complete.
+/// are written as the shortest text that reads back to the same double. Like history.csv, the
+/// file grows by one append per written step (io/append_file.hpp), so it holds whole lines.
 class WrinkleSpectrumWriter {
  public:
   static constexpr const char* kFileName = "wrinkle_spectrum.csv";
@@ -79,17 +80,18 @@ class WrinkleSpectrumWriter {
   /// Creates (or replaces) `path` with the header and no rows.
   explicit WrinkleSpectrumWriter(std::filesystem::path path);
   /// Continues the file of a resumed run: keeps the rows of steps <= `last_step` (the
-  /// checkpoint's) and rewrites it. A missing file (a run from before this file existed) is
-  /// started anew; a file with another header throws InputError (key --resume).
+  /// checkpoint's), without an unterminated last line, and rewrites it atomically. A missing file
+  /// (a run from before this file existed) is started anew; a file with another header throws
+  /// InputError (key --resume).
   static WrinkleSpectrumWriter reopen(std::filesystem::path path, int last_step);
-  /// Appends the rows of every ring of `report` at (step, time) and rewrites the file.
+  /// Appends the rows of every ring of `report` at (step, time) to the file, in one write.
   void add_step(int step, double time, const WrinkleReport& report);
   const std::filesystem::path& path() const { return path_; }
 
  private:
   WrinkleSpectrumWriter() = default;  // for reopen()
   std::filesystem::path path_;
-  std::string text_;
+  std::optional<AppendFile> file_;  ///< opened by the first add_step
 };
 
 /// Displacements of every node of the model's current state.

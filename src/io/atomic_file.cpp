@@ -25,7 +25,9 @@ std::string reason(int error_number) { return std::generic_category().message(er
 
 /// ".<name>.tmp.<pid>.<n>" beside the target: same directory, hence same file system, which
 /// rename(2) needs to be atomic. pid and a process-wide counter keep concurrent writers apart.
-std::filesystem::path temporary_name(const std::filesystem::path& target) {
+/// `extension` (".msh") is appended for writers that choose the format from the name.
+std::filesystem::path temporary_name(const std::filesystem::path& target,
+                                     const std::string& extension = {}) {
   static std::atomic<unsigned long> counter{0};
   // Appended piecewise: GCC 12 gives a false -Wrestrict on `"." + std::string` (GCC bug 105329).
   std::string name(1, '.');
@@ -34,6 +36,7 @@ std::filesystem::path temporary_name(const std::filesystem::path& target) {
   name += std::to_string(static_cast<long>(::getpid()));
   name += '.';
   name += std::to_string(counter.fetch_add(1));
+  name += extension;
   return target.parent_path() / name;
 }
 
@@ -132,22 +135,31 @@ void AtomicFile::discard() noexcept {
   temporary_.clear();
 }
 
-int remove_stale_temporaries(const std::filesystem::path& directory) {
+int remove_stale_temporaries(const std::filesystem::path& directory, std::string_view target_name) {
+  const auto digits = [](std::string_view text) {
+    return !text.empty() && text.size() < 12 &&
+           std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); });
+  };
   int removed = 0;
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
     const std::string name = entry.path().filename().string();
-    // ".<target>.tmp.<pid>.<n>": the pid is the number between the last two dots after ".tmp.".
-    const std::size_t tmp = name.rfind(".tmp.");
-    if (name.empty() || name[0] != '.' || tmp == std::string::npos || tmp == 0) continue;
-    const std::size_t dot = name.find('.', tmp + 5);
-    if (dot == std::string::npos) continue;
-    const std::string pid = name.substr(tmp + 5, dot - tmp - 5), n = name.substr(dot + 1);
-    const auto digits = [](const std::string& text) {
-      return !text.empty() && text.size() < 12 &&
-             std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); });
-    };
-    if (!digits(pid) || !digits(n)) continue;
+    // ".<target>.tmp.<pid>.<n>" or ".<target>.tmp.<pid>.<n>.<extension>" (AtomicPath): the first
+    // ".tmp." followed by two runs of digits.
+    std::size_t tmp = name.find(".tmp.", 1);
+    while (tmp != std::string::npos) {
+      const std::string_view rest = std::string_view(name).substr(tmp + 5);
+      const std::size_t dot = rest.find('.');
+      const std::size_t end = dot == std::string_view::npos ? rest.size() : rest.find('.', dot + 1);
+      if (dot != std::string_view::npos && digits(rest.substr(0, dot)) &&
+          digits(rest.substr(dot + 1, end - dot - 1)))
+        break;
+      tmp = name.find(".tmp.", tmp + 1);
+    }
+    if (name.empty() || name[0] != '.' || tmp == std::string::npos) continue;
+    if (!target_name.empty() && std::string_view(name).substr(1, tmp - 1) != target_name) continue;
+    const std::string_view rest = std::string_view(name).substr(tmp + 5);
+    const std::string pid(rest.substr(0, rest.find('.')));
     // kill(pid, 0) fails with ESRCH only when no such process exists.
     if (::kill(static_cast<pid_t>(std::stol(pid)), 0) == 0 || errno != ESRCH) continue;
     std::error_code remove_error;
@@ -174,6 +186,22 @@ std::string read_file(const std::filesystem::path& path) {
   }
   ::close(fd);
   return content;
+}
+
+AtomicPath::AtomicPath(std::filesystem::path target) : target_(std::move(target)) {
+  FE_CHECK(!target_.empty() && target_.has_filename(),
+           "cannot write '" << target_.string() << "': not a file name");
+  temporary_ = temporary_name(target_, target_.extension().string());
+}
+
+AtomicPath::~AtomicPath() {
+  if (!temporary_.empty()) ::unlink(temporary_.c_str());
+}
+
+void AtomicPath::commit() {
+  FE_CHECK(!temporary_.empty(), "cannot write '" << target_.string() << "': already committed");
+  if (::rename(temporary_.c_str(), target_.c_str()) != 0) fail("replace", target_, errno);
+  temporary_.clear();
 }
 
 void write_file_atomically(const std::filesystem::path& target, std::string_view content) {

@@ -20,12 +20,14 @@ namespace plisse {
 /// the target is then untouched.
 void write_file_atomically(const std::filesystem::path& target, std::string_view content);
 
-/// Removes from `directory` the temporary files of write_file_atomically and AtomicFile that a
-/// writer killed mid-write left behind (SIGKILL, power loss): the names `.<name>.tmp.<pid>.<n>`
-/// whose process <pid> no longer runs. Temporaries of live processes (another run writing into
-/// the same directory) are kept. Returns how many were removed; a file that cannot be removed is
-/// skipped.
-int remove_stale_temporaries(const std::filesystem::path& directory);
+/// Removes from `directory` the temporary files of write_file_atomically, AtomicFile and
+/// AtomicPath that a writer killed mid-write left behind (SIGKILL, power loss): the names
+/// `.<name>.tmp.<pid>.<n>` and `.<name>.tmp.<pid>.<n>.<extension>` whose process <pid> no longer
+/// runs. Temporaries of live processes (another run writing into the same directory) are kept.
+/// With `target_name`, only the temporaries of that file name. Returns how many were removed; a
+/// file that cannot be removed is skipped.
+int remove_stale_temporaries(const std::filesystem::path& directory,
+                             std::string_view target_name = {});
 
 /// The whole content of the file at `path`, for the readers of run-directory files (history,
 /// collection, JSON). A run directory is user input to `plisse wrinkles DIR` and restarts, so a
@@ -73,6 +75,33 @@ class AtomicFile {
   int fd_ = -1;
   std::string buffer_;  ///< pending bytes, written to fd_ when it passes kBufferBytes
   static constexpr std::size_t kBufferBytes = std::size_t{1} << 16;
+};
+
+/// Atomic replacement for writers that take a file name, not bytes (Gmsh's writer): they write
+/// temporary(), a name beside the target that ends in the target's extension (for writers that
+/// choose the format by extension: `.<name>.tmp.<pid>.<n>.msh`), and commit() renames it over the
+/// target. Destroying an AtomicPath without a successful commit removes the temporary file.
+///
+///   AtomicPath file("mesh.msh");
+///   write_gmsh(mesh, file.temporary().string());
+///   file.commit();
+class AtomicPath {
+ public:
+  explicit AtomicPath(std::filesystem::path target);
+  ~AtomicPath();
+  AtomicPath(const AtomicPath&) = delete;
+  AtomicPath& operator=(const AtomicPath&) = delete;
+
+  const std::filesystem::path& target() const { return target_; }
+  /// The file to write (empty once committed).
+  const std::filesystem::path& temporary() const { return temporary_; }
+  /// Renames temporary() over the target. Throws plisse::Error (path, strerror) when the
+  /// temporary file is missing or cannot be renamed; the target is then untouched.
+  void commit();
+
+ private:
+  std::filesystem::path target_;
+  std::filesystem::path temporary_;
 };
 
 }  // namespace plisse

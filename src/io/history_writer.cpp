@@ -67,12 +67,13 @@ HistoryWriter::HistoryWriter(std::filesystem::path path,
     FE_CHECK(seen.insert(name).second,
              "history '" << path_.string() << "': column '" << name << "' appears twice");
   }
-  format_all();
-  write_file_atomically(path_, text_);
+  rewrite();
 }
 
 HistoryWriter HistoryWriter::reopen(std::filesystem::path path) {
-  HistoryTable table = read_history(path);
+  // A run killed inside a row's write leaves that row unterminated: it is dropped.
+  const std::string text = read_file(path);
+  HistoryTable table = parse_history(complete_lines(text), path);
   const std::vector<std::string>& standard = standard_columns();
   const bool starts_with_standard =
       table.columns.size() >= standard.size() &&
@@ -84,7 +85,7 @@ HistoryWriter HistoryWriter::reopen(std::filesystem::path path) {
   HistoryWriter writer;
   writer.path_ = std::move(path);
   writer.table_ = std::move(table);
-  writer.format_all();
+  if (complete_lines(text).size() != text.size()) writer.rewrite();
   return writer;
 }
 
@@ -92,17 +93,16 @@ void HistoryWriter::add_row(std::span<const double> values) {
   FE_CHECK(values.size() == n_columns(), "history '" << path_.string() << "': row has "
                                                      << values.size() << " values for "
                                                      << n_columns() << " columns");
-  std::string text = text_;
+  std::string text;
   append_row(text, values);
-  write_file_atomically(path_, text);
-  text_ = std::move(text);
+  if (!file_) file_.emplace(path_, false);
+  file_->append(text);
   table_.rows.emplace_back(values.begin(), values.end());
 }
 
 void HistoryWriter::keep_first_rows(std::size_t n_rows) {
   if (n_rows < table_.rows.size()) table_.rows.resize(n_rows);
-  format_all();
-  write_file_atomically(path_, text_);
+  rewrite();
 }
 
 std::optional<std::size_t> HistoryWriter::column_index(std::string_view name) const {
@@ -111,23 +111,28 @@ std::optional<std::size_t> HistoryWriter::column_index(std::string_view name) co
   return std::nullopt;
 }
 
-void HistoryWriter::format_all() {
-  text_.clear();
+void HistoryWriter::rewrite() {
+  std::string text;
   for (std::size_t i = 0; i < table_.columns.size(); ++i) {
-    if (i > 0) text_ += ',';
-    text_ += table_.columns[i];
+    if (i > 0) text += ',';
+    text += table_.columns[i];
   }
-  text_ += '\n';
-  for (const std::vector<double>& row : table_.rows) append_row(text_, row);
+  text += '\n';
+  for (const std::vector<double>& row : table_.rows) append_row(text, row);
+  file_.reset();  // the rename below replaces the file it appended to
+  write_file_atomically(path_, text);
 }
 
 HistoryTable read_history(const std::filesystem::path& path) {
-  const std::string text = read_file(path);
+  return parse_history(read_file(path), path);
+}
+
+HistoryTable parse_history(std::string_view text, const std::filesystem::path& path) {
   HistoryTable table;
   int line_number = 0;
   for (std::size_t begin = 0; begin < text.size();) {
     const std::size_t newline = std::min(text.find('\n', begin), text.size());
-    std::string line = text.substr(begin, newline - begin);
+    std::string line(text.substr(begin, newline - begin));
     begin = newline + 1;
     ++line_number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -157,12 +162,12 @@ HistoryTable read_history(const std::filesystem::path& path) {
     std::vector<double>& row = table.rows.emplace_back(fields.size());
     std::size_t column = 1;  // 1-based character column of fields[i] in the line
     for (std::size_t i = 0; i < fields.size(); ++i) {
-      const std::string& text = fields[i];
-      const auto parsed = std::from_chars(text.data(), text.data() + text.size(), row[i]);
-      if (text.empty() || parsed.ec != std::errc() || parsed.ptr != text.data() + text.size())
+      const std::string& field = fields[i];
+      const auto parsed = std::from_chars(field.data(), field.data() + field.size(), row[i]);
+      if (field.empty() || parsed.ec != std::errc() || parsed.ptr != field.data() + field.size())
         throw InputError({path.string(), line_number, static_cast<int>(column), table.columns[i]},
-                         "'" + text + "' is not a number");
-      column += text.size() + 1;
+                         "'" + field + "' is not a number");
+      column += field.size() + 1;
     }
   }
   if (line_number == 0) throw InputError({path.string(), 0, 0, ""}, "empty history file");

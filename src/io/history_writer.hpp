@@ -7,8 +7,9 @@
 ///
 /// Numbers are written as the shortest text that reads back to the same double (std::to_chars),
 /// so a reader recovers every value bit for bit; integers print without a decimal point (12),
-/// flags as 0/1, non-finite values as nan, inf, -inf. The file is small and is rewritten
-/// atomically on every row, so it is always complete.
+/// flags as 0/1, non-finite values as nan, inf, -inf. The header is written atomically; each row is
+/// then appended in one write (io/append_file.hpp), so the file holds whole rows only, and a
+/// restart drops a row a killed run left unterminated.
 #include <cstddef>
 #include <filesystem>
 #include <initializer_list>
@@ -17,6 +18,8 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "io/append_file.hpp"
 
 namespace plisse {
 
@@ -36,29 +39,34 @@ struct HistoryTable {
 /// allowed). Throws plisse::InputError with the file, line, column number and column name of the
 /// first malformed entry.
 HistoryTable read_history(const std::filesystem::path& path);
+/// The same, from the file's text; `path` names it in errors.
+HistoryTable parse_history(std::string_view text, const std::filesystem::path& path);
 
 class HistoryWriter {
  public:
   /// `step,time,load_factor,newton_iterations,residual_norm`, in this order.
   static const std::vector<std::string>& standard_columns();
 
-  /// Creates (or replaces) `path` with the header standard_columns() + `extra_columns` and no
-  /// rows. Column names must be non-empty, unique and free of ',', '"' and line breaks
-  /// (plisse::Error otherwise). Throws plisse::Error naming the path if it cannot be written.
+  /// Creates (or replaces, atomically) `path` with the header standard_columns() +
+  /// `extra_columns` and no rows. Column names must be non-empty, unique and free of ',', '"' and
+  /// line breaks (plisse::Error otherwise). Throws plisse::Error naming the path if it cannot be
+  /// written.
   HistoryWriter(std::filesystem::path path, const std::vector<std::string>& extra_columns);
 
-  /// Continues an existing history (restart): reads its columns and rows with read_history().
-  /// Throws plisse::InputError if it is malformed or does not start with standard_columns().
+  /// Continues an existing history (restart): reads its columns and rows as read_history() does,
+  /// without an unterminated last line (a row the interrupted run was killed writing). Throws
+  /// plisse::InputError if it is malformed or does not start with standard_columns().
   static HistoryWriter reopen(std::filesystem::path path);
 
-  /// Appends one row and rewrites the file. values.size() must equal n_columns(), in the order
+  /// Appends one row to the file. values.size() must equal n_columns(), in the order
   /// of columns() (plisse::Error otherwise, and nothing is written).
   void add_row(std::span<const double> values);
   void add_row(std::initializer_list<double> values) {
     add_row(std::span<const double>(values.begin(), values.size()));
   }
 
-  /// Keeps only the first `n_rows` rows (a restart from an earlier step) and rewrites the file.
+  /// Keeps only the first `n_rows` rows (a restart from an earlier step) and rewrites the file
+  /// atomically.
   void keep_first_rows(std::size_t n_rows);
 
   std::size_t n_columns() const { return table_.columns.size(); }
@@ -70,12 +78,12 @@ class HistoryWriter {
 
  private:
   HistoryWriter() = default;  // for reopen()
-  /// Rebuilds text_ from table_ (header and all rows).
-  void format_all();
+  /// Writes table_ (header and all rows) to the file atomically.
+  void rewrite();
 
   std::filesystem::path path_;
   HistoryTable table_;
-  std::string text_;  ///< the file's content, kept so a new row only formats itself
+  std::optional<AppendFile> file_;  ///< opened at the first row after a rewrite
 };
 
 }  // namespace plisse

@@ -2,23 +2,35 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <ostream>
 #include <utility>
 
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
 
 namespace plisse {
+namespace {
 
-RunLog::RunLog(std::filesystem::path log_file, std::ostream* out, std::ostream* err)
+/// False when `path` is a non-empty file whose last byte is not '\n'.
+bool ends_in_newline(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in || in.tellg() <= 0) return true;
+  in.seekg(-1, std::ios::end);
+  return in.get() == '\n';
+}
+
+}  // namespace
+
+RunLog::RunLog(std::filesystem::path log_file, std::ostream* out, std::ostream* err, LogStart start)
     : log_file_(std::move(log_file)),
       out_(out),
       err_(err),
-      start_(std::chrono::steady_clock::now()) {}
+      start_(std::chrono::steady_clock::now()),
+      start_mode_(start) {}
 
-RunLog::RunLog(std::filesystem::path log_file)
-    : RunLog(std::move(log_file), &std::cout, &std::cerr) {}
+RunLog::RunLog(std::filesystem::path log_file, LogStart start)
+    : RunLog(std::move(log_file), &std::cout, &std::cerr, start) {}
 
 RunLog::~RunLog() {
   try {
@@ -54,18 +66,18 @@ void RunLog::add(std::string_view prefix, std::string_view message, std::ostream
   if (echo != nullptr) echo->flush();
 }
 
-void RunLog::prepend(std::string_view text) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  std::string joined(text);
-  if (!joined.empty() && joined.back() != '\n') joined += '\n';
-  text_ = joined + text_;
-}
-
 void RunLog::flush() {
   if (log_file_.empty()) return;
   // Writing under the lock keeps concurrent flushes in order: the newest text lands last.
   std::lock_guard lock(mutex_);
-  write_file_atomically(log_file_, text_);
+  if (!file_) {
+    // A run killed inside a write may have left the earlier log's last line unterminated.
+    const bool end_line = start_mode_ == LogStart::append && !ends_in_newline(log_file_);
+    file_.emplace(log_file_, start_mode_ == LogStart::replace);
+    if (end_line) file_->append("\n");
+  }
+  file_->append(std::string_view(text_).substr(written_));
+  written_ = text_.size();
 }
 
 std::vector<std::string> RunLog::lines() const {

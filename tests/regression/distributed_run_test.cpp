@@ -290,5 +290,33 @@ TEST(DistributedRun, BadCaseIsRefusedBeforeTheRanksStart) {
   EXPECT_EQ(r.output.find("mpiexec"), std::string::npos) << r.output;  // no launcher banner
 }
 
+TEST(DistributedRun, LaunchersStartTheRanksWithoutARankCount) {
+  // mpirun -n 2 plisse run CASE: the ranks take the job's size; -n after `run` is optional.
+  const fs::path dir = scratch_directory("distributed-launcher");
+  const std::string command =
+      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
+      "OMPI_MCA_rmaps_base_oversubscribe=1 mpiexec -q -n 2 " +
+      std::string(PLISSE_BINARY_DIR) + "/bin/plisse run '" +
+      example("cube-tension-neo-hookean.yaml") + "' -o '" + dir.string() + "' 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string output;
+  char buffer[4096];
+  while (const std::size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
+  const int status = pclose(pipe);
+  ASSERT_TRUE(WIFEXITED(status)) << output;
+  ASSERT_EQ(WEXITSTATUS(status), 0) << output;
+  EXPECT_EQ(read_json_file(dir / "summary.json")["ranks"].get<int>(), 2);
+}
+
+TEST(DistributedRun, MoreRanksThanCpusOnlyWhenAskedFor) {
+  const std::string command = "run -n 4096 '" + example("cube-tension-neo-hookean.yaml") +
+                              "' -o '" + scratch_directory("distributed-too-many").string() + "'";
+  const auto r = run_plisse_captured(command);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("-n 4096 is more ranks than the "), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("mpiexec"), std::string::npos) << r.output;  // refused before it starts
+}
+
 }  // namespace
 }  // namespace plisse

@@ -203,13 +203,24 @@ TEST(WrinkleTable, RunWritesItAndPlisseWrinklesReproducesIt) {
   // Another process rebuilds the (imperfect) mesh and the final state: the same table.
   r = run_plisse_captured("wrinkles '" + dir.string() + "'");
   ASSERT_EQ(r.status, 0) << r.output;
-  const nlohmann::json again = read_json_file(dir / "summary.json");
+  nlohmann::json again = read_json_file(dir / "summary.json");
+  // It says what it measured: the last step, with no --set values.
+  EXPECT_EQ(again["wrinkles"]["recomputed"],
+            (nlohmann::json{
+                {"step", h.rows.size()}, {"time", 1.0}, {"overrides", nlohmann::json::array()}}));
+  EXPECT_NE(r.output.find(", step " + std::to_string(h.rows.size()) + " at t = 1:"),
+            std::string::npos)
+      << r.output;
+  again["wrinkles"].erase("recomputed");
   EXPECT_EQ(again["wrinkles"], w) << again["wrinkles"].dump(1) << "\nvs\n" << w.dump(1);
 
   // Other rings on request; only output.wrinkles.* may change after the run.
   r = run_plisse_captured("wrinkles '" + dir.string() + "' --set output.wrinkles.rings_deg=[30]");
   ASSERT_EQ(r.status, 0) << r.output;
-  EXPECT_EQ(read_json_file(dir / "summary.json")["wrinkles"]["rings"].size(), 1u);
+  again = read_json_file(dir / "summary.json");
+  EXPECT_EQ(again["wrinkles"]["rings"].size(), 1u);
+  EXPECT_EQ(again["wrinkles"]["recomputed"]["overrides"],
+            nlohmann::json::array({"output.wrinkles.rings_deg=[30]"}));
   r = run_plisse_captured("wrinkles '" + dir.string() + "' --set mesh.layers=3");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("only output.wrinkles.* can change"), std::string::npos) << r.output;

@@ -1,13 +1,18 @@
 // End to end: the built `plisse mesh KIND` writes a readable mesh and prints a summary; bad options
 // exit with status 2 naming the option and the rule (docs/architecture.md, "Interface contract").
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <set>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "mesh/generate.hpp"
 #include "mesh/gmsh_io.hpp"
@@ -144,6 +149,47 @@ TEST(MeshCommand, BadOptionsExitTwoNamingOptionAndRule) {
   r = run_plisse("mesh sheet --format 3 -o " + path);
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("'--format'"), std::string::npos) << r.output;
+}
+
+TEST(MeshCommand, AKilledWriteLeavesTheEarlierFileWholeAndTheNextWriteCleansUp) {
+  const std::filesystem::path dir = test::scratch_dir("command_killed");
+  const std::filesystem::path path = dir / "shell.msh";
+  ASSERT_EQ(run_plisse("mesh cube --divisions 2 -o " + path.string()).status, 0);
+  const auto bytes = [](const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), {});
+  };
+  const std::string earlier = bytes(path);
+  const auto temporaries = [&] {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+      if (entry.path().filename().string().rfind(".shell.msh.tmp.", 0) == 0)
+        names.push_back(entry.path().filename().string());
+    return names;
+  };
+  // A large mesh, killed as soon as its temporary file appears: inside Gmsh's write.
+  const std::string exe = std::string(PLISSE_BINARY_DIR) + "/bin/plisse";
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (!freopen("/dev/null", "w", stdout)) _exit(126);
+    execl(exe.c_str(), exe.c_str(), "mesh", "spherical-shell", "--inner-radius", "10",
+          "--thickness", "1", "--layers", "3", "--element-size", "0.3", "--symmetry", "octant",
+          "-o", path.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (temporaries().empty() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the write ended before it could be killed";
+  EXPECT_EQ(bytes(path), earlier);  // the earlier file, byte for byte
+  ASSERT_EQ(temporaries().size(), 1u);
+  // The next write of that name removes what the killed one left.
+  ASSERT_EQ(run_plisse("mesh cube --divisions 3 -o " + path.string()).status, 0);
+  EXPECT_TRUE(temporaries().empty());
+  EXPECT_EQ(read_gmsh(path.string()).n_tets(), 6 * 27);
 }
 
 }  // namespace

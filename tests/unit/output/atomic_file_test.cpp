@@ -4,9 +4,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <fstream>
 #include <string>
 
 #include "core/error.hpp"
+#include "io/append_file.hpp"
 #include "output_test_support.hpp"
 
 namespace plisse {
@@ -118,6 +120,80 @@ TEST(AtomicFile, StaleTemporariesOfDeadWritersAreRemovedLiveOnesKept) {
   EXPECT_EQ(remove_stale_temporaries(dir.path()), 1);
   EXPECT_EQ(entries(dir.path()),
             (std::set<std::string>{live, ".x.tmp.12a.1", "step_0006.vtu", "a.tmp.1.2"}));
+}
+
+TEST(AtomicFile, TemporariesWithTheTargetsExtensionAndOfOneTargetOnly) {
+  const pid_t child = fork();
+  if (child == 0) _exit(0);
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  const ScratchDir dir;
+  const std::string pid = std::to_string(child);
+  const std::string mesh = ".shell.msh.tmp." + pid + ".0.msh",
+                    other = ".cube.msh.tmp." + pid + ".4.msh";
+  for (const std::string& name : {mesh, other}) write_file_atomically(dir / name, "partial");
+  // Only the temporaries of shell.msh: another file's are not this writer's to judge.
+  EXPECT_EQ(remove_stale_temporaries(dir.path(), "shell.msh"), 1);
+  EXPECT_EQ(entries(dir.path()), std::set<std::string>{other});
+  EXPECT_EQ(remove_stale_temporaries(dir.path()), 1);
+  EXPECT_TRUE(entries(dir.path()).empty());
+}
+
+TEST(AtomicPath, WriterByNameReplacesTheTargetOnCommitOnly) {
+  const ScratchDir dir;
+  write_file_atomically(dir / "m.msh", "old");
+  {
+    AtomicPath file(dir / "m.msh");
+    EXPECT_EQ(file.temporary().extension(), ".msh");  // writers that pick the format by name
+    EXPECT_EQ(file.temporary().parent_path(), dir.path());
+    std::ofstream(file.temporary()) << "new";
+    EXPECT_EQ(test::contents(dir / "m.msh"), "old");
+    file.commit();
+    EXPECT_TRUE(file.temporary().empty());
+  }
+  EXPECT_EQ(test::contents(dir / "m.msh"), "new");
+  {
+    AtomicPath abandoned(dir / "m.msh");
+    std::ofstream(abandoned.temporary()) << "half";
+  }  // a writer that failed: the temporary goes, the target stays
+  EXPECT_EQ(test::contents(dir / "m.msh"), "new");
+  EXPECT_EQ(entries(dir.path()), std::set<std::string>{"m.msh"});
+  AtomicPath never_written(dir / "m.msh");
+  EXPECT_THROW(never_written.commit(), Error);
+  EXPECT_EQ(test::contents(dir / "m.msh"), "new");
+}
+
+TEST(AppendFile, AppendsWholeTextsAndReplacesOnlyWhenAsked) {
+  const ScratchDir dir;
+  write_file_atomically(dir / "a.csv", "x\n1\n");
+  {
+    AppendFile keep(dir / "a.csv", false);
+    keep.append("2\n");
+    keep.append("");
+    keep.append("3\n");
+  }
+  EXPECT_EQ(test::contents(dir / "a.csv"), "x\n1\n2\n3\n");
+  AppendFile moved = AppendFile(dir / "a.csv", true);  // a new run: starts empty
+  moved.append("y\n");
+  EXPECT_EQ(test::contents(dir / "a.csv"), "y\n");
+  EXPECT_THROW(AppendFile(dir / "missing" / "a.csv", false), Error);
+  // A full disk: the write fails with ENOSPC and the file keeps its whole lines.
+  if (std::filesystem::exists("/dev/full")) {
+    AppendFile full("/dev/full", false);
+    try {
+      full.append("row\n");
+      ADD_FAILURE() << "a write to /dev/full succeeded";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("/dev/full"), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(AppendFile, CompleteLinesDropsAnUnterminatedRest) {
+  EXPECT_EQ(complete_lines("a\nb\nc"), "a\nb\n");
+  EXPECT_EQ(complete_lines("a\nb\n"), "a\nb\n");
+  EXPECT_EQ(complete_lines("abc"), "");
+  EXPECT_EQ(complete_lines(""), "");
 }
 
 }  // namespace

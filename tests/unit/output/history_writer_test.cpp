@@ -1,6 +1,7 @@
 #include "io/history_writer.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <bit>
 #include <cmath>
@@ -8,6 +9,7 @@
 #include <limits>
 
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "output_test_support.hpp"
 
 namespace plisse {
@@ -165,6 +167,39 @@ TEST(HistoryWriter, ColumnNamesTheWriterWouldRefuseAreInputErrors) {
   const HistoryTable table = read_history(path);  // one CR before the LF is a Windows line end
   EXPECT_EQ(table.columns.back(), "x");
   EXPECT_EQ(table.rows.at(0).back(), 6.0);
+}
+
+TEST(HistoryWriter, RowsAreAppendedToTheSameFile) {
+  const ScratchDir dir;
+  HistoryWriter writer(dir / "history.csv", {"pressure:gas"});
+  writer.add_row({1, 0.5, 0.5, 3, 1e-12, 0.1});
+  struct stat first {};
+  ASSERT_EQ(::stat((dir / "history.csv").c_str(), &first), 0);
+  writer.add_row({2, 1.0, 1.0, 4, 2e-12, 0.2});
+  struct stat second {};
+  ASSERT_EQ(::stat((dir / "history.csv").c_str(), &second), 0);
+  // Appended in place, not replaced by a rename: the inode of the file a reader opened stays.
+  EXPECT_EQ(first.st_ino, second.st_ino);
+  EXPECT_EQ(contents(dir / "history.csv"),
+            "step,time,load_factor,newton_iterations,residual_norm,pressure:gas\n"
+            "1,0.5,0.5,3,1e-12,0.1\n2,1,1,4,2e-12,0.2\n");
+}
+
+TEST(HistoryWriter, ReopenDropsARowAKilledRunLeftUnterminated) {
+  const ScratchDir dir;
+  write_file_atomically(dir / "history.csv",
+                        "step,time,load_factor,newton_iterations,residual_norm\n"
+                        "1,0.5,0.5,3,1e-12\n2,1,1,4,2e-1");
+  HistoryWriter writer = HistoryWriter::reopen(dir / "history.csv");
+  ASSERT_EQ(writer.rows().size(), 1u);
+  writer.add_row({2, 1.0, 1.0, 5, 3e-12});
+  EXPECT_EQ(contents(dir / "history.csv"),
+            "step,time,load_factor,newton_iterations,residual_norm\n"
+            "1,0.5,0.5,3,1e-12\n2,1,1,5,3e-12\n");
+  // read_history itself keeps its rule: a last line without its line break is still a row.
+  write_file_atomically(dir / "h2.csv",
+                        "step,time,load_factor,newton_iterations,residual_norm\n1,0,0,0,0");
+  EXPECT_EQ(read_history(dir / "h2.csv").rows.size(), 1u);
 }
 
 }  // namespace

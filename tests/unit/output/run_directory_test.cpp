@@ -1,6 +1,9 @@
 #include "io/run_directory.hpp"
 
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -54,6 +57,71 @@ TEST(RunDirectory, PathUnderARegularFileIsAnInputErrorOnOption) {
   }
   // The output path itself being a regular file is refused too.
   EXPECT_THROW(RunDirectory(scratch / "file"), InputError);
+}
+
+TEST(RunDirectory, RunFilesAreTheContractsNamesOnly) {
+  const ScratchDir scratch;
+  for (const char* name :
+       {"history.csv", "summary.json", "solution.pvd", "log.txt", "checkpoint.bin",
+        "wrinkle_spectrum.csv", "step_0001.vtu", "step_12345.vtu", "step_0002.pvtu",
+        "step_0002_p0.vtu", "step_0002_p13.vtu", "notes.txt", "step_1.vtk", "step_x.vtu",
+        "step_0002_p.vtu", "step_0003_p1.pvtu", "mesh.msh", "history.csv.bak"})
+    write_file_atomically(scratch / name, "x");
+  std::vector<std::string> names;
+  for (const auto& file : run_files(scratch.path())) names.push_back(file.filename().string());
+  EXPECT_EQ(names, (std::vector<std::string>{
+                       "checkpoint.bin", "history.csv", "log.txt", "solution.pvd", "step_0001.vtu",
+                       "step_0002.pvtu", "step_0002_p0.vtu", "step_0002_p13.vtu", "step_12345.vtu",
+                       "summary.json", "wrinkle_spectrum.csv"}));
+  EXPECT_EQ(remove_run_files(scratch.path()), 11);
+  EXPECT_EQ(entries(scratch.path()),
+            (std::set<std::string>{"notes.txt", "step_1.vtk", "step_x.vtu", "step_0002_p.vtu",
+                                   "step_0003_p1.pvtu", "mesh.msh", "history.csv.bak"}));
+}
+
+TEST(DirectoryLock, OneHolderAtATimeNamedInTheRefusalAndTheFileGoesWithIt) {
+  const ScratchDir scratch;
+  const InputPlace place{scratch.path().string(), 0, 0, "-o"};
+  {
+    const DirectoryLock lock(scratch.path(), place);
+    EXPECT_NE(test::contents(scratch / DirectoryLock::kFileName)
+                  .find("pid " + std::to_string(::getpid()) + " on "),
+              std::string::npos);
+    // flock locks belong to an open file: a second open in this process is a second holder.
+    try {
+      const DirectoryLock second(scratch.path(), place);
+      ADD_FAILURE() << "a second lock was granted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.place().key, "-o");
+      EXPECT_NE(e.rule().find("is in use by another plisse process (pid " +
+                              std::to_string(::getpid()) + " on "),
+                std::string::npos)
+          << e.rule();
+    }
+  }
+  EXPECT_TRUE(entries(scratch.path()).empty());
+  // A holder killed by SIGKILL: the kernel releases its lock; its file stays for the next one.
+  int ready[2];
+  ASSERT_EQ(::pipe(ready), 0);
+  const pid_t child = fork();
+  if (child == 0) {
+    const DirectoryLock lock(scratch.path(), place);
+    const char byte = 1;
+    if (::write(ready[1], &byte, 1) != 1) _exit(1);
+    ::pause();
+    _exit(0);
+  }
+  char byte = 0;
+  ASSERT_EQ(::read(ready[0], &byte, 1), 1);
+  EXPECT_THROW(DirectoryLock(scratch.path(), place), InputError);
+  ::kill(child, SIGKILL);
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  EXPECT_TRUE(std::filesystem::exists(scratch / DirectoryLock::kFileName));
+  { const DirectoryLock lock(scratch.path(), place); }
+  EXPECT_TRUE(entries(scratch.path()).empty());
+  ::close(ready[0]);
+  ::close(ready[1]);
 }
 
 }  // namespace

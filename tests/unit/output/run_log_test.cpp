@@ -1,7 +1,9 @@
 #include "io/run_log.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
+#include <fstream>
 #include <regex>
 #include <sstream>
 
@@ -72,6 +74,36 @@ TEST(RunLog, TerminalOnlyLogWritesNoFile) {
   log.flush();
   EXPECT_EQ(out.str(), "checked\n");
   EXPECT_TRUE(entries(dir.path()).empty());
+}
+
+TEST(RunLog, FlushesAppendToOneFileAndAResumedLogContinuesTheEarlierOne) {
+  const ScratchDir dir;
+  const auto path = dir / "log.txt";
+  {
+    RunLog log(path, nullptr, nullptr);
+    log.info("first run");
+    log.flush();
+  }
+  struct stat before {};
+  ASSERT_EQ(::stat(path.c_str(), &before), 0);
+  // A killed run may leave its last line unterminated; the resumed log starts on a new line.
+  { std::ofstream(path, std::ios::app) << "[   9.9s] half a li"; }
+  {
+    RunLog log(path, nullptr, nullptr, LogStart::append);
+    log.info("resumed");
+  }
+  struct stat after {};
+  ASSERT_EQ(::stat(path.c_str(), &after), 0);
+  EXPECT_EQ(before.st_ino, after.st_ino);
+  const std::string text = contents(path);
+  EXPECT_EQ(text.find("] first run\n"), 9u) << text;
+  EXPECT_NE(text.find("half a li\n["), std::string::npos) << text;
+  EXPECT_EQ(text.substr(text.size() - 8), "resumed\n") << text;
+  {
+    RunLog log(path, nullptr, nullptr);  // a new run: the earlier lines go
+    log.info("new");
+  }
+  EXPECT_EQ(contents(path).find("first run"), std::string::npos);
 }
 
 }  // namespace
