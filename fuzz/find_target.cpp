@@ -7,6 +7,7 @@ TargetFunction find_target(const std::string& name) {
   if (name == "case") return &parse_case;
   if (name == "gmsh") return &read_mesh;
   if (name == "history") return &read_history_file;
+  if (name == "checkpoint") return &read_checkpoint_file;
   return nullptr;
 }
 

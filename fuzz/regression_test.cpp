@@ -69,6 +69,10 @@ TEST(FuzzRegressions, CaseParserRejectsOrAcceptsEverySavedInput) {
 
 TEST(FuzzRegressions, GmshReaderRejectsOrAcceptsEverySavedInput) { EXPECT_GT(replay("gmsh"), 0u); }
 
+TEST(FuzzRegressions, CheckpointReaderRejectsOrAcceptsEverySavedInput) {
+  EXPECT_GT(replay("checkpoint"), 0u);
+}
+
 TEST(FuzzRegressions, HistoryReaderRejectsOrAcceptsEverySavedInput) {
   EXPECT_GT(replay("history"), 0u);
 }

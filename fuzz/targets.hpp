@@ -44,8 +44,12 @@ Outcome read_mesh(Bytes data);
 /// (NaN as NaN).
 Outcome read_history_file(Bytes data);
 
-/// A target by name: "case", "gmsh" or "history" (the folder names under fuzz/corpus/ and
-/// fuzz/regressions/). Returns nullptr for an unknown name.
+/// read_checkpoint on the bytes written to a temporary checkpoint.bin; an accepted checkpoint is
+/// written back with write_checkpoint and must read back bit for bit.
+Outcome read_checkpoint_file(Bytes data);
+
+/// A target by name: "case", "gmsh", "history" or "checkpoint" (the folder names under fuzz/corpus/
+/// and fuzz/regressions/). Returns nullptr for an unknown name.
 using TargetFunction = Outcome (*)(Bytes);
 TargetFunction find_target(const std::string& name);
 

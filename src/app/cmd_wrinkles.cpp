@@ -73,17 +73,19 @@ void recompute_wrinkles(const WrinklesOptions& options) {
   const Case c = parse_case_file(case_path, overrides);
 
   const Checkpoint checkpoint = read_checkpoint(dir / "checkpoint.bin");
-  if (checkpoint.case_fingerprint != case_fingerprint(case_path, run_overrides))
-    throw InputError({(dir / "checkpoint.bin").string(), 0, 0, "DIR"},
-                     "the case file " + case_path +
-                         " changed since this run: its state no longer "
-                         "matches the case");
   if (!c.output.wrinkles.enabled())
     throw InputError({case_path, 0, 0, "output.wrinkles.rings_deg"},
                      "no rings to measure: give their latitudes, e.g. --set "
                      "output.wrinkles.rings_deg=[0,30,60]");
 
   const Mesh mesh = load_perturbed_mesh(c);
+  // After the mesh file has passed its reader's checks (type, size): it is hashed whole.
+  if (const std::string changes =
+          fingerprint_changes(checkpoint.fingerprint,
+                              run_fingerprint(case_path, run_overrides, c.mesh.file.value_or("")));
+      !changes.empty())
+    throw InputError({(dir / "checkpoint.bin").string(), 0, 0, "DIR"},
+                     "the run's state no longer matches its case (" + case_path + "): " + changes);
   ModelParts parts = build_model_parts(c, mesh);
   PetscSession petsc({"-no_signal_handler"});
   const std::unique_ptr<MixedModel> model = make_model(mesh, std::move(parts));

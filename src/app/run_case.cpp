@@ -144,7 +144,7 @@ struct PreparedRun {
   const Case& c;
   WallClock::time_point start;
   fs::path out_dir;
-  std::uint64_t fingerprint;
+  const RunFingerprint& fingerprint;
   const std::optional<Checkpoint>& checkpoint;
   const Mesh& mesh;
   double time_mesh;
@@ -265,7 +265,13 @@ void solve_and_write(PreparedRun run) {
              (run.options.overwrite ? " file(s) of the earlier run (--overwrite)"
                                     : " temporary file(s) an interrupted run left"));
   if (checkpoint) {
-    model->restore({checkpoint->state, checkpoint->bubbles, checkpoint->term_states});
+    try {
+      model->restore({checkpoint->state, checkpoint->bubbles, checkpoint->term_states});
+    } catch (const InputError&) {
+      throw;
+    } catch (const Error& e) {
+      throw InputError({(dir.directory() / "checkpoint.bin").string(), 0, 0, "--resume"}, e.what());
+    }
     stepper.resume({checkpoint->steps, checkpoint->time, checkpoint->dt, checkpoint->previous_dt,
                     checkpoint->previous_state, checkpoint->negative_pivots});
   }
@@ -356,7 +362,6 @@ void run_case(const RunOptions& options) {
                            : options.output_directory.empty()
                                ? fs::path("runs") / fs::path(options.case_file).stem()
                                : fs::path(options.output_directory);
-  const std::uint64_t fingerprint = case_fingerprint(options.case_file, options.overrides);
   std::optional<Checkpoint> checkpoint;
   if (!options.resume_directory.empty()) {
     checkpoint = read_checkpoint(out_dir / "checkpoint.bin");
@@ -366,9 +371,6 @@ void run_case(const RunOptions& options) {
           "the checkpoint was written by a run with `element: " + to_string(checkpoint->element) +
               "`, this case has `element: " + to_string(c.element) +
               "`; a run cannot change its element family");
-    if (checkpoint->case_fingerprint != fingerprint)
-      throw InputError({(out_dir / "checkpoint.bin").string(), 0, 0, "--resume"},
-                       "the checkpoint was written for another case file or other --set values");
   }
 
   auto t0 = WallClock::now();
@@ -376,6 +378,17 @@ void run_case(const RunOptions& options) {
   if (const auto unsupported = unsupported_features(c, mesh); !unsupported.empty())
     throw unsupported.front();
   const double time_mesh = seconds_since(t0);
+  // After the mesh file has passed its reader's checks (type, size): it is hashed whole.
+  const RunFingerprint fingerprint =
+      run_fingerprint(options.case_file, options.overrides, c.mesh.file.value_or(""));
+  if (checkpoint) {
+    if (const std::string changes = fingerprint_changes(checkpoint->fingerprint, fingerprint);
+        !changes.empty())
+      throw InputError({(out_dir / "checkpoint.bin").string(), 0, 0, "--resume"},
+                       "the checkpoint belongs to another run: " + changes +
+                           "; resume with the case, --set values and mesh it was written for, "
+                           "or start a new run");
+  }
 
   // Everything that can be rejected is checked before the run directory is touched.
   ModelParts parts = build_model_parts(c, mesh);

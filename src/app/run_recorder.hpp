@@ -28,7 +28,7 @@ namespace plisse::app {
 struct RunIdentity {
   std::string case_file;               ///< as given on the command line
   std::vector<std::string> overrides;  ///< --set values
-  std::uint64_t fingerprint = 0;       ///< case_fingerprint of both
+  RunFingerprint fingerprint;          ///< of the case, the --set values and the mesh file
 };
 
 /// Wall times measured before the recorder exists.

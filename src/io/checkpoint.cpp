@@ -1,7 +1,9 @@
 #include "io/checkpoint.hpp"
 
 #include <bit>
+#include <cmath>
 #include <cstring>
+#include <fstream>
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -13,8 +15,39 @@ static_assert(std::endian::native == std::endian::little, "checkpoints are littl
 
 constexpr char kMagic[8] = {'P', 'L', 'I', 'S', 'S', 'E', 'C', 'K'};
 constexpr char kTrailer[8] = {'E', 'N', 'D', 'C', 'K', 'P', 'T', '1'};
-// 2: negative_pivots after the term states; 3: the element family after the fingerprint
-constexpr std::uint32_t kVersion = 3;
+// 2: negative_pivots after the term states; 3: the element family after the fingerprint;
+// 4: the fingerprint's parts (case text, --set values, mesh file) and a checksum before the trailer
+constexpr std::uint32_t kVersion = 4;
+constexpr std::uint64_t kMaxStrings = 100000;          // --set values in a fingerprint
+constexpr std::uint64_t kMaxStringBytes = 1ull << 20;  // one --set value or path
+constexpr std::int64_t kMaxSteps = 1000000000;
+
+/// FNV-1a, 64 bit: the fingerprints' hash and the checksum (it detects damage, not tampering).
+class Fnv1a {
+ public:
+  void add(const void* data, std::size_t n) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) hash_ = (hash_ ^ p[i]) * 1099511628211ull;
+  }
+  std::uint64_t value() const { return hash_; }
+
+ private:
+  std::uint64_t hash_ = 1469598103934665603ull;
+};
+
+/// FNV-1a of a file's bytes, read in chunks (a mesh file may be large).
+std::uint64_t hash_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({path.string(), 0, 0, ""}, "cannot read the file");
+  Fnv1a hash;
+  std::vector<char> chunk(1 << 16);
+  while (in) {
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    hash.add(chunk.data(), static_cast<std::size_t>(in.gcount()));
+  }
+  if (in.bad()) throw InputError({path.string(), 0, 0, ""}, "cannot read the file");
+  return hash.value();
+}
 
 class Writer {
  public:
@@ -28,6 +61,10 @@ class Writer {
     if (!v.empty())
       bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
   }
+  void text(const std::string& t) {
+    value<std::uint64_t>(t.size());
+    bytes_.append(t);
+  }
   void raw(const char* p, size_t n) { bytes_.append(p, n); }
   const std::string& bytes() const { return bytes_; }
 
@@ -38,7 +75,7 @@ class Writer {
 class Reader {
  public:
   Reader(std::string bytes, std::filesystem::path path)
-      : bytes_(std::move(bytes)), path_(std::move(path)) {}
+      : bytes_(std::move(bytes)), path_(std::move(path)), end_(bytes_.size()) {}
   template <class T>
   T value() {
     need(sizeof(T));
@@ -47,58 +84,107 @@ class Reader {
     at_ += sizeof(T);
     return v;
   }
-  std::vector<double> doubles() {
+  /// An array of finite values (`what` names it in the message).
+  std::vector<double> doubles(const char* what) {
     const auto n = value<std::uint64_t>();
-    if (n > (bytes_.size() - at_) / sizeof(double)) fail("truncated or corrupt (array too long)");
+    if (n > (end_ - at_) / sizeof(double)) fail(std::string(what) + ": array too long");
     std::vector<double> v(n);
     if (n > 0)
       std::memcpy(v.data(), bytes_.data() + at_, n * sizeof(double));  // data() may be null
     at_ += n * sizeof(double);
+    for (std::size_t i = 0; i < v.size(); ++i)
+      if (!std::isfinite(v[i]))
+        fail(std::string(what) + ": value " + std::to_string(i) + " is not finite");
     return v;
   }
-  bool raw_equals(const char* p, size_t n) {
+  std::string text(const char* what) {
+    const auto n = value<std::uint64_t>();
+    if (n > kMaxStringBytes || n > end_ - at_) fail(std::string(what) + ": text too long");
+    std::string t(bytes_.data() + at_, n);
+    at_ += n;
+    return t;
+  }
+  /// The content ends before the checksum and trailer; checks both. Call first.
+  void check_frame() {
+    const std::size_t tail = sizeof(std::uint64_t) + sizeof kTrailer;
+    if (bytes_.size() < sizeof kMagic + tail) fail("truncated");
+    if (std::memcmp(bytes_.data() + bytes_.size() - sizeof kTrailer, kTrailer, sizeof kTrailer) !=
+        0)
+      fail("truncated (no end marker)");
+    end_ = bytes_.size() - tail;
+    std::uint64_t stored = 0;
+    std::memcpy(&stored, bytes_.data() + end_, sizeof stored);
+    Fnv1a hash;
+    hash.add(bytes_.data(), end_);
+    if (hash.value() != stored) fail("damaged: its checksum does not match its content");
+  }
+  bool raw_equals(const char* p, std::size_t n) {
     need(n);
     const bool same = std::memcmp(bytes_.data() + at_, p, n) == 0;
     at_ += n;
     return same;
   }
-  bool at_end() const { return at_ == bytes_.size(); }
+  bool at_end() const { return at_ == end_; }
   [[noreturn]] void fail(const std::string& why) const {
     throw InputError({path_.string(), 0, 0, "--resume"}, "not a usable plisse checkpoint: " + why);
   }
 
  private:
-  void need(size_t n) const {
-    if (bytes_.size() - at_ < n) fail("truncated");
+  void need(std::size_t n) const {
+    if (end_ - at_ < n) fail("truncated");
   }
   std::string bytes_;
   std::filesystem::path path_;
-  size_t at_ = 0;
+  std::size_t at_ = 0;
+  std::size_t end_;  ///< where the content ends (check_frame)
 };
 
 }  // namespace
 
-std::uint64_t case_fingerprint(const std::filesystem::path& case_file,
-                               const std::vector<std::string>& overrides) {
-  std::uint64_t h = 1469598103934665603ull;
-  const auto mix = [&h](std::string_view bytes) {
-    for (unsigned char c : bytes) {
-      h ^= c;
-      h *= 1099511628211ull;
-    }
-    h ^= 0xff;  // separator, so ("ab", "c") and ("a", "bc") differ
-    h *= 1099511628211ull;
+RunFingerprint run_fingerprint(const std::filesystem::path& case_file,
+                               const std::vector<std::string>& overrides,
+                               const std::string& mesh_file) {
+  RunFingerprint f;
+  f.case_text = hash_file(case_file);
+  f.overrides = overrides;
+  f.mesh_file = mesh_file;
+  if (!mesh_file.empty()) f.mesh_bytes = hash_file(mesh_file);
+  return f;
+}
+
+std::string fingerprint_changes(const RunFingerprint& saved, const RunFingerprint& now) {
+  const auto list = [](const std::vector<std::string>& values) {
+    std::string text;
+    for (const auto& v : values) text += (text.empty() ? "" : ", ") + v;
+    return text.empty() ? std::string("none") : text;
   };
-  mix(read_file(case_file));
-  for (const auto& o : overrides) mix(o);
-  return h;
+  std::vector<std::string> changes;
+  if (saved.case_text != now.case_text)
+    changes.push_back("the case file changed since the checkpoint was written");
+  if (saved.overrides != now.overrides)
+    changes.push_back("the --set values differ (checkpoint: " + list(saved.overrides) +
+                      "; now: " + list(now.overrides) + ")");
+  if (saved.mesh_file != now.mesh_file)
+    changes.push_back("the mesh differs (checkpoint: " +
+                      (saved.mesh_file.empty() ? "generated" : saved.mesh_file) +
+                      "; now: " + (now.mesh_file.empty() ? "generated" : now.mesh_file) + ")");
+  else if (saved.mesh_bytes != now.mesh_bytes)
+    changes.push_back("the mesh file " + now.mesh_file +
+                      " changed since the checkpoint was written");
+  std::string text;
+  for (const auto& c : changes) text += (text.empty() ? "" : "; ") + c;
+  return text;
 }
 
 void write_checkpoint(const std::filesystem::path& path, const Checkpoint& c) {
   Writer w;
   w.raw(kMagic, sizeof kMagic);
   w.value(kVersion);
-  w.value(c.case_fingerprint);
+  w.value(c.fingerprint.case_text);
+  w.value<std::uint64_t>(c.fingerprint.overrides.size());
+  for (const auto& o : c.fingerprint.overrides) w.text(o);
+  w.text(c.fingerprint.mesh_file);
+  w.value(c.fingerprint.mesh_bytes);
   w.value<std::uint32_t>(c.element == ElementFamily::mini ? 0 : 1);
   w.value<std::int64_t>(c.steps);
   w.value(c.time);
@@ -110,6 +196,9 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& c) {
   w.value<std::uint64_t>(c.term_states.size());
   for (const auto& t : c.term_states) w.doubles(t);
   w.value<std::int64_t>(c.negative_pivots);
+  Fnv1a checksum;
+  checksum.add(w.bytes().data(), w.bytes().size());
+  w.value(checksum.value());
   w.raw(kTrailer, sizeof kTrailer);
   write_file_atomically(path, w.bytes());
 }
@@ -120,23 +209,44 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
   Reader r(read_file(path), path);
   if (!r.raw_equals(kMagic, sizeof kMagic)) r.fail("wrong file type");
   if (r.value<std::uint32_t>() != kVersion) r.fail("written by another version of plisse");
+  r.check_frame();
   Checkpoint c;
-  c.case_fingerprint = r.value<std::uint64_t>();
+  c.fingerprint.case_text = r.value<std::uint64_t>();
+  const auto n_overrides = r.value<std::uint64_t>();
+  if (n_overrides > kMaxStrings) r.fail("too many --set values");
+  for (std::uint64_t k = 0; k < n_overrides; ++k)
+    c.fingerprint.overrides.push_back(r.text("--set value"));
+  c.fingerprint.mesh_file = r.text("mesh file");
+  c.fingerprint.mesh_bytes = r.value<std::uint64_t>();
   const auto element = r.value<std::uint32_t>();
   if (element > 1) r.fail("unknown element family");
   c.element = element == 0 ? ElementFamily::mini : ElementFamily::taylor_hood;
-  c.steps = static_cast<int>(r.value<std::int64_t>());
+  const auto steps = r.value<std::int64_t>();
+  if (steps < 0 || steps > kMaxSteps)
+    r.fail("step count " + std::to_string(steps) + " out of range");
+  c.steps = static_cast<int>(steps);
   c.time = r.value<double>();
   c.dt = r.value<double>();
   c.previous_dt = r.value<double>();
-  c.previous_state = r.doubles();
-  c.state = r.doubles();
-  c.bubbles = r.doubles();
+  if (!std::isfinite(c.time) || c.time < 0.0) r.fail("time is not finite and >= 0");
+  if (!std::isfinite(c.dt) || c.dt <= 0.0) r.fail("next step size is not finite and > 0");
+  if (!std::isfinite(c.previous_dt) || c.previous_dt < 0.0)
+    r.fail("last step size is not finite and >= 0");
+  c.previous_state = r.doubles("previous state");
+  c.state = r.doubles("state");
+  if (c.state.empty()) r.fail("the state is empty");
+  if (!c.previous_state.empty() && c.previous_state.size() != c.state.size())
+    r.fail("the previous state has " + std::to_string(c.previous_state.size()) +
+           " values for a state of " + std::to_string(c.state.size()));
+  c.bubbles = r.doubles("element state");
   const auto n_terms = r.value<std::uint64_t>();
   if (n_terms > 1000000) r.fail("corrupt term count");
-  for (std::uint64_t k = 0; k < n_terms; ++k) c.term_states.push_back(r.doubles());
-  c.negative_pivots = static_cast<int>(r.value<std::int64_t>());
-  if (!r.raw_equals(kTrailer, sizeof kTrailer) || !r.at_end()) r.fail("truncated or corrupt");
+  for (std::uint64_t k = 0; k < n_terms; ++k) c.term_states.push_back(r.doubles("term state"));
+  const auto negative_pivots = r.value<std::int64_t>();
+  if (negative_pivots < -1 || negative_pivots > std::int64_t{1} << 40)
+    r.fail("negative pivot count out of range");
+  c.negative_pivots = static_cast<int>(negative_pivots);
+  if (!r.at_end()) r.fail("unexpected bytes after the last field");
   return c;
 }
 

@@ -11,8 +11,30 @@
 
 namespace plisse {
 
+/// What a checkpoint belongs to: the case file's bytes, the --set values and the mesh file's
+/// bytes, so a resume can say which of them changed.
+struct RunFingerprint {
+  std::uint64_t case_text = 0;         ///< FNV-1a (64 bit) of the case file's bytes
+  std::vector<std::string> overrides;  ///< the --set values, in order
+  std::string mesh_file;               ///< `mesh.file` as resolved; empty for a generated mesh
+  std::uint64_t mesh_bytes = 0;        ///< FNV-1a of the mesh file's bytes (0: generated mesh)
+
+  bool operator==(const RunFingerprint&) const = default;
+};
+
+/// The fingerprint of a run of `case_file` with `overrides` on `mesh_file` (empty: a generated
+/// mesh). Reads both files through; throws InputError if one cannot be read.
+RunFingerprint run_fingerprint(const std::filesystem::path& case_file,
+                               const std::vector<std::string>& overrides,
+                               const std::string& mesh_file);
+
+/// Empty when `now` is the run `saved` belongs to; otherwise what differs, in words: "the case
+/// file changed since the checkpoint was written", "the --set values differ (checkpoint: a, b;
+/// now: a, c)", "the mesh file M changed ...", joined by "; ".
+std::string fingerprint_changes(const RunFingerprint& saved, const RunFingerprint& now);
+
 struct Checkpoint {
-  std::uint64_t case_fingerprint = 0;            ///< of the case text and its --set overrides
+  RunFingerprint fingerprint;                    ///< the run it belongs to
   ElementFamily element = ElementFamily::mini;   ///< the element of the run
   int steps = 0;                                 ///< converged steps
   double time = 0.0;                             ///< of the last converged step [s]
@@ -25,16 +47,13 @@ struct Checkpoint {
   int negative_pivots = -1;  ///< stability check: of the last converged step (-1: not checked)
 };
 
-/// FNV-1a (64 bit) of the case file's bytes followed by each override, so a checkpoint can only
-/// resume the case (and overrides) that wrote it. Throws InputError if the file cannot be read.
-std::uint64_t case_fingerprint(const std::filesystem::path& case_file,
-                               const std::vector<std::string>& overrides);
-
 /// Writes `c` to `path` atomically. Throws plisse::Error naming the path on failure.
 void write_checkpoint(const std::filesystem::path& path, const Checkpoint& c);
 
-/// Reads a checkpoint. Throws InputError (file = path, key "--resume") when it is missing,
-/// truncated or not a plisse checkpoint.
+/// Reads a checkpoint. Throws InputError (file = path, key "--resume") when it is missing, not a
+/// regular file, truncated, damaged (checksum), not a plisse checkpoint of this version, or holds
+/// a value out of its range: a negative step count, a non-finite or negative time, a step size
+/// that is not finite and positive, a non-finite state value, arrays of inconsistent sizes.
 Checkpoint read_checkpoint(const std::filesystem::path& path);
 
 }  // namespace plisse

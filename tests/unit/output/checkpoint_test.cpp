@@ -1,0 +1,149 @@
+// checkpoint.bin: every field reads back bit for bit; damage, truncation and out-of-range values
+// are refused as bad input at --resume, naming what is wrong; the fingerprint says what changed.
+#include "io/checkpoint.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "output_test_support.hpp"
+
+namespace plisse {
+namespace {
+
+using test::ScratchDir;
+
+Checkpoint sample() {
+  Checkpoint c;
+  c.fingerprint = {
+      0x0123456789abcdefull, {"loads[0].value=5", "mesh.layers=3"}, "/m/shell.msh", 42};
+  c.element = ElementFamily::taylor_hood;
+  c.steps = 17;
+  c.time = 0.625;
+  c.dt = 0.0625;
+  c.previous_dt = 0.03125;
+  c.previous_state = {0.0, -1.5, 2.25e-300};
+  c.state = {1.0, -2.5, 3.0e-17};
+  c.bubbles = {};
+  c.term_states = {{1.0, 2.0}, {}, {-0.5}};
+  c.negative_pivots = 4;
+  return c;
+}
+
+/// What reading `bytes` as a checkpoint throws (empty when it is accepted).
+std::string refusal(const ScratchDir& dir, const std::string& bytes) {
+  write_file_atomically(dir / "checkpoint.bin", bytes);
+  try {
+    read_checkpoint(dir / "checkpoint.bin");
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.place().key, "--resume");
+    EXPECT_EQ(e.place().file, (dir / "checkpoint.bin").string());
+    return e.rule();
+  }
+  return {};
+}
+
+TEST(Checkpoint, EveryFieldReadsBackBitForBit) {
+  const ScratchDir dir;
+  const Checkpoint c = sample();
+  write_checkpoint(dir / "checkpoint.bin", c);
+  const Checkpoint r = read_checkpoint(dir / "checkpoint.bin");
+  EXPECT_EQ(r.fingerprint, c.fingerprint);
+  EXPECT_EQ(r.element, c.element);
+  EXPECT_EQ(r.steps, c.steps);
+  EXPECT_EQ(r.time, c.time);
+  EXPECT_EQ(r.dt, c.dt);
+  EXPECT_EQ(r.previous_dt, c.previous_dt);
+  EXPECT_EQ(r.previous_state, c.previous_state);
+  EXPECT_EQ(r.state, c.state);
+  EXPECT_EQ(r.bubbles, c.bubbles);
+  EXPECT_EQ(r.term_states, c.term_states);
+  EXPECT_EQ(r.negative_pivots, c.negative_pivots);
+}
+
+TEST(Checkpoint, EveryFlippedByteAndEveryTruncationIsRefused) {
+  const ScratchDir dir;
+  write_checkpoint(dir / "good.bin", sample());
+  const std::string good = test::contents(dir / "good.bin");
+  ASSERT_TRUE(refusal(dir, good).empty());
+  for (std::size_t i = 0; i < good.size(); ++i) {
+    std::string bad = good;
+    bad[i] = static_cast<char>(bad[i] ^ 0x10);
+    EXPECT_FALSE(refusal(dir, bad).empty()) << "byte " << i << " of " << good.size();
+  }
+  for (std::size_t n = 0; n < good.size(); ++n)
+    EXPECT_FALSE(refusal(dir, good.substr(0, n)).empty()) << "first " << n << " bytes";
+  EXPECT_NE(refusal(dir, good.substr(0, good.size() - 1)).find("truncated"), std::string::npos);
+  std::string flipped = good;
+  flipped[good.size() / 2] ^= 1;
+  EXPECT_NE(refusal(dir, flipped).find("damaged: its checksum does not match its content"),
+            std::string::npos);
+  EXPECT_NE(refusal(dir, good + "x").find("truncated"), std::string::npos);
+}
+
+TEST(Checkpoint, ValuesOutOfTheirRangeAreRefusedByName) {
+  // Written with a valid checksum: the field checks alone must catch them.
+  const ScratchDir dir;
+  const auto refused = [&](auto change, const std::string& expected) {
+    Checkpoint c = sample();
+    change(c);
+    write_checkpoint(dir / "w.bin", c);
+    const std::string why = refusal(dir, test::contents(dir / "w.bin"));
+    EXPECT_NE(why.find(expected), std::string::npos)
+        << "'" << why << "' lacks '" << expected << "'";
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  refused([](Checkpoint& c) { c.steps = -3; }, "step count -3 out of range");
+  refused([&](Checkpoint& c) { c.time = nan; }, "time is not finite and >= 0");
+  refused([](Checkpoint& c) { c.time = -1.0; }, "time is not finite and >= 0");
+  refused([](Checkpoint& c) { c.dt = 0.0; }, "next step size is not finite and > 0");
+  refused([&](Checkpoint& c) { c.dt = inf; }, "next step size is not finite and > 0");
+  refused([](Checkpoint& c) { c.previous_dt = -0.5; }, "last step size");
+  refused([&](Checkpoint& c) { c.state[2] = nan; }, "state: value 2 is not finite");
+  refused([&](Checkpoint& c) { c.previous_state[0] = -inf; }, "previous state: value 0");
+  refused([&](Checkpoint& c) { c.term_states[2][0] = nan; }, "term state: value 0 is not finite");
+  refused([](Checkpoint& c) { c.state.clear(); }, "the state is empty");
+  refused([](Checkpoint& c) { c.previous_state.push_back(1.0); },
+          "the previous state has 4 values for a state of 3");
+  refused([](Checkpoint& c) { c.negative_pivots = -2; }, "negative pivot count out of range");
+  const std::string old_version("PLISSECK\x03\0\0\0rest-of-an-old-file", 31);
+  EXPECT_NE(refusal(dir, old_version).find("another version"), std::string::npos);
+  EXPECT_NE(refusal(dir, "not a checkpoint at all").find("wrong file type"), std::string::npos);
+}
+
+TEST(Checkpoint, MissingOrNotARegularFileIsRefused) {
+  const ScratchDir dir;
+  EXPECT_THROW(read_checkpoint(dir / "checkpoint.bin"), InputError);
+  std::filesystem::create_directory(dir / "checkpoint.bin");
+  EXPECT_THROW(read_checkpoint(dir / "checkpoint.bin"), InputError);
+}
+
+TEST(Checkpoint, FingerprintSaysWhatChanged) {
+  const ScratchDir dir;
+  write_file_atomically(dir / "case.yaml", "title: a\n");
+  write_file_atomically(dir / "m.msh", "mesh one");
+  const auto now = [&](const std::vector<std::string>& sets, const std::string& mesh) {
+    return run_fingerprint(dir / "case.yaml", sets, mesh);
+  };
+  const RunFingerprint saved = now({"a=1"}, (dir / "m.msh").string());
+  EXPECT_EQ(fingerprint_changes(saved, now({"a=1"}, (dir / "m.msh").string())), "");
+  EXPECT_EQ(fingerprint_changes(saved, now({"a=2", "b=1"}, (dir / "m.msh").string())),
+            "the --set values differ (checkpoint: a=1; now: a=2, b=1)");
+  EXPECT_EQ(fingerprint_changes(saved, now({}, "")),
+            "the --set values differ (checkpoint: a=1; now: none); the mesh differs (checkpoint: " +
+                (dir / "m.msh").string() + "; now: generated)");
+  write_file_atomically(dir / "m.msh", "mesh two");
+  write_file_atomically(dir / "case.yaml", "title: b\n");
+  EXPECT_EQ(fingerprint_changes(saved, now({"a=1"}, (dir / "m.msh").string())),
+            "the case file changed since the checkpoint was written; the mesh file " +
+                (dir / "m.msh").string() + " changed since the checkpoint was written");
+  EXPECT_THROW(now({}, (dir / "missing.msh").string()), InputError);
+}
+
+}  // namespace
+}  // namespace plisse
