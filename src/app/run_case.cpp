@@ -1,5 +1,7 @@
 #include "app/run_case.hpp"
 
+#include <unistd.h>
+
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +15,7 @@
 #include "io/atomic_file.hpp"
 #include "io/case.hpp"
 #include "io/checkpoint.hpp"
+#include "io/petsc_option_text.hpp"
 #include "io/run_directory.hpp"
 #include "io/run_log.hpp"
 #include "mesh/topology.hpp"
@@ -28,11 +31,25 @@ namespace {
 namespace fs = std::filesystem;
 
 volatile std::sig_atomic_t g_interrupt = 0;
-extern "C" void on_interrupt(int) { g_interrupt = 1; }
+/// The first SIGINT/SIGTERM asks the run to stop; a second one ends the process at once. What
+/// was written stays whole: files are replaced by rename or grow by whole lines, and the next run
+/// or resume in the directory removes the temporaries and takes over the lock.
+extern "C" void on_interrupt(int) {
+  if (g_interrupt != 0) {
+    static const char kMessage[] =
+        "\nplisse: second interrupt: stopping at once; the files written so far are whole, the "
+        "last checkpoint is the place to resume from\n";
+    const ssize_t written = ::write(STDERR_FILENO, kMessage, sizeof kMessage - 1);
+    (void)written;
+    ::_exit(1);
+  }
+  g_interrupt = 1;
+}
 
 /// SIGINT/SIGTERM set a flag for the duration of a run; the stepper asks it before every step and
-/// after every Newton iteration, stops with the last converged step and the run checkpoints it. The
-/// previous handlers come back at the end.
+/// after every Newton iteration, stops with the last converged step and the run checkpoints it. A
+/// second signal ends the process at once (on_interrupt). The previous handlers come back at the
+/// end.
 class InterruptGuard {
  public:
   InterruptGuard() {
@@ -349,6 +366,9 @@ void solve_and_write(PreparedRun run) {
 void run_case(const RunOptions& options) {
   const auto t_start = WallClock::now();
   const Case c = parse_case_file(options.case_file, options.overrides);
+  for (const std::string& o : options.petsc_options)
+    if (const std::string problem = petsc_option_problem(o); !problem.empty())
+      throw InputError({"command line", 0, 0, "--petsc"}, problem);
   if (!options.resume_directory.empty() && options.overwrite)
     throw InputError({"command line", 0, 0, "--overwrite"},
                      "a resumed run continues the run in its directory; --overwrite would "

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -168,10 +169,28 @@ int remove_stale_temporaries(const std::filesystem::path& directory, std::string
   return removed;
 }
 
-std::string read_file(const std::filesystem::path& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+std::string read_file(const std::filesystem::path& path, std::uintmax_t max_bytes) {
+  // O_NONBLOCK: opening a FIFO would otherwise wait for a writer; it is refused below.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) throw InputError({path.string(), 0, 0, ""}, "cannot read: " + reason(errno));
+  struct stat status {};
+  if (::fstat(fd, &status) != 0 || !S_ISREG(status.st_mode)) {
+    ::close(fd);
+    throw InputError({path.string(), 0, 0, ""},
+                     S_ISDIR(status.st_mode)
+                         ? "cannot read: is a directory"
+                         : "cannot read: not a regular file (a FIFO, device or socket)");
+  }
+  if (static_cast<std::uintmax_t>(status.st_size) > max_bytes) {
+    ::close(fd);
+    throw InputError({path.string(), 0, 0, ""},
+                     "cannot read: the file is " + std::to_string(status.st_size) +
+                         " bytes, more than the " + std::to_string(max_bytes) +
+                         " its reader accepts");
+  }
+  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
   std::string content;
+  content.reserve(static_cast<std::size_t>(status.st_size));
   char chunk[1 << 16];
   while (true) {
     const ssize_t n = ::read(fd, chunk, sizeof chunk);
@@ -183,6 +202,10 @@ std::string read_file(const std::filesystem::path& path) {
       throw InputError({path.string(), 0, 0, ""}, "cannot read: " + reason(error_number));
     }
     content.append(chunk, static_cast<std::size_t>(n));
+    if (content.size() > max_bytes) {  // grown since it was checked
+      ::close(fd);
+      throw InputError({path.string(), 0, 0, ""}, "cannot read: the file grew while it was read");
+    }
   }
   ::close(fd);
   return content;

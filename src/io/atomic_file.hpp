@@ -7,6 +7,7 @@
 /// Guarantee and limit: this protects against the process dying (kill, crash, exception). It does
 /// not fsync, so after a power loss the newest version may be lost; the previous one survives.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -29,11 +30,16 @@ void write_file_atomically(const std::filesystem::path& target, std::string_view
 int remove_stale_temporaries(const std::filesystem::path& directory,
                              std::string_view target_name = {});
 
+/// Largest file read_file reads unless told otherwise [bytes]: history.csv, summary.json and
+/// solution.pvd of even very long runs are far smaller.
+constexpr std::uintmax_t kMaxReadBytes = std::uintmax_t{1} << 30;
+
 /// The whole content of the file at `path`, for the readers of run-directory files (history,
-/// collection, JSON). A run directory is user input to `plisse wrinkles DIR` and restarts, so a
-/// missing or unreadable file throws plisse::InputError (file = path, rule = "cannot read: "
-/// followed by the system's reason).
-std::string read_file(const std::filesystem::path& path);
+/// collection, JSON, checkpoint). A run directory is user input to `plisse wrinkles DIR` and
+/// restarts, so a missing or unreadable file, one that is not a regular file (a FIFO is refused,
+/// not waited on) or one larger than `max_bytes` throws plisse::InputError (file = path, rule =
+/// "cannot read: " followed by the reason).
+std::string read_file(const std::filesystem::path& path, std::uintmax_t max_bytes = kMaxReadBytes);
 
 /// Streams a file's content to a temporary file and puts it in place on `commit()`, for content
 /// too large to hold twice in memory (VTU). Destroying an AtomicFile without a successful commit

@@ -7,6 +7,7 @@ set(PLISSE_IO_CASE_SOURCES
   case.cpp
   case_schema.cpp
   case_solver_schema.cpp
+  petsc_option_text.cpp
   case_keys.cpp
   yaml_text.cpp
   case_reader.cpp

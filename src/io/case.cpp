@@ -920,6 +920,32 @@ const Schema<Case>& the_case_schema() {
   return schema;
 }
 
+/// Every key and scalar value of the case, from the file or from --set, is text a terminal and a
+/// log can show as written: UTF-8 without control characters (after YAML's escapes, which can
+/// make them). Walks the tree with an explicit stack: the depth is the input's.
+void check_scalar_text(const YAML::Node& root, const case_detail::Source& source) {
+  std::vector<std::pair<YAML::Node, std::string>> stack = {{root, ""}};
+  while (!stack.empty()) {
+    const auto [node, path] = stack.back();
+    stack.pop_back();
+    if (node.IsScalar()) {
+      if (const std::string problem = case_detail::scalar_text_problem(node.Scalar());
+          !problem.empty())
+        throw InputError(source.place(node, path), "the value " + problem);
+    } else if (node.IsMap()) {
+      for (const auto& item : node) {
+        const std::string key = item.first.IsScalar() ? item.first.Scalar() : std::string();
+        if (const std::string problem = case_detail::scalar_text_problem(key); !problem.empty())
+          throw InputError(source.place(item.first, path), "a key " + problem);
+        stack.emplace_back(item.second, case_detail::child_path(path, key));
+      }
+    } else if (node.IsSequence()) {
+      for (std::size_t i = 0; i < node.size(); ++i)
+        stack.emplace_back(node[i], case_detail::item_path(path, i));
+    }
+  }
+}
+
 }  // namespace
 
 Case parse_case_string(const std::string& text, const std::string& name,
@@ -931,6 +957,7 @@ Case parse_case_string(const std::string& text, const std::string& name,
     throw InputError({name, root.Mark().line + 1, root.Mark().column + 1, ""},
                      "expected a map of sections (mesh:, material:, ...) at the top level");
   const case_detail::Source source(name, case_detail::apply_overrides(root, overrides));
+  check_scalar_text(root, source);
   const Field top_field(source, root, YAML::Node(), "");
   const FieldMap top = top_field.map();
   const Schema<Case>& schema = the_case_schema();

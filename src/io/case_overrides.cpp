@@ -4,6 +4,7 @@
 #include <cstddef>
 
 #include "core/error.hpp"
+#include "io/yaml_text.hpp"
 
 namespace plisse::case_detail {
 namespace {
@@ -26,6 +27,10 @@ std::string trim(const std::string& s) {
   throw InputError({"--set", 0, 0, key}, rule);
 }
 
+/// Longest key path an override may have (its parts are walked recursively); the case's deepest
+/// keys have about 5.
+constexpr std::size_t kMaxPathSteps = 32;
+
 bool is_key_char(char ch) {
   return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-';
 }
@@ -41,6 +46,10 @@ std::vector<PathStep> parse_path(const std::string& path, const std::string& tex
     const std::size_t start = i;
     while (i < path.size() && is_key_char(path[i])) ++i;
     if (i == start) fail(path, hint);
+    if (steps.size() >= kMaxPathSteps)
+      fail(path.substr(0, std::min<std::size_t>(path.size(), 200)),
+           "the key path has more than " + std::to_string(kMaxPathSteps) +
+               " parts; the case's deepest keys have a few");
     steps.push_back({false, path.substr(start, i - start), 0});
     while (i < path.size() && path[i] == '[') {
       const std::size_t close = path.find(']', i);
@@ -51,6 +60,10 @@ std::vector<PathStep> parse_path(const std::string& path, const std::string& tex
       if (!ok)
         fail(path, "malformed override '" + text + "': the list index '[" + digits +
                        "]' must be a non-negative integer, e.g. [0]");
+      if (steps.size() >= kMaxPathSteps)
+        fail(path.substr(0, std::min<std::size_t>(path.size(), 200)),
+             "the key path has more than " + std::to_string(kMaxPathSteps) +
+                 " parts; the case's deepest keys have a few");
       steps.push_back({true, {}, static_cast<std::size_t>(std::stoul(digits))});
       i = close + 1;
     }
@@ -133,6 +146,10 @@ std::vector<std::string> apply_overrides(YAML::Node& root,
                                          const std::vector<std::string>& overrides) {
   std::vector<std::string> paths;
   for (const std::string& text : overrides) {
+    // Checked before the text is quoted in any message: raw control bytes would reach the
+    // terminal.
+    if (const std::string problem = scalar_text_problem(text); !problem.empty())
+      fail("", "an override " + problem + "; --set takes key.path=value as UTF-8 text");
     const std::size_t eq = text.find('=');
     if (eq == std::string::npos)
       fail("", "malformed override '" + text + "': expected key.path=value, e.g. mesh.layers=4");

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "io/case_reader.hpp"
+#include "io/petsc_option_text.hpp"
 
 namespace plisse::case_detail {
 namespace {
@@ -160,7 +161,9 @@ Schema<SolverSettings> solver_schema() {
          "",
          "empty",
          {},
-         "extra PETSc options, e.g. `-ksp_type preonly -pc_type lu`"},
+         "extra PETSc options, e.g. `-ksp_type preonly -pc_type lu`; views and monitors print "
+         "text to the log (`-ksp_view ::ascii_info`): options that name a file "
+         "(`-log_view :f.txt`, `-options_file`), open a window or start a debugger are refused"},
         [](const Field& f, S& solver, ReadContext&) {
           solver.petsc_options = f.text();
           solver.petsc_options_place = f.place();
@@ -177,6 +180,9 @@ Schema<SolverSettings> solver_schema() {
                      "option before it; expected e.g. '-ksp_type preonly -pc_type lu'");
             after_value = !option;
           }
+          if (const std::string problem = petsc_option_problem(solver.petsc_options);
+              !problem.empty())
+            f.fail(problem);
         })
       .null_is_absent();
   s.rule("`min_step` <= `max_step`", [](const FieldMap& m, const S& solver, const ReadContext&) {

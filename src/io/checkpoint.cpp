@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "io/atomic_file.hpp"
 
 namespace plisse {
@@ -204,9 +205,17 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& c) {
 }
 
 Checkpoint read_checkpoint(const std::filesystem::path& path) {
-  if (!std::filesystem::is_regular_file(path))
+  std::error_code error;
+  if (!std::filesystem::exists(path, error))
     throw InputError({path.string(), 0, 0, "--resume"}, "no checkpoint.bin in the run directory");
-  Reader r(read_file(path), path);
+  std::string bytes;
+  try {
+    // A checkpoint larger than the machine's memory cannot be a state this machine wrote.
+    bytes = read_file(path, physical_memory_bytes());
+  } catch (const InputError& e) {
+    throw InputError({path.string(), 0, 0, "--resume"}, e.rule());
+  }
+  Reader r(std::move(bytes), path);
   if (!r.raw_equals(kMagic, sizeof kMagic)) r.fail("wrong file type");
   if (r.value<std::uint32_t>() != kVersion) r.fail("written by another version of plisse");
   r.check_frame();

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 
 namespace plisse::case_detail {
 namespace {
@@ -153,6 +154,34 @@ class UnclosedQuoteFinder : public YAML::EventHandler {
 
 }  // namespace
 
+std::string scalar_text_problem(const std::string& text) {
+  char code[16];
+  for (std::size_t i = 0; i < text.size();) {
+    const auto ch = static_cast<unsigned char>(text[i]);
+    if (ch >= 0x80) {
+      const std::size_t n = utf8_sequence_length(text, i);
+      if (n == 0) {
+        std::snprintf(code, sizeof code, "0x%02X", ch);
+        return std::string("is not UTF-8 text (byte ") + code + ")";
+      }
+      // U+0080-U+009F, the C1 controls, are the two-byte sequences C2 80 to C2 9F.
+      const auto next = static_cast<unsigned char>(text[i + 1]);
+      if (ch == 0xc2 && next <= 0x9f) {
+        std::snprintf(code, sizeof code, "U+%04X", next);
+        return std::string("holds the control character ") + code;
+      }
+      i += n;
+      continue;
+    }
+    if ((ch < 0x20 && ch != '\t' && ch != '\n') || ch == 0x7f) {
+      std::snprintf(code, sizeof code, "U+%04X", ch);
+      return std::string("holds the control character ") + code;
+    }
+    ++i;
+  }
+  return {};
+}
+
 YAML::Node load_case_document(const std::string& text, const std::string& name) {
   if (const std::size_t at = first_non_text_byte(text); at != std::string::npos) {
     const auto before = text.begin() + static_cast<std::ptrdiff_t>(at);
@@ -217,15 +246,12 @@ YAML::Node load_case_document(const std::string& text, const std::string& name) 
 }
 
 std::string read_case_text(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError({path, 0, 0, ""}, "the case file does not exist");
-  if (fs::is_directory(path, ec))
-    throw InputError({path, 0, 0, ""}, "is a directory, not a case file");
+  // A regular file of at most kMaxCaseFileBytes: a FIFO would block the reader, a device such as
+  // /dev/zero (or a huge file given by mistake) fill the memory before the parser sees a byte.
+  check_input_file(path, kMaxCaseFileBytes, "case file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({path, 0, 0, ""}, "the case file cannot be opened for reading");
-  // Read at most kMaxCaseFileBytes + 1: a device such as /dev/zero (or a huge file given by
-  // mistake) would otherwise fill the memory before the YAML parser sees a byte.
+  // Read at most kMaxCaseFileBytes + 1: the file may have grown since it was checked.
   std::string text(kMaxCaseFileBytes + 1, '\0');
   in.read(text.data(), static_cast<std::streamsize>(text.size()));
   text.resize(static_cast<std::size_t>(in.gcount()));

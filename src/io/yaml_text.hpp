@@ -24,4 +24,10 @@ std::string read_case_text(const std::string& path);
 /// syntax error, a quoted scalar that is never closed, or a second document.
 YAML::Node load_case_document(const std::string& text, const std::string& name);
 
+/// Why `text` (a key or value after YAML's escapes, from the file or from --set) cannot be case
+/// text, or empty: bytes that are not well-formed UTF-8, or a control character other than tab
+/// and line feed (C0, DEL, C1: they rewrite terminals and logs), e.g. "holds the control character
+/// U+001B".
+std::string scalar_text_problem(const std::string& text);
+
 }  // namespace plisse::case_detail

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "mesh/gmsh_raw_model.hpp"
 #include "mesh/gmsh_session.hpp"
 #include "mesh/isolated_process.hpp"
@@ -507,8 +508,12 @@ ChildLimits gmsh_reader_limits(std::uintmax_t file_bytes) {
   constexpr double kCpuSecondsPerMiB = 4.0;
   const double mib = static_cast<double>(file_bytes) / static_cast<double>(1 << 20);
   ChildLimits limits;
-  limits.memory_bytes = kMemoryFloor + std::min<std::uint64_t>(file_bytes, std::uint64_t{1} << 40) *
-                                           kMemoryPerFileByte;
+  // Never more than the machine has: a sparse file claiming terabytes it does not hold would
+  // otherwise lift the limit altogether.
+  limits.memory_bytes =
+      std::min(kMemoryFloor +
+                   std::min<std::uint64_t>(file_bytes, std::uint64_t{1} << 40) * kMemoryPerFileByte,
+               std::max(kMemoryFloor, physical_memory_bytes()));
   limits.cpu_seconds =
       static_cast<unsigned>(std::min(kCpuFloorSeconds + kCpuSecondsPerMiB * mib, 1e6));
   limits.wall_seconds = 2.0 * limits.cpu_seconds + 10.0;  // leaves room for a loaded machine
@@ -518,6 +523,13 @@ ChildLimits gmsh_reader_limits(std::uintmax_t file_bytes) {
 Mesh read_gmsh(const std::string& path, GmshReadInfo& info) {
   std::error_code ec;
   const std::uintmax_t file_bytes = std::filesystem::file_size(path, ec);
+  // The reader needs 5-6 bytes of memory per byte of file (gmsh_reader_limits): a file that
+  // cannot fit is refused before a reader starts.
+  if (!ec && std::filesystem::is_regular_file(path, ec) && file_bytes > physical_memory_bytes() / 6)
+    throw file_error(path, "the mesh file is " + std::to_string(file_bytes) +
+                               " bytes; reading it needs about 6 bytes of memory per byte, "
+                               "more than this machine's " +
+                               std::to_string(physical_memory_bytes() >> 20) + " MiB");
   return read_gmsh(path, info, gmsh_reader_limits(ec ? 0 : file_bytes));
 }
 

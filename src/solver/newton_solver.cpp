@@ -157,6 +157,8 @@ PetscErrorCode NewtonSolver::converged(SNES snes, PetscInt it, PetscReal xnorm, 
   if (it == 0 && self->reference_norm_ == 0.0) self->reference_norm_ = fnorm;
   if (*reason == SNES_CONVERGED_ITERATING && fnorm <= self->pass_rtol_ * self->reference_norm_)
     *reason = SNES_CONVERGED_FNORM_RELATIVE;
+  self->passed_test_ =
+      *reason == SNES_CONVERGED_FNORM_ABS || *reason == SNES_CONVERGED_FNORM_RELATIVE;
   if (*reason != SNES_CONVERGED_ITERATING || !self->interrupt_) return 0;
   try {
     self->interrupted_ = self->interrupt_();
@@ -285,6 +287,7 @@ NewtonResult NewtonSolver::run() {
   NewtonResult result;
   error_ = nullptr;
   interrupted_ = false;
+  passed_test_ = false;
   jacobians_ = 0;
   model_.get_free(x_);
   // The tangent's sparsity grew (contact pairs): a new matrix, which the factorisation analyses
@@ -324,7 +327,9 @@ NewtonResult NewtonSolver::run() {
   PetscReal* h = nullptr;
   PLISSE_PETSC(SNESGetConvergenceHistory(snes_, &h, nullptr, &n_history));
   result.residual_history.insert(result.residual_history.end(), h, h + n_history);
-  result.converged = reason > 0 && last_status_.ok;  // an interrupted solve has reason < 0
+  // An interrupted solve has reason < 0; a converged reason counts only when plisse's residual
+  // test gave it.
+  result.converged = reason > 0 && passed_test_ && last_status_.ok;
   result.reference_norm = reference_norm_;
   // The freshest factor is now SNES's own, when it factorised in a solve that converged; one made
   // at the iterates of a failed solve is not reused.
@@ -338,6 +343,10 @@ NewtonResult NewtonSolver::run() {
   result.iterations = static_cast<int>(its);
   result.residual_norm = result.residual_history.empty() ? 0.0 : result.residual_history.back();
   result.reason = interrupted_ ? "interrupted" : SNESConvergedReasons[reason];
+  if (reason > 0 && !passed_test_)
+    result.reason +=
+        " without plisse's residual test (a PETSc option such as -snes_type ksponly "
+        "skips it): the state is not accepted";
   result.interrupted = interrupted_;
   result.status = last_status_;
   return result;

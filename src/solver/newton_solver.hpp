@@ -119,6 +119,10 @@ class NewtonSolver {
   PhaseTimes times_;
   std::function<bool()> interrupt_;
   bool interrupted_ = false;  ///< the current solve was stopped by interrupt_
+  /// plisse's residual test (converged()) declared the current solve converged: a converged
+  /// reason from SNES without it (an option such as -snes_type ksponly skips the test) is not
+  /// accepted.
+  bool passed_test_ = false;
   bool reuse_enabled_ = false;
   bool reuse_allowed_ = true;
   double rtol_ = 0.0, atol_ = 0.0;

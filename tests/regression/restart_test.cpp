@@ -172,6 +172,35 @@ TEST(Restart, TerminatedRunStopsWithCheckpointAndExitStatus1) {
   EXPECT_TRUE(read_json_file(dir / "summary.json")["completed"].get<bool>());
 }
 
+TEST(Restart, ASecondSignalStopsAtOnceAndLosesNothingWritten) {
+  const fs::path dir = test::scratch_directory("restart-second-signal");
+  const pid_t pid = start_run(dir, kCase, {"solver.steps=300"});
+  wait_for_rows(dir, 5);
+  // Both signals pending at once (the process is stopped while they are sent), so the second
+  // reaches the handler while the first is still being answered: the user's double Ctrl-C.
+  kill(pid, SIGSTOP);
+  kill(pid, SIGTERM);
+  kill(pid, SIGINT);
+  const auto sent = std::chrono::steady_clock::now();
+  kill(pid, SIGCONT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count(), 2.0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  std::ifstream in(dir.string() + ".log");
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(text.find("second interrupt: stopping at once"), std::string::npos) << text;
+  // Whole files (a temporary of a write cut short may remain), and the run resumes from its last
+  // checkpoint to the end.
+  expect_readable(dir, true);
+  ASSERT_EQ(test::run_plisse("run " + kCase + " --set solver.steps=300 --resume " + dir.string(),
+                             dir.string() + ".resume.log"),
+            0);
+  expect_readable(dir);
+  EXPECT_EQ(read_history(dir / "history.csv").rows.size(), 300u);
+}
+
 TEST(Restart, TerminatedWhileStepsFailStopsAtOnceKeepingTheLastConvergedStep) {
   // The thick sphere under 10 times its limit pressure: steps fail and are cut back from the
   // first one on (each failed attempt takes seconds), and with solver.min_step = 1e-14 the run

@@ -68,5 +68,19 @@ TEST(SolverFailure, LastStepOfAStoppedRunCarriesItsStepVelocity) {
   EXPECT_NEAR(largest, 20.0, 1e-8);  // the top moves at 20 mm/s
 }
 
+// Requirement: plisse judges convergence itself. -snes_type ksponly makes PETSc take one linear
+// step and report CONVERGED_ITS without any residual test; before, such a run "completed" with
+// states that were not equilibria. Now no step is accepted and the run stops naming the reason.
+TEST(SolverFailure, APetscOptionThatSkipsTheResidualTestCannotConvergeAStep) {
+  const auto dir = test::scratch_directory("solver-ksponly");
+  const auto r = test::run_plisse_captured("run " + test::example("cube-tension-neo-hookean.yaml") +
+                                           " --set solver.steps=2 -o " + dir.string() +
+                                           " --petsc '-snes_type ksponly'");
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find("without plisse's residual test"), std::string::npos) << r.output;
+  EXPECT_TRUE(read_history(dir / "history.csv").rows.empty());
+  EXPECT_FALSE(read_json_file(dir / "summary.json")["completed"].get<bool>());
+}
+
 }  // namespace
 }  // namespace plisse
