@@ -60,7 +60,8 @@ void check_case(const CheckOptions& options) {
   const Mesh mesh = load_perturbed_mesh(c);  // with the imperfection, as `plisse run` builds it
   // The same rules `plisse run` applies before solving (symmetry planes, conflicting conditions).
   // Material, conditions and terms: loads, cavities and dies validate their surfaces here.
-  build_model_parts(c, mesh);
+  const ModelParts parts = build_model_parts(c, mesh);
+  check_rigid_pieces(c, mesh, parts.constraints);
   {
     PetscSession petsc({"-no_signal_handler", c.solver.petsc_options});
     check_solver_options(c, {});

@@ -1,7 +1,9 @@
 #include "app/model_builder.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <set>
 
 #include "mesh/topology.hpp"
@@ -50,6 +52,52 @@ void check_free_displacements(const Case& c, const Mesh& mesh,
                      "solve");
 }
 
+}  // namespace
+
+void check_rigid_pieces(const Case& c, const Mesh& mesh,
+                        const std::vector<ConstrainedComponent>& constraints) {
+  // Dies, surface contacts and caps can hold a piece, and viscosity (solver.viscosity) makes a
+  // free one solvable: then the pieces are not judged.
+  if (!c.dies.empty() || !c.contacts.empty() || !c.caps.empty() || c.solver.viscosity > 0.0) return;
+  std::vector<int> parent(mesh.n_nodes());
+  for (int v = 0; v < mesh.n_nodes(); ++v) parent[v] = v;
+  const auto root = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const auto& t : mesh.tets)
+    for (int k = 1; k < 4; ++k) parent[root(t[k])] = root(t[0]);
+  std::vector<char> held(mesh.n_nodes(), 0);
+  for (const ConstrainedComponent& cc : constraints) held[root(cc.node)] = 1;
+  std::vector<int> tets_of(mesh.n_nodes(), 0);
+  for (const auto& t : mesh.tets) ++tets_of[root(t[0])];
+  int pieces = 0, free_piece = -1;
+  for (int v = 0; v < mesh.n_nodes(); ++v) {
+    if (root(v) != v || tets_of[v] == 0) continue;
+    ++pieces;
+    if (!held[v] && free_piece < 0) free_piece = v;
+  }
+  if (free_piece < 0) return;
+  Vec3d centre = Vec3d::Zero();
+  int n = 0;
+  for (int v = 0; v < mesh.n_nodes(); ++v)
+    if (root(v) == free_piece) {
+      centre += mesh.nodes[v];
+      ++n;
+    }
+  centre /= std::max(n, 1);
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "%s of %d tetrahedra (centred near [%.4g, %.4g, %.4g]) is held by no boundary "
+                "condition: it can move as a rigid body, so the tangent is singular; fix or "
+                "prescribe some of its displacements, or add solver.viscosity",
+                pieces > 1 ? "a piece of the mesh" : "the body", tets_of[free_piece], centre.x(),
+                centre.y(), centre.z());
+  throw InputError({c.path, 0, 0, "boundary"}, text);
+}
+
+namespace {
+
 /// The term of a `contacts:` item; penalty and search distance default to the surfaces' mean
 /// edge length h (surface-contact.md, N8): the penalty the dies' 10 mu / h (contact.md, D11) with
 /// the material's small-strain shear modulus `mu`.
@@ -67,6 +115,72 @@ std::unique_ptr<ModelTerm> make_surface_contact_term(const SurfaceContactPair& p
   settings.penalty = pair.penalty > 0.0 ? pair.penalty : default_die_penalty(mu, h);
   settings.search_distance = pair.search_distance > 0.0 ? pair.search_distance : h;
   return std::make_unique<SurfaceContact>(mesh, settings, first, second, self);
+}
+
+/// The signed gap at t = 0 of the node of `triangles` farthest from the die on the side that
+/// `worse` prefers (the most penetrating one: worse(a, b) = a < b; the farthest: |a| > |b|).
+struct NodeGap {
+  int node = -1;
+  double g = 0.0;
+};
+template <class Worse>
+NodeGap extreme_gap(const DieGeometry& geometry, const Mesh& mesh,
+                    const std::vector<std::array<int, 3>>& triangles, Worse worse) {
+  NodeGap extreme;
+  for (const auto& t : triangles)
+    for (const int v : t) {
+      double g = 0.0;
+      try {
+        g = geometry.gap(mesh.nodes[v], 0.0).g;
+      } catch (const Error&) {  // on a sphere's centre or a cylinder's axis: deep inside anyway
+        g = -std::numeric_limits<double>::infinity();
+      }
+      if (extreme.node < 0 || worse(g, extreme.g)) extreme = {v, g};
+    }
+  return extreme;
+}
+
+/// Where a die starts (t = 0) against the body: no node of its contact surface may be inside it
+/// (the first step would have to push the whole penetration out at once, and a deep one pulls the
+/// body through the die), and a sticking region glued from the start must touch it, or the glue
+/// would drag the region across the gap. "Inside" and "touching" allow the larger of the die's
+/// tolerance and a tenth of the surface's mean edge length `h`. InputError at the die otherwise.
+void check_die_start(const Die& die, const DieGeometry& geometry, const Mesh& mesh,
+                     const std::vector<std::array<int, 3>>& candidates,
+                     const std::vector<std::array<int, 3>>& region, double h) {
+  const auto where = [&](const NodeGap& n) {
+    const Vec3d& x = mesh.nodes[n.node];
+    char text[160];
+    std::snprintf(text, sizeof text, "node %d at [%.6g, %.6g, %.6g]", n.node, x.x(), x.y(), x.z());
+    return std::string(text);
+  };
+  const auto mm = [](double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g mm", value);
+    return std::string(text);
+  };
+  // A die placed on the nominal geometry touches a faceted or generated surface only within a
+  // fraction of an element: that much is taken as touching.
+  const double allowed = std::max(die.tolerance, 0.1 * h);
+  const NodeGap deepest =
+      extreme_gap(geometry, mesh, candidates, [](double a, double b) { return a < b; });
+  if (deepest.node >= 0 && deepest.g < -allowed)
+    throw InputError(die.place,
+                     "the die starts inside the body: " + where(deepest) +
+                         " of its contact "
+                         "surface is " +
+                         (std::isfinite(deepest.g) ? mm(-deepest.g) : std::string("deep")) +
+                         " inside it at t = 0 (at most " + mm(allowed) +
+                         " is taken as touching); place the die outside the body");
+  if (region.empty()) return;
+  const NodeGap farthest = extreme_gap(
+      geometry, mesh, region, [](double a, double b) { return std::abs(a) > std::abs(b); });
+  if (farthest.node >= 0 && std::abs(farthest.g) > allowed)
+    throw InputError(die.place, "the sticking region '" + die.region->name +
+                                    "' is glued to the die from the start, but " + where(farthest) +
+                                    " is " + mm(std::abs(farthest.g)) +
+                                    " from it at t = 0 (at most " + mm(allowed) +
+                                    " is taken as touching); place the die against the region");
 }
 
 /// The contact term of `die`: candidates are the nodes of `die.surface`, or of
@@ -89,6 +203,7 @@ std::unique_ptr<ModelTerm> make_die_term(const Die& die, const Case& c, const Me
   settings.penalty = die.penalty > 0.0 ? die.penalty : default_die_penalty(mu, h);
   const DieGeometry geometry(die.shape, die.point, die.normal, die.axis, die.radius,
                              die.displacement, die.ramp);
+  check_die_start(die, geometry, mesh, candidates, region, h);
   return std::make_unique<DieContact>(mesh, geometry, settings, candidates, region);
 }
 

@@ -32,6 +32,14 @@ struct ModelParts {
 /// PETSc. Throws InputError at the offending key. Borrows `mesh`.
 ModelParts build_model_parts(const Case& c, const Mesh& mesh);
 
+/// A piece of the mesh (tetrahedra connected through nodes) with no node in `constraints` moves
+/// as a rigid body: the tangent is singular and every step would fail after its cut-backs.
+/// Throws InputError (key `boundary`) naming the piece's size and centre; cases with dies,
+/// contacts, caps or solver.viscosity, which can hold or stabilise a piece, are not judged.
+/// `plisse check` and `plisse run` call it after build_model_parts.
+void check_rigid_pieces(const Case& c, const Mesh& mesh,
+                        const std::vector<ConstrainedComponent>& constraints);
+
 /// The model of `parts` on `mesh` (borrowed). Needs a live PetscSession.
 std::unique_ptr<MixedModel> make_model(const Mesh& mesh, ModelParts parts);
 

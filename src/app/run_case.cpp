@@ -412,6 +412,7 @@ void run_case(const RunOptions& options) {
 
   // Everything that can be rejected is checked before the run directory is touched.
   ModelParts parts = build_model_parts(c, mesh);
+  check_rigid_pieces(c, mesh, parts.constraints);
 
   // PETSc's own signal handler would abort on SIGINT/SIGTERM; plisse checkpoints instead.
   PetscSession petsc({"-no_signal_handler", c.solver.petsc_options});

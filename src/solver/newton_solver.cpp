@@ -327,9 +327,13 @@ NewtonResult NewtonSolver::run() {
   PetscReal* h = nullptr;
   PLISSE_PETSC(SNESGetConvergenceHistory(snes_, &h, nullptr, &n_history));
   result.residual_history.insert(result.residual_history.end(), h, h + n_history);
-  // An interrupted solve has reason < 0; a converged reason counts only when plisse's residual
-  // test gave it.
-  result.converged = reason > 0 && passed_test_ && last_status_.ok;
+  // An interrupted solve has reason < 0. A converged reason counts when it is a residual test:
+  // plisse's (converged()), or PETSc's own ||F|| reasons (it sets FNORM_ABS itself on some
+  // paths); CONVERGED_ITS after one linear step (-snes_type ksponly) or a step-length reason is
+  // not a residual test.
+  const bool residual_test =
+      passed_test_ || reason == SNES_CONVERGED_FNORM_ABS || reason == SNES_CONVERGED_FNORM_RELATIVE;
+  result.converged = reason > 0 && residual_test && last_status_.ok;
   result.reference_norm = reference_norm_;
   // The freshest factor is now SNES's own, when it factorised in a solve that converged; one made
   // at the iterates of a failed solve is not reused.
@@ -343,7 +347,7 @@ NewtonResult NewtonSolver::run() {
   result.iterations = static_cast<int>(its);
   result.residual_norm = result.residual_history.empty() ? 0.0 : result.residual_history.back();
   result.reason = interrupted_ ? "interrupted" : SNESConvergedReasons[reason];
-  if (reason > 0 && !passed_test_)
+  if (reason > 0 && !residual_test)
     result.reason +=
         " without plisse's residual test (a PETSc option such as -snes_type ksponly "
         "skips it): the state is not accepted";

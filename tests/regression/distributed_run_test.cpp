@@ -261,23 +261,19 @@ TEST(DistributedRun, IterativeSolverOnTwoRanksMatchesTheClosedForm) {
   expect_same_history(one, two, 1e-6);
 }
 
+/// Two ranks started by the launcher itself, as a user's `mpirun -n 2 plisse run ...`.
+const std::string kMpiexec2 =
+    "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
+    "OMPI_MCA_rmaps_base_oversubscribe=1 mpiexec -q -n 2 ";
+
 TEST(DistributedRun, RankCountOutsideTheJobIsABadInput) {
   // Inside an MPI job of 2 ranks, -n must say 2.
   const fs::path dir = scratch_directory("distributed-mismatch");
-  const std::string command =
-      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
-      "OMPI_MCA_rmaps_base_oversubscribe=1 mpiexec -q -n 2 " +
-      std::string(PLISSE_BINARY_DIR) + "/bin/plisse run -n 3 '" +
-      example("cube-tension-neo-hookean.yaml") + "' -o '" + dir.string() + "' 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string output;
-  char buffer[4096];
-  while (const std::size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
-  const int status = pclose(pipe);
-  ASSERT_TRUE(WIFEXITED(status)) << output;
-  EXPECT_EQ(WEXITSTATUS(status), 2) << output;
-  EXPECT_NE(output.find("-n 3 inside an MPI job of 2 ranks"), std::string::npos) << output;
+  const auto r = run_plisse_captured(
+      "run -n 3 '" + example("cube-tension-neo-hookean.yaml") + "' -o '" + dir.string() + "'",
+      kMpiexec2);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("-n 3 inside an MPI job of 2 ranks"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(dir / "history.csv"));
 }
 
@@ -293,19 +289,10 @@ TEST(DistributedRun, BadCaseIsRefusedBeforeTheRanksStart) {
 TEST(DistributedRun, LaunchersStartTheRanksWithoutARankCount) {
   // mpirun -n 2 plisse run CASE: the ranks take the job's size; -n after `run` is optional.
   const fs::path dir = scratch_directory("distributed-launcher");
-  const std::string command =
-      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
-      "OMPI_MCA_rmaps_base_oversubscribe=1 mpiexec -q -n 2 " +
-      std::string(PLISSE_BINARY_DIR) + "/bin/plisse run '" +
-      example("cube-tension-neo-hookean.yaml") + "' -o '" + dir.string() + "' 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string output;
-  char buffer[4096];
-  while (const std::size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
-  const int status = pclose(pipe);
-  ASSERT_TRUE(WIFEXITED(status)) << output;
-  ASSERT_EQ(WEXITSTATUS(status), 0) << output;
+  const auto r = run_plisse_captured(
+      "run '" + example("cube-tension-neo-hookean.yaml") + "' -o '" + dir.string() + "'",
+      kMpiexec2);
+  ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(read_json_file(dir / "summary.json")["ranks"].get<int>(), 2);
 }
 

@@ -26,39 +26,17 @@ namespace fs = std::filesystem;
 
 const std::string kCase = std::string(PLISSE_SOURCE_DIR) + "/tests/regression/restart-case.yaml";
 
-/// Starts `plisse run case_file -o dir [--set S ...]` in the background; returns its pid.
+/// Starts `plisse run case_file -o dir [--set S ...]` in the background (output in dir.log);
+/// returns its pid.
 pid_t start_run(const fs::path& dir, const std::string& case_file = kCase,
                 const std::vector<std::string>& sets = {}) {
-  const std::string exe = std::string(PLISSE_BINARY_DIR) + "/bin/plisse";
-  std::vector<std::string> args = {exe, "run", case_file, "-o", dir.string()};
+  std::vector<std::string> args = {"run", case_file, "-o", dir.string()};
   for (const auto& set : sets) args.insert(args.end(), {"--set", set});
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const std::string log = dir.string() + ".log";
-    freopen(log.c_str(), "w", stdout);
-    freopen(log.c_str(), "a", stderr);
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execv(exe.c_str(), argv.data());
-    _exit(127);
-  }
-  return pid;
-}
-
-/// Number of data rows in dir/history.csv (0 while it does not exist).
-size_t history_rows(const fs::path& dir) {
-  std::ifstream in(dir / "history.csv");
-  size_t lines = 0;
-  for (std::string line; std::getline(in, line);) ++lines;
-  return lines > 0 ? lines - 1 : 0;
+  return test::start_plisse(args, dir.string() + ".log");
 }
 
 void wait_for_rows(const fs::path& dir, size_t rows) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (history_rows(dir) < rows && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  ASSERT_GE(history_rows(dir), rows) << "the run did not get far enough";
+  ASSERT_TRUE(test::wait_for_history_rows(dir, rows)) << "the run did not get far enough";
 }
 
 /// Every file of the run directory parses whole (no truncated output). A run killed mid-write
@@ -234,7 +212,7 @@ TEST(Restart, TerminatedWhileStepsFailStopsAtOnceKeepingTheLastConvergedStep) {
   EXPECT_NE(log.find("interrupted by a signal during step"), std::string::npos) << log;
   const auto summary = read_json_file(dir / "summary.json");
   EXPECT_TRUE(summary["interrupted"].get<bool>());
-  const size_t steps = history_rows(dir);
+  const size_t steps = test::history_rows(dir);
   EXPECT_EQ(summary["steps"].get<size_t>(), steps);
   if (steps > 0) {
     EXPECT_TRUE(fs::exists(dir / "checkpoint.bin"));

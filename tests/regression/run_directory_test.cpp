@@ -49,35 +49,12 @@ std::map<std::string, std::string> snapshot(const fs::path& dir) {
 
 test::PlisseResult run(const std::string& args) { return test::run_plisse_captured(args); }
 
-/// Starts `plisse ARGS...` in the background with its output in `log`; returns its pid.
 pid_t start(const std::vector<std::string>& args, const fs::path& log) {
-  const std::string exe = std::string(PLISSE_BINARY_DIR) + "/bin/plisse";
-  const pid_t pid = fork();
-  if (pid == 0) {
-    if (!freopen(log.c_str(), "w", stdout) || !freopen(log.c_str(), "a", stderr)) _exit(126);
-    std::vector<std::string> words = {exe};
-    words.insert(words.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (auto& w : words) argv.push_back(w.data());
-    argv.push_back(nullptr);
-    execv(exe.c_str(), argv.data());
-    _exit(127);
-  }
-  return pid;
-}
-
-std::size_t rows(const fs::path& dir) {
-  std::ifstream in(dir / "history.csv");
-  std::size_t lines = 0;
-  for (std::string line; std::getline(in, line);) ++lines;
-  return lines > 0 ? lines - 1 : 0;
+  return test::start_plisse(args, log);
 }
 
 bool wait_for_rows(const fs::path& dir, std::size_t n) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (rows(dir) < n && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  return rows(dir) >= n;
+  return test::wait_for_history_rows(dir, n);
 }
 
 TEST(RunDirectory, RerunIntoAFinishedRunIsRefusedAndLeavesItByteForByte) {

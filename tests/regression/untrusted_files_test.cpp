@@ -30,18 +30,10 @@ struct Outcome {
 
 /// `plisse ARGS` under timeout 30 and ulimit -v 4 GiB.
 Outcome plisse(const std::string& args) {
-  const std::string command = "ulimit -v 4194304; timeout 30 " + std::string(PLISSE_BINARY_DIR) +
-                              "/bin/plisse " + args + " 2>&1";
   const auto start = std::chrono::steady_clock::now();
-  Outcome r;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  char buffer[4096];
-  while (const std::size_t n = fread(buffer, 1, sizeof buffer, pipe)) r.output.append(buffer, n);
-  const int status = pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return r;
+  const test::PlisseResult r = test::run_plisse_captured(args, "ulimit -v 4194304; timeout 30 ");
+  return {r.status, r.output,
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
 }
 
 const std::string kCube = test::example("cube-tension-neo-hookean.yaml");

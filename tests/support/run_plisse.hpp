@@ -1,11 +1,16 @@
 #pragma once
 /// Test helpers that run the built `plisse` executable and read its run directory.
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 namespace plisse::test {
 
@@ -31,8 +36,11 @@ struct PlisseResult {
   std::string output;
 };
 
-inline PlisseResult run_plisse_captured(const std::string& args) {
-  const std::string command = std::string(PLISSE_BINARY_DIR) + "/bin/plisse " + args + " 2>&1";
+/// `prefix` goes before the executable in the shell command: a launcher or limits, e.g.
+/// "mpiexec -n 2 " or "ulimit -v 4194304; timeout 30 ".
+inline PlisseResult run_plisse_captured(const std::string& args, const std::string& prefix = "") {
+  const std::string command =
+      prefix + std::string(PLISSE_BINARY_DIR) + "/bin/plisse " + args + " 2>&1";
   PlisseResult r;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return r;
@@ -45,6 +53,41 @@ inline PlisseResult run_plisse_captured(const std::string& args) {
 
 inline std::string example(const std::string& name) {
   return std::string(PLISSE_SOURCE_DIR) + "/examples/" + name;
+}
+
+/// Starts `plisse ARGS...` in the background, stdout and stderr in `log`; returns its pid (for
+/// kill and waitpid: the fault tests).
+inline pid_t start_plisse(const std::vector<std::string>& args, const std::filesystem::path& log) {
+  const std::string exe = std::string(PLISSE_BINARY_DIR) + "/bin/plisse";
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (!std::freopen(log.c_str(), "w", stdout) || !std::freopen(log.c_str(), "a", stderr))
+      _exit(126);
+    std::vector<std::string> words = {exe};
+    words.insert(words.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (auto& w : words) argv.push_back(w.data());
+    argv.push_back(nullptr);
+    execv(exe.c_str(), argv.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+/// Data rows of dir/history.csv so far (0 while it does not exist).
+inline std::size_t history_rows(const std::filesystem::path& dir) {
+  std::ifstream in(dir / "history.csv");
+  std::size_t lines = 0;
+  for (std::string line; std::getline(in, line);) ++lines;
+  return lines > 0 ? lines - 1 : 0;
+}
+
+/// Waits (at most a minute) until dir/history.csv has `rows` rows; false if it never does.
+inline bool wait_for_history_rows(const std::filesystem::path& dir, std::size_t rows) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (history_rows(dir) < rows && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  return history_rows(dir) >= rows;
 }
 
 }  // namespace plisse::test

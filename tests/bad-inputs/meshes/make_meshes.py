@@ -85,3 +85,11 @@ open('undefined-node.msh','w').write(v2(unit, [(4, 1, (1,2,4,99))], [(3, 1, 'bod
 bad = list(unit); bad[7] = ('nan', 1, 1); bad[6] = (0, 'inf', 1)
 kuhn = [(1,2,4,8),(1,3,7,8),(1,5,6,8),(1,6,2,8),(1,7,5,8),(1,4,3,8)]
 open('nan-coordinates.msh','w').write(v2(bad, [(4, 1, t) for t in kuhn], [(3, 1, 'body')]))
+# two unit cubes (Kuhn's six tetrahedra each) side by side with a gap between them; the first
+# has a `fixed` face z = 0, the second nothing: a piece that can move as a rigid body
+second = [(x + 2, y, z) for x, y, z in unit]
+bottom = [(1,3,4),(1,4,2)]
+open('two-pieces.msh','w').write(v2(unit + second,
+                                    [(2, 2, t) for t in bottom] + [(4, 1, t) for t in kuhn] +
+                                    [(4, 1, tuple(v + 8 for v in t)) for t in kuhn],
+                                    [(3, 1, 'body'), (2, 2, 'fixed')]))

@@ -466,8 +466,8 @@ boundary:
   - {type: symmetry, surface: left}
 dies:
   - {name: punch, shape: plane, point: [0, 0, 2.5], normal: [0, 0, -1]}
-  - {name: stiff, shape: sphere, point: [1, 1, 5], radius: 2.0, penalty: 7.5, tolerance: 0.01,
-     surface: top, contact: sticking, region: top}
+  - {name: stiff, shape: plane, point: [1, 1, 2], normal: [0, 0, -1], penalty: 7.5,
+     tolerance: 0.01, surface: top, contact: sticking, region: top}
 )";
   const Case c = parse_case_string(text, "contact.yaml");
   const Mesh mesh = load_case_mesh(c);
