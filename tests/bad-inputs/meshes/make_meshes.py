@@ -2,8 +2,9 @@
 """Writes the broken meshes of the bad-input corpus (tests/bad-inputs/README.md) into this folder.
 
 Usage: /usr/bin/python3 make_meshes.py BUILD/bin/plisse
-The valid meshes they are cut from come from `plisse mesh cube --edge 2 --divisions 2`; the others
-are Gmsh 2.2 ASCII written here. Random bytes come from a fixed 64-bit LCG, so the files are the
+The valid meshes they are cut from come from
+`plisse mesh cube --order 1 --edge 2 --divisions 2` (linear: the mesh command's default order is
+2); the others are Gmsh 2.2 ASCII written here. Random bytes come from a fixed 64-bit LCG, so the files are the
 same on every run.
 """
 import os
@@ -16,8 +17,8 @@ plisse = sys.argv[1]
 with tempfile.TemporaryDirectory() as tmp:
     def cube(name, *options):
         path = os.path.join(tmp, name)
-        subprocess.run([plisse, 'mesh', 'cube', '--edge', '2', '--divisions', '2', '-o', path,
-                        *options], check=True, stdout=subprocess.DEVNULL)
+        subprocess.run([plisse, 'mesh', 'cube', '--order', '1', '--edge', '2', '--divisions', '2',
+                        '-o', path, *options], check=True, stdout=subprocess.DEVNULL)
         return path
     c4 = open(cube('c4.msh')).read()
     c4b = open(cube('c4b.msh', '--binary'), 'rb').read()
