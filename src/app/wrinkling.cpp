@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <filesystem>
+#include <set>
 
 #include "analysis/surface_columns.hpp"
 #include "core/error.hpp"
@@ -11,6 +13,8 @@
 #include "io/pvd_writer.hpp"
 #include "io/vtu_reader.hpp"
 #include "mesh/imperfection.hpp"
+#include "mesh/topology.hpp"
+#include "physics/dirichlet.hpp"
 #include "solver/dof_map.hpp"
 
 namespace plisse::app {
@@ -93,9 +97,43 @@ double triangle_area(const Mesh& mesh, const std::array<int, 3>& t) {
 
 }  // namespace
 
+namespace {
+
+/// Nodes of a symmetry surface within rounding (1e-9 of the body's extent) of its plane are put
+/// on it exactly, at the median of their coordinates. The pressure and cavity terms tell a
+/// symmetric tangent by exact coordinates on the planes (pressure_stiffness_is_symmetric): a node
+/// at 1e-16 from x = 0 made the tangent unsymmetric and the factorisation LU. Surfaces that are
+/// not a coordinate plane are left to the boundary condition's own check.
+void snap_to_symmetry_planes(const Case& c, Mesh& mesh) {
+  if (mesh.nodes.empty()) return;
+  Vec3d low = mesh.nodes.front(), high = low;
+  for (const Vec3d& x : mesh.nodes) {
+    low = low.cwiseMin(x);
+    high = high.cwiseMax(x);
+  }
+  const double rounding = 1e-9 * std::max((high - low).maxCoeff(), 1e-300);
+  for (const BoundaryCondition& bc : c.boundary) {
+    if (bc.type != BoundaryType::symmetry) continue;
+    const auto tag = mesh.surface_tags.find(bc.surface.name);
+    if (tag == mesh.surface_tags.end()) continue;
+    const int axis = coordinate_plane_axis(mesh, tag->second);
+    if (axis < 0) continue;
+    const std::set<int> nodes = triangle_nodes(mesh, tag->second);
+    std::vector<double> values;
+    for (const int v : nodes) values.push_back(mesh.nodes[v][axis]);
+    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+    const double plane = values[values.size() / 2];
+    for (const int v : nodes)
+      if (std::abs(mesh.nodes[v][axis] - plane) <= rounding) mesh.nodes[v][axis] = plane;
+  }
+}
+
+}  // namespace
+
 Mesh load_perturbed_mesh(const Case& c) {
   Mesh mesh = load_case_mesh(c);
   check_case_against_mesh(c, mesh);
+  snap_to_symmetry_planes(c, mesh);
   const StabilitySettings& st = c.solver.stability;
   if (st.imperfection <= 0.0) return mesh;
   const double amplitude = st.imperfection * *c.mesh.wall_thickness();
@@ -116,6 +154,7 @@ Mesh load_perturbed_mesh(const Case& c) {
                                           static_cast<std::uint64_t>(st.seed), planes);
     }
     apply_imperfection(mesh, field);
+    snap_to_symmetry_planes(c, mesh);  // the imperfection keeps plane nodes in their plane
   } catch (const InputError&) {
     throw;
   } catch (const Error& e) {

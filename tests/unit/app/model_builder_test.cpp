@@ -1,13 +1,19 @@
 // The model builder's judgement of the element family against the mesh order: a generated mesh
 // follows `element` unless `mesh.order` says otherwise, and a mismatch is an input error placed at
-// the key that caused it.
+// the key that caused it. Nodes within rounding of a symmetry plane are put on it.
 #include "app/model_builder.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <filesystem>
 #include <string>
 
+#include "app/wrinkling.hpp"
 #include "io/case.hpp"
+#include "mesh/generate.hpp"
+#include "mesh/gmsh_io.hpp"
+#include "physics/model_term.hpp"
 
 namespace plisse::app {
 namespace {
@@ -84,6 +90,51 @@ TEST(ModelBuilder, RampsBeyondTheEndTimeAreWarnedAboutAtTheirKeys) {
   const Case whole = parse_case_string(
       text.substr(0, text.find("solver:")) + "solver: {end_time: 4.0}\n", "c.yaml");
   EXPECT_TRUE(setup_warnings(whole).empty());
+}
+
+TEST(ModelBuilder, NodesWithinRoundingOfASymmetryPlaneArePutOnIt) {
+  // An octant shell whose file has one node of the plane x = 0, on the edge of the pressurised
+  // inner surface, at x = 1e-16 (a CAD export's rounding). The follower pressure's tangent is
+  // symmetric only with the open edge exactly on its planes; before, this node made it
+  // unsymmetric and the factorisation LU.
+  MeshGenerationSpec spec;
+  spec.kind = "spherical-shell";
+  spec.inner_radius = 10.0;
+  spec.thickness = 1.0;
+  spec.layers = 1;
+  spec.element_size = 2.0;
+  spec.symmetry = parse_symmetry("octant").value();
+  spec.order = 1;
+  Mesh mesh = generate_mesh(spec);
+  int moved = -1;
+  for (int v = 0; v < mesh.n_nodes() && moved < 0; ++v) {
+    const Vec3d& x = mesh.nodes[v];
+    if (x.x() == 0.0 && x.y() > 1.0 && x.z() > 1.0 && std::abs(x.norm() - 10.0) < 1e-9) moved = v;
+  }
+  ASSERT_GE(moved, 0);
+  mesh.nodes[moved].x() = 1e-16;
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("plisse-snap-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  write_gmsh(mesh, (dir / "shell.msh").string());
+  const std::string text =
+      "element: mini\nmesh: {file: shell.msh}\nmaterial: {model: neo-hookean, c1: 0.0033}\n"
+      "boundary:\n  - {type: symmetry, surface: sym_x}\n  - {type: symmetry, surface: sym_y}\n"
+      "  - {type: symmetry, surface: sym_z}\n"
+      "loads: [{name: gas, type: pressure, surface: inner, value: 1.0e-4}]\n";
+  const Case c = parse_case_string(text, (dir / "case.yaml").string());
+  const Mesh loaded = load_perturbed_mesh(c);
+  EXPECT_EQ(loaded.nodes[moved].x(), 0.0);  // on the plane, exactly
+  const ModelParts parts = build_model_parts(c, loaded);
+  ASSERT_EQ(parts.terms.size(), 1u);
+  EXPECT_TRUE(parts.terms[0]->symmetric());
+  // Off by more than rounding (1e-9 of the extent): not moved, and the tangent says so.
+  mesh.nodes[moved].x() = 5e-8;  // within the plane check (1e-8 of the extent), beyond rounding
+  write_gmsh(mesh, (dir / "shell.msh").string());
+  const Mesh off = load_perturbed_mesh(c);
+  EXPECT_EQ(off.nodes[moved].x(), 5e-8);
+  EXPECT_FALSE(build_model_parts(c, off).terms[0]->symmetric());
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
