@@ -1,7 +1,5 @@
-#include <sched.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -13,6 +11,7 @@
 #include "app/run_case.hpp"
 #include "core/error.hpp"
 #include "io/case.hpp"
+#include "solver/thread_counts.hpp"
 
 namespace plisse::app {
 namespace {
@@ -23,14 +22,6 @@ int launcher_size() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_SIZE", "PMI_SIZE"})
     if (const char* value = std::getenv(name)) return std::atoi(value);
   return 0;
-}
-
-/// The CPUs this process may run on (its affinity mask), at least 1.
-int available_cpus() {
-  cpu_set_t mask;
-  CPU_ZERO(&mask);
-  if (::sched_getaffinity(0, sizeof mask, &mask) != 0) return 1;
-  return std::max(1, CPU_COUNT(&mask));
 }
 
 /// `-n N` outside an MPI job: starts the same command line under `mpiexec -n N` in place of this
@@ -47,7 +38,7 @@ void launch_ranks(int ranks, bool oversubscribe, const RunOptions& options) {
     return;
   }
   if (ranks <= 1) return;
-  if (const int cpus = available_cpus(); ranks > cpus && !oversubscribe)
+  if (const int cpus = affinity_cpus(); ranks > cpus && !oversubscribe)
     throw InputError({"command line", 0, 0, "-n"},
                      "-n " + std::to_string(ranks) + " is more ranks than the " +
                          std::to_string(cpus) +

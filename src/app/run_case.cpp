@@ -11,6 +11,7 @@
 #include "app/run_recorder.hpp"
 #include "app/wrinkling.hpp"
 #include "core/error.hpp"
+#include "core/fnv1a.hpp"
 #include "core/wall_clock.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case.hpp"
@@ -80,14 +81,10 @@ bool any_rank(bool value) {
 /// Every rank builds the mesh on its own (reads or generates it); they must agree, node for node.
 void check_same_mesh_on_every_rank(const Mesh& mesh) {
   if (PetscSession::size() == 1) return;
-  std::uint64_t hash = 1469598103934665603ull;  // FNV-1a over the bytes of nodes and tets
-  const auto add = [&](const void* data, std::size_t bytes) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < bytes; ++i) hash = (hash ^ p[i]) * 1099511628211ull;
-  };
-  for (const auto& x : mesh.nodes) add(x.data(), 3 * sizeof(double));
-  for (const auto& t : mesh.tets) add(t.data(), sizeof t);
-  unsigned long long low = hash, high = hash;
+  Fnv1a hash;  // over the bytes of nodes and tets
+  for (const auto& x : mesh.nodes) hash.add(x.data(), 3 * sizeof(double));
+  for (const auto& t : mesh.tets) hash.add(t.data(), sizeof t);
+  unsigned long long low = hash.value(), high = hash.value();
   PLISSE_PETSC(
       MPI_Allreduce(MPI_IN_PLACE, &low, 1, MPI_UNSIGNED_LONG_LONG, MPI_MIN, PETSC_COMM_WORLD));
   PLISSE_PETSC(

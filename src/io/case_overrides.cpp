@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cstddef>
+#include <utility>
 
 #include "core/error.hpp"
 #include "io/yaml_text.hpp"
@@ -41,16 +42,19 @@ std::vector<PathStep> parse_path(const std::string& path, const std::string& tex
                            "': expected key.path=value with keys separated by '.' and list "
                            "indices as [N], e.g. loads[0].value=1e-3";
   std::vector<PathStep> steps;
+  const auto add = [&](PathStep step) {
+    if (steps.size() >= kMaxPathSteps)
+      fail(path.substr(0, std::min<std::size_t>(path.size(), 200)),
+           "the key path has more than " + std::to_string(kMaxPathSteps) +
+               " parts; the case's deepest keys have a few");
+    steps.push_back(std::move(step));
+  };
   std::size_t i = 0;
   while (true) {
     const std::size_t start = i;
     while (i < path.size() && is_key_char(path[i])) ++i;
     if (i == start) fail(path, hint);
-    if (steps.size() >= kMaxPathSteps)
-      fail(path.substr(0, std::min<std::size_t>(path.size(), 200)),
-           "the key path has more than " + std::to_string(kMaxPathSteps) +
-               " parts; the case's deepest keys have a few");
-    steps.push_back({false, path.substr(start, i - start), 0});
+    add({false, path.substr(start, i - start), 0});
     while (i < path.size() && path[i] == '[') {
       const std::size_t close = path.find(']', i);
       const std::string digits =
@@ -60,11 +64,7 @@ std::vector<PathStep> parse_path(const std::string& path, const std::string& tex
       if (!ok)
         fail(path, "malformed override '" + text + "': the list index '[" + digits +
                        "]' must be a non-negative integer, e.g. [0]");
-      if (steps.size() >= kMaxPathSteps)
-        fail(path.substr(0, std::min<std::size_t>(path.size(), 200)),
-             "the key path has more than " + std::to_string(kMaxPathSteps) +
-                 " parts; the case's deepest keys have a few");
-      steps.push_back({true, {}, static_cast<std::size_t>(std::stoul(digits))});
+      add({true, {}, static_cast<std::size_t>(std::stoul(digits))});
       i = close + 1;
     }
     if (i == path.size()) break;

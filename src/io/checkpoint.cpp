@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "core/error.hpp"
+#include "core/fnv1a.hpp"
 #include "core/input_file.hpp"
 #include "io/atomic_file.hpp"
 
@@ -22,19 +23,6 @@ constexpr std::uint32_t kVersion = 4;
 constexpr std::uint64_t kMaxStrings = 100000;          // --set values in a fingerprint
 constexpr std::uint64_t kMaxStringBytes = 1ull << 20;  // one --set value or path
 constexpr std::int64_t kMaxSteps = 1000000000;
-
-/// FNV-1a, 64 bit: the fingerprints' hash and the checksum (it detects damage, not tampering).
-class Fnv1a {
- public:
-  void add(const void* data, std::size_t n) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < n; ++i) hash_ = (hash_ ^ p[i]) * 1099511628211ull;
-  }
-  std::uint64_t value() const { return hash_; }
-
- private:
-  std::uint64_t hash_ = 1469598103934665603ull;
-};
 
 /// FNV-1a of a file's bytes, read in chunks (a mesh file may be large).
 std::uint64_t hash_file(const std::filesystem::path& path) {

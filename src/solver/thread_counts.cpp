@@ -24,13 +24,6 @@ bool blas_threads_in_environment() {
          std::getenv("GOTO_NUM_THREADS") != nullptr;
 }
 
-int affinity_cpus() {
-  cpu_set_t set;
-  CPU_ZERO(&set);
-  if (sched_getaffinity(0, sizeof set, &set) != 0) return 1;
-  return std::max(1, CPU_COUNT(&set));
-}
-
 int ranks_on_this_node(MPI_Comm comm) {
   MPI_Comm node = MPI_COMM_NULL;
   if (MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node) != MPI_SUCCESS)
@@ -42,6 +35,13 @@ int ranks_on_this_node(MPI_Comm comm) {
 }
 
 }  // namespace
+
+int affinity_cpus() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) != 0) return 1;
+  return std::max(1, CPU_COUNT(&set));
+}
 
 ThreadCounts apply_thread_counts(MPI_Comm comm) {
   ThreadCounts counts;

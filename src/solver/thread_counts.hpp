@@ -26,6 +26,9 @@ struct ThreadCounts {
 /// docs/performance.md).
 ThreadCounts apply_thread_counts(MPI_Comm comm);
 
+/// The CPUs this process may run on (its affinity mask), at least 1.
+int affinity_cpus();
+
 /// The element loops' thread count when MixedModel is not told one: OMP_NUM_THREADS as the
 /// process started when it was set, else what apply_thread_counts chose, else 1.
 int default_assembly_threads();
