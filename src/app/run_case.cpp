@@ -11,7 +11,6 @@
 #include "app/run_recorder.hpp"
 #include "app/wrinkling.hpp"
 #include "core/error.hpp"
-#include "core/fnv1a.hpp"
 #include "core/wall_clock.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case.hpp"
@@ -20,6 +19,7 @@
 #include "io/run_directory.hpp"
 #include "io/run_log.hpp"
 #include "mesh/topology.hpp"
+#include "solver/collective.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/load_stepper.hpp"
 #include "solver/petsc_call.hpp"
@@ -71,20 +71,10 @@ class InterruptGuard {
   void (*previous_term_)(int) = SIG_DFL;
 };
 
-/// True when any rank passes true (collective over PETSC_COMM_WORLD).
-bool any_rank(bool value) {
-  int flag = value ? 1 : 0;
-  PLISSE_PETSC(MPI_Allreduce(MPI_IN_PLACE, &flag, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD));
-  return flag != 0;
-}
-
 /// Every rank builds the mesh on its own (reads or generates it); they must agree, node for node.
 void check_same_mesh_on_every_rank(const Mesh& mesh) {
   if (PetscSession::size() == 1) return;
-  Fnv1a hash;  // over the bytes of nodes and tets
-  for (const auto& x : mesh.nodes) hash.add(x.data(), 3 * sizeof(double));
-  for (const auto& t : mesh.tets) hash.add(t.data(), sizeof t);
-  unsigned long long low = hash.value(), high = hash.value();
+  unsigned long long low = geometry_hash(mesh), high = low;
   PLISSE_PETSC(
       MPI_Allreduce(MPI_IN_PLACE, &low, 1, MPI_UNSIGNED_LONG_LONG, MPI_MIN, PETSC_COMM_WORLD));
   PLISSE_PETSC(
@@ -111,16 +101,6 @@ void check_same_mesh_on_every_rank(const Mesh& mesh) {
   std::fflush(stderr);
   MPI_Abort(PETSC_COMM_WORLD, 1);
   std::abort();
-}
-
-/// `text` as rank 0 has it, on every rank (collective).
-std::string from_root(std::string text) {
-  if (PetscSession::size() == 1) return text;
-  unsigned long length = text.size();
-  PLISSE_PETSC(MPI_Bcast(&length, 1, MPI_UNSIGNED_LONG, 0, PETSC_COMM_WORLD));
-  text.resize(length);
-  PLISSE_PETSC(MPI_Bcast(text.data(), static_cast<int>(length), MPI_CHAR, 0, PETSC_COMM_WORLD));
-  return text;
 }
 
 /// Why a new run may not write into `directory` (empty: it may): the files of an earlier run.
@@ -268,11 +248,18 @@ void solve_and_write(PreparedRun run) {
   if (!refusal.empty()) throw InputError(place, refusal);
   // --overwrite: the earlier run's files go; otherwise what a run killed mid-write left behind
   // (its files themselves are whole: atomic writes and whole-line appends).
-  const int removed = !root                   ? 0
-                      : run.options.overwrite ? remove_run_files(dir.directory())
-                                              : remove_stale_temporaries(dir.directory());
-  RunLog log = root ? RunLog(dir.log_txt(), checkpoint ? LogStart::append : LogStart::replace)
-                    : RunLog({}, nullptr, nullptr);
+  // Rank 0's files: a failure there is agreed by all ranks, which then unwind together.
+  int removed = 0;
+  std::optional<RunLog> root_log;  // other ranks: a log that writes nowhere
+  on_every_rank_alike([&] {
+    if (!root) return;
+    removed = run.options.overwrite ? remove_run_files(dir.directory())
+                                    : remove_stale_temporaries(dir.directory());
+    root_log.emplace(dir.log_txt(), checkpoint ? LogStart::append : LogStart::replace);
+  });
+  if (!root) root_log.emplace(fs::path{}, nullptr, nullptr);
+  RunLog& log = *root_log;
+  const auto flush_log = [&] { on_every_rank_alike([&] { log.flush(); }); };
   log_header(log, run, dir.directory(), *model, n_constrained);
   if (removed > 0)
     log.info("removed " + std::to_string(removed) +
@@ -311,7 +298,7 @@ void solve_and_write(PreparedRun run) {
       recorder.save_checkpoint();
       last_checkpoint = WallClock::now();
     }
-    log.flush();
+    flush_log();
   };
   // SIGINT/SIGTERM stop the stepper before the next step or within the current one (Newton
   // iterations, cut-backs, multiplier updates); the model is back at the last converged step,
@@ -335,7 +322,7 @@ void solve_and_write(PreparedRun run) {
   log.info(line);
   const StepInfo& last = recorder.last_step();
   if (result.interrupted) {
-    log.flush();
+    flush_log();
     // The full command: a resume must repeat the --set values (the checkpoint's fingerprint
     // holds them), each quoted for the shell (keys such as loads[0].value hold brackets).
     std::string command = "plisse run " + run.options.case_file;
@@ -350,12 +337,12 @@ void solve_and_write(PreparedRun run) {
   }
   if (!result.completed) {
     log.error(result.failure);
-    log.flush();
+    flush_log();
     throw SolverError(result.failure + " (last converged step " + std::to_string(last.step) +
                       " at t = " + std::to_string(last.time) + " is written in " +
                       dir.directory().string() + ")");
   }
-  log.flush();
+  flush_log();
 }
 
 }  // namespace
@@ -417,15 +404,20 @@ void run_case(const RunOptions& options) {
   check_solver_options(c, options.petsc_options);
   const ThreadCounts threads = apply_thread_counts(PETSC_COMM_WORLD);
   InterruptGuard interrupts;
+  end_with_launcher();
+  abort_job_when_memory_runs_out();
   check_same_mesh_on_every_rank(mesh);
-  // Input and solver errors from here on arise on every rank alike; anything else (a failed write
-  // on one rank) would leave the others waiting in a collective call, so it ends the whole job.
+  // Input and solver errors from here on arise on every rank alike, and so do failed writes
+  // (on_every_rank_alike); anything else on one rank would leave the others waiting in a
+  // collective call, so it ends the whole job.
   try {
     solve_and_write({options, c, t_start, out_dir, fingerprint, checkpoint, mesh, time_mesh,
                      std::move(parts), interrupts, describe(threads)});
   } catch (const InputError&) {
     throw;
   } catch (const SolverError&) {
+    throw;
+  } catch (const SharedError&) {
     throw;
   } catch (...) {
     if (PetscSession::size() > 1) abort_all_ranks(std::current_exception());

@@ -8,6 +8,7 @@
 #include "io/json_file.hpp"
 #include "io/pvtu_writer.hpp"
 #include "io/vtu_writer.hpp"
+#include "solver/collective.hpp"
 #include "solver/petsc_call.hpp"
 #include "solver/petsc_session.hpp"
 
@@ -77,16 +78,19 @@ void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model
     return;
   }
   // Distributed: each rank writes the piece of its own elements ("step_NNNN_pR.vtu"); once all
-  // are written, rank 0 lists them in `file`, the .pvtu.
+  // are written (the agreement waits for every rank), rank 0 lists them in `file`, the .pvtu.
   const std::string stem = file.stem().string();
   const auto piece = [&](int r) { return stem + "_p" + std::to_string(r) + ".vtu"; };
-  write_vtu_piece(file.parent_path() / piece(model.rank()), mesh, points, model.owned_elements(),
-                  point_fields, cell_fields);
-  PLISSE_PETSC(MPI_Barrier(PETSC_COMM_WORLD));
-  if (model.rank() != 0) return;
-  std::vector<std::string> pieces;
-  for (int r = 0; r < model.n_ranks(); ++r) pieces.push_back(piece(r));
-  write_pvtu(file, pieces, describe_fields(point_fields), describe_fields(cell_fields));
+  on_every_rank_alike([&] {
+    write_vtu_piece(file.parent_path() / piece(model.rank()), mesh, points, model.owned_elements(),
+                    point_fields, cell_fields);
+  });
+  on_every_rank_alike([&] {
+    if (model.rank() != 0) return;
+    std::vector<std::string> pieces;
+    for (int r = 0; r < model.n_ranks(); ++r) pieces.push_back(piece(r));
+    write_pvtu(file, pieces, describe_fields(point_fields), describe_fields(cell_fields));
+  });
 }
 
 }  // namespace
@@ -103,28 +107,33 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
       root_(PetscSession::rank() == 0),
       columns_(c, model, meter),
       previous_state_(model.state()) {
-  std::vector<PvdEntry> pvd_entries;
-  if (resume) {
-    // Every rank checks the files; rank 0 alone keeps writing them.
-    history_.emplace(HistoryWriter::reopen(directory.history_csv()));
-    if (history_->columns() != columns_.names() ||
-        history_->rows().size() < std::size_t(resume->steps))
-      throw InputError({directory.history_csv().string(), 0, 0, "--resume"},
-                       "history.csv does not match the checkpoint");
-    history_->keep_first_rows(resume->steps);
-    for (const PvdEntry& e : read_pvd(directory.solution_pvd()))
-      if (e.time <= resume->time * (1.0 + 1e-12)) pvd_entries.push_back(e);
-    if (!root_) history_.reset();
-  } else if (root_) {
-    history_.emplace(directory.history_csv(), columns_.extra_names());
-  }
-  if (root_) pvd_.emplace(directory.solution_pvd(), pvd_entries);
-  // The spectrum of every written step, cut back like the history on --resume.
-  if (root_ && meter_)
-    spectrum_.emplace(
-        resume ? WrinkleSpectrumWriter::reopen(
-                     directory.directory() / WrinkleSpectrumWriter::kFileName, resume->steps)
-               : WrinkleSpectrumWriter(directory.directory() / WrinkleSpectrumWriter::kFileName));
+  // The files are rank 0's (every rank checks them on --resume): a failure agreed by all.
+  on_every_rank_alike([&] {
+    std::vector<PvdEntry> pvd_entries;
+    if (resume) {
+      // Every rank checks the files; rank 0 alone keeps writing them.
+      history_.emplace(HistoryWriter::reopen(directory.history_csv()));
+      if (history_->columns() != columns_.names() ||
+          history_->rows().size() < std::size_t(resume->steps))
+        throw InputError({directory.history_csv().string(), 0, 0, "--resume"},
+                         "history.csv does not match the checkpoint");
+      for (const PvdEntry& e : read_pvd(directory.solution_pvd()))
+        if (e.time <= resume->time * (1.0 + 1e-12)) pvd_entries.push_back(e);
+      if (root_)
+        history_->keep_first_rows(resume->steps);
+      else
+        history_.reset();
+    } else if (root_) {
+      history_.emplace(directory.history_csv(), columns_.extra_names());
+    }
+    if (root_) pvd_.emplace(directory.solution_pvd(), pvd_entries);
+    // The spectrum of every written step, cut back like the history on --resume.
+    if (root_ && meter_)
+      spectrum_.emplace(
+          resume ? WrinkleSpectrumWriter::reopen(
+                       directory.directory() / WrinkleSpectrumWriter::kFileName, resume->steps)
+                 : WrinkleSpectrumWriter(directory.directory() / WrinkleSpectrumWriter::kFileName));
+  });
 }
 
 void RunRecorder::record(const StepInfo& info) {
@@ -134,7 +143,9 @@ void RunRecorder::record(const StepInfo& info) {
   if (meter_) last_wrinkles_ = meter_->evaluate(model_, fields_);
   const std::vector<double> row =
       columns_.row({info, model_, fields_, averages, last_wrinkles_ ? &*last_wrinkles_ : nullptr});
-  if (history_) history_->add_row(row);
+  on_every_rank_alike([&] {
+    if (history_) history_->add_row(row);
+  });
   output_seconds_ += seconds_since(t_out);
   if (info.new_instability) {
     nlohmann::json eigenvalues = nlohmann::json::array();
@@ -172,8 +183,11 @@ void RunRecorder::write_step_files(const StepInfo& info, const std::vector<doubl
   }
   write_step_vtu(directory_.directory() / name, case_, model_, fields_, step_start, info.dt,
                  point_fields, cell_fields);
-  if (pvd_) pvd_->add(info.time, name);
-  if (spectrum_ && last_wrinkles_) spectrum_->add_step(info.step, info.time, last_wrinkles_->rings);
+  on_every_rank_alike([&] {
+    if (pvd_) pvd_->add(info.time, name);
+    if (spectrum_ && last_wrinkles_)
+      spectrum_->add_step(info.step, info.time, last_wrinkles_->rings);
+  });
   last_written_ = info.step;
   output_seconds_ += seconds_since(t_out);
 }
@@ -181,11 +195,13 @@ void RunRecorder::write_step_files(const StepInfo& info, const std::vector<doubl
 void RunRecorder::save_checkpoint() {
   const StepperState& st = stepper_.state();
   const MixedModel::Snapshot snap = model_.snapshot();  // collective
-  if (root_)
-    write_checkpoint(
-        directory_.directory() / "checkpoint.bin",
-        {identity_.fingerprint, model_.element_family(), st.steps, st.time, st.dt, st.previous_dt,
-         st.previous_state, snap.state, snap.bubbles, snap.term_states, st.negative_pivots});
+  on_every_rank_alike([&] {
+    if (root_)
+      write_checkpoint(
+          directory_.directory() / "checkpoint.bin",
+          {identity_.fingerprint, model_.element_family(), st.steps, st.time, st.dt, st.previous_dt,
+           st.previous_state, snap.state, snap.bubbles, snap.term_states, st.negative_pivots});
+  });
 }
 
 double RunRecorder::finish(const SteppingResult& result, const StartTimes& times) {
@@ -199,9 +215,11 @@ double RunRecorder::finish(const SteppingResult& result, const StartTimes& times
       MPI_Allreduce(MPI_IN_PLACE, &memory_total, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD));
   PLISSE_PETSC(
       MPI_Allreduce(MPI_IN_PLACE, &memory_largest, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD));
-  if (root_)
-    write_json_file(directory_.summary_json(),
-                    summary(result, times, memory_total, memory_largest));
+  on_every_rank_alike([&] {
+    if (root_)
+      write_json_file(directory_.summary_json(),
+                      summary(result, times, memory_total, memory_largest));
+  });
   return memory_total;
 }
 

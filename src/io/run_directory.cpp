@@ -91,6 +91,8 @@ std::vector<std::filesystem::path> run_files(const std::filesystem::path& direct
   std::vector<std::filesystem::path> files;
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
+    // A directory is the user's, whatever its name: never reported, never removed.
+    if (entry.is_directory(error)) continue;
     const std::string name = entry.path().filename().string();
     if (kNames.count(name) > 0 || is_step_file(name)) files.push_back(entry.path());
   }

@@ -7,9 +7,11 @@
 /// Its faces, numbered by the opposite corner, are listed so that the right-hand rule gives the
 /// outward normal: face k is opposite corner k (Gmsh/FEniCS style "face k misses node k").
 #include <array>
+#include <cstdint>
 #include <set>
 #include <vector>
 
+#include "core/fnv1a.hpp"
 #include "core/types.hpp"
 #include "mesh/mesh.hpp"
 
@@ -45,6 +47,15 @@ std::set<int> triangle_nodes(const Mesh& mesh, const std::vector<int>& triangles
 /// The node nearest to `point` (on equal distance the lower index): corners and, on a
 /// second-order mesh, edge nodes alike. O(n_nodes). Precondition: the mesh has nodes.
 int nearest_node(const Mesh& mesh, const Vec3d& point);
+
+/// FNV-1a (64 bit) of the mesh's node coordinates and tetrahedra, bit for bit: two meshes with
+/// the same value are the same mesh (the ranks' agreement, the checkpoint's fingerprint).
+inline std::uint64_t geometry_hash(const Mesh& mesh) {
+  Fnv1a hash;
+  for (const auto& x : mesh.nodes) hash.add(x.data(), 3 * sizeof(double));
+  for (const auto& t : mesh.tets) hash.add(t.data(), sizeof t);
+  return hash.value();
+}
 
 /// The longest edge [mm] of the tetrahedra that have node `v` as a corner or an edge node (the
 /// corner edges: a curved 10-node edge counts by its chord). 0 for a node of no tetrahedron.

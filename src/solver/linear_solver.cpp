@@ -1,6 +1,7 @@
 #include "solver/linear_solver.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
@@ -71,6 +72,85 @@ void request_factor_workspace(int percent) {
   const std::string value = std::to_string(percent);
   for (const char* prefix : {"", "stability_"})
     set_default_option(prefix, "mat_mumps_icntl_14", value.c_str());
+}
+
+std::string FactorMemory::message() const {
+  char text[240];
+  if (status == -19)
+    std::snprintf(text, sizeof text,
+                  "out of memory: the factorisation of the tangent needs %.0f MiB more than the "
+                  "working memory MUMPS may use (ICNTL(23); MUMPS INFOG(1) = -19)",
+                  requested_mib);
+  else
+    std::snprintf(text, sizeof text,
+                  "out of memory: the factorisation of the tangent could not allocate %.0f MiB "
+                  "(MUMPS INFOG(1) = %d)",
+                  requested_mib, status);
+  return text;
+}
+
+FactorMemory factor_memory(Mat F) {
+  FactorMemory memory;
+  MatSolverType type = nullptr;
+  if (F == nullptr || MatFactorGetSolverType(F, &type) != 0 || type == nullptr ||
+      std::string(type) != MATSOLVERMUMPS)
+    return memory;
+  PetscInt status = 0;
+  PLISSE_PETSC(MatMumpsGetInfog(F, 1, &status));
+  memory.status = static_cast<int>(status);
+  switch (status) {
+    case -8:
+    case -9:
+    case -11:
+    case -14:
+    case -15:
+    case -17:
+    case -20:
+      memory.workspace_too_small = true;
+      return memory;
+    case -13:
+    case -19:
+      break;
+    default:
+      return memory;
+  }
+  memory.out_of_memory = true;
+  // INFO(2) of the rank that failed: the size of the allocation refused (-13) or the memory
+  // missing (-19), in entries (8 bytes); negative: in millions. The other ranks have INFO(1) = -1
+  // and INFOG(2) names the failing one.
+  PetscInt local = 0, size = 0;
+  PLISSE_PETSC(MatMumpsGetInfo(F, 1, &local));
+  if (local == status) PLISSE_PETSC(MatMumpsGetInfo(F, 2, &size));
+  const double entries = size < 0 ? -1e6 * static_cast<double>(size) : static_cast<double>(size);
+  memory.requested_mib = entries * 8.0 / (1024.0 * 1024.0);
+  return memory;
+}
+
+namespace {
+WorkspaceGrowth g_workspace_growth;
+}  // namespace
+
+WorkspaceGrowth factor_workspace_growth() { return g_workspace_growth; }
+
+bool grow_factor_workspace(Mat F) {
+  WorkspaceGrowth& growth = g_workspace_growth;
+  if (growth.count >= kMaxWorkspaceGrowths) return false;
+  PetscInt status = 0;
+  PLISSE_PETSC(MatMumpsGetInfog(F, 1, &status));
+  PetscInt percent = 0;
+  PLISSE_PETSC(MatMumpsGetIcntl(F, 14, &percent));
+  const PetscInt grown = std::max<PetscInt>(2 * percent, 40);
+  PLISSE_PETSC(MatMumpsSetIcntl(F, 14, grown));
+  // PETSc reads the factor's options again when it analyses the matrix anew (after a failed
+  // factorisation, for one): the database must hold the new value too.
+  const char* prefix = nullptr;
+  PLISSE_PETSC(MatGetOptionsPrefix(F, &prefix));
+  std::string name = "-";
+  if (prefix) name += prefix;
+  name += "mat_mumps_icntl_14";
+  PLISSE_PETSC(PetscOptionsSetValue(nullptr, name.c_str(), std::to_string(grown).c_str()));
+  growth = {growth.count + 1, static_cast<int>(grown), static_cast<int>(status)};
+  return true;
 }
 
 void configure_iterative(KSP ksp, IS u, IS p, const LinearSolverSettings& settings) {

@@ -26,6 +26,8 @@
 #include <petscis.h>
 #include <petscksp.h>
 
+#include <string>
+
 #include "solver/dof_map.hpp"
 #include "solver/newton_settings.hpp"
 
@@ -78,5 +80,35 @@ void configure_iterative(KSP ksp, IS u, IS p, const LinearSolverSettings& settin
 /// many multipliers (a rigid cap's ties) delays pivots beyond MUMPS' default 20 %, which fails
 /// with INFO(1) = -9. Call before the solvers are set up; needs PETSc initialised.
 void request_factor_workspace(int percent);
+
+/// What a MUMPS factorisation that failed says about memory (MUMPS user's guide, INFOG(1)).
+struct FactorMemory {
+  /// A work array or buffer smaller than the factorisation turned out to need (INFOG(1) = -8,
+  /// -9, -11, -14, -15, -17, -20: "increase ICNTL(14)"): grow_factor_workspace mends it.
+  bool workspace_too_small = false;
+  /// An allocation the system refused (-13), or one beyond the limit ICNTL(23) (-19).
+  bool out_of_memory = false;
+  int status = 0;              ///< INFOG(1)
+  double requested_mib = 0.0;  ///< the allocation refused (-13) or the memory missing (-19)
+  /// out_of_memory: "out of memory: the factorisation ... could not allocate N MiB (MUMPS ...)".
+  std::string message() const;
+};
+
+/// The memory status of `F`'s last factorisation; all false when it did not fail for memory, or
+/// when `F` is null or not a MUMPS factor.
+FactorMemory factor_memory(Mat F);
+
+/// Doubles the workspace margin ICNTL(14) of the MUMPS factor `F` (at least to 40 %) for its next
+/// factorisation. False once it has been doubled kMaxWorkspaceGrowths times in this process.
+bool grow_factor_workspace(Mat F);
+constexpr int kMaxWorkspaceGrowths = 6;
+
+/// What grow_factor_workspace did so far in this process, for the log.
+struct WorkspaceGrowth {
+  int count = 0;    ///< doublings
+  int percent = 0;  ///< the margin ICNTL(14) after the last one [%]
+  int status = 0;   ///< the INFOG(1) that asked for the last one
+};
+WorkspaceGrowth factor_workspace_growth();
 
 }  // namespace plisse

@@ -4,7 +4,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <new>
 
+#include "solver/linear_solver.hpp"
 #include "solver/petsc_call.hpp"
 
 namespace plisse {
@@ -42,6 +44,11 @@ double max_nodal_distance(const std::vector<double>& x, const std::vector<double
 }  // namespace
 
 std::string LoadStepper::describe_failure(const NewtonResult& newton) const {
+  if (newton.out_of_memory)
+    return newton.reason +
+           "; a smaller load step needs as much memory, so the run stops here: run on a machine "
+           "or node with more memory, over more ranks (-n), on a coarser mesh, or with "
+           "solver.newton.linear: {type: iterative}";
   const AssemblyStatus& status = newton.status;
   std::string why = status.ok ? "Newton did not converge (" + newton.reason + ")"
                               : "an element inverted or its bubble did not converge";
@@ -120,6 +127,11 @@ std::string LoadStepper::solve_step(NewtonResult& newton, SteppingResult& result
     }
   } catch (const Error& e) {
     return e.what();
+  } catch (const std::bad_alloc&) {
+    // One rank (a distributed run ends at the failed allocation: run_case's new-handler).
+    newton.out_of_memory = true;
+    newton.reason = "out of memory: an allocation failed while solving the step";
+    return describe_failure(newton);
   }
 }
 
@@ -281,6 +293,19 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
   int cutbacks_this_step = 0;
   char line[256];
   const auto requested = [&] { return interrupt_ && interrupt_(); };
+  // A factorisation whose workspace proved too small was done again with a larger one: said once.
+  int reported_growths = factor_workspace_growth().count;
+  const auto report_workspace_growth = [&](int step) {
+    const WorkspaceGrowth g = factor_workspace_growth();
+    if (g.count == reported_growths) return;
+    reported_growths = g.count;
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "  step %d: the factorisation needed more working memory than MUMPS estimated "
+                  "(INFOG(1) = %d): its margin ICNTL(14) is now %d %%",
+                  step, g.status, g.percent);
+    log(text);
+  };
   const auto stop = [&] {
     result.interrupted = true;
     result.failure = "interrupted during step " + std::to_string(result.steps + 1);
@@ -309,9 +334,14 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
     model_.set_time(t_new);
     NewtonResult newton;
     const std::string failure = solve_step(newton, result);
+    report_workspace_growth(result.steps + 1);
     if (!failure.empty()) {
       model_.restore_converged();
       if (newton.interrupted || requested()) return stop();
+      if (newton.out_of_memory) {
+        result.failure = "step " + std::to_string(result.steps + 1) + ": " + failure;
+        return result;
+      }
       ++result.cutbacks;
       ++cutbacks_this_step;
       const double new_dt = step * settings_.cutback;
@@ -351,6 +381,7 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
     cutbacks_this_step = 0;
     bool switched = false;
     check_stability(info, result, log, switched);
+    report_workspace_growth(info.step);
     // After a switch the last increment holds the jump onto the new branch: no extrapolation.
     if (switched) previous_dt = 0.0;
     on_step(info);

@@ -272,6 +272,31 @@ bool NewtonSolver::iterate_with_factor(NewtonResult& result) {
   return false;
 }
 
+bool NewtonSolver::grow_factor_workspace(NewtonResult& result) {
+  SNESConvergedReason reason;
+  PLISSE_PETSC(SNESGetConvergedReason(snes_, &reason));
+  if (reason != SNES_DIVERGED_LINEAR_SOLVE) return false;
+  const Mat F = factor_of(snes_);
+  const FactorMemory memory = factor_memory(F);
+  if (memory.workspace_too_small) {
+    if (!plisse::grow_factor_workspace(F)) return false;
+    // A factor that failed is not factorised again in place (PETSc skips the numeric phase
+    // after a MUMPS error): a new one, set up from the options that now hold the larger margin.
+    if (reuse_ == F) offer_factor(nullptr);
+    KSP ksp = nullptr;
+    PC pc = nullptr;
+    PLISSE_PETSC(SNESGetKSP(snes_, &ksp));
+    PLISSE_PETSC(KSPGetPC(ksp, &pc));
+    PLISSE_PETSC(PCReset(pc));
+    return true;
+  }
+  if (memory.out_of_memory) {
+    result.out_of_memory = true;
+    result.reason = memory.message();
+  }
+  return false;
+}
+
 NewtonResult NewtonSolver::solve(double rtol) {
   pass_rtol_ = std::max(rtol, rtol_);
   reference_norm_ = 0.0;  // the first residual of run()
@@ -300,9 +325,17 @@ NewtonResult NewtonSolver::run() {
   const auto t0 = WallClock::now();
   bool reuse_converged = false;
   PetscErrorCode code = 0;
+  int earlier_iterations = 0;  // of solves ended by a workspace too small
   try {
     reuse_converged = reuse_enabled_ && reuse_allowed_ && iterate_with_factor(result);
     if (!reuse_converged) code = SNESSolve(snes_, nullptr, x_);
+    while (!reuse_converged && code == 0 && !error_ && !interrupted_ &&
+           grow_factor_workspace(result)) {
+      PetscInt its = 0;
+      PLISSE_PETSC(SNESGetIterationNumber(snes_, &its));
+      earlier_iterations += static_cast<int>(its);
+      code = SNESSolve(snes_, nullptr, x_);
+    }
   } catch (...) {
     times_.linear_solve += seconds_since(t0) - (times_.assembly - assembly_before);
     throw;
@@ -344,8 +377,13 @@ NewtonResult NewtonSolver::run() {
     else if (reuse_ == own)
       offer_factor(nullptr);
   }
-  result.iterations = static_cast<int>(its);
+  result.iterations = earlier_iterations + static_cast<int>(its);
   result.residual_norm = result.residual_history.empty() ? 0.0 : result.residual_history.back();
+  if (result.out_of_memory) {
+    result.interrupted = interrupted_;
+    result.status = last_status_;
+    return result;  // its reason says how much memory was asked for
+  }
   result.reason = interrupted_ ? "interrupted" : SNESConvergedReasons[reason];
   if (reason > 0 && !residual_test)
     result.reason +=

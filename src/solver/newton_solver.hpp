@@ -38,6 +38,9 @@ struct NewtonResult {
   std::string reason;           ///< PETSc's converged/diverged reason, in words
   AssemblyStatus status;        ///< of the last residual evaluation
   bool interrupted = false;     ///< stopped because set_interrupt's test said so
+  /// The factorisation could not allocate its memory (MUMPS INFOG(1) = -13 or -19): `reason`
+  /// says how much it asked for. A smaller load step needs as much: not worth a cut-back.
+  bool out_of_memory = false;
 };
 
 /// Wall time spent per phase [s], accumulated over all solves.
@@ -107,6 +110,11 @@ class NewtonSolver {
   bool iterate_with_factor(NewtonResult& result);
   /// solve() and refine() with pass_rtol_ and reference_norm_ set (0: the first ||R||).
   NewtonResult run();
+  /// After a failed linear solve: when MUMPS's workspace, sized from its analysis's estimate and
+  /// ICNTL(14) percent more, proved too small, doubles that percent on the factor and returns
+  /// true (the solve goes on from the iterate reached); when MUMPS could not allocate memory at
+  /// all, sets `result.out_of_memory` and its reason.
+  bool grow_factor_workspace(NewtonResult& result);
 
   MixedModel& model_;
   SNES snes_ = nullptr;

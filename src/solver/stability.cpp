@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "solver/linear_solver.hpp"
 #include "solver/petsc_call.hpp"
 
 namespace plisse {
@@ -82,26 +83,36 @@ Inertia InertiaCheck::compute() {
                << status.worst_element << ", min J " << status.min_J << ")");
   Mat A = symmetric_operator();
   assembly_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  PLISSE_PETSC(PCSetOperators(pc_, A, A));
   Mat F = nullptr;
-  if (!configured_) {
-    PLISSE_PETSC(PCSetFromOptions(pc_));
-    PLISSE_PETSC(PCFactorSetUpMatSolverType(pc_));
-    PLISSE_PETSC(PCFactorGetMatrix(pc_, &F));
-    // ICNTL(24) = 1: null-pivot detection, so that a singular tangent (a critical point) is
-    // factorised and its null pivots are counted in INFOG(28) instead of failing.
-    PLISSE_PETSC(MatMumpsSetIcntl(F, 24, 1));
-    // In parallel the root front must not go to ScaLAPACK (ICNTL(13) = 1), which computes no
-    // inertia.
-    PetscMPIInt size = 1;
-    PLISSE_PETSC(MPI_Comm_size(PetscObjectComm(reinterpret_cast<PetscObject>(A)), &size));
-    if (size > 1) PLISSE_PETSC(MatMumpsSetIcntl(F, 13, 1));
-    configured_ = true;
-  }
-  PLISSE_PETSC(PCSetUp(pc_));
-  PLISSE_PETSC(PCFactorGetMatrix(pc_, &F));
   MatFactorError error = MAT_FACTOR_NOERROR;
-  PLISSE_PETSC(MatFactorGetError(F, &error));
+  while (true) {
+    PLISSE_PETSC(PCSetOperators(pc_, A, A));
+    if (!configured_) {
+      PLISSE_PETSC(PCSetFromOptions(pc_));
+      PLISSE_PETSC(PCFactorSetUpMatSolverType(pc_));
+      PLISSE_PETSC(PCFactorGetMatrix(pc_, &F));
+      // ICNTL(24) = 1: null-pivot detection, so that a singular tangent (a critical point) is
+      // factorised and its null pivots are counted in INFOG(28) instead of failing.
+      PLISSE_PETSC(MatMumpsSetIcntl(F, 24, 1));
+      // In parallel the root front must not go to ScaLAPACK (ICNTL(13) = 1), which computes no
+      // inertia.
+      PetscMPIInt size = 1;
+      PLISSE_PETSC(MPI_Comm_size(PetscObjectComm(reinterpret_cast<PetscObject>(A)), &size));
+      if (size > 1) PLISSE_PETSC(MatMumpsSetIcntl(F, 13, 1));
+      configured_ = true;
+    }
+    PLISSE_PETSC(PCSetUp(pc_));
+    PLISSE_PETSC(PCFactorGetMatrix(pc_, &F));
+    PLISSE_PETSC(MatFactorGetError(F, &error));
+    if (error == MAT_FACTOR_NOERROR) break;
+    const FactorMemory memory = factor_memory(F);
+    if (memory.out_of_memory) throw SolverError("stability check: " + memory.message());
+    if (!memory.workspace_too_small || !grow_factor_workspace(F)) break;
+    // PETSc does not factorise a failed MUMPS factor again: a new one, from the options that now
+    // hold the larger margin.
+    PLISSE_PETSC(PCReset(pc_));
+    configured_ = false;
+  }
   FE_CHECK(error == MAT_FACTOR_NOERROR,
            "stability check: the LDL^T factorisation of the tangent failed (MatFactorError "
                << static_cast<int>(error) << ")");

@@ -12,6 +12,9 @@
 //  - a strip under a point force, a dead resultant, a follower traction and a rigid end cap
 //    (tests/regression/cases/strip-loads.yaml).
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +23,8 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "io/history_writer.hpp"
 #include "io/json_file.hpp"
@@ -303,6 +308,72 @@ TEST(DistributedRun, MoreRanksThanCpusOnlyWhenAskedFor) {
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("-n 4096 is more ranks than the "), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("mpiexec"), std::string::npos) << r.output;  // refused before it starts
+}
+
+TEST(DistributedRun, AWriteThatFailsOnOneRankEndsEveryRank) {
+  // A file that one rank cannot write: rank 1's piece of step 2 (`piece`), or the .pvtu that rank
+  // 0 alone writes. A directory stands in its place, so the rename onto it fails on that rank only.
+  // Before the ranks agreed on such failures, the other rank waited in its next collective call
+  // and the failing one blocked while freeing the factor: the job hung until killed.
+  for (const std::string blocked : {"step_0002_p1.vtu", "step_0002.pvtu"}) {
+    SCOPED_TRACE(blocked);
+    const fs::path dir = scratch_directory("distributed-write-fails-" + blocked);
+    fs::create_directories(dir / blocked / "inside");  // not empty: it cannot be renamed over
+    const auto r = run_plisse_captured(
+        "run '" + example("sphere-inflation.yaml") + "' -o '" + dir.string() + "'",
+        "timeout -s KILL 120 env " + kMpiexec2);
+    EXPECT_EQ(r.status, 1) << r.output;
+    const std::string rank = blocked == "step_0002_p1.vtu" ? "rank 1: " : "rank 0: ";
+    EXPECT_NE(r.output.find("plisse: error: " + rank + "cannot"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(blocked), std::string::npos) << r.output;
+    // The steps before it are kept.
+    EXPECT_GE(read_history(dir / "history.csv").rows.size(), 1u);
+    EXPECT_TRUE(fs::exists(dir / "step_0001.pvtu"));
+  }
+}
+
+/// Processes of build/bin/plisse whose command line names `dir` (read from /proc).
+std::vector<pid_t> plisse_processes_in(const fs::path& dir) {
+  std::vector<pid_t> found;
+  for (const auto& entry : fs::directory_iterator("/proc")) {
+    const std::string name = entry.path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream in(entry.path() / "cmdline", std::ios::binary);
+    const std::string line{std::istreambuf_iterator<char>(in), {}};
+    const std::string program = line.substr(0, line.find('\0'));
+    if (program.size() >= 10 && program.compare(program.size() - 10, 10, "bin/plisse") == 0 &&
+        line.find(dir.string()) != std::string::npos)
+      found.push_back(static_cast<pid_t>(std::stol(name)));
+  }
+  return found;
+}
+
+TEST(DistributedRun, NoRankOutlivesItsLauncher) {
+  // The launcher killed outright (a scheduler's SIGKILL): its ranks end within seconds, they do
+  // not go on computing or wait for ever in a collective call.
+  const fs::path dir = scratch_directory("distributed-launcher-killed");
+  const std::string exe = std::string(PLISSE_BINARY_DIR) + "/bin/plisse";
+  const std::string command = "exec env " + kMpiexec2 + exe + " run '" +
+                              example("sphere-indentation.yaml") + "' -o '" + dir.string() +
+                              "' >'" + (dir / "launcher.log").string() + "' 2>&1";
+  fs::create_directories(dir);
+  const pid_t launcher = fork();
+  if (launcher == 0) {
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  ASSERT_GT(launcher, 0);
+  const bool started = test::wait_for_history_rows(dir, 1);
+  EXPECT_EQ(plisse_processes_in(dir).size(), 2u);
+  kill(launcher, SIGKILL);
+  waitpid(launcher, nullptr, 0);
+  ASSERT_TRUE(started) << "the run wrote no step within a minute";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while (!plisse_processes_in(dir).empty() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  const std::vector<pid_t> left = plisse_processes_in(dir);
+  EXPECT_TRUE(left.empty()) << left.size() << " rank(s) still running 20 s after the launcher died";
+  for (pid_t pid : left) kill(pid, SIGKILL);  // do not leave them to the next test
 }
 
 }  // namespace

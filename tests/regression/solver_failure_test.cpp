@@ -82,5 +82,54 @@ TEST(SolverFailure, APetscOptionThatSkipsTheResidualTestCannotConvergeAStep) {
   EXPECT_FALSE(read_json_file(dir / "summary.json")["completed"].get<bool>());
 }
 
+TEST(SolverFailure, OutOfMemoryInTheFactorisationStopsAtOnceAndSaysSo) {
+  // MUMPS may use 3 MB of working memory (ICNTL(23)): the first factorisation is refused with
+  // INFOG(1) = -19, as a full machine refuses an allocation with -13. A cut-back needs the same
+  // factor, so the run stops at once, says "out of memory" and how much, and keeps step 0.
+  const auto dir = test::scratch_directory("solver-out-of-memory");
+  const auto r =
+      test::run_plisse_captured("run " + test::example("sphere-inflation.yaml") + " -o " +
+                                dir.string() + " --petsc '-mat_mumps_icntl_23 3'");
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find("step 1: out of memory: the factorisation of the tangent needs "),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("(ICNTL(23); MUMPS INFOG(1) = -19)"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("cutting the step"), std::string::npos) << r.output;
+  const nlohmann::json summary = read_json_file(dir / "summary.json");
+  EXPECT_EQ(summary["cutbacks"].get<int>(), 0);
+  EXPECT_FALSE(summary["completed"].get<bool>());
+  EXPECT_NE(summary["failure"].get<std::string>().find("out of memory"), std::string::npos);
+}
+
+TEST(SolverFailure, AFactorWorkspaceThatProvesTooSmallIsGrownAndTheStepGoesOn) {
+  // The strip with a rigid end cap delays pivots beyond MUMPS's estimate: with no margin
+  // (ICNTL(14) = 0) the factorisation fails with INFOG(1) = -9. plisse doubles the margin (to
+  // 40 %) and factorises again: the same history as with the default margin, no cut-back.
+  const std::string strip =
+      std::string(PLISSE_SOURCE_DIR) + "/tests/regression/cases/strip-loads.yaml";
+  const auto plain = test::scratch_directory("solver-workspace-default");
+  const auto grown = test::scratch_directory("solver-workspace-grown");
+  ASSERT_EQ(test::run_plisse_captured("run " + strip + " -o " + plain.string()).status, 0);
+  const auto r = test::run_plisse_captured("run " + strip + " -o " + grown.string() +
+                                           " --petsc '-mat_mumps_icntl_14 0'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("step 1: the factorisation needed more working memory than MUMPS "
+                          "estimated (INFOG(1) = -9): its margin ICNTL(14) is now 40 %"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(read_json_file(grown / "summary.json")["cutbacks"].get<int>(), 0);
+  const HistoryTable a = read_history(plain / "history.csv"),
+                     b = read_history(grown / "history.csv");
+  ASSERT_EQ(a.columns, b.columns);
+  ASSERT_EQ(a.rows.size(), b.rows.size());
+  for (std::size_t i = 0; i < a.rows.size(); ++i)
+    for (std::size_t k = 0; k < a.columns.size(); ++k)
+      if (a.columns[k] != "residual_norm" && a.columns[k] != "newton_iterations") {
+        EXPECT_NEAR(a.rows[i][k], b.rows[i][k], 1e-10 * (1.0 + std::abs(a.rows[i][k])))
+            << a.columns[k] << ", step " << i + 1;
+      }
+}
+
 }  // namespace
 }  // namespace plisse

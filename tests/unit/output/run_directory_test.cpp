@@ -67,6 +67,8 @@ TEST(RunDirectory, RunFilesAreTheContractsNamesOnly) {
         "step_0002_p0.vtu", "step_0002_p13.vtu", "notes.txt", "step_1.vtk", "step_x.vtu",
         "step_0002_p.vtu", "step_0003_p1.pvtu", "mesh.msh", "history.csv.bak"})
     write_file_atomically(scratch / name, "x");
+  // A directory is the user's whatever its name, also an empty one that remove() would take.
+  std::filesystem::create_directory(scratch / "step_0004.vtu");
   std::vector<std::string> names;
   for (const auto& file : run_files(scratch.path())) names.push_back(file.filename().string());
   EXPECT_EQ(names, (std::vector<std::string>{
@@ -74,9 +76,10 @@ TEST(RunDirectory, RunFilesAreTheContractsNamesOnly) {
                        "step_0002.pvtu", "step_0002_p0.vtu", "step_0002_p13.vtu", "step_12345.vtu",
                        "summary.json", "wrinkle_spectrum.csv"}));
   EXPECT_EQ(remove_run_files(scratch.path()), 11);
-  EXPECT_EQ(entries(scratch.path()),
-            (std::set<std::string>{"notes.txt", "step_1.vtk", "step_x.vtu", "step_0002_p.vtu",
-                                   "step_0003_p1.pvtu", "mesh.msh", "history.csv.bak"}));
+  EXPECT_EQ(
+      entries(scratch.path()),
+      (std::set<std::string>{"notes.txt", "step_1.vtk", "step_x.vtu", "step_0002_p.vtu",
+                             "step_0003_p1.pvtu", "mesh.msh", "history.csv.bak", "step_0004.vtu"}));
 }
 
 TEST(DirectoryLock, OneHolderAtATimeNamedInTheRefusalAndTheFileGoesWithIt) {
