@@ -80,9 +80,9 @@ void recompute_wrinkles(const WrinklesOptions& options) {
 
   const Mesh mesh = load_perturbed_mesh(c);
   // After the mesh file has passed its reader's checks (type, size): it is hashed whole.
-  if (const std::string changes =
-          fingerprint_changes(checkpoint.fingerprint,
-                              run_fingerprint(case_path, run_overrides, c.mesh.file.value_or("")));
+  if (const std::string changes = fingerprint_changes(
+          checkpoint.fingerprint,
+          run_fingerprint(case_path, run_overrides, c.mesh.file.value_or(""), mesh));
       !changes.empty())
     throw InputError({(dir / "checkpoint.bin").string(), 0, 0, "DIR"},
                      "the run's state no longer matches its case (" + case_path + "): " + changes);

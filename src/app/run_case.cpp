@@ -384,7 +384,7 @@ void run_case(const RunOptions& options) {
   const double time_mesh = seconds_since(t0);
   // After the mesh file has passed its reader's checks (type, size): it is hashed whole.
   const RunFingerprint fingerprint =
-      run_fingerprint(options.case_file, options.overrides, c.mesh.file.value_or(""));
+      run_fingerprint(options.case_file, options.overrides, c.mesh.file.value_or(""), mesh);
   if (checkpoint) {
     if (const std::string changes = fingerprint_changes(checkpoint->fingerprint, fingerprint);
         !changes.empty())

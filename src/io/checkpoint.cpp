@@ -9,6 +9,7 @@
 #include "core/fnv1a.hpp"
 #include "core/input_file.hpp"
 #include "io/atomic_file.hpp"
+#include "mesh/topology.hpp"
 
 namespace plisse {
 namespace {
@@ -19,7 +20,7 @@ constexpr char kMagic[8] = {'P', 'L', 'I', 'S', 'S', 'E', 'C', 'K'};
 constexpr char kTrailer[8] = {'E', 'N', 'D', 'C', 'K', 'P', 'T', '1'};
 // 2: negative_pivots after the term states; 3: the element family after the fingerprint;
 // 4: the fingerprint's parts (case text, --set values, mesh file) and a checksum before the trailer
-constexpr std::uint32_t kVersion = 4;
+constexpr std::uint32_t kVersion = 5;
 constexpr std::uint64_t kMaxStrings = 100000;          // --set values in a fingerprint
 constexpr std::uint64_t kMaxStringBytes = 1ull << 20;  // one --set value or path
 constexpr std::int64_t kMaxSteps = 1000000000;
@@ -132,12 +133,13 @@ class Reader {
 
 RunFingerprint run_fingerprint(const std::filesystem::path& case_file,
                                const std::vector<std::string>& overrides,
-                               const std::string& mesh_file) {
+                               const std::string& mesh_file, const Mesh& mesh) {
   RunFingerprint f;
   f.case_text = hash_file(case_file);
   f.overrides = overrides;
   f.mesh_file = mesh_file;
   if (!mesh_file.empty()) f.mesh_bytes = hash_file(mesh_file);
+  f.geometry = geometry_hash(mesh);
   return f;
 }
 
@@ -160,6 +162,10 @@ std::string fingerprint_changes(const RunFingerprint& saved, const RunFingerprin
   else if (saved.mesh_bytes != now.mesh_bytes)
     changes.push_back("the mesh file " + now.mesh_file +
                       " changed since the checkpoint was written");
+  else if (saved.geometry != now.geometry)
+    changes.push_back(
+        "the mesh's nodes or tetrahedra differ from the checkpoint's (a changed imperfection, its "
+        "mode file, or the mesh generator)");
   std::string text;
   for (const auto& c : changes) text += (text.empty() ? "" : "; ") + c;
   return text;
@@ -174,6 +180,7 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& c) {
   for (const auto& o : c.fingerprint.overrides) w.text(o);
   w.text(c.fingerprint.mesh_file);
   w.value(c.fingerprint.mesh_bytes);
+  w.value(c.fingerprint.geometry);
   w.value<std::uint32_t>(c.element == ElementFamily::mini ? 0 : 1);
   w.value<std::int64_t>(c.steps);
   w.value(c.time);
@@ -215,6 +222,7 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
     c.fingerprint.overrides.push_back(r.text("--set value"));
   c.fingerprint.mesh_file = r.text("mesh file");
   c.fingerprint.mesh_bytes = r.value<std::uint64_t>();
+  c.fingerprint.geometry = r.value<std::uint64_t>();
   const auto element = r.value<std::uint32_t>();
   if (element > 1) r.fail("unknown element family");
   c.element = element == 0 ? ElementFamily::mini : ElementFamily::taylor_hood;

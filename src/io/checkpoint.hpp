@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "element/element_family.hpp"
+#include "mesh/mesh.hpp"
 
 namespace plisse {
 
@@ -18,19 +19,23 @@ struct RunFingerprint {
   std::vector<std::string> overrides;  ///< the --set values, in order
   std::string mesh_file;               ///< `mesh.file` as resolved; empty for a generated mesh
   std::uint64_t mesh_bytes = 0;        ///< FNV-1a of the mesh file's bytes (0: generated mesh)
+  /// geometry_hash of the mesh the run solves on: after an imperfection and the snapping to
+  /// symmetry planes, so a changed mode file or generator is seen too.
+  std::uint64_t geometry = 0;
 
   bool operator==(const RunFingerprint&) const = default;
 };
 
 /// The fingerprint of a run of `case_file` with `overrides` on `mesh_file` (empty: a generated
-/// mesh). Reads both files through; throws InputError if one cannot be read.
+/// mesh), solving on `mesh`. Reads both files through; throws InputError if one cannot be read.
 RunFingerprint run_fingerprint(const std::filesystem::path& case_file,
                                const std::vector<std::string>& overrides,
-                               const std::string& mesh_file);
+                               const std::string& mesh_file, const Mesh& mesh);
 
 /// Empty when `now` is the run `saved` belongs to; otherwise what differs, in words: "the case
 /// file changed since the checkpoint was written", "the --set values differ (checkpoint: a, b;
-/// now: a, c)", "the mesh file M changed ...", joined by "; ".
+/// now: a, c)", "the mesh file M changed ...", "the mesh's nodes or tetrahedra differ ...",
+/// joined by "; ".
 std::string fingerprint_changes(const RunFingerprint& saved, const RunFingerprint& now);
 
 struct Checkpoint {

@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 
 namespace plisse {
 namespace {
@@ -61,6 +62,12 @@ class VtuFile {
     const std::streamoff end = in_.tellg();
     if (end < 0) fail("cannot determine the file size");
     size_ = static_cast<std::uint64_t>(end);
+    // Its blocks are read whole into memory: a file beyond half the machine's memory (a sparse
+    // file, or not one of plisse's) is refused before any block is allocated.
+    const std::uint64_t limit = physical_memory_bytes() / 2;
+    if (size_ > limit)
+      fail("is " + std::to_string(size_ >> 20) + " MiB, more than half of this machine's memory (" +
+           std::to_string(physical_memory_bytes() >> 20) + " MiB): too large to read");
   }
 
   [[noreturn]] void fail(const std::string& what) const {

@@ -6,6 +6,7 @@
 #include <array>
 #include <cctype>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -249,9 +250,23 @@ Mesh build_mesh(const RawGmshModel& model, const std::string& path, GmshReadInfo
   node_index.reserve(node_tags.size());
   mesh.nodes.reserve(node_tags.size());
   for (std::size_t i : order) {
-    if (!node_index.emplace(node_tags[i], static_cast<int>(mesh.nodes.size())).second)
-      continue;  // a node listed by two entities (boundary nodes) is the same node
-    mesh.nodes.emplace_back(coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]);
+    const Vec3d x(coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]);
+    const auto [it, added] = node_index.emplace(node_tags[i], static_cast<int>(mesh.nodes.size()));
+    if (added) {
+      mesh.nodes.push_back(x);
+      continue;
+    }
+    // A node listed by two entities (boundary nodes) is the same node, with the same coordinates;
+    // a tag given to two different points would silently move every element that uses it.
+    const Vec3d& first = mesh.nodes[it->second];
+    if (first != x) {
+      char where[200];
+      std::snprintf(where, sizeof where, " at (%.9g, %.9g, %.9g) and at (%.9g, %.9g, %.9g)",
+                    first.x(), first.y(), first.z(), x.x(), x.y(), x.z());
+      throw file_error(path, "node tag " + std::to_string(node_tags[i]) +
+                                 " is given to two points" + where +
+                                 "; every node needs its own tag");
+    }
   }
 
   // Tetrahedra and triangles.

@@ -40,6 +40,24 @@ open('truncated-binary.msh', 'wb').write(c4b[:j + 200])
 # binary v4 cut inside the node block.
 j = c4b.index(b'$Nodes')
 open('truncated-binary-nodes.msh', 'wb').write(c4b[:j + 100])
+# node tag 26 given a second time, to another point (v4: one more node in the last block)
+lines = c4.split('\n')
+i = lines.index('$Nodes')
+blocks, n = [], i + 2
+while not lines[n].startswith('$EndNodes'):
+    count = int(lines[n].split()[3])
+    blocks.append((n, count))
+    n += 1 + 2 * count
+last, count = blocks[-1]
+tags = lines[last + 1:last + 1 + count]
+coords = lines[last + 1 + count:last + 1 + 2 * count]
+header = lines[last].split()
+header[3] = str(count + 1)
+total = lines[i + 1].split()
+total[1] = str(int(total[1]) + 1)
+dup = (lines[:i + 1] + [' '.join(total)] + lines[i + 2:last] + [' '.join(header)] + tags + ['26'] +
+       coords + ['1 2 2.3'] + lines[last + 1 + 2 * count:])
+open('duplicate-node-tag.msh', 'w').write('\n'.join(dup))
 # deterministic pseudo-random bytes (64-bit LCG)
 def garbage(n, seed):
     out = bytearray()

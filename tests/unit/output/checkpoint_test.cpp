@@ -20,7 +20,7 @@ using test::ScratchDir;
 Checkpoint sample() {
   Checkpoint c;
   c.fingerprint = {
-      0x0123456789abcdefull, {"loads[0].value=5", "mesh.layers=3"}, "/m/shell.msh", 42};
+      0x0123456789abcdefull, {"loads[0].value=5", "mesh.layers=3"}, "/m/shell.msh", 42, 7};
   c.element = ElementFamily::taylor_hood;
   c.steps = 17;
   c.time = 0.625;
@@ -127,8 +127,11 @@ TEST(Checkpoint, FingerprintSaysWhatChanged) {
   const ScratchDir dir;
   write_file_atomically(dir / "case.yaml", "title: a\n");
   write_file_atomically(dir / "m.msh", "mesh one");
+  Mesh tet;  // the mesh the run solves on
+  tet.nodes = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  tet.tets = {{0, 1, 2, 3}};
   const auto now = [&](const std::vector<std::string>& sets, const std::string& mesh) {
-    return run_fingerprint(dir / "case.yaml", sets, mesh);
+    return run_fingerprint(dir / "case.yaml", sets, mesh, tet);
   };
   const RunFingerprint saved = now({"a=1"}, (dir / "m.msh").string());
   EXPECT_EQ(fingerprint_changes(saved, now({"a=1"}, (dir / "m.msh").string())), "");
@@ -143,6 +146,12 @@ TEST(Checkpoint, FingerprintSaysWhatChanged) {
             "the case file changed since the checkpoint was written; the mesh file " +
                 (dir / "m.msh").string() + " changed since the checkpoint was written");
   EXPECT_THROW(now({}, (dir / "missing.msh").string()), InputError);
+  // The same files, but a node moved (a changed imperfection or its mode file): seen too.
+  const RunFingerprint before = now({"a=1"}, (dir / "m.msh").string());
+  tet.nodes[3].z() += 1e-12;
+  EXPECT_EQ(fingerprint_changes(before, now({"a=1"}, (dir / "m.msh").string())),
+            "the mesh's nodes or tetrahedra differ from the checkpoint's (a changed imperfection, "
+            "its mode file, or the mesh generator)");
 }
 
 }  // namespace

@@ -4,7 +4,9 @@
 #include "io/vtu_reader.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 
@@ -123,6 +125,16 @@ TEST(VtuReader, UnreadableFilesAreErrors) {
   EXPECT_NE(error_of(dir.path()).find("not a regular file"), std::string::npos);
   write_bytes(dir / "empty.vtu", "");
   EXPECT_NE(error_of(dir / "empty.vtu").find("no <AppendedData>"), std::string::npos);
+}
+
+TEST(VtuReader, AFileLargerThanHalfTheMemoryIsRefusedBeforeAnyBlockIsRead) {
+  // A sparse file: 100 GiB claimed, no blocks on disk; its blocks would be allocated whole.
+  ScratchDir dir;
+  write_bytes(dir / "huge.vtu", "<VTKFile type=\"UnstructuredGrid\">");
+  ASSERT_EQ(truncate((dir / "huge.vtu").c_str(), std::int64_t{100} << 30), 0);
+  EXPECT_NE(error_of(dir / "huge.vtu").find("more than half of this machine's memory"),
+            std::string::npos)
+      << error_of(dir / "huge.vtu");
 }
 
 TEST(VtuReader, ForeignFormatsAreRefusedByName) {
