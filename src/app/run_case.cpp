@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "app/model_builder.hpp"
+#include "app/progress_line.hpp"
 #include "app/run_recorder.hpp"
 #include "app/wrinkling.hpp"
 #include "core/error.hpp"
@@ -188,29 +189,6 @@ void log_header(RunLog& log, const PreparedRun& run, const fs::path& directory,
   log.info(line);
 }
 
-/// The progress line of one converged step.
-std::string progress_line(const StepInfo& info, bool wrinkled, double elapsed) {
-  char line[320];
-  char stability[96] = "";
-  // Unstable: more negative pivots than a stable state has; singular: as many, but a null pivot
-  // (a critical point, or a direction without stiffness).
-  if (info.negative_pivots >= 0 && info.stable)
-    std::snprintf(stability, sizeof stability, "  stable");
-  else if (info.negative_pivots >= 0 && info.negative_pivots != info.expected_negative_pivots)
-    std::snprintf(stability, sizeof stability, "  UNSTABLE (%d/%d neg. pivots)",
-                  info.negative_pivots, info.expected_negative_pivots);
-  else if (info.negative_pivots >= 0)
-    std::snprintf(stability, sizeof stability, "  SINGULAR (%d zero pivot%s)", info.zero_pivots,
-                  info.zero_pivots == 1 ? "" : "s");
-  std::snprintf(line, sizeof line,
-                "step %4d  t %.5g  load %.4f  dt %.3g  newton %2d  reuse %2d  |R| %.3e%s%s%s  "
-                "elapsed %.1fs",
-                info.step, info.time, info.load_factor, info.dt, info.newton_iterations,
-                info.reused_solves, info.residual_norm, stability, wrinkled ? "  wrinkled" : "",
-                info.cutbacks ? "  (after cut-back)" : "", elapsed);
-  return line;
-}
-
 /// Builds the model, steps to the end and writes the run directory through a RunRecorder.
 /// Distributed runs: every rank runs all of it; rank 0 alone writes the log.
 void solve_and_write(PreparedRun run) {
@@ -284,10 +262,13 @@ void solve_and_write(PreparedRun run) {
              " at t = " + std::to_string(checkpoint->time));
 
   WallClock::time_point last_checkpoint = WallClock::now();
+  const WallClock::time_point stepping_start = WallClock::now();
   const auto on_step = [&](const StepInfo& info) {
     recorder.record(info);
     const auto& wrinkles = recorder.last_wrinkles();
-    log.info(progress_line(info, wrinkles && wrinkles->rings.wrinkled, seconds_since(run.start)));
+    log.info(progress_line(info, wrinkles ? &wrinkles->rings : nullptr,
+                           {seconds_since(run.start), seconds_since(stepping_start),
+                            checkpoint ? checkpoint->time : 0.0, c.solver.end_time}));
     // By step count, or by wall time (decided on every rank alike: the write is collective).
     const bool by_count =
         c.output.checkpoint_every > 0 && info.step % c.output.checkpoint_every == 0;
@@ -325,7 +306,9 @@ void solve_and_write(PreparedRun run) {
     flush_log();
     // The full command: a resume must repeat the --set values (the checkpoint's fingerprint
     // holds them), each quoted for the shell (keys such as loads[0].value hold brackets).
+    // A distributed run is resumed on as many ranks.
     std::string command = "plisse run " + run.options.case_file;
+    if (model->n_ranks() > 1) command += " -n " + std::to_string(model->n_ranks());
     for (const auto& o : run.options.overrides) {
       std::string quoted = "'";
       for (char ch : o) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);

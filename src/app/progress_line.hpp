@@ -1,0 +1,31 @@
+#pragma once
+/// The progress line `plisse run` prints (and writes to log.txt) after every converged step.
+#include <string>
+
+#include "analysis/wrinkle_rings.hpp"
+#include "solver/load_stepper.hpp"
+
+namespace plisse::app {
+
+/// Where the run stands in time, for the estimate of the time left.
+struct ProgressClock {
+  double elapsed = 0.0;     ///< wall time since the run started [s] (the line's `elapsed`)
+  double stepping = 0.0;    ///< wall time since this process started stepping [s]
+  double start_time = 0.0;  ///< the model time stepping started from (a resume's checkpoint) [s]
+  double end_time = 1.0;    ///< solver.end_time [s]
+};
+
+/// "step 12  t 0.24  load 0.2400  dt 0.02  newton  6  reuse  4  |R| 1.017e-12  stable  elapsed
+/// 26.0s  left ~1m50s", with, when they apply, "cut-backs N" (failed attempts of this step), the
+/// stability state ("UNSTABLE (3/2 neg. pivots)", "SINGULAR (1 zero pivot)") and the wrinkles
+/// ("wrinkled (ring 30 deg: 12 waves, 0.0123 mm)", the ring of the largest amplitude). `newton`
+/// counts every Newton iteration of the accepted attempt, contact passes included; `wrinkles` may
+/// be null (no rings measured). The time left is the wall time per unit of model time so far,
+/// times the model time still to go; none before the first step or after the last.
+std::string progress_line(const StepInfo& info, const WrinkleReport* wrinkles,
+                          const ProgressClock& clock);
+
+/// A duration for people: "42s", "3m05s", "2h07m".
+std::string format_duration(double seconds);
+
+}  // namespace plisse::app
