@@ -1,8 +1,8 @@
 // `plisse wrinkles DIR [--set output.wrinkles.KEY=VALUE ...]`: recomputes the wrinkle metrics of
 // the last converged state of a finished (or stopped) run (docs/architecture.md, "Interface
 // contract"). The run directory's summary.json names the case and its --set values; checkpoint.bin
-// holds the final state (written at the end of every run). The table replaces "wrinkles" in
-// summary.json, with the step measured and the --set values under "recomputed", and is printed.
+// holds the final state (written at the end of every run). The table goes to DIR/wrinkles.json,
+// with the step measured and the --set values, and is printed; summary.json is not changed.
 // The directory is locked meanwhile: a run writing into it at the same time is refused.
 #include <cstdio>
 #include <filesystem>
@@ -46,7 +46,7 @@ void recompute_wrinkles(const WrinklesOptions& options) {
   const fs::path summary_path = dir / "summary.json";
   if (!fs::exists(summary_path, ec))
     throw InputError(place, "holds no summary.json: not a finished plisse run");
-  // A run still writing here would replace summary.json under this command, or the reverse.
+  // A run still writing here would replace its files under this command, or the reverse.
   const DirectoryLock lock(dir, place);
   nlohmann::json summary;
   try {
@@ -96,17 +96,21 @@ void recompute_wrinkles(const WrinklesOptions& options) {
   }
   const WrinkleMeter meter(c, mesh);
   const WrinkleMeter::Result result = meter.evaluate(*model, model->element_fields());
-  summary["wrinkles"] = wrinkles_json(c, result);
-  // summary.json says the table is not the run's own, and what changed.
-  summary["wrinkles"]["recomputed"] = {
-      {"step", checkpoint.steps}, {"time", checkpoint.time}, {"overrides", options.overrides}};
-  write_json_file(summary_path, summary);
+  // Its own file: summary.json stays the run's, matching history.csv.
+  const nlohmann::json table = {{"case", case_path},
+                                {"run_overrides", run_overrides},
+                                {"step", checkpoint.steps},
+                                {"time", checkpoint.time},
+                                {"overrides", options.overrides},
+                                {"wrinkles", wrinkles_json(c, result)}};
+  write_json_file(dir / "wrinkles.json", table);
 
   std::printf(
       "plisse wrinkles: %s, step %d at t = %g: %s (max amplitude %.4g mm, threshold %.4g mm)\n",
       dir.string().c_str(), checkpoint.steps, checkpoint.time,
       result.rings.wrinkled ? "wrinkled" : "not wrinkled", result.rings.max_amplitude,
       result.rings.threshold);
+  std::printf("  written to %s\n", (dir / "wrinkles.json").string().c_str());
   if (summary.contains("completed") && summary["completed"] == false)
     std::printf(
         "  note: the run did not reach its end time; step %d is its last converged step%s\n",
@@ -139,7 +143,7 @@ void recompute_wrinkles(const WrinklesOptions& options) {
 void add_wrinkles_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "wrinkles",
-      "Recompute the wrinkle metrics of a run's last converged state (updates DIR/summary.json)");
+      "Recompute the wrinkle metrics of a run's last converged state (writes DIR/wrinkles.json)");
   auto options = std::make_shared<WrinklesOptions>();
   cmd->add_option("dir", options->run_directory, "Run directory written by plisse run")->required();
   cmd->add_option("--set", options->overrides,

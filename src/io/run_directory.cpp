@@ -86,8 +86,8 @@ std::string system_reason(int error_number) {
 
 std::vector<std::filesystem::path> run_files(const std::filesystem::path& directory) {
   static const std::set<std::string, std::less<>> kNames = {
-      "history.csv", "summary.json",   "solution.pvd",
-      "log.txt",     "checkpoint.bin", "wrinkle_spectrum.csv"};
+      "history.csv",    "summary.json",         "solution.pvd", "log.txt",
+      "checkpoint.bin", "wrinkle_spectrum.csv", "wrinkles.json"};
   std::vector<std::filesystem::path> files;
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {

@@ -39,9 +39,9 @@ class RunDirectory {
 };
 
 /// The files of a run found in `directory` (sorted): history.csv, summary.json, solution.pvd,
-/// log.txt, checkpoint.bin, wrinkle_spectrum.csv and the step files step_N.vtu, step_N.pvtu and
-/// step_N_pR.vtu (N, R digits). Nothing else in the directory is a run's, nor is a directory
-/// of one of these names.
+/// log.txt, checkpoint.bin, wrinkle_spectrum.csv, wrinkles.json (plisse wrinkles) and the step
+/// files step_N.vtu, step_N.pvtu and step_N_pR.vtu (N, R digits). Nothing else in the directory is
+/// a run's, nor is a directory of one of these names.
 std::vector<std::filesystem::path> run_files(const std::filesystem::path& directory);
 
 /// Removes run_files(directory) and the temporaries dead writers left there

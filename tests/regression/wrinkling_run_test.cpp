@@ -203,24 +203,26 @@ TEST(WrinkleTable, RunWritesItAndPlisseWrinklesReproducesIt) {
   // Another process rebuilds the (imperfect) mesh and the final state: the same table.
   r = run_plisse_captured("wrinkles '" + dir.string() + "'");
   ASSERT_EQ(r.status, 0) << r.output;
-  nlohmann::json again = read_json_file(dir / "summary.json");
-  // It says what it measured: the last step, with no --set values.
-  EXPECT_EQ(again["wrinkles"]["recomputed"],
-            (nlohmann::json{
-                {"step", h.rows.size()}, {"time", 1.0}, {"overrides", nlohmann::json::array()}}));
+  // It writes its own file, saying what it measured: the last step, with no --set values; the
+  // run's summary.json is left as the run wrote it.
+  EXPECT_EQ(read_json_file(dir / "summary.json"), run);
+  nlohmann::json again = read_json_file(dir / "wrinkles.json");
+  EXPECT_EQ(again["step"].get<std::size_t>(), h.rows.size());
+  EXPECT_EQ(again["time"].get<double>(), 1.0);
+  EXPECT_EQ(again["overrides"], nlohmann::json::array());
+  EXPECT_EQ(again["case"], run["case_path"]);
   EXPECT_NE(r.output.find(", step " + std::to_string(h.rows.size()) + " at t = 1:"),
             std::string::npos)
       << r.output;
-  again["wrinkles"].erase("recomputed");
   EXPECT_EQ(again["wrinkles"], w) << again["wrinkles"].dump(1) << "\nvs\n" << w.dump(1);
 
   // Other rings on request; only output.wrinkles.* may change after the run.
   r = run_plisse_captured("wrinkles '" + dir.string() + "' --set output.wrinkles.rings_deg=[30]");
   ASSERT_EQ(r.status, 0) << r.output;
-  again = read_json_file(dir / "summary.json");
+  again = read_json_file(dir / "wrinkles.json");
   EXPECT_EQ(again["wrinkles"]["rings"].size(), 1u);
-  EXPECT_EQ(again["wrinkles"]["recomputed"]["overrides"],
-            nlohmann::json::array({"output.wrinkles.rings_deg=[30]"}));
+  EXPECT_EQ(again["overrides"], nlohmann::json::array({"output.wrinkles.rings_deg=[30]"}));
+  EXPECT_EQ(read_json_file(dir / "summary.json"), run);
   r = run_plisse_captured("wrinkles '" + dir.string() + "' --set mesh.layers=3");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("only output.wrinkles.* can change"), std::string::npos) << r.output;
@@ -333,7 +335,7 @@ TEST(WrinkleCriterion, AFlattenedSphereIsAGlobalShapeNotWrinkles) {
   r = run_plisse_captured("wrinkles '" + dir.string() + "' --set output.wrinkles.peak_ratio=1.2");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("local_shape (m = 4"), std::string::npos) << r.output;
-  const nlohmann::json loose = read_json_file(dir / "summary.json")["wrinkles"];
+  const nlohmann::json loose = read_json_file(dir / "wrinkles.json")["wrinkles"];
   EXPECT_FALSE(loose["wrinkled"].get<bool>());
   EXPECT_EQ(loose["rings"][0]["decision"].get<std::string>(), "local_shape");
   EXPECT_EQ(loose["rings"][0]["count"].get<int>(), 0);

@@ -63,9 +63,9 @@ TEST(RunDirectory, RunFilesAreTheContractsNamesOnly) {
   const ScratchDir scratch;
   for (const char* name :
        {"history.csv", "summary.json", "solution.pvd", "log.txt", "checkpoint.bin",
-        "wrinkle_spectrum.csv", "step_0001.vtu", "step_12345.vtu", "step_0002.pvtu",
-        "step_0002_p0.vtu", "step_0002_p13.vtu", "notes.txt", "step_1.vtk", "step_x.vtu",
-        "step_0002_p.vtu", "step_0003_p1.pvtu", "mesh.msh", "history.csv.bak"})
+        "wrinkle_spectrum.csv", "wrinkles.json", "step_0001.vtu", "step_12345.vtu",
+        "step_0002.pvtu", "step_0002_p0.vtu", "step_0002_p13.vtu", "notes.txt", "step_1.vtk",
+        "step_x.vtu", "step_0002_p.vtu", "step_0003_p1.pvtu", "mesh.msh", "history.csv.bak"})
     write_file_atomically(scratch / name, "x");
   // A directory is the user's whatever its name, also an empty one that remove() would take.
   std::filesystem::create_directory(scratch / "step_0004.vtu");
@@ -74,8 +74,8 @@ TEST(RunDirectory, RunFilesAreTheContractsNamesOnly) {
   EXPECT_EQ(names, (std::vector<std::string>{
                        "checkpoint.bin", "history.csv", "log.txt", "solution.pvd", "step_0001.vtu",
                        "step_0002.pvtu", "step_0002_p0.vtu", "step_0002_p13.vtu", "step_12345.vtu",
-                       "summary.json", "wrinkle_spectrum.csv"}));
-  EXPECT_EQ(remove_run_files(scratch.path()), 11);
+                       "summary.json", "wrinkle_spectrum.csv", "wrinkles.json"}));
+  EXPECT_EQ(remove_run_files(scratch.path()), 12);
   EXPECT_EQ(
       entries(scratch.path()),
       (std::set<std::string>{"notes.txt", "step_1.vtk", "step_x.vtu", "step_0002_p.vtu",
