@@ -1,5 +1,6 @@
 #include "app/progress_line.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 

@@ -86,24 +86,6 @@ void check_same_mesh_on_every_rank(const Mesh& mesh) {
         "reproducible here); write the mesh once with `plisse mesh` and use mesh.file");
 }
 
-/// Ends a distributed job after an error on this rank alone: prints it, then MPI_Abort (exit
-/// status 1), since the other ranks may be waiting in a collective call.
-[[noreturn]] void abort_all_ranks(std::exception_ptr error) {
-  std::string message = "unknown error";
-  try {
-    std::rethrow_exception(error);
-  } catch (const std::exception& e) {
-    message = e.what();
-  } catch (const std::string& e) {
-    message = e;
-  } catch (...) {
-  }
-  std::fprintf(stderr, "plisse: error on rank %d: %s\n", PetscSession::rank(), message.c_str());
-  std::fflush(stderr);
-  MPI_Abort(PETSC_COMM_WORLD, 1);
-  std::abort();
-}
-
 /// Why a new run may not write into `directory` (empty: it may): the files of an earlier run.
 std::string earlier_run_refusal(const fs::path& directory) {
   const std::vector<fs::path> files = run_files(directory);

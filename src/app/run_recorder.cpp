@@ -107,11 +107,10 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
       root_(PetscSession::rank() == 0),
       columns_(c, model, meter),
       previous_state_(model.state()) {
-  // The files are rank 0's (every rank checks them on --resume): a failure agreed by all.
+  // Rank 0 writes the files, every rank checks them on --resume: a failure is agreed by all.
   on_every_rank_alike([&] {
     std::vector<PvdEntry> pvd_entries;
     if (resume) {
-      // Every rank checks the files; rank 0 alone keeps writing them.
       history_.emplace(HistoryWriter::reopen(directory.history_csv()));
       if (history_->columns() != columns_.names() ||
           history_->rows().size() < std::size_t(resume->steps))

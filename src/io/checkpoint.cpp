@@ -19,7 +19,8 @@ static_assert(std::endian::native == std::endian::little, "checkpoints are littl
 constexpr char kMagic[8] = {'P', 'L', 'I', 'S', 'S', 'E', 'C', 'K'};
 constexpr char kTrailer[8] = {'E', 'N', 'D', 'C', 'K', 'P', 'T', '1'};
 // 2: negative_pivots after the term states; 3: the element family after the fingerprint;
-// 4: the fingerprint's parts (case text, --set values, mesh file) and a checksum before the trailer
+// 4: the fingerprint's parts (case text, --set values, mesh file) and a checksum before the
+// trailer; 5: the geometry hash of the mesh solved on, after the mesh file's
 constexpr std::uint32_t kVersion = 5;
 constexpr std::uint64_t kMaxStrings = 100000;          // --set values in a fingerprint
 constexpr std::uint64_t kMaxStringBytes = 1ull << 20;  // one --set value or path

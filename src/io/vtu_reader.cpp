@@ -64,10 +64,10 @@ class VtuFile {
     size_ = static_cast<std::uint64_t>(end);
     // Its blocks are read whole into memory: a file beyond half the machine's memory (a sparse
     // file, or not one of plisse's) is refused before any block is allocated.
-    const std::uint64_t limit = physical_memory_bytes() / 2;
-    if (size_ > limit)
+    const std::uint64_t memory = physical_memory_bytes();
+    if (size_ > memory / 2)
       fail("is " + std::to_string(size_ >> 20) + " MiB, more than half of this machine's memory (" +
-           std::to_string(physical_memory_bytes() >> 20) + " MiB): too large to read");
+           std::to_string(memory >> 20) + " MiB): too large to read");
   }
 
   [[noreturn]] void fail(const std::string& what) const {

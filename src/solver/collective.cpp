@@ -24,6 +24,19 @@ bool any_rank(bool value) {
 }
 
 namespace {
+/// What an exception says: its what(), or the text of a thrown string (Gmsh's API throws them).
+std::string message_of(std::exception_ptr error) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const std::exception& e) {
+    return e.what();
+  } catch (const std::string& e) {
+    return e;
+  } catch (...) {
+    return "an exception of unknown type";
+  }
+}
+
 /// `text` as rank `root` has it, on every rank.
 std::string broadcast(std::string text, int root) {
   unsigned long length = text.size();
@@ -54,12 +67,9 @@ void on_every_rank_alike(const std::function<void()>& work) {
     failed = true;
     input = 1;
     message = e.what();
-  } catch (const std::exception& e) {
-    failed = true;
-    message = e.what();
   } catch (...) {
     failed = true;
-    message = "an exception of unknown type";
+    message = message_of(std::current_exception());
   }
   // The lowest failing rank speaks for all.
   int first = failed ? PetscSession::rank() : size;
@@ -69,6 +79,14 @@ void on_every_rank_alike(const std::function<void()>& work) {
   PLISSE_PETSC(MPI_Bcast(&input, 1, MPI_INT, first, PETSC_COMM_WORLD));
   if (input) throw InputError({}, message);
   throw SharedError("rank " + std::to_string(first) + ": " + message);
+}
+
+void abort_all_ranks(std::exception_ptr error) {
+  std::fprintf(stderr, "plisse: error on rank %d: %s\n", PetscSession::rank(),
+               message_of(error).c_str());
+  std::fflush(stderr);
+  MPI_Abort(PETSC_COMM_WORLD, 1);
+  std::abort();
 }
 
 void end_with_launcher() {

@@ -4,6 +4,7 @@
 /// collective call leaves them waiting there for ever, and its own unwinding blocks too (MUMPS
 /// frees its factor collectively): work that can fail on one rank only, such as writing a file,
 /// goes through `on_every_rank_alike`, so that every rank fails with it and they unwind together.
+#include <exception>
 #include <functional>
 #include <string>
 
@@ -29,6 +30,11 @@ std::string from_root(std::string text);
 /// was one, else a SharedError ("rank R: message"). On one rank, `work`'s own exception passes
 /// unchanged. `work` itself must not call collective operations.
 void on_every_rank_alike(const std::function<void()>& work);
+
+/// Ends a distributed job after an error on this rank alone: prints "plisse: error on rank R:
+/// message", then MPI_Abort (exit status 1), since the other ranks may be waiting in a collective
+/// call.
+[[noreturn]] void abort_all_ranks(std::exception_ptr error);
 
 /// Ties this process to its launcher (mpirun, orted, srun's step daemon) in a distributed run:
 /// when the launcher dies, the kernel kills this rank (Linux PR_SET_PDEATHSIG), so that no rank

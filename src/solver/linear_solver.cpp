@@ -89,12 +89,15 @@ std::string FactorMemory::message() const {
   return text;
 }
 
+bool is_mumps_factor(Mat F) {
+  MatSolverType type = nullptr;
+  return F != nullptr && MatFactorGetSolverType(F, &type) == 0 && type != nullptr &&
+         std::string(type) == MATSOLVERMUMPS;
+}
+
 FactorMemory factor_memory(Mat F) {
   FactorMemory memory;
-  MatSolverType type = nullptr;
-  if (F == nullptr || MatFactorGetSolverType(F, &type) != 0 || type == nullptr ||
-      std::string(type) != MATSOLVERMUMPS)
-    return memory;
+  if (!is_mumps_factor(F)) return memory;
   PetscInt status = 0;
   PLISSE_PETSC(MatMumpsGetInfog(F, 1, &status));
   memory.status = static_cast<int>(status);
@@ -116,13 +119,12 @@ FactorMemory factor_memory(Mat F) {
   }
   memory.out_of_memory = true;
   // INFO(2) of the rank that failed: the size of the allocation refused (-13) or the memory
-  // missing (-19), in entries (8 bytes); negative: in millions. The other ranks have INFO(1) = -1
-  // and INFOG(2) names the failing one.
+  // missing (-19), in entries (8 bytes). The other ranks have INFO(1) = -1 and INFOG(2) names the
+  // failing one.
   PetscInt local = 0, size = 0;
   PLISSE_PETSC(MatMumpsGetInfo(F, 1, &local));
   if (local == status) PLISSE_PETSC(MatMumpsGetInfo(F, 2, &size));
-  const double entries = size < 0 ? -1e6 * static_cast<double>(size) : static_cast<double>(size);
-  memory.requested_mib = entries * 8.0 / (1024.0 * 1024.0);
+  memory.requested_mib = mumps_count(size) * 8.0 / (1024.0 * 1024.0);
   return memory;
 }
 
@@ -132,24 +134,23 @@ WorkspaceGrowth g_workspace_growth;
 
 WorkspaceGrowth factor_workspace_growth() { return g_workspace_growth; }
 
-bool grow_factor_workspace(Mat F) {
+bool grow_factor_workspace(PC pc, const FactorMemory& memory) {
   WorkspaceGrowth& growth = g_workspace_growth;
-  if (growth.count >= kMaxWorkspaceGrowths) return false;
-  PetscInt status = 0;
-  PLISSE_PETSC(MatMumpsGetInfog(F, 1, &status));
+  if (!memory.workspace_too_small || growth.count >= kMaxWorkspaceGrowths) return false;
+  Mat F = nullptr;
+  PLISSE_PETSC(PCFactorGetMatrix(pc, &F));
   PetscInt percent = 0;
   PLISSE_PETSC(MatMumpsGetIcntl(F, 14, &percent));
   const PetscInt grown = std::max<PetscInt>(2 * percent, 40);
-  PLISSE_PETSC(MatMumpsSetIcntl(F, 14, grown));
-  // PETSc reads the factor's options again when it analyses the matrix anew (after a failed
-  // factorisation, for one): the database must hold the new value too.
+  // The next factor is made from the options of this one's prefix.
   const char* prefix = nullptr;
   PLISSE_PETSC(MatGetOptionsPrefix(F, &prefix));
   std::string name = "-";
   if (prefix) name += prefix;
   name += "mat_mumps_icntl_14";
   PLISSE_PETSC(PetscOptionsSetValue(nullptr, name.c_str(), std::to_string(grown).c_str()));
-  growth = {growth.count + 1, static_cast<int>(grown), static_cast<int>(status)};
+  PLISSE_PETSC(PCReset(pc));
+  growth = {growth.count + 1, static_cast<int>(grown), memory.status};
   return true;
 }
 

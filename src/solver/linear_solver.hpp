@@ -94,13 +94,25 @@ struct FactorMemory {
   std::string message() const;
 };
 
+/// True when `F` is a factor made by MUMPS (not null).
+bool is_mumps_factor(Mat F);
+
+/// A count MUMPS reports in INFO/INFOG (entries of a factor or of a work array): a negative value
+/// is the count in millions (MUMPS user's guide).
+inline double mumps_count(PetscInt value) {
+  return value < 0 ? -1e6 * static_cast<double>(value) : static_cast<double>(value);
+}
+
 /// The memory status of `F`'s last factorisation; all false when it did not fail for memory, or
 /// when `F` is null or not a MUMPS factor.
 FactorMemory factor_memory(Mat F);
 
-/// Doubles the workspace margin ICNTL(14) of the MUMPS factor `F` (at least to 40 %) for its next
-/// factorisation. False once it has been doubled kMaxWorkspaceGrowths times in this process.
-bool grow_factor_workspace(Mat F);
+/// After the factorisation of `pc` failed with `memory.workspace_too_small`: doubles the margin
+/// ICNTL(14) (at least to 40 %) in the options of the factor's prefix and resets `pc`, so that
+/// its next set-up makes a new factor with that margin (PETSc does not factorise a failed MUMPS
+/// factor again). False, with nothing done, for another failure or once the margin has been
+/// doubled kMaxWorkspaceGrowths times in this process.
+bool grow_factor_workspace(PC pc, const FactorMemory& memory);
 constexpr int kMaxWorkspaceGrowths = 6;
 
 /// What grow_factor_workspace did so far in this process, for the log.

@@ -205,14 +205,10 @@ PhaseTimes NewtonSolver::times() const {
 
 double NewtonSolver::factor_entries() const {
   const Mat F = factor_of(snes_);
-  if (F == nullptr) return -1.0;
-  MatSolverType type = nullptr;
-  PLISSE_PETSC(MatFactorGetSolverType(F, &type));
-  if (type == nullptr || std::string(type) != MATSOLVERMUMPS) return -1.0;
+  if (!is_mumps_factor(F)) return -1.0;
   PetscInt entries = 0;
   if (MatMumpsGetInfog(F, 29, &entries) != 0) return -1.0;
-  // INFOG(29) counts entries; a negative value is the count in millions (MUMPS user guide).
-  return entries < 0 ? -1e6 * static_cast<double>(entries) : static_cast<double>(entries);
+  return mumps_count(entries);  // INFOG(29): entries of the factor
 }
 
 void NewtonSolver::offer_factor(Mat factor) {
@@ -279,16 +275,12 @@ bool NewtonSolver::grow_factor_workspace(NewtonResult& result) {
   const Mat F = factor_of(snes_);
   const FactorMemory memory = factor_memory(F);
   if (memory.workspace_too_small) {
-    if (!plisse::grow_factor_workspace(F)) return false;
-    // A factor that failed is not factorised again in place (PETSc skips the numeric phase
-    // after a MUMPS error): a new one, set up from the options that now hold the larger margin.
-    if (reuse_ == F) offer_factor(nullptr);
+    if (reuse_ == F) offer_factor(nullptr);  // a failed factor is no use to reuse
     KSP ksp = nullptr;
     PC pc = nullptr;
     PLISSE_PETSC(SNESGetKSP(snes_, &ksp));
     PLISSE_PETSC(KSPGetPC(ksp, &pc));
-    PLISSE_PETSC(PCReset(pc));
-    return true;
+    return plisse::grow_factor_workspace(pc, memory);
   }
   if (memory.out_of_memory) {
     result.out_of_memory = true;
@@ -379,16 +371,13 @@ NewtonResult NewtonSolver::run() {
   }
   result.iterations = earlier_iterations + static_cast<int>(its);
   result.residual_norm = result.residual_history.empty() ? 0.0 : result.residual_history.back();
-  if (result.out_of_memory) {
-    result.interrupted = interrupted_;
-    result.status = last_status_;
-    return result;  // its reason says how much memory was asked for
+  if (!result.out_of_memory) {  // else its reason says how much memory was asked for
+    result.reason = interrupted_ ? "interrupted" : SNESConvergedReasons[reason];
+    if (reason > 0 && !residual_test)
+      result.reason +=
+          " without plisse's residual test (a PETSc option such as -snes_type ksponly "
+          "skips it): the state is not accepted";
   }
-  result.reason = interrupted_ ? "interrupted" : SNESConvergedReasons[reason];
-  if (reason > 0 && !residual_test)
-    result.reason +=
-        " without plisse's residual test (a PETSc option such as -snes_type ksponly "
-        "skips it): the state is not accepted";
   result.interrupted = interrupted_;
   result.status = last_status_;
   return result;

@@ -111,9 +111,9 @@ class NewtonSolver {
   /// solve() and refine() with pass_rtol_ and reference_norm_ set (0: the first ||R||).
   NewtonResult run();
   /// After a failed linear solve: when MUMPS's workspace, sized from its analysis's estimate and
-  /// ICNTL(14) percent more, proved too small, doubles that percent on the factor and returns
-  /// true (the solve goes on from the iterate reached); when MUMPS could not allocate memory at
-  /// all, sets `result.out_of_memory` and its reason.
+  /// ICNTL(14) percent more, proved too small, grows it for a new factor (plisse::
+  /// grow_factor_workspace) and returns true (the solve goes on from the iterate reached); when
+  /// MUMPS could not allocate memory at all, sets `result.out_of_memory` and its reason.
   bool grow_factor_workspace(NewtonResult& result);
 
   MixedModel& model_;

@@ -107,11 +107,8 @@ Inertia InertiaCheck::compute() {
     if (error == MAT_FACTOR_NOERROR) break;
     const FactorMemory memory = factor_memory(F);
     if (memory.out_of_memory) throw SolverError("stability check: " + memory.message());
-    if (!memory.workspace_too_small || !grow_factor_workspace(F)) break;
-    // PETSc does not factorise a failed MUMPS factor again: a new one, from the options that now
-    // hold the larger margin.
-    PLISSE_PETSC(PCReset(pc_));
-    configured_ = false;
+    if (!grow_factor_workspace(pc_, memory)) break;
+    configured_ = false;  // the new factor needs its settings again
   }
   FE_CHECK(error == MAT_FACTOR_NOERROR,
            "stability check: the LDL^T factorisation of the tangent failed (MatFactorError "
