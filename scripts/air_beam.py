@@ -64,12 +64,13 @@ def instability_times(run):
 
 
 def written_steps(run):
-    """(step, path) of the step files listed in solution.pvd."""
+    """(step, path) of the converged steps' files listed in solution.pvd."""
     out = []
     with open(os.path.join(run, "solution.pvd")) as f:
         for m in re.finditer(r'file="([^"]+)"', f.read()):
             step = int(re.search(r"(\d+)", os.path.basename(m.group(1))).group(1))
-            out.append((step, os.path.join(run, m.group(1))))
+            if step > 0:  # step 0 is the undeformed tube, before the first step
+                out.append((step, os.path.join(run, m.group(1))))
     return out
 
 

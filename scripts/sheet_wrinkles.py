@@ -99,6 +99,8 @@ def measure(run):
     rows, profiles = [], {}
     for path in sorted(glob.glob(os.path.join(run, "step_*.vtu"))):
         step = int(os.path.basename(path)[5:9])
+        if step == 0:  # the undeformed sheet, before the first step
+            continue
         strain, y, w = profile(meshio.read(path))
         c = crests(y, w)
         rows.append((step, strain, np.abs(w).max(), len(c), wavelength(y, w, c)))

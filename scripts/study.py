@@ -4,18 +4,22 @@ Usage: scripts/study STUDY.yaml [--runs DIR] [--docs DIR] [--reuse | --report-on
 
 A study file names a case, the key to vary and its values (docs/studies/README.md):
 
-    name: layers                      # report docs/studies/layers.md, figures docs/studies/layers/
+    name: layers                      # report layers.md, figures layers/, beside the study file
     title: Tetrahedra through the wall
     case: ../examples/sphere-indentation.yaml   # relative to the study file
+    report: ../docs/studies           # where the report goes (optional; default: the study
+                                      # file's folder); --docs overrides it
     set: [solver.stability.check=true]          # overrides for every run (optional)
     vary: {key: mesh.layers, values: [1, 2, 3, 4], label: tetrahedra through the wall}
     convergence: {label: "elements of 0.5 mm", set: [mesh.element_size=0.5]}   # optional
     discussion: |
       Markdown written under the table.
 
-Each run is `build/bin/plisse run CASE -o RUNS/<name>/<key>=<value> --set key=value ...`; with
-`convergence`, each value runs a second time with its overrides added (a finer mesh), into
-`RUNS/<name>/<key>=<value>+fine`, and the table gets that run's wrinkle count and amplitude. The
+Each run is `build/bin/plisse run CASE -o RUNS/<name>/<leaf>=<value> --set key=value ...`, with
+RUNS the folder `runs` beside the study file unless --runs says otherwise, and <leaf> the last
+part of the key (`layers` for mesh.layers, `value` for loads[0].value); with `convergence`, each
+value runs a second time with its overrides added (a finer mesh), into
+`RUNS/<name>/<leaf>=<value>+fine`, and the table gets that run's wrinkle count and amplitude. The
 report reads each run's summary.json (wrinkle table, steps, times), history.csv and last VTU
 (deformed outer surface coloured by its normal deviation from the axisymmetric mean shape).
 A run that fails (exit status 1) is reported as such with its message; bad input (2) stops.
@@ -25,6 +29,7 @@ import csv
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 import time
@@ -35,6 +40,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import meshio  # noqa: E402
+from matplotlib.ticker import MaxNLocator  # noqa: E402
 import numpy as np  # noqa: E402
 import yaml  # noqa: E402
 
@@ -55,7 +61,8 @@ def load_study(path):
         fail(f"{path}: {e}")
     if not isinstance(s, dict):
         fail(f"{path}: expected a map (name, title, case, vary, ...)")
-    allowed = {"name", "title", "case", "set", "vary", "convergence", "discussion", "intro"}
+    allowed = {"name", "title", "case", "set", "vary", "convergence", "discussion", "intro",
+               "report"}
     for key in s:
         if key not in allowed:
             fail(f"{path}: key '{key}': unknown key; allowed: {', '.join(sorted(allowed))}")
@@ -70,12 +77,32 @@ def load_study(path):
     if conv is not None and (not isinstance(conv, dict) or not isinstance(conv.get("set"), list)
                              or not conv["set"] or set(conv) - {"label", "set"}):
         fail(f"{path}: key 'convergence': needs a non-empty list 'set' (and optionally 'label')")
-    s["case"] = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(path)), s["case"]))
+    here = os.path.dirname(os.path.abspath(path))
+    s["case"] = os.path.normpath(os.path.join(here, s["case"]))
+    s["report"] = os.path.normpath(os.path.join(here, str(s.get("report", "."))))
+    s["runs"] = os.path.join(here, "runs")
+    if not re.fullmatch(r"[A-Za-z0-9_.-]+", str(s["name"])):
+        fail(f"{path}: key 'name': letters, digits, '_', '.', '-' only (it names files)")
     if not os.path.isfile(s["case"]):
         fail(f"{path}: key 'case': no such file {s['case']}")
     s.setdefault("set", [])
     s.setdefault("title", s["name"])
     return s
+
+
+def shown(path):
+    """`path` relative to the working directory when it lies below it, else absolute."""
+    path = os.path.abspath(path)
+    rel = os.path.relpath(path)
+    return path if rel.startswith("..") else rel
+
+
+def folder_name(key, value):
+    """`<leaf>=<value>`: the last part of the key without list indices, and the value with the
+    characters a file name cannot hold replaced."""
+    leaf = re.sub(r"\[\d+\]", "", key).split(".")[-1] or "value"
+    text = re.sub(r"[^A-Za-z0-9_.+-]", "_", yaml_value(value).replace(", ", ","))
+    return f"{leaf}={text}"
 
 
 def yaml_value(v):
@@ -93,7 +120,8 @@ def run_one(study, value, run_dir, reuse, extra=(), report_only=False):
            "--overwrite"]
     for o in study["set"] + [f"{study['vary']['key']}={yaml_value(value)}"] + list(extra):
         cmd += ["--set", o]
-    print("scripts/study: " + " ".join(cmd), flush=True)
+    print("scripts/study: " + " ".join(shown(c) if os.path.isabs(c) else c for c in cmd),
+          flush=True)
     t0 = time.time()
     proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     seconds = time.time() - t0
@@ -256,14 +284,17 @@ def fine_columns(result, label):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("study")
-    ap.add_argument("--runs", default=os.path.join(ROOT, "runs", "studies"))
-    ap.add_argument("--docs", default=os.path.join(ROOT, "docs", "studies"))
+    ap.add_argument("--runs", help="folder for the runs (default: runs/ beside the study file)")
+    ap.add_argument("--docs", help="folder for the report and its figures (default: the study "
+                                   "file's `report`, else its folder)")
     ap.add_argument("--reuse", action="store_true", help="keep runs that already have summary.json")
     ap.add_argument("--report-only", action="store_true",
                     help="run nothing: write the report from the runs already there (a run "
                          "without summary.json is reported as not run)")
     args = ap.parse_args()
     study = load_study(args.study)
+    args.runs = os.path.abspath(args.runs) if args.runs else study["runs"]
+    args.docs = os.path.abspath(args.docs) if args.docs else study["report"]
     name, key = study["name"], study["vary"]["key"]
     label = study["vary"].get("label", key)
     fig_dir = os.path.join(args.docs, name)
@@ -271,7 +302,7 @@ def main():
     wrinkle_settings = case_wrinkle_settings(study["case"])
     results = []
     for value in study["vary"]["values"]:
-        run_dir = os.path.join(args.runs, name, f"{key}={yaml_value(value)}")
+        run_dir = os.path.join(args.runs, name, folder_name(key, value))
         os.makedirs(os.path.dirname(run_dir), exist_ok=True)
         info = run_one(study, value, run_dir, args.reuse or args.report_only,
                        report_only=args.report_only)
@@ -284,7 +315,7 @@ def main():
             fine = {"info": fine_info, "summary": read_summary(fine_dir), "figure": None}
             fine_vtu = last_vtu(fine_dir)
             if fine_vtu:
-                figure_fine = f"{name}/surface_{yaml_value(value)}_fine.png"
+                figure_fine = f"{name}/surface_{folder_name(key, value).split('=', 1)[1]}_fine.png"
                 if surface_figure(fine_vtu, wrinkle_settings, os.path.join(args.docs, figure_fine),
                                   f"{label} = {value}, {study['convergence'].get('label', 'finer mesh')}"):
                     fine["figure"] = figure_fine
@@ -292,7 +323,7 @@ def main():
         figure = None
         vtu = last_vtu(run_dir)
         if vtu:
-            figure = f"{name}/surface_{yaml_value(value)}.png"
+            figure = f"{name}/surface_{folder_name(key, value).split('=', 1)[1]}.png"
             if not surface_figure(vtu, wrinkle_settings, os.path.join(args.docs, figure),
                                   f"{label} = {value}"):
                 figure = None
@@ -324,17 +355,21 @@ def main():
                  color="tab:blue", markerfacecolor="none", label="count, finer mesh")
         ax1.legend(loc="best", fontsize=8, handles=ax1.get_lines() + ax2.get_lines())
     ax2.set_ylabel("wrinkle count (ring of max amplitude)", color="tab:blue")
+    ax2.yaxis.set_major_locator(MaxNLocator(integer=True))  # counts are whole numbers
     if not numeric:
-        ax1.set_xticks(pos, [str(v) for v in xs])
+        ax1.set_xticks(pos, [str(v) for v in xs], rotation=30 if len(xs) > 5 else 0)
+    elif all(isinstance(v, int) for v in xs):
+        ax1.set_xticks(xs)  # integer values: a tick at each, none between
+    ax1.grid(alpha=0.3)
     fig.tight_layout()
     trend = f"{name}/amplitude_count.png"
     fig.savefig(os.path.join(args.docs, trend), dpi=110)
     plt.close(fig)
 
     lines = [f"# Study: {study['title']}", "",
-             "Generated by `scripts/study " + os.path.relpath(os.path.abspath(args.study), ROOT) +
+             "Generated by `scripts/study " + shown(args.study) +
              "` (do not edit by hand).", "",
-             f"Case: `{os.path.relpath(study['case'], ROOT)}`, varying `{key}` ({label})" +
+             f"Case: `{os.path.relpath(study['case'], args.docs)}`, varying `{key}` ({label})" +
              (", with " + ", ".join(f"`--set {o}`" for o in study["set"]) if study["set"] else "") +
              ".", ""]
     if study.get("intro"):
@@ -415,7 +450,7 @@ def main():
     report = os.path.join(args.docs, f"{name}.md")
     with open(report, "w") as f:
         f.write("\n".join(lines))
-    print(f"scripts/study: wrote {os.path.relpath(report, ROOT)}")
+    print(f"scripts/study: wrote {shown(report)}")
 
 
 if __name__ == "__main__":

@@ -22,4 +22,11 @@ std::vector<int> assign_columns(const std::vector<Vec3d>& nodes,
                                 const std::vector<std::array<int, 4>>& tets,
                                 const std::vector<std::array<int, 3>>& triangles);
 
+/// For each of `points`, the index into `triangles` (corner indices into `nodes`) of the nearest
+/// triangle, by the same bucket search as assign_columns (ties to the lower index). Throws Error
+/// if `triangles` is empty while `points` is not, or an index is out of range.
+std::vector<int> nearest_triangles(const std::vector<Vec3d>& nodes,
+                                   const std::vector<std::array<int, 3>>& triangles,
+                                   const std::vector<Vec3d>& points);
+
 }  // namespace plisse

@@ -10,6 +10,8 @@ void add_check_command(CLI::App& app);
 void add_mesh_command(CLI::App& app);
 void add_materials_command(CLI::App& app);
 void add_case_keys_command(CLI::App& app);
+void add_outputs_command(CLI::App& app);
+void add_plot_command(CLI::App& app);
 void add_wrinkles_command(CLI::App& app);
 
 /// The process's own command line (set by main), for commands that start it again (run -n N).

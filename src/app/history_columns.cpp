@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "analysis/wall_thickness.hpp"
+#include "app/output_reference.hpp"
 #include "io/history_writer.hpp"
 #include "mesh/topology.hpp"
 
@@ -17,6 +19,7 @@ std::vector<std::string> xyz_columns(const std::string& prefix, const std::strin
 }  // namespace
 
 void HistoryColumns::add(std::vector<std::string> names, Values append) {
+  for (const std::string& name : names) require_output_entry(OutputTable::history, name);
   names_.insert(names_.end(), names.begin(), names.end());
   groups_.push_back({std::move(names), std::move(append)});
 }
@@ -66,6 +69,14 @@ HistoryColumns::HistoryColumns(const Case& c, const MixedModel& model, const Wri
     for (const auto& f : r.fields) min_J = std::min(min_J, f.J);
     row.insert(row.end(), {r.averages.volume, min_J, r.model.strain_energy()});
   });
+  // A wall: a shell or sheet (a cube's top and bottom are not one).
+  if (const auto faces = c.mesh.wall_thickness() ? wall_faces(mesh) : std::nullopt) {
+    wall_ = std::make_shared<const WallThickness>(mesh, *faces);
+    add({"min_thickness"}, [wall = wall_](const StepRecord& r, std::vector<double>& row) {
+      const std::vector<double> t = (*wall)(nodal_displacements(r.model));
+      row.push_back(*std::min_element(t.begin(), t.end()));
+    });
+  }
   if (c.solver.stability.check)
     add({"negative_pivots", "expected_negative_pivots", "stable"}, [](const StepRecord& r,
                                                                       std::vector<double>& row) {

@@ -2,9 +2,11 @@
 /// The columns of history.csv as one table: each entry is a group of column names together with
 /// the function that gives their values, so a header and its rows cannot drift apart.
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "analysis/wall_thickness.hpp"
 #include "app/wrinkling.hpp"
 #include "io/case.hpp"
 #include "solver/load_stepper.hpp"
@@ -27,15 +29,18 @@ class HistoryColumns {
   /// The columns of a run of `c` on `model` (borrowed; its terms and mesh must outlive this), in
   /// the order of the contract: the standard ones (HistoryWriter::standard_columns), each term's
   /// columns, stretch, the averaged stretches and Cauchy stresses, reactions of named boundary
-  /// conditions, probe displacements (nearest node), volume, min_J, strain_energy, the stability
-  /// columns (solver.stability.check) and the wrinkle columns (output.wrinkles, measured by
-  /// `meter`, borrowed; required then).
+  /// conditions, probe displacements (nearest node), volume, min_J, strain_energy, min_thickness (a
+  /// mesh with a wall: wall_faces), the stability columns (solver.stability.check) and the wrinkle
+  /// columns (output.wrinkles, measured by `meter`, borrowed; required then).
   HistoryColumns(const Case& c, const MixedModel& model, const WrinkleMeter* meter);
 
   /// All column names, in row order.
   const std::vector<std::string>& names() const { return names_; }
   /// The names after the standard columns (what HistoryWriter's constructor takes).
   std::vector<std::string> extra_names() const;
+  /// The wall's thickness measure (analysis/wall_thickness.hpp), or null when the case has no
+  /// wall (a cube, a file mesh without `thickness`) or its mesh no wall_faces.
+  const WallThickness* wall_thickness() const { return wall_.get(); }
   /// The values of one row, in the order of names(). Throws plisse::Error when a group gives
   /// another count of values than it has names (a programming error, never a user's).
   std::vector<double> row(const StepRecord& record) const;
@@ -50,6 +55,7 @@ class HistoryColumns {
 
   std::vector<Group> groups_;
   std::vector<std::string> names_;
+  std::shared_ptr<const WallThickness> wall_;
 };
 
 }  // namespace plisse::app

@@ -45,6 +45,8 @@ int main(int argc, char** argv) {
   plisse::app::add_mesh_command(app);
   plisse::app::add_materials_command(app);
   plisse::app::add_case_keys_command(app);
+  plisse::app::add_outputs_command(app);
+  plisse::app::add_plot_command(app);
   plisse::app::add_wrinkles_command(app);
   try {
     app.parse(argc, argv);

@@ -217,12 +217,13 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
                    c.element};
   check_free_displacements(c, mesh, parts.constraints);
   const auto& constraints = parts.constraints;
+  const int mirrors = mirror_planes(c.boundary, mesh);
   auto& terms = parts.terms;
   for (const Load& load : c.loads) {
     switch (load.type) {
       case LoadType::pressure:
-        terms.push_back(std::make_unique<PressureLoad>(mesh, load.name, load.surface.name,
-                                                       load.value, load.ramp, constraints));
+        terms.push_back(std::make_unique<PressureLoad>(
+            mesh, load.name, load.surface.name, load.value, load.ramp, constraints, mirrors));
         break;
       case LoadType::gravity:
         terms.push_back(std::make_unique<BodyForce>(
@@ -254,7 +255,7 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
     }
   }
   for (const Cavity& cavity : c.cavities)
-    terms.push_back(std::make_unique<CavityTerm>(cavity, mesh, constraints));
+    terms.push_back(std::make_unique<CavityTerm>(cavity, mesh, constraints, mirrors));
   for (const Cap& cap : c.caps) terms.push_back(std::make_unique<RigidCap>(cap, mesh, constraints));
   if (!c.dies.empty() || !c.contacts.empty()) {
     // The contact penalties' default scale (contact.md, D11).

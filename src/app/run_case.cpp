@@ -242,6 +242,8 @@ void solve_and_write(PreparedRun run) {
   if (checkpoint)
     log.info("resuming after step " + std::to_string(checkpoint->steps) +
              " at t = " + std::to_string(checkpoint->time));
+  else
+    recorder.record_initial_state();
 
   WallClock::time_point last_checkpoint = WallClock::now();
   const WallClock::time_point stepping_start = WallClock::now();

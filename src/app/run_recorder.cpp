@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "app/output_reference.hpp"
 #include "core/wall_clock.hpp"
 #include "io/json_file.hpp"
 #include "io/pvtu_writer.hpp"
@@ -40,7 +41,7 @@ VtuField mode_field(const Mesh& mesh, const Eigenmode& mode, int k) {
 
 /// Point and cell fields of the contract for one converged state (`fields`: its element fields).
 void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model,
-                    const std::vector<ElementFields>& fields,
+                    const std::vector<ElementFields>& fields, const WallThickness* wall,
                     const std::vector<double>& previous_state, double dt,
                     const std::vector<VtuField>& extra_point_fields,
                     const std::vector<VtuField>& extra_cell_fields) {
@@ -62,17 +63,29 @@ void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model
   const int n_cells = mesh.n_tets();
   std::vector<Mat3d> cauchy(n_cells);
   std::vector<double> von_mises(n_cells), jacobian(n_cells);
+  VtuField stretches{"principal_stretches", 3, std::vector<double>(3 * n_cells)};
+  VtuField stresses{"principal_stresses", 3, std::vector<double>(3 * n_cells)};
+  const std::vector<Mat3d> F = model.element_deformation_gradients();
   for (int e = 0; e < n_cells; ++e) {
     cauchy[e] = fields[e].cauchy;
     von_mises[e] = fields[e].von_mises;
     jacobian[e] = fields[e].J;
+    const Vec3d lambda = principal_stretches(F[e]), sigma = principal_values(fields[e].cauchy);
+    for (int k = 0; k < 3; ++k) {
+      stretches.values[3 * e + k] = lambda[k];
+      stresses.values[3 * e + k] = sigma[k];
+    }
   }
-  std::vector<VtuField> point_fields = {displacement, velocity, pressure};
+  std::vector<VtuField> point_fields = {
+      displacement, velocity, pressure, {"reaction", 3, model.nodal_reactions()}};
+  if (wall) point_fields.push_back({"thickness", 1, (*wall)(nodal_displacements(model))});
   point_fields.insert(point_fields.end(), extra_point_fields.begin(), extra_point_fields.end());
   std::vector<VtuField> cell_fields = {make_symmetric_tensor_field("cauchy_stress", cauchy),
                                        make_scalar_field("von_mises", von_mises),
-                                       make_scalar_field("J", jacobian)};
+                                       make_scalar_field("J", jacobian), stretches, stresses};
   cell_fields.insert(cell_fields.end(), extra_cell_fields.begin(), extra_cell_fields.end());
+  for (const VtuField& f : point_fields) require_output_entry(OutputTable::vtu_point, f.name);
+  for (const VtuField& f : cell_fields) require_output_entry(OutputTable::vtu_cell, f.name);
   if (model.n_ranks() == 1) {
     write_vtu(file, mesh, points, point_fields, cell_fields);
     return;
@@ -135,6 +148,15 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
   });
 }
 
+void RunRecorder::record_initial_state() {
+  fields_ = model_.element_fields();
+  if (meter_) last_wrinkles_ = meter_->evaluate(model_, fields_);
+  StepInfo initial;
+  initial.time = model_.time();
+  write_step_files(initial, model_.state());
+  last_wrinkles_.reset();
+}
+
 void RunRecorder::record(const StepInfo& info) {
   const auto t_out = WallClock::now();
   fields_ = model_.element_fields();
@@ -145,6 +167,7 @@ void RunRecorder::record(const StepInfo& info) {
   on_every_rank_alike([&] {
     if (history_) history_->add_row(row);
   });
+  accepted_newton_iterations_ += info.newton_iterations;
   output_seconds_ += seconds_since(t_out);
   if (info.new_instability) {
     nlohmann::json eigenvalues = nlohmann::json::array();
@@ -180,11 +203,11 @@ void RunRecorder::write_step_files(const StepInfo& info, const std::vector<doubl
       state[e] = static_cast<double>(last_wrinkles_->tension.element_state[e]);
     cell_fields.push_back(make_scalar_field("wrinkle_state", state));
   }
-  write_step_vtu(directory_.directory() / name, case_, model_, fields_, step_start, info.dt,
-                 point_fields, cell_fields);
+  write_step_vtu(directory_.directory() / name, case_, model_, fields_, columns_.wall_thickness(),
+                 step_start, info.dt, point_fields, cell_fields);
   on_every_rank_alike([&] {
     if (pvd_) pvd_->add(info.time, name);
-    if (spectrum_ && last_wrinkles_)
+    if (spectrum_ && last_wrinkles_ && info.step > 0)
       spectrum_->add_step(info.step, info.time, last_wrinkles_->rings);
   });
   last_written_ = info.step;
@@ -242,6 +265,7 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
   summary["pressure_dofs"] = model_.dofs().n_free_pressure();
   summary["steps"] = result.steps;
   summary["newton_iterations"] = result.newton_iterations;
+  summary["failed_newton_iterations"] = result.newton_iterations - accepted_newton_iterations_;
   summary["reused_factor_solves"] = result.reused_solves;
   summary["cutbacks"] = result.cutbacks;
   summary["final_time"] = last_step_.time;
@@ -276,6 +300,7 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
       final_values[history_->columns()[i]] = history_->rows().back()[i];
     summary["final"] = final_values;
   }
+  require_documented_summary(summary);
   return summary;
 }
 

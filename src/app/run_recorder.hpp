@@ -49,6 +49,9 @@ class RunRecorder {
               const MixedModel& model, const LoadStepper& stepper, const WrinkleMeter* meter,
               const Checkpoint* resume);
 
+  /// Writes step_0000.vtu, the state before the first step (t = 0: the undeformed body, zero
+  /// reactions), and lists it first in solution.pvd. For a new run, before the stepping.
+  void record_initial_state();
   /// Records one converged step (the model holds its state): the history row, the wrinkle
   /// metrics, an instability's record, and the VTU file every output.every steps, at the end of
   /// the load and at a new instability (its modes seed `imperfection_kind: mode`).
@@ -94,6 +97,7 @@ class RunRecorder {
   nlohmann::json instabilities_ = nlohmann::json::array();
   StepInfo last_step_;
   int last_written_ = -1;
+  int accepted_newton_iterations_ = 0;  ///< over the steps recorded by this run
   double output_seconds_ = 0.0;
 };
 

@@ -1,5 +1,7 @@
 #pragma once
 /// Output averages of one element, the same for every element family.
+#include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 
 #include "core/types.hpp"
@@ -19,6 +21,21 @@ struct ElementFields {
 inline double von_mises_stress(const Mat3d& cauchy) {
   const Mat3d deviator = cauchy - cauchy.trace() / 3.0 * Mat3d::Identity();
   return std::sqrt(1.5 * deviator.squaredNorm());
+}
+
+/// The eigenvalues of the symmetric matrix `s`, largest first.
+inline Vec3d principal_values(const Mat3d& s) {
+  const Eigen::SelfAdjointEigenSolver<Mat3d> eigen(s, Eigen::EigenvaluesOnly);
+  const Vec3d ascending = eigen.eigenvalues();
+  return {ascending[2], ascending[1], ascending[0]};
+}
+
+/// The principal stretches of the deformation gradient F, largest first: the square roots of
+/// the eigenvalues of C = Fᵀ F [-].
+inline Vec3d principal_stretches(const Mat3d& F) {
+  const Vec3d c = principal_values(F.transpose() * F);
+  return {std::sqrt(std::max(c[0], 0.0)), std::sqrt(std::max(c[1], 0.0)),
+          std::sqrt(std::max(c[2], 0.0))};
 }
 
 /// All fields zero.

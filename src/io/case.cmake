@@ -9,6 +9,7 @@ set(PLISSE_IO_CASE_SOURCES
   case_solver_schema.cpp
   petsc_option_text.cpp
   case_keys.cpp
+  generated_blocks.cpp
   yaml_text.cpp
   case_reader.cpp
   case_overrides.cpp

@@ -444,8 +444,10 @@ Schema<Load> load_schema() {
                       "that turn with the deformed surface")
       .required();
   name_key(s, &Load::name,
-           "history column `pressure:<name>` (pressure); `load_x:<name>`, `load_y:<name>`, "
-           "`load_z:<name>` (the applied force) and `work:<name>` (its work) for the others")
+           "history column `pressure:<name>` (pressure), and on a closed or symmetry-closed "
+           "surface `volume:<name>` and `full_volume:<name>` (the enclosed volume); "
+           "`load_x:<name>`, `load_y:<name>`, `load_z:<name>` (the applied force) and "
+           "`work:<name>` (its work) for the others (docs/output.md)")
       .required();
   surface_key(s, "surface", &Load::surface, "the loaded surface")
       .required()
@@ -547,7 +549,10 @@ Schema<Load> load_schema() {
 Schema<Cavity> cavity_schema() {
   Schema<Cavity> s;
   s.place(&Cavity::place, false);
-  name_key(s, &Cavity::name, "history columns `volume:<name>`, `pressure:<name>`").required();
+  name_key(s, &Cavity::name,
+           "history columns `volume:<name>`, `pressure:<name>`, and `full_volume:<name>` on a "
+           "model cut by symmetry planes (docs/output.md)")
+      .required();
   surface_key(s, "surface", &Cavity::surface, "the cavity's wall").required();
   s.variant<CavityControl>("control", &Cavity::control, kCavityControls,
                            "prescribed volume, or an ideal gas");
@@ -858,7 +863,8 @@ Schema<WrinkleSettings> wrinkle_schema() {
 Schema<OutputSettings> output_schema() {
   Schema<OutputSettings> s;
   s.integer("every", &OutputSettings::every, Range::at_least(1),
-            "write a VTU file every N converged steps (the last one always)");
+            "write a VTU file every N converged steps (the last one always; step_0000.vtu, the "
+            "undeformed body, first)");
   s.integer("checkpoint_every", &OutputSettings::checkpoint_every, Range::at_least(0),
             "write `checkpoint.bin` every N converged steps (0: only when interrupted); `plisse "
             "run CASE --resume DIR` continues from it");

@@ -22,7 +22,7 @@ std::string describe_node(const Mesh& mesh, int node) {
 }  // namespace
 
 CavityTerm::CavityTerm(const Cavity& cavity, const Mesh& mesh,
-                       const std::vector<ConstrainedComponent>& constraints)
+                       const std::vector<ConstrainedComponent>& constraints, int mirror_planes)
     : mesh_(mesh), cavity_(cavity), faces_(outward_faces(mesh, cavity.surface.name)) {
   const InputPlace& place = cavity.surface.place;
   if (const auto edge = first_open_edge(mesh, faces_)) {
@@ -39,6 +39,7 @@ CavityTerm::CavityTerm(const Cavity& cavity, const Mesh& mesh,
             "cavity's wall must be closed, or closed by those planes (docs/theory/cavities.md, C2)";
     throw InputError(place, rule.str());
   }
+  full_body_factor_ = full_body_factor(closing_planes(mesh, faces_).value_or(0) & mirror_planes);
   reference_volume_ = volume(std::vector<double>(kValuesPerNode * mesh.n_nodes(), 0.0));
   // A wall that lies in the planes that close it (a flat sheet's face on z = 0) encloses nothing:
   // V0 is then round-off of the wall's size, taken as 0 (C8).
@@ -199,11 +200,16 @@ int CavityTerm::negative_directions() const {
 }
 
 std::vector<std::string> CavityTerm::history_columns() const {
-  return {"pressure:" + cavity_.name, "volume:" + cavity_.name};
+  std::vector<std::string> columns = {"pressure:" + cavity_.name, "volume:" + cavity_.name};
+  if (full_body_factor_ > 1) columns.push_back("full_volume:" + cavity_.name);
+  return columns;
 }
 
 std::vector<double> CavityTerm::history_values(double, std::span<const double> x) const {
-  return {x[pressure_dof_], volume(x)};
+  const double v = volume(x);
+  std::vector<double> values = {x[pressure_dof_], v};
+  if (full_body_factor_ > 1) values.push_back(full_body_factor_ * v);
+  return values;
 }
 
 }  // namespace plisse

@@ -29,9 +29,10 @@ class CavityTerm : public ModelTerm {
   /// Borrows `mesh`. Throws InputError at `cavity.surface.place` when the surface breaks the
   /// closure rule (C2) or encloses a negative volume, and when a wall that starts flat (V0 below
   /// kFlatVolumeTolerance A^{3/2}, A its area) has gas or a volume ratio, or the prescribed
-  /// final volume is not positive. `constraints` decide symmetric().
+  /// final volume is not positive. `constraints` decide symmetric(); `mirror_planes` (the
+  /// model's, dirichlet.hpp) scale `full_volume:<name>`.
   CavityTerm(const Cavity& cavity, const Mesh& mesh,
-             const std::vector<ConstrainedComponent>& constraints);
+             const std::vector<ConstrainedComponent>& constraints, int mirror_planes);
 
   int n_global_unknowns() const override { return 1; }
   void set_first_global_dof(int dof) override { pressure_dof_ = dof; }
@@ -74,6 +75,7 @@ class CavityTerm : public ModelTerm {
   double reference_volume_ = 0.0;
   bool symmetric_ = false;
   int pressure_dof_ = -1;
+  int full_body_factor_ = 1;  ///< copies of the modelled part in the whole body (full_body_factor)
 };
 
 }  // namespace plisse

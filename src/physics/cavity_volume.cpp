@@ -54,9 +54,18 @@ double cavity_volume(const Mesh& mesh, const std::vector<SurfaceFace>& faces,
   return six_volume / 6.0;
 }
 
-std::optional<std::array<int, 2>> first_open_edge(const Mesh& mesh,
-                                                  const std::vector<SurfaceFace>& faces,
-                                                  double relative_tolerance) {
+namespace {
+
+struct EdgeScan {
+  std::optional<std::array<int, 2>> open_edge;  ///< the first edge that breaks the rule
+  int planes = 0;                               ///< bit k: a boundary edge lies in x_k = 0
+};
+
+/// The closure rule of first_open_edge, edge by edge, with the planes the boundary lies in.
+EdgeScan scan_edges(const Mesh& mesh, const std::vector<SurfaceFace>& faces,
+                    double relative_tolerance) {
+  EdgeScan scan;
+  if (faces.empty()) return scan;
   // Per corner edge: the faces it belongs to and its edge node (-1 on a linear face).
   std::map<std::array<int, 2>, std::pair<int, int>> edges;
   Vec3d low = Vec3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
@@ -72,18 +81,40 @@ std::optional<std::array<int, 2>> first_open_edge(const Mesh& mesh,
       high = high.cwiseMax(mesh.nodes[v]);
     }
   }
-  if (faces.empty()) return std::nullopt;
   const double tol = relative_tolerance * (high - low).maxCoeff();
   for (const auto& [edge, entry] : edges) {
     const auto [count, middle] = entry;
     if (count == 2) continue;
     const auto on = [&](int v, int k) { return v < 0 || std::abs(mesh.nodes[v][k]) <= tol; };
-    bool on_plane = false;
-    for (int k = 0; k < 3 && count == 1 && !on_plane; ++k)
-      on_plane = on(edge[0], k) && on(edge[1], k) && on(middle, k);
-    if (!on_plane) return edge;
+    int plane = -1;
+    for (int k = 0; k < 3 && count == 1 && plane < 0; ++k)
+      if (on(edge[0], k) && on(edge[1], k) && on(middle, k)) plane = k;
+    if (plane < 0) {
+      scan.open_edge = edge;
+      return scan;
+    }
+    scan.planes |= 1 << plane;
   }
-  return std::nullopt;
+  return scan;
+}
+
+}  // namespace
+
+std::optional<std::array<int, 2>> first_open_edge(const Mesh& mesh,
+                                                  const std::vector<SurfaceFace>& faces,
+                                                  double relative_tolerance) {
+  return scan_edges(mesh, faces, relative_tolerance).open_edge;
+}
+
+std::optional<int> closing_planes(const Mesh& mesh, const std::vector<SurfaceFace>& faces,
+                                  double relative_tolerance) {
+  const EdgeScan scan = scan_edges(mesh, faces, relative_tolerance);
+  if (scan.open_edge) return std::nullopt;
+  return scan.planes;
+}
+
+int full_body_factor(int planes) {
+  return (planes & 1 ? 2 : 1) * (planes & 2 ? 2 : 1) * (planes & 4 ? 2 : 1);
 }
 
 }  // namespace plisse

@@ -43,4 +43,14 @@ std::optional<std::array<int, 2>> first_open_edge(const Mesh& mesh,
                                                   const std::vector<SurfaceFace>& faces,
                                                   double relative_tolerance = 1e-8);
 
+/// The symmetry planes that close `faces` by the rule of first_open_edge, as bits (1: x = 0,
+/// 2: y = 0, 4: z = 0; an edge in two planes counts for the first), or nullopt when an edge breaks
+/// the rule. 0: the surface is closed by itself.
+std::optional<int> closing_planes(const Mesh& mesh, const std::vector<SurfaceFace>& faces,
+                                  double relative_tolerance = 1e-8);
+
+/// How many copies of the modelled part make the whole body when it is mirrored in the planes
+/// `planes` (closing_planes' bits): 2 to the number of planes.
+int full_body_factor(int planes);
+
 }  // namespace plisse

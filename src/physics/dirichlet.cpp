@@ -10,6 +10,24 @@
 
 namespace plisse {
 
+int mirror_planes(const std::vector<BoundaryCondition>& conditions, const Mesh& mesh, double tol) {
+  int planes = 0;
+  for (const BoundaryCondition& bc : conditions) {
+    if (bc.type != BoundaryType::symmetry) continue;
+    const auto tag = mesh.surface_tags.find(bc.surface.name);
+    if (tag == mesh.surface_tags.end() || tag->second.empty()) continue;
+    const int axis = coordinate_plane_axis(mesh, tag->second, tol);
+    if (axis < 0) continue;
+    double extent = 0.0;
+    for (int t : tag->second)
+      for (int v : mesh.triangles[t])
+        extent = std::max(extent, mesh.nodes[v].cwiseAbs().maxCoeff());
+    const double level = mesh.nodes[mesh.triangles[tag->second.front()][0]][axis];
+    if (std::abs(level) <= tol * std::max(extent, 1.0)) planes |= 1 << axis;
+  }
+  return planes;
+}
+
 int coordinate_plane_axis(const Mesh& mesh, const std::vector<int>& triangles, double tol) {
   int axis = -1;
   for (int t : triangles) {

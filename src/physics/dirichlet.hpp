@@ -22,6 +22,14 @@ struct ConstrainedComponent {
 /// is not a plane normal to x, y or z (relative tolerance `tol` on the triangle normals).
 int coordinate_plane_axis(const Mesh& mesh, const std::vector<int>& triangles, double tol = 1e-8);
 
+/// The mirror planes of a model: bit k (1: x = 0, 2: y = 0, 4: z = 0) is set when a `symmetry`
+/// condition of `conditions` holds a surface in the plane x_k = 0 (within `tol` of the surface's
+/// extent). The planes that double a volume or force for the whole body (cavity_volume.hpp,
+/// full_body_factor); a plane that merely closes a cavity, such as the base under a bulged sheet,
+/// is not one.
+int mirror_planes(const std::vector<BoundaryCondition>& conditions, const Mesh& mesh,
+                  double tol = 1e-8);
+
 /// All constrained components of `conditions`, one per (node, component). A condition holds the
 /// corners of its tagged triangles and, on a second-order mesh, their edge nodes. A node where two
 /// conditions prescribe different motions of the same component is an InputError at the later

@@ -1,9 +1,11 @@
 #include "physics/pressure_load.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
+#include "physics/cavity_volume.hpp"
 #include "physics/follower_pressure.hpp"
 
 namespace plisse {
@@ -68,13 +70,32 @@ bool pressure_stiffness_is_symmetric(const Mesh& mesh, const std::vector<Surface
 
 PressureLoad::PressureLoad(const Mesh& mesh, std::string name, const std::string& surface,
                            double value, Ramp ramp,
-                           const std::vector<ConstrainedComponent>& constraints)
+                           const std::vector<ConstrainedComponent>& constraints, int mirror_planes)
     : mesh_(mesh),
       name_(std::move(name)),
       faces_(outward_faces(mesh, surface)),
       value_(value),
       ramp_(ramp),
-      symmetric_(pressure_stiffness_is_symmetric(mesh, faces_, constraints)) {}
+      symmetric_(pressure_stiffness_is_symmetric(mesh, faces_, constraints)),
+      closing_planes_(closing_planes(mesh, faces_)),
+      full_body_factor_(full_body_factor(closing_planes_.value_or(0) & mirror_planes)) {}
+
+std::vector<std::string> PressureLoad::history_columns() const {
+  std::vector<std::string> columns = {"pressure:" + name_};
+  if (closing_planes_) columns.push_back("volume:" + name_);
+  if (closing_planes_ && full_body_factor_ > 1) columns.push_back("full_volume:" + name_);
+  return columns;
+}
+
+std::vector<double> PressureLoad::history_values(double t, std::span<const double> x) const {
+  std::vector<double> values = {pressure(t)};
+  // Positive on either side: the faces' orientation (the body's outward normal) makes a cavity
+  // behind an `inner` wall positive and the inside of an `outer` one negative.
+  const double v = closing_planes_ ? std::abs(cavity_volume(mesh_, faces_, x)) : 0.0;
+  if (closing_planes_) values.push_back(v);
+  if (closing_planes_ && full_body_factor_ > 1) values.push_back(full_body_factor_ * v);
+  return values;
+}
 
 void PressureLoad::assemble(double t, std::span<const double> x, std::span<double> residual,
                             TangentSink* tangent) {

@@ -2,6 +2,7 @@
 /// Follower pressure on a tagged surface: the traction -p n acts on the deformed surface, with its
 /// consistent load stiffness (docs/theory/loads.md).
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,16 +19,18 @@ class PressureLoad : public ModelTerm {
   /// `value` [MPa] at the end of `ramp`; positive pushes against the body's outward normal (on a
   /// balloon's `inner` surface it inflates). Borrows `mesh`. `constraints` decide whether the load
   /// stiffness is symmetric (see pressure_stiffness_is_symmetric).
+  /// `mirror_planes`: the model's (dirichlet.hpp), which scale `full_volume:<name>`.
   PressureLoad(const Mesh& mesh, std::string name, const std::string& surface, double value,
-               Ramp ramp, const std::vector<ConstrainedComponent>& constraints);
+               Ramp ramp, const std::vector<ConstrainedComponent>& constraints, int mirror_planes);
 
   bool symmetric() const override { return symmetric_; }
   void assemble(double t, std::span<const double> x, std::span<double> residual,
                 TangentSink* tangent) override;
-  std::vector<std::string> history_columns() const override { return {"pressure:" + name_}; }
-  std::vector<double> history_values(double t, std::span<const double>) const override {
-    return {pressure(t)};
-  }
+  /// `pressure:<name>`; when the surface is closed, by itself or by the planes x, y, z = 0
+  /// (closing_planes), also `volume:<name>`, the volume it encloses, and when mirror planes are
+  /// among those planes `full_volume:<name>`, the whole body's.
+  std::vector<std::string> history_columns() const override;
+  std::vector<double> history_values(double t, std::span<const double> x) const override;
   double pressure(double t) const { return value_ * ramp_.factor(t); }
 
  private:
@@ -37,6 +40,8 @@ class PressureLoad : public ModelTerm {
   double value_;
   Ramp ramp_;
   bool symmetric_;
+  std::optional<int> closing_planes_;  ///< closing_planes of the faces
+  int full_body_factor_ = 1;           ///< of the closing planes that are mirror planes
 };
 
 /// The load stiffness of a follower pressure is symmetric when the loaded surface is closed, or

@@ -248,6 +248,27 @@ Vec3d MixedModel::reaction(const std::vector<int>& triangles) const {
   return force;
 }
 
+std::vector<double> MixedModel::nodal_reactions() const {
+  std::vector<double> reactions(3 * static_cast<std::size_t>(mesh_.n_nodes()), 0.0);
+  for (int v = 0; v < mesh_.n_nodes(); ++v)
+    if (distribution_->owns_node(v))  // the residual is complete on the owned nodes only
+      for (int k = 0; k < 3; ++k)
+        if (dofs().equation(DofMap::dof(v, k)) < 0)
+          reactions[3 * static_cast<std::size_t>(v) + k] = full_residual_[DofMap::dof(v, k)];
+  distribution_->sum_over_ranks(reactions.data(), reactions.size());
+  return reactions;
+}
+
+std::vector<Mat3d> MixedModel::element_deformation_gradients() const {
+  std::vector<Mat3d> F(static_cast<std::size_t>(mesh_.n_tets()), Mat3d::Identity());
+  visit_elements([&](const auto& elements) {
+    elements.for_each_deformation(mesh_, state_, [&](int e, double V0, const Mat3d& F_integral) {
+      F[static_cast<std::size_t>(e)] = F_integral / V0;
+    });
+  });
+  return F;
+}
+
 std::vector<ElementFields> MixedModel::element_fields() const {
   return visit_elements(
       [&](const auto& e) { return e.fields(*distribution_, state_, assembly_threads()); });

@@ -166,6 +166,14 @@ class MixedModel {
   /// the last assemble_residual.
   Vec3d reaction(const std::vector<int>& triangles) const;
 
+  /// The reaction force at every node [N], 3 values a node (x, y, z): the residual on its
+  /// constrained components from the last assemble_residual, zero on its free ones. Collective.
+  std::vector<double> nodal_reactions() const;
+
+  /// The volume average of the deformation gradient over each element, (1/V0) ∫ F dV0, at the
+  /// current state (for principal stretches).
+  std::vector<Mat3d> element_deformation_gradients() const;
+
   /// The pressure field at every node [MPa]: the nodal unknowns, and on the edge nodes of a
   /// Taylor-Hood model (which carry no pressure unknown) the linear interpolation, the mean of
   /// the edge's two corners (for output).

@@ -25,6 +25,7 @@
 #include "io/history_writer.hpp"
 #include "io/json_file.hpp"
 #include "io/pvd_writer.hpp"
+#include "io/vtu_reader.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {
@@ -96,13 +97,19 @@ TEST(RunDirectory, OverwriteRemovesTheEarlierRunsFilesAndKeepsTheUsersOwn) {
       << r.output;
   std::set<std::string> names;
   for (const auto& entry : fs::directory_iterator(dir)) names.insert(entry.path().filename());
-  const std::set<std::string> expected = {"checkpoint.bin", "history.csv",   "log.txt",
-                                          "notes.txt",      "solution.pvd",  "summary.json",
-                                          "step_0001.vtu",  "step_0002.vtu", "step_0003.vtu"};
+  const std::set<std::string> expected = {
+      "checkpoint.bin", "history.csv",   "log.txt",       "notes.txt",     "solution.pvd",
+      "summary.json",   "step_0000.vtu", "step_0001.vtu", "step_0002.vtu", "step_0003.vtu"};
   EXPECT_EQ(names, expected);
   EXPECT_EQ(contents(dir / "notes.txt"), "mine\n");
   EXPECT_EQ(read_history(dir / "history.csv").rows.size(), 3u);
-  EXPECT_EQ(read_pvd(dir / "solution.pvd").size(), 3u);
+  // Step 0, the undeformed body, then the three steps.
+  const std::vector<PvdEntry> pvd = read_pvd(dir / "solution.pvd");
+  ASSERT_EQ(pvd.size(), 4u);
+  EXPECT_EQ(pvd.front().file, "step_0000.vtu");
+  EXPECT_EQ(pvd.front().time, 0.0);
+  const VtuField u0 = read_vtu_point_field(dir / "step_0000.vtu", "displacement");
+  for (double u : u0.values) EXPECT_EQ(u, 0.0);
   EXPECT_EQ(read_json_file(dir / "summary.json")["steps"].get<int>(), 3);
   // The log is this run's alone.
   const std::string log = contents(dir / "log.txt");

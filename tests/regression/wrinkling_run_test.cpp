@@ -354,5 +354,56 @@ TEST(WrinkleCriterion, AFlattenedSphereIsAGlobalShapeNotWrinkles) {
   EXPECT_EQ(spectrum_rows(), rows);
 }
 
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// True when `path` is a PNG image (its signature) of more than `min_bytes` bytes.
+bool is_png(const fs::path& path, std::uintmax_t min_bytes) {
+  std::ifstream in(path, std::ios::binary);
+  char head[8] = {};
+  in.read(head, 8);
+  const char signature[8] = {'\x89', 'P', 'N', 'G', '\r', '\n', '\x1a', '\n'};
+  std::error_code ec;
+  return in && std::equal(head, head + 8, signature) && fs::file_size(path, ec) > min_bytes;
+}
+
+// plisse plot draws the figures of a run from its directory alone: here a pressurised octant with
+// wrinkle rings and a stability check, so the pressure-volume, Newton, wrinkle and wrinkle-map
+// figures are drawn, and no force figure (the case has no force column); a directory that is not
+// a run is refused with exit status 2.
+TEST(Plot, DrawsTheFiguresOfARunFromItsDirectory) {
+  const fs::path dir = scratch_directory("shell-plot");
+  fs::create_directories(dir.parent_path());
+  const fs::path case_file = dir.parent_path() / "shell-plot.yaml";
+  std::ofstream(case_file) << kShell;
+  auto r = run_plisse_captured("run '" + case_file.string() + "' -o '" + dir.string() + "'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  r = run_plisse_captured("plot '" + dir.string() + "'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  for (const char* figure :
+       {"pressure_volume.png", "newton.png", "wrinkles.png", "wrinkle_map.png"})
+    EXPECT_TRUE(is_png(dir / "plots" / figure, 5000)) << figure << "\n" << r.output;
+  EXPECT_FALSE(fs::exists(dir / "plots" / "forces.png"));
+  // Elsewhere with -o; the run's own files are unchanged.
+  const fs::path elsewhere = dir.parent_path() / "shell-plot-figures";
+  fs::remove_all(elsewhere);
+  const std::string history = read_text(dir / "history.csv");
+  r = run_plisse_captured("plot '" + dir.string() + "' -o '" + elsewhere.string() + "'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(is_png(elsewhere / "newton.png", 5000));
+  EXPECT_EQ(read_text(dir / "history.csv"), history);
+
+  r = run_plisse_captured("plot '" + case_file.string() + "'");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("is not a run directory"), std::string::npos) << r.output;
+  r = run_plisse_captured("plot '" + (dir / "plots").string() + "'");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("holds no history.csv"), std::string::npos) << r.output;
+}
+
 }  // namespace
 }  // namespace plisse

@@ -5,11 +5,15 @@
 // the solver tolerance (1e-6 relative asked), with either element.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <string>
 
+#include "core/error.hpp"
 #include "io/history_writer.hpp"
+#include "io/run_directory.hpp"
+#include "io/vtu_reader.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {
@@ -51,6 +55,30 @@ void expect_closed_form(const CubeCase& c) {
     EXPECT_NEAR(row[energy], stored, 1e-6 * stored) << "strain energy, stretch " << lambda;
   }
   EXPECT_NEAR(h.rows.back()[stretch], 5.0, 1e-12);
+
+  // The last step's VTU fields: principal stretches (λ, λ^-1/2, λ^-1/2) and principal stresses
+  // (σzz, 0, 0) in every element, and the reactions on the pulled end (the positive z ones; the
+  // bottom's are their opposite) summing to σzz times its current area 25/λ. No thickness: a
+  // cube has no wall.
+  const double lambda = h.rows.back()[stretch], sigma = c.sigma_zz(lambda);
+  const auto last = dir / RunDirectory::step_file_name(static_cast<int>(h.rows.size()));
+  const VtuField stretches = read_vtu_cell_field(last, "principal_stretches");
+  const VtuField stresses = read_vtu_cell_field(last, "principal_stresses");
+  ASSERT_EQ(stretches.n_components, 3);
+  for (std::size_t e = 0; e < stretches.values.size() / 3; ++e) {
+    EXPECT_NEAR(stretches.values[3 * e], lambda, 1e-6 * lambda) << "element " << e;
+    for (int k = 1; k < 3; ++k)
+      EXPECT_NEAR(stretches.values[3 * e + k], 1 / std::sqrt(lambda), 1e-6) << "element " << e;
+    EXPECT_NEAR(stresses.values[3 * e], sigma, 1e-6 * sigma) << "element " << e;
+    for (int k = 1; k < 3; ++k)
+      EXPECT_NEAR(stresses.values[3 * e + k], 0.0, 1e-6 * sigma) << "element " << e;
+  }
+  const VtuField reaction = read_vtu_point_field(last, "reaction");
+  double pull = 0.0;
+  for (std::size_t v = 0; v < reaction.values.size() / 3; ++v)
+    pull += std::max(reaction.values[3 * v + 2], 0.0);
+  EXPECT_NEAR(pull, sigma * 25.0 / lambda, 1e-6 * sigma * 25.0 / lambda);
+  EXPECT_THROW(read_vtu_point_field(last, "thickness"), Error);
 }
 
 const CubeCase neo_hookean(const std::string& element) {

@@ -43,6 +43,19 @@ std::vector<ConstrainedComponent> symmetry_constraints(const Mesh& mesh) {
   return out;
 }
 
+/// A `symmetry` condition on each of the mesh's planes sym_x, sym_y, sym_z.
+std::vector<BoundaryCondition> symmetry_conditions(const Mesh& mesh) {
+  std::vector<BoundaryCondition> out;
+  for (const char* tag : {"sym_x", "sym_y", "sym_z"}) {
+    if (!mesh.has_surface(tag)) continue;
+    BoundaryCondition bc;
+    bc.type = BoundaryType::symmetry;
+    bc.surface.name = tag;
+    out.push_back(bc);
+  }
+  return out;
+}
+
 Cavity make_cavity(CavityControl control) {
   Cavity c;
   c.name = "balloon";
@@ -87,7 +100,8 @@ CavitySetup make_setup(Symmetry symmetry, CavityControl control, bool constrain)
   CavitySetup s;
   s.mesh = small_shell(symmetry);
   if (constrain) s.constraints = symmetry_constraints(s.mesh);
-  s.term = std::make_unique<CavityTerm>(make_cavity(control), s.mesh, s.constraints);
+  s.term = std::make_unique<CavityTerm>(make_cavity(control), s.mesh, s.constraints,
+                                        mirror_planes(symmetry_conditions(s.mesh), s.mesh));
   s.n = kValuesPerNode * s.mesh.n_nodes() + 1;
   s.term->set_first_global_dof(s.n - 1);
   return s;
@@ -203,12 +217,15 @@ TEST(CavityTerm, ConstraintRowIsThePrescribedVolume) {
   std::vector<double> x(s.n, 0.0);
   // Half-way up the ramp to volume_ratio 3 the target is 2 V0; at u = 0 the row is -(V0 - 2 V0).
   EXPECT_NEAR(residual(*s.term, 0.5, x)[s.n - 1], V0, 1e-12 * V0);
-  EXPECT_EQ(s.term->history_columns(),
-            (std::vector<std::string>{"pressure:balloon", "volume:balloon"}));
+  // The octant is closed by three mirror planes: the whole balloon holds 8 times its volume.
+  EXPECT_EQ(
+      s.term->history_columns(),
+      (std::vector<std::string>{"pressure:balloon", "volume:balloon", "full_volume:balloon"}));
   x.back() = 0.25;
   const auto h = s.term->history_values(0.5, x);
   EXPECT_EQ(h[0], 0.25);
   EXPECT_NEAR(h[1], V0, 1e-12 * V0);
+  EXPECT_EQ(h[2], 8.0 * h[1]);
 }
 
 TEST(CavityTerm, ConstraintRowVanishesWhereTheIdealGasLawHolds) {

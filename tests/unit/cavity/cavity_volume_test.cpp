@@ -134,7 +134,7 @@ TEST(CavityVolume, OpenSurfaceIsAnInputErrorNamingTheRule) {
   const Mesh cube = generate_mesh(spec);
   // The top face z = 2 has free edges on x = 2 and y = 2, which are no symmetry planes.
   try {
-    CavityTerm term(cavity_on("top"), cube, {});
+    CavityTerm term(cavity_on("top"), cube, {}, 0);
     FAIL() << "an open surface was accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.place().key, "cavities[0].surface");
@@ -147,12 +147,12 @@ TEST(CavityVolume, OpenSurfaceIsAnInputErrorNamingTheRule) {
 TEST(CavityVolume, WallFacingAwayFromTheCavityIsAnInputError) {
   const Mesh mesh = shell(Symmetry::octant);
   try {
-    CavityTerm term(cavity_on("outer"), mesh, {});
+    CavityTerm term(cavity_on("outer"), mesh, {}, 0);
     FAIL() << "the outer wall was accepted as a cavity";
   } catch (const InputError& e) {
     EXPECT_NE(e.rule().find("which is negative"), std::string::npos) << e.rule();
   }
-  CavityTerm term(cavity_on("inner"), mesh, {});
+  CavityTerm term(cavity_on("inner"), mesh, {}, 0);
   EXPECT_NEAR(term.reference_volume(),
               cavity_volume(mesh, outward_faces(mesh, "inner"), zero_state(mesh)), 1e-15);
 }
@@ -172,7 +172,7 @@ TEST(FlatCavity, WallInItsClosingPlaneStartsWithNoVolume) {
   Cavity c = cavity_on("bottom");
   c.target_place = {"case.yaml", 8, 5, "cavities[0].volume_ratio"};
   try {
-    CavityTerm term(c, cube, {});
+    CavityTerm term(c, cube, {}, 0);
     FAIL() << "a flat cavity with a volume ratio was accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.place().key, "cavities[0].volume_ratio");
@@ -181,7 +181,7 @@ TEST(FlatCavity, WallInItsClosingPlaneStartsWithNoVolume) {
   }
   c.control = CavityControl::gas;
   try {
-    CavityTerm term(c, cube, {});
+    CavityTerm term(c, cube, {}, 0);
     FAIL() << "a flat gas cavity was accepted";
   } catch (const InputError& e) {
     EXPECT_NE(e.rule().find("ideal gas in it has no initial amount"), std::string::npos)
@@ -195,14 +195,14 @@ TEST(FlatCavity, TakesAnAbsoluteVolumeOrAVolumeChangeAlongItsRamp) {
   c.ramp = {0.0, 2.0};
   c.target = VolumeTarget::change;
   c.volume_change = 3.0;
-  const CavityTerm by_change(c, cube, {});
+  const CavityTerm by_change(c, cube, {}, 0);
   EXPECT_EQ(by_change.reference_volume(), 0.0);
   EXPECT_EQ(by_change.final_volume(), 3.0);
   EXPECT_DOUBLE_EQ(by_change.fluid_volume(0.0, 0.5), 0.75);  // a quarter of the ramp
   EXPECT_EQ(by_change.fluid_volume_derivative(0.0, 0.5), 0.0);
   c.target = VolumeTarget::absolute;
   c.volume = 5.0;
-  const CavityTerm absolute(c, cube, {});
+  const CavityTerm absolute(c, cube, {}, 0);
   EXPECT_DOUBLE_EQ(absolute.fluid_volume(0.0, 1.0), 2.5);
 }
 
@@ -210,11 +210,11 @@ TEST(CavityVolume, AFinalVolumeBelowZeroIsRefused) {
   const Mesh mesh = shell(Symmetry::octant);
   Cavity c = cavity_on("inner");
   c.target = VolumeTarget::change;
-  const double V0 = CavityTerm(c, mesh, {}).reference_volume();
+  const double V0 = CavityTerm(c, mesh, {}, 0).reference_volume();
   c.volume_change = -1.5 * V0;
   c.target_place = {"case.yaml", 9, 20, "cavities[0].volume_change"};
   try {
-    CavityTerm term(c, mesh, {});
+    CavityTerm term(c, mesh, {}, 0);
     FAIL() << "a negative final volume was accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.place().key, "cavities[0].volume_change");

@@ -58,7 +58,7 @@ TEST(FollowerTraction, NormalTractionIsTheFollowerPressureOfOppositeSign) {
     FollowerTractionValues v;
     v.normal = -0.3;
     FollowerTraction traction(mesh, "t", "right", v, Ramp{0.0, 1.0}, {});
-    PressureLoad pressure(mesh, "p", "right", 0.3, Ramp{0.0, 1.0}, {});
+    PressureLoad pressure(mesh, "p", "right", 0.3, Ramp{0.0, 1.0}, {}, 0);
     const auto x = random_state(kValuesPerNode * mesh.n_nodes(), 3, 0.3);
     const Eigen::VectorXd a = term_residual(traction, 1.0, x), b = term_residual(pressure, 1.0, x);
     EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-14 * b.cwiseAbs().maxCoeff()) << order;

@@ -6,7 +6,9 @@
 
 #include <random>
 
+#include "mesh/box_mesh.hpp"
 #include "mesh/generate.hpp"
+#include "physics/dirichlet.hpp"
 #include "physics/surface.hpp"
 #include "support/term_testing.hpp"
 
@@ -27,7 +29,7 @@ Mesh small_cube() {
 
 TEST(PressureLoad, TangentIsDerivativeOfResidualOnAnOpenSurface) {
   const Mesh mesh = small_cube();
-  PressureLoad load(mesh, "p", "top", 0.7, Ramp{0.0, 1.0}, {});
+  PressureLoad load(mesh, "p", "top", 0.7, Ramp{0.0, 1.0}, {}, 0);
   EXPECT_FALSE(load.symmetric());  // free edges: the load stiffness is not symmetric
   const int n = kValuesPerNode * mesh.n_nodes();
   const auto x = random_state(n, 3, 0.2);
@@ -48,7 +50,7 @@ TEST(PressureLoad, ClosedSurfaceHasZeroResultantAndSymmetricStiffness) {
   for (const char* face : {"left", "right", "front", "back", "bottom", "top"})
     for (int t : mesh.surface_tags.at(face)) all.push_back(t);
   mesh.surface_tags["all"] = all;
-  PressureLoad load(mesh, "p", "all", 0.3, Ramp{0.0, 1.0}, {});
+  PressureLoad load(mesh, "p", "all", 0.3, Ramp{0.0, 1.0}, {}, 0);
   EXPECT_TRUE(load.symmetric());
   const int n = kValuesPerNode * mesh.n_nodes();
   const auto x = random_state(n, 5, 0.3);
@@ -65,7 +67,7 @@ TEST(PressureLoad, ClosedSurfaceHasZeroResultantAndSymmetricStiffness) {
 
 TEST(PressureLoad, ResultantOnAFlatFaceIsPressureTimesArea) {
   const Mesh mesh = small_cube();
-  PressureLoad load(mesh, "p", "top", 0.25, Ramp{0.0, 2.0}, {});
+  PressureLoad load(mesh, "p", "top", 0.25, Ramp{0.0, 2.0}, {}, 0);
   const int n = kValuesPerNode * mesh.n_nodes();
   const std::vector<double> x(n, 0.0);
   std::vector<double> r(n, 0.0);
@@ -88,6 +90,49 @@ TEST(PressureLoad, SymmetryPlanesCloseTheBoundaryOfAnOpenSurface) {
   EXPECT_TRUE(pressure_stiffness_is_symmetric(mesh, top, constraints));
   constraints.pop_back();
   EXPECT_FALSE(pressure_stiffness_is_symmetric(mesh, top, constraints));
+}
+
+// The volume under a lifted quarter sheet: its bottom face, on z = 0, is closed by the planes
+// x = 0, y = 0 (mirrors: `symmetry` conditions there) and z = 0 (only a closure: the sheet's far
+// edges stay in it, with no condition there). The whole body's volume is 4 times the quarter's,
+// not 8; the symmetry condition on x = 4 is not at a coordinate plane and mirrors nothing.
+TEST(PressureLoad, EnclosedVolumeAndTheWholeBodysCountOnlyMirrorPlanes) {
+  const Mesh mesh = make_box_mesh(Vec3d(4.0, 3.0, 0.5), {4, 3, 1});
+  std::vector<BoundaryCondition> conditions;
+  for (const char* tag : {"left", "front", "right"}) {
+    BoundaryCondition bc;
+    bc.type = BoundaryType::symmetry;
+    bc.surface.name = tag;
+    conditions.push_back(bc);
+  }
+  const int mirrors = mirror_planes(conditions, mesh);
+  EXPECT_EQ(mirrors, 1 | 2);
+  PressureLoad load(mesh, "p", "bottom", 0.1, Ramp{0.0, 1.0}, {}, mirrors);
+  EXPECT_EQ(load.history_columns(),
+            (std::vector<std::string>{"pressure:p", "volume:p", "full_volume:p"}));
+  // Lift the sheet by w = (4 - x)(3 - y) / 48, so that its far edges stay on z = 0 (the rule a
+  // closed volume needs). The volume between the bottom face and z = 0 is then the sum over the
+  // face's triangles of area times their corners' mean lift: prisms, not cones from the origin.
+  std::vector<double> x(kValuesPerNode * mesh.n_nodes(), 0.0);
+  const auto lift = [&](int v) {
+    return (4.0 - mesh.nodes[v].x()) * (3.0 - mesh.nodes[v].y()) / 48.0;
+  };
+  for (int v = 0; v < mesh.n_nodes(); ++v) x[node_dof(v, 2)] = lift(v);
+  double prisms = 0.0;
+  for (int t : mesh.surface_tags.at("bottom")) {
+    const auto& [a, b, c] = mesh.triangles[t];
+    const double area =
+        0.5 * (mesh.nodes[b] - mesh.nodes[a]).cross(mesh.nodes[c] - mesh.nodes[a]).norm();
+    prisms += area * (lift(a) + lift(b) + lift(c)) / 3.0;
+  }
+  const std::vector<double> h = load.history_values(1.0, x);
+  EXPECT_EQ(h[0], 0.1);
+  EXPECT_GT(prisms, 0.1);
+  EXPECT_NEAR(h[1], prisms, 1e-12);
+  EXPECT_NEAR(h[2], 4.0 * h[1], 1e-12);
+  // An open surface (the top face's far edges lie in no coordinate plane): no volume.
+  PressureLoad open(mesh, "q", "top", 0.1, Ramp{0.0, 1.0}, {}, mirrors);
+  EXPECT_EQ(open.history_columns(), std::vector<std::string>{"pressure:q"});
 }
 
 }  // namespace

@@ -112,7 +112,7 @@ TEST(SecondOrderSurface, CurvedFacesOfASphereShellPointAwayFromTheBody) {
 TEST(SecondOrderPressure, FlatFaceLoadsOnlyTheEdgeNodesWithATotalOfPressureTimesArea) {
   const Mesh mesh = quadratic_cube();
   const double p = 0.3;
-  PressureLoad load(mesh, "p", "top", p, Ramp{0.0, 1.0}, {});
+  PressureLoad load(mesh, "p", "top", p, Ramp{0.0, 1.0}, {}, 0);
   const int n = kValuesPerNode * mesh.n_nodes();
   const std::vector<double> x(n, 0.0);
   std::vector<double> r(n, 0.0);
@@ -137,7 +137,7 @@ TEST(SecondOrderPressure, FlatFaceLoadsOnlyTheEdgeNodesWithATotalOfPressureTimes
 
 TEST(SecondOrderPressure, ClosedCurvedSphereHasZeroResultantAndSymmetricStiffness) {
   const Mesh mesh = quadratic_shell(Symmetry::full, 5.0);
-  PressureLoad load(mesh, "p", "inner", 0.2, Ramp{0.0, 1.0}, {});
+  PressureLoad load(mesh, "p", "inner", 0.2, Ramp{0.0, 1.0}, {}, 0);
   EXPECT_TRUE(load.symmetric());
   const int n = kValuesPerNode * mesh.n_nodes();
   const auto x = random_state(n, 7, 0.3);
@@ -158,7 +158,7 @@ TEST(SecondOrderPressure, ClosedCurvedSphereHasZeroResultantAndSymmetricStiffnes
 
 TEST(SecondOrderPressure, TangentIsTheDerivativeOfTheResidualOnAnOpenCurvedSurface) {
   const Mesh mesh = quadratic_shell(Symmetry::octant, 5.0);
-  PressureLoad load(mesh, "p", "outer", 0.6, Ramp{0.0, 1.0}, {});
+  PressureLoad load(mesh, "p", "outer", 0.6, Ramp{0.0, 1.0}, {}, 0);
   EXPECT_FALSE(load.symmetric());  // free edges on the (unconstrained) symmetry planes
   const int n = kValuesPerNode * mesh.n_nodes();
   const auto x = random_state(n, 3, 0.2);
@@ -253,7 +253,7 @@ Cavity inner_cavity() {
 
 TEST(SecondOrderCavity, TangentIsTheDerivativeOfTheResidualAndTheRowIsDvDx) {
   const Mesh mesh = quadratic_shell(Symmetry::full, 6.0);
-  CavityTerm term(inner_cavity(), mesh, {});
+  CavityTerm term(inner_cavity(), mesh, {}, 0);
   EXPECT_TRUE(term.symmetric());  // closed wall
   const int n = kValuesPerNode * mesh.n_nodes() + 1, m = n - 1;
   term.set_first_global_dof(m);
@@ -446,7 +446,7 @@ TEST(SecondOrderDie, UniformPressOnAFlatFaceGivesTheConsistentPressureLoad) {
   std::vector<double> r_die(n, 0.0), r_pressure(n, 0.0);
   die.assemble(1.0, x, r_die, nullptr);
   // The contact pressure is eps * depth on every node; the same follower pressure on `top`:
-  PressureLoad load(mesh, "p", "top", 40.0 * depth, Ramp{0.0, 1.0}, {});
+  PressureLoad load(mesh, "p", "top", 40.0 * depth, Ramp{0.0, 1.0}, {}, 0);
   load.assemble(1.0, x, r_pressure, nullptr);
   const Eigen::Map<Eigen::VectorXd> a(r_die.data(), n), b(r_pressure.data(), n);
   EXPECT_LT((a - b).norm(), 1e-12 * b.norm());

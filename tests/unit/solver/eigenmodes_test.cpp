@@ -249,7 +249,7 @@ TEST(Eigenmodes, UnsymmetricTangentOfAFollowerPressure) {
   for (const auto& c : constraints)
     if (mesh.nodes[c.node].z() == 0.0) bottom.push_back(c);
   std::vector<std::unique_ptr<ModelTerm>> terms;
-  terms.push_back(std::make_unique<PressureLoad>(mesh, "p", "top", 0.3, Ramp{0.0, 1.0}, bottom));
+  terms.push_back(std::make_unique<PressureLoad>(mesh, "p", "top", 0.3, Ramp{0.0, 1.0}, bottom, 0));
   MixedModel model(mesh, make_material("neo-hookean", {{"c1", 0.5}}), 1.0 / 50.0, bottom,
                    std::move(terms));
   ASSERT_FALSE(model.symmetric());

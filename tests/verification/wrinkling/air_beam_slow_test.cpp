@@ -38,6 +38,7 @@
 
 #include "io/history_writer.hpp"
 #include "io/pvd_writer.hpp"
+#include "io/run_directory.hpp"
 #include "io/vtu_reader.hpp"
 #include "mesh/generate.hpp"
 #include "mesh/tube_mesh.hpp"
@@ -94,6 +95,7 @@ TEST(AirBeamSlow, BendingOfAPressurisedTubeAgainstMembraneBeamTheory) {
 
   std::vector<Step> steps;
   for (const PvdEntry& entry : read_pvd(dir / "solution.pvd")) {
+    if (entry.file == RunDirectory::step_file_name(0)) continue;  // before the first step
     Step s;
     s.time = entry.time;
     const auto row = std::find_if(history.rows.begin(), history.rows.end(), [&](const auto& r) {

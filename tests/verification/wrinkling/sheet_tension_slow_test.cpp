@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "io/pvd_writer.hpp"
+#include "io/run_directory.hpp"
 #include "io/vtu_reader.hpp"
 #include "mesh/generate.hpp"
 #include "support/run_plisse.hpp"
@@ -84,6 +85,7 @@ SheetRun run_sheet() {
   spec.order = 2;
   const Mesh mesh = generate_mesh(spec);
   for (const PvdEntry& entry : read_pvd(dir / "solution.pvd")) {
+    if (entry.file == RunDirectory::step_file_name(0)) continue;  // before the first step
     const VtuField u = read_vtu_point_field(dir / entry.file, "displacement");
     std::vector<Vec3d> displacement(mesh.n_nodes());
     for (int i = 0; i < mesh.n_nodes(); ++i)

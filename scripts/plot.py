@@ -1,0 +1,309 @@
+"""Figures of a run directory: what `plisse plot DIR` draws (docs/output.md, "Figures").
+
+Usage: plot.py RUN_DIR OUT_DIR PLISSE_EXECUTABLE
+
+Reads RUN_DIR/history.csv, summary.json and the step files, and writes PNG files into OUT_DIR:
+  forces.png           each force's largest component against the time and, with probes, against
+                       the largest probe displacement (load against displacement)
+  pressure_volume.png  pressure against enclosed volume, for every pressure or cavity with a
+                       volume column (the whole body's where the history has it)
+  newton.png           Newton iterations per step and the residual reached
+  wrinkles.png         the largest wrinkle amplitude and its count (runs with wrinkle rings)
+  wrinkle_map.png      the last state's measured surface coloured by its normal deviation from
+                       the axisymmetric mean shape, with the rings drawn (runs with rings), and
+                       wrinkle_map_step_NNNN.png at every step where stability was lost
+Axis labels take their units from the output reference (`plisse outputs history`).
+Exit status: 0 done, 2 RUN_DIR is not a run directory, 1 a figure could not be drawn.
+"""
+import csv
+import json
+import os
+import re
+import subprocess
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.ticker import MaxNLocator  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import study  # noqa: E402  (outer_surface, normal_deviation)
+
+
+def fail(message, status=2):
+    print(f"plisse plot: {message}", file=sys.stderr)
+    sys.exit(status)
+
+
+def read_history(run):
+    path = os.path.join(run, "history.csv")
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    if len(rows) < 2:
+        fail(f"{path}: no converged step to plot")
+    columns = rows[0]
+    values = []
+    for r in rows[1:]:
+        if len(r) != len(columns):
+            continue  # a row a killed run left unterminated
+        values.append([float(x) for x in r])
+    data = np.array(values)
+    return {c: data[:, i] for i, c in enumerate(columns)}
+
+
+def reference_units(plisse):
+    """Column pattern -> unit, from the output reference the program writes from."""
+    text = subprocess.run([plisse, "outputs", "history"], check=True, capture_output=True,
+                          text=True).stdout
+    units = []
+    for line in text.splitlines():
+        m = re.match(r"\| `([^`]+)` \| ([^|]*) \|", line)
+        if m:
+            pattern = "^" + re.sub(r"<[^>]*>", ".+", re.escape(m.group(1)).replace(r"\<", "<")
+                                   .replace(r"\>", ">")) + "$"
+            literal = len(re.sub(r"<[^>]*>", "", m.group(1)))
+            units.append((pattern, literal, m.group(2).strip()))
+    return units
+
+
+def unit_of(units, column):
+    best = None
+    for pattern, literal, unit in units:
+        if re.match(pattern, column) and (best is None or literal > best[0]):
+            best = (literal, unit)
+    return best[1] if best and best[1] not in ("–", "") else None
+
+
+def label(units, column):
+    unit = unit_of(units, column)
+    return f"{column} [{unit}]" if unit else column
+
+
+def named_groups(h, prefixes):
+    """name -> [columns] of the columns `<prefix><axis>:<name>` (axis x, y, z)."""
+    groups = {}
+    for c in h:
+        for prefix in prefixes:
+            m = re.match(rf"^{prefix}[xyz]:(.+)$", c)
+            if m:
+                groups.setdefault(f"{prefix}:{m.group(1)}", []).append(c)
+    return groups
+
+
+def largest_component(h, columns):
+    return max(columns, key=lambda c: float(np.nanmax(np.abs(h[c]))) if len(h[c]) else 0.0)
+
+
+def save(fig, path):
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    print(path)
+
+
+def forces_figure(h, units, out):
+    forces = named_groups(h, ["force_", "load_"])
+    if not forces:
+        return
+    probes = named_groups(h, ["u"])
+    probe = None
+    if probes:
+        moving = [largest_component(h, cols) for cols in probes.values()]
+        probe = max(moving, key=lambda c: float(np.nanmax(np.abs(h[c]))))
+        if float(np.nanmax(np.abs(h[probe]))) == 0.0:
+            probe = None
+    panels = 2 if probe else 1
+    fig, axes = plt.subplots(1, panels, figsize=(6.0 * panels, 4.2), squeeze=False)
+    for name, cols in sorted(forces.items()):
+        c = largest_component(h, cols)
+        axes[0][0].plot(h["time"], h[c], marker=".", label=c)
+        if probe:
+            axes[0][1].plot(h[probe], h[c], marker=".", label=c)
+    axes[0][0].set_xlabel("time t [–]")
+    axes[0][0].set_ylabel("force [N]")
+    axes[0][0].set_title("forces (largest component of each)")
+    if probe:
+        axes[0][1].set_xlabel(label(units, probe))
+        axes[0][1].set_ylabel("force [N]")
+        axes[0][1].set_title("load against displacement")
+    for ax in axes[0]:
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    save(fig, os.path.join(out, "forces.png"))
+
+
+def pressure_volume_figure(h, units, out):
+    pairs = []
+    for c in h:
+        m = re.match(r"^pressure:(.+)$", c)
+        if m:
+            name = m.group(1)
+            volume = f"full_volume:{name}" if f"full_volume:{name}" in h else f"volume:{name}"
+            if volume in h:
+                pairs.append((c, volume))
+    if not pairs:
+        return
+    fig, ax = plt.subplots(figsize=(6.0, 4.2))
+    for pressure, volume in pairs:
+        ax.plot(h[volume], h[pressure], marker=".", label=f"{pressure} against {volume}")
+    ax.set_xlabel("volume [mm³]" if len(pairs) > 1 else label(units, pairs[0][1]))
+    ax.set_ylabel("pressure [MPa]" if len(pairs) > 1 else label(units, pairs[0][0]))
+    ax.set_title("pressure against enclosed volume")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    save(fig, os.path.join(out, "pressure_volume.png"))
+
+
+def newton_figure(h, out):
+    fig, ax = plt.subplots(figsize=(6.0, 4.2))
+    ax.bar(h["step"], h["newton_iterations"], color="tab:blue", width=0.8)
+    ax.set_xlabel("step")
+    ax.set_ylabel("Newton iterations of the accepted attempt", color="tab:blue")
+    ax.xaxis.set_major_locator(MaxNLocator(integer=True))
+    ax.yaxis.set_major_locator(MaxNLocator(integer=True))
+    twin = ax.twinx()
+    twin.semilogy(h["step"], np.maximum(h["residual_norm"], 1e-300), "k.", label="|R| reached")
+    twin.set_ylabel("residual norm reached")
+    ax.set_title("Newton iterations per step")
+    save(fig, os.path.join(out, "newton.png"))
+
+
+def wrinkles_figure(h, out):
+    if "wrinkle_amplitude" not in h:
+        return
+    fig, ax = plt.subplots(figsize=(6.0, 4.2))
+    ax.plot(h["time"], h["wrinkle_amplitude"], "tab:red", marker=".")
+    ax.set_xlabel("time t [–]")
+    ax.set_ylabel("largest ring amplitude [mm]", color="tab:red")
+    twin = ax.twinx()
+    twin.step(h["time"], h["wrinkle_count"], "k", where="mid")
+    twin.set_ylabel("its wave count")
+    twin.yaxis.set_major_locator(MaxNLocator(integer=True))
+    ax.set_title("wrinkles")
+    save(fig, os.path.join(out, "wrinkles.png"))
+
+
+def case_wrinkle_settings(summary):
+    path = summary.get("case_path")
+    settings = {}
+    if path and os.path.isfile(path):
+        try:
+            settings = study.case_wrinkle_settings(path)
+        except Exception:  # noqa: BLE001  the case may have changed since: use the summary
+            settings = {}
+    table = summary.get("wrinkles") or {}
+    settings = dict(settings)
+    settings.setdefault("axis", table.get("axis", "y"))
+    settings.setdefault("rings_deg", [r.get("latitude_deg") for r in table.get("rings", [])])
+    return settings
+
+
+def wrinkle_map(vtu, settings, path, title):
+    import meshio
+
+    mesh = meshio.read(vtu)
+    X = mesh.points
+    tets = mesh.cells_dict.get("tetra")
+    if tets is None and "tetra10" in mesh.cells_dict:
+        tets = mesh.cells_dict["tetra10"][:, :4]
+    if tets is None or "displacement" not in mesh.point_data:
+        return False
+    x = X + mesh.point_data["displacement"]
+    axis = study.AXES.get(settings.get("axis", "y"), 1)
+    center = np.array(settings.get("center", [0.0, 0.0, 0.0]), dtype=float)
+    tris = study.outer_surface(X, tets, center)
+    if len(tris) == 0:
+        return False
+    used = np.unique(tris)
+    dev = np.zeros(len(X))
+    dev[used] = study.normal_deviation(X[used], x[used], axis, center)
+    face_dev = dev[tris].mean(axis=1)
+    limit = max(np.percentile(np.abs(face_dev), 99), 1e-9)
+    fig = plt.figure(figsize=(6.4, 5.2))
+    ax = fig.add_subplot(projection="3d")
+    ax.computed_zorder = False  # the rings are drawn over the surface
+    order = [(axis + 1) % 3, (axis + 2) % 3, axis]  # the rings' axis vertical
+    surf = ax.plot_trisurf(x[:, order[0]], x[:, order[1]], x[:, order[2]], triangles=tris,
+                           cmap="coolwarm", linewidth=0, antialiased=False, shade=False)
+    surf.set_array(face_dev)
+    surf.set_clim(-limit, limit)
+    fig.colorbar(surf, ax=ax, shrink=0.7, label="normal deviation [mm]")
+    # The rings, on the deformed mean shape: the mean distance from the axis and height of the
+    # surface nodes near each ring's reference latitude (within a node spacing), drawn over the
+    # modelled sector's azimuths.
+    a = np.zeros(3)
+    a[axis] = 1.0
+    r0 = X[used] - center
+    h0 = r0 @ a
+    rho0 = np.linalg.norm(r0 - np.outer(h0, a), axis=1)
+    latitude = np.degrees(np.arctan2(h0, rho0))
+    e_u, e_v = np.eye(3)[order[0]], np.eye(3)[order[1]]
+    azimuth = np.arctan2(r0 @ e_v, r0 @ e_u)
+    edges = np.concatenate([tris[:, [0, 1]], tris[:, [1, 2]]])
+    spacing = np.degrees(np.median(np.linalg.norm(X[edges[:, 0]] - X[edges[:, 1]], axis=1))
+                         / max(np.median(np.linalg.norm(r0, axis=1)), 1e-12))
+    xc = x[used] - center
+    hc = xc @ a
+    rhoc = np.linalg.norm(xc - np.outer(hc, a), axis=1)
+    for ring in settings.get("rings_deg") or []:
+        near = np.abs(latitude - float(ring)) < max(0.5, spacing)
+        if not near.any():
+            continue
+        phi = np.linspace(azimuth[near].min(), azimuth[near].max(), 200)
+        rho, h = rhoc[near].mean(), hc[near].mean()
+        p = center + rho * (np.outer(np.cos(phi), e_u) + np.outer(np.sin(phi), e_v)) + h * a
+        ax.plot(p[:, order[0]], p[:, order[1]], p[:, order[2]], "k-", linewidth=1.2, zorder=10)
+    ax.set_box_aspect(np.ptp(x[used][:, order], axis=0) + 1e-9)
+    ax.view_init(elev=35, azim=-55)
+    ax.set_axis_off()
+    ax.set_title(title, fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    print(path)
+    return True
+
+
+def wrinkle_maps(run, summary, out):
+    settings = case_wrinkle_settings(summary)
+    if not settings.get("rings_deg"):
+        return
+    files = []
+    last = study.last_vtu(run)
+    if last and last.endswith(".vtu"):
+        files.append((last, os.path.join(out, "wrinkle_map.png"),
+                      f"t = {summary.get('final_time', '?')}: normal deviation, rings"))
+    for event in (summary.get("stability") or {}).get("instabilities", []):
+        vtu = os.path.join(run, event.get("file", ""))
+        if vtu.endswith(".vtu") and os.path.isfile(vtu):
+            files.append((vtu, os.path.join(out, f"wrinkle_map_step_{event['step']:04d}.png"),
+                          f"step {event['step']} (stability lost): normal deviation, rings"))
+    for vtu, path, title in files:
+        wrinkle_map(vtu, settings, path, title)
+
+
+def main():
+    if len(sys.argv) != 4:
+        fail("usage: plot.py RUN_DIR OUT_DIR PLISSE_EXECUTABLE")
+    run, out, plisse = sys.argv[1:]
+    if not os.path.isfile(os.path.join(run, "history.csv")):
+        fail(f"{run}: not a run directory (no history.csv)")
+    h = read_history(run)
+    summary = {}
+    if os.path.isfile(os.path.join(run, "summary.json")):
+        with open(os.path.join(run, "summary.json")) as f:
+            summary = json.load(f)
+    os.makedirs(out, exist_ok=True)
+    units = reference_units(plisse)
+    forces_figure(h, units, out)
+    pressure_volume_figure(h, units, out)
+    newton_figure(h, out)
+    wrinkles_figure(h, out)
+    wrinkle_maps(run, summary, out)
+
+
+if __name__ == "__main__":
+    main()

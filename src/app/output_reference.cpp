@@ -1,0 +1,409 @@
+#include "app/output_reference.hpp"
+
+#include "core/error.hpp"
+
+namespace plisse::app {
+namespace {
+
+const std::vector<OutputEntry> kHistory = {
+    {"step", "–", "always", "converged step, counted from 1"},
+    {"time", "–", "always",
+     "the step's time t in [0, `solver.end_time`]: the quasi-static load parameter every ramp is a "
+     "function of (`loads[].ramp`, `dies[].move.ramp`, ...)"},
+    {"load_factor", "–", "always",
+     "t / `solver.end_time`, the fraction of the run done; each load's own magnitude is its "
+     "column (`pressure:<load>`, `load_x:<load>`, ...), since ramps may start and end anywhere"},
+    {"newton_iterations", "–", "always",
+     "Newton iterations (tangents factorised) of the step's accepted attempt, over all its contact "
+     "passes and a branch switch's re-solve; the attempts cut back before it are not counted "
+     "here (summary.json `failed_newton_iterations`)"},
+    {"residual_norm", "–", "always",
+     "‖R‖₂ of the free equations at the converged state (nodal forces in N and pressure "
+     "equations in mm³ together)"},
+    {"pressure:<load>", "MPa", "`loads[]` of type pressure",
+     "the pressure at t, `value` times its ramp; positive pushes against the body's outward "
+     "normal (on a balloon's `inner` surface it inflates)"},
+    {"volume:<load>", "mm³",
+     "a pressure load whose surface is closed, or closed by the planes "
+     "x = 0, y = 0, z = 0",
+     "the volume the loaded surface encloses in the deformed state (of the modelled part), "
+     "positive; with `pressure:<load>` the pressure–volume curve"},
+    {"full_volume:<load>", "mm³", "as `volume:<load>`, on a surface closed by mirror planes",
+     "the whole body's: `volume:<load>` times 2 for each mirror plane (`symmetry` condition) "
+     "that closes it"},
+    {"load_x:<load>", "N", "`loads[]` of types gravity, traction, point-force, follower-traction",
+     "x component of the load's total force on the body at t (likewise `load_y`, `load_z`)"},
+    {"load_y:<load>", "N", "as `load_x:<load>`", "y component of the load's total force"},
+    {"load_z:<load>", "N", "as `load_x:<load>`", "z component of the load's total force"},
+    {"work:<load>", "mJ", "as `load_x:<load>`",
+     "work done by the load on the body since t = 0 (N mm = mJ; trapezoidal in the steps, exact "
+     "while the load is held)"},
+    {"pressure:<cavity>", "MPa", "`cavities[]`",
+     "the cavity's gauge pressure (gas law, or the multiplier of a prescribed volume); positive "
+     "pushes the wall away from the cavity"},
+    {"volume:<cavity>", "mm³", "`cavities[]`",
+     "the cavity's volume in the deformed state, of the modelled part (an octant holds V/8)"},
+    {"full_volume:<cavity>", "mm³", "`cavities[]` closed by mirror planes",
+     "the whole cavity's volume: `volume:<cavity>` times 2 for each mirror plane (`symmetry` "
+     "condition) that closes it"},
+    {"force_x:<die>", "N", "`dies[]`",
+     "x component of the force of the body on the die (a die pushing down, −y, on a body has "
+     "`force_y` > 0); of the modelled part (likewise `force_y`, `force_z`)"},
+    {"force_y:<die>", "N", "`dies[]`", "y component of the force of the body on the die"},
+    {"force_z:<die>", "N", "`dies[]`", "z component of the force of the body on the die"},
+    {"contact_nodes:<die>", "–", "`dies[]`, `contacts[]`",
+     "surface nodes in contact (or glued, for a sticking die) at the converged state"},
+    {"penetration:<die>", "mm", "`dies[]`, `contacts[]`",
+     "largest penetration of a node into the die (or the other surface); at most the contact "
+     "`tolerance` once converged"},
+    {"stick_nodes:<die>", "–", "`dies[]` with `contact: coulomb`", "contact nodes that stick"},
+    {"slip_nodes:<die>", "–", "`dies[]` with `contact: coulomb`", "contact nodes that slip"},
+    {"force_x:<contact>", "N", "`contacts[]`",
+     "x component of the force of the second surface on the first (likewise y, z); a self-contact "
+     "reports the force across it"},
+    {"force_y:<contact>", "N", "`contacts[]`", "as `force_x:<contact>`, y component"},
+    {"force_z:<contact>", "N", "`contacts[]`", "as `force_x:<contact>`, z component"},
+    {"force_x:<cap>", "N", "`caps[]`",
+     "x component of the force the cap exerts on the body (likewise y, z)"},
+    {"force_y:<cap>", "N", "`caps[]`", "y component of the cap's force on the body"},
+    {"force_z:<cap>", "N", "`caps[]`", "z component of the cap's force on the body"},
+    {"moment_x:<cap>", "N mm", "`caps[]`",
+     "x component of the cap's moment on the body about its moved reference point (likewise y, "
+     "z)"},
+    {"moment_y:<cap>", "N mm", "`caps[]`", "y component of the cap's moment"},
+    {"moment_z:<cap>", "N mm", "`caps[]`", "z component of the cap's moment"},
+    {"ux:<cap>", "mm", "`caps[]`", "x displacement of the cap's reference point (likewise y, z)"},
+    {"uy:<cap>", "mm", "`caps[]`", "y displacement of the cap's reference point"},
+    {"uz:<cap>", "mm", "`caps[]`", "z displacement of the cap's reference point"},
+    {"rx:<cap>", "rad", "`caps[]`", "x component of the cap's rotation vector (likewise y, z)"},
+    {"ry:<cap>", "rad", "`caps[]`", "y component of the cap's rotation vector"},
+    {"rz:<cap>", "rad", "`caps[]`", "z component of the cap's rotation vector"},
+    {"dissipated_energy", "mJ", "`solver.viscosity` > 0",
+     "energy the viscous stabilisation has dissipated since t = 0; keep it small against "
+     "`strain_energy`"},
+    {"stretch", "–", "`output.stretch_axis`",
+     "the reference-volume average of F along that axis (F_xx, F_yy or F_zz)"},
+    {"stretch_x", "–", "always",
+     "reference-volume average of F_xx over the body (likewise `stretch_y`, `stretch_z`); the "
+     "stretch along x of a homogeneous deformation"},
+    {"stretch_y", "–", "always", "reference-volume average of F_yy"},
+    {"stretch_z", "–", "always", "reference-volume average of F_zz"},
+    {"cauchy_xx", "MPa", "always",
+     "current-volume average of the Cauchy stress σ_xx over the body, tension positive "
+     "(likewise `cauchy_yy`, `cauchy_zz`, and the shear components `cauchy_xy`, `cauchy_yz`, "
+     "`cauchy_xz`)"},
+    {"cauchy_yy", "MPa", "always", "average σ_yy"},
+    {"cauchy_zz", "MPa", "always", "average σ_zz"},
+    {"cauchy_xy", "MPa", "always", "average σ_xy"},
+    {"cauchy_yz", "MPa", "always", "average σ_yz"},
+    {"cauchy_xz", "MPa", "always", "average σ_xz"},
+    {"force_x:<boundary>", "N", "`boundary[]` with a `name`",
+     "x component of the reaction: the force the condition exerts on the body, summed over the "
+     "constrained components of its surface's nodes (a mirror plane holding a pressurised "
+     "octant pulls it, negative along the plane's outward normal; likewise y, z)"},
+    {"force_y:<boundary>", "N", "`boundary[]` with a `name`", "y component of the reaction"},
+    {"force_z:<boundary>", "N", "`boundary[]` with a `name`", "z component of the reaction"},
+    {"ux:<probe>", "mm", "`probes[]`",
+     "x displacement of the mesh node nearest to the probe's point (likewise y, z)"},
+    {"uy:<probe>", "mm", "`probes[]`", "y displacement of the probe's node"},
+    {"uz:<probe>", "mm", "`probes[]`", "z displacement of the probe's node"},
+    {"volume", "mm³", "always", "the body's volume in the deformed state, of the modelled part"},
+    {"min_J", "–", "always",
+     "the smallest element average of det F: 1 for an exactly incompressible material up to the "
+     "discretisation; below 1 a nearly incompressible one is compressed"},
+    {"strain_energy", "mJ", "always",
+     "energy stored in the body, of the modelled part (N mm = mJ)"},
+    {"min_thickness", "mm", "a shell or sheet (the mesh has a wall thickness and wall faces)",
+     "the smallest current wall thickness over the nodes (VTU field `thickness`)"},
+    {"negative_pivots", "–", "`solver.stability.check`",
+     "negative pivots of the tangent's LDLᵀ factorisation at the converged state"},
+    {"expected_negative_pivots", "–", "`solver.stability.check`",
+     "the negative pivots of a stable state (one per pressure unknown and constraint "
+     "multiplier); more means the state is unstable"},
+    {"stable", "–", "`solver.stability.check`",
+     "1 when negative_pivots = expected_negative_pivots and no pivot is zero, else 0"},
+    {"wrinkle_amplitude", "mm", "`output.wrinkles.rings_deg`",
+     "the largest ring amplitude at the step (peak to peak of the ring's wrinkle band)"},
+    {"wrinkle_count", "–", "`output.wrinkles.rings_deg`",
+     "the full-circle wave count of that ring (0 when no ring has a wrinkle band)"},
+    {"wrinkled_fraction", "–", "`output.wrinkles.rings_deg`",
+     "fraction of the measured surface's area that is wrinkled in the tension-field sense (one "
+     "principal membrane stress compressive)"},
+    {"slack_fraction", "–", "`output.wrinkles.rings_deg`",
+     "fraction of that area that is slack (both principal membrane stresses compressive)"},
+};
+
+const std::vector<OutputEntry> kSummary = {
+    {"case", "–", "always", "the case file as given on the command line"},
+    {"case_path", "–", "always", "the case file's absolute path"},
+    {"overrides", "–", "always", "the `--set KEY=VALUE` overrides of the run, in order"},
+    {"title", "–", "always", "the case's `title`"},
+    {"completed", "–", "always", "true when the run reached `solver.end_time`"},
+    {"interrupted", "–", "always", "true when a signal (Ctrl-C, SIGTERM) stopped the run"},
+    {"failure", "–", "the run did not complete", "why the run stopped early"},
+    {"nodes", "–", "always", "mesh nodes (corner and edge nodes)"},
+    {"elements", "–", "always", "tetrahedra"},
+    {"element", "–", "always", "the element family: `mini` or `taylor-hood`"},
+    {"dofs", "–", "always", "all unknowns, constrained ones included"},
+    {"free_dofs", "–", "always", "the unknowns solved for (the size of the linear systems)"},
+    {"pressure_dofs", "–", "always", "free pressure unknowns"},
+    {"steps", "–", "always", "converged steps of this run (since the resume, after --resume)"},
+    {"newton_iterations", "–", "always",
+     "Newton iterations of this run, over all attempts: the sum of the history column over its "
+     "steps plus `failed_newton_iterations`"},
+    {"failed_newton_iterations", "–", "always",
+     "Newton iterations spent in attempts that failed and were cut back"},
+    {"reused_factor_solves", "–", "always",
+     "linear solves with a factorisation already at hand (no new tangent), over all attempts"},
+    {"cutbacks", "–", "always", "failed attempts that were retried with a smaller step"},
+    {"final_time", "–", "always", "time t of the last converged step"},
+    {"factorisations", "–", "always", "numerical factorisations of the tangent"},
+    {"factor_entries", "–", "a direct solver and at least one iteration",
+     "entries of the last factor (its fill is this over the tangent's nonzeros)"},
+    {"wall_time.mesh", "s", "always", "reading or generating the mesh"},
+    {"wall_time.setup", "s", "always", "building the model and the solver"},
+    {"wall_time.assembly", "s", "always", "assembling residuals and tangents"},
+    {"wall_time.linear_solve", "s", "always",
+     "linear solves, factorisations included (the next two are parts of it)"},
+    {"wall_time.factorisation", "s", "always", "numerical factorisations"},
+    {"wall_time.triangular_solve", "s", "always", "forward and backward substitutions"},
+    {"wall_time.output", "s", "always", "history rows, step files, wrinkle metrics"},
+    {"wall_time.total", "s", "always", "the whole run"},
+    {"ranks", "–", "always", "MPI processes"},
+    {"peak_memory_mib", "MiB", "always", "peak resident memory summed over the ranks"},
+    {"peak_memory_per_rank_mib", "MiB", "always", "the largest rank's peak resident memory"},
+    {"stability.checks", "–", "`solver.stability.check`", "states whose inertia was checked"},
+    {"stability.check_seconds", "s", "`solver.stability.check`", "time spent on the checks"},
+    {"stability.eigenmode_seconds", "s", "`solver.stability.check`",
+     "time spent computing eigenmodes"},
+    {"stability.stable_at_end", "–", "`solver.stability.check`", "the last state's `stable`"},
+    {"stability.instabilities", "–", "`solver.stability.check`",
+     "the steps where the state became unstable, in order (empty: none), each with the keys "
+     "below"},
+    {"stability.instabilities[].step", "–", "`solver.stability.check`",
+     "a step where the state became unstable (more negative pivots than the step before)"},
+    {"stability.instabilities[].time", "–", "`solver.stability.check`", "its time t"},
+    {"stability.instabilities[].negative_pivots", "–", "`solver.stability.check`",
+     "negative pivots of the unperturbed state there"},
+    {"stability.instabilities[].expected_negative_pivots", "–", "`solver.stability.check`",
+     "those of a stable state"},
+    {"stability.instabilities[].eigenvalues", "N/mm", "`solver.stability.check`",
+     "the lowest eigenvalues of the tangent there, ascending (negative: unstable directions)"},
+    {"stability.instabilities[].branch_switched", "–", "`solver.stability.check`",
+     "true when the run went on along the first mode (`branch_switch`)"},
+    {"stability.instabilities[].perturbation_mm", "mm", "`solver.stability.check`",
+     "the amplitude of the mode that switched branch"},
+    {"stability.instabilities[].file", "–", "`solver.stability.check`",
+     "the step file holding the modes (`mode_1`, `mode_2`, ...)"},
+    {"wrinkles.wrinkled", "–", "`output.wrinkles.rings_deg`",
+     "true when a ring of the last state is wrinkled"},
+    {"wrinkles.max_amplitude", "mm", "`output.wrinkles.rings_deg`", "the largest ring amplitude"},
+    {"wrinkles.threshold", "mm", "`output.wrinkles.rings_deg`",
+     "the amplitude above which a ring is wrinkled (`threshold` × wall thickness)"},
+    {"wrinkles.peak_ratio", "–", "`output.wrinkles.rings_deg`", "the option `peak_ratio`"},
+    {"wrinkles.min_count", "–", "`output.wrinkles.rings_deg`", "the option `min_count`"},
+    {"wrinkles.thickness", "mm", "`output.wrinkles.rings_deg`", "the wall thickness of the case"},
+    {"wrinkles.axis", "–", "`output.wrinkles.rings_deg`", "the rings' axis"},
+    {"wrinkles.surface", "–", "`output.wrinkles.rings_deg`", "the surface the rings lie on"},
+    {"wrinkles.rings", "–", "`output.wrinkles.rings_deg`",
+     "one entry per ring, in the order of `rings_deg`, with the keys below"},
+    {"wrinkles.rings[].latitude_deg", "deg", "`output.wrinkles.rings_deg`",
+     "the ring's latitude (0 the equator)"},
+    {"wrinkles.rings[].decision", "–", "`output.wrinkles.rings_deg`",
+     "why the ring is or is not wrinkled (docs/case-file.md, Wrinkle metrics)"},
+    {"wrinkles.rings[].count", "–", "`output.wrinkles.rings_deg`",
+     "full-circle wave count of the wrinkles (0 when none)"},
+    {"wrinkles.rings[].amplitude", "mm", "`output.wrinkles.rings_deg`",
+     "peak-to-peak amplitude of the wrinkle band"},
+    {"wrinkles.rings[].wavelength", "mm", "`output.wrinkles.rings_deg`",
+     "the wrinkles' wavelength along the ring"},
+    {"wrinkles.rings[].dominant_count", "–", "`output.wrinkles.rings_deg`",
+     "the largest harmonic m ≥ `min_count`, wrinkles or not"},
+    {"wrinkles.rings[].residual_amplitude", "mm", "`output.wrinkles.rings_deg`",
+     "peak to peak without the harmonics below `min_count`"},
+    {"wrinkles.rings[].band", "–", "`output.wrinkles.rings_deg`",
+     "the harmonics whose sum is the amplitude"},
+    {"wrinkles.rings[].mean_radius", "mm", "`output.wrinkles.rings_deg`",
+     "the ring's mean distance from the axis"},
+    {"wrinkles.rings[].points", "–", "`output.wrinkles.rings_deg`", "points sampled on the ring"},
+    {"wrinkles.rings[].sector_deg", "deg", "`output.wrinkles.rings_deg`",
+     "the angle the modelled part spans (90 for a quarter)"},
+    {"wrinkles.rings[].spectrum", "mm", "`output.wrinkles.rings_deg`",
+     "rows [m, A_m, E_m]: each harmonic's amplitude and the global shape's envelope there"},
+    {"wrinkles.tension_field.taut", "–", "`output.wrinkles.rings_deg`",
+     "through-thickness columns in tension both ways"},
+    {"wrinkles.tension_field.wrinkled", "–", "`output.wrinkles.rings_deg`",
+     "columns with one compressive principal membrane stress"},
+    {"wrinkles.tension_field.slack", "–", "`output.wrinkles.rings_deg`",
+     "columns with two compressive principal membrane stresses"},
+    {"final.<column>", "as the column", "at least one step",
+     "every history.csv column at the last converged step"},
+};
+
+const std::vector<OutputEntry> kVtuPoint = {
+    {"displacement", "mm", "always", "u = x − X, 3 components"},
+    {"velocity", "mm", "always",
+     "the displacement's change over the step divided by the step's Δt (3 components; Δt in "
+     "units of the load parameter t, so not a physical speed)"},
+    {"pressure", "MPa", "always",
+     "the pressure unknown p, positive in compression (σ = −p I + the isochoric part); on a "
+     "Taylor-Hood mesh's edge nodes the mean of the edge's corners"},
+    {"reaction", "N", "always",
+     "the force the constraints exert on the body at each node (3 components): zero on the free "
+     "components, the nodal reaction on the prescribed ones; summed over a surface it is "
+     "`force_x:<boundary>` ..."},
+    {"thickness", "mm", "a shell or sheet (the mesh has a wall thickness and wall faces)",
+     "the current wall thickness at the node: its distance to one face of the wall plus its "
+     "distance to the other (\"Wall thickness\" below)"},
+    {"mode_<k>", "–", "the step where stability was lost (`solver.stability.modes`)",
+     "the displacement part of the k-th lowest eigenmode of the tangent (a shape: its scale is "
+     "arbitrary)"},
+    {"contact_<die>", "–", "`dies[]`",
+     "the node's contact state with the die: 0 free, 1 sliding, 2 sticking"},
+    {"contact_pressure_<die>", "MPa", "`dies[]`",
+     "the normal part of the die's force on the node per reference area, positive pushing the "
+     "body away from the die; 0 off the die's surface `dies[].surface`"},
+    {"gap_<die>", "mm", "`dies[]`",
+     "the signed normal distance from the die to the node, negative when it penetrates; 0 off "
+     "the die's surface"},
+    {"contact_<contact>", "MPa", "`contacts[]`",
+     "the contact pressure per reference area at the nodes of the first surface"},
+};
+
+const std::vector<OutputEntry> kVtuCell = {
+    {"cauchy_stress", "MPa", "always",
+     "the element's volume average of the Cauchy stress σ, 6 components xx, yy, zz, xy, yz, xz, "
+     "tension positive"},
+    {"von_mises", "MPa", "always", "√(3/2 dev σ̄ : dev σ̄) of that average"},
+    {"J", "–", "always", "the element's volume average of det F"},
+    {"principal_stretches", "–", "always",
+     "λ1 ≥ λ2 ≥ λ3, the square roots of the eigenvalues of C = Fᵀ F of the element's average F "
+     "(3 components); on a membrane the smallest is usually the through-thickness stretch"},
+    {"principal_stresses", "MPa", "always",
+     "σ1 ≥ σ2 ≥ σ3, the eigenvalues of the element's average Cauchy stress (3 components), "
+     "tension positive"},
+    {"wrinkle_state", "–", "`output.wrinkles.rings_deg`",
+     "the tension-field state of the element's through-thickness column: 0 taut, 1 wrinkled, "
+     "2 slack"},
+};
+
+/// The literal characters of a pattern (its length without the `<...>` parts).
+std::size_t literal_length(std::string_view pattern) {
+  std::size_t n = 0;
+  for (bool inside = false; char ch : pattern) {
+    if (ch == '<') inside = true;
+    if (!inside) ++n;
+    if (ch == '>') inside = false;
+  }
+  return n;
+}
+
+/// Whether `name` matches `pattern`, where each `<...>` matches one or more characters.
+bool matches(std::string_view pattern, std::string_view name) {
+  const std::size_t open = pattern.find('<');
+  if (open == std::string_view::npos) return pattern == name;
+  const std::size_t close = pattern.find('>', open);
+  if (close == std::string_view::npos) return false;
+  if (name.substr(0, open) != pattern.substr(0, open)) return false;
+  const std::string_view rest = pattern.substr(close + 1);
+  for (std::size_t cut = open + 1; cut <= name.size(); ++cut)
+    if (matches(rest, name.substr(cut))) return true;
+  return false;
+}
+
+const char* table_name(OutputTable table) {
+  switch (table) {
+    case OutputTable::history:
+      return "history.csv column";
+    case OutputTable::summary:
+      return "summary.json key";
+    case OutputTable::vtu_point:
+      return "VTU point field";
+    case OutputTable::vtu_cell:
+      return "VTU cell field";
+  }
+  return "output";
+}
+
+/// `text` with '|' escaped, for a markdown table cell.
+std::string markdown_cell(const std::string& text) {
+  std::string out;
+  for (char ch : text) out += ch == '|' ? std::string("\\|") : std::string(1, ch);
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> output_reference_sections() {
+  return {"history", "summary", "vtu-point", "vtu-cell"};
+}
+
+const std::vector<OutputEntry>& output_reference(OutputTable table) {
+  switch (table) {
+    case OutputTable::history:
+      return kHistory;
+    case OutputTable::summary:
+      return kSummary;
+    case OutputTable::vtu_point:
+      return kVtuPoint;
+    case OutputTable::vtu_cell:
+      return kVtuCell;
+  }
+  return kHistory;
+}
+
+const OutputEntry* find_output_entry(OutputTable table, std::string_view name) {
+  const OutputEntry* best = nullptr;
+  for (const OutputEntry& e : output_reference(table))
+    if (matches(e.name, name) && (!best || literal_length(e.name) > literal_length(best->name)))
+      best = &e;
+  return best;
+}
+
+void require_output_entry(OutputTable table, std::string_view name) {
+  FE_CHECK(find_output_entry(table, name),
+           "the " << table_name(table) << " '" << name
+                  << "' has no entry in the output reference (app/output_reference.cpp, "
+                     "docs/output.md)");
+}
+
+namespace {
+
+void require_documented(const nlohmann::json& value, const std::string& path) {
+  if (value.is_object()) {
+    for (const auto& [key, item] : value.items())
+      require_documented(item, path.empty() ? key : path + "." + key);
+    return;
+  }
+  if (value.is_array() && !value.empty() && value.front().is_object()) {
+    for (const auto& item : value) require_documented(item, path + "[]");
+    return;
+  }
+  require_output_entry(OutputTable::summary, path);
+}
+
+}  // namespace
+
+void require_documented_summary(const nlohmann::json& summary) { require_documented(summary, ""); }
+
+std::string output_reference_markdown(const std::string& section) {
+  OutputTable table = OutputTable::history;
+  std::string head = "| column | unit | written | meaning |\n|---|---|---|---|\n";
+  if (section == "summary") {
+    table = OutputTable::summary;
+    head = "| key | unit | written | meaning |\n|---|---|---|---|\n";
+  } else if (section == "vtu-point" || section == "vtu-cell") {
+    table = section == "vtu-point" ? OutputTable::vtu_point : OutputTable::vtu_cell;
+    head = "| field | unit | written | meaning |\n|---|---|---|---|\n";
+  } else if (section != "history") {
+    throw Error("no output reference section '" + section +
+                "' (history, summary, vtu-point, vtu-cell)");
+  }
+  std::string text = head;
+  for (const OutputEntry& e : output_reference(table))
+    text += "| `" + e.name + "` | " + markdown_cell(e.unit) + " | " + markdown_cell(e.when) +
+            " | " + markdown_cell(e.meaning) + " |\n";
+  return text;
+}
+
+}  // namespace plisse::app
