@@ -1,9 +1,11 @@
-// `plisse wrinkles DIR [--set output.wrinkles.KEY=VALUE ...]`: recomputes the wrinkle metrics of
-// the last converged state of a finished (or stopped) run (docs/architecture.md, "Interface
-// contract"). The run directory's summary.json names the case and its --set values; checkpoint.bin
-// holds the final state (written at the end of every run). The table goes to DIR/wrinkles.json,
-// with the step measured and the --set values, and is printed; summary.json is not changed.
-// The directory is locked meanwhile: a run writing into it at the same time is refused.
+// `plisse wrinkles DIR [--step N] [--set output.wrinkles.KEY=VALUE ...]`: recomputes the wrinkle
+// metrics of the last converged state of a finished (or stopped) run, or of a written step
+// (docs/architecture.md, "Interface contract"). The run directory's summary.json names the case
+// and its --set values; checkpoint.bin holds the final state (written at the end of every run)
+// and the fingerprint the case and mesh are checked against; step N is read from its VTU file. The
+// table goes to DIR/wrinkles.json, with the step measured and the --set values, and is printed;
+// summary.json is not changed. The directory is locked meanwhile: a run writing into it at the same
+// time is refused.
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -17,7 +19,9 @@
 #include "core/error.hpp"
 #include "io/checkpoint.hpp"
 #include "io/json_file.hpp"
+#include "io/pvd_writer.hpp"
 #include "io/run_directory.hpp"
+#include "io/vtu_reader.hpp"
 #include "solver/petsc_session.hpp"
 
 namespace plisse::app {
@@ -28,7 +32,58 @@ namespace fs = std::filesystem;
 struct WrinklesOptions {
   std::string run_directory;
   std::vector<std::string> overrides;  ///< output.wrinkles.* only
+  int step = -1;                       ///< a written step (its VTU file); -1: the last state
 };
+
+/// What is measured: the state, its step and time.
+struct MeasuredState {
+  WrinkleMeter::Result result;
+  int step = 0;
+  double time = 0.0;
+};
+
+/// The metrics of written step `step` from its VTU file's displacement, cauchy_stress and J.
+MeasuredState measure_step_file(const fs::path& dir, int step, const Mesh& mesh,
+                                const WrinkleMeter& meter) {
+  const InputPlace place{dir.string(), 0, 0, "--step"};
+  const std::vector<PvdEntry> entries = read_pvd(dir / "solution.pvd");
+  const std::string vtu = RunDirectory::step_file_name(step);
+  const std::string pvtu = vtu.substr(0, vtu.size() - 4) + ".pvtu";
+  std::string written;
+  for (const PvdEntry& e : entries) {
+    if (e.file == pvtu)
+      throw InputError(place, "step " + std::to_string(step) +
+                                  " of a distributed run is written in pieces (" + pvtu +
+                                  ") whose cells carry no global numbering; measure the last "
+                                  "state (without --step) instead");
+    if (e.file != vtu) {
+      if (written.size() < 200) written += (written.empty() ? "" : ", ") + e.file;
+      continue;
+    }
+    const VtuField u = read_vtu_point_field(dir / e.file, "displacement");
+    const VtuField cauchy = read_vtu_cell_field(dir / e.file, "cauchy_stress");
+    const VtuField J = read_vtu_cell_field(dir / e.file, "J");
+    const auto n_nodes = static_cast<std::size_t>(mesh.n_nodes());
+    const auto n_cells = static_cast<std::size_t>(mesh.n_tets());
+    if (u.values.size() != 3 * n_nodes || cauchy.values.size() != 6 * n_cells ||
+        J.values.size() != n_cells)
+      throw InputError({(dir / e.file).string(), 0, 0, "--step"},
+                       "the step file does not fit the case's mesh (" + std::to_string(n_nodes) +
+                           " nodes, " + std::to_string(n_cells) + " tetrahedra)");
+    std::vector<Vec3d> displacement(n_nodes);
+    for (std::size_t v = 0; v < n_nodes; ++v)
+      displacement[v] = Vec3d(u.values[3 * v], u.values[3 * v + 1], u.values[3 * v + 2]);
+    std::vector<Mat3d> sigma(n_cells);
+    for (std::size_t k = 0; k < n_cells; ++k) {
+      const double* c = &cauchy.values[6 * k];  // xx, yy, zz, xy, yz, xz
+      sigma[k] << c[0], c[3], c[5], c[3], c[1], c[4], c[5], c[4], c[2];
+    }
+    return {meter.evaluate(mesh, displacement, sigma, J.values), step, e.time};
+  }
+  throw InputError(place, "step " + std::to_string(step) +
+                              " has no step file in solution.pvd (written: " + written +
+                              "; output.every decides which steps are written)");
+}
 
 std::vector<std::string> string_list(const nlohmann::json& j) {
   std::vector<std::string> out;
@@ -86,32 +141,38 @@ void recompute_wrinkles(const WrinklesOptions& options) {
       !changes.empty())
     throw InputError({(dir / "checkpoint.bin").string(), 0, 0, "DIR"},
                      "the run's state no longer matches its case (" + case_path + "): " + changes);
-  ModelParts parts = build_model_parts(c, mesh);
-  PetscSession petsc({"-no_signal_handler"});
-  const std::unique_ptr<MixedModel> model = make_model(mesh, std::move(parts));
-  try {
-    model->restore({checkpoint.state, checkpoint.bubbles, checkpoint.term_states});
-  } catch (const Error& e) {
-    throw InputError({(dir / "checkpoint.bin").string(), 0, 0, "DIR"}, e.what());
-  }
   const WrinkleMeter meter(c, mesh);
-  const WrinkleMeter::Result result = meter.evaluate(*model, model->element_fields());
+  MeasuredState measured;
+  if (options.step >= 0) {
+    measured = measure_step_file(dir, options.step, mesh, meter);
+  } else {
+    ModelParts parts = build_model_parts(c, mesh);
+    PetscSession petsc({"-no_signal_handler"});
+    const std::unique_ptr<MixedModel> model = make_model(mesh, std::move(parts));
+    try {
+      model->restore({checkpoint.state, checkpoint.bubbles, checkpoint.term_states});
+    } catch (const Error& e) {
+      throw InputError({(dir / "checkpoint.bin").string(), 0, 0, "DIR"}, e.what());
+    }
+    measured = {meter.evaluate(*model, model->element_fields()), checkpoint.steps, checkpoint.time};
+  }
+  const WrinkleMeter::Result& result = measured.result;
   // Its own file: summary.json stays the run's, matching history.csv.
   const nlohmann::json table = {{"case", case_path},
                                 {"run_overrides", run_overrides},
-                                {"step", checkpoint.steps},
-                                {"time", checkpoint.time},
+                                {"step", measured.step},
+                                {"time", measured.time},
                                 {"overrides", options.overrides},
                                 {"wrinkles", wrinkles_json(c, result)}};
   write_json_file(dir / "wrinkles.json", table);
 
   std::printf(
       "plisse wrinkles: %s, step %d at t = %g: %s (max amplitude %.4g mm, threshold %.4g mm)\n",
-      dir.string().c_str(), checkpoint.steps, checkpoint.time,
+      dir.string().c_str(), measured.step, measured.time,
       result.rings.wrinkled ? "wrinkled" : "not wrinkled", result.rings.max_amplitude,
       result.rings.threshold);
   std::printf("  written to %s\n", (dir / "wrinkles.json").string().c_str());
-  if (summary.contains("completed") && summary["completed"] == false)
+  if (options.step < 0 && summary.contains("completed") && summary["completed"] == false)
     std::printf(
         "  note: the run did not reach its end time; step %d is its last converged step%s\n",
         checkpoint.steps,
@@ -143,7 +204,8 @@ void recompute_wrinkles(const WrinklesOptions& options) {
 void add_wrinkles_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "wrinkles",
-      "Recompute the wrinkle metrics of a run's last converged state (writes DIR/wrinkles.json)");
+      "Recompute the wrinkle metrics of a run's last converged state, or of a written step with "
+      "--step N (writes DIR/wrinkles.json)");
   auto options = std::make_shared<WrinklesOptions>();
   cmd->add_option("dir", options->run_directory, "Run directory written by plisse run")->required();
   cmd->add_option("--set", options->overrides,
@@ -151,6 +213,10 @@ void add_wrinkles_command(CLI::App& app) {
                   "--set output.wrinkles.axis=z (output.wrinkles.* only; repeatable)")
       ->take_all()
       ->allow_extra_args(false);
+  cmd->add_option("--step", options->step,
+                  "Measure this written step (its step file: displacement, cauchy_stress, J) "
+                  "instead of the last state; 0 is the undeformed body")
+      ->check(CLI::NonNegativeNumber);
   cmd->callback([options] { recompute_wrinkles(*options); });
 }
 

@@ -191,16 +191,20 @@ WrinkleMeter::WrinkleMeter(const Case& c, const Mesh& mesh) : surface_(c.output.
 
 WrinkleMeter::Result WrinkleMeter::evaluate(const MixedModel& model,
                                             const std::vector<ElementFields>& fields) const {
-  const Mesh& mesh = model.mesh();
-  const std::vector<Vec3d> u = nodal_displacements(model);
-  Result r;
-  r.rings = evaluate_wrinkles(mesh.nodes, ring_triangles_, u, options_);
   std::vector<Mat3d> sigma(fields.size());
   std::vector<double> J(fields.size());
   for (std::size_t e = 0; e < fields.size(); ++e) {
     sigma[e] = fields[e].cauchy;
     J[e] = fields[e].J;
   }
+  return evaluate(model.mesh(), nodal_displacements(model), sigma, J);
+}
+
+WrinkleMeter::Result WrinkleMeter::evaluate(const Mesh& mesh, const std::vector<Vec3d>& u,
+                                            const std::vector<Mat3d>& sigma,
+                                            const std::vector<double>& J) const {
+  Result r;
+  r.rings = evaluate_wrinkles(mesh.nodes, ring_triangles_, u, options_);
   r.tension = compute_tension_field(mesh.nodes, mesh.tets, triangles_, columns_, u, sigma, J);
   return r;
 }

@@ -43,6 +43,10 @@ class WrinkleMeter {
   };
   /// Metrics of the model's current state, whose element_fields() are `fields`.
   Result evaluate(const MixedModel& model, const std::vector<ElementFields>& fields) const;
+  /// The same from a state given by its nodal displacements `u` and per-element Cauchy stress
+  /// and J (a step file's fields) on `mesh`, the mesh this meter was made for.
+  Result evaluate(const Mesh& mesh, const std::vector<Vec3d>& u, const std::vector<Mat3d>& sigma,
+                  const std::vector<double>& J) const;
 
   /// History columns and their values: wrinkle_amplitude (largest ring wrinkle amplitude, mm;
   /// 0 when no ring has a wrinkle peak), wrinkle_count (count of that ring, 0 likewise),

@@ -228,6 +228,28 @@ TEST(WrinkleTable, RunWritesItAndPlisseWrinklesReproducesIt) {
   EXPECT_NE(r.output.find("only output.wrinkles.* can change"), std::string::npos) << r.output;
   r = run_plisse_captured("wrinkles '" + (dir / "nothing").string() + "'");
   EXPECT_EQ(r.status, 2) << r.output;
+
+  // A written step from its VTU file: the last one gives the checkpoint's table exactly (the
+  // file holds the same doubles), step 0 the undeformed body, whose rings are flat.
+  const std::string last_step = std::to_string(h.rows.size());
+  r = run_plisse_captured("wrinkles '" + dir.string() + "' --step " + last_step);
+  ASSERT_EQ(r.status, 0) << r.output;
+  again = read_json_file(dir / "wrinkles.json");
+  EXPECT_EQ(again["step"].get<std::size_t>(), h.rows.size());
+  EXPECT_EQ(again["time"].get<double>(), 1.0);
+  EXPECT_EQ(again["wrinkles"], w) << again["wrinkles"].dump(1);
+  r = run_plisse_captured("wrinkles '" + dir.string() + "' --step 0");
+  ASSERT_EQ(r.status, 0) << r.output;
+  again = read_json_file(dir / "wrinkles.json");
+  EXPECT_EQ(again["step"].get<int>(), 0);
+  EXPECT_EQ(again["time"].get<double>(), 0.0);
+  EXPECT_EQ(again["wrinkles"]["max_amplitude"].get<double>(), 0.0);
+  r = run_plisse_captured("wrinkles '" + dir.string() + "' --step 99");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("step 99 has no step file in solution.pvd (written: step_0000.vtu"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(read_json_file(dir / "summary.json"), run);
 }
 
 const std::string kFlattened =
