@@ -213,32 +213,63 @@ def normal_deviation(X, x, axis, center):
     return (rho - mean_rho[inv]) * n_rho[inv] + (h - mean_h[inv]) * n_h[inv]
 
 
-def surface_figure(vtu, case_wrinkles, path, title):
+def surface_figure(vtu, settings, path, title):
+    """The deformed measured surface of `vtu` coloured by its normal deviation from the mean
+    (axisymmetric) shape at the same reference latitude, with the rings of settings["rings_deg"]
+    drawn on the mean shape. `settings`: the case's output.wrinkles (axis, center, rings_deg).
+    False when the file has no tetrahedra or displacement."""
     mesh = meshio.read(vtu)
     X = mesh.points
     tets = mesh.cells_dict.get("tetra")
     if tets is None and "tetra10" in mesh.cells_dict:
-        tets = mesh.cells_dict["tetra10"][:, :4]  # corners: the figure draws flat triangles
+        tets = mesh.cells_dict["tetra10"][:, :4]
     if tets is None or "displacement" not in mesh.point_data:
         return False
     x = X + mesh.point_data["displacement"]
-    axis = AXES.get(case_wrinkles.get("axis", "y"), 1)
-    center = np.array(case_wrinkles.get("center", [0.0, 0.0, 0.0]), dtype=float)
+    axis = AXES.get(settings.get("axis", "y"), 1)
+    center = np.array(settings.get("center", [0.0, 0.0, 0.0]), dtype=float)
     tris = outer_surface(X, tets, center)
+    if len(tris) == 0:
+        return False
     used = np.unique(tris)
     dev = np.zeros(len(X))
     dev[used] = normal_deviation(X[used], x[used], axis, center)
     face_dev = dev[tris].mean(axis=1)
-    limit = max(np.percentile(np.abs(face_dev), 99), 1e-6)
+    limit = max(np.percentile(np.abs(face_dev), 99), 1e-9)
     fig = plt.figure(figsize=(6.4, 5.2))
     ax = fig.add_subplot(projection="3d")
-    # Show the wrinkle axis vertical: plot (u, v, w) with w along the axis.
-    order = [(axis + 1) % 3, (axis + 2) % 3, axis]
+    ax.computed_zorder = False  # the rings are drawn over the surface
+    order = [(axis + 1) % 3, (axis + 2) % 3, axis]  # the rings' axis vertical
     surf = ax.plot_trisurf(x[:, order[0]], x[:, order[1]], x[:, order[2]], triangles=tris,
                            cmap="coolwarm", linewidth=0, antialiased=False, shade=False)
     surf.set_array(face_dev)
     surf.set_clim(-limit, limit)
     fig.colorbar(surf, ax=ax, shrink=0.7, label="normal deviation [mm]")
+    # The rings, on the deformed mean shape: the mean distance from the axis and height of the
+    # surface nodes near each ring's reference latitude (within a node spacing), drawn over the
+    # modelled sector's azimuths.
+    a = np.zeros(3)
+    a[axis] = 1.0
+    r0 = X[used] - center
+    h0 = r0 @ a
+    rho0 = np.linalg.norm(r0 - np.outer(h0, a), axis=1)
+    latitude = np.degrees(np.arctan2(h0, rho0))
+    e_u, e_v = np.eye(3)[order[0]], np.eye(3)[order[1]]
+    azimuth = np.arctan2(r0 @ e_v, r0 @ e_u)
+    edges = np.concatenate([tris[:, [0, 1]], tris[:, [1, 2]]])
+    spacing = np.degrees(np.median(np.linalg.norm(X[edges[:, 0]] - X[edges[:, 1]], axis=1))
+                         / max(np.median(np.linalg.norm(r0, axis=1)), 1e-12))
+    xc = x[used] - center
+    hc = xc @ a
+    rhoc = np.linalg.norm(xc - np.outer(hc, a), axis=1)
+    for ring in settings.get("rings_deg") or []:
+        near = np.abs(latitude - float(ring)) < max(0.5, spacing)
+        if not near.any():
+            continue
+        phi = np.linspace(azimuth[near].min(), azimuth[near].max(), 200)
+        rho, h = rhoc[near].mean(), hc[near].mean()
+        p = center + rho * (np.outer(np.cos(phi), e_u) + np.outer(np.sin(phi), e_v)) + h * a
+        ax.plot(p[:, order[0]], p[:, order[1]], p[:, order[2]], "k-", linewidth=1.2, zorder=10)
     ax.set_box_aspect(np.ptp(x[used][:, order], axis=0) + 1e-9)
     ax.view_init(elev=35, azim=-55)
     ax.set_axis_off()

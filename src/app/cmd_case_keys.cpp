@@ -8,8 +8,8 @@
 
 #include "app/commands.hpp"
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
 #include "io/case_keys.hpp"
+#include "io/generated_blocks.hpp"
 
 namespace plisse::app {
 namespace {
@@ -21,18 +21,12 @@ struct CaseKeysOptions {
 
 void print_or_update(const CaseKeysOptions& o) {
   if (!o.update.empty()) {
-    const std::string doc = read_file(o.update);
-    const std::string fresh = refresh_case_key_blocks(doc);
-    if (fresh != doc) write_file_atomically(o.update, fresh);
-    std::cout << o.update << (fresh != doc ? ": key tables regenerated\n" : ": up to date\n");
+    const bool changed = update_generated_blocks(o.update, case_keys_markdown);
+    std::cout << o.update << (changed ? ": key tables regenerated\n" : ": up to date\n");
     return;
   }
-  const std::vector<std::string> sections = o.sections.empty() ? case_key_sections() : o.sections;
-  std::string text;
-  for (std::size_t i = 0; i < sections.size(); ++i)
-    text += (i ? "\n" : "") + ("<!-- generated: " + sections[i] + " -->\n") +
-            case_keys_markdown(sections[i]) + "<!-- end generated -->\n";
-  std::cout << text;
+  std::cout << generated_blocks(o.sections.empty() ? case_key_sections() : o.sections,
+                                case_keys_markdown);
 }
 
 }  // namespace

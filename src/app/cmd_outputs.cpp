@@ -8,7 +8,6 @@
 
 #include "app/commands.hpp"
 #include "app/output_reference.hpp"
-#include "io/atomic_file.hpp"
 #include "io/generated_blocks.hpp"
 
 namespace plisse::app {
@@ -21,19 +20,12 @@ struct OutputsOptions {
 
 void print_or_update(const OutputsOptions& o) {
   if (!o.update.empty()) {
-    const std::string doc = read_file(o.update);
-    const std::string fresh = refresh_generated_blocks(doc, output_reference_markdown);
-    if (fresh != doc) write_file_atomically(o.update, fresh);
-    std::cout << o.update << (fresh != doc ? ": output tables regenerated\n" : ": up to date\n");
+    const bool changed = update_generated_blocks(o.update, output_reference_markdown);
+    std::cout << o.update << (changed ? ": output tables regenerated\n" : ": up to date\n");
     return;
   }
-  const std::vector<std::string> sections =
-      o.sections.empty() ? output_reference_sections() : o.sections;
-  std::string text;
-  for (std::size_t i = 0; i < sections.size(); ++i)
-    text += (i ? "\n" : "") + ("<!-- generated: " + sections[i] + " -->\n") +
-            output_reference_markdown(sections[i]) + "<!-- end generated -->\n";
-  std::cout << text;
+  std::cout << generated_blocks(o.sections.empty() ? output_reference_sections() : o.sections,
+                                output_reference_markdown);
 }
 
 }  // namespace

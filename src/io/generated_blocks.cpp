@@ -1,6 +1,7 @@
 #include "io/generated_blocks.hpp"
 
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 
 namespace plisse {
 
@@ -22,6 +23,29 @@ std::string refresh_generated_blocks(
     at = end;
   }
   return out + doc.substr(at);
+}
+
+std::string generated_blocks(const std::vector<std::string>& names,
+                             const std::function<std::string(const std::string&)>& markdown) {
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) text += '\n';
+    text += "<!-- generated: ";
+    text += names[i];
+    text += " -->\n";
+    text += markdown(names[i]);
+    text += "<!-- end generated -->\n";
+  }
+  return text;
+}
+
+bool update_generated_blocks(const std::string& path,
+                             const std::function<std::string(const std::string&)>& markdown) {
+  const std::string doc = read_file(path);
+  const std::string fresh = refresh_generated_blocks(doc, markdown);
+  if (fresh == doc) return false;
+  write_file_atomically(path, fresh);
+  return true;
 }
 
 }  // namespace plisse

@@ -4,6 +4,7 @@
 /// hand. docs/case-file.md (case-file keys) and docs/output.md (output reference) have them.
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace plisse {
 
@@ -12,5 +13,15 @@ namespace plisse {
 /// and whatever `markdown` throws for an unknown NAME.
 std::string refresh_generated_blocks(
     const std::string& doc, const std::function<std::string(const std::string&)>& markdown);
+
+/// The blocks of `names`, each `<!-- generated: NAME -->`, markdown(NAME) and the end line, with
+/// an empty line between blocks: what `plisse case-keys` and `plisse outputs` print.
+std::string generated_blocks(const std::vector<std::string>& names,
+                             const std::function<std::string(const std::string&)>& markdown);
+
+/// Refreshes the blocks of the markdown file `path` in place (atomically, only when they
+/// changed) and returns whether they did.
+bool update_generated_blocks(const std::string& path,
+                             const std::function<std::string(const std::string&)>& markdown);
 
 }  // namespace plisse

@@ -48,9 +48,11 @@ TEST(WallThickness, FlatSlabIsExactUnderStretchAndShear) {
     Mat3d shear = Mat3d::Identity();
     shear(0, 2) = 0.6;
     const std::vector<double> sheared = thickness(affine_displacement(slab, shear));
-    for (std::size_t v = 0; v < sheared.size(); ++v)
-      if (slab.nodes[v].x() > 0.5 && slab.nodes[v].x() < 3.5)
+    for (std::size_t v = 0; v < sheared.size(); ++v) {
+      if (slab.nodes[v].x() > 0.5 && slab.nodes[v].x() < 3.5) {
         EXPECT_NEAR(sheared[v], t, 1e-14) << "order " << order << ", node " << v;
+      }
+    }
   }
 }
 
@@ -65,8 +67,9 @@ TEST(WallThickness, LayeredSphereBlownUpUniformly) {
   const double lambda = 1.3;
   const std::vector<double> t = thickness(affine_displacement(sphere, lambda * Mat3d::Identity()));
   for (std::size_t v = 0; v < t.size(); ++v) {
-    if (std::abs(sphere.nodes[v].norm() - 11.0) < 1e-9)
+    if (std::abs(sphere.nodes[v].norm() - 11.0) < 1e-9) {
       EXPECT_NEAR(t[v], lambda, 1e-12) << "outer node " << v;
+    }
     EXPECT_LE(t[v], lambda * (1 + 1e-12)) << "node " << v;
     EXPECT_GE(t[v], lambda * std::cos(0.15)) << "node " << v;
   }
