@@ -15,7 +15,6 @@ Reads RUN_DIR/history.csv, summary.json and the step files, and writes PNG files
 Axis labels take their units from the output reference (`plisse outputs history`).
 Exit status: 0 done, 2 RUN_DIR is not a run directory, 1 a figure could not be drawn.
 """
-import csv
 import json
 import os
 import re
@@ -30,28 +29,12 @@ import numpy as np  # noqa: E402
 from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import study  # noqa: E402  (surface_figure, case_wrinkle_settings, last_vtu)
+import study  # noqa: E402  (read_history, surface_figure, case_wrinkle_settings, last_vtu)
 
 
 def fail(message, status=2):
     print(f"plisse plot: {message}", file=sys.stderr)
     sys.exit(status)
-
-
-def read_history(run):
-    path = os.path.join(run, "history.csv")
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    if len(rows) < 2:
-        fail(f"{path}: no converged step to plot")
-    columns = rows[0]
-    values = []
-    for r in rows[1:]:
-        if len(r) != len(columns):
-            continue  # a row a killed run left unterminated
-        values.append([float(x) for x in r])
-    data = np.array(values)
-    return {c: data[:, i] for i, c in enumerate(columns)}
 
 
 def reference_units(plisse):
@@ -226,7 +209,9 @@ def main():
     run, out, plisse = sys.argv[1:]
     if not os.path.isfile(os.path.join(run, "history.csv")):
         fail(f"{run}: not a run directory (no history.csv)")
-    h = read_history(run)
+    h = study.read_history(run)
+    if not h:
+        fail(f"{os.path.join(run, 'history.csv')}: no converged step to plot")
     summary = {}
     if os.path.isfile(os.path.join(run, "summary.json")):
         with open(os.path.join(run, "summary.json")) as f:

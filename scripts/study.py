@@ -150,6 +150,7 @@ def largest_ring(summary):
 
 
 def read_history(run_dir):
+    """Column name -> values of a run's history.csv, or {} when it has no complete row."""
     path = os.path.join(run_dir, "history.csv")
     if not os.path.isfile(path):
         return {}
@@ -158,7 +159,12 @@ def read_history(run_dir):
     if len(rows) < 2:
         return {}
     cols = rows[0]
-    data = np.array([[float(x) if x not in ("", "nan") else np.nan for x in r] for r in rows[1:]])
+    # A row of another length is one a killed run left unterminated (a run still going may be
+    # writing it): it is left out.
+    data = np.array([[float(x) if x not in ("", "nan") else np.nan for x in r]
+                     for r in rows[1:] if len(r) == len(cols)])
+    if len(data) == 0:
+        return {}
     return {c: data[:, i] for i, c in enumerate(cols)}
 
 

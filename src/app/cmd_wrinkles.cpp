@@ -22,6 +22,7 @@
 #include "io/pvd_writer.hpp"
 #include "io/run_directory.hpp"
 #include "io/vtu_reader.hpp"
+#include "io/vtu_writer.hpp"
 #include "solver/petsc_session.hpp"
 
 namespace plisse::app {
@@ -73,12 +74,7 @@ MeasuredState measure_step_file(const fs::path& dir, int step, const Mesh& mesh,
     std::vector<Vec3d> displacement(n_nodes);
     for (std::size_t v = 0; v < n_nodes; ++v)
       displacement[v] = Vec3d(u.values[3 * v], u.values[3 * v + 1], u.values[3 * v + 2]);
-    std::vector<Mat3d> sigma(n_cells);
-    for (std::size_t k = 0; k < n_cells; ++k) {
-      const double* c = &cauchy.values[6 * k];  // xx, yy, zz, xy, yz, xz
-      sigma[k] << c[0], c[3], c[5], c[3], c[1], c[4], c[5], c[4], c[2];
-    }
-    return {meter.evaluate(mesh, displacement, sigma, J.values), step, e.time};
+    return {meter.evaluate(mesh, displacement, symmetric_tensors(cauchy), J.values), step, e.time};
   }
   throw InputError(place, "step " + std::to_string(step) +
                               " has no step file in solution.pvd (written: " + written +

@@ -215,6 +215,18 @@ VtuField make_symmetric_tensor_field(std::string name, std::span<const Mat3d> te
   return field;
 }
 
+std::vector<Mat3d> symmetric_tensors(const VtuField& field) {
+  FE_CHECK(field.n_components == 6, "VTU field '"
+                                        << field.name << "' has " << field.n_components
+                                        << " components, not the 6 of a symmetric tensor");
+  std::vector<Mat3d> tensors(field.values.size() / 6);
+  for (std::size_t k = 0; k < tensors.size(); ++k) {
+    const double* c = &field.values[6 * k];
+    tensors[k] << c[0], c[3], c[5], c[3], c[1], c[4], c[5], c[4], c[2];
+  }
+  return tensors;
+}
+
 VtuField make_tensor_field(std::string name, std::span<const Mat3d> tensors) {
   VtuField field{std::move(name), 9, {}};
   field.values.reserve(9 * tensors.size());

@@ -55,6 +55,10 @@ VtuField make_vector_field(std::string name, std::span<const Vec3d> vectors);
 /// Symmetric tensors (e.g. Cauchy stress [MPa]) as xx, yy, zz, xy, yz, xz. Reads the upper
 /// triangle; the caller guarantees symmetry.
 VtuField make_symmetric_tensor_field(std::string name, std::span<const Mat3d> tensors);
+/// The tensors of a field written by make_symmetric_tensor_field (6 components a tensor: xx, yy,
+/// zz, xy, yz, xz), e.g. read back with read_vtu_cell_field. Throws Error when the field does not
+/// have 6 components.
+std::vector<Mat3d> symmetric_tensors(const VtuField& field);
 /// Full tensors (e.g. F) row-major: T(0,0), T(0,1), T(0,2), T(1,0), ...
 VtuField make_tensor_field(std::string name, std::span<const Mat3d> tensors);
 

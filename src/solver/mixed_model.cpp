@@ -237,13 +237,16 @@ void MixedModel::restore_converged() {
   for (auto& term : terms_) term->reject_step();
 }
 
+double MixedModel::local_reaction(int node, int k) const {
+  // The residual is complete on the owned nodes only; on a free component it is not a reaction.
+  const int dof = DofMap::dof(node, k);
+  return distribution_->owns_node(node) && dofs().equation(dof) < 0 ? full_residual_[dof] : 0.0;
+}
+
 Vec3d MixedModel::reaction(const std::vector<int>& triangles) const {
-  const std::set<int> nodes = triangle_nodes(mesh_, triangles);
   Vec3d force = Vec3d::Zero();
-  for (int v : nodes)
-    if (distribution_->owns_node(v))  // the residual is complete on the owned nodes only
-      for (int k = 0; k < 3; ++k)
-        if (dofs().equation(DofMap::dof(v, k)) < 0) force[k] += full_residual_[DofMap::dof(v, k)];
+  for (int v : triangle_nodes(mesh_, triangles))
+    for (int k = 0; k < 3; ++k) force[k] += local_reaction(v, k);
   distribution_->sum_over_ranks(force.data(), 3);
   return force;
 }
@@ -251,10 +254,8 @@ Vec3d MixedModel::reaction(const std::vector<int>& triangles) const {
 std::vector<double> MixedModel::nodal_reactions() const {
   std::vector<double> reactions(3 * static_cast<std::size_t>(mesh_.n_nodes()), 0.0);
   for (int v = 0; v < mesh_.n_nodes(); ++v)
-    if (distribution_->owns_node(v))  // the residual is complete on the owned nodes only
-      for (int k = 0; k < 3; ++k)
-        if (dofs().equation(DofMap::dof(v, k)) < 0)
-          reactions[3 * static_cast<std::size_t>(v) + k] = full_residual_[DofMap::dof(v, k)];
+    for (int k = 0; k < 3; ++k)
+      reactions[3 * static_cast<std::size_t>(v) + k] = local_reaction(v, k);
   distribution_->sum_over_ranks(reactions.data(), reactions.size());
   return reactions;
 }

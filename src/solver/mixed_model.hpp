@@ -190,6 +190,9 @@ class MixedModel {
   double strain_energy() const;
 
  private:
+  /// This rank's share of the reaction on component k of `node`: the residual of the last
+  /// assemble_residual where the component is constrained and the node owned, else 0.
+  double local_reaction(int node, int k) const;
   /// The element assembly of the model's family.
   using Elements = std::variant<std::unique_ptr<ElementAssembly<MiniElement>>,
                                 std::unique_ptr<ElementAssembly<TaylorHoodElement>>>;
