@@ -7,32 +7,45 @@
 
 namespace plisse {
 
-double point_triangle_distance(const Vec3d& p, const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+Vec3d closest_point_weights(const Vec3d& p, const Vec3d& a, const Vec3d& b, const Vec3d& c) {
   // Barycentric tests region by region; the closest point q is a vertex, on an edge or inside.
   const Vec3d ab = b - a, ac = c - a, ap = p - a;
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0.0 && d2 <= 0.0) return ap.norm();  // vertex a
+  if (d1 <= 0.0 && d2 <= 0.0) return {1.0, 0.0, 0.0};  // vertex a
   const Vec3d bp = p - b;
   const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0.0 && d4 <= d3) return bp.norm();  // vertex b
+  if (d3 >= 0.0 && d4 <= d3) return {0.0, 1.0, 0.0};  // vertex b
   const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return (ap - (d1 / (d1 - d3)) * ab).norm();  // ab
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {  // edge ab
+    const double v = d1 / (d1 - d3);
+    return {1.0 - v, v, 0.0};
+  }
   const Vec3d cp = p - c;
   const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0.0 && d5 <= d6) return cp.norm();  // vertex c
+  if (d6 >= 0.0 && d5 <= d6) return {0.0, 0.0, 1.0};  // vertex c
   const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return (ap - (d2 / (d2 - d6)) * ac).norm();  // ac
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {  // edge ac
+    const double w = d2 / (d2 - d6);
+    return {1.0 - w, 0.0, w};
+  }
   const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {  // bc
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {  // edge bc
     const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return (bp - w * (c - b)).norm();
+    return {0.0, 1.0 - w, w};
   }
   const double denom = va + vb + vc;
-  if (denom <= 0.0) {  // degenerate triangle: nearest of its edges' end points
-    return std::min({ap.norm(), bp.norm(), cp.norm()});
+  if (denom <= 0.0) {  // degenerate triangle: the nearest of its corners
+    const double da = ap.squaredNorm(), db = bp.squaredNorm(), dc = cp.squaredNorm();
+    if (da <= db && da <= dc) return {1.0, 0.0, 0.0};
+    return db <= dc ? Vec3d(0.0, 1.0, 0.0) : Vec3d(0.0, 0.0, 1.0);
   }
   const double v = vb / denom, w = vc / denom;  // inside the face
-  return (ap - v * ab - w * ac).norm();
+  return {1.0 - v - w, v, w};
+}
+
+double point_triangle_distance(const Vec3d& p, const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+  const Vec3d w = closest_point_weights(p, a, b, c);
+  return (p - (w[0] * a + w[1] * b + w[2] * c)).norm();
 }
 
 namespace {

@@ -8,8 +8,12 @@
 
 namespace plisse {
 
-/// Distance from point p to the closed triangle (a, b, c) [mm] (closest point by Voronoi regions
-/// of the vertices, edges and face; Ericson, Real-Time Collision Detection, sec. 5.1.5).
+/// The barycentric weights (wa, wb, wc) of the point of the closed triangle (a, b, c) nearest to p
+/// (by Voronoi regions of the vertices, edges and face; Ericson, Real-Time Collision Detection,
+/// sec. 5.1.5). A degenerate triangle gives its nearest corner.
+Vec3d closest_point_weights(const Vec3d& p, const Vec3d& a, const Vec3d& b, const Vec3d& c);
+
+/// Distance from point p to the closed triangle (a, b, c) [mm]: to its closest_point_weights point.
 double point_triangle_distance(const Vec3d& p, const Vec3d& a, const Vec3d& b, const Vec3d& c);
 
 /// For each tetrahedron, the index into `triangles` of the triangle nearest to its centroid, in

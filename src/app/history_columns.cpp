@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <limits>
 
+#include "analysis/point_location.hpp"
 #include "analysis/wall_thickness.hpp"
 #include "app/output_reference.hpp"
 #include "io/history_writer.hpp"
 #include "mesh/topology.hpp"
+#include "physics/dirichlet.hpp"
 
 namespace plisse::app {
 namespace {
@@ -50,28 +52,37 @@ HistoryColumns::HistoryColumns(const Case& c, const MixedModel& model, const Wri
           row.push_back(r.averages.cauchy(i, j));
       });
   const Mesh& mesh = model.mesh();
+  const int mirrors = mirror_planes(c.boundary, mesh);
   for (const BoundaryCondition& bc : c.boundary) {
     if (bc.name.empty()) continue;
     const std::vector<int>* triangles = &mesh.surface_tags.at(bc.surface.name);
-    add(xyz_columns("force_", bc.name), [triangles](const StepRecord& r, std::vector<double>& row) {
+    // Reaching a mirror plane, the condition continues across it: the whole body's reaction sums
+    // the images (a symmetry condition's reaction is internal to the whole body).
+    const int cut =
+        bc.type == BoundaryType::symmetry ? 0 : planes_reached(mesh, *triangles, mirrors);
+    std::vector<std::string> names = xyz_columns("force_", bc.name);
+    if (cut != 0) {
+      const std::vector<std::string> whole = xyz_columns("full_force_", bc.name);
+      names.insert(names.end(), whole.begin(), whole.end());
+    }
+    add(names, [triangles, cut](const StepRecord& r, std::vector<double>& row) {
       const Vec3d f = r.model.reaction(*triangles);
       for (int k = 0; k < 3; ++k) row.push_back(f[k]);
+      if (cut == 0) return;
+      const Vec3d whole = whole_body_force(f, cut);
+      for (int k = 0; k < 3; ++k) row.push_back(whole[k]);
     });
   }
-  for (const Probe& probe : c.probes) {
-    const int node = nearest_node(mesh, probe.point);
-    add(xyz_columns("u", probe.name), [node](const StepRecord& r, std::vector<double>& row) {
-      for (int k = 0; k < 3; ++k) row.push_back(r.model.state()[DofMap::dof(node, k)]);
-    });
-  }
+  // A wall: a shell or sheet (a cube's top and bottom are not one).
+  if (const auto faces = c.mesh.wall_thickness() ? wall_faces(mesh) : std::nullopt)
+    wall_ = std::make_shared<const WallThickness>(mesh, *faces);
+  add_probes(c.probes, mesh);
   add({"volume", "min_J", "strain_energy"}, [](const StepRecord& r, std::vector<double>& row) {
     double min_J = std::numeric_limits<double>::infinity();
     for (const auto& f : r.fields) min_J = std::min(min_J, f.J);
     row.insert(row.end(), {r.averages.volume, min_J, r.model.strain_energy()});
   });
-  // A wall: a shell or sheet (a cube's top and bottom are not one).
-  if (const auto faces = c.mesh.wall_thickness() ? wall_faces(mesh) : std::nullopt) {
-    wall_ = std::make_shared<const WallThickness>(mesh, *faces);
+  if (wall_) {
     add({"min_thickness"}, [wall = wall_](const StepRecord& r, std::vector<double>& row) {
       const std::vector<double> t = (*wall)(nodal_displacements(r.model));
       row.push_back(*std::min_element(t.begin(), t.end()));
@@ -90,6 +101,108 @@ HistoryColumns::HistoryColumns(const Case& c, const MixedModel& model, const Wri
       for (double v : meter->history_values(*r.wrinkles)) row.push_back(v);
     });
   }
+}
+
+std::vector<std::string> probe_columns(ProbeField field, const std::string& probe) {
+  std::vector<std::string> stems;
+  switch (field) {
+    case ProbeField::displacement:
+      stems = {"ux", "uy", "uz"};
+      break;
+    case ProbeField::position:
+      stems = {"x", "y", "z"};
+      break;
+    case ProbeField::pressure:
+      stems = {"pressure"};
+      break;
+    case ProbeField::cauchy:
+      stems = {"cauchy_xx", "cauchy_yy", "cauchy_zz", "cauchy_xy", "cauchy_yz", "cauchy_xz"};
+      break;
+    case ProbeField::von_mises:
+      stems = {"von_mises"};
+      break;
+    case ProbeField::principal_stretches:
+      stems = {"stretch_1", "stretch_2", "stretch_3"};
+      break;
+    case ProbeField::principal_stresses:
+      stems = {"stress_1", "stress_2", "stress_3"};
+      break;
+    case ProbeField::J:
+      stems = {"J"};
+      break;
+    case ProbeField::thickness:
+      stems = {"thickness"};
+      break;
+  }
+  for (std::string& stem : stems) stem += ":" + probe;
+  return stems;
+}
+
+void HistoryColumns::add_probes(const std::vector<Probe>& probes, const Mesh& mesh) {
+  if (probes.empty()) return;
+  struct Located {
+    std::vector<ProbeField> fields;
+    int element;
+    std::vector<std::pair<int, double>> weights;
+  };
+  std::vector<Located> located;
+  std::vector<std::string> names;
+  bool needs_F = false, needs_thickness = false;
+  for (const Probe& probe : probes) {
+    const MeshPoint at = locate_point(mesh, probe.point);
+    probe_points_.push_back({probe.name, probe.point, at});
+    located.push_back({probe.fields, at.element, interpolation_weights(mesh, at)});
+    for (ProbeField f : probe.fields) {
+      const std::vector<std::string> columns = probe_columns(f, probe.name);
+      names.insert(names.end(), columns.begin(), columns.end());
+      needs_F |= f == ProbeField::principal_stretches;
+      needs_thickness |= f == ProbeField::thickness;
+    }
+  }
+  FE_CHECK(!needs_thickness || wall_, "history: a probe of the thickness needs a wall");
+  add(std::move(names), [located = std::move(located), needs_F, needs_thickness, &mesh,
+                         wall = wall_](const StepRecord& r, std::vector<double>& row) {
+    // What several probes share, computed once a row.
+    const std::vector<Vec3d> u = nodal_displacements(r.model);
+    const std::vector<double> p = r.model.nodal_pressures();
+    const std::vector<Mat3d> F =
+        needs_F ? r.model.element_deformation_gradients() : std::vector<Mat3d>{};
+    const std::vector<double> thickness = needs_thickness ? (*wall)(u) : std::vector<double>{};
+    for (const Located& at : located) {
+      const ElementFields& cell = r.fields[static_cast<std::size_t>(at.element)];
+      const auto push = [&row](const Vec3d& v) { row.insert(row.end(), {v[0], v[1], v[2]}); };
+      for (ProbeField field : at.fields) switch (field) {
+          case ProbeField::displacement:
+            push(interpolate(at.weights, u));
+            break;
+          case ProbeField::position:
+            push(interpolate(at.weights, mesh.nodes) + interpolate(at.weights, u));
+            break;
+          case ProbeField::pressure:
+            row.push_back(interpolate(at.weights, p));
+            break;
+          case ProbeField::cauchy:
+            for (auto [i, j] : {std::pair{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}})
+              row.push_back(cell.cauchy(i, j));
+            break;
+          case ProbeField::von_mises:
+            row.push_back(cell.von_mises);
+            break;
+          case ProbeField::principal_stretches:
+            push(principal_stretches(F[static_cast<std::size_t>(at.element)]));
+            break;
+          case ProbeField::principal_stresses:
+            push(principal_values(cell.cauchy));
+            break;
+          case ProbeField::J:
+            row.push_back(cell.J);
+            break;
+          case ProbeField::thickness:
+            row.push_back(interpolate(at.weights, thickness));
+            break;
+        }
+    }
+  });
 }
 
 std::vector<std::string> HistoryColumns::extra_names() const {

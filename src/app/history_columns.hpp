@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/point_location.hpp"
 #include "analysis/wall_thickness.hpp"
 #include "app/wrinkling.hpp"
 #include "io/case.hpp"
@@ -29,7 +30,7 @@ class HistoryColumns {
   /// The columns of a run of `c` on `model` (borrowed; its terms and mesh must outlive this), in
   /// the order of the contract: the standard ones (HistoryWriter::standard_columns), each term's
   /// columns, stretch, the averaged stretches and Cauchy stresses, reactions of named boundary
-  /// conditions, probe displacements (nearest node), volume, min_J, strain_energy, min_thickness (a
+  /// conditions, the probes' fields (add_probes), volume, min_J, strain_energy, min_thickness (a
   /// mesh with a wall: wall_faces), the stability columns (solver.stability.check) and the wrinkle
   /// columns (output.wrinkles, measured by `meter`, borrowed; required then).
   HistoryColumns(const Case& c, const MixedModel& model, const WrinkleMeter* meter);
@@ -45,6 +46,15 @@ class HistoryColumns {
   /// another count of values than it has names (a programming error, never a user's).
   std::vector<double> row(const StepRecord& record) const;
 
+  /// Where each probe of the case lies in the mesh (analysis/point_location.hpp), in the case's
+  /// order.
+  struct ProbePoint {
+    std::string name;
+    Vec3d point;  ///< as given [mm]
+    MeshPoint at;
+  };
+  const std::vector<ProbePoint>& probe_points() const { return probe_points_; }
+
  private:
   using Values = std::function<void(const StepRecord&, std::vector<double>&)>;
   struct Group {
@@ -52,10 +62,16 @@ class HistoryColumns {
     Values append;  ///< appends exactly names.size() values
   };
   void add(std::vector<std::string> names, Values append);
+  /// The probes' columns, one group for all (they share the nodal fields of a row).
+  void add_probes(const std::vector<Probe>& probes, const Mesh& mesh);
 
   std::vector<Group> groups_;
   std::vector<std::string> names_;
   std::shared_ptr<const WallThickness> wall_;
+  std::vector<ProbePoint> probe_points_;
 };
+
+/// The history columns of one field of the probe named `probe`, in row order (`ux:<probe>`, ...).
+std::vector<std::string> probe_columns(ProbeField field, const std::string& probe);
 
 }  // namespace plisse::app

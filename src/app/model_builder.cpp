@@ -186,8 +186,8 @@ void check_die_start(const Die& die, const DieGeometry& geometry, const Mesh& me
 /// The contact term of `die`: candidates are the nodes of `die.surface`, or of
 /// default_die_candidates; the penalty defaults to contact.md (D11) with the material's
 /// small-strain shear modulus `mu`. Throws InputError (at the die) when the surface is empty.
-std::unique_ptr<ModelTerm> make_die_term(const Die& die, const Case& c, const Mesh& mesh,
-                                         double mu) {
+std::unique_ptr<ModelTerm> make_die_term(const Die& die, const Case& c, const Mesh& mesh, double mu,
+                                         int mirrors) {
   const auto candidates =
       die.surface ? outward_triangles(mesh, die.surface->name) : default_die_candidates(c, mesh);
   if (candidates.empty()) throw InputError(die.place, "the die's contact surface is empty");
@@ -204,7 +204,7 @@ std::unique_ptr<ModelTerm> make_die_term(const Die& die, const Case& c, const Me
   const DieGeometry geometry(die.shape, die.point, die.normal, die.axis, die.radius,
                              die.displacement, die.ramp);
   check_die_start(die, geometry, mesh, candidates, region, h);
-  return std::make_unique<DieContact>(mesh, geometry, settings, candidates, region);
+  return std::make_unique<DieContact>(mesh, geometry, settings, candidates, region, mirrors);
 }
 
 }  // namespace
@@ -260,7 +260,7 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
   if (!c.dies.empty() || !c.contacts.empty()) {
     // The contact penalties' default scale (contact.md, D11).
     const double mu = shear_modulus(parts.material);
-    for (const Die& die : c.dies) terms.push_back(make_die_term(die, c, mesh, mu));
+    for (const Die& die : c.dies) terms.push_back(make_die_term(die, c, mesh, mu, mirrors));
     for (const SurfaceContactPair& pair : c.contacts)
       terms.push_back(make_surface_contact_term(pair, mesh, mu));
   }

@@ -51,6 +51,11 @@ const std::vector<OutputEntry> kHistory = {
      "`force_y` > 0); of the modelled part (likewise `force_y`, `force_z`)"},
     {"force_y:<die>", "N", "`dies[]`", "y component of the force of the body on the die"},
     {"force_z:<die>", "N", "`dies[]`", "z component of the force of the body on the die"},
+    {"full_force_x:<die>", "N", "`dies[]` symmetric about a mirror plane",
+     "x component of the whole body's force on the die: its mirror images summed, 0 along a "
+     "mirror plane's normal and doubled per plane along the others (likewise y, z; see Symmetry)"},
+    {"full_force_y:<die>", "N", "as `full_force_x:<die>`", "y component of the whole body's force"},
+    {"full_force_z:<die>", "N", "as `full_force_x:<die>`", "z component of the whole body's force"},
     {"contact_nodes:<die>", "–", "`dies[]`, `contacts[]`",
      "surface nodes in contact (or glued, for a sticking die) at the converged state"},
     {"penetration:<die>", "mm", "`dies[]`, `contacts[]`",
@@ -103,10 +108,51 @@ const std::vector<OutputEntry> kHistory = {
      "octant pulls it, negative along the plane's outward normal; likewise y, z)"},
     {"force_y:<boundary>", "N", "`boundary[]` with a `name`", "y component of the reaction"},
     {"force_z:<boundary>", "N", "`boundary[]` with a `name`", "z component of the reaction"},
-    {"ux:<probe>", "mm", "`probes[]`",
-     "x displacement of the mesh node nearest to the probe's point (likewise y, z)"},
-    {"uy:<probe>", "mm", "`probes[]`", "y displacement of the probe's node"},
-    {"uz:<probe>", "mm", "`probes[]`", "z displacement of the probe's node"},
+    {"full_force_x:<boundary>", "N",
+     "`boundary[]` with a `name`, not `symmetry`, whose surface reaches a mirror plane",
+     "x component of the whole body's reaction on the condition, which continues across the "
+     "plane: the mirror images summed (likewise y, z; see Symmetry)"},
+    {"full_force_y:<boundary>", "N", "as `full_force_x:<boundary>`",
+     "y component of the whole body's reaction"},
+    {"full_force_z:<boundary>", "N", "as `full_force_x:<boundary>`",
+     "z component of the whole body's reaction"},
+    {"ux:<probe>", "mm", "`probes[]` (`fields` has `displacement`, the default)",
+     "x displacement at the probe's material point, interpolated by the element's shape "
+     "functions (likewise y, z; see Probes)"},
+    {"uy:<probe>", "mm", "`probes[]`, `displacement`", "y displacement at the probe"},
+    {"uz:<probe>", "mm", "`probes[]`, `displacement`", "z displacement at the probe"},
+    {"x:<probe>", "mm", "`probes[]`, `position`",
+     "x coordinate of the probe's material point in the deformed state, X + u (likewise y, z)"},
+    {"y:<probe>", "mm", "`probes[]`, `position`", "deformed y coordinate of the probe"},
+    {"z:<probe>", "mm", "`probes[]`, `position`", "deformed z coordinate of the probe"},
+    {"pressure:<probe>", "MPa", "`probes[]`, `pressure`",
+     "the pressure field interpolated at the probe, positive in compression (VTU `pressure`)"},
+    {"cauchy_xx:<probe>", "MPa", "`probes[]`, `cauchy`",
+     "σ_xx of the element holding the probe, its volume average (VTU `cauchy_stress`), tension "
+     "positive (likewise `cauchy_yy`, `cauchy_zz`, `cauchy_xy`, `cauchy_yz`, `cauchy_xz`)"},
+    {"cauchy_yy:<probe>", "MPa", "`probes[]`, `cauchy`", "the element's σ_yy"},
+    {"cauchy_zz:<probe>", "MPa", "`probes[]`, `cauchy`", "the element's σ_zz"},
+    {"cauchy_xy:<probe>", "MPa", "`probes[]`, `cauchy`", "the element's σ_xy"},
+    {"cauchy_yz:<probe>", "MPa", "`probes[]`, `cauchy`", "the element's σ_yz"},
+    {"cauchy_xz:<probe>", "MPa", "`probes[]`, `cauchy`", "the element's σ_xz"},
+    {"von_mises:<probe>", "MPa", "`probes[]`, `von_mises`",
+     "von Mises stress of the element holding the probe (VTU `von_mises`)"},
+    {"stretch_1:<probe>", "–", "`probes[]`, `principal_stretches`",
+     "largest principal stretch of the element holding the probe (VTU `principal_stretches`; "
+     "`stretch_2`, `stretch_3` the middle and smallest)"},
+    {"stretch_2:<probe>", "–", "`probes[]`, `principal_stretches`", "middle principal stretch"},
+    {"stretch_3:<probe>", "–", "`probes[]`, `principal_stretches`", "smallest principal stretch"},
+    {"stress_1:<probe>", "MPa", "`probes[]`, `principal_stresses`",
+     "largest principal Cauchy stress of the element holding the probe (VTU "
+     "`principal_stresses`; `stress_2`, `stress_3` the middle and smallest)"},
+    {"stress_2:<probe>", "MPa", "`probes[]`, `principal_stresses`",
+     "middle principal Cauchy stress"},
+    {"stress_3:<probe>", "MPa", "`probes[]`, `principal_stresses`",
+     "smallest principal Cauchy stress"},
+    {"J:<probe>", "–", "`probes[]`, `J`",
+     "volume ratio of the element holding the probe (VTU `J`)"},
+    {"thickness:<probe>", "mm", "`probes[]`, `thickness` (a case with a wall)",
+     "the current wall thickness interpolated at the probe (VTU `thickness`)"},
     {"volume", "mm³", "always", "the body's volume in the deformed state, of the modelled part"},
     {"min_J", "–", "always",
      "the smallest element average of det F: 1 for an exactly incompressible material up to the "
@@ -134,6 +180,14 @@ const std::vector<OutputEntry> kHistory = {
 };
 
 const std::vector<OutputEntry> kSummary = {
+    {"units", "–", "always",
+     "the units of every number plisse writes: {\"length\": \"mm\", \"force\": \"N\", "
+     "\"stress\": \"MPa\", \"time\": \"s\", \"energy\": \"mJ\", \"density\": "
+     "\"t/mm³\"}, the consistent set the case's numbers are read in"},
+    {"units.<quantity>", "–", "always", "one entry of `units`"},
+    {"history_units.<column>", "–", "always",
+     "the unit of each history.csv column, as in this reference (`–` dimensionless), so a script "
+     "can label its axes"},
     {"case", "–", "always", "the case file as given on the command line"},
     {"case_path", "–", "always", "the case file's absolute path"},
     {"overrides", "–", "always", "the `--set KEY=VALUE` overrides of the run, in order"},
@@ -236,6 +290,18 @@ const std::vector<OutputEntry> kSummary = {
      "columns with one compressive principal membrane stress"},
     {"wrinkles.tension_field.slack", "–", "`output.wrinkles.rings_deg`",
      "columns with two compressive principal membrane stresses"},
+    {"probes[].name", "–", "`probes[]`", "the probe's name"},
+    {"probes[].point", "mm", "`probes[]`", "the point as given, [x, y, z]"},
+    {"probes[].position", "mm", "`probes[]`",
+     "the point of the mesh the probe reports at, [x, y, z] in the undeformed body"},
+    {"probes[].distance", "mm", "`probes[]`",
+     "the distance between the two: 0 (to rounding) inside the body; on a curved surface, how far "
+     "the mesh's facets are from the point"},
+    {"probes[].inside", "–", "`probes[]`",
+     "true when the point lies in an element; false when it was taken to the nearest point of "
+     "the body's surface"},
+    {"probes[].element", "–", "`probes[]`",
+     "the element holding the probe (0-based, the VTU cell index)"},
     {"final.<column>", "as the column", "at least one step",
      "every history.csv column at the last converged step"},
 };

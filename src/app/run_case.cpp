@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "analysis/point_location.hpp"
 #include "app/model_builder.hpp"
 #include "app/progress_line.hpp"
 #include "app/run_recorder.hpp"
@@ -154,6 +155,14 @@ void log_header(RunLog& log, const PreparedRun& run, const fs::path& directory,
     std::snprintf(line, sizeof line,
                   "load '%s': on node %d at [%.6g, %.6g, %.6g], %.3g mm from its point",
                   load.name.c_str(), v, x.x(), x.y(), x.z(), (x - load.point).norm());
+    log.info(line);
+  }
+  for (const Probe& probe : c.probes) {
+    const MeshPoint at = locate_point(mesh, probe.point);
+    std::snprintf(line, sizeof line,
+                  "probe '%s': %s element %d at [%.6g, %.6g, %.6g], %.3g mm from its point",
+                  probe.name.c_str(), at.inside ? "in" : "on the surface of", at.element,
+                  at.position.x(), at.position.y(), at.position.z(), at.distance);
     log.info(line);
   }
   if (model.n_ranks() == 1) return;

@@ -87,7 +87,7 @@ void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model
   for (const VtuField& f : point_fields) require_output_entry(OutputTable::vtu_point, f.name);
   for (const VtuField& f : cell_fields) require_output_entry(OutputTable::vtu_cell, f.name);
   if (model.n_ranks() == 1) {
-    write_vtu(file, mesh, points, point_fields, cell_fields);
+    write_vtu(file, mesh, points, point_fields, cell_fields, c.output.compression);
     return;
   }
   // Distributed: each rank writes the piece of its own elements ("step_NNNN_pR.vtu"); once all
@@ -96,7 +96,7 @@ void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model
   const auto piece = [&](int r) { return stem + "_p" + std::to_string(r) + ".vtu"; };
   on_every_rank_alike([&] {
     write_vtu_piece(file.parent_path() / piece(model.rank()), mesh, points, model.owned_elements(),
-                    point_fields, cell_fields);
+                    point_fields, cell_fields, c.output.compression);
   });
   on_every_rank_alike([&] {
     if (model.rank() != 0) return;
@@ -250,6 +250,10 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
   const Case& c = case_;
   const Mesh& mesh = model_.mesh();
   nlohmann::json summary;
+  summary["units"] = {{"length", "mm"}, {"force", "N"},   {"stress", "MPa"},
+                      {"time", "s"},    {"energy", "mJ"}, {"density", "t/mm³"}};
+  for (const std::string& column : columns_.names())
+    summary["history_units"][column] = find_output_entry(OutputTable::history, column)->unit;
   summary["case"] = identity_.case_file;
   summary["case_path"] = fs::absolute(identity_.case_file).lexically_normal().string();
   summary["overrides"] = identity_.overrides;
@@ -294,6 +298,15 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
                             {"instabilities", instabilities_}};
   }
   if (last_wrinkles_) summary["wrinkles"] = wrinkles_json(c, *last_wrinkles_);
+  for (const HistoryColumns::ProbePoint& p : columns_.probe_points()) {
+    const auto xyz = [](const Vec3d& v) { return nlohmann::json::array({v[0], v[1], v[2]}); };
+    summary["probes"].push_back({{"name", p.name},
+                                 {"point", xyz(p.point)},
+                                 {"position", xyz(p.at.position)},
+                                 {"distance", p.at.distance},
+                                 {"inside", p.at.inside},
+                                 {"element", p.at.element}});
+  }
   if (history_ && !history_->rows().empty()) {
     nlohmann::json final_values;
     for (std::size_t i = 0; i < history_->columns().size(); ++i)

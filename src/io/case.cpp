@@ -800,23 +800,59 @@ Schema<Cap> cap_schema() {
 }
 
 /// `probes:` items: named points reported as displacement columns.
+const Choices<ProbeField> kProbeFields{{"displacement", ProbeField::displacement},
+                                       {"position", ProbeField::position},
+                                       {"pressure", ProbeField::pressure},
+                                       {"cauchy", ProbeField::cauchy},
+                                       {"von_mises", ProbeField::von_mises},
+                                       {"principal_stretches", ProbeField::principal_stretches},
+                                       {"principal_stresses", ProbeField::principal_stresses},
+                                       {"J", ProbeField::J},
+                                       {"thickness", ProbeField::thickness}};
+
 Schema<Probe> probe_schema() {
   Schema<Probe> s;
   s.place(&Probe::place, false);
-  name_key(s, &Probe::name, "history columns `ux:<name>`, `uy:<name>`, `uz:<name>`").required();
+  name_key(s, &Probe::name, "names the probe's history columns (`ux:<name>`, ...)").required();
   s.add({"point",
          "vector",
          "mm",
          "",
          "",
          {},
-         "the mesh node nearest to this point of the undeformed body is reported (refused when "
-         "farther from it than the longest edge at that node)"},
+         "a material point of the undeformed body: inside it, or on its surface (a point the "
+         "mesh's flat facets miss goes to the nearest point of the boundary, and the log and "
+         "summary.json give the distance; a point farther from the mesh than the longest edge "
+         "of the element there is refused)"},
         [](const Field& f, Probe& probe, ReadContext&) {
           probe.point = f.vec3();
           probe.point_place = f.place();
         })
       .required();
+  std::vector<std::string> words;
+  for (const auto& [word, field] : kProbeFields) words.push_back(word);
+  s.add({"fields",
+         "list of " + case_detail::doc_choice(words),
+         "–",
+         "",
+         "`[displacement]`",
+         {},
+         "what the probe reports, as history columns (docs/output.md, \"Probes\"): "
+         "displacement, position and pressure interpolated at the point, and thickness on a "
+         "wall; cauchy, von_mises, principal_stretches, principal_stresses and J are those of "
+         "the element holding the point (the step files' cell fields)"},
+        [](const Field& f, Probe& probe, ReadContext&) {
+          probe.fields_place = f.place();
+          if (!f.node().IsSequence() || f.node().size() == 0)
+            f.fail("expected a non-empty list of fields, got " + f.describe());
+          probe.fields.clear();
+          for (const Field& item : f.items()) {
+            const ProbeField field = item.choice(kProbeFields);
+            if (std::find(probe.fields.begin(), probe.fields.end(), field) != probe.fields.end())
+              item.fail("'" + item.text() + "' is listed twice");
+            probe.fields.push_back(field);
+          }
+        });
   return s;
 }
 
@@ -874,6 +910,11 @@ Schema<OutputSettings> output_schema() {
          "loses at most about that much work");
   s.boolean("deformed", &OutputSettings::deformed,
             "write deformed instead of reference coordinates");
+  s.choice<VtuCompression>("compression", &OutputSettings::compression,
+                           {{"zlib", VtuCompression::zlib}, {"none", VtuCompression::none}},
+                           "the step files' data: zlib-compressed (ParaView, VTK and meshio read "
+                           "it; about a quarter smaller for a deformed state, ten times for "
+                           "step 0) or raw (a little faster to write and read)");
   s.add({"stretch_axis",
          case_detail::doc_choice({"x", "y", "z"}),
          "–",
@@ -915,7 +956,8 @@ Schema<Case> case_schema() {
   list_key(s, "caps", &Case::caps, cap_schema(), "rigid end caps");
   list_key(s, "contacts", &Case::contacts, contact_schema(),
            "contact between surfaces of the body, or of a surface with itself");
-  list_key(s, "probes", &Case::probes, probe_schema(), "displacement probes");
+  list_key(s, "probes", &Case::probes, probe_schema(),
+           "points whose displacement, stresses or thickness are reported at every step");
   s.nested<SolverSettings>("solver", &Case::solver, solver_schema());
   s.nested<OutputSettings>("output", &Case::output, output_schema());
   return s;

@@ -19,6 +19,7 @@
 #include "core/error.hpp"
 #include "core/types.hpp"
 #include "element/element_family.hpp"
+#include "io/vtu_writer.hpp"
 #include "mesh/generate.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/surface_ref.hpp"
@@ -120,12 +121,28 @@ struct SurfaceContactPair {
   InputPlace place;
 };
 
-/// A named point reported as ux/uy/uz columns (nearest node).
+/// What a probe reports (docs/output.md, "Probes").
+enum class ProbeField {
+  displacement,         ///< ux, uy, uz [mm]
+  position,             ///< x, y, z: the deformed position [mm]
+  pressure,             ///< the pressure field [MPa]
+  cauchy,               ///< the element's Cauchy stress, 6 components [MPa]
+  von_mises,            ///< the element's von Mises stress [MPa]
+  principal_stretches,  ///< the element's principal stretches, largest first [-]
+  principal_stresses,   ///< the element's principal Cauchy stresses, largest first [MPa]
+  J,                    ///< the element's volume ratio [-]
+  thickness,            ///< the current wall thickness [mm] (a case with a wall)
+};
+
+/// A named material point of the undeformed body, reported at every step: nodal fields
+/// interpolated there, element fields of the element that holds it.
 struct Probe {
   std::string name;
   Vec3d point = Vec3d::Zero();
+  std::vector<ProbeField> fields = {ProbeField::displacement};
   InputPlace place;
-  InputPlace point_place;  ///< where `point` is written
+  InputPlace point_place;   ///< where `point` is written
+  InputPlace fields_place;  ///< where `fields` is written (the entry's place when absent)
 };
 
 enum class Scheme { total_lagrangian, incremental };
@@ -175,6 +192,7 @@ struct OutputSettings {
   double checkpoint_minutes = 5.0;  ///< also checkpoint when this much wall time has passed since
                                     ///< the last one, >= 0; 0: no time-based checkpoints
   bool deformed = false;            ///< write deformed coordinates instead of reference ones
+  VtuCompression compression = VtuCompression::zlib;  ///< of the step files' arrays
   /// Optional 'x' | 'y' | 'z': adds a history column `stretch` = volume average of F along that
   /// axis (the columns `cauchy_xx` ... `cauchy_xz`, deformed-volume averages, are always there).
   std::optional<char> stretch_axis;

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <set>
 
+#include "analysis/point_location.hpp"
+#include "analysis/wall_thickness.hpp"
 #include "io/case.hpp"
 #include "io/case_reader.hpp"
 #include "mesh/gmsh_io.hpp"
@@ -83,24 +85,60 @@ std::pair<double, double> planarity(const Mesh& mesh, const std::vector<int>& tr
   return {deviation, kPlanarityTolerance * mean_edge};
 }
 
-/// A point force acts on, and a probe reports, the node nearest its point: a point farther from
-/// that node than the longest edge there lies off the body (a wrong coordinate or unit), and is
-/// refused. `what` names the entry ("point-force 'tip'", "probe 'centre'").
+/// "[x, y, z]" with the case file's number format.
+std::string vector_text(const Vec3d& v) {
+  std::string out = "[";  // appended, not "[" + ...: g++ 12 warns falsely (-Wrestrict) there
+  for (int i = 0; i < 3; ++i) out += format_number(v[i]) + (i < 2 ? ", " : "]");
+  return out;
+}
+
+/// A point force acts on the node nearest its point: a point farther from that node than the
+/// longest edge there lies off the body (a wrong coordinate or unit), and is refused. `what` names
+/// the entry ("point-force 'tip'").
 void check_point_on_body(const Mesh& mesh, const Vec3d& point, const InputPlace& place,
                          const std::string& what) {
-  const auto text = [](const Vec3d& v) {
-    std::string out = "[";  // appended, not "[" + ...: g++ 12 warns falsely (-Wrestrict) there
-    for (int i = 0; i < 3; ++i) out += format_number(v[i]) + (i < 2 ? ", " : "]");
-    return out;
-  };
   const int v = nearest_node(mesh, point);
   const double distance = (mesh.nodes[v] - point).norm();
   const double longest = longest_edge_at(mesh, v);
   if (distance > longest)
-    throw InputError(place, what + ": the point " + text(point) + " is " + format_number(distance) +
-                                " mm from the nearest node " + text(mesh.nodes[v]) +
+    throw InputError(place, what + ": the point " + vector_text(point) + " is " +
+                                format_number(distance) + " mm from the nearest node " +
+                                vector_text(mesh.nodes[v]) +
                                 ", farther than the longest edge there (" + format_number(longest) +
                                 " mm): give a point on the body");
+}
+
+/// A probe reports at a material point of the body: one farther from the mesh than the longest
+/// edge of the element nearest to it lies off the body (a wrong coordinate or unit). A probe of
+/// the thickness needs a wall.
+void check_probe(const Case& c, const Mesh& mesh, const Probe& probe) {
+  const std::string what = "probe '" + probe.name + "'";
+  const MeshPoint at = locate_point(mesh, probe.point);
+  const auto& t = mesh.tets[static_cast<std::size_t>(at.element)];
+  double longest = 0.0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b)
+      longest = std::max(longest, (mesh.nodes[static_cast<std::size_t>(t[a])] -
+                                   mesh.nodes[static_cast<std::size_t>(t[b])])
+                                      .norm());
+  if (at.distance > longest)
+    throw InputError(probe.point_place,
+                     what + ": the point " + vector_text(probe.point) + " is " +
+                         format_number(at.distance) + " mm from the body (its nearest point " +
+                         vector_text(at.position) + "), farther than the longest edge of the " +
+                         "element there (" + format_number(longest) +
+                         " mm): give a point on the body");
+  const bool thickness = std::find(probe.fields.begin(), probe.fields.end(),
+                                   ProbeField::thickness) != probe.fields.end();
+  if (thickness && !(c.mesh.wall_thickness() && wall_faces(mesh)))
+    throw InputError(
+        probe.fields_place.line > 0 ? probe.fields_place : probe.place,
+        what + ": the thickness is measured across a wall: " +
+            (c.mesh.wall_thickness()
+                 ? std::string("the mesh needs surface tags 'inner' and 'outer' (or 'bottom' "
+                               "and 'top')")
+                 : std::string(c.mesh.file ? "give the wall thickness as 'mesh.thickness' [mm]"
+                                           : "the generated cube has no wall")));
 }
 
 /// Imperfections, branch switching and the wrinkle threshold are relative to the wall thickness: a
@@ -185,8 +223,7 @@ void check_case_against_mesh(const Case& c, const Mesh& mesh) {
     if (load.type == LoadType::point_force)
       check_point_on_body(mesh, load.point, load.point_place, "point-force '" + load.name + "'");
   }
-  for (const Probe& probe : c.probes)
-    check_point_on_body(mesh, probe.point, probe.point_place, "probe '" + probe.name + "'");
+  for (const Probe& probe : c.probes) check_probe(c, mesh, probe);
   for (const Cavity& cavity : c.cavities) check_surface(c, mesh, cavity.surface);
   for (const Cap& cap : c.caps) check_surface(c, mesh, cap.surface);
   for (const SurfaceContactPair& p : c.contacts)

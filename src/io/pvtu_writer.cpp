@@ -105,7 +105,7 @@ void write_pvtu(const std::filesystem::path& path, const std::vector<std::string
 void write_vtu_piece(const std::filesystem::path& path, const Mesh& mesh,
                      std::span<const Vec3d> points, std::span<const int> elements,
                      const std::vector<VtuField>& point_fields,
-                     const std::vector<VtuField>& cell_fields) {
+                     const std::vector<VtuField>& cell_fields, VtuCompression compression) {
   const auto n_nodes = static_cast<std::size_t>(mesh.n_nodes());
   const auto n_tets = static_cast<std::size_t>(mesh.n_tets());
   const bool quadratic = mesh.order() == 2;
@@ -207,7 +207,7 @@ void write_vtu_piece(const std::filesystem::path& path, const Mesh& mesh,
     }
     piece_cell_fields.push_back(std::move(local));
   }
-  write_vtu(path, piece, piece.nodes, piece_point_fields, piece_cell_fields);
+  write_vtu(path, piece, piece.nodes, piece_point_fields, piece_cell_fields, compression);
 }
 
 }  // namespace plisse

@@ -89,10 +89,11 @@ void write_pvtu(const std::filesystem::path& path, const std::vector<std::string
 /// `cell_fields` one per mesh element (VtuField's layout); the piece gets their restrictions, then
 /// the point field global_node. An empty `elements` gives an empty piece (a rank without
 /// elements). Throws plisse::Error naming `path` on any size, index or name violation (no file is
-/// written then) and when the file cannot be written.
+/// written then) and when the file cannot be written. `compression` as write_vtu's.
 void write_vtu_piece(const std::filesystem::path& path, const Mesh& mesh,
                      std::span<const Vec3d> points, std::span<const int> elements,
                      const std::vector<VtuField>& point_fields,
-                     const std::vector<VtuField>& cell_fields);
+                     const std::vector<VtuField>& cell_fields,
+                     VtuCompression compression = VtuCompression::none);
 
 }  // namespace plisse

@@ -1,5 +1,7 @@
 #include "io/vtu_reader.hpp"
 
+#include <zlib.h>
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -38,7 +40,11 @@ struct ArrayDecl {
   std::string type;
   int n_components = 1;
   std::uint64_t offset = 0;   ///< from the first byte after '_'
-  std::uint64_t n_bytes = 0;  ///< the block's UInt64 byte count (filled after the header)
+  std::uint64_t n_bytes = 0;  ///< the array's byte count, uncompressed (filled after the header)
+  /// Compressed files: the block size, and each block's compressed size (the data follow the
+  /// header of 3 + blocks UInt64 values).
+  std::uint64_t block_bytes = 0;
+  std::vector<std::uint64_t> compressed;
 };
 
 struct Tag {
@@ -216,7 +222,53 @@ struct ParsedVtu {
   std::vector<ArrayDecl> arrays;
   std::uint64_t data_start = 0;  ///< first byte after '_'
   std::uint64_t data_end = 0;    ///< position of the closing </AppendedData>
+  bool zlib = false;             ///< compressor="vtkZLibDataCompressor"
 };
+
+/// Deflate expands at most 1032 times (zlib's technical notes); a compressed array claiming
+/// more is corrupt, and is refused before anything of its size is allocated.
+constexpr std::uint64_t kMaxInflation = 1032;
+/// What a few bytes of deflate can hold beyond that ratio (a stream's fixed overhead).
+constexpr std::uint64_t kInflationSlack = 1 << 16;
+
+/// The header of compressed array `a` (io/vtu_writer.hpp: [blocks, block size, last block size
+/// or 0, compressed sizes]): fills a.n_bytes, a.block_bytes and a.compressed after checking that
+/// the header and the blocks lie in the appended data.
+void read_compressed_header(VtuFile& file, const ParsedVtu& out, ArrayDecl& a) {
+  const std::uint64_t available = out.data_end - out.data_start - a.offset;
+  const auto corrupt = [&](const std::string& what) {
+    file.fail("array '" + a.name + "': " + what + " (truncated or corrupt file)");
+  };
+  constexpr std::uint64_t kWord = sizeof(std::uint64_t);
+  if (available < 3 * kWord) corrupt("its compression header lies outside the appended data");
+  std::array<std::uint64_t, 3> head{};
+  file.read_at(out.data_start + a.offset, head.data(), sizeof head);
+  const auto [n_blocks, block_bytes, last_bytes] = head;
+  if (n_blocks > available / kWord - 3)
+    corrupt(std::to_string(n_blocks) + " compressed blocks declared, more than the file holds");
+  if (n_blocks > 0 && (block_bytes == 0 || last_bytes >= block_bytes))
+    corrupt("block size " + std::to_string(block_bytes) + " and last block " +
+            std::to_string(last_bytes) + " are inconsistent");
+  a.compressed.resize(static_cast<std::size_t>(n_blocks));
+  file.read_at(out.data_start + a.offset + 3 * kWord, a.compressed.data(), n_blocks * kWord);
+  std::uint64_t stored = 0;
+  for (const std::uint64_t size : a.compressed) {
+    if (size == 0 || size > available - (3 + n_blocks) * kWord - stored)
+      corrupt("the compressed blocks reach past the appended data");
+    stored += size;
+  }
+  // n_bytes = (n_blocks - 1) block_bytes + (last_bytes or block_bytes), without overflow, and
+  // at most what deflate can expand `stored` bytes to.
+  const std::uint64_t last = last_bytes ? last_bytes : block_bytes;
+  const std::uint64_t limit = stored * kMaxInflation + kInflationSlack;
+  if (n_blocks > 0 && (last > limit || n_blocks - 1 > (limit - last) / block_bytes))
+    corrupt("more data declared than " + std::to_string(stored) + " compressed bytes can hold");
+  a.block_bytes = block_bytes;
+  a.n_bytes = n_blocks == 0 ? 0 : (n_blocks - 1) * block_bytes + last;
+  if (a.n_bytes > physical_memory_bytes() / 2)
+    file.fail("array '" + a.name + "' inflates to " + std::to_string(a.n_bytes >> 20) +
+              " MiB, more than half of this machine's memory: too large to read");
+}
 
 ParsedVtu parse(VtuFile& file) {
   // 1. The header: everything before "<AppendedData".
@@ -293,7 +345,12 @@ ParsedVtu parse(VtuFile& file) {
         file.fail("byte order is not LittleEndian");
       if (require_attribute(file, tag, "header_type") != "UInt64")
         file.fail("header_type is not UInt64 (not written by plisse)");
-      if (attribute(tag, "compressor") != nullptr) file.fail("compressed data are not read");
+      if (const std::string* compressor = attribute(tag, "compressor")) {
+        if (*compressor != "vtkZLibDataCompressor")
+          file.fail("compressor '" + *compressor +
+                    "' is not read (plisse writes vtkZLibDataCompressor, or none)");
+        out.zlib = true;
+      }
     } else if (tag.name == "UnstructuredGrid") {
       ++n_grids;
     } else if (tag.name == "Piece") {
@@ -341,10 +398,14 @@ ParsedVtu parse(VtuFile& file) {
     if (available < sizeof(std::uint64_t) || a.offset > available - sizeof(std::uint64_t))
       file.fail("array '" + a.name + "': offset " + std::to_string(a.offset) +
                 " lies outside the appended data (truncated or corrupt file)");
-    file.read_at(out.data_start + a.offset, &a.n_bytes, sizeof a.n_bytes);
-    if (a.n_bytes > available - sizeof(std::uint64_t) - a.offset)
-      file.fail("array '" + a.name + "': " + std::to_string(a.n_bytes) +
-                " bytes declared, more than the file holds (truncated or corrupt file)");
+    if (out.zlib)
+      read_compressed_header(file, out, a);
+    else {
+      file.read_at(out.data_start + a.offset, &a.n_bytes, sizeof a.n_bytes);
+      if (a.n_bytes > available - sizeof(std::uint64_t) - a.offset)
+        file.fail("array '" + a.name + "': " + std::to_string(a.n_bytes) +
+                  " bytes declared, more than the file holds (truncated or corrupt file)");
+    }
     const auto expect = [&](const char* type, std::uint64_t n_entities, std::uint64_t bytes_each) {
       if (a.type != type)
         file.fail("array '" + a.name + "' has type " + a.type + "; plisse writes " + type);
@@ -402,8 +463,29 @@ const ArrayDecl* find_array(const ParsedVtu& parsed, Section section, std::strin
 /// bounded by the file size.
 std::vector<double> read_values(VtuFile& file, const ParsedVtu& parsed, const ArrayDecl& a) {
   std::vector<double> values(static_cast<std::size_t>(a.n_bytes / sizeof(double)));
-  file.read_at(parsed.data_start + a.offset + sizeof(std::uint64_t), values.data(),
-               values.size() * sizeof(double));
+  if (!parsed.zlib) {
+    file.read_at(parsed.data_start + a.offset + sizeof(std::uint64_t), values.data(),
+                 values.size() * sizeof(double));
+    return values;
+  }
+  // Each block inflates to block_bytes (the last to what is left), exactly.
+  auto* bytes = reinterpret_cast<unsigned char*>(values.data());
+  std::uint64_t position =
+      parsed.data_start + a.offset + (3 + a.compressed.size()) * sizeof(std::uint64_t);
+  std::vector<unsigned char> block;
+  for (std::size_t b = 0; b < a.compressed.size(); ++b) {
+    block.resize(static_cast<std::size_t>(a.compressed[b]));
+    file.read_at(position, block.data(), block.size());
+    position += block.size();
+    const std::uint64_t first = b * a.block_bytes;
+    const std::uint64_t expected = std::min(a.block_bytes, a.n_bytes - first);
+    uLongf produced = static_cast<uLongf>(expected);
+    const int status =
+        uncompress(bytes + first, &produced, block.data(), static_cast<uLong>(block.size()));
+    if (status != Z_OK || produced != expected)
+      file.fail("array '" + a.name + "': block " + std::to_string(b) +
+                " does not inflate to its declared size (corrupt file)");
+  }
   return values;
 }
 

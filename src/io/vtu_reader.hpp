@@ -4,10 +4,12 @@
 /// distributed.
 ///
 /// VTU, accepted format, exactly what write_vtu produces: VTKFile type="UnstructuredGrid",
-/// byte_order="LittleEndian", header_type="UInt64"; one Piece; every DataArray format="appended"
-/// in one <AppendedData encoding="raw"> block, each array a UInt64 byte count then the data;
-/// point and cell fields Float64. Anything else (ASCII or base64 data, compressed data, other
-/// header types, several pieces) is refused with plisse::Error naming the file and what is wrong.
+/// byte_order="LittleEndian", header_type="UInt64", no compressor or
+/// compressor="vtkZLibDataCompressor"; one Piece; every DataArray format="appended" in one
+/// <AppendedData encoding="raw"> block, each array a UInt64 byte count then the data, or
+/// compressed, the header of zlib blocks then the blocks (io/vtu_writer.hpp); point and cell
+/// fields Float64. Anything else (ASCII or base64 data, other compressors or header types,
+/// several pieces) is refused with plisse::Error naming the file and what is wrong.
 ///
 /// PVTU (a path ending in ".pvtu", any case): what write_pvtu produces (format and merge rule in
 /// io/pvtu_writer.hpp): VTKFile type="PUnstructuredGrid" (LittleEndian, UInt64), one
@@ -20,7 +22,9 @@
 /// 'p0.vtu': ...").
 ///
 /// Robustness (tests try every truncation and single-byte corruption): every size and offset read
-/// from the file is checked against the file size before it is used, so a truncated or corrupt file
+/// from the file is checked against the file size before it is used (a compressed array's
+/// inflated size against what deflate can produce from its blocks, at most 1032 times, and against
+/// half the machine's memory), so a truncated or corrupt file
 /// gives plisse::Error, never a crash, a huge allocation or a read past the end. Every array block
 /// must lie inside the appended block, and the file must end with the closing tags (a truncated
 /// file is reported as such). A .pvtu larger than 16 MiB is refused before it is read; its XML must

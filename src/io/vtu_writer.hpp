@@ -3,9 +3,13 @@
 ///
 /// Format (VTK file formats, "XML File Formats": UnstructuredGrid): version 1.0, byte order
 /// LittleEndian, header_type UInt64, one piece, every data array in a single
-/// <AppendedData encoding="raw"> block; each array there is a UInt64 byte count followed by the
-/// raw little-endian values. Points are Float64, connectivity and offsets Int64, types UInt8,
-/// fields Float64. The file is written atomically (io/atomic_file.hpp).
+/// <AppendedData encoding="raw"> block. Uncompressed (VtuCompression::none), each array there is
+/// a UInt64 byte count followed by the raw little-endian values. Compressed
+/// (VtuCompression::zlib, the attribute compressor="vtkZLibDataCompressor"), each array is a
+/// UInt64 header [number of blocks, block size, size of the last block or 0 when it is full,
+/// compressed size of each block] followed by its blocks of at most 1 MiB, each deflated by zlib
+/// on its own. Points are Float64, connectivity and offsets Int64, types UInt8, fields Float64.
+/// The file is written atomically (io/atomic_file.hpp).
 ///
 /// Field component conventions (what ParaView expects):
 ///   1 component  scalar
@@ -25,6 +29,12 @@
 #include "mesh/mesh.hpp"
 
 namespace plisse {
+
+/// How the arrays of the appended block are stored (file comment).
+enum class VtuCompression {
+  none,  ///< raw: the fastest to write and read, about twice the size
+  zlib,  ///< deflated blocks (vtkZLibDataCompressor), read by ParaView, VTK and meshio
+};
 
 /// VTK cell type ids (vtkCellType.h) of the cells plisse writes. Node order is VTK's.
 enum class VtkCellType : std::uint8_t {
@@ -69,22 +79,26 @@ VtuField make_tensor_field(std::string name, std::span<const Mat3d> tensors);
 /// path when the file cannot be written. An existing file at `path` is replaced atomically.
 void write_vtu(const std::filesystem::path& path, std::span<const Vec3d> points, VtkCellType type,
                std::span<const int> connectivity, const std::vector<VtuField>& point_fields,
-               const std::vector<VtuField>& cell_fields);
+               const std::vector<VtuField>& cell_fields,
+               VtuCompression compression = VtuCompression::none);
 
 /// Linear tetrahedra (VTK_TETRA), corner order as in Mesh::tets.
 void write_vtu(const std::filesystem::path& path, std::span<const Vec3d> points,
                std::span<const std::array<int, 4>> tets, const std::vector<VtuField>& point_fields,
-               const std::vector<VtuField>& cell_fields);
+               const std::vector<VtuField>& cell_fields,
+               VtuCompression compression = VtuCompression::none);
 
 /// Triangles (VTK_TRIANGLE), e.g. a surface piece for wrinkle metrics.
 void write_vtu(const std::filesystem::path& path, std::span<const Vec3d> points,
                std::span<const std::array<int, 3>> triangles,
-               const std::vector<VtuField>& point_fields, const std::vector<VtuField>& cell_fields);
+               const std::vector<VtuField>& point_fields, const std::vector<VtuField>& cell_fields,
+               VtuCompression compression = VtuCompression::none);
 
 /// The tetrahedra of `mesh`: VTK_TETRA for a linear mesh, VTK_QUADRATIC_TETRA for a 10-node mesh
 /// (edge nodes reordered from Gmsh's 01, 12, 20, 30, 32, 31 to VTK's 01, 12, 20, 03, 13, 23).
 /// `points` replaces mesh.nodes (e.g. deformed positions) and must have mesh.n_nodes() entries.
 void write_vtu(const std::filesystem::path& path, const Mesh& mesh, std::span<const Vec3d> points,
-               const std::vector<VtuField>& point_fields, const std::vector<VtuField>& cell_fields);
+               const std::vector<VtuField>& point_fields, const std::vector<VtuField>& cell_fields,
+               VtuCompression compression = VtuCompression::none);
 
 }  // namespace plisse

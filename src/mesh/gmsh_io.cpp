@@ -519,7 +519,7 @@ ChildLimits gmsh_reader_limits(std::uintmax_t file_bytes) {
   // margin over that, the floors over Gmsh's start-up and any small file.
   constexpr std::uint64_t kMemoryFloor = std::uint64_t{1} << 30;
   constexpr std::uint64_t kMemoryPerFileByte = 64;
-  constexpr double kCpuFloorSeconds = 20.0;
+  constexpr double kCpuFloorSeconds = 10.0;
   constexpr double kCpuSecondsPerMiB = 4.0;
   const double mib = static_cast<double>(file_bytes) / static_cast<double>(1 << 20);
   ChildLimits limits;

@@ -53,7 +53,7 @@ Mesh read_gmsh(const std::string& path, GmshReadInfo& info);
 Mesh read_gmsh(const std::string& path, GmshReadInfo& info, const ChildLimits& limits);
 
 /// Resource limits of the reader process for a file of `file_bytes` bytes: memory 1 GiB + 64 bytes
-/// per file byte (beyond what plisse had mapped), CPU time 20 s + 4 s per MiB, wall time twice the
+/// per file byte (beyond what plisse had mapped), CPU time 10 s + 4 s per MiB, wall time twice the
 /// CPU time + 10 s. Gmsh needs far less on a well-formed file: 5-6 bytes per byte of file and
 /// about 0.02 s per MiB (fuzz/README.md).
 ChildLimits gmsh_reader_limits(std::uintmax_t file_bytes);

@@ -8,14 +8,18 @@
 
 #include "physics/cavity_volume.hpp"
 #include "physics/die_surface.hpp"
+#include "physics/dirichlet.hpp"
 #include "physics/surface.hpp"
 
 namespace plisse {
 
 DieContact::DieContact(const Mesh& mesh, DieGeometry die, DieContactSettings settings,
                        const std::vector<std::array<int, 3>>& candidates,
-                       const std::vector<std::array<int, 3>>& region)
-    : mesh_(mesh), die_(std::move(die)), settings_(std::move(settings)) {
+                       const std::vector<std::array<int, 3>>& region, int mirror_planes)
+    : mesh_(mesh),
+      die_(std::move(die)),
+      settings_(std::move(settings)),
+      cut_planes_(die_.symmetric_planes(mirror_planes)) {
   FE_CHECK(settings_.penalty > 0.0,
            "die '" << settings_.name << "': penalty must be > 0 (got " << settings_.penalty << ")");
   FE_CHECK(settings_.tolerance > 0.0, "die '" << settings_.name << "': tolerance must be > 0 (got "
@@ -273,6 +277,8 @@ std::vector<std::string> DieContact::history_columns() const {
     columns.push_back("stick_nodes:" + n);
     columns.push_back("slip_nodes:" + n);
   }
+  if (cut_planes_ != 0)
+    columns.insert(columns.end(), {"full_force_x:" + n, "full_force_y:" + n, "full_force_z:" + n});
   return columns;
 }
 
@@ -284,6 +290,10 @@ std::vector<double> DieContact::history_values(double t, std::span<const double>
     const auto [stick, slip] = count_sticking_and_sliding(t, x, true);
     values.push_back(stick);
     values.push_back(slip);
+  }
+  if (cut_planes_ != 0) {
+    const Vec3d whole = whole_body_force(f, cut_planes_);
+    values.insert(values.end(), {whole[0], whole[1], whole[2]});
   }
   return values;
 }

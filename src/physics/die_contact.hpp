@@ -31,9 +31,11 @@ class DieContact : public ModelTerm {
   /// (areas count the faces of both lists, each once). Borrows `mesh`.
   /// Throws plisse::Error when penalty or tolerance is not > 0, friction is < 0 or given to
   /// another law than Coulomb, or a region is given to a die that does not stick.
+  /// `mirror_planes` (bits as physics/dirichlet.hpp's mirror_planes): those the die is symmetric
+  /// about add the whole body's force to the history.
   DieContact(const Mesh& mesh, DieGeometry die, DieContactSettings settings,
              const std::vector<std::array<int, 3>>& candidates,
-             const std::vector<std::array<int, 3>>& region = {});
+             const std::vector<std::array<int, 3>>& region = {}, int mirror_planes = 0);
 
   /// Residual -f_v on each node v in contact (f_v: force of the die on the body) and its tangent
   /// (contact.md, D6-D8, D12, D18-D20). Remembers t for the updates below.
@@ -57,7 +59,8 @@ class DieContact : public ModelTerm {
 
   /// force_x/y/z:<name> (force of the body ON the die [N], D15), contact_nodes:<name>,
   /// penetration:<name> [mm] (largest violation, D10); Coulomb also stick_nodes:<name> and
-  /// slip_nodes:<name>.
+  /// slip_nodes:<name>; a die symmetric about a mirror plane also full_force_x/y/z:<name>, the
+  /// whole body's force on it.
   std::vector<std::string> history_columns() const override;
   std::vector<double> history_values(double t, std::span<const double> x) const override;
 
@@ -131,6 +134,8 @@ class DieContact : public ModelTerm {
   const Mesh& mesh_;
   DieGeometry die_;
   DieContactSettings settings_;
+  int cut_planes_;                 ///< the mirror planes the die is symmetric about
+                                   ///< (DieGeometry::symmetric_planes)
   std::vector<int> nodes_;         ///< mesh node of each contact node, increasing
   std::vector<double> areas_;      ///< reference tributary area [mm^2] (D5, D16)
   std::vector<double> tie_areas_;  ///< reference tie area [mm^2] (D17)

@@ -1,5 +1,6 @@
 #include "physics/die_geometry.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -56,6 +57,32 @@ DieGap DieGeometry::gap(const Vec3d& x, double t) const {
     }
   }
   return out;
+}
+
+int DieGeometry::symmetric_planes(int mirrors) const {
+  constexpr double kTol = 1e-12;
+  const double scale = std::max({1.0, point_.cwiseAbs().maxCoeff(), radius_});
+  int planes = 0;
+  for (int k = 0; k < 3; ++k) {
+    if (!(mirrors & (1 << k))) continue;
+    const bool centred =
+        std::abs(point_[k]) <= kTol * scale && std::abs(displacement_[k]) <= kTol * scale;
+    bool symmetric = false;
+    switch (shape_) {
+      case DieShape::plane:
+        symmetric = std::abs(normal_[k]) <= kTol;
+        break;
+      case DieShape::sphere:
+        symmetric = centred;
+        break;
+      case DieShape::cylinder:
+        symmetric =
+            std::abs(std::abs(axis_[k]) - 1.0) <= kTol || (std::abs(axis_[k]) <= kTol && centred);
+        break;
+    }
+    if (symmetric) planes |= 1 << k;
+  }
+  return planes;
 }
 
 }  // namespace plisse

@@ -37,6 +37,13 @@ class DieGeometry {
   /// when x lies on the centre (sphere) or the axis (cylinder), where the normal is undefined.
   DieGap gap(const Vec3d& x, double t) const;
 
+  /// The planes among `mirrors` (bit k: x_k = 0) whose reflection maps the die onto itself at every
+  /// t: a plane die whose normal lies in the plane; a sphere centred on it that moves in it; a
+  /// cylinder whose axis crosses it at a right angle, or lies in it and moves in it. Its whole-body
+  /// force sums its images (whole_body_force, physics/dirichlet.hpp); any other mirror image of
+  /// the die is another die.
+  int symmetric_planes(int mirrors) const;
+
  private:
   DieShape shape_;
   Vec3d point_, normal_, axis_;

@@ -28,6 +28,29 @@ int mirror_planes(const std::vector<BoundaryCondition>& conditions, const Mesh& 
   return planes;
 }
 
+int planes_reached(const Mesh& mesh, const std::vector<int>& triangles, int mirrors, double tol) {
+  double extent = 0.0;
+  for (int t : triangles)
+    for (int v : mesh.triangles[t]) extent = std::max(extent, mesh.nodes[v].cwiseAbs().maxCoeff());
+  int reached = 0;
+  for (int k = 0; k < 3; ++k) {
+    if (!(mirrors & (1 << k))) continue;
+    for (int t : triangles)
+      for (int v : mesh.triangles[t])
+        if (std::abs(mesh.nodes[v][k]) <= tol * std::max(extent, 1.0)) reached |= 1 << k;
+  }
+  return reached;
+}
+
+Vec3d whole_body_force(Vec3d f, int cut) {
+  for (int k = 0; k < 3; ++k) {
+    if (!(cut & (1 << k))) continue;
+    f *= 2.0;
+    f[k] = 0.0;
+  }
+  return f;
+}
+
 int coordinate_plane_axis(const Mesh& mesh, const std::vector<int>& triangles, double tol) {
   int axis = -1;
   for (int t : triangles) {

@@ -30,6 +30,19 @@ int coordinate_plane_axis(const Mesh& mesh, const std::vector<int>& triangles, d
 int mirror_planes(const std::vector<BoundaryCondition>& conditions, const Mesh& mesh,
                   double tol = 1e-8);
 
+/// The mirror planes among `mirrors` (bits as mirror_planes) that the surface `triangles` reaches:
+/// one of its nodes lies on the plane, within `tol` of the surface's extent. A condition on such
+/// a surface continues across the plane in the whole body; on one that does not reach it, the
+/// mirror image is a separate surface.
+int planes_reached(const Mesh& mesh, const std::vector<int>& triangles, int mirrors,
+                   double tol = 1e-8);
+
+/// The whole body's force from the modelled part's force `f` on something that each mirror plane
+/// of `cut` maps onto itself (a condition's surface that reaches the plane, a die centred on it):
+/// its mirror images add up, so the component normal to each such plane cancels and every other
+/// component doubles, once per plane.
+Vec3d whole_body_force(Vec3d f, int cut);
+
 /// All constrained components of `conditions`, one per (node, component). A condition holds the
 /// corners of its tagged triangles and, on a second-order mesh, their edge nodes. A node where two
 /// conditions prescribe different motions of the same component is an InputError at the later

@@ -57,14 +57,20 @@ fs::path run(const std::string& name, const std::string& case_file, const std::s
   return dir;
 }
 
-/// Columns that belong together (the components of a stress, a force, a moment, a displacement or
-/// a rotation vector): a
-/// component that is zero up to rounding is compared on the scale of its largest sibling.
+/// Columns that belong together (the components of a stress, a force, a moment, a displacement, a
+/// position or a rotation vector): a component that is zero up to rounding is compared on the
+/// scale of its largest sibling.
 std::string column_group(const std::string& name) {
   const std::size_t colon = name.find(':');
   const std::string suffix = colon == std::string::npos ? "" : name.substr(colon);
   if (name.rfind("cauchy_", 0) == 0) return "cauchy";
   if (name.rfind("stretch", 0) == 0) return "stretch";
+  if (name.rfind("stress_", 0) == 0) return "stress" + suffix;  // a probe's principal stresses
+  if (name.size() > 1 && name[1] == ':' && (name[0] == 'x' || name[0] == 'y' || name[0] == 'z'))
+    return "position" + suffix;  // a probe's deformed position
+  // The whole body's force is on the scale of the modelled part's (a component that a mirror
+  // plane cancels leaves the others at rounding).
+  if (name.rfind("full_force_", 0) == 0) return "force_" + suffix;
   for (const char* vector : {"force_", "load_", "moment_"})
     if (name.rfind(vector, 0) == 0) return vector + suffix;
   // ux:<name> ... (displacements), rx:<name> ... (a cap's rotation vector)

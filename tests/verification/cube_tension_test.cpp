@@ -2,7 +2,8 @@
 // incompressible material stretched to 5 times its length with sliding ends. The deformation is
 // homogeneous, which the linear+bubble element and the quadratic Taylor-Hood element both
 // represent exactly, so the computed Cauchy stress must equal the closed form at every step to
-// the solver tolerance (1e-6 relative asked), with either element.
+// the solver tolerance (1e-6 relative asked), with either element. So must every field its probes
+// report, at a point inside an element and at one projected onto a face.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,7 +12,9 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/types.hpp"
 #include "io/history_writer.hpp"
+#include "io/json_file.hpp"
 #include "io/run_directory.hpp"
 #include "io/vtu_reader.hpp"
 #include "support/run_plisse.hpp"
@@ -55,6 +58,45 @@ void expect_closed_form(const CubeCase& c) {
     EXPECT_NEAR(row[energy], stored, 1e-6 * stored) << "strain energy, stretch " << lambda;
   }
   EXPECT_NEAR(h.rows.back()[stretch], 5.0, 1e-12);
+
+  // The probes. 'inside' is a material point X inside an element, away from its nodes: every
+  // field interpolated there, or of its element, is the homogeneous stretch's, u = (F - I) X with
+  // F = diag(λ^-1/2, λ^-1/2, λ), the pressure -σzz/3 (the isochoric stress is deviatoric),
+  // J = 1 and von Mises σzz. 'above_top' lies 0.05 mm above the top face: it reports at the
+  // face's point below it, X_top = (2, 1, 5).
+  const Vec3d X(1.3, 2.1, 3.7), X_top(2.0, 1.0, 5.0);
+  for (const auto& row : h.rows) {
+    const double l = row[stretch], sz = c.sigma_zz(l), tol = 1e-6 * std::max(1.0, std::abs(sz));
+    const Vec3d F(1 / std::sqrt(l), 1 / std::sqrt(l), l);
+    const std::string at = " at stretch " + std::to_string(l);
+    for (int k = 0; k < 3; ++k) {
+      const std::string axis(1, "xyz"[k]);
+      EXPECT_NEAR(row[col("u" + axis + ":inside")], (F[k] - 1) * X[k], 1e-6 * l) << axis << at;
+      EXPECT_NEAR(row[col(axis + ":inside")], F[k] * X[k], 1e-6 * l) << axis << at;
+      EXPECT_NEAR(row[col("u" + axis + ":above_top")], (F[k] - 1) * X_top[k], 1e-6 * l)
+          << axis << at;
+    }
+    EXPECT_NEAR(row[col("pressure:inside")], -sz / 3, tol) << at;
+    for (const char* shear : {"cauchy_xx", "cauchy_yy", "cauchy_xy", "cauchy_yz", "cauchy_xz"})
+      EXPECT_NEAR(row[col(shear + std::string(":inside"))], 0.0, tol) << shear << at;
+    EXPECT_NEAR(row[col("cauchy_zz:inside")], sz, tol) << at;
+    EXPECT_NEAR(row[col("von_mises:inside")], std::abs(sz), tol) << at;
+    EXPECT_NEAR(row[col("stretch_1:inside")], l, 1e-6 * l) << at;
+    EXPECT_NEAR(row[col("stretch_2:inside")], 1 / std::sqrt(l), 1e-6) << at;
+    EXPECT_NEAR(row[col("stretch_3:inside")], 1 / std::sqrt(l), 1e-6) << at;
+    EXPECT_NEAR(row[col("stress_1:inside")], sz, tol) << at;
+    EXPECT_NEAR(row[col("stress_2:inside")], 0.0, tol) << at;
+    EXPECT_NEAR(row[col("stress_3:inside")], 0.0, tol) << at;
+    EXPECT_NEAR(row[col("J:inside")], 1.0, 1e-9) << at;
+  }
+  // summary.json says where each probe reports, and how far that is from its point.
+  const nlohmann::json probes = read_json_file(dir / "summary.json")["probes"];
+  ASSERT_EQ(probes.size(), 2u);
+  EXPECT_TRUE(probes[0]["inside"].get<bool>());
+  EXPECT_NEAR(probes[0]["distance"].get<double>(), 0.0, 1e-12);
+  EXPECT_FALSE(probes[1]["inside"].get<bool>());
+  EXPECT_NEAR(probes[1]["distance"].get<double>(), 0.05, 1e-12);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(probes[1]["position"][k].get<double>(), X_top[k], 1e-12);
 
   // The last step's VTU fields: principal stretches (λ, λ^-1/2, λ^-1/2) and principal stresses
   // (σzz, 0, 0) in every element, and the reactions on the pulled end (the positive z ones; the

@@ -78,6 +78,9 @@ TEST(HistoryColumns, NamesAndValuesComeFromOneTableInTheContractOrder) {
                                           "force_x:pull",
                                           "force_y:pull",
                                           "force_z:pull",
+                                          "full_force_x:pull",
+                                          "full_force_y:pull",
+                                          "full_force_z:pull",
                                           "ux:corner",
                                           "uy:corner",
                                           "uz:corner",
@@ -118,8 +121,9 @@ TEST(HistoryColumns, NamesAndValuesComeFromOneTableInTheContractOrder) {
   EXPECT_NEAR(value("stretch_z"), kStretch, 1e-14);
   EXPECT_NEAR(value("stretch_x"), lateral, 1e-14);
   EXPECT_NEAR(value("stretch_y"), lateral, 1e-14);
-  // The probe snaps to the corner node (2, 2, 2).
+  // The probe, 0.1 mm off the face x = 2, reports at its nearest point (2, 1.9, 2).
   EXPECT_NEAR(value("ux:corner"), (lateral - 1.0) * kEdge, 1e-14);
+  EXPECT_NEAR(value("uy:corner"), (lateral - 1.0) * 1.9, 1e-14);
   EXPECT_NEAR(value("uz:corner"), (kStretch - 1.0) * kEdge, 1e-14);
   const double volume = kEdge * kEdge * kEdge;
   EXPECT_NEAR(value("volume"), volume, 1e-12);  // isochoric
@@ -131,6 +135,11 @@ TEST(HistoryColumns, NamesAndValuesComeFromOneTableInTheContractOrder) {
   // the Cauchy stress times the deformed top area, here through the averaged stress.
   const double top_area = kEdge * kEdge / kStretch;
   EXPECT_NEAR(value("force_z:pull"), value("cauchy_zz") * top_area, 1e-10);
+  // The top reaches the mirror planes x = 0 and y = 0 (not z = 0): the whole body's top is four
+  // of the modelled one, pulled along z only.
+  EXPECT_EQ(value("full_force_z:pull"), 4.0 * value("force_z:pull"));
+  EXPECT_EQ(value("full_force_x:pull"), 0.0);
+  EXPECT_EQ(value("full_force_y:pull"), 0.0);
   EXPECT_EQ(value("negative_pivots"), 12.0);
   EXPECT_EQ(value("stable"), 1.0);
 }

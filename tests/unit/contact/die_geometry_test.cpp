@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <vector>
 
 #include "core/error.hpp"
 
@@ -76,6 +78,49 @@ TEST(DieGeometry, NormalAndCurvatureAreDerivativesOfTheGap) {
       // Central differences: error ~ h^2 |third derivative| (curvature radii >= 1.5 mm here).
       EXPECT_NEAR((gp.g - gm.g) / (2 * h), g.n[j], 1e-9);
       EXPECT_LT(((gp.n - gm.n) / (2 * h) - g.H.col(j)).norm(), 1e-8);
+    }
+  }
+}
+
+TEST(DieGeometry, SymmetricPlanesAreThoseWhoseReflectionLeavesEveryGapUnchanged) {
+  // The die is its own mirror image in x_k = 0 exactly when the gap of every point equals the gap
+  // of its reflection at every time: checked on random points for planes, spheres and cylinders
+  // placed on, off and across the coordinate planes, still and moving.
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> coordinate(-5.0, 5.0);
+  const Vec3d tilted = Vec3d(1, 2, 0).normalized();
+  struct Die {
+    DieShape shape;
+    Vec3d point, direction, displacement;
+  };
+  const std::vector<Die> dies = {
+      {DieShape::plane, {0, 11, 0}, {0, -1, 0}, {0, -3, 0}},  // a punch along -y
+      {DieShape::plane, {2, 1, 0}, tilted, {1, 0, 0}},        // a tilted plane
+      {DieShape::plane, {0, 0, 3}, {0, 0, 1}, {0, 0, 0}},
+      {DieShape::sphere, {0, 12, 0}, {}, {0, -2, 0}},  // centred on x = 0 and z = 0
+      {DieShape::sphere, {0, 12, 0}, {}, {1, -2, 0}},  // moving off x = 0
+      {DieShape::sphere, {3, 0, -1}, {}, {0, 0, 0}},
+      {DieShape::cylinder, {0, 4, 0}, {0, 0, 1}, {0, -1, 0}},  // axis along z, in x = 0
+      {DieShape::cylinder, {2, 4, 0}, {0, 0, 1}, {0, 0, 0}},   // axis along z, off x = 0
+      {DieShape::cylinder, {0, 4, 1}, {1, 0, 0}, {0, 0, 0}},   // axis along x, off z = 0
+      {DieShape::cylinder, {0, 4, 0}, tilted, {0, 0, 0}},
+  };
+  for (std::size_t d = 0; d < dies.size(); ++d) {
+    const Die& die = dies[d];
+    const DieGeometry g(die.shape, die.point, die.direction, die.direction, 1.5, die.displacement,
+                        Ramp{0.0, 1.0});
+    const int symmetric = g.symmetric_planes(7);
+    for (int k = 0; k < 3; ++k) {
+      bool invariant = true;
+      for (int trial = 0; trial < 50; ++trial) {
+        const Vec3d x(coordinate(random), coordinate(random), coordinate(random));
+        Vec3d mirrored = x;
+        mirrored[k] = -x[k];
+        for (double t : {0.0, 0.5, 1.0})
+          invariant = invariant && std::abs(g.gap(x, t).g - g.gap(mirrored, t).g) < 1e-12;
+      }
+      EXPECT_EQ((symmetric >> k) & 1, invariant ? 1 : 0) << "die " << d << ", plane " << k;
+      EXPECT_EQ((g.symmetric_planes(7 & ~(1 << k)) >> k) & 1, 0) << "not a mirror plane";
     }
   }
 }

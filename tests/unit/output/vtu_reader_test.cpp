@@ -1,11 +1,14 @@
-// VTU reader (io/vtu_reader.hpp): bit-exact round trip with write_vtu, and a plisse::Error (never a
-// crash, a huge allocation or a read past the end) for missing fields, foreign formats, truncated
-// and corrupted files: every truncation length and every single-byte corruption are tried.
+// VTU reader (io/vtu_reader.hpp): bit-exact round trip with write_vtu, raw or zlib-compressed, and
+// a plisse::Error (never a crash, a huge allocation or a read past the end) for missing fields,
+// foreign formats, truncated and corrupted files: every truncation length and every single-byte
+// corruption are tried, in both formats.
 #include "io/vtu_reader.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -41,10 +44,15 @@ struct Sample {
                     make_vector_field("a<b & \"c\"", mode)};
     cell_fields = {make_scalar_field("J", std::vector<double>{1.0 / 3.0, 2.0 / 3.0})};
   }
-  void write(const std::filesystem::path& path) const {
-    write_vtu(path, points, tets, point_fields, cell_fields);
+  void write(const std::filesystem::path& path,
+             VtuCompression compression = VtuCompression::none) const {
+    write_vtu(path, points, tets, point_fields, cell_fields, compression);
   }
 };
+
+constexpr std::array<VtuCompression, 2> kCompressions = {VtuCompression::none,
+                                                         VtuCompression::zlib};
+std::string name(VtuCompression c) { return c == VtuCompression::zlib ? "zlib" : "raw"; }
 
 void write_bytes(const std::filesystem::path& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
@@ -59,26 +67,53 @@ std::string error_of(const std::filesystem::path& path, const std::string& field
   return "";
 }
 
-TEST(VtuReader, RoundTripIsBitExactForEveryPointField) {
-  ScratchDir dir;
-  const Sample s;
-  s.write(dir / "a.vtu");
-  const VtuSummary summary = read_vtu_summary(dir / "a.vtu");
-  EXPECT_EQ(summary.n_points, 5u);
-  EXPECT_EQ(summary.n_cells, 2u);
-  EXPECT_EQ(read_vtu_point_count(dir / "a.vtu"), 5u);
-  ASSERT_EQ(summary.point_fields.size(), s.point_fields.size());
-  ASSERT_EQ(summary.cell_fields.size(), 1u);
-  EXPECT_EQ(summary.cell_fields[0].name, "J");
-  for (std::size_t k = 0; k < s.point_fields.size(); ++k) {
-    const VtuField& written = s.point_fields[k];
-    EXPECT_EQ(summary.point_fields[k].name, written.name);  // entities decoded
-    EXPECT_EQ(summary.point_fields[k].n_components, written.n_components);
-    const VtuField read = read_vtu_point_field(dir / "a.vtu", written.name);
-    EXPECT_EQ(read.name, written.name);
-    EXPECT_EQ(read.n_components, written.n_components);
-    EXPECT_EQ(read.values, written.values);  // bit-exact: raw Float64 both ways
+TEST(VtuReader, RoundTripIsBitExactForEveryPointFieldRawOrCompressed) {
+  for (const VtuCompression compression : kCompressions) {
+    SCOPED_TRACE(name(compression));
+    ScratchDir dir;
+    const Sample s;
+    s.write(dir / "a.vtu", compression);
+    const VtuSummary summary = read_vtu_summary(dir / "a.vtu");
+    EXPECT_EQ(summary.n_points, 5u);
+    EXPECT_EQ(summary.n_cells, 2u);
+    EXPECT_EQ(read_vtu_point_count(dir / "a.vtu"), 5u);
+    ASSERT_EQ(summary.point_fields.size(), s.point_fields.size());
+    ASSERT_EQ(summary.cell_fields.size(), 1u);
+    EXPECT_EQ(summary.cell_fields[0].name, "J");
+    for (std::size_t k = 0; k < s.point_fields.size(); ++k) {
+      const VtuField& written = s.point_fields[k];
+      EXPECT_EQ(summary.point_fields[k].name, written.name);  // entities decoded
+      EXPECT_EQ(summary.point_fields[k].n_components, written.n_components);
+      const VtuField read = read_vtu_point_field(dir / "a.vtu", written.name);
+      EXPECT_EQ(read.name, written.name);
+      EXPECT_EQ(read.n_components, written.n_components);
+      EXPECT_EQ(read.values, written.values);  // bit-exact: raw Float64 both ways
+    }
   }
+}
+
+TEST(VtuReader, ACompressedArrayOfSeveralBlocksReadsBackBitExact) {
+  // 60 000 points: the vector field is 1.44 MB, two zlib blocks (the last one partial), the
+  // scalar field one; values that do not repeat, so the blocks do not deflate to nothing.
+  ScratchDir dir;
+  const int n = 60000;
+  std::vector<Vec3d> points, u;
+  std::vector<double> p;
+  for (int i = 0; i < n; ++i) {
+    points.emplace_back(i / 7.0, std::sin(i), std::cos(0.5 * i));
+    u.emplace_back(std::sqrt(i + 0.5), -i / 11.0, std::exp(-1e-4 * i));
+    p.push_back(std::log1p(i));
+  }
+  const std::vector<std::array<int, 4>> tets = {{0, 1, 2, 3}, {n - 4, n - 3, n - 2, n - 1}};
+  const std::vector<VtuField> fields = {make_vector_field("u", u), make_scalar_field("p", p)};
+  write_vtu(dir / "big.vtu", points, tets, fields, {}, VtuCompression::zlib);
+  write_vtu(dir / "raw.vtu", points, tets, fields, {}, VtuCompression::none);
+  EXPECT_NE(contents(dir / "big.vtu").find("compressor=\"vtkZLibDataCompressor\""),
+            std::string::npos);
+  EXPECT_LT(std::filesystem::file_size(dir / "big.vtu"),
+            std::filesystem::file_size(dir / "raw.vtu"));
+  EXPECT_EQ(read_vtu_point_field(dir / "big.vtu", "u").values, fields[0].values);
+  EXPECT_EQ(read_vtu_point_field(dir / "big.vtu", "p").values, fields[1].values);
 }
 
 TEST(VtuReader, CellFieldRoundTripIsBitExactAndAPointFieldIsNoCellField) {
@@ -165,6 +200,10 @@ TEST(VtuReader, ForeignFormatsAreRefusedByName) {
   EXPECT_NE(variant("NumberOfPoints=\"5\"", "NumberOfPoints=\"99999999999999999999999\"")
                 .find("unsigned integer"),
             std::string::npos);
+  EXPECT_NE(variant("header_type=\"UInt64\"",
+                    "header_type=\"UInt64\" compressor=\"vtkLZ4DataCompressor\"")
+                .find("compressor 'vtkLZ4DataCompressor'"),
+            std::string::npos);
 }
 
 std::size_t data_start(const std::string& vtu) {
@@ -172,14 +211,17 @@ std::size_t data_start(const std::string& vtu) {
 }
 
 TEST(VtuReader, TruncationsAreErrors) {
-  ScratchDir dir;
-  Sample().write(dir / "a.vtu");
-  const std::string good = contents(dir / "a.vtu");
-  // Longest first: each truncation is one resize of the same file (cheap on a loaded machine).
-  for (std::size_t n = good.size() - 1; n-- > 0;) {
-    // (n = size - 1, only the final newline after </VTKFile> gone, is complete and skipped.)
-    std::filesystem::resize_file(dir / "a.vtu", n);
-    EXPECT_NE(error_of(dir / "a.vtu"), "") << "truncated to " << n << " of " << good.size();
+  for (const VtuCompression compression : kCompressions) {
+    SCOPED_TRACE(name(compression));
+    ScratchDir dir;
+    Sample().write(dir / "a.vtu", compression);
+    const std::string good = contents(dir / "a.vtu");
+    // Longest first: each truncation is one resize of the same file (cheap on a loaded machine).
+    for (std::size_t n = good.size() - 1; n-- > 0;) {
+      // (n = size - 1, only the final newline after </VTKFile> gone, is complete and skipped.)
+      std::filesystem::resize_file(dir / "a.vtu", n);
+      EXPECT_NE(error_of(dir / "a.vtu"), "") << "truncated to " << n << " of " << good.size();
+    }
   }
 }
 
@@ -207,36 +249,69 @@ TEST(VtuReader, CorruptByteCountsAndOffsetsAreErrors) {
             std::string::npos);
 }
 
+TEST(VtuReader, CorruptCompressionHeadersAreErrorsWithoutHugeAllocations) {
+  // The first array's header [blocks, block size, last block, compressed sizes...]: each word set
+  // to values a corrupt file could hold. Every one is refused (the inflation bound stops a small
+  // block from claiming gigabytes), or, where the change is harmless, read at the right size.
+  ScratchDir dir;
+  Sample().write(dir / "a.vtu", VtuCompression::zlib);
+  const std::string good = contents(dir / "a.vtu");
+  const std::size_t data = data_start(good);
+  for (std::size_t word = 0; word < 4; ++word)
+    for (const std::uint64_t bad : {std::uint64_t{0}, std::uint64_t{2}, std::uint64_t{1} << 20,
+                                    std::uint64_t{1} << 40, ~std::uint64_t{0}}) {
+      std::string text = good;
+      std::memcpy(text.data() + data + 8 * word, &bad, sizeof bad);
+      write_bytes(dir / "c.vtu", text);
+      try {
+        EXPECT_EQ(read_vtu_point_field(dir / "c.vtu", "pressure").values.size(), 5u);
+      } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("c.vtu"), std::string::npos) << e.what();
+      }
+    }
+  // A block size that claims far more than the block can inflate to: refused by the bound.
+  std::string text = good;
+  const std::uint64_t huge_block = std::uint64_t{1} << 36, full = 0;
+  std::memcpy(text.data() + data + 8, &huge_block, sizeof huge_block);
+  std::memcpy(text.data() + data + 16, &full, sizeof full);
+  write_bytes(dir / "d.vtu", text);
+  EXPECT_NE(error_of(dir / "d.vtu", "pressure").find("can hold"), std::string::npos)
+      << error_of(dir / "d.vtu", "pressure");
+}
+
 TEST(VtuReader, SingleByteCorruptionIsReadOrRefusedNeverACrash) {
   // Each byte in turn replaced by 0xff, then by '<' (in place, then restored): the reader
   // either reads a field of the declared size or throws plisse::Error (anything else fails or
   // crashes the test).
-  ScratchDir dir;
-  Sample().write(dir / "a.vtu");
-  const std::string good = contents(dir / "a.vtu");
-  std::fstream file(dir / "a.vtu", std::ios::in | std::ios::out | std::ios::binary);
-  const auto put = [&](std::size_t at, char c) {
-    file.seekp(static_cast<std::streamoff>(at));
-    file.put(c);
-    file.flush();
-  };
-  int refused = 0;
-  for (const char replacement : {'\xff', '<'}) {
-    for (std::size_t i = 0; i < good.size(); ++i) {
-      if (good[i] == replacement) continue;
-      put(i, replacement);
-      try {
-        const VtuField f = read_vtu_point_field(dir / "a.vtu", "mode_1");
-        EXPECT_EQ(f.values.size(), 15u) << "byte " << i;
-      } catch (const Error&) {
-        ++refused;
+  for (const VtuCompression compression : kCompressions) {
+    SCOPED_TRACE(name(compression));
+    ScratchDir dir;
+    Sample().write(dir / "a.vtu", compression);
+    const std::string good = contents(dir / "a.vtu");
+    std::fstream file(dir / "a.vtu", std::ios::in | std::ios::out | std::ios::binary);
+    const auto put = [&](std::size_t at, char c) {
+      file.seekp(static_cast<std::streamoff>(at));
+      file.put(c);
+      file.flush();
+    };
+    int refused = 0;
+    for (const char replacement : {'\xff', '<'}) {
+      for (std::size_t i = 0; i < good.size(); ++i) {
+        if (good[i] == replacement) continue;
+        put(i, replacement);
+        try {
+          const VtuField f = read_vtu_point_field(dir / "a.vtu", "mode_1");
+          EXPECT_EQ(f.values.size(), 15u) << "byte " << i;
+        } catch (const Error&) {
+          ++refused;
+        }
+        put(i, good[i]);
       }
-      put(i, good[i]);
     }
+    ASSERT_TRUE(file.good());
+    EXPECT_GT(refused, 500);
+    EXPECT_EQ(contents(dir / "a.vtu"), good);  // every byte restored
   }
-  ASSERT_TRUE(file.good());
-  EXPECT_GT(refused, 500);
-  EXPECT_EQ(contents(dir / "a.vtu"), good);  // every byte restored
 }
 
 }  // namespace

@@ -107,6 +107,13 @@ TEST(PressureLoad, EnclosedVolumeAndTheWholeBodysCountOnlyMirrorPlanes) {
   }
   const int mirrors = mirror_planes(conditions, mesh);
   EXPECT_EQ(mirrors, 1 | 2);
+  // The bottom face reaches both mirror planes, the far edge x = 4 neither; a force on a surface
+  // that reaches a plane loses its normal component and doubles the others.
+  EXPECT_EQ(planes_reached(mesh, mesh.surface_tags.at("bottom"), mirrors), 1 | 2);
+  EXPECT_EQ(planes_reached(mesh, mesh.surface_tags.at("bottom"), 1), 1);
+  EXPECT_EQ(planes_reached(mesh, mesh.surface_tags.at("right"), mirrors), 2);  // x = 4, y from 0
+  EXPECT_EQ(whole_body_force(Vec3d(1.0, 2.0, 3.0), 1 | 2), Vec3d(0.0, 0.0, 12.0));
+  EXPECT_EQ(whole_body_force(Vec3d(1.0, 2.0, 3.0), 4), Vec3d(2.0, 4.0, 0.0));
   PressureLoad load(mesh, "p", "bottom", 0.1, Ramp{0.0, 1.0}, {}, mirrors);
   EXPECT_EQ(load.history_columns(),
             (std::vector<std::string>{"pressure:p", "volume:p", "full_volume:p"}));

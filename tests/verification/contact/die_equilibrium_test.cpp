@@ -68,6 +68,12 @@ void expect_plates_balance(const std::string& element) {
     const double scale = std::max(std::abs(row[punch]), 1e-6);
     worst = std::max(worst, std::abs(row[punch] + row[floor]) / scale);
     EXPECT_NEAR(row[punch] + row[floor], 0.0, 1e-9 * scale) << "t = " << row[1];
+    // Both plates are their own mirror images in x = 0 and z = 0: the whole sphere pushes each
+    // with 4 times the quarter's force, and the whole body balances too.
+    EXPECT_EQ(row[col("full_force_y:punch")], 4.0 * row[punch]) << "t = " << row[1];
+    EXPECT_EQ(row[col("full_force_y:floor")], 4.0 * row[floor]) << "t = " << row[1];
+    EXPECT_EQ(row[col("full_force_x:punch")], 0.0);
+    EXPECT_EQ(row[col("full_force_z:floor")], 0.0);
     EXPECT_LE(row[punch_pen], kDieTolerance) << "t = " << row[1];
     EXPECT_LE(row[floor_pen], kDieTolerance) << "t = " << row[1];
   }

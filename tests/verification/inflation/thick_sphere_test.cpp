@@ -14,6 +14,7 @@
 #include <functional>
 #include <string>
 
+#include "core/types.hpp"
 #include "io/history_writer.hpp"
 #include "io/run_directory.hpp"
 #include "io/vtu_reader.hpp"
@@ -125,6 +126,7 @@ struct WallResult {
   double thickness_error;  ///< largest |t / (b − a) − 1| over the nodes
   double reaction_error;   ///< largest |R_k / (−p π a² / 4) − 1| over k = x, y, z
   double volume_error;     ///< |volume:gas / (π a³ / 6) − 1|: the octant of the cavity
+  double probe_error;  ///< the probe 'wall': |r / r(R) − 1| and |t / (b − a) − 1|, the larger
 };
 
 /// Runs the Taylor-Hood sphere at element size `size` (2 layers) and compares the last step's
@@ -147,7 +149,15 @@ WallResult wall_and_reactions(double size, const std::function<double(double)>& 
   const double a = kA * inner_stretch_at(p, 1.0 + value("ux:inner") / kA, dW);
   const double b = std::cbrt(kB * kB * kB - kA * kA * kA + a * a * a);
   const auto last = dir / RunDirectory::step_file_name(static_cast<int>(h.rows.size()));
-  WallResult result{0.0, 0.0, 0.0};
+  WallResult result{0.0, 0.0, 0.0, 0.0};
+  // The probe 'wall', a material point at radius R inside the wall, between nodes: it moves along
+  // its radius to r(R), r³ = R³ + a³ − A³, and reads the wall's thickness b − a there.
+  const Vec3d X(4.642, 9.285, 6.964);
+  const Vec3d x = X + Vec3d(value("ux:wall"), value("uy:wall"), value("uz:wall"));
+  const double R = X.norm(), r = std::cbrt(R * R * R + a * a * a - kA * kA * kA);
+  EXPECT_LT(x.normalized().cross(X.normalized()).norm(), 1e-3) << "the probe left its radius";
+  result.probe_error =
+      std::max(std::abs(x.norm() / r - 1.0), std::abs(value("thickness:wall") / (b - a) - 1.0));
   // The volume the loaded surface encloses with the three mirror planes, an eighth of the
   // sphere of radius a; the whole cavity's is 8 times that.
   result.volume_error = std::abs(value("volume:gas") / (M_PI * a * a * a / 6.0) - 1.0);
@@ -183,13 +193,14 @@ TEST(ThickSphereInflation, WallThicknessReactionsAndVolumeFollowTheClosedForm) {
   const WallResult fine = wall_and_reactions(1.0, dW);
   std::printf(
       "thickness error %.2e (h 1.4), %.2e (h 1.0); reaction error %.2e, %.2e; volume error "
-      "%.2e, %.2e\n",
+      "%.2e, %.2e; probe error %.2e, %.2e\n",
       coarse.thickness_error, fine.thickness_error, coarse.reaction_error, fine.reaction_error,
-      coarse.volume_error, fine.volume_error);
+      coarse.volume_error, fine.volume_error, coarse.probe_error, fine.probe_error);
   EXPECT_LT(fine.thickness_error, 1e-3);
   EXPECT_LT(fine.thickness_error, coarse.thickness_error);
   EXPECT_LT(fine.reaction_error, 5e-4);  // measured 9.5e-5, 4.0e-5
   EXPECT_LT(fine.volume_error, 1e-4);    // measured 1.4e-5, 2.0e-5
+  EXPECT_LT(fine.probe_error, 1e-3);     // as the thickness field
 }
 
 }  // namespace
