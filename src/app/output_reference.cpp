@@ -181,9 +181,10 @@ const std::vector<OutputEntry> kHistory = {
 
 const std::vector<OutputEntry> kSummary = {
     {"units", "–", "always",
-     "the units of every number plisse writes: {\"length\": \"mm\", \"force\": \"N\", "
-     "\"stress\": \"MPa\", \"time\": \"s\", \"energy\": \"mJ\", \"density\": "
-     "\"t/mm³\"}, the consistent set the case's numbers are read in"},
+     "the units of every number plisse writes, for a case in the docs' consistent units: "
+     "{\"length\": \"mm\", \"force\": \"N\", \"stress\": \"MPa\", \"time\": \"s\", "
+     "\"energy\": \"mJ\", \"density\": \"t/mm³\"} (plisse computes in the case's own "
+     "consistent units: see Units)"},
     {"units.<quantity>", "–", "always", "one entry of `units`"},
     {"history_units.<column>", "–", "always",
      "the unit of each history.csv column, as in this reference (`–` dimensionless), so a script "

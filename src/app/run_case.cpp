@@ -147,6 +147,9 @@ void log_header(RunLog& log, const PreparedRun& run, const fs::path& directory,
                 model.n_free(), model.dofs().n_free_pressure(), n_constrained);
   log.info(line);
   log.info("threads: " + run.threads);
+  log.info(
+      "units: the case's, consistent (mm, N, MPa, s in plisse's docs); history.csv's "
+      "columns: summary.json history_units, plisse outputs");
   for (const InputError& e : setup_warnings(c)) log.warn(e.what());
   for (const Load& load : c.loads) {
     if (load.type != LoadType::point_force) continue;

@@ -62,6 +62,7 @@ void PvdWriter::add(double time, const std::string& file) {
 void PvdWriter::write() const {
   std::string xml;
   xml += "<?xml version=\"1.0\"?>\n";
+  xml += kUnitsComment;
   xml +=
       "<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\" "
       "header_type=\"UInt64\">\n";

@@ -81,6 +81,7 @@ void write_pvtu(const std::filesystem::path& path, const std::vector<std::string
 
   std::string xml;
   xml += "<?xml version=\"1.0\"?>\n";
+  xml += kUnitsComment;
   xml +=
       "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
       "header_type=\"UInt64\">\n";

@@ -145,6 +145,7 @@ void write_piece(const std::filesystem::path& path, std::span<const Vec3d> point
   };
   std::string xml;
   xml += "<?xml version=\"1.0\"?>\n";
+  xml += kUnitsComment;
   xml +=
       "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
       "header_type=\"UInt64\"";

@@ -30,6 +30,12 @@
 
 namespace plisse {
 
+/// The XML comment after the declaration of every VTU, PVTU and PVD file plisse writes: the units
+/// of its numbers (readers skip it).
+inline constexpr const char* kUnitsComment =
+    "<!-- plisse: in the case file's consistent units (mm, N, MPa, s in plisse's docs); each "
+    "field's unit: plisse outputs vtu-point, plisse outputs vtu-cell -->\n";
+
 /// How the arrays of the appended block are stored (file comment).
 enum class VtuCompression {
   none,  ///< raw: the fastest to write and read, about twice the size
