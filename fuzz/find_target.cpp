@@ -8,6 +8,7 @@ TargetFunction find_target(const std::string& name) {
   if (name == "gmsh") return &read_mesh;
   if (name == "history") return &read_history_file;
   if (name == "checkpoint") return &read_checkpoint_file;
+  if (name == "vtu") return &read_vtu_file;
   return nullptr;
 }
 

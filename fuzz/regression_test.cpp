@@ -77,5 +77,7 @@ TEST(FuzzRegressions, HistoryReaderRejectsOrAcceptsEverySavedInput) {
   EXPECT_GT(replay("history"), 0u);
 }
 
+TEST(FuzzRegressions, VtuReaderRejectsOrAcceptsEverySavedInput) { EXPECT_GT(replay("vtu"), 0u); }
+
 }  // namespace
 }  // namespace plisse::fuzz

@@ -48,8 +48,13 @@ Outcome read_history_file(Bytes data);
 /// written back with write_checkpoint and must read back bit for bit.
 Outcome read_checkpoint_file(Bytes data);
 
-/// A target by name: "case", "gmsh", "history" or "checkpoint" (the folder names under fuzz/corpus/
-/// and fuzz/regressions/). Returns nullptr for an unknown name.
+/// read_vtu_summary and every point and cell field of the bytes written to a temporary ".vtu"
+/// file (raw or zlib-compressed); an accepted file's fields hold exactly the values its header
+/// declares.
+Outcome read_vtu_file(Bytes data);
+
+/// A target by name: "case", "gmsh", "history", "checkpoint" or "vtu" (the folder names under
+/// fuzz/corpus/ and fuzz/regressions/). Returns nullptr for an unknown name.
 using TargetFunction = Outcome (*)(Bytes);
 TargetFunction find_target(const std::string& name);
 
