@@ -290,7 +290,7 @@ std::vector<InputError> setup_warnings(const Case& c) {
   };
   const auto check = [&](const Ramp& ramp, const InputPlace& entry, const std::string& what) {
     const InputPlace place{entry.file, entry.line, entry.column, entry.key + ".ramp"};
-    if (ramp.start >= end)
+    if (ramp.start >= end && ramp.factor(0.0) == 0.0)
       out.emplace_back(place, what + " starts at " + number(ramp.start) +
                                   " s, not before solver.end_time (" + number(end) +
                                   " s): it is never applied");

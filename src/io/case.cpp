@@ -78,10 +78,33 @@ Vec3d unit_vector(const Field& f) {
   return v / norm;
 }
 
-/// `ramp: [start, end]` [s] with 0 <= start < end.
+/// `ramp: [start, end]` [s] with 0 <= start < end, or a load curve `[[t, factor], ...]`: at least
+/// two points, t >= 0 strictly increasing, finite factors.
 Ramp read_ramp(const Field& f) {
+  if (f.node().IsSequence() && f.node().size() > 0 && f.node()[0].IsSequence()) {
+    Ramp ramp;
+    const std::vector<Field> points = f.items();
+    if (points.size() < 2)
+      f.fail("a load curve needs at least 2 points [t, factor], got " + f.describe());
+    for (const Field& point : points) {
+      if (!point.node().IsSequence() || point.node().size() != 2)
+        point.fail("expected a point [t, factor] of 2 numbers, got " + point.describe());
+      const std::vector<double> p = point.reals();
+      if (p[0] < 0.0) point.fail("the time must be >= 0 (got " + format_number(p[0]) + ")");
+      if (!ramp.table.empty() && !(p[0] > ramp.table.back()[0]))
+        point.fail("the times must increase: " + format_number(p[0]) + " follows " +
+                   format_number(ramp.table.back()[0]));
+      ramp.table.push_back({p[0], p[1]});
+    }
+    ramp.start = ramp.table.front()[0];
+    ramp.end = ramp.table.back()[0];
+    return ramp;
+  }
   if (!f.node().IsSequence() || f.node().size() != 2)
-    f.fail("expected a list of 2 numbers [start, end] in s, got " + f.describe());
+    f.fail(
+        "expected a list of 2 numbers [start, end] in s, or a load curve [[t, factor], ...], "
+        "got " +
+        f.describe());
   const std::vector<double> t = f.reals();
   if (t[0] < 0.0) f.fail("ramp start must be >= 0 (got " + format_number(t[0]) + ")");
   if (!(t[1] > t[0]))
@@ -118,12 +141,23 @@ typename Schema<S>::Row& name_key(Schema<S>& schema, std::type_identity_t<std::s
       [member](const Field& f, S& s, ReadContext& context) { s.*member = context.unique_name(f); });
 }
 
+/// What every `ramp` key's help adds about load curves.
+const std::string load_curve_help =
+    "; a list of points [[t, factor], ...] is a load curve instead: the factor joins them "
+    "linearly and holds the first and last values outside (load, hold, unload, cycles)";
+
 /// A time ramp; default [0, solver.end_time].
 template <class S>
 typename Schema<S>::Row& ramp_key(Schema<S>& schema, std::type_identity_t<Ramp S::*> member,
                                   std::string help) {
   return schema
-      .add({"ramp", "[start, end]", "s", "0 <= start < end", "[0, end_time]", {}, std::move(help)},
+      .add({"ramp",
+            "[start, end] or [[t, factor], ...]",
+            "s",
+            "0 <= start < end; t increasing",
+            "[0, end_time]",
+            {},
+            std::move(help) + load_curve_help},
            [member](const Field& f, S& s, ReadContext&) { s.*member = read_ramp(f); })
       .when_absent([member](const FieldMap&, S& s, ReadContext& context) {
         s.*member = {0.0, context.end_time};

@@ -86,8 +86,7 @@ std::vector<ConstrainedComponent> collect_constraints(
     if (inserted) return;
     const ConstrainedComponent& old = it->second.first;
     const bool same =
-        (old.value == 0.0 && value == 0.0) ||
-        (old.value == value && old.ramp.start == ramp.start && old.ramp.end == ramp.end);
+        (old.value == 0.0 && value == 0.0) || (old.value == value && old.ramp == ramp);
     if (!same) {
       const char* axis = "xyz";
       throw InputError(bc.place, "node " + std::to_string(node) + " already has its " +

@@ -166,5 +166,38 @@ TEST(CubeTension, TaylorHoodFungMatchesClosedFormAtEveryStep) {
   expect_closed_form(fung("taylor-hood"));
 }
 
+// A load curve (`ramp: [[t, factor], ...]`): the top is pulled to stretch 5 at t = 0.5, let back
+// to stretch 1.8 at t = 1. The material is elastic, so every step, loading or unloading, lies on
+// the same closed form: λ = 1 + 4 f(t) (20 mm on the 5 mm cube) and σzz(λ), to the solver
+// tolerance.
+TEST(CubeTension, LoadCurveLoadsAndUnloadsAlongTheClosedForm) {
+  const auto dir = test::scratch_directory("cube-load-curve");
+  const int status =
+      test::run_plisse("run " + test::example("cube-tension-neo-hookean.yaml") + " -o " +
+                           dir.string() + " --set 'boundary[3].ramp=[[0, 0], [0.5, 1], [1, 0.2]]'",
+                       dir.string() + ".log");
+  ASSERT_EQ(status, 0) << "see " << dir.string() << ".log";
+  const HistoryTable h = read_history(dir / "history.csv");
+  const auto col = [&](const std::string& name) {
+    for (size_t i = 0; i < h.columns.size(); ++i)
+      if (h.columns[i] == name) return i;
+    ADD_FAILURE() << "no column " << name;
+    return size_t{0};
+  };
+  const auto f = [](double t) { return t <= 0.5 ? 2 * t : 1.0 - 1.6 * (t - 0.5); };
+  const double c1 = 0.25;
+  bool unloaded = false;
+  for (const auto& row : h.rows) {
+    const double t = row[col("time")], lambda = row[col("stretch")];
+    EXPECT_NEAR(lambda, 1.0 + 4.0 * f(t), 1e-9) << "t = " << t;
+    const double sigma = 2 * c1 * (lambda * lambda - 1 / lambda);
+    EXPECT_NEAR(row[col("cauchy_zz")], sigma, 1e-6 * sigma) << "t = " << t;
+    unloaded = unloaded || t > 0.5;
+  }
+  EXPECT_TRUE(unloaded);
+  EXPECT_NEAR(h.rows.back()[col("time")], 1.0, 1e-12);
+  EXPECT_NEAR(h.rows.back()[col("stretch")], 1.8, 1e-9);
+}
+
 }  // namespace
 }  // namespace plisse

@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "mesh/box_mesh.hpp"
+#include "physics/ramp.hpp"
 #include "physics/surface.hpp"
 
 namespace plisse {
@@ -19,6 +20,23 @@ double sum_of_areas(const std::vector<std::pair<int, double>>& areas) {
   double total = 0.0;
   for (const auto& entry : areas) total += entry.second;
   return total;
+}
+
+TEST(Ramp, LinearRampAndLoadCurveGiveTheirFactors) {
+  const Ramp linear{0.2, 0.6, {}};
+  EXPECT_EQ(linear.factor(0.1), 0.0);
+  EXPECT_NEAR(linear.factor(0.5), 0.75, 1e-15);
+  EXPECT_EQ(linear.factor(0.7), 1.0);
+  // Load, hold, unload below zero: joined linearly, the end values held outside.
+  Ramp curve;
+  curve.table = {{0.1, 0.5}, {0.3, 1.0}, {0.5, 1.0}, {0.9, -0.6}};
+  EXPECT_EQ(curve.factor(0.0), 0.5);
+  EXPECT_NEAR(curve.factor(0.2), 0.75, 1e-15);
+  EXPECT_EQ(curve.factor(0.3), 1.0);
+  EXPECT_EQ(curve.factor(0.4), 1.0);
+  EXPECT_NEAR(curve.factor(0.7), 0.2, 1e-15);
+  EXPECT_EQ(curve.factor(0.9), -0.6);
+  EXPECT_EQ(curve.factor(2.0), -0.6);
 }
 
 TEST(ConsistentNodalAreas, LinearFacesGiveAThirdOfEachTriangleToEachCorner) {
