@@ -12,6 +12,10 @@ namespace plisse {
 /// linearly, f_0 before the first and the last f after the last (loading, holding, unloading and
 /// cycles); start and end are then the first and last t_i.
 struct Ramp {
+  Ramp() = default;
+  /// The linear ramp from `start` to `end`.
+  Ramp(double start, double end) : start(start), end(end) {}
+
   double start = 0.0;                        ///< [s]
   double end = 1.0;                          ///< [s]; a case's default is its solver.end_time
   std::vector<std::array<double, 2>> table;  ///< (t [s], factor) points; empty: linear

@@ -97,9 +97,9 @@ TEST(DieGeometry, SymmetricPlanesAreThoseWhoseReflectionLeavesEveryGapUnchanged)
       {DieShape::plane, {0, 11, 0}, {0, -1, 0}, {0, -3, 0}},  // a punch along -y
       {DieShape::plane, {2, 1, 0}, tilted, {1, 0, 0}},        // a tilted plane
       {DieShape::plane, {0, 0, 3}, {0, 0, 1}, {0, 0, 0}},
-      {DieShape::sphere, {0, 12, 0}, {}, {0, -2, 0}},  // centred on x = 0 and z = 0
-      {DieShape::sphere, {0, 12, 0}, {}, {1, -2, 0}},  // moving off x = 0
-      {DieShape::sphere, {3, 0, -1}, {}, {0, 0, 0}},
+      {DieShape::sphere, {0, 12, 0}, {0, 1, 0}, {0, -2, 0}},  // centred on x = 0 and z = 0
+      {DieShape::sphere, {0, 12, 0}, {0, 1, 0}, {1, -2, 0}},  // moving off x = 0
+      {DieShape::sphere, {3, 0, -1}, {0, 1, 0}, {0, 0, 0}},
       {DieShape::cylinder, {0, 4, 0}, {0, 0, 1}, {0, -1, 0}},  // axis along z, in x = 0
       {DieShape::cylinder, {2, 4, 0}, {0, 0, 1}, {0, 0, 0}},   // axis along z, off x = 0
       {DieShape::cylinder, {0, 4, 1}, {1, 0, 0}, {0, 0, 0}},   // axis along x, off z = 0

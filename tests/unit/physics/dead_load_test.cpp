@@ -23,7 +23,7 @@ double sum_of_areas(const std::vector<std::pair<int, double>>& areas) {
 }
 
 TEST(Ramp, LinearRampAndLoadCurveGiveTheirFactors) {
-  const Ramp linear{0.2, 0.6, {}};
+  const Ramp linear{0.2, 0.6};
   EXPECT_EQ(linear.factor(0.1), 0.0);
   EXPECT_NEAR(linear.factor(0.5), 0.75, 1e-15);
   EXPECT_EQ(linear.factor(0.7), 1.0);
