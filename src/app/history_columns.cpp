@@ -147,7 +147,7 @@ void HistoryColumns::add_probes(const std::vector<Probe>& probes, const Mesh& me
   };
   std::vector<Located> located;
   std::vector<std::string> names;
-  bool needs_F = false, needs_thickness = false;
+  bool needs_F = false, needs_thickness = false, needs_pressure = false;
   for (const Probe& probe : probes) {
     const MeshPoint at = locate_point(mesh, probe.point);
     probe_points_.push_back({probe.name, probe.point, at});
@@ -157,14 +157,16 @@ void HistoryColumns::add_probes(const std::vector<Probe>& probes, const Mesh& me
       names.insert(names.end(), columns.begin(), columns.end());
       needs_F |= f == ProbeField::principal_stretches;
       needs_thickness |= f == ProbeField::thickness;
+      needs_pressure |= f == ProbeField::pressure;
     }
   }
   FE_CHECK(!needs_thickness || wall_, "history: a probe of the thickness needs a wall");
-  add(std::move(names), [located = std::move(located), needs_F, needs_thickness, &mesh,
-                         wall = wall_](const StepRecord& r, std::vector<double>& row) {
+  add(std::move(names), [located = std::move(located), needs_F, needs_thickness, needs_pressure,
+                         &mesh, wall = wall_](const StepRecord& r, std::vector<double>& row) {
     // What several probes share, computed once a row.
     const std::vector<Vec3d> u = nodal_displacements(r.model);
-    const std::vector<double> p = r.model.nodal_pressures();
+    const std::vector<double> p =
+        needs_pressure ? r.model.nodal_pressures() : std::vector<double>{};
     const std::vector<Mat3d> F =
         needs_F ? r.model.element_deformation_gradients() : std::vector<Mat3d>{};
     const std::vector<double> thickness = needs_thickness ? (*wall)(u) : std::vector<double>{};
