@@ -82,9 +82,10 @@ inline std::size_t history_rows(const std::filesystem::path& dir) {
   return lines > 0 ? lines - 1 : 0;
 }
 
-/// Waits (at most a minute) until dir/history.csv has `rows` rows; false if it never does.
-inline bool wait_for_history_rows(const std::filesystem::path& dir, std::size_t rows) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+/// Waits (at most `limit`) until dir/history.csv has `rows` rows; false if it never does.
+inline bool wait_for_history_rows(const std::filesystem::path& dir, std::size_t rows,
+                                  std::chrono::seconds limit = std::chrono::seconds(60)) {
+  const auto deadline = std::chrono::steady_clock::now() + limit;
   while (history_rows(dir) < rows && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   return history_rows(dir) >= rows;
