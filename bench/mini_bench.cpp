@@ -18,6 +18,7 @@
 #include "material/fung.hpp"
 #include "material/mooney_rivlin.hpp"
 #include "material/neo_hookean.hpp"
+#include "material/ogden.hpp"
 
 namespace plisse::mini {
 namespace {
@@ -124,6 +125,10 @@ BENCHMARK_CAPTURE(MiniTangent, mooney_rivlin, MooneyRivlin{0.7 * kC1, 0.3 * kC1}
 BENCHMARK_CAPTURE(MiniTangent, fung, Fung{2 * kC1, 1.0}, kC1);
 BENCHMARK_CAPTURE(MaterialEvaluate, neo_hookean, NeoHookean{kC1});
 BENCHMARK_CAPTURE(MaterialEvaluate, mooney_rivlin, MooneyRivlin{0.7 * kC1, 0.3 * kC1});
+// Ogden: a spectral decomposition of C and three terms of powers per point.
+const Ogden kOgden{2 * 0.4 * kC1, 1.3, 2 * 0.3 * kC1, 5.0, -2 * 0.3 * kC1, -2.0};
+BENCHMARK_CAPTURE(MiniTangent, ogden, kOgden, kC1);
+BENCHMARK_CAPTURE(MaterialEvaluate, ogden, kOgden);
 
 }  // namespace
 }  // namespace plisse::mini

@@ -12,7 +12,8 @@ namespace {
 
 std::string materials_text() {
   std::ostringstream out;
-  out << "Material models (isochoric energy W(Ī1, Ī2); units MPa). Use in a case file as\n"
+  out << "Material models (isochoric energy W of Ī1, Ī2 or of the isochoric principal stretches;\n"
+      << "units MPa). Use in a case file as\n"
       << "  material: {model: NAME, KEY: VALUE, ...}\n";
   for (const auto& m : material_models()) {
     out << '\n'

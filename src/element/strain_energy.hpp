@@ -23,7 +23,7 @@
 #include "element/mini_integrals.hpp"
 #include "element/mini_layout.hpp"
 #include "element/tet_geometry.hpp"
-#include "material/isochoric_invariants.hpp"
+#include "material/energy_density.hpp"
 #include "material/registry.hpp"
 
 namespace plisse::mini {
@@ -35,7 +35,7 @@ struct StrainEnergy {
   double total() const { return isochoric + volumetric; }
 };
 
-/// (SE1) for any material with `invariant_derivatives(Ī1, Ī2).W` (every model of the registry).
+/// (SE1) for any model of the registry (W from compute_energy_density).
 ///   x_e: nodal displacements [mm] and pressures [MPa] (mini_layout.hpp); bubble: the converged
 ///   bubble of the state [mm] (as returned by assemble_mini); inverse_bulk_modulus: 1/κ [1/MPa],
 ///   0 for exact incompressibility.
@@ -49,8 +49,7 @@ StrainEnergy compute_strain_energy(const TetGeometry& g, const ElemVec& x_e, con
   for (int q = 0; q < kQuadPoints; ++q) {
     const PointKinematics k = compute_point_kinematics(g, s, bubble, q);
     FE_CHECK(k.J > 0.0, "strain energy: det F = " << k.J << " <= 0 at quadrature point " << q);
-    const IsochoricKinematics iso = compute_isochoric_kinematics(k.F);
-    e.isochoric += g.weight[q] * mat.invariant_derivatives(iso.I1bar, iso.I2bar).W;
+    e.isochoric += g.weight[q] * compute_energy_density(mat, k.F);
     // p_h² is quadratic: the degree-2 rule integrates it exactly.
     e.volumetric += g.weight[q] * 0.5 * inverse_bulk_modulus * k.p * k.p;
   }

@@ -18,8 +18,8 @@
 #include "element/element_fields.hpp"
 #include "element/kinematics.hpp"
 #include "element/taylor_hood_geometry.hpp"
+#include "material/energy_density.hpp"
 #include "material/inadmissible_deformation.hpp"
-#include "material/isochoric_invariants.hpp"
 #include "material/point_response.hpp"
 
 namespace plisse::taylor_hood {
@@ -157,7 +157,7 @@ ElementFields compute_element_fields(const Geometry& g, const ElemVec& x_e, cons
 }
 
 /// Stored energy ∫ W dV + 1/(2κ) ∫ p_h² dV of the element [mJ] (the MINI element's SE1), for any
-/// material with `invariant_derivatives(Ī1, Ī2).W`. Throws plisse::Error when det F <= 0 at a
+/// model of the registry (W from compute_energy_density). Throws plisse::Error when det F <= 0 at a
 /// point.
 template <class Material>
 double compute_strain_energy(const Geometry& g, const ElemVec& x_e, const Material& mat,
@@ -168,9 +168,8 @@ double compute_strain_energy(const Geometry& g, const ElemVec& x_e, const Materi
   for (int q = 0; q < kQuadPoints; ++q) {
     const PointKinematics k = point_kinematics(g, u, p, q);
     FE_CHECK(k.J > 0.0, "strain energy: det F = " << k.J << " <= 0 at quadrature point " << q);
-    const IsochoricKinematics iso = compute_isochoric_kinematics(k.F);
-    energy += g.weight[q] * (mat.invariant_derivatives(iso.I1bar, iso.I2bar).W +
-                             0.5 * inverse_bulk_modulus * k.p * k.p);
+    energy +=
+        g.weight[q] * (compute_energy_density(mat, k.F) + 0.5 * inverse_bulk_modulus * k.p * k.p);
   }
   return energy;
 }

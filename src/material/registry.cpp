@@ -116,6 +116,38 @@ std::vector<MaterialModelInfo> register_materials() {
        param("lambda_m", &ArrudaBoyce::lambda_m,
              Range{1.0, std::numeric_limits<double>::infinity(), true, true},  // > 1
              "-", "locking stretch of the chains")}));
+  // Ogden's condition per term: μ_p α_p > 0, or μ_p = α_p = 0 for an absent term.
+  const auto ogden_term_rule = [](const std::string& n, bool optional) {
+    const std::string mu = "mu" + n, alpha = "alpha" + n;
+    return CrossRule{alpha,
+                     mu + " " + alpha + " must be > 0" +
+                         (optional ? " (Ogden's condition), or both 0 to leave term " + n + " out"
+                                   : " (Ogden's condition)"),
+                     {mu, alpha},
+                     [mu, alpha, optional](const MaterialValues& v) {
+                       const double m = v.at(mu), a = v.at(alpha);
+                       return m * a > 0.0 || (optional && m == 0.0 && a == 0.0);
+                     }};
+  };
+  models.push_back(add<Ogden>(
+      {"ogden",
+       "W = Σ_p mu_p / alpha_p (λ̄1^alpha_p + λ̄2^alpha_p + λ̄3^alpha_p - 3), p = 1..3, "
+       "λ̄_a = J^(-1/3) λ_a",
+       "mu = (mu1 alpha1 + mu2 alpha2 + mu3 alpha3) / 2",
+       "Ogden, Proc. R. Soc. Lond. A 326 (1972) 565",
+       "A function of the principal stretches, not of Ī1 and Ī2: stress and tangent come from the "
+       "principal directions of C, exact where stretches coincide (docs/theory/materials.md, "
+       "O1-O7). Terms 2 and 3 are optional. alpha1 = 2 alone is neo-Hookean with c1 = mu1/2; "
+       "alpha1 = 2 with alpha2 = -2 is Mooney-Rivlin with c1 = mu1/2, c2 = -mu2/2. Ogden's 1972 "
+       "fit to Treloar's rubber: mu = 0.618, 0.00118, -0.00981 MPa with alpha = 1.3, 5, -2 "
+       "(examples/balloon-ogden.yaml)."},
+      {param("mu1", &Ogden::mu1, Range::any(), "MPa", "coefficient of term 1"),
+       param("alpha1", &Ogden::alpha1, Range::any(), "-", "exponent of term 1"),
+       param("mu2", &Ogden::mu2, Range::any(), "MPa", "coefficient of term 2", 0.0),
+       param("alpha2", &Ogden::alpha2, Range::any(), "-", "exponent of term 2", 0.0),
+       param("mu3", &Ogden::mu3, Range::any(), "MPa", "coefficient of term 3", 0.0),
+       param("alpha3", &Ogden::alpha3, Range::any(), "-", "exponent of term 3", 0.0)},
+      {ogden_term_rule("1", false), ogden_term_rule("2", true), ogden_term_rule("3", true)}));
   return models;
 }
 
@@ -200,6 +232,18 @@ AnyMaterial make_material(const std::string& model, const MaterialValues& values
   return info.make(complete);
 }
 
+AnyMaterial make_material_unchecked(const std::string& model, const MaterialValues& values) {
+  const MaterialModelInfo* info = find_material_model(model);
+  if (info == nullptr) throw Error("unknown material model '" + model + "'");
+  MaterialValues complete = values;
+  for (const auto& p : info->params) {
+    if (p.default_value) complete.emplace(p.name, *p.default_value);
+    if (complete.find(p.name) == complete.end())
+      throw Error("material model '" + model + "': parameter " + p.name + " missing");
+  }
+  return info->make(complete);
+}
+
 double shear_modulus(const AnyMaterial& material) {
   return std::visit([](const auto& m) { return m.shear_modulus(); }, material);
 }
@@ -219,8 +263,12 @@ std::string materials_markdown() {
      << "     a unit test fails when this file and the registry disagree. -->\n\n"
      << "Isotropic hyperelastic models for incompressible or nearly incompressible membranes. "
         "Each\n"
-     << "model gives the isochoric part of the strain energy W(Ī1, Ī2), with Ī1 = J^(-2/3) I1 and\n"
-     << "Ī2 = J^(-4/3) I2 the invariants of C = FᵀF with the volume change removed; the pressure\n"
+     << "model gives the isochoric part of the strain energy: W(Ī1, Ī2), with Ī1 = J^(-2/3) I1 "
+        "and\n"
+     << "Ī2 = J^(-4/3) I2 the invariants of C = FᵀF with the volume change removed, or (Ogden) "
+        "W of\n"
+     << "the principal stretches with the volume change removed, λ̄_a = J^(-1/3) λ_a; the "
+        "pressure\n"
      << "term -p J F⁻ᵀ belongs to the mixed element, not to the material. Stresses and tangents "
         "are\n"
      << "derived from W in shared code: see [theory/materials.md](theory/materials.md).\n\n"

@@ -17,12 +17,13 @@
 #include "material/gent.hpp"
 #include "material/mooney_rivlin.hpp"
 #include "material/neo_hookean.hpp"
+#include "material/ogden.hpp"
 #include "material/yeoh.hpp"
 
 namespace plisse {
 
 /// Every model; element code picks the alternative once per element block with std::visit.
-using AnyMaterial = std::variant<NeoHookean, MooneyRivlin, Fung, Yeoh, Gent, ArrudaBoyce>;
+using AnyMaterial = std::variant<NeoHookean, MooneyRivlin, Fung, Yeoh, Gent, ArrudaBoyce, Ogden>;
 
 /// Parameter values by input key, e.g. {"c1": 0.0033}.
 using MaterialValues = std::map<std::string, double>;
@@ -72,6 +73,11 @@ std::vector<ParamViolation> validate_material(const std::string& model,
 /// Precondition: validate_material(model, values) is empty; throws plisse::Error listing the
 /// violations otherwise.
 AnyMaterial make_material(const std::string& model, const MaterialValues& values);
+
+/// The model with the given parameters without checking the registry's ranges and rules (omitted
+/// optional parameters take their defaults): for a fitted set that breaks a rule, to draw it.
+/// Throws plisse::Error for an unknown model or a missing required parameter.
+AnyMaterial make_material_unchecked(const std::string& model, const MaterialValues& values);
 
 /// Small-strain shear modulus of any model [MPa] (materials.md, M13).
 double shear_modulus(const AnyMaterial& material);

@@ -148,6 +148,26 @@ const CubeCase fung(const std::string& element) {
           [=](double l) { return mu / (2 * gamma) * std::expm1(gamma * (l * l + 2 / l - 3)); }};
 }
 
+/// Ogden with its fit to Treloar's rubber (Ogden 1972, section 4), a model of the principal
+/// stretches: σzz = Σ μ_p (λ^α_p - λ^(-α_p/2)) (eq. 4.4 with the lateral stresses zero),
+/// W = Σ μ_p / α_p (λ^α_p + 2 λ^(-α_p/2) - 3).
+const CubeCase ogden(const std::string& element) {
+  static constexpr double mu[3] = {0.618, 0.00118, -0.00981}, alpha[3] = {1.3, 5.0, -2.0};
+  return {"cube-tension-ogden.yaml", element,
+          [=](double l) {
+            double s = 0.0;
+            for (int p = 0; p < 3; ++p)
+              s += mu[p] * (std::pow(l, alpha[p]) - std::pow(l, -alpha[p] / 2));
+            return s;
+          },
+          [=](double l) {
+            double W = 0.0;
+            for (int p = 0; p < 3; ++p)
+              W += mu[p] / alpha[p] * (std::pow(l, alpha[p]) + 2 * std::pow(l, -alpha[p] / 2) - 3);
+            return W;
+          }};
+}
+
 TEST(CubeTension, NeoHookeanMatchesClosedFormAtEveryStep) {
   expect_closed_form(neo_hookean("mini"));
 }
@@ -164,6 +184,10 @@ TEST(CubeTension, TaylorHoodMooneyRivlinMatchesPaperEquation7AtEveryStep) {
 }
 TEST(CubeTension, TaylorHoodFungMatchesClosedFormAtEveryStep) {
   expect_closed_form(fung("taylor-hood"));
+}
+TEST(CubeTension, OgdenMatchesClosedFormAtEveryStep) { expect_closed_form(ogden("mini")); }
+TEST(CubeTension, TaylorHoodOgdenMatchesClosedFormAtEveryStep) {
+  expect_closed_form(ogden("taylor-hood"));
 }
 
 // A load curve (`ramp: [[t, factor], ...]`): the top is pulled to stretch 5 at t = 0.5, let back

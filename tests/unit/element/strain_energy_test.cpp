@@ -57,6 +57,11 @@ const std::map<std::string, ModelCase>& model_cases() {
                  (std::pow(I1, i) - std::pow(3.0, i));
           return W;
         }}},
+      // Ogden with α = 2 and -2 is Mooney-Rivlin, c1 = μ1/2, c2 = -μ2/2 (Σ λ̄⁻² = Ī2): its energy
+      // through the principal stretches against the invariants.
+      {"ogden",
+       {{{"mu1", 0.3}, {"alpha1", 2.0}, {"mu2", -0.1}, {"alpha2", -2.0}},
+        [](double I1, double I2) { return 0.15 * (I1 - 3.0) + 0.05 * (I2 - 3.0); }}},
   };
   return cases;
 }

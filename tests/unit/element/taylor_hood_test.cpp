@@ -63,9 +63,19 @@ ElemVec random_state(unsigned seed, double size, double u_fraction) {
 /// Every registry model, with moduli of the order of kC1.
 std::vector<AnyMaterial> every_material() {
   const std::map<std::string, MaterialValues> values = {
-      {"neo-hookean", {{"c1", 0.5}}},          {"mooney-rivlin", {{"c1", 0.35}, {"c2", 0.15}}},
-      {"fung", {{"mu", 1.0}, {"gamma", 1.5}}}, {"yeoh", {{"c1", 0.5}, {"c2", -0.05}, {"c3", 0.02}}},
-      {"gent", {{"mu", 1.0}, {"jm", 20.0}}},   {"arruda-boyce", {{"mu", 1.0}, {"lambda_m", 3.0}}}};
+      {"neo-hookean", {{"c1", 0.5}}},
+      {"mooney-rivlin", {{"c1", 0.35}, {"c2", 0.15}}},
+      {"fung", {{"mu", 1.0}, {"gamma", 1.5}}},
+      {"yeoh", {{"c1", 0.5}, {"c2", -0.05}, {"c3", 0.02}}},
+      {"gent", {{"mu", 1.0}, {"jm", 20.0}}},
+      {"arruda-boyce", {{"mu", 1.0}, {"lambda_m", 3.0}}},
+      {"ogden",
+       {{"mu1", 0.6},
+        {"alpha1", 1.3},
+        {"mu2", 0.01},
+        {"alpha2", 5.0},
+        {"mu3", -0.02},
+        {"alpha3", -2.0}}}};
   std::vector<AnyMaterial> out;
   for (const MaterialModelInfo& info : material_models()) {
     EXPECT_EQ(values.count(info.name), 1u) << "no parameters for " << info.name;

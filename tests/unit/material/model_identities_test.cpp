@@ -64,6 +64,10 @@ ArrudaBoyce sample() {
   return {0.9, 3.0};
 }
 template <>
+Ogden sample() {  // Ogden's 1972 fit to Treloar's data (MPa): three terms, one with negative α
+  return {0.618, 1.3, 0.00118, 5.0, -0.00981, -2.0};
+}
+template <>
 CoupledTestModel sample() {
   return {};
 }
@@ -77,8 +81,8 @@ class ModelIdentities : public ::testing::Test {
   double W(const Mat3d& F) const { return model.evaluate(F).W; }
   Mat3d P(const Mat3d& F) const { return model.evaluate(F).P; }
 };
-using Models =
-    ::testing::Types<NeoHookean, MooneyRivlin, Fung, Yeoh, Gent, ArrudaBoyce, CoupledTestModel>;
+using Models = ::testing::Types<NeoHookean, MooneyRivlin, Fung, Yeoh, Gent, ArrudaBoyce, Ogden,
+                                CoupledTestModel>;
 TYPED_TEST_SUITE(ModelIdentities, Models);
 
 TYPED_TEST(ModelIdentities, StressMatchesCentralDifferencesOfEnergy) {
@@ -136,12 +140,14 @@ TYPED_TEST(ModelIdentities, DerivativesConvergeAtSecondOrder) {
   }
 }
 
-TYPED_TEST(ModelIdentities, DualNumbersGiveTheSameEnergyStressAndTangent) {
+/// P and A of the model against dual-number derivatives of its templated energy.
+template <class M>
+void dual_number_check(const M& model) {
   using Dual = Eigen::AutoDiffScalar<Vec9d>;
   using Inner = Eigen::AutoDiffScalar<Eigen::Matrix<double, 9, 1>>;
   using Dual2 = Eigen::AutoDiffScalar<Eigen::Matrix<Inner, 9, 1>>;  // dual of dual: the Hessian
   for (const Mat3d& F : test::test_deformations()) {
-    const PointResponse r = this->model.evaluate(F);
+    const PointResponse r = model.evaluate(F);
     Mat3<Dual> Fd;
     Mat3<Dual2> Fdd;
     for (int k = 0; k < 9; ++k) {
@@ -150,16 +156,26 @@ TYPED_TEST(ModelIdentities, DualNumbersGiveTheSameEnergyStressAndTangent) {
       Fdd.data()[k].derivatives() = Eigen::Matrix<Inner, 9, 1>::Unit(9, k);
       for (int m = 0; m < 9; ++m) Fdd.data()[k].derivatives()(m).derivatives().setZero();
     }
-    const Dual W = this->model.energy(Fd);
+    const Dual W = model.energy(Fd);
     EXPECT_NEAR(W.value(), r.W, 1e-13 * std::max(1.0, std::abs(r.W)));
     const Vec9d P_vec = Eigen::Map<const Vec9d>(r.P.data());
     EXPECT_LT((W.derivatives() - P_vec).cwiseAbs().maxCoeff(), 1e-12 * P_vec.cwiseAbs().maxCoeff())
         << "F =\n"
         << F;
-    const Dual2 W2 = this->model.energy(Fdd);
+    const Dual2 W2 = model.energy(Fdd);
     Mat9d A_ad;
     for (int k = 0; k < 9; ++k) A_ad.col(k) = W2.derivatives()(k).derivatives();
     EXPECT_LT(max_abs(A_ad - r.A), 1e-11 * max_abs(r.A)) << "F =\n" << F;
+  }
+}
+
+TYPED_TEST(ModelIdentities, DualNumbersGiveTheSameEnergyStressAndTangent) {
+  if constexpr (!requires(const TypeParam& m, const Mat3d& F) { m.energy(F); }) {
+    // Ogden: its stretches are eigenvalues (ogden.hpp); ogden_test.cpp checks it against the
+    // invariant models it contains instead.
+    GTEST_SKIP() << "no dual-number energy for a model of the principal stretches";
+  } else {
+    dual_number_check(this->model);
   }
 }
 
