@@ -1,20 +1,14 @@
 /// `plisse plot DIR [-o OUT]`: PNG figures of a run directory (docs/output.md, "Figures"), drawn
 /// by scripts/plot.py with Debian's python3-matplotlib, so that a run on a cluster can be looked
 /// at later without ParaView.
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <array>
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/python_script.hpp"
 #include "core/error.hpp"
-
-extern char** environ;
 
 namespace plisse::app {
 namespace {
@@ -26,14 +20,6 @@ struct PlotOptions {
   std::string output;  ///< default: DIR/plots
 };
 
-/// This executable's path, for the script to ask it for the output reference.
-std::string own_executable() {
-  std::array<char, 4096> path{};
-  const ssize_t n = readlink("/proc/self/exe", path.data(), path.size() - 1);
-  FE_CHECK(n > 0, "plisse plot: cannot find the plisse executable (/proc/self/exe)");
-  return std::string(path.data(), static_cast<std::size_t>(n));
-}
-
 void plot(const PlotOptions& o) {
   const fs::path dir = o.run_directory;
   const InputPlace place{dir.string(), 0, 0, "DIR"};
@@ -41,26 +27,11 @@ void plot(const PlotOptions& o) {
   if (!fs::is_directory(dir, ec)) throw InputError(place, "is not a run directory");
   if (!fs::is_regular_file(dir / "history.csv", ec))
     throw InputError(place, "holds no history.csv: not a plisse run directory, or no step done");
-  const fs::path script = fs::path(PLISSE_SCRIPTS_DIR) / "plot.py";
-  const std::string python = "/usr/bin/python3";
-  if (access(python.c_str(), X_OK) != 0 || !fs::is_regular_file(script, ec))
-    throw Error("plisse plot needs " + python + " with python3-matplotlib and python3-meshio " +
-                "(Debian packages) and " + script.string());
   const std::string out = o.output.empty() ? (dir / "plots").string() : o.output;
-  std::vector<std::string> args = {python, script.string(), dir.string(), out, own_executable()};
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t child = 0;
-  const int spawned = posix_spawn(&child, python.c_str(), nullptr, nullptr, argv.data(), environ);
-  FE_CHECK(spawned == 0, "plisse plot: cannot start " << python << " (error " << spawned << ")");
-  int status = 0;
-  while (waitpid(child, &status, 0) < 0)
-    FE_CHECK(errno == EINTR, "plisse plot: waiting for the figures failed");
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 2)
-    throw InputError(place, "is not a run directory plot.py can read (see above)");
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw Error("plisse plot: drawing the figures failed (see the messages above)");
+  const int status =
+      run_python_script("plisse plot", "plot.py", {dir.string(), out, own_executable()});
+  if (status == 2) throw InputError(place, "is not a run directory plot.py can read (see above)");
+  if (status != 0) throw Error("plisse plot: drawing the figures failed (see the messages above)");
 }
 
 }  // namespace

@@ -13,6 +13,7 @@ void add_case_keys_command(CLI::App& app);
 void add_outputs_command(CLI::App& app);
 void add_plot_command(CLI::App& app);
 void add_wrinkles_command(CLI::App& app);
+void add_fit_command(CLI::App& app);
 
 /// The process's own command line (set by main), for commands that start it again (run -n N).
 struct CommandLine {

@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
   plisse::app::add_outputs_command(app);
   plisse::app::add_plot_command(app);
   plisse::app::add_wrinkles_command(app);
+  plisse::app::add_fit_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
