@@ -78,7 +78,7 @@ std::string report(const FitCommandOptions& o, const std::vector<TestPoint>& dat
   std::snprintf(all, sizeof all, "  %-12s  %6zu  %s\n", "all", data.size(),
                 percent(fit.rms).c_str());
   out << all;
-  out << "\nstable (Drucker: the nominal stress rises with the stretch) for stretches:\n";
+  out << "\nstable (Drucker: dτ · dε > 0 for every isochoric increment) for stretches:\n";
   for (const StabilityRange& s : fit.stability)
     out << "  " << test_mode_name(s.mode) << ": " << range_text(s) << '\n';
   if (fit.broken.empty()) {

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <sstream>
 
 #include "analysis/point_location.hpp"
 #include "app/model_builder.hpp"
@@ -256,11 +257,21 @@ void solve_and_write(PreparedRun run) {
              " at t = " + std::to_string(checkpoint->time));
   else
     recorder.record_initial_state();
+  if (!recorder.material_ranges().empty()) {
+    std::ostringstream line;
+    line.precision(3);
+    line << "material: stable (Drucker) for stretches";
+    for (const StabilityRange& r : recorder.material_ranges())
+      line << ' ' << test_mode_name(r.mode) << ' ' << r.lower << " to " << r.upper;
+    line << "; every step checks each element, and the log warns at the first that is not";
+    log.info(line.str());
+  }
 
   WallClock::time_point last_checkpoint = WallClock::now();
   const WallClock::time_point stepping_start = WallClock::now();
   const auto on_step = [&](const StepInfo& info) {
     recorder.record(info);
+    if (const std::string w = recorder.take_material_warning(); !w.empty()) log.warn(w);
     const auto& wrinkles = recorder.last_wrinkles();
     log.info(progress_line(info, wrinkles ? &wrinkles->rings : nullptr,
                            {seconds_since(run.start), seconds_since(stepping_start),

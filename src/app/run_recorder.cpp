@@ -2,10 +2,15 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <limits>
+#include <sstream>
+#include <utility>
 
 #include "app/output_reference.hpp"
 #include "core/wall_clock.hpp"
+#include "element/element_fields.hpp"
 #include "io/json_file.hpp"
 #include "io/pvtu_writer.hpp"
 #include "io/vtu_writer.hpp"
@@ -120,6 +125,14 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
       root_(PetscSession::rank() == 0),
       columns_(c, model, meter),
       previous_state_(model.state()) {
+  const AnyMaterial material = make_material(c.material.model, c.material.params);
+  const std::vector<StabilityRange> ranges = stability_ranges(material);
+  for (const StabilityRange& r : ranges) {
+    if (r.lower > kStabilityScanMin || r.upper < kStabilityScanMax) {
+      material_ranges_ = ranges;
+      monitored_material_ = material;
+    }
+  }
   // Rank 0 writes the files, every rank checks them on --resume: a failure is agreed by all.
   on_every_rank_alike([&] {
     std::vector<PvdEntry> pvd_entries;
@@ -181,12 +194,40 @@ void RunRecorder::record(const StepInfo& info) {
                               {"perturbation_mm", info.perturbation_mm},
                               {"file", step_name(model_, info.step)}});
   }
+  if (monitored_material_) check_material_stability(info.step);
   if (info.step % case_.output.every == 0 || info.load_factor >= 1.0 || !info.modes.empty())
     write_step_files(info, previous_state_);
   last_step_start_ = std::move(previous_state_);
   previous_state_ = model_.state();
   last_step_ = info;
 }
+
+void RunRecorder::check_material_stability(int step) {
+  // Every rank checks every element alike (element_deformation_gradients covers the whole mesh).
+  const std::vector<Mat3d> F = model_.element_deformation_gradients();
+  int unstable = 0, first = -1;
+  Vec3d first_stretches = Vec3d::Ones();
+  for (std::size_t e = 0; e < F.size(); ++e) {
+    const Vec3d l = principal_stretches(F[e]);
+    if (drucker_stable(*monitored_material_, l)) continue;
+    if (unstable++ == 0) first = static_cast<int>(e), first_stretches = l;
+  }
+  unstable_elements_ = unstable;
+  most_unstable_elements_ = std::max(most_unstable_elements_, unstable);
+  if (unstable == 0 || first_unstable_step_ >= 0) return;
+  first_unstable_step_ = step;
+  std::ostringstream out;
+  out.precision(4);
+  out << "step " << step << ": the material is not stable (Drucker) in " << unstable
+      << (unstable == 1 ? " element" : " elements") << ", first element " << first
+      << " with principal stretches " << first_stretches[0] << ", " << first_stretches[1] << ", "
+      << first_stretches[2]
+      << ": from here on a softening of the material itself may look like wrinkles or buckling "
+         "(summary.json material_stability; the stable ranges are in the log's material line)";
+  material_warning_ = out.str();
+}
+
+std::string RunRecorder::take_material_warning() { return std::exchange(material_warning_, ""); }
 
 void RunRecorder::write_step_files(const StepInfo& info, const std::vector<double>& step_start) {
   const auto t_out = WallClock::now();
@@ -296,6 +337,17 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
                             {"eigenmode_seconds", stepper_.eigenmode_seconds()},
                             {"stable_at_end", last_step_.stable},
                             {"instabilities", instabilities_}};
+  }
+  if (monitored_material_) {
+    nlohmann::json ranges;
+    for (const StabilityRange& r : material_ranges_)
+      ranges[test_mode_name(r.mode)] = {r.lower, r.upper};
+    summary["material_stability"] = {
+        {"stable_stretches", ranges},
+        {"first_unstable_step",
+         first_unstable_step_ >= 0 ? nlohmann::json(first_unstable_step_) : nlohmann::json()},
+        {"unstable_elements", unstable_elements_},
+        {"most_unstable_elements", most_unstable_elements_}};
   }
   if (last_wrinkles_) summary["wrinkles"] = wrinkles_json(c, *last_wrinkles_);
   for (const HistoryColumns::ProbePoint& p : columns_.probe_points()) {

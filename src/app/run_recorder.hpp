@@ -19,6 +19,7 @@
 #include "io/history_writer.hpp"
 #include "io/pvd_writer.hpp"
 #include "io/run_directory.hpp"
+#include "material/material_fit.hpp"
 #include "solver/load_stepper.hpp"
 #include "solver/mixed_model.hpp"
 
@@ -69,10 +70,21 @@ class RunRecorder {
   /// Time spent computing and writing output so far [s].
   double output_seconds() const { return output_seconds_; }
 
+  /// The stretch ranges of the uniaxial, equibiaxial and planar tests over which the material is
+  /// stable in Drucker's sense (material/material_fit.hpp), when one of them ends inside [0.1, 10];
+  /// empty for a material stable over all of it. Then every recorded step checks Drucker's
+  /// condition at each element's state (its mean deformation's principal stretches).
+  const std::vector<StabilityRange>& material_ranges() const { return material_ranges_; }
+  /// The warning of the first recorded step with an element where the material is not stable,
+  /// once; empty otherwise.
+  std::string take_material_warning();
+
  private:
   /// The VTU file of `info`'s step, whose state the model holds; `step_start` is the state at the
   /// start of that step (for the step velocity).
   void write_step_files(const StepInfo& info, const std::vector<double>& step_start);
+  /// Drucker's condition at every element's state; the warning at the first failure.
+  void check_material_stability(int step);
   nlohmann::json summary(const SteppingResult& result, const StartTimes& times, double memory_total,
                          double memory_largest) const;
 
@@ -96,6 +108,12 @@ class RunRecorder {
   std::optional<WrinkleMeter::Result> last_wrinkles_;
   nlohmann::json instabilities_ = nlohmann::json::array();
   StepInfo last_step_;
+  std::vector<StabilityRange> material_ranges_;  ///< empty: the material is not monitored
+  std::optional<AnyMaterial> monitored_material_;
+  int first_unstable_step_ = -1;    ///< the first recorded step with an unstable element
+  int unstable_elements_ = 0;       ///< at the last recorded step
+  int most_unstable_elements_ = 0;  ///< over the recorded steps
+  std::string material_warning_;
   int last_written_ = -1;
   int accepted_newton_iterations_ = 0;  ///< over the steps recorded by this run
   double output_seconds_ = 0.0;

@@ -1,12 +1,14 @@
 #include "material/material_fit.hpp"
 
 #include <Eigen/Core>
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <unsupported/Eigen/NumericalDiff>
+#include <variant>
 
 #include "core/error.hpp"
 #include "material/inadmissible_deformation.hpp"
@@ -211,33 +213,54 @@ FitResult fit_material(const std::vector<TestPoint>& data, const FitOptions& opt
   return result;
 }
 
-std::vector<StabilityRange> stability_ranges(const AnyMaterial& material) {
-  // dt/dλ by central differences on a geometric grid of 0.5 % steps from λ = 1 outwards; the
-  // first stretch where it is not positive (or the model is undefined) bounds the range.
-  const auto rising = [&](TestMode mode, double l) {
-    const double h = 1e-6 * l;
-    try {
-      const double slope =
-          (nominal_stress(material, mode, l + h) - nominal_stress(material, mode, l - h)) / (2 * h);
-      return slope > 0.0;
-    } catch (const InadmissibleDeformation&) {
-      return false;
-    }
+bool drucker_stable(const AnyMaterial& material, const Vec3d& stretches) {
+  const double J = stretches.prod();
+  if (!(J > 0.0)) return false;
+  const Vec3d eps = (stretches / std::cbrt(J)).array().log();
+  // g_i = τ_i - τ_3 at ε1, ε2 (ε3 = -ε1 - ε2): the isochoric Kirchhoff stress σ̄ = P Fᵀ at J = 1.
+  const auto g = [&](double e1, double e2) {
+    const Mat3d F = Vec3d(std::exp(e1), std::exp(e2), std::exp(-e1 - e2)).asDiagonal();
+    const Mat3d P = std::visit([&](const auto& m) { return m.evaluate(F).P; }, material);
+    const Mat3d tau = P * F.transpose();
+    return Eigen::Vector2d(tau(0, 0) - tau(2, 2), tau(1, 1) - tau(2, 2));
   };
+  const double h = 1e-4;
+  Eigen::Matrix2d K;
+  try {
+    K.col(0) = (g(eps(0) + h, eps(1)) - g(eps(0) - h, eps(1))) / (2 * h);
+    K.col(1) = (g(eps(0), eps(1) + h) - g(eps(0), eps(1) - h)) / (2 * h);
+  } catch (const InadmissibleDeformation&) {
+    return false;
+  }
+  // A stress that overflows (Fung's exponential at a thickness stretch near 100) cannot be judged:
+  // not counted as an instability.
+  if (!K.allFinite()) return true;
+  // Scaled to entries of order 1 first: an exponential model's K can reach 1e150, whose
+  // determinant would overflow.
+  const double scale = K.cwiseAbs().maxCoeff();
+  if (!(scale > 0.0)) return false;
+  const Eigen::Matrix2d S = 0.5 * (K + K.transpose()) / scale;
+  return S(0, 0) > 0.0 && S.determinant() > 0.0;
+}
+
+std::vector<StabilityRange> stability_ranges(const AnyMaterial& material) {
   std::vector<StabilityRange> out;
   for (const TestMode mode : {TestMode::uniaxial, TestMode::equibiaxial, TestMode::planar}) {
+    const auto stable = [&](double l) {
+      return drucker_stable(material, test_deformation(mode, l).diagonal());
+    };
     StabilityRange s;
     s.mode = mode;
     s.upper = kStabilityScanMax;
     for (double l = 1.0; l <= kStabilityScanMax; l *= 1.005) {
-      if (!rising(mode, l)) {
+      if (!stable(l)) {
         s.upper = l;
         break;
       }
     }
     s.lower = kStabilityScanMin;
     for (double l = 1.0; l >= kStabilityScanMin; l /= 1.005) {
-      if (!rising(mode, l)) {
+      if (!stable(l)) {
         s.lower = l;
         break;
       }

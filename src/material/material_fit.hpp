@@ -32,9 +32,8 @@ struct ModeError {
   double max = 0.0;
 };
 
-/// The stretches around 1 between which the nominal stress of a test rises with the stretch
-/// (Drucker's condition along that test's path), searched in [kStabilityScanMin,
-/// kStabilityScanMax].
+/// The stretches λ of a test around 1 between which the material is stable in Drucker's sense
+/// (drucker_stable), searched in [kStabilityScanMin, kStabilityScanMax] from λ = 1 outwards.
 struct StabilityRange {
   TestMode mode = TestMode::uniaxial;
   double lower = 1.0;  ///< kStabilityScanMin when stable down to it
@@ -58,7 +57,16 @@ struct FitResult {
 /// model or a terms count out of range, and Error when no start converges to finite values.
 FitResult fit_material(const std::vector<TestPoint>& data, const FitOptions& options);
 
-/// Drucker's condition along each test path for a given material (see StabilityRange).
+/// Drucker's condition at the incompressible state with principal stretches λ (normalised here
+/// to λ1 λ2 λ3 = 1): dτ · dε > 0 for every isochoric increment of the logarithmic strains ε_a =
+/// ln λ_a, τ_a the principal Kirchhoff stresses. With ε3 = -ε1 - ε2 the pressure drops out and
+/// the condition is that K_ij = ∂(τ_i - τ_3)/∂ε_j (i, j = 1, 2), the Hessian of
+/// W(e^ε1, e^ε2, e^(-ε1-ε2)), be positive definite (docs/fit.md, "Stability"). K by central
+/// differences of the model's stress (step 1e-4 in ε). False where the model is not defined (Gent
+/// at its limit); true where its stress overflows (not judged).
+bool drucker_stable(const AnyMaterial& material, const Vec3d& stretches);
+
+/// Drucker stability along each test (see StabilityRange), in steps of 0.5 % of λ.
 std::vector<StabilityRange> stability_ranges(const AnyMaterial& material);
 
 /// `material: {model: NAME, KEY: VALUE, ...}` with 6 significant digits, the values a case needs.

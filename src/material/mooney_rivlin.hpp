@@ -3,10 +3,11 @@
 ///   W = c1 (Ī1 - 3) + c2 (Ī2 - 3)      [paper, Table 1 and eq. 7; isochoric split: Holzapfel,
 ///                                       Nonlinear Solid Mechanics, 2000, ch. 6]
 ///   small-strain shear modulus mu = 2 (c1 + c2) (materials.md, M13)
-/// Admissible parameters (registry): c1 >= 0, c2 >= 0, c1 + c2 > 0. In incompressible uniaxial
-/// tension sigma = 2 (λ² - 1/λ)(c1 + c2/λ) (M14): c1 < 0 makes the stress fall at large stretch
-/// and c2 < 0 makes it fall in compression (λ < -c2/c1). Either is a material instability, which
-/// a wrinkling analysis would mistake for structural wrinkles, so both are rejected.
+/// Admissible parameters (registry): c1 >= 0, c1 + c2 > 0. In incompressible uniaxial tension
+/// sigma = 2 (λ² - 1/λ)(c1 + c2/λ) (M14): c1 < 0 makes the stress fall at large stretch and is
+/// refused; c2 < 0 makes it fall in compression (below λ = -c2/c1 and before), as sets fitted to
+/// test data often have: it is accepted, and a run reports the stretches over which the set is
+/// stable and warns when an element leaves them (app/run_recorder.hpp).
 #include "core/types.hpp"
 #include "material/isochoric_invariants.hpp"
 #include "material/point_response.hpp"
@@ -15,7 +16,7 @@ namespace plisse {
 
 struct MooneyRivlin {
   double c1 = 0.0;  ///< [MPa], >= 0
-  double c2 = 0.0;  ///< [MPa], >= 0, c1 + c2 > 0
+  double c2 = 0.0;  ///< [MPa], c1 + c2 > 0
 
   /// W(F) for any scalar type (dual numbers in tests). Precondition: det F > 0.
   template <class T>

@@ -64,11 +64,14 @@ std::vector<MaterialModelInfo> register_materials() {
   models.push_back(add<MooneyRivlin>(
       {"mooney-rivlin", "W = c1 (Ī1 - 3) + c2 (Ī2 - 3)", "mu = 2 (c1 + c2)",
        "paper (Daanouni et al. 2009), Table 1 and eq. 7",
-       "Negative coefficients are rejected: in incompressible uniaxial tension "
-       "sigma = 2 (λ² - 1/λ)(c1 + c2/λ), so c1 < 0 softens at large stretch and c2 < 0 in "
-       "compression; such a material instability would be mistaken for wrinkling."},
+       "In incompressible uniaxial tension sigma = 2 (λ² - 1/λ)(c1 + c2/λ): c1 < 0 would soften at "
+       "large stretch and is refused; c2 < 0, as fits to test data often give (plisse fit), "
+       "softens in compression and is accepted with c1 + c2 > 0: a run logs the stretches over "
+       "which the set is stable and warns when an element leaves them, since a material "
+       "instability would be mistaken for wrinkling."},
       {param("c1", &MooneyRivlin::c1, Range::non_negative(), "MPa", "Ī1 coefficient"),
-       param("c2", &MooneyRivlin::c2, Range::non_negative(), "MPa", "Ī2 coefficient")},
+       param("c2", &MooneyRivlin::c2, Range::any(), "MPa",
+             "Ī2 coefficient (< 0: stable over a limited range of stretch)")},
       {CrossRule{"c1", "c1 + c2 must be > 0", {"c1", "c2"}, [](const MaterialValues& v) {
                    return v.at("c1") + v.at("c2") > 0.0;
                  }}}));

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <string>
 
@@ -221,6 +222,65 @@ TEST(CubeTension, LoadCurveLoadsAndUnloadsAlongTheClosedForm) {
   EXPECT_TRUE(unloaded);
   EXPECT_NEAR(h.rows.back()[col("time")], 1.0, 1e-12);
   EXPECT_NEAR(h.rows.back()[col("stretch")], 1.8, 1e-9);
+}
+
+}  // namespace
+}  // namespace plisse
+
+namespace plisse {
+namespace {
+
+// Mooney-Rivlin with c2 < 0 (c1 = 0.2, c2 = -0.1 MPa), accepted since fitted sets have it, is
+// stable in Drucker's sense in uniaxial compression only down to the stretch λc where
+// 2 h''(ln λ) + h''(-ln λ / 2) = 0, h''(x) = 4 c1 e^2x + 4 c2 e^-2x (docs/fit.md, "Stability"):
+// λc = 0.6971. The cube compressed to λ = 0.6 must run, log the stable ranges, warn at the first
+// step below λc (within the 0.5 % of the search) and say so in summary.json; the plain example
+// (c2 > 0, stable everywhere) is not monitored.
+TEST(CubeTension, MooneyRivlinWithNegativeC2WarnsWhereItStopsBeingStable) {
+  const double c1 = 0.2, c2 = -0.1;
+  const auto h2 = [&](double x) { return 4 * c1 * std::exp(2 * x) + 4 * c2 * std::exp(-2 * x); };
+  double lo = 0.5, hi = 0.9;  // unstable at 0.5, stable at 0.9
+  while (hi - lo > 1e-12) {
+    const double l = 0.5 * (lo + hi);
+    (2 * h2(std::log(l)) + h2(-0.5 * std::log(l)) > 0 ? hi : lo) = l;
+  }
+  const auto dir = test::scratch_directory("cube-mooney-rivlin-negative-c2");
+  const int status = test::run_plisse(
+      "run " + test::example("cube-tension-mooney-rivlin.yaml") + " -o " + dir.string() +
+          " --set material.c1=0.2 --set material.c2=-0.1 --set 'boundary[3].value=[~, ~, -2.0]'",
+      dir.string() + ".log");
+  ASSERT_EQ(status, 0) << "see " << dir.string() << ".log";
+  const HistoryTable h = read_history(dir / "history.csv");
+  size_t stretch = 0;
+  for (size_t i = 0; i < h.columns.size(); ++i)
+    if (h.columns[i] == "stretch") stretch = i;
+  int expected_step = -1;
+  for (size_t k = 0; k < h.rows.size(); ++k)
+    if (expected_step < 0 && h.rows[k][stretch] < hi * (1 - 0.005)) expected_step = int(k) + 1;
+  ASSERT_GT(expected_step, 1) << "the compression never passed the stable range";
+  const nlohmann::json s = read_json_file(dir / "summary.json");
+  ASSERT_TRUE(s.contains("material_stability")) << s.dump(1);
+  const nlohmann::json& m = s["material_stability"];
+  EXPECT_NEAR(m["stable_stretches"]["uniaxial"][0].get<double>(), hi, 0.006 * hi);
+  const int first = m["first_unstable_step"].get<int>();
+  // The step where the stretch first falls below λc, or the one before it when that step's
+  // stretch lies within the search's 0.5 % of λc.
+  EXPECT_GE(first, expected_step - 1);
+  EXPECT_LE(first, expected_step);
+  EXPECT_GT(m["unstable_elements"].get<int>(), 0);  // the homogeneous cube: every element
+  std::ifstream log_file(dir / "log.txt");
+  const std::string log{std::istreambuf_iterator<char>(log_file), {}};
+  EXPECT_NE(log.find("material: stable (Drucker) for stretches uniaxial"), std::string::npos);
+  EXPECT_NE(log.find("warning: step " + std::to_string(first) + ": the material is not stable"),
+            std::string::npos)
+      << log;
+
+  const auto plain = test::scratch_directory("cube-mooney-rivlin-plain");
+  ASSERT_EQ(test::run_plisse("run " + test::example("cube-tension-mooney-rivlin.yaml") + " -o " +
+                                 plain.string() + " --set 'boundary[3].value=[~, ~, -2.0]'",
+                             plain.string() + ".log"),
+            0);
+  EXPECT_FALSE(read_json_file(plain / "summary.json").contains("material_stability"));
 }
 
 }  // namespace

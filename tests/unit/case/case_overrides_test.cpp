@@ -67,8 +67,8 @@ TEST(CaseOverrides, ValuesAreValidatedAfterTheOverride) {
                      "expected an integer, got '2.5'");
   EXPECT_INPUT_ERROR(case_error(kCase, {"dies[0].move.displacement=[0, 1]"}), "--set", 0, 0,
                      "dies[0].move.displacement", "expected a list of 3 numbers");
-  EXPECT_INPUT_ERROR(case_error(kCase, {"material={model: mooney-rivlin, c1: 1, c2: -2}"}), "--set",
-                     0, 0, "material.c2", "must be >= 0 (got -2)");
+  EXPECT_INPUT_ERROR(case_error(kCase, {"material={model: mooney-rivlin, c1: -1, c2: 2}"}), "--set",
+                     0, 0, "material.c1", "must be >= 0 (got -1)");
   // An error elsewhere in the file still names its line.
   EXPECT_INPUT_ERROR(case_error(kCase + "probes: [{name: q, point: [0, 0]}]\n", {"solver.steps=3"}),
                      "case.yaml", 8, 27, "probes[0].point", "expected a list of 3 numbers");

@@ -75,22 +75,39 @@ TEST(MaterialFit, RecoversTheParametersThatMadeTheData) {
   EXPECT_EQ(block.find("mu3"), std::string::npos) << block;
 }
 
-// Mooney-Rivlin in uniaxial tension: t = 2 (λ - λ⁻²)(c1 + c2/λ). With c2 < 0 the stress stops
-// rising in compression where dt/dλ = 2 [(1 + 2λ⁻³)(c1 + c2/λ) - (λ - λ⁻²) c2 / λ²] = 0; the scan
-// (0.5 % steps) must find that stretch within one step. Neo-Hookean rises everywhere.
+// Mooney-Rivlin: W(e^ε1, e^ε2, e^ε3) = h(ε1) + h(ε2) + h(ε3), h(x) = c1 (e^2x - 1) + c2 (e^-2x -
+// 1), so with ε3 = -ε1 - ε2 Drucker's matrix is K = [[a + c, c], [c, b + c]], a = h''(ε1), b =
+// h''(ε2), c = h''(ε3), h''(x) = 4 c1 e^2x + 4 c2 e^-2x: positive definite iff a + c > 0 and ab +
+// ac + bc > 0. With c2 < 0 that fails in uniaxial compression below a stretch found here by
+// bisection; the scan (0.5 % steps) must find it within one step. Neo-Hookean (c2 = 0) is stable
+// everywhere.
 TEST(MaterialFit, StabilityRangeMatchesTheClosedFormOfMooneyRivlin) {
   const double c1 = 0.2, c2 = -0.1;
-  const auto slope = [&](double l) {
-    return 2 * ((1 + 2 / (l * l * l)) * (c1 + c2 / l) - (l - 1 / (l * l)) * c2 / (l * l));
+  const auto h2 = [&](double x) { return 4 * c1 * std::exp(2 * x) + 4 * c2 * std::exp(-2 * x); };
+  const auto stable = [&](double l) {  // uniaxial: ε = (ln λ, -ln λ / 2, -ln λ / 2)
+    const double a = h2(std::log(l)), b = h2(-0.5 * std::log(l)), c = b;
+    return a + c > 0 && a * b + a * c + b * c > 0;
   };
-  double a = 0.1, b = 1.0;  // slope(0.1) < 0 < slope(1): bisect
-  ASSERT_LT(slope(a), 0.0);
-  ASSERT_GT(slope(b), 0.0);
-  while (b - a > 1e-12) (slope(0.5 * (a + b)) > 0 ? b : a) = 0.5 * (a + b);
+  // The bound between `unstable` and `stable` by bisection.
+  const auto bound = [&](double unstable, double stable_end) {
+    EXPECT_FALSE(stable(unstable));
+    EXPECT_TRUE(stable(stable_end));
+    while (std::abs(stable_end - unstable) > 1e-12) {
+      const double mid = 0.5 * (unstable + stable_end);
+      (stable(mid) ? stable_end : unstable) = mid;
+    }
+    return stable_end;
+  };
+  // Compression makes h''(ln λ) negative; tension makes h'' of the lateral contraction negative.
+  const double lower = bound(0.1, 1.0), upper = bound(10.0, 1.0);
+  std::printf("Mooney-Rivlin c1 = 0.2, c2 = -0.1: uniaxial stable from %.5f to %.5f\n", lower,
+              upper);
   const std::vector<StabilityRange> mr =
       stability_ranges(make_material_unchecked("mooney-rivlin", {{"c1", c1}, {"c2", c2}}));
-  EXPECT_NEAR(mr[0].lower, b, 0.006 * b);
-  EXPECT_EQ(mr[0].upper, kStabilityScanMax);
+  EXPECT_NEAR(mr[0].lower, lower, 0.006 * lower);
+  EXPECT_NEAR(mr[0].upper, upper, 0.006 * upper);
+  EXPECT_TRUE(drucker_stable(make_material_unchecked("mooney-rivlin", {{"c1", c1}, {"c2", c2}}),
+                             Vec3d(1.0, 1.0, 1.0)));
   for (const StabilityRange& s : stability_ranges(make_material("neo-hookean", {{"c1", 0.3}}))) {
     EXPECT_EQ(s.lower, kStabilityScanMin) << test_mode_name(s.mode);
     EXPECT_EQ(s.upper, kStabilityScanMax) << test_mode_name(s.mode);
