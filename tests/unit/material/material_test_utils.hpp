@@ -1,5 +1,6 @@
 #pragma once
 /// Helpers for the material unit tests: reproducible deformations, finite differences, rates.
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -35,6 +36,21 @@ inline Mat3d random_rotation(unsigned seed) {
   Eigen::Quaterniond q(n(gen), n(gen), n(gen), n(gen));
   q.normalize();
   return q.toRotationMatrix();
+}
+
+/// dP/dF of `model` at F by central differences of its stress, step h = 1e-5 max(1, max |F_ij|).
+template <class Model>
+Mat9d central_difference_tangent(const Model& model, const Mat3d& F) {
+  const double h = 1e-5 * std::max(1.0, F.cwiseAbs().maxCoeff());
+  Mat9d A;
+  for (int k = 0; k < 9; ++k) {
+    Mat3d Fp = F, Fm = F;
+    Fp.data()[k] += h;
+    Fm.data()[k] -= h;
+    const Mat3d dP = (model.evaluate(Fp).P - model.evaluate(Fm).P) / (2 * h);
+    A.col(k) = Eigen::Map<const Vec9d>(dP.data());
+  }
+  return A;
 }
 
 /// Least-squares slope of log(err) against log(h) for h halving at each entry: the observed
