@@ -125,8 +125,12 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
       root_(PetscSession::rank() == 0),
       columns_(c, model, meter),
       previous_state_(model.state()) {
+  // Drucker's condition in principal stretches holds for isotropic models only.
+  const MaterialModelInfo* info = find_material_model(c.material.model);
   const AnyMaterial material = make_material(c.material.model, c.material.params);
-  const std::vector<StabilityRange> ranges = stability_ranges(material);
+  const std::vector<StabilityRange> ranges = info != nullptr && info->isotropic
+                                                 ? stability_ranges(material)
+                                                 : std::vector<StabilityRange>{};
   for (const StabilityRange& r : ranges) {
     if (r.lower > kStabilityScanMin || r.upper < kStabilityScanMax) {
       material_ranges_ = ranges;

@@ -141,6 +141,11 @@ FitResult fit_material(const std::vector<TestPoint>& data, const FitOptions& opt
     throw InputError({"command line", 0, 0, "model"},
                      "unknown material model '" + options.model + "' (known: " + known + ")");
   }
+  if (!info->isotropic)
+    throw InputError({"command line", 0, 0, "model"},
+                     "'" + info->name +
+                         "' is not isotropic: the uniaxial, equibiaxial and planar "
+                         "tests do not determine its fibres; fit an isotropic model");
   if (info->name == "ogden" && (options.ogden_terms < 1 || options.ogden_terms > 3))
     throw InputError(
         {"command line", 0, 0, "terms"},

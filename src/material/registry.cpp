@@ -47,6 +47,7 @@ MaterialModelInfo add(ModelText text, std::vector<BoundParam<Model>> params,
   for (const auto& p : params) info.params.push_back(p.spec);
   info.rules = std::move(rules);
   info.variant_index = AnyMaterial(std::in_place_type<Model>).index();
+  if constexpr (requires { Model::kIsotropic; }) info.isotropic = Model::kIsotropic;
   info.make = [params](const MaterialValues& values) {
     Model model;
     for (const auto& p : params) model.*(p.member) = values.at(p.spec.name);
@@ -151,6 +152,38 @@ std::vector<MaterialModelInfo> register_materials() {
        param("mu3", &Ogden::mu3, Range::any(), "MPa", "coefficient of term 3", 0.0),
        param("alpha3", &Ogden::alpha3, Range::any(), "-", "exponent of term 3", 0.0)},
       {ogden_term_rule("1", false), ogden_term_rule("2", true), ogden_term_rule("3", true)}));
+  const auto not_zero = [](std::string n) {
+    return CrossRule{n + "_x",
+                     "the fibre direction (" + n + "_x, " + n + "_y, " + n + "_z) must not be zero",
+                     {n + "_x", n + "_y", n + "_z"},
+                     [n](const MaterialValues& v) {
+                       return v.at(n + "_x") != 0.0 || v.at(n + "_y") != 0.0 ||
+                              v.at(n + "_z") != 0.0;
+                     }};
+  };
+  models.push_back(add<FibreReinforced>(
+      {"fibre-reinforced",
+       "W = c1 (Ī1 - 3) + Σ_f k1 / (2 k2) (exp(k2 (Ī4f - 1)²) - 1) over the families with "
+       "Ī4f > 1, Ī4f = J^(-2/3) a_f · C a_f",
+       "mu = 2 c1 (the fibres add nothing at F = I)",
+       "Holzapfel, Gasser & Ogden, J. Elasticity 61 (2000) 1, eq. 4.3",
+       "For woven fabrics and reinforced membranes: one or two fibre families, each a constant "
+       "direction of the reference configuration (normalised by plisse), carrying load in "
+       "extension only. Not isotropic, so `plisse fit` and the run's Drucker watch leave it out. "
+       "k2 = 0 gives fibres of quadratic energy k1 (Ī4 - 1)² / 2 (docs/theory/materials.md, "
+       "F1-F5)."},
+      {param("c1", &FibreReinforced::c1, Range::positive(), "MPa",
+             "matrix (neo-Hookean) coefficient, half the shear modulus"),
+       param("k1", &FibreReinforced::k1, Range::non_negative(), "MPa", "fibre stiffness"),
+       param("k2", &FibreReinforced::k2, Range::non_negative(), "-", "fibre stiffening", 0.0),
+       param("a1_x", &FibreReinforced::a1_x, Range::any(), "-", "first fibre direction, x", 0.0),
+       param("a1_y", &FibreReinforced::a1_y, Range::any(), "-", "first fibre direction, y", 0.0),
+       param("a1_z", &FibreReinforced::a1_z, Range::any(), "-", "first fibre direction, z", 0.0),
+       param("a2_x", &FibreReinforced::a2_x, Range::any(), "-",
+             "second fibre direction, x (all three 0: one family)", 0.0),
+       param("a2_y", &FibreReinforced::a2_y, Range::any(), "-", "second fibre direction, y", 0.0),
+       param("a2_z", &FibreReinforced::a2_z, Range::any(), "-", "second fibre direction, z", 0.0)},
+      {not_zero("a1")}));
   return models;
 }
 

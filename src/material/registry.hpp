@@ -13,6 +13,7 @@
 
 #include "core/parameter.hpp"
 #include "material/arruda_boyce.hpp"
+#include "material/fibre_reinforced.hpp"
 #include "material/fung.hpp"
 #include "material/gent.hpp"
 #include "material/mooney_rivlin.hpp"
@@ -23,7 +24,8 @@
 namespace plisse {
 
 /// Every model; element code picks the alternative once per element block with std::visit.
-using AnyMaterial = std::variant<NeoHookean, MooneyRivlin, Fung, Yeoh, Gent, ArrudaBoyce, Ogden>;
+using AnyMaterial =
+    std::variant<NeoHookean, MooneyRivlin, Fung, Yeoh, Gent, ArrudaBoyce, Ogden, FibreReinforced>;
 
 /// Parameter values by input key, e.g. {"c1": 0.0033}.
 using MaterialValues = std::map<std::string, double>;
@@ -52,6 +54,8 @@ struct MaterialModelInfo {
   std::string note;           ///< remarks on admissibility or domain; may be empty
   std::vector<ParamSpec> params;
   std::vector<CrossRule> rules;
+  /// W(F Q) = W(F) for every rotation Q: what `plisse fit` and the Drucker watch of a run assume.
+  bool isotropic = true;
   std::size_t variant_index = 0;  ///< index of the model's alternative in AnyMaterial
   /// Builds the model from complete values (every parameter present, defaults filled in).
   std::function<AnyMaterial(const MaterialValues&)> make;

@@ -54,6 +54,7 @@ TEST(FitCommand, BadInputIsRefusedWithItsPlace) {
        "1 points for 2 parameters of 'mooney-rivlin'"},
       {"fit " + kTreloar + " --model rubber", "key 'model': unknown material model 'rubber'"},
       {"fit " + kTreloar + " --model ogden --terms 4", "key 'terms': an Ogden fit has 1 to 3"},
+      {"fit " + kTreloar + " --model fibre-reinforced", "'fibre-reinforced' is not isotropic"},
       {"fit " + (dir / "missing.csv").string() + " --model ogden", "missing.csv: cannot read"},
   };
   for (const auto& c : cases) {

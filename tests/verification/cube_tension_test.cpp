@@ -285,3 +285,47 @@ TEST(CubeTension, MooneyRivlinWithNegativeC2WarnsWhereItStopsBeingStable) {
 
 }  // namespace
 }  // namespace plisse
+
+namespace plisse {
+namespace {
+
+// The fibre-reinforced model (Holzapfel, Gasser & Ogden 2000) in the cube pulled to stretch 2 with
+// sliding ends, both elements: fibres along the pull add 2 ψ'(λ²) λ² to the neo-Hookean matrix's
+// 2 c1 (λ² - 1/λ), ψ'(x) = k1 (x - 1) exp(k2 (x - 1)²); fibres across it shorten and add nothing.
+// The deformation stays homogeneous (the fibres are along an axis), so every step must match to
+// the solver tolerance.
+TEST(CubeTension, FibresAlongAndAcrossThePullMatchClosedFormsWithBothElements) {
+  const double c1 = 0.25, k1 = 0.2, k2 = 0.5;
+  for (const std::string element : {"mini", "taylor-hood"}) {
+    for (const std::string direction : {"a1_z", "a1_x"}) {
+      const auto dir = test::scratch_directory("cube-fibres-" + element + "-" + direction);
+      const std::string material =
+          "material={model: fibre-reinforced, c1: 0.25, k1: 0.2, k2: 0.5, " + direction + ": 1}";
+      ASSERT_EQ(test::run_plisse("run " + test::example("cube-tension-neo-hookean.yaml") + " -o " +
+                                     dir.string() + " --set element=" + element + " --set '" +
+                                     material + "' --set 'boundary[3].value=[~, ~, 5.0]'",
+                                 dir.string() + ".log"),
+                0)
+          << "see " << dir.string() << ".log";
+      const HistoryTable h = read_history(dir / "history.csv");
+      size_t stretch = 0, szz = 0, sxx = 0;
+      for (size_t i = 0; i < h.columns.size(); ++i) {
+        if (h.columns[i] == "stretch") stretch = i;
+        if (h.columns[i] == "cauchy_zz") szz = i;
+        if (h.columns[i] == "cauchy_xx") sxx = i;
+      }
+      ASSERT_GE(h.rows.size(), 5u);
+      for (const auto& row : h.rows) {
+        const double l = row[stretch], x = l * l - 1;
+        const double fibre = direction == "a1_z" ? 2 * k1 * x * std::exp(k2 * x * x) * l * l : 0.0;
+        const double expected = 2 * c1 * (l * l - 1 / l) + fibre;
+        EXPECT_NEAR(row[szz], expected, 1e-6 * expected) << element << " " << direction << " " << l;
+        EXPECT_NEAR(row[sxx], 0.0, 1e-6 * expected) << element << " " << direction << " " << l;
+      }
+      EXPECT_NEAR(h.rows.back()[stretch], 2.0, 1e-12);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace plisse

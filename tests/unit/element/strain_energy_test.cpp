@@ -22,11 +22,14 @@ using mini::ElemMat;
 using mini::ElemVec;
 using mini::TetGeometry;
 
-/// A registered model with parameters and its energy written out here in the invariants,
-/// independent of the model code (the formulas of each model's header).
+/// A registered model with parameters and its energy written out here in the invariants (or the
+/// stretches), independent of the model code (the formulas of each model's header).
 struct ModelCase {
   MaterialValues values;
   std::function<double(double I1bar, double I2bar)> W;
+  /// For a model not of the invariants alone (fibres): W of the principal stretches of
+  /// F = Q diag(λ), the fibre directions given along the axes of diag(λ).
+  std::function<double(const Vec3d& lambda)> W_of_stretches = {};
 };
 
 const std::map<std::string, ModelCase>& model_cases() {
@@ -62,6 +65,20 @@ const std::map<std::string, ModelCase>& model_cases() {
       {"ogden",
        {{{"mu1", 0.3}, {"alpha1", 2.0}, {"mu2", -0.1}, {"alpha2", -2.0}},
         [](double I1, double I2) { return 0.15 * (I1 - 3.0) + 0.05 * (I2 - 3.0); }}},
+      // Fibres along x and z of the reference: Ī4 = J^(-2/3) λx² and J^(-2/3) λz², each active
+      // above 1 with ψ = k1/(2 k2) (exp(k2 (Ī4 - 1)²) - 1).
+      {"fibre-reinforced",
+       {{{"c1", 0.2}, {"k1", 0.8}, {"k2", 0.5}, {"a1_x", 1.0}, {"a2_z", 1.0}},
+        [](double, double) { return 0.0; },
+        [](const Vec3d& l) {
+          const double b = std::pow(l.prod(), -2.0 / 3.0);
+          double W = 0.2 * (b * l.squaredNorm() - 3.0);
+          for (const double stretch : {l(0), l(2)}) {
+            const double x = b * stretch * stretch - 1.0;
+            if (x > 0.0) W += 0.8 / (2.0 * 0.5) * std::expm1(0.5 * x * x);
+          }
+          return W;
+        }}},
   };
   return cases;
 }
@@ -97,7 +114,7 @@ TEST(StrainEnergy, HomogeneousDeformationGivesWTimesVolumeForEveryModel) {
       const double p0 = 0.05;  // [MPa], same at every node
       for (int a = 0; a < 4; ++a) x(mini::dof_p(a)) = p0;
       const auto [I1bar, I2bar] = isochoric_invariants(lambda);
-      const double W = model.W(I1bar, I2bar);
+      const double W = model.W_of_stretches ? model.W_of_stretches(lambda) : model.W(I1bar, I2bar);
       EXPECT_GT(W, 0.0) << name;
       // Exact incompressibility: no volumetric part.
       const mini::StrainEnergy exact =

@@ -28,7 +28,7 @@ TEST(MaterialRegistry, UnknownModelIsReportedAgainstTheModelKey) {
   expect_one(
       validate_material("rubber", {{"c1", 1.0}}), "model",
       "unknown material model 'rubber' (known: neo-hookean, mooney-rivlin, fung, yeoh, gent, "
-      "arruda-boyce, ogden)");
+      "arruda-boyce, ogden, fibre-reinforced)");
   EXPECT_EQ(find_material_model("rubber"), nullptr);
 }
 
