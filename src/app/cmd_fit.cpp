@@ -17,7 +17,6 @@
 #include "io/atomic_file.hpp"
 #include "io/json_file.hpp"
 #include "io/test_data_reader.hpp"
-#include "material/inadmissible_deformation.hpp"
 #include "material/material_fit.hpp"
 
 namespace plisse::app {
@@ -92,15 +91,6 @@ std::string report(const FitCommandOptions& o, const std::vector<TestPoint>& dat
   return out.str();
 }
 
-/// The model's nominal stress at λ, or NaN where it is not defined.
-double model_stress(const AnyMaterial& m, TestMode mode, double l) {
-  try {
-    return nominal_stress(m, mode, l);
-  } catch (const InadmissibleDeformation&) {
-    return std::numeric_limits<double>::quiet_NaN();
-  }
-}
-
 void write_files(const FitCommandOptions& o, const std::vector<TestPoint>& data,
                  const FitResult& fit) {
   const fs::path dir = o.output;
@@ -114,7 +104,7 @@ void write_files(const FitCommandOptions& o, const std::vector<TestPoint>& data,
   curves.precision(10);
   points << "mode,stretch,stress,model_stress,relative_error\n";
   for (const TestPoint& p : data) {
-    const double t = model_stress(m, p.mode, p.stretch);
+    const double t = nominal_stress_or_nan(m, p.mode, p.stretch);
     points << test_mode_name(p.mode) << ',' << p.stretch << ',' << p.stress << ',' << t << ','
            << (t - p.stress) / p.stress << '\n';
   }
@@ -128,7 +118,8 @@ void write_files(const FitCommandOptions& o, const std::vector<TestPoint>& data,
     }
     for (int k = 0; k <= 200; ++k) {
       const double l = lo + (hi - lo) * k / 200.0;
-      curves << test_mode_name(e.mode) << ',' << l << ',' << model_stress(m, e.mode, l) << '\n';
+      curves << test_mode_name(e.mode) << ',' << l << ',' << nominal_stress_or_nan(m, e.mode, l)
+             << '\n';
     }
   }
   write_file_atomically(dir / "fit.csv", points.str());
@@ -163,9 +154,7 @@ void fit_command(const FitCommandOptions& o) {
   options.ogden_terms = o.terms;
   const MaterialModelInfo* info = find_material_model(o.model);
   if (info != nullptr) {
-    std::size_t n = 0;
-    for (const ParamSpec& p : info->params)
-      n += info->name != "ogden" || p.name.back() - '0' <= o.terms;
+    const std::size_t n = fitted_parameters(*info, o.terms).size();
     if (data.size() < n)
       throw InputError({o.data, 0, 0, ""}, std::to_string(data.size()) + " points for " +
                                                std::to_string(n) + " parameters of '" + o.model +

@@ -131,11 +131,11 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
   const std::vector<StabilityRange> ranges = info != nullptr && info->isotropic
                                                  ? stability_ranges(material)
                                                  : std::vector<StabilityRange>{};
-  for (const StabilityRange& r : ranges) {
-    if (r.lower > kStabilityScanMin || r.upper < kStabilityScanMax) {
-      material_ranges_ = ranges;
-      monitored_material_ = material;
-    }
+  if (std::any_of(ranges.begin(), ranges.end(), [](const StabilityRange& r) {
+        return r.lower > kStabilityScanMin || r.upper < kStabilityScanMax;
+      })) {
+    material_ranges_ = ranges;
+    monitored_material_ = material;
   }
   // Rank 0 writes the files, every rank checks them on --resume: a failure is agreed by all.
   on_every_rank_alike([&] {

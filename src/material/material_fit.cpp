@@ -42,19 +42,6 @@ double small_strain_modulus(const std::vector<TestPoint>& data) {
   return use[use.size() / 2];
 }
 
-/// The parameters fitted for the model, in registry order.
-std::vector<std::string> fitted_parameters(const MaterialModelInfo& info, const FitOptions& o) {
-  std::vector<std::string> names;
-  for (const ParamSpec& p : info.params) {
-    if (info.name == "ogden") {
-      const int term = p.name.back() - '0';
-      if (term > o.ogden_terms) continue;
-    }
-    names.push_back(p.name);
-  }
-  return names;
-}
-
 /// Starting points: each gives the fitted parameters' values (in `fitted` order) and its model
 /// starts from there. Derived from the small-strain modulus mu and the data's largest Ī1 - 3.
 std::vector<std::vector<double>> starts(const std::string& model, int terms, double mu,
@@ -119,12 +106,7 @@ struct Residuals {
     const AnyMaterial m = build(*info, *fitted, x);
     for (std::size_t i = 0; i < data->size(); ++i) {
       const TestPoint& p = (*data)[i];
-      double t = std::numeric_limits<double>::quiet_NaN();
-      try {
-        t = nominal_stress(m, p.mode, p.stretch);
-      } catch (const InadmissibleDeformation&) {
-      }
-      const double e = (t - p.stress) / p.stress;
+      const double e = (nominal_stress_or_nan(m, p.mode, p.stretch) - p.stress) / p.stress;
       r(static_cast<Eigen::Index>(i)) = std::isfinite(e) ? e : kPenalty;
     }
     return 0;
@@ -132,6 +114,26 @@ struct Residuals {
 };
 
 }  // namespace
+
+std::vector<std::string> fitted_parameters(const MaterialModelInfo& info, int ogden_terms) {
+  std::vector<std::string> names;
+  for (const ParamSpec& p : info.params) {
+    if (info.name == "ogden") {
+      const int term = p.name.back() - '0';
+      if (term > ogden_terms) continue;
+    }
+    names.push_back(p.name);
+  }
+  return names;
+}
+
+double nominal_stress_or_nan(const AnyMaterial& material, TestMode mode, double stretch) {
+  try {
+    return nominal_stress(material, mode, stretch);
+  } catch (const InadmissibleDeformation&) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+}
 
 FitResult fit_material(const std::vector<TestPoint>& data, const FitOptions& options) {
   const MaterialModelInfo* info = find_material_model(options.model);
@@ -151,7 +153,7 @@ FitResult fit_material(const std::vector<TestPoint>& data, const FitOptions& opt
         {"command line", 0, 0, "terms"},
         "an Ogden fit has 1 to 3 terms (got " + std::to_string(options.ogden_terms) + ")");
   FE_CHECK(!data.empty(), "fit_material: no data");
-  const std::vector<std::string> fitted = fitted_parameters(*info, options);
+  const std::vector<std::string> fitted = fitted_parameters(*info, options.ogden_terms);
   FE_CHECK(data.size() >= fitted.size(),
            "fit_material: " << data.size() << " points for " << fitted.size() << " parameters");
 

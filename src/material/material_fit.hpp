@@ -53,6 +53,13 @@ struct FitResult {
   int evaluations = 0;                    ///< residual evaluations, all starts together
 };
 
+/// The parameters a fit of `info`'s model adjusts, in registry order: all of them, or for Ogden
+/// those of its first `ogden_terms` terms.
+std::vector<std::string> fitted_parameters(const MaterialModelInfo& info, int ogden_terms);
+
+/// nominal_stress, or NaN where the model is not defined (Gent past its limit).
+double nominal_stress_or_nan(const AnyMaterial& material, TestMode mode, double stretch);
+
 /// Fits `options.model` to `data`. Throws InputError (place: key "model" or "terms") for an unknown
 /// model or a terms count out of range, and Error when no start converges to finite values.
 FitResult fit_material(const std::vector<TestPoint>& data, const FitOptions& options);

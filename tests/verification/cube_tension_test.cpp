@@ -32,6 +32,14 @@ struct CubeCase {
 
 constexpr double kCubeVolume = 125.0;  // the 5 mm cube [mm^3]
 
+/// The index of the history column `name` (a failure, and 0, if there is none).
+size_t column(const HistoryTable& h, const std::string& name) {
+  for (size_t i = 0; i < h.columns.size(); ++i)
+    if (h.columns[i] == name) return i;
+  ADD_FAILURE() << "no column " << name;
+  return 0;
+}
+
 void expect_closed_form(const CubeCase& c) {
   const auto dir = test::scratch_directory(c.example + ("-" + c.element));
   const int status = test::run_plisse(
@@ -39,14 +47,9 @@ void expect_closed_form(const CubeCase& c) {
       dir.string() + ".log");
   ASSERT_EQ(status, 0) << "see " << dir.string() << ".log";
   const HistoryTable h = read_history(dir / "history.csv");
-  const auto col = [&](const std::string& name) {
-    for (size_t i = 0; i < h.columns.size(); ++i)
-      if (h.columns[i] == name) return i;
-    ADD_FAILURE() << "no column " << name;
-    return size_t{0};
-  };
-  const size_t stretch = col("stretch"), szz = col("cauchy_zz"), sxx = col("cauchy_xx"),
-               syy = col("cauchy_yy"), energy = col("strain_energy");
+  const size_t stretch = column(h, "stretch"), szz = column(h, "cauchy_zz"),
+               sxx = column(h, "cauchy_xx"), syy = column(h, "cauchy_yy"),
+               energy = column(h, "strain_energy");
   ASSERT_GE(h.rows.size(), 5u);
   for (const auto& row : h.rows) {
     const double lambda = row[stretch];
@@ -72,23 +75,24 @@ void expect_closed_form(const CubeCase& c) {
     const std::string at = " at stretch " + std::to_string(l);
     for (int k = 0; k < 3; ++k) {
       const std::string axis(1, "xyz"[k]);
-      EXPECT_NEAR(row[col("u" + axis + ":inside")], (F[k] - 1) * X[k], 1e-6 * l) << axis << at;
-      EXPECT_NEAR(row[col(axis + ":inside")], F[k] * X[k], 1e-6 * l) << axis << at;
-      EXPECT_NEAR(row[col("u" + axis + ":above_top")], (F[k] - 1) * X_top[k], 1e-6 * l)
+      EXPECT_NEAR(row[column(h, "u" + axis + ":inside")], (F[k] - 1) * X[k], 1e-6 * l)
+          << axis << at;
+      EXPECT_NEAR(row[column(h, axis + ":inside")], F[k] * X[k], 1e-6 * l) << axis << at;
+      EXPECT_NEAR(row[column(h, "u" + axis + ":above_top")], (F[k] - 1) * X_top[k], 1e-6 * l)
           << axis << at;
     }
-    EXPECT_NEAR(row[col("pressure:inside")], -sz / 3, tol) << at;
+    EXPECT_NEAR(row[column(h, "pressure:inside")], -sz / 3, tol) << at;
     for (const char* shear : {"cauchy_xx", "cauchy_yy", "cauchy_xy", "cauchy_yz", "cauchy_xz"})
-      EXPECT_NEAR(row[col(shear + std::string(":inside"))], 0.0, tol) << shear << at;
-    EXPECT_NEAR(row[col("cauchy_zz:inside")], sz, tol) << at;
-    EXPECT_NEAR(row[col("von_mises:inside")], std::abs(sz), tol) << at;
-    EXPECT_NEAR(row[col("stretch_1:inside")], l, 1e-6 * l) << at;
-    EXPECT_NEAR(row[col("stretch_2:inside")], 1 / std::sqrt(l), 1e-6) << at;
-    EXPECT_NEAR(row[col("stretch_3:inside")], 1 / std::sqrt(l), 1e-6) << at;
-    EXPECT_NEAR(row[col("stress_1:inside")], sz, tol) << at;
-    EXPECT_NEAR(row[col("stress_2:inside")], 0.0, tol) << at;
-    EXPECT_NEAR(row[col("stress_3:inside")], 0.0, tol) << at;
-    EXPECT_NEAR(row[col("J:inside")], 1.0, 1e-9) << at;
+      EXPECT_NEAR(row[column(h, shear + std::string(":inside"))], 0.0, tol) << shear << at;
+    EXPECT_NEAR(row[column(h, "cauchy_zz:inside")], sz, tol) << at;
+    EXPECT_NEAR(row[column(h, "von_mises:inside")], std::abs(sz), tol) << at;
+    EXPECT_NEAR(row[column(h, "stretch_1:inside")], l, 1e-6 * l) << at;
+    EXPECT_NEAR(row[column(h, "stretch_2:inside")], 1 / std::sqrt(l), 1e-6) << at;
+    EXPECT_NEAR(row[column(h, "stretch_3:inside")], 1 / std::sqrt(l), 1e-6) << at;
+    EXPECT_NEAR(row[column(h, "stress_1:inside")], sz, tol) << at;
+    EXPECT_NEAR(row[column(h, "stress_2:inside")], 0.0, tol) << at;
+    EXPECT_NEAR(row[column(h, "stress_3:inside")], 0.0, tol) << at;
+    EXPECT_NEAR(row[column(h, "J:inside")], 1.0, 1e-9) << at;
   }
   // summary.json says where each probe reports, and how far that is from its point.
   const nlohmann::json probes = read_json_file(dir / "summary.json")["probes"];
@@ -203,32 +207,20 @@ TEST(CubeTension, LoadCurveLoadsAndUnloadsAlongTheClosedForm) {
                        dir.string() + ".log");
   ASSERT_EQ(status, 0) << "see " << dir.string() << ".log";
   const HistoryTable h = read_history(dir / "history.csv");
-  const auto col = [&](const std::string& name) {
-    for (size_t i = 0; i < h.columns.size(); ++i)
-      if (h.columns[i] == name) return i;
-    ADD_FAILURE() << "no column " << name;
-    return size_t{0};
-  };
   const auto f = [](double t) { return t <= 0.5 ? 2 * t : 1.0 - 1.6 * (t - 0.5); };
   const double c1 = 0.25;
   bool unloaded = false;
   for (const auto& row : h.rows) {
-    const double t = row[col("time")], lambda = row[col("stretch")];
+    const double t = row[column(h, "time")], lambda = row[column(h, "stretch")];
     EXPECT_NEAR(lambda, 1.0 + 4.0 * f(t), 1e-9) << "t = " << t;
     const double sigma = 2 * c1 * (lambda * lambda - 1 / lambda);
-    EXPECT_NEAR(row[col("cauchy_zz")], sigma, 1e-6 * sigma) << "t = " << t;
+    EXPECT_NEAR(row[column(h, "cauchy_zz")], sigma, 1e-6 * sigma) << "t = " << t;
     unloaded = unloaded || t > 0.5;
   }
   EXPECT_TRUE(unloaded);
-  EXPECT_NEAR(h.rows.back()[col("time")], 1.0, 1e-12);
-  EXPECT_NEAR(h.rows.back()[col("stretch")], 1.8, 1e-9);
+  EXPECT_NEAR(h.rows.back()[column(h, "time")], 1.0, 1e-12);
+  EXPECT_NEAR(h.rows.back()[column(h, "stretch")], 1.8, 1e-9);
 }
-
-}  // namespace
-}  // namespace plisse
-
-namespace plisse {
-namespace {
 
 // Mooney-Rivlin with c2 < 0 (c1 = 0.2, c2 = -0.1 MPa), accepted since fitted sets have it, is
 // stable in Drucker's sense in uniaxial compression only down to the stretch λc where
@@ -251,9 +243,7 @@ TEST(CubeTension, MooneyRivlinWithNegativeC2WarnsWhereItStopsBeingStable) {
       dir.string() + ".log");
   ASSERT_EQ(status, 0) << "see " << dir.string() << ".log";
   const HistoryTable h = read_history(dir / "history.csv");
-  size_t stretch = 0;
-  for (size_t i = 0; i < h.columns.size(); ++i)
-    if (h.columns[i] == "stretch") stretch = i;
+  const size_t stretch = column(h, "stretch");
   int expected_step = -1;
   for (size_t k = 0; k < h.rows.size(); ++k)
     if (expected_step < 0 && h.rows[k][stretch] < hi * (1 - 0.005)) expected_step = int(k) + 1;
@@ -283,12 +273,6 @@ TEST(CubeTension, MooneyRivlinWithNegativeC2WarnsWhereItStopsBeingStable) {
   EXPECT_FALSE(read_json_file(plain / "summary.json").contains("material_stability"));
 }
 
-}  // namespace
-}  // namespace plisse
-
-namespace plisse {
-namespace {
-
 // The fibre-reinforced model (Holzapfel, Gasser & Ogden 2000) in the cube pulled to stretch 2 with
 // sliding ends, both elements: fibres along the pull add 2 ψ'(λ²) λ² to the neo-Hookean matrix's
 // 2 c1 (λ² - 1/λ), ψ'(x) = k1 (x - 1) exp(k2 (x - 1)²); fibres across it shorten and add nothing.
@@ -308,12 +292,8 @@ TEST(CubeTension, FibresAlongAndAcrossThePullMatchClosedFormsWithBothElements) {
                 0)
           << "see " << dir.string() << ".log";
       const HistoryTable h = read_history(dir / "history.csv");
-      size_t stretch = 0, szz = 0, sxx = 0;
-      for (size_t i = 0; i < h.columns.size(); ++i) {
-        if (h.columns[i] == "stretch") stretch = i;
-        if (h.columns[i] == "cauchy_zz") szz = i;
-        if (h.columns[i] == "cauchy_xx") sxx = i;
-      }
+      const size_t stretch = column(h, "stretch"), szz = column(h, "cauchy_zz"),
+                   sxx = column(h, "cauchy_xx");
       ASSERT_GE(h.rows.size(), 5u);
       for (const auto& row : h.rows) {
         const double l = row[stretch], x = l * l - 1;
