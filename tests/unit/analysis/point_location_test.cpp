@@ -48,7 +48,9 @@ TEST(PointLocation, InsideABoxEveryPointMapsBackAndFieldsOfTheElementsDegreeAreE
       const auto weights = interpolation_weights(mesh, p);
       EXPECT_EQ(weights.size(), order == 1 ? 4u : 10u);
       EXPECT_NEAR(interpolate(weights, f1), linear(X), 1e-12);
-      if (order == 2) EXPECT_NEAR(interpolate(weights, f2), quadratic(X), 1e-12);
+      if (order == 2) {
+        EXPECT_NEAR(interpolate(weights, f2), quadratic(X), 1e-12);
+      }
     }
   }
 }
