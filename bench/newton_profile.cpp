@@ -118,7 +118,8 @@ int run(int argc, char** argv) {
   const Mesh mesh = load_case_mesh(c);
   check_case_against_mesh(c, mesh);
   app::ModelParts parts = app::build_model_parts(c, mesh);
-  const AnyMaterial material = parts.material;  // the bare kernel loop below evaluates it
+  const AnyMaterial material =
+      parts.materials.materials.front();  // the bare kernel loop below evaluates it
   PetscSession petsc({"-no_signal_handler", c.solver.petsc_options});
   PLISSE_PETSC(PetscLogDefaultBegin());
   const std::unique_ptr<MixedModel> model_owner = app::make_model(mesh, std::move(parts));

@@ -72,6 +72,18 @@ void check_case(const CheckOptions& options) {
   out << "plisse check: " << c.path << ": valid\n";
   if (!c.title.empty()) out << "  title     " << c.title << '\n';
   out << "  material  " << material_line(c.material) << '\n';
+  for (const Region& r : c.regions) {
+    out << "  region    " << r.label() << " ("
+        << count(region_tets(r, mesh).size(), "tetrahedron", "tetrahedra") << "): ";
+    if (r.material)
+      out << material_line(*r.material);
+    else if (r.displacement.isZero())
+      out << "rigid, held";
+    else
+      out << "rigid, translated by (" << number(r.displacement[0]) << ", "
+          << number(r.displacement[1]) << ", " << number(r.displacement[2]) << ") mm";
+    out << '\n';
+  }
   out << "  element   " << to_string(c.element)
       << (c.element == ElementFamily::mini ? " (P1+/P1, linear tetrahedra)"
                                            : " (P2/P1, 10-node tetrahedra)")

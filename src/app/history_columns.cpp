@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <memory>
+#include <set>
 
 #include "analysis/point_location.hpp"
 #include "analysis/wall_thickness.hpp"
@@ -71,6 +73,14 @@ HistoryColumns::HistoryColumns(const Case& c, const MixedModel& model, const Wri
       if (cut == 0) return;
       const Vec3d whole = whole_body_force(f, cut);
       for (int k = 0; k < 3; ++k) row.push_back(whole[k]);
+    });
+  }
+  for (const Region& region : c.regions) {
+    if (!region.rigid || region.name.empty()) continue;
+    auto nodes = std::make_shared<const std::set<int>>(tet_nodes(mesh, region_tets(region, mesh)));
+    add(xyz_columns("force_", region.name), [nodes](const StepRecord& r, std::vector<double>& row) {
+      const Vec3d f = r.model.node_reaction(*nodes);
+      for (int k = 0; k < 3; ++k) row.push_back(f[k]);
     });
   }
   // A wall: a shell or sheet (a cube's top and bottom are not one).

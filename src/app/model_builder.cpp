@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <set>
 
 #include "mesh/topology.hpp"
@@ -45,11 +46,101 @@ std::vector<std::array<int, 3>> default_die_candidates(const Case& c, const Mesh
 /// that nothing is left to solve.
 void check_free_displacements(const Case& c, const Mesh& mesh,
                               const std::vector<ConstrainedComponent>& constraints) {
-  // collect_constraints gives one entry per constrained (node, component).
-  if (constraints.size() >= 3 * static_cast<size_t>(mesh.n_nodes()))
+  // One entry per constrained (node, component); pressures do not count.
+  const auto displacements =
+      std::count_if(constraints.begin(), constraints.end(),
+                    [](const ConstrainedComponent& cc) { return cc.component < 3; });
+  if (static_cast<std::size_t>(displacements) >= 3 * static_cast<std::size_t>(mesh.n_nodes()))
     throw InputError({c.path, 0, 0, "boundary"},
                      "every displacement is prescribed by the boundary conditions: nothing to "
                      "solve");
+}
+
+/// The density of every tetrahedron [tonne/mm^3]: its material's; 0 in a rigid region (its weight
+/// rests on whatever moves it).
+std::vector<double> element_densities(const Case& c, const Mesh& mesh) {
+  std::vector<double> density(mesh.tets.size(), c.material.density);
+  for (const Region& r : c.regions)
+    for (int t : region_tets(r, mesh))
+      density[static_cast<std::size_t>(t)] = r.material ? r.material->density : 0.0;
+  return density;
+}
+
+/// The material of every element: the case's `material` for the tetrahedra in no region, each
+/// deformable region's own, ElementMaterials::kRigid for a rigid region's (check_case_against_mesh
+/// has checked the tags and that no tetrahedron is in two regions).
+ElementMaterials element_materials(const Case& c, const Mesh& mesh) {
+  ElementMaterials m = ElementMaterials::uniform(make_material(c.material.model, c.material.params),
+                                                 c.material.inverse_bulk_modulus());
+  if (c.regions.empty()) return m;
+  m.of_element.assign(mesh.tets.size(), 0);
+  for (const Region& r : c.regions) {
+    int index = ElementMaterials::kRigid;
+    if (r.material) {
+      index = static_cast<int>(m.materials.size());
+      m.materials.push_back(make_material(r.material->model, r.material->params));
+      m.inverse_bulk_moduli.push_back(r.material->inverse_bulk_modulus());
+    }
+    for (int t : region_tets(r, mesh)) m.of_element[static_cast<std::size_t>(t)] = index;
+  }
+  return m;
+}
+
+/// Adds the rigid regions' constraints to `constraints`: every node of their tetrahedra follows
+/// the region's translation, and a corner node that no deformable tetrahedron touches has its
+/// pressure held at 0 (no element gives it an equation). A node that a boundary condition or
+/// another rigid region moves otherwise is an InputError at the region.
+void add_rigid_constraints(const Case& c, const Mesh& mesh, const ElementMaterials& materials,
+                           std::vector<ConstrainedComponent>& constraints) {
+  if (std::none_of(c.regions.begin(), c.regions.end(), [](const Region& r) { return r.rigid; }))
+    return;
+  std::map<std::pair<int, int>, std::size_t> existing;  // (node, component) -> constraint
+  for (std::size_t k = 0; k < constraints.size(); ++k)
+    existing[{constraints[k].node, constraints[k].component}] = k;
+  const auto same_motion = [&](const ConstrainedComponent& a, const ConstrainedComponent& b) {
+    std::vector<double> times = {0.0,        c.solver.end_time, a.ramp.start,
+                                 a.ramp.end, b.ramp.start,      b.ramp.end};
+    for (const auto& point : a.ramp.table) times.push_back(point[0]);
+    for (const auto& point : b.ramp.table) times.push_back(point[0]);
+    return std::all_of(times.begin(), times.end(), [&](double t) {
+      return std::abs(a.at(t) - b.at(t)) <= 1e-12 * (1.0 + std::abs(a.value) + std::abs(b.value));
+    });
+  };
+  const char* axes = "xyz";
+  for (const Region& r : c.regions) {
+    if (!r.rigid) continue;
+    for (int v : tet_nodes(mesh, region_tets(r, mesh))) {
+      for (int k = 0; k < 3; ++k) {
+        const ConstrainedComponent cc{v, k, r.displacement[k], r.ramp};
+        const auto [it, added] = existing.try_emplace({v, k}, constraints.size());
+        if (added) {
+          constraints.push_back(cc);
+        } else if (!same_motion(constraints[it->second], cc)) {
+          const Vec3d& x = mesh.nodes[static_cast<std::size_t>(v)];
+          char at[96];
+          std::snprintf(at, sizeof at, "[%.6g, %.6g, %.6g]", x[0], x[1], x[2]);
+          throw InputError(r.place, "node " + std::to_string(v) + " at " + at +
+                                        " of rigid region '" + r.label() +
+                                        "' is also moved otherwise along " + axes[k] +
+                                        " (a boundary condition or another rigid region): a "
+                                        "rigid region's nodes follow its own displacement only");
+        }
+      }
+    }
+  }
+  std::vector<char> deformable(static_cast<std::size_t>(mesh.n_nodes()), 0);
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+    if (!materials.rigid(static_cast<int>(t)))
+      for (int v : mesh.tets[t]) deformable[static_cast<std::size_t>(v)] = 1;
+  for (const Region& r : c.regions) {
+    if (!r.rigid) continue;
+    for (int t : region_tets(r, mesh))
+      for (int v : mesh.tets[static_cast<std::size_t>(t)])
+        if (!deformable[static_cast<std::size_t>(v)]) {
+          deformable[static_cast<std::size_t>(v)] = 1;  // once
+          constraints.push_back({v, 3, 0.0, Ramp{}});
+        }
+  }
 }
 
 }  // namespace
@@ -210,11 +301,9 @@ std::unique_ptr<ModelTerm> make_die_term(const Die& die, const Case& c, const Me
 }  // namespace
 
 ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
-  ModelParts parts{make_material(c.material.model, c.material.params),
-                   c.material.inverse_bulk_modulus(),
-                   collect_constraints(c.boundary, mesh),
-                   {},
-                   c.element};
+  ModelParts parts{
+      element_materials(c, mesh), collect_constraints(c.boundary, mesh), {}, c.element};
+  add_rigid_constraints(c, mesh, parts.materials, parts.constraints);
   check_free_displacements(c, mesh, parts.constraints);
   const auto& constraints = parts.constraints;
   const int mirrors = mirror_planes(c.boundary, mesh);
@@ -226,8 +315,8 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
             mesh, load.name, load.surface.name, load.value, load.ramp, constraints, mirrors));
         break;
       case LoadType::gravity:
-        terms.push_back(std::make_unique<BodyForce>(
-            mesh, load.name, c.material.density * load.acceleration, load.ramp));
+        terms.push_back(std::make_unique<BodyForce>(mesh, load.name, load.acceleration, load.ramp,
+                                                    element_densities(c, mesh)));
         break;
       case LoadType::traction: {
         const auto faces = outward_faces(mesh, load.surface.name);
@@ -258,8 +347,8 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
     terms.push_back(std::make_unique<CavityTerm>(cavity, mesh, constraints, mirrors));
   for (const Cap& cap : c.caps) terms.push_back(std::make_unique<RigidCap>(cap, mesh, constraints));
   if (!c.dies.empty() || !c.contacts.empty()) {
-    // The contact penalties' default scale (contact.md, D11).
-    const double mu = shear_modulus(parts.material);
+    // The contact penalties' default scale (contact.md, D11): the case's `material`.
+    const double mu = shear_modulus(parts.materials.materials.front());
     for (const Die& die : c.dies) terms.push_back(make_die_term(die, c, mesh, mu, mirrors));
     for (const SurfaceContactPair& pair : c.contacts)
       terms.push_back(make_surface_contact_term(pair, mesh, mu));
@@ -275,7 +364,7 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
 }
 
 std::unique_ptr<MixedModel> make_model(const Mesh& mesh, ModelParts parts) {
-  return std::make_unique<MixedModel>(mesh, std::move(parts.material), parts.inverse_bulk_modulus,
+  return std::make_unique<MixedModel>(mesh, std::move(parts.materials),
                                       std::move(parts.constraints), std::move(parts.terms),
                                       parts.element);
 }

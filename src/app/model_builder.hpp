@@ -17,9 +17,12 @@ namespace plisse::app {
 
 /// What a MixedModel is made of. The terms borrow the mesh they were built on.
 struct ModelParts {
-  AnyMaterial material;                           ///< built once from the registry
-  double inverse_bulk_modulus = 0.0;              ///< 1/κ [1/MPa]; 0 for exact incompressibility
-  std::vector<ConstrainedComponent> constraints;  ///< one per constrained (node, component)
+  /// The material of every element: the case's `material`, then one per deformable region,
+  /// and the rigid regions' elements (built once from the registry).
+  ElementMaterials materials;
+  /// One per constrained (node, component): the boundary conditions', then the rigid regions'
+  /// (every node of their tetrahedra, and the pressure of the nodes only they touch).
+  std::vector<ConstrainedComponent> constraints;
   /// One term per load, then per cavity, then per die, in the case's order, then the viscous
   /// damping when solver.viscosity > 0.
   std::vector<std::unique_ptr<ModelTerm>> terms;

@@ -116,6 +116,14 @@ const std::vector<OutputEntry> kHistory = {
      "y component of the whole body's reaction"},
     {"full_force_z:<boundary>", "N", "as `full_force_x:<boundary>`",
      "z component of the whole body's reaction"},
+    {"force_x:<region>", "N", "`regions[]` rigid, with a `name`",
+     "x component of the reaction on a rigid region: the force the region exerts on the body, "
+     "summed over the nodes of its tetrahedra (a held base under a membrane pressed down onto it "
+     "pushes up; likewise y, z)"},
+    {"force_y:<region>", "N", "`regions[]` rigid, with a `name`",
+     "y component of the rigid region's reaction"},
+    {"force_z:<region>", "N", "`regions[]` rigid, with a `name`",
+     "z component of the rigid region's reaction"},
     {"ux:<probe>", "mm", "`probes[]` (`fields` has `displacement`, the default)",
      "x displacement at the probe's material point, interpolated by the element's shape "
      "functions (likewise y, z; see Probes)"},
@@ -228,15 +236,25 @@ const std::vector<OutputEntry> kSummary = {
     {"peak_memory_mib", "MiB", "always", "peak resident memory summed over the ranks"},
     {"peak_memory_per_rank_mib", "MiB", "always", "the largest rank's peak resident memory"},
     {"material_stability.stable_stretches", "–",
-     "a material not stable over all of 0.1 to 10 in some test",
+     "the case's `material` not stable over all of 0.1 to 10 in some test",
      "the stretches over which the material is stable in Drucker's sense, per test (the keys "
-     "below; docs/fit.md, \"Stability\"); every step then checks each element's state"},
+     "below; docs/fit.md, \"Stability\"); every step then checks the state of each element "
+     "of it"},
     {"material_stability.stable_stretches.uniaxial", "–", "the same",
      "[lowest, highest] stretch of the uniaxial test (0.1 and 10: the ends of the search)"},
     {"material_stability.stable_stretches.equibiaxial", "–", "the same",
      "the same for the equibiaxial test"},
     {"material_stability.stable_stretches.planar", "–", "the same", "the same for the planar test"},
-    {"material_stability.first_unstable_step", "–", "the same",
+    {"material_stability.regions.<volume>", "–",
+     "a region's material not stable over all of 0.1 to 10 in some test",
+     "the same ranges for the material of the region with that volume tag (a `box` region: "
+     "its key, e.g. `regions[1]`): `uniaxial`, `equibiaxial`, `planar` as above"},
+    {"material_stability.regions.<volume>.uniaxial", "–", "the same",
+     "[lowest, highest] stretch of the uniaxial test"},
+    {"material_stability.regions.<volume>.equibiaxial", "–", "the same",
+     "the same for the equibiaxial test"},
+    {"material_stability.regions.<volume>.planar", "–", "the same", "the same for the planar test"},
+    {"material_stability.first_unstable_step", "–", "a watched material (either above)",
      "the first step with an element whose state is not stable (the log warns then), or null"},
     {"material_stability.unstable_elements", "–", "the same",
      "elements whose state is not stable at the last step"},
@@ -364,6 +382,9 @@ const std::vector<OutputEntry> kVtuCell = {
     {"principal_stresses", "MPa", "always",
      "σ1 ≥ σ2 ≥ σ3, the eigenvalues of the element's average Cauchy stress (3 components), "
      "tension positive"},
+    {"material", "–", "`regions`",
+     "the element's material: 0 the case's `material`, k the k-th region with a material (in "
+     "the order of `regions`), −1 a rigid region"},
     {"wrinkle_state", "–", "`output.wrinkles.rings_deg`",
      "the tension-field state of the element's through-thickness column: 0 taut, 1 wrinkled, "
      "2 slack"},

@@ -257,11 +257,12 @@ void solve_and_write(PreparedRun run) {
              " at t = " + std::to_string(checkpoint->time));
   else
     recorder.record_initial_state();
-  if (!recorder.material_ranges().empty()) {
+  for (const RunRecorder::WatchedMaterial& w : recorder.watched_materials()) {
     std::ostringstream line;
     line.precision(3);
-    line << "material: stable (Drucker) for stretches";
-    for (const StabilityRange& r : recorder.material_ranges())
+    line << (w.region.empty() ? "material" : "region " + w.region + " material")
+         << ": stable (Drucker) for stretches";
+    for (const StabilityRange& r : w.ranges)
       line << ' ' << test_mode_name(r.mode) << ' ' << r.lower << " to " << r.upper;
     line << "; every step checks each element, and the log warns at the first that is not";
     log.info(line.str());

@@ -125,17 +125,21 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
       root_(PetscSession::rank() == 0),
       columns_(c, model, meter),
       previous_state_(model.state()) {
-  // Drucker's condition in principal stretches holds for isotropic models only.
-  const MaterialModelInfo* info = find_material_model(c.material.model);
-  const AnyMaterial material = make_material(c.material.model, c.material.params);
-  const std::vector<StabilityRange> ranges = info != nullptr && info->isotropic
-                                                 ? stability_ranges(material)
-                                                 : std::vector<StabilityRange>{};
-  if (std::any_of(ranges.begin(), ranges.end(), [](const StabilityRange& r) {
-        return r.lower > kStabilityScanMin || r.upper < kStabilityScanMax;
-      })) {
-    material_ranges_ = ranges;
-    monitored_material_ = material;
+  // Drucker's condition in principal stretches holds for isotropic models only. The model's
+  // materials are the case's `material`, then one per deformable region in the case's order.
+  const ElementMaterials& materials = model.element_materials();
+  std::vector<std::string> regions = {""};
+  for (const Region& r : c.regions)
+    if (r.material) regions.push_back(r.label());
+  for (std::size_t k = 0; k < materials.materials.size(); ++k) {
+    const AnyMaterial& material = materials.materials[k];
+    const MaterialModelInfo* info = find_material_model(material_name(material));
+    if (info == nullptr || !info->isotropic) continue;
+    std::vector<StabilityRange> ranges = stability_ranges(material);
+    if (std::any_of(ranges.begin(), ranges.end(), [](const StabilityRange& r) {
+          return r.lower > kStabilityScanMin || r.upper < kStabilityScanMax;
+        }))
+      watched_.push_back({static_cast<int>(k), regions.at(k), material, std::move(ranges)});
   }
   // Rank 0 writes the files, every rank checks them on --resume: a failure is agreed by all.
   on_every_rank_alike([&] {
@@ -198,7 +202,7 @@ void RunRecorder::record(const StepInfo& info) {
                               {"perturbation_mm", info.perturbation_mm},
                               {"file", step_name(model_, info.step)}});
   }
-  if (monitored_material_) check_material_stability(info.step);
+  if (!watched_.empty()) check_material_stability(info.step);
   if (info.step % case_.output.every == 0 || info.load_factor >= 1.0 || !info.modes.empty())
     write_step_files(info, previous_state_);
   last_step_start_ = std::move(previous_state_);
@@ -209,11 +213,17 @@ void RunRecorder::record(const StepInfo& info) {
 void RunRecorder::check_material_stability(int step) {
   // Every rank checks every element alike (element_deformation_gradients covers the whole mesh).
   const std::vector<Mat3d> F = model_.element_deformation_gradients();
+  const ElementMaterials& materials = model_.element_materials();
+  std::vector<const AnyMaterial*> watched(materials.materials.size(), nullptr);
+  for (const WatchedMaterial& w : watched_)
+    watched[static_cast<std::size_t>(w.index)] = &w.material;
   int unstable = 0, first = -1;
   Vec3d first_stretches = Vec3d::Ones();
   for (std::size_t e = 0; e < F.size(); ++e) {
+    const int m = materials.of(static_cast<int>(e));
+    if (m == ElementMaterials::kRigid || watched[static_cast<std::size_t>(m)] == nullptr) continue;
     const Vec3d l = principal_stretches(F[e]);
-    if (drucker_stable(*monitored_material_, l)) continue;
+    if (drucker_stable(*watched[static_cast<std::size_t>(m)], l)) continue;
     if (unstable++ == 0) first = static_cast<int>(e), first_stretches = l;
   }
   unstable_elements_ = unstable;
@@ -247,6 +257,13 @@ void RunRecorder::write_step_files(const StepInfo& info, const std::vector<doubl
     for (std::size_t e = 0; e < state.size(); ++e)
       state[e] = static_cast<double>(last_wrinkles_->tension.element_state[e]);
     cell_fields.push_back(make_scalar_field("wrinkle_state", state));
+  }
+  if (!case_.regions.empty()) {
+    const ElementMaterials& materials = model_.element_materials();
+    std::vector<double> index(static_cast<std::size_t>(model_.mesh().n_tets()));
+    for (std::size_t e = 0; e < index.size(); ++e)
+      index[e] = static_cast<double>(materials.of(static_cast<int>(e)));
+    cell_fields.push_back(make_scalar_field("material", index));
   }
   write_step_vtu(directory_.directory() / name, case_, model_, fields_, columns_.wall_thickness(),
                  step_start, info.dt, point_fields, cell_fields);
@@ -342,16 +359,21 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
                             {"stable_at_end", last_step_.stable},
                             {"instabilities", instabilities_}};
   }
-  if (monitored_material_) {
-    nlohmann::json ranges;
-    for (const StabilityRange& r : material_ranges_)
-      ranges[test_mode_name(r.mode)] = {r.lower, r.upper};
-    summary["material_stability"] = {
-        {"stable_stretches", ranges},
+  if (!watched_.empty()) {
+    nlohmann::json stability = {
         {"first_unstable_step",
          first_unstable_step_ >= 0 ? nlohmann::json(first_unstable_step_) : nlohmann::json()},
         {"unstable_elements", unstable_elements_},
         {"most_unstable_elements", most_unstable_elements_}};
+    for (const WatchedMaterial& w : watched_) {
+      nlohmann::json ranges;
+      for (const StabilityRange& r : w.ranges) ranges[test_mode_name(r.mode)] = {r.lower, r.upper};
+      if (w.region.empty())
+        stability["stable_stretches"] = ranges;
+      else
+        stability["regions"][w.region] = ranges;
+    }
+    summary["material_stability"] = stability;
   }
   if (last_wrinkles_) summary["wrinkles"] = wrinkles_json(c, *last_wrinkles_);
   for (const HistoryColumns::ProbePoint& p : columns_.probe_points()) {

@@ -70,11 +70,18 @@ class RunRecorder {
   /// Time spent computing and writing output so far [s].
   double output_seconds() const { return output_seconds_; }
 
-  /// The stretch ranges of the uniaxial, equibiaxial and planar tests over which the material is
-  /// stable in Drucker's sense (material/material_fit.hpp), when one of them ends inside [0.1, 10];
-  /// empty for a material stable over all of it. Then every recorded step checks Drucker's
-  /// condition at each element's state (its mean deformation's principal stretches).
-  const std::vector<StabilityRange>& material_ranges() const { return material_ranges_; }
+  /// A material whose stability (Drucker) the run watches: an isotropic model whose stable
+  /// stretch range (material/material_fit.hpp) ends inside [0.1, 10] in the uniaxial,
+  /// equibiaxial or planar test. Every recorded step checks Drucker's condition at the state of
+  /// each element of it (its mean deformation's principal stretches).
+  struct WatchedMaterial {
+    int index = 0;       ///< in the model's ElementMaterials
+    std::string region;  ///< the region's volume tag; empty for the case's `material`
+    AnyMaterial material;
+    std::vector<StabilityRange> ranges;  ///< per test
+  };
+  /// The watched materials; empty when every material is stable over all of [0.1, 10].
+  const std::vector<WatchedMaterial>& watched_materials() const { return watched_; }
   /// The warning of the first recorded step with an element where the material is not stable,
   /// once; empty otherwise.
   std::string take_material_warning();
@@ -108,8 +115,7 @@ class RunRecorder {
   std::optional<WrinkleMeter::Result> last_wrinkles_;
   nlohmann::json instabilities_ = nlohmann::json::array();
   StepInfo last_step_;
-  std::vector<StabilityRange> material_ranges_;  ///< empty: the material is not monitored
-  std::optional<AnyMaterial> monitored_material_;
+  std::vector<WatchedMaterial> watched_;
   int first_unstable_step_ = -1;    ///< the first recorded step with an unstable element
   int unstable_elements_ = 0;       ///< at the last recorded step
   int most_unstable_elements_ = 0;  ///< over the recorded steps

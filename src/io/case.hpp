@@ -145,6 +145,27 @@ struct Probe {
   InputPlace fields_place;  ///< where `fields` is written (the entry's place when absent)
 };
 
+/// A part of the body given by a volume tag: with a material of its own, or rigid. Tetrahedra in
+/// no region have the case's `material`.
+struct Region {
+  std::string volume;  ///< the volume tag; empty when the region is a box
+  InputPlace volume_place;
+  /// The region as a box instead: the tetrahedra whose centroid lies in [lower, upper] [mm].
+  std::optional<std::array<Vec3d, 2>> box;
+  InputPlace box_place;
+  std::optional<MaterialSection> material;  ///< a deformable region's model
+  bool rigid = false;
+  /// A rigid region: its translation [mm] at the end of the ramp (it does not turn). Every node
+  /// of its tetrahedra follows it.
+  Vec3d displacement = Vec3d::Zero();
+  Ramp ramp;
+  std::string name;  ///< optional; a rigid region's force columns `force_x:<name>` ...
+  InputPlace place;
+  /// What messages and summary.json call the region: its volume tag, else its name, else its key
+  /// ("regions[1]").
+  std::string label() const { return !volume.empty() ? volume : !name.empty() ? name : place.key; }
+};
+
 enum class Scheme { total_lagrangian, incremental };
 
 struct StabilitySettings {
@@ -208,6 +229,7 @@ struct Case {
   ElementFamily element = kDefaultElement;
   MeshSection mesh;
   MaterialSection material;
+  std::vector<Region> regions;
   std::vector<BoundaryCondition> boundary;
   std::vector<Load> loads;
   std::vector<Cavity> cavities;
@@ -231,6 +253,10 @@ Case parse_case_string(const std::string& text, const std::string& name,
 
 /// Reads or generates the case's mesh (InputError on failure, naming the case's mesh key).
 Mesh load_case_mesh(const Case& c);
+
+/// The tetrahedra of a region (indices into mesh.tets, increasing): its volume tag's, or those
+/// whose centroid lies in its box. Empty for a tag the mesh lacks.
+std::vector<int> region_tets(const Region& region, const Mesh& mesh);
 
 /// Checks everything that needs the mesh: every SurfaceRef names an existing, non-empty surface
 /// tag; symmetry surfaces are planar; the mesh passes check_mesh. Throws InputError at the place of

@@ -56,6 +56,57 @@ void check_surface(const Case& c, const Mesh& mesh, const SurfaceRef& ref) {
                                     " has no triangles; " + tag_list(mesh));
 }
 
+std::string volume_tag_list(const Mesh& mesh) {
+  if (mesh.volume_tags.empty())
+    return "the mesh has no volume tags (Gmsh physical groups of dimension 3)";
+  std::string out = "available volume tags: ";
+  bool first = true;
+  for (const auto& [name, tets] : mesh.volume_tags) {
+    out += (first ? "" : ", ") + name + " (" + std::to_string(tets.size()) + " tetrahedra)";
+    first = false;
+  }
+  return out;
+}
+
+/// Every region names a non-empty volume tag or a box holding tetrahedra, no tetrahedron is in
+/// two regions, and something is left to deform.
+void check_regions(const Case& c, const Mesh& mesh) {
+  std::vector<int> region_of(mesh.tets.size(), -1);
+  for (std::size_t k = 0; k < c.regions.size(); ++k) {
+    const Region& r = c.regions[k];
+    const std::vector<int> tets = region_tets(r, mesh);
+    if (r.box && tets.empty())
+      throw InputError(r.box_place,
+                       "no tetrahedron of " + mesh_name(c) + " has its centroid in the box");
+    if (!r.box && mesh.volume_tags.count(r.volume) == 0) {
+      std::vector<std::string> names;
+      for (const auto& [name, tag] : mesh.volume_tags) names.push_back(name);
+      std::string rule = "no volume tag '" + r.volume + "' in " + mesh_name(c);
+      if (const auto guess = case_detail::closest_match(r.volume, names))
+        rule += " (did you mean '" + *guess + "'?)";
+      throw InputError(r.volume_place, rule + "; " + volume_tag_list(mesh));
+    }
+    if (tets.empty())
+      throw InputError(r.volume_place, "volume tag '" + r.volume + "' of " + mesh_name(c) +
+                                           " has no tetrahedra; " + volume_tag_list(mesh));
+    for (int t : tets) {
+      int& owner = region_of[static_cast<std::size_t>(t)];
+      if (owner >= 0)
+        throw InputError(r.box ? r.box_place : r.volume_place,
+                         "region '" + r.label() + "' shares tetrahedron " + std::to_string(t) +
+                             " with region '" + c.regions[static_cast<std::size_t>(owner)].label() +
+                             "': a tetrahedron may be in one region only");
+      owner = static_cast<int>(k);
+    }
+  }
+  const bool deforms = std::any_of(region_of.begin(), region_of.end(), [&](int k) {
+    return k < 0 || !c.regions[static_cast<std::size_t>(k)].rigid;
+  });
+  if (!deforms)
+    throw InputError(c.regions.back().place,
+                     "every tetrahedron is in a rigid region: nothing is left to deform");
+}
+
 /// Largest distance of the tag's nodes from their least-squares plane, and the tolerance for it.
 std::pair<double, double> planarity(const Mesh& mesh, const std::vector<int>& triangles) {
   std::set<int> nodes;
@@ -161,6 +212,26 @@ void check_wall_thickness(const Case& c) {
 
 }  // namespace
 
+std::vector<int> region_tets(const Region& region, const Mesh& mesh) {
+  if (!region.box) {
+    const auto tag = mesh.volume_tags.find(region.volume);
+    if (tag == mesh.volume_tags.end()) return {};
+    std::vector<int> tets = tag->second;
+    std::sort(tets.begin(), tets.end());
+    tets.erase(std::unique(tets.begin(), tets.end()), tets.end());
+    return tets;
+  }
+  const auto& [lower, upper] = *region.box;
+  std::vector<int> tets;
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    Vec3d centroid = Vec3d::Zero();
+    for (int v : mesh.tets[t]) centroid += mesh.nodes[static_cast<std::size_t>(v)] / 4.0;
+    if ((centroid.array() >= lower.array()).all() && (centroid.array() <= upper.array()).all())
+      tets.push_back(static_cast<int>(t));
+  }
+  return tets;
+}
+
 Mesh load_case_mesh(const Case& c) {
   namespace fs = std::filesystem;
   if (c.mesh.file) {
@@ -215,6 +286,7 @@ Mesh load_case_mesh(const Case& c) {
 }
 
 void check_case_against_mesh(const Case& c, const Mesh& mesh) {
+  check_regions(c, mesh);
   for (const BoundaryCondition& bc : c.boundary) check_surface(c, mesh, bc.surface);
   for (const Load& load : c.loads) {
     if (load.type == LoadType::pressure || load.type == LoadType::traction ||

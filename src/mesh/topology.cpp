@@ -71,6 +71,19 @@ std::set<int> triangle_nodes(const Mesh& mesh, const std::vector<int>& triangles
   return nodes;
 }
 
+std::set<int> tet_nodes(const Mesh& mesh, const std::vector<int>& tets) {
+  std::set<int> nodes;
+  for (int t : tets) {
+    for (int v : mesh.tets[t]) nodes.insert(v);
+    if (mesh.order() == 2) {
+      FE_CHECK(static_cast<std::size_t>(t) < mesh.tet_edge_nodes.size(),
+               "tetrahedron " << t << " of the second-order mesh has no edge nodes");
+      for (int v : mesh.tet_edge_nodes[t]) nodes.insert(v);
+    }
+  }
+  return nodes;
+}
+
 int nearest_node(const Mesh& mesh, const Vec3d& point) {
   int best = 0;
   double best_distance = std::numeric_limits<double>::infinity();

@@ -44,6 +44,10 @@ void flip_tet(Mesh& mesh, int t);
 /// second-order mesh has no edge nodes.
 std::set<int> triangle_nodes(const Mesh& mesh, const std::vector<int>& triangles);
 
+/// The nodes of the tetrahedra `tets` (indices into mesh.tets): their corners and, on a
+/// second-order mesh, their edge nodes.
+std::set<int> tet_nodes(const Mesh& mesh, const std::vector<int>& tets);
+
 /// The node nearest to `point` (on equal distance the lower index): corners and, on a
 /// second-order mesh, edge nodes alike. O(n_nodes). Precondition: the mesh has nodes.
 int nearest_node(const Mesh& mesh, const Vec3d& point);

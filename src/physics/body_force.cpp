@@ -1,16 +1,24 @@
 #include "physics/body_force.hpp"
 
+#include "core/error.hpp"
 #include "element/taylor_hood_geometry.hpp"
 
 namespace plisse {
 
-std::vector<double> consistent_nodal_volumes(const Mesh& mesh) {
+std::vector<double> consistent_nodal_volumes(const Mesh& mesh,
+                                             const std::vector<double>& element_weight) {
+  FE_CHECK(element_weight.empty() || element_weight.size() == mesh.tets.size(),
+           element_weight.size() << " element weights for " << mesh.tets.size() << " elements");
+  const auto weight = [&](std::size_t t) {
+    return element_weight.empty() ? 1.0 : element_weight[t];
+  };
   std::vector<double> volume(mesh.n_nodes(), 0.0);
   if (mesh.order() == 1) {
-    for (const auto& tet : mesh.tets) {
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+      const auto& tet = mesh.tets[t];
       Mat3d d;
       for (int a = 1; a < 4; ++a) d.col(a - 1) = mesh.nodes[tet[a]] - mesh.nodes[tet[0]];
-      const double quarter = d.determinant() / 24.0;
+      const double quarter = weight(t) * d.determinant() / 24.0;
       for (int v : tet) volume[v] += quarter;  // (loads.md, L6)
     }
     return volume;
@@ -27,14 +35,15 @@ std::vector<double> consistent_nodal_volumes(const Mesh& mesh) {
     const th::Geometry g = th::compute_geometry(X);
     for (int q = 0; q < th::kQuadPoints; ++q) {
       const auto N = th::shape_values(th::kQuadrature.points[q]);
-      for (int a = 0; a < th::kNodes; ++a) volume[nodes[a]] += g.weight[q] * N[a];
+      for (int a = 0; a < th::kNodes; ++a) volume[nodes[a]] += weight(t) * g.weight[q] * N[a];
     }
   }
   return volume;
 }
 
-BodyForce::BodyForce(const Mesh& mesh, std::string name, const Vec3d& force_density, Ramp ramp)
-    : nodal_volume_(consistent_nodal_volumes(mesh)),
+BodyForce::BodyForce(const Mesh& mesh, std::string name, const Vec3d& force_density, Ramp ramp,
+                     const std::vector<double>& element_scale)
+    : nodal_volume_(consistent_nodal_volumes(mesh, element_scale)),
       name_(std::move(name)),
       force_density_(force_density),
       ramp_(ramp) {}

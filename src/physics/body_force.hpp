@@ -13,14 +13,20 @@ namespace plisse {
 /// tetrahedron the integrals of its quadratic shape functions with the isoparametric Jacobian
 /// (L10: -V_e / 20 per corner and V_e / 5 per edge node of a straight one). Indexed by node; the
 /// sum is the volume of the mesh. Throws plisse::Error for an invalid 10-node tetrahedron.
-std::vector<double> consistent_nodal_volumes(const Mesh& mesh);
+/// With `element_weight` (one per tetrahedron) each element's integrals are multiplied by its
+/// weight: Σ_e w_e ∫_e N_a dV (a density per element gives the nodal masses).
+std::vector<double> consistent_nodal_volumes(const Mesh& mesh,
+                                             const std::vector<double>& element_weight = {});
 
 class BodyForce : public ModelTerm {
  public:
   /// `force_density` = rho g [N/mm^3] at the end of `ramp`. The nodal forces are
   /// f_a = ∫ rho g N_a dV = rho g V_a with the consistent nodal volumes V_a
   /// (consistent_nodal_volumes), on linear and on second-order meshes.
-  BodyForce(const Mesh& mesh, std::string name, const Vec3d& force_density, Ramp ramp);
+  /// With `element_scale` (one factor per tetrahedron, e.g. its density when `force_density` is
+  /// the acceleration g) element e's force density is element_scale[e] * force_density.
+  BodyForce(const Mesh& mesh, std::string name, const Vec3d& force_density, Ramp ramp,
+            const std::vector<double>& element_scale = {});
   void assemble(double t, std::span<const double> x, std::span<double> residual,
                 TangentSink* tangent) override;
 

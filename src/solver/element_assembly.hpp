@@ -23,10 +23,13 @@
 #include <variant>
 #include <vector>
 
+#include "core/error.hpp"
 #include "material/registry.hpp"
 #include "mesh/mesh.hpp"
 #include "solver/assembly_status.hpp"
 #include "solver/distribution.hpp"
+#include "solver/dof_map.hpp"
+#include "solver/element_materials.hpp"
 #include "solver/element_nodes.hpp"
 #include "solver/element_policy.hpp"
 #include "solver/petsc_call.hpp"
@@ -45,12 +48,23 @@ class ElementAssembly {
  public:
   using Fields = typename Element::Fields;
 
-  /// The elements of `mesh` (borrowed only here), their geometry and initial internal state;
-  /// `material` and `inverse_bulk_modulus` (1/κ [1/MPa], 0: exactly incompressible) are those of
-  /// every element.
-  ElementAssembly(const Mesh& mesh, AnyMaterial material, double inverse_bulk_modulus)
-      : material_(std::move(material)), inverse_bulk_modulus_(inverse_bulk_modulus) {
+  /// The elements of `mesh` (borrowed only here), their geometry and initial internal state, and
+  /// the material of each (`materials`: at least one model, an index per element or none; rigid
+  /// elements are skipped by the assembly and the stored energy, and report the fields of an
+  /// unstressed element).
+  ElementAssembly(const Mesh& mesh, ElementMaterials materials) : materials_(std::move(materials)) {
     const int n = Element::n_elements(mesh);
+    FE_CHECK(!materials_.materials.empty() &&
+                 materials_.inverse_bulk_moduli.size() == materials_.materials.size() &&
+                 (materials_.of_element.empty() ||
+                  materials_.of_element.size() == static_cast<std::size_t>(n)),
+             "element materials: " << materials_.materials.size() << " models, "
+                                   << materials_.of_element.size() << " indices for " << n
+                                   << " elements");
+    for (int m : materials_.of_element)
+      FE_CHECK(m == ElementMaterials::kRigid ||
+                   (m >= 0 && m < static_cast<int>(materials_.materials.size())),
+               "element material index " << m << " out of range");
     nodes_.reserve(static_cast<std::size_t>(n) * Element::kNodes);
     geometry_.reserve(n);
     for (int e = 0; e < n; ++e) {
@@ -64,6 +78,8 @@ class ElementAssembly {
 
   /// The element node lists (a view of this object's storage).
   ElementNodes nodes() const { return {nodes_, Element::kNodes}; }
+  /// The material of every element.
+  const ElementMaterials& materials() const { return materials_; }
   /// Number of elements (all ranks hold all of them).
   int n_elements() const { return static_cast<int>(geometry_.size()); }
 
@@ -118,21 +134,30 @@ class ElementAssembly {
     const std::vector<int>& owned = distribution.owned_elements();
     const int n = static_cast<int>(owned.size());
     std::exception_ptr error;
-    std::visit(
-        [&](const auto& material) {
 #pragma omp parallel for schedule(dynamic, 64) num_threads(threads)
-          for (int k = 0; k < n; ++k) {
-            const int e = owned[k];
-            try {
-              out[e] =
-                  Element::fields(geometry_[e], gather(dofs(e), state), material, internal_[e]);
-            } catch (...) {
+    for (int k = 0; k < n; ++k) {
+      const int e = owned[k];
+      try {
+        const std::array<int, Element::kDof> full = dofs(e);
+        typename Element::Vector x = gather(full, state);
+        int m = materials_.of(e);
+        if (m == ElementMaterials::kRigid) {
+          // A rigid element moves rigidly and carries no stress: any model at zero pressure
+          // gives F, J = 1 and zero stresses.
+          for (int i = 0; i < Element::kDof; ++i)
+            if (full[i] % DofMap::kPerNode == 3) x[i] = 0.0;
+          m = 0;
+        }
+        out[e] = std::visit(
+            [&](const auto& material) {
+              return Element::fields(geometry_[e], x, material, internal_[e]);
+            },
+            materials_.materials[m]);
+      } catch (...) {
 #pragma omp critical(plisse_element_fields_error)
-              if (!error) error = std::current_exception();
-            }
-          }
-        },
-        material_);
+        if (!error) error = std::current_exception();
+      }
+    }
     if (error) std::rethrow_exception(error);
     // Every element is owned by one rank: the sum of the ranks' arrays is every element's fields.
     distribution.sum_over_ranks(reinterpret_cast<double*>(out.data()),
@@ -144,9 +169,13 @@ class ElementAssembly {
   /// each owner's, summed over the ranks. Collective.
   double strain_energy(const Distribution& distribution, std::span<const double> state) const {
     double energy = 0.0;
-    for (int e : distribution.owned_elements())
-      energy += Element::strain_energy(geometry_[e], gather(dofs(e), state), material_,
-                                       inverse_bulk_modulus_, internal_[e]);
+    for (int e : distribution.owned_elements()) {
+      const int m = materials_.of(e);
+      if (m == ElementMaterials::kRigid) continue;
+      energy +=
+          Element::strain_energy(geometry_[e], gather(dofs(e), state), materials_.materials[m],
+                                 materials_.inverse_bulk_moduli[m], internal_[e]);
+    }
     distribution.sum_over_ranks(&energy, 1);
     return energy;
   }
@@ -210,6 +239,7 @@ class ElementAssembly {
     typename Element::Vector r;
     typename Element::Matrix K;
     typename Element::Status status;
+    bool rigid;  ///< a rigid element: nothing evaluated, nothing to add
   };
 
   std::array<int, Element::kDof> dofs(int e) const {
@@ -232,40 +262,43 @@ class ElementAssembly {
     const std::vector<int>& local = distribution.local_elements();
     const int n = static_cast<int>(local.size());
     chunk_.resize(std::min(n, kChunkElements));
-    std::visit(
-        [&](const auto& material) {
-          for (int first = 0; first < n; first += kChunkElements) {
-            const int last = std::min(n, first + kChunkElements);
-            std::exception_ptr error;
-        // Elements differ in cost (local iterations) and the machine may be shared: small
-        // dynamic batches.
+    for (int first = 0; first < n; first += kChunkElements) {
+      const int last = std::min(n, first + kChunkElements);
+      std::exception_ptr error;
+      // Elements differ in cost (local iterations) and the machine may be shared: small dynamic
+      // batches. The model is picked per element (a jump, against microseconds of element work).
 #pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
-            for (int k = first; k < last; ++k) {
-              try {
-                const int e = local[k];
-                Result& out = chunk_[k - first];
-                out.status = Element::evaluate(geometry_[e], gather(dofs(e), state), material,
-                                               inverse_bulk_modulus_, internal_[e], out.r,
-                                               with_tangent ? &out.K : nullptr);
-              } catch (...) {
+      for (int k = first; k < last; ++k) {
+        try {
+          const int e = local[k];
+          Result& out = chunk_[k - first];
+          const int m = materials_.of(e);
+          out.rigid = m == ElementMaterials::kRigid;
+          if (out.rigid) continue;
+          out.status = std::visit(
+              [&](const auto& material) {
+                return Element::evaluate(geometry_[e], gather(dofs(e), state), material,
+                                         materials_.inverse_bulk_moduli[m], internal_[e], out.r,
+                                         with_tangent ? &out.K : nullptr);
+              },
+              materials_.materials[m]);
+        } catch (...) {
 #pragma omp critical(plisse_element_loop_error)
-                if (!error) error = std::current_exception();
-              }
-            }
-            if (error) std::rethrow_exception(error);
-            for (int k = first; k < last; ++k) {
-              const Result& out = chunk_[k - first];
-              track_element(status, out.status.ok, out.status.min_J, local[k]);
-              scatter(local[k], out);
-            }
-          }
-        },
-        material_);
+          if (!error) error = std::current_exception();
+        }
+      }
+      if (error) std::rethrow_exception(error);
+      for (int k = first; k < last; ++k) {
+        const Result& out = chunk_[k - first];
+        if (out.rigid) continue;
+        track_element(status, out.status.ok, out.status.min_J, local[k]);
+        scatter(local[k], out);
+      }
+    }
     return distribution.reduce(status);
   }
 
-  AnyMaterial material_;
-  double inverse_bulk_modulus_;
+  ElementMaterials materials_;
   std::vector<int> nodes_;  ///< Element::kNodes per element
   std::vector<typename Element::Geometry> geometry_;
   std::vector<typename Element::Internal> internal_, converged_internal_;

@@ -72,16 +72,20 @@ bool MixedModel::symmetric() const {
 MixedModel::MixedModel(const Mesh& mesh, AnyMaterial material, double inverse_bulk_modulus,
                        std::vector<ConstrainedComponent> constraints,
                        std::vector<std::unique_ptr<ModelTerm>> terms, ElementFamily family)
+    : MixedModel(mesh, ElementMaterials::uniform(std::move(material), inverse_bulk_modulus),
+                 std::move(constraints), std::move(terms), family) {}
+
+MixedModel::MixedModel(const Mesh& mesh, ElementMaterials materials,
+                       std::vector<ConstrainedComponent> constraints,
+                       std::vector<std::unique_ptr<ModelTerm>> terms, ElementFamily family)
     : mesh_(mesh), family_(family), constraints_(std::move(constraints)), terms_(std::move(terms)) {
   FE_CHECK(mesh.order() == mesh_order_of(family),
            "the " << to_string(family) << " element needs a mesh of order " << mesh_order_of(family)
                   << ", this one has order " << mesh.order());
   if (family == ElementFamily::mini) {
-    elements_ = std::make_unique<ElementAssembly<MiniElement>>(mesh, std::move(material),
-                                                               inverse_bulk_modulus);
+    elements_ = std::make_unique<ElementAssembly<MiniElement>>(mesh, std::move(materials));
   } else {
-    elements_ = std::make_unique<ElementAssembly<TaylorHoodElement>>(mesh, std::move(material),
-                                                                     inverse_bulk_modulus);
+    elements_ = std::make_unique<ElementAssembly<TaylorHoodElement>>(mesh, std::move(materials));
     // The pressure is linear: the edge nodes' pressure values are not unknowns.
     for (int v : non_corner_nodes(mesh)) constraints_.push_back({v, 3, 0.0, Ramp{}});
   }
@@ -104,6 +108,10 @@ MixedModel::MixedModel(const Mesh& mesh, AnyMaterial material, double inverse_bu
 }
 
 MixedModel::~MixedModel() = default;
+
+const ElementMaterials& MixedModel::element_materials() const {
+  return visit_elements([](const auto& e) -> const ElementMaterials& { return e.materials(); });
+}
 
 Vec MixedModel::create_vector() const { return distribution_->create_vector(); }
 
@@ -244,8 +252,12 @@ double MixedModel::local_reaction(int node, int k) const {
 }
 
 Vec3d MixedModel::reaction(const std::vector<int>& triangles) const {
+  return node_reaction(triangle_nodes(mesh_, triangles));
+}
+
+Vec3d MixedModel::node_reaction(const std::set<int>& nodes) const {
   Vec3d force = Vec3d::Zero();
-  for (int v : triangle_nodes(mesh_, triangles))
+  for (int v : nodes)
     for (int k = 0; k < 3; ++k) force[k] += local_reaction(v, k);
   distribution_->sum_over_ranks(force.data(), 3);
   return force;

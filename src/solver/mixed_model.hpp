@@ -27,6 +27,7 @@
 
 #include <array>
 #include <memory>
+#include <set>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -40,6 +41,7 @@
 #include "solver/assembly_status.hpp"
 #include "solver/distribution.hpp"
 #include "solver/dof_map.hpp"
+#include "solver/element_materials.hpp"
 #include "solver/element_policy.hpp"
 #include "solver/mini_element.hpp"
 #include "solver/taylor_hood_element.hpp"
@@ -67,6 +69,13 @@ class MixedModel {
              std::vector<ConstrainedComponent> constraints,
              std::vector<std::unique_ptr<ModelTerm>> terms = {},
              ElementFamily family = ElementFamily::mini);
+  /// The same with a material per element (several models by volume, rigid elements): the
+  /// constraints must hold every node of the rigid elements and the pressure of the nodes that
+  /// only rigid elements touch (they have no equation of their own).
+  MixedModel(const Mesh& mesh, ElementMaterials materials,
+             std::vector<ConstrainedComponent> constraints,
+             std::vector<std::unique_ptr<ModelTerm>> terms = {},
+             ElementFamily family = ElementFamily::mini);
 
   ~MixedModel();
   MixedModel(const MixedModel&) = delete;
@@ -77,6 +86,8 @@ class MixedModel {
   bool symmetric() const;
 
   const Mesh& mesh() const { return mesh_; }
+  /// The material of every element.
+  const ElementMaterials& element_materials() const;
   ElementFamily element_family() const { return family_; }
   const DofMap& dofs() const { return distribution_->dofs(); }
   int n_free() const { return dofs().n_free(); }
@@ -165,6 +176,8 @@ class MixedModel {
   /// Sum of the reaction forces on the constrained dofs of the nodes of `triangles` [N], from
   /// the last assemble_residual.
   Vec3d reaction(const std::vector<int>& triangles) const;
+  /// The same on the constrained dofs of `nodes` [N]. Collective.
+  Vec3d node_reaction(const std::set<int>& nodes) const;
 
   /// The reaction force at every node [N], 3 values a node (x, y, z): the residual on its
   /// constrained components from the last assemble_residual, zero on its free ones. Collective.

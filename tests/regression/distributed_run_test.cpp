@@ -195,6 +195,32 @@ TEST(DistributedRun, CapAndTractionsAreTheSameOnTwoRanks) {
     EXPECT_EQ(s1[key], s2[key]) << key;
 }
 
+// Regions (examples/sheet-patch-grips.yaml, coarsened): a patch of its own material, assembled by
+// whichever rank holds it, and two rigid grips whose elements no rank assembles and whose nodes
+// every rank constrains alike. Also what the example says: the grips' forces balance and the
+// stiff patch stretches less than the sheet beside it.
+TEST(DistributedRun, RegionsOfTheirOwnMaterialAndRigidGripsAreTheSameOnTwoRanks) {
+  const std::string args = " --set mesh.element_size=5 --set solver.steps=5";
+  const fs::path one = run("patch-grips", example("sheet-patch-grips.yaml"), args, 1);
+  const fs::path two = run("patch-grips", example("sheet-patch-grips.yaml"), args, 2);
+  expect_same_history(one, two, 1e-6);
+  const nlohmann::json s1 = read_json_file(one / "summary.json"),
+                       s2 = read_json_file(two / "summary.json");
+  for (const char* key : {"steps", "newton_iterations", "free_dofs", "completed"})
+    EXPECT_EQ(s1[key], s2[key]) << key;
+  const HistoryTable h = read_history(one / "history.csv");
+  ASSERT_FALSE(h.rows.empty());
+  const auto at_end = [&](const std::string& name) {
+    const auto k = std::find(h.columns.begin(), h.columns.end(), name);
+    EXPECT_NE(k, h.columns.end()) << name;
+    return k == h.columns.end() ? NAN : h.rows.back()[std::size_t(k - h.columns.begin())];
+  };
+  const double pull = at_end("force_x:right_grip");
+  EXPECT_GT(pull, 0.0) << "the moved grip pulls the sheet along +x";
+  EXPECT_NEAR(at_end("force_x:left_grip"), -pull, 1e-8 * pull) << "the grips balance";
+  EXPECT_LT(at_end("stretch_1:patch") - 1.0, 0.2 * (at_end("stretch_1:sheet") - 1.0));
+}
+
 TEST(DistributedRun, SelfContactAndContactPatchTestAreTheSameOnTwoRanks) {
   // The pillow's contact pairs change and its tangent's sparsity grows as the faces approach
   // (surface-contact.md, N4 and N6); every rank finds the same pairs from the same state.

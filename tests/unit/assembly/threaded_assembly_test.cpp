@@ -12,6 +12,7 @@
 // the bubbles need several local Newton iterations.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <random>
@@ -41,7 +42,9 @@ std::unique_ptr<TestModel> make_model(const std::string& name, std::vector<std::
   m->c = parse_case_file(std::string(PLISSE_SOURCE_DIR) + "/examples/" + name, overrides);
   m->mesh = load_case_mesh(m->c);
   app::ModelParts parts = app::build_model_parts(m->c, m->mesh);
-  parts.inverse_bulk_modulus = 0.0;  // exact incompressibility, whatever the case says
+  // Exact incompressibility, whatever the case says.
+  std::fill(parts.materials.inverse_bulk_moduli.begin(), parts.materials.inverse_bulk_moduli.end(),
+            0.0);
   m->model = app::make_model(m->mesh, std::move(parts));
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);

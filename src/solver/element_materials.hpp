@@ -1,0 +1,36 @@
+#pragma once
+/// The materials of a model's elements: one model for the whole body, or several assigned by
+/// volume tag (a fabric bag with a rubber bladder, a membrane on a stiffer base), and rigid
+/// elements, which the assembly skips: their nodes move with a prescribed rigid motion (the model
+/// builder constrains them), so they carry no unknowns of their own.
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include "material/registry.hpp"
+
+namespace plisse {
+
+struct ElementMaterials {
+  /// The material index of a rigid element.
+  static constexpr int kRigid = -1;
+
+  /// The models, and their 1/κ [1/MPa] (0: exactly incompressible), index by index.
+  std::vector<AnyMaterial> materials;
+  std::vector<double> inverse_bulk_moduli;
+  /// Per tetrahedron: its index into `materials`, or kRigid. Empty: every element has material 0.
+  std::vector<int> of_element;
+
+  /// Every element of one material.
+  static ElementMaterials uniform(AnyMaterial material, double inverse_bulk_modulus) {
+    ElementMaterials m;
+    m.materials.push_back(std::move(material));
+    m.inverse_bulk_moduli.push_back(inverse_bulk_modulus);
+    return m;
+  }
+  /// The material index of element e.
+  int of(int e) const { return of_element.empty() ? 0 : of_element[static_cast<std::size_t>(e)]; }
+  bool rigid(int e) const { return of(e) == kRigid; }
+};
+
+}  // namespace plisse
