@@ -66,23 +66,75 @@ std::vector<double> element_densities(const Case& c, const Mesh& mesh) {
   return density;
 }
 
+/// The surface frame of a generated shell of revolution at X: meridian, hoop and normal, unit and
+/// right-handed. The spherical shell is centred at the origin with its axis along y (normal X/|X|);
+/// the tube's axis is x (normal: away from the axis, the meridian along the axis). On the axis
+/// itself the hoop is undefined: the sphere's poles then take x as the hoop.
+Mat3d shell_frame(const std::string& kind, const Vec3d& X) {
+  const Vec3d axis = kind == "tube" ? Vec3d::UnitX() : Vec3d::UnitY();
+  const Vec3d away = kind == "tube" ? Vec3d(X - X.dot(axis) * axis) : X;
+  const Vec3d normal = away.normalized();
+  Vec3d hoop = axis.cross(normal);
+  hoop = hoop.norm() > 1e-12 ? hoop.normalized() : Vec3d::UnitX();
+  Mat3d frame;
+  frame.col(0) = hoop.cross(normal);  // meridian
+  frame.col(1) = hoop;
+  frame.col(2) = normal;
+  return frame;
+}
+
+/// `fibre_frame: shell`: every element of material `index` (a fibre-reinforced model whose
+/// section is `section`) gets its own copy with the fibre directions turned from the shell's
+/// (meridian, hoop, normal) frame at its centroid into x, y, z. Only generated spherical shells and
+/// tubes have that frame: anything else is an InputError at the key.
+void orient_fibres_on_the_shell(const Case& c, const MaterialSection& section, int index,
+                                const Mesh& mesh, ElementMaterials& m) {
+  const std::string kind = c.mesh.generate ? c.mesh.generate->kind : std::string("a mesh file");
+  if (kind != "spherical-shell" && kind != "tube")
+    throw InputError(section.fibre_frame_place,
+                     "fibre_frame: shell needs a generated spherical-shell or tube mesh, whose "
+                     "meridians and hoops plisse knows (this mesh: " +
+                         kind + "); give the directions in x, y, z with fibre_frame: global");
+  const FibreReinforced base = std::get<FibreReinforced>(m.materials[std::size_t(index)]);
+  const double bulk = m.inverse_bulk_moduli[std::size_t(index)];
+  if (m.of_element.empty()) m.of_element.assign(mesh.tets.size(), 0);
+  const Vec3d a1(base.a1_x, base.a1_y, base.a1_z), a2(base.a2_x, base.a2_y, base.a2_z);
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    if (m.of_element[t] != index) continue;
+    Vec3d centroid = Vec3d::Zero();
+    for (int v : mesh.tets[t]) centroid += mesh.nodes[std::size_t(v)] / 4.0;
+    const Mat3d frame = shell_frame(kind, centroid);
+    FibreReinforced oriented = base;
+    const Vec3d b1 = frame * a1, b2 = frame * a2;
+    oriented.a1_x = b1.x(), oriented.a1_y = b1.y(), oriented.a1_z = b1.z();
+    oriented.a2_x = b2.x(), oriented.a2_y = b2.y(), oriented.a2_z = b2.z();
+    m.of_element[t] = static_cast<int>(m.materials.size());
+    m.materials.push_back(oriented);
+    m.inverse_bulk_moduli.push_back(bulk);
+  }
+}
+
 /// The material of every element: the case's `material` for the tetrahedra in no region, each
 /// deformable region's own, ElementMaterials::kRigid for a rigid region's (check_case_against_mesh
 /// has checked the tags and that no tetrahedron is in two regions).
 ElementMaterials element_materials(const Case& c, const Mesh& mesh) {
   ElementMaterials m = ElementMaterials::uniform(make_material(c.material.model, c.material.params),
                                                  c.material.inverse_bulk_modulus());
-  if (c.regions.empty()) return m;
-  m.of_element.assign(mesh.tets.size(), 0);
+  std::vector<const MaterialSection*> sections = {&c.material};  // by material index
+  if (!c.regions.empty()) m.of_element.assign(mesh.tets.size(), 0);
   for (const Region& r : c.regions) {
     int index = ElementMaterials::kRigid;
     if (r.material) {
       index = static_cast<int>(m.materials.size());
       m.materials.push_back(make_material(r.material->model, r.material->params));
       m.inverse_bulk_moduli.push_back(r.material->inverse_bulk_modulus());
+      sections.push_back(&*r.material);
     }
     for (int t : region_tets(r, mesh)) m.of_element[static_cast<std::size_t>(t)] = index;
   }
+  for (std::size_t k = 0; k < sections.size(); ++k)
+    if (sections[k]->shell_fibre_frame)
+      orient_fibres_on_the_shell(c, *sections[k], static_cast<int>(k), mesh, m);
   return m;
 }
 

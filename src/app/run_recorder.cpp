@@ -134,7 +134,9 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
   for (std::size_t k = 0; k < materials.materials.size(); ++k) {
     const AnyMaterial& material = materials.materials[k];
     const MaterialModelInfo* info = find_material_model(material_name(material));
-    if (info == nullptr || !info->isotropic) continue;
+    // Past the sections' own models come per-element copies (fibres in a shell's frame), which
+    // are anisotropic.
+    if (info == nullptr || !info->isotropic || k >= regions.size()) continue;
     std::vector<StabilityRange> ranges = stability_ranges(material);
     if (std::any_of(ranges.begin(), ranges.end(), [](const StabilityRange& r) {
           return r.lower > kStabilityScanMin || r.upper < kStabilityScanMax;
@@ -259,10 +261,13 @@ void RunRecorder::write_step_files(const StepInfo& info, const std::vector<doubl
     cell_fields.push_back(make_scalar_field("wrinkle_state", state));
   }
   if (!case_.regions.empty()) {
-    const ElementMaterials& materials = model_.element_materials();
-    std::vector<double> index(static_cast<std::size_t>(model_.mesh().n_tets()));
-    for (std::size_t e = 0; e < index.size(); ++e)
-      index[e] = static_cast<double>(materials.of(static_cast<int>(e)));
+    // 0 the case's material, k the k-th region with a material, -1 a rigid region.
+    std::vector<double> index(static_cast<std::size_t>(model_.mesh().n_tets()), 0.0);
+    int k = 0;
+    for (const Region& r : case_.regions) {
+      const double value = r.rigid ? -1.0 : double(++k);
+      for (int t : region_tets(r, model_.mesh())) index[static_cast<std::size_t>(t)] = value;
+    }
     cell_fields.push_back(make_scalar_field("material", index));
   }
   write_step_vtu(directory_.directory() / name, case_, model_, fields_, columns_.wall_thickness(),

@@ -376,6 +376,24 @@ Schema<MaterialSection> material_schema() {
       });
   s.real("density", &MaterialSection::density, Range::non_negative(), "tonne/mm³",
          "needed (> 0) by gravity loads");
+  s.add({"fibre_frame",
+         case_detail::doc_choice({"global", "shell"}),
+         "–",
+         "",
+         "`global`",
+         {},
+         "the frame of a fibre-reinforced model's directions `a1_*`, `a2_*`: global (x, y, z), "
+         "or shell: each element's (meridian, hoop, normal) on a generated spherical shell "
+         "(axis y) or tube (axis x), so `a1_x: 1` runs along the meridians (the tube's axis) and "
+         "`a1_y: 1` around the circumference"},
+        [](const Field& f, MaterialSection& m, ReadContext&) {
+          m.shell_fibre_frame = f.choice(
+              std::vector<std::pair<std::string, bool>>{{"global", false}, {"shell", true}});
+          m.fibre_frame_place = f.place();
+          if (m.model != "fibre-reinforced")
+            f.fail_at_key("fibre_frame applies only to model 'fibre-reinforced' (got '" + m.model +
+                          "')");
+        });
   s.rule("`bulk_modulus` is required with `incompressibility: nearly` and refused with `exact`",
          nullptr);
   s.rule(

@@ -60,6 +60,10 @@ struct MaterialSection {
   bool exact_incompressibility = true;  ///< `incompressibility: exact | nearly`
   double bulk_modulus = 0.0;            ///< [MPa], > 0, required when nearly incompressible
   double density = 0.0;                 ///< [tonne/mm^3], >= 0 (gravity loads)
+  /// `fibre_frame: shell`: a fibre-reinforced model's directions are given in each element's
+  /// surface frame (meridian, hoop, normal) of a generated spherical shell or tube, not in x, y, z.
+  bool shell_fibre_frame = false;
+  InputPlace fibre_frame_place;
   InputPlace place;
   /// 1/κ [1/MPa] as the mixed formulation takes it: 0 for exact incompressibility.
   double inverse_bulk_modulus() const { return exact_incompressibility ? 0.0 : 1.0 / bulk_modulus; }
