@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <set>
 
 #include "analysis/point_location.hpp"
@@ -29,16 +30,24 @@ std::string mesh_name(const Case& c) {
   return "the generated " + (c.mesh.generate ? c.mesh.generate->kind : std::string()) + " mesh";
 }
 
-std::string tag_list(const Mesh& mesh) {
-  if (mesh.surface_tags.empty())
-    return "the mesh has no surface tags (Gmsh physical groups of dimension 2)";
-  std::string out = "available surface tags: ";
+/// "available surface tags: a (12 triangles), ..." for `tags` of the given `kind` ("surface",
+/// "volume"), whose members are `items` ("triangles") and Gmsh groups of dimension `dim`.
+std::string tag_list(const std::map<std::string, std::vector<int>>& tags, const std::string& kind,
+                     const std::string& items, int dim) {
+  if (tags.empty())
+    return "the mesh has no " + kind + " tags (Gmsh physical groups of dimension " +
+           std::to_string(dim) + ")";
+  std::string out = "available " + kind + " tags: ";
   bool first = true;
-  for (const auto& [name, triangles] : mesh.surface_tags) {
-    out += (first ? "" : ", ") + name + " (" + std::to_string(triangles.size()) + " triangles)";
+  for (const auto& [name, members] : tags) {
+    out += (first ? "" : ", ") + name + " (" + std::to_string(members.size()) + " " + items + ")";
     first = false;
   }
   return out;
+}
+
+std::string tag_list(const Mesh& mesh) {
+  return tag_list(mesh.surface_tags, "surface", "triangles", 2);
 }
 
 void check_surface(const Case& c, const Mesh& mesh, const SurfaceRef& ref) {
@@ -57,15 +66,7 @@ void check_surface(const Case& c, const Mesh& mesh, const SurfaceRef& ref) {
 }
 
 std::string volume_tag_list(const Mesh& mesh) {
-  if (mesh.volume_tags.empty())
-    return "the mesh has no volume tags (Gmsh physical groups of dimension 3)";
-  std::string out = "available volume tags: ";
-  bool first = true;
-  for (const auto& [name, tets] : mesh.volume_tags) {
-    out += (first ? "" : ", ") + name + " (" + std::to_string(tets.size()) + " tetrahedra)";
-    first = false;
-  }
-  return out;
+  return tag_list(mesh.volume_tags, "volume", "tetrahedra", 3);
 }
 
 /// Every region names a non-empty volume tag or a box holding tetrahedra, no tetrahedron is in

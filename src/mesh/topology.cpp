@@ -58,30 +58,31 @@ std::vector<BoundaryFace> compute_boundary_faces(const Mesh& mesh) {
   return faces;
 }
 
-std::set<int> triangle_nodes(const Mesh& mesh, const std::vector<int>& triangles) {
+namespace {
+/// The corners of elements `elements` of `corners` and, on a second-order mesh, their nodes of
+/// `edge_nodes` (`what` names the element in the error for a missing list).
+template <class Corners, class EdgeNodes>
+std::set<int> nodes_of(const Mesh& mesh, const std::vector<int>& elements, const Corners& corners,
+                       const EdgeNodes& edge_nodes, const char* what) {
   std::set<int> nodes;
-  for (int t : triangles) {
-    for (int v : mesh.triangles[t]) nodes.insert(v);
+  for (int e : elements) {
+    for (int v : corners[static_cast<std::size_t>(e)]) nodes.insert(v);
     if (mesh.order() == 2) {
-      FE_CHECK(static_cast<std::size_t>(t) < mesh.triangle_edge_nodes.size(),
-               "triangle " << t << " of the second-order mesh has no edge nodes");
-      for (int v : mesh.triangle_edge_nodes[t]) nodes.insert(v);
+      FE_CHECK(static_cast<std::size_t>(e) < edge_nodes.size(),
+               what << " " << e << " of the second-order mesh has no edge nodes");
+      for (int v : edge_nodes[static_cast<std::size_t>(e)]) nodes.insert(v);
     }
   }
   return nodes;
 }
+}  // namespace
+
+std::set<int> triangle_nodes(const Mesh& mesh, const std::vector<int>& triangles) {
+  return nodes_of(mesh, triangles, mesh.triangles, mesh.triangle_edge_nodes, "triangle");
+}
 
 std::set<int> tet_nodes(const Mesh& mesh, const std::vector<int>& tets) {
-  std::set<int> nodes;
-  for (int t : tets) {
-    for (int v : mesh.tets[t]) nodes.insert(v);
-    if (mesh.order() == 2) {
-      FE_CHECK(static_cast<std::size_t>(t) < mesh.tet_edge_nodes.size(),
-               "tetrahedron " << t << " of the second-order mesh has no edge nodes");
-      for (int v : mesh.tet_edge_nodes[t]) nodes.insert(v);
-    }
-  }
-  return nodes;
+  return nodes_of(mesh, tets, mesh.tets, mesh.tet_edge_nodes, "tetrahedron");
 }
 
 int nearest_node(const Mesh& mesh, const Vec3d& point) {
