@@ -89,6 +89,10 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--resume", options->resume_directory,
                   "Continue an interrupted run from DIR/checkpoint.bin (same case and --set "
                   "values; DIR is also the output directory)");
+  cmd->add_option("--from", options->from_directory,
+                  "Start from the last converged state of the run in DIR (its checkpoint.bin) "
+                  "under this case's loads, in a new run directory: a second load step, e.g. "
+                  "unloading, on the same mesh and element");
   cmd->add_flag("--overwrite", options->overwrite,
                 "Replace the earlier run in the output directory (its files are removed once the "
                 "case has passed every check); without it, such a directory is refused");

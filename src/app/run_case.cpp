@@ -125,6 +125,7 @@ struct PreparedRun {
   fs::path out_dir;
   const RunFingerprint& fingerprint;
   const std::optional<Checkpoint>& checkpoint;
+  const std::optional<Checkpoint>& from;  ///< --from: the earlier run's last state
   const Mesh& mesh;
   double time_mesh;
   ModelParts parts;
@@ -252,6 +253,14 @@ void solve_and_write(PreparedRun run) {
   RunRecorder recorder(c, dir, {run.options.case_file, run.options.overrides, run.fingerprint},
                        *model, stepper, wrinkle_meter ? &*wrinkle_meter : nullptr,
                        checkpoint ? &*checkpoint : nullptr);
+  if (run.from) {
+    // A second load step: the nodal values and the elements' internal state carry over; the
+    // terms (loads, cavities, dies, contacts, caps) and the clock start afresh from this case.
+    model->continue_from(run.from->state, run.from->bubbles);
+    log.info("starting from the last state of " + run.options.from_directory + " (step " +
+             std::to_string(run.from->steps) + " at t = " + std::to_string(run.from->time) +
+             "); this case's time starts at 0");
+  }
   if (checkpoint)
     log.info("resuming after step " + std::to_string(checkpoint->steps) +
              " at t = " + std::to_string(checkpoint->time));
@@ -357,6 +366,31 @@ void run_case(const RunOptions& options) {
                            : options.output_directory.empty()
                                ? fs::path("runs") / fs::path(options.case_file).stem()
                                : fs::path(options.output_directory);
+  std::optional<Checkpoint> from;
+  const InputPlace from_place{"command line", 0, 0, "--from"};
+  if (!options.from_directory.empty()) {
+    if (!options.resume_directory.empty())
+      throw InputError(from_place,
+                       "--from starts a new run from a finished one, --resume continues an "
+                       "interrupted run in its own directory: give one of them");
+    const fs::path file = fs::path(options.from_directory) / "checkpoint.bin";
+    try {
+      from = read_checkpoint(file);
+    } catch (const InputError& e) {
+      throw InputError({file.string(), 0, 0, "--from"}, e.rule());
+    }
+    if (from->element != c.element)
+      throw InputError({file.string(), 0, 0, "--from"},
+                       "the run in " + options.from_directory +
+                           " used `element: " + to_string(from->element) +
+                           "`, this case has `element: " + to_string(c.element) +
+                           "`; a second step keeps the element family");
+    if (!options.output_directory.empty() && fs::weakly_canonical(options.from_directory) ==
+                                                 fs::weakly_canonical(options.output_directory))
+      throw InputError(from_place,
+                       "the second step writes a new run directory: -o must differ from --from, "
+                       "whose run stays as it is");
+  }
   std::optional<Checkpoint> checkpoint;
   if (!options.resume_directory.empty()) {
     checkpoint = read_checkpoint(out_dir / "checkpoint.bin");
@@ -385,6 +419,13 @@ void run_case(const RunOptions& options) {
                            "or start a new run");
   }
 
+  if (from && from->fingerprint.geometry != fingerprint.geometry)
+    throw InputError(
+        {(fs::path(options.from_directory) / "checkpoint.bin").string(), 0, 0, "--from"},
+        "the run in " + options.from_directory +
+            " solved another mesh (its nodes or their coordinates differ from this "
+            "case's): a second step needs the same mesh");
+
   // Everything that can be rejected is checked before the run directory is touched.
   ModelParts parts = build_model_parts(c, mesh);
   check_rigid_pieces(c, mesh, parts.constraints);
@@ -402,7 +443,7 @@ void run_case(const RunOptions& options) {
   // (on_every_rank_alike); anything else on one rank would leave the others waiting in a
   // collective call, so it ends the whole job.
   try {
-    solve_and_write({options, c, t_start, out_dir, fingerprint, checkpoint, mesh, time_mesh,
+    solve_and_write({options, c, t_start, out_dir, fingerprint, checkpoint, from, mesh, time_mesh,
                      std::move(parts), interrupts, describe(threads)});
   } catch (const InputError&) {
     throw;

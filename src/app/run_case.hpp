@@ -13,8 +13,10 @@ struct RunOptions {
   std::vector<std::string> overrides;      ///< --set key.path=value
   std::vector<std::string> petsc_options;  ///< --petsc "-snes_monitor ..."
   std::string resume_directory;            ///< --resume DIR: continue from DIR/checkpoint.bin
-  bool overwrite = false;                  ///< --overwrite: replace an earlier run in the directory
-  int ranks = 0;                           ///< -n N: MPI ranks (run under mpiexec); 0: not given
+  /// --from DIR: start from the last state of the run in DIR (a second step with this case's loads)
+  std::string from_directory;
+  bool overwrite = false;  ///< --overwrite: replace an earlier run in the directory
+  int ranks = 0;           ///< -n N: MPI ranks (run under mpiexec); 0: not given
 };
 
 /// Checks the PETSc options of the case (solver.petsc_options) and of the command line (--petsc)

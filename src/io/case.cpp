@@ -588,11 +588,13 @@ Schema<Load> load_schema() {
          [](const FieldMap& m, const Load& load, const ReadContext&) {
            if (load.type == LoadType::point_force && !load.force) m.require("force");
          });
-  s.rule("a gravity load needs `material.density` > 0",
+  s.rule("a gravity load needs `material.density` > 0, or a region's",
          [](const FieldMap& m, const Load& load, const ReadContext& context) {
            if (load.type == LoadType::gravity && !(context.density > 0.0))
-             m.require("type").fail("a gravity load needs material.density > 0 (got " +
-                                    format_number(context.density) + ")");
+             m.require("type").fail(
+                 "a gravity load needs material.density > 0, or a region's material with a "
+                 "density (got " +
+                 format_number(context.density) + ")");
          });
   return s;
 }
@@ -904,9 +906,10 @@ Schema<Region> region_schema() {
          "the region's model and parameters, with the keys of the case's `material` (model, "
          "parameters, incompressibility, bulk_modulus, density)"},
         [](const Field& f, Region& r, ReadContext& context) {
-          const double density = context.density;  // the case's, for its gravity-load rule
+          // The largest density of the body, for the gravity-load rule.
+          const double density = context.density;
           r.material = read_material(f, context);
-          context.density = density;
+          context.density = std::max(density, r.material->density);
         });
   s.boolean("rigid", &Region::rigid,
             "the region moves as a rigid body with the prescribed `displacement`: its elements "

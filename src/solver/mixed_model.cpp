@@ -212,6 +212,20 @@ void MixedModel::restore(const Snapshot& s) {
   refresh_couplings();
 }
 
+void MixedModel::continue_from(std::span<const double> state, std::span<const double> internal) {
+  const std::size_t nodal = static_cast<std::size_t>(DofMap::kPerNode) * mesh_.n_nodes();
+  const std::size_t n_internal =
+      visit_elements([](const auto& e) { return e.n_internal_values(); });
+  FE_CHECK(state.size() >= nodal && internal.size() == n_internal,
+           "the earlier run's state does not fit this model ("
+               << state.size() << " values for " << nodal << " nodal values, " << internal.size()
+               << " internal for " << n_internal << ")");
+  std::copy_n(state.begin(), nodal, state_.begin());
+  visit_elements([&](auto& e) { e.restore(internal); });
+  set_time(time_);
+  save_converged();
+}
+
 void MixedModel::save_converged() {
   converged_state_ = state_;
   visit_elements([](auto& e) { e.save_converged(); });

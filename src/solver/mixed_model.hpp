@@ -28,6 +28,7 @@
 #include <array>
 #include <memory>
 #include <set>
+#include <span>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -171,6 +172,12 @@ class MixedModel {
   /// Remember / return to the last converged state (state and the elements' bubbles).
   void save_converged();
   void restore_converged();
+  /// Starts from another run's converged state on the same mesh and element: its nodal values
+  /// (the first kPerNode * n_nodes of `state`) and the elements' internal state `internal`; the
+  /// terms' unknowns keep their start values, the constrained components take this model's
+  /// values at the current time, and the result is the converged state. Throws plisse::Error when
+  /// the sizes do not fit.
+  void continue_from(std::span<const double> state, std::span<const double> internal);
   const std::vector<double>& converged_state() const { return converged_state_; }
 
   /// Sum of the reaction forces on the constrained dofs of the nodes of `triangles` [N], from

@@ -144,6 +144,30 @@ TEST(Regions, TwoModelsSideBySideCarryTheSumOfTheirUniaxialForces) {
   }
 }
 
+// --- Weight ----------------------------------------------------------------------------------
+
+// A 1 x 1 x 2 mm column on a clamped base, its upper half a region twice as dense (and stiffer):
+// gravity weighs every element with its own density, so the base carries the whole weight,
+// g (ρ1 V1 + ρ2 V2), exactly (the consistent nodal forces sum to each element's weight).
+TEST(Regions, GravityWeighsEachRegionWithItsOwnDensity) {
+  const auto dir = test::scratch_directory("regions-weight");
+  const fs::path mesh = write_tagged_box(dir, {1.0, 1.0, 2.0}, {2, 2, 4}, 1, 2, 1.0, "upper");
+  const HistoryTable h =
+      run_case_text(dir, "element: mini\nmesh: {file: " + mesh.string() +
+                             "}\n"
+                             "material: {model: neo-hookean, c1: 0.2, density: 1.0e-9}\n"
+                             "regions: [{volume: upper, material: {model: neo-hookean, c1: 0.4,"
+                             " density: 2.0e-9}}]\n"
+                             "boundary: [{type: fixed, name: base, surface: bottom}]\n"
+                             "loads: [{type: gravity, name: g, acceleration: [0, 0, -9810]}]\n"
+                             "solver:\n  steps: 1\n" +
+                             std::string(kNewton));
+  ASSERT_EQ(h.rows.size(), 1u);
+  const double weight = 9810.0 * (1.0e-9 * 1.0 + 2.0e-9 * 1.0);  // [N], 1 mm^3 of each
+  EXPECT_NEAR(h.rows.back()[history_column(h, "force_z:base")], weight, 1e-9 * weight)
+      << "the base holds the column up";
+}
+
 // --- A rigid end ----------------------------------------------------------------------------
 
 /// A bar 2 x 1 x 1 mm pulled by 1 mm along x with its end face held laterally: either as a
