@@ -1,6 +1,7 @@
 #include "app/model_builder.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -67,33 +68,40 @@ std::vector<double> element_densities(const Case& c, const Mesh& mesh) {
 }
 
 /// The surface frame of a generated shell of revolution at X: meridian, hoop and normal, unit and
-/// right-handed. The spherical shell is centred at the origin with its axis along y (normal X/|X|);
-/// the tube's axis is x (normal: away from the axis, the meridian along the axis). On the axis
-/// itself the hoop is undefined: the sphere's poles then take x as the hoop.
-Mat3d shell_frame(const std::string& kind, const Vec3d& X) {
-  const Vec3d axis = kind == "tube" ? Vec3d::UnitX() : Vec3d::UnitY();
-  const Vec3d away = kind == "tube" ? Vec3d(X - X.dot(axis) * axis) : X;
-  const Vec3d normal = away.normalized();
+/// right-handed, about the axis y (spherical shell, airbag) or x (tube) through the origin. The
+/// normal is the gradient of the mid-surface's equation at X: X/|X| on the sphere, the direction
+/// away from the axis on the tube, (x/a², y/b², z/a²) on the airbag's spheroid of equatorial
+/// radius a and half-height b. On the axis itself the hoop is undefined: the poles then take x as
+/// the hoop.
+Mat3d shell_frame(const MeshGenerationSpec& shell, const Vec3d& X) {
+  const Vec3d axis = shell.kind == "tube" ? Vec3d::UnitX() : Vec3d::UnitY();
+  Vec3d normal = X;
+  if (shell.kind == "tube") normal = X - X.dot(axis) * axis;
+  if (shell.kind == "airbag") {
+    const double a2 = shell.radius * shell.radius, b2 = 0.25 * shell.height * shell.height;
+    normal = Vec3d(X.x() / a2, X.y() / b2, X.z() / a2);
+  }
+  normal.normalize();
   Vec3d hoop = axis.cross(normal);
   hoop = hoop.norm() > 1e-12 ? hoop.normalized() : Vec3d::UnitX();
   Mat3d frame;
-  frame.col(0) = hoop.cross(normal);  // meridian
+  frame.col(0) = hoop.cross(normal).normalized();  // meridian
   frame.col(1) = hoop;
-  frame.col(2) = normal;
+  frame.col(2) = frame.col(0).cross(hoop);  // the normal, made orthogonal to the hoop
   return frame;
 }
 
 /// `fibre_frame: shell`: every element of material `index` (a fibre-reinforced model whose
 /// section is `section`) gets its own copy with the fibre directions turned from the shell's
-/// (meridian, hoop, normal) frame at its centroid into x, y, z. Only generated spherical shells and
-/// tubes have that frame: anything else is an InputError at the key.
+/// (meridian, hoop, normal) frame at its centroid into x, y, z. Only generated spherical shells,
+/// airbags and tubes have that frame: anything else is an InputError at the key.
 void orient_fibres_on_the_shell(const Case& c, const MaterialSection& section, int index,
                                 const Mesh& mesh, ElementMaterials& m) {
   const std::string kind = c.mesh.generate ? c.mesh.generate->kind : std::string("a mesh file");
-  if (kind != "spherical-shell" && kind != "tube")
+  if (kind != "spherical-shell" && kind != "tube" && kind != "airbag")
     throw InputError(section.fibre_frame_place,
-                     "fibre_frame: shell needs a generated spherical-shell or tube mesh, whose "
-                     "meridians and hoops plisse knows (this mesh: " +
+                     "fibre_frame: shell needs a generated spherical-shell, airbag or tube mesh, "
+                     "whose meridians and hoops plisse knows (this mesh: " +
                          kind + "); give the directions in x, y, z with fibre_frame: global");
   const FibreReinforced base = std::get<FibreReinforced>(m.materials[std::size_t(index)]);
   const double bulk = m.inverse_bulk_moduli[std::size_t(index)];
@@ -103,7 +111,7 @@ void orient_fibres_on_the_shell(const Case& c, const MaterialSection& section, i
     if (m.of_element[t] != index) continue;
     Vec3d centroid = Vec3d::Zero();
     for (int v : mesh.tets[t]) centroid += mesh.nodes[std::size_t(v)] / 4.0;
-    const Mat3d frame = shell_frame(kind, centroid);
+    const Mat3d frame = shell_frame(*c.mesh.generate, centroid);
     FibreReinforced oriented = base;
     const Vec3d b1 = frame * a1, b2 = frame * a2;
     oriented.a1_x = b1.x(), oriented.a1_y = b1.y(), oriented.a1_z = b1.z();

@@ -383,9 +383,9 @@ Schema<MaterialSection> material_schema() {
          "`global`",
          {},
          "the frame of a fibre-reinforced model's directions `a1_*`, `a2_*`: global (x, y, z), "
-         "or shell: each element's (meridian, hoop, normal) on a generated spherical shell "
-         "(axis y) or tube (axis x), so `a1_x: 1` runs along the meridians (the tube's axis) and "
-         "`a1_y: 1` around the circumference"},
+         "or shell: each element's (meridian, hoop, normal) on a generated spherical shell or "
+         "airbag (axis y) or tube (axis x), so `a1_x: 1` runs along the meridians (the tube's "
+         "axis) and `a1_y: 1` around the circumference"},
         [](const Field& f, MaterialSection& m, ReadContext&) {
           m.shell_fibre_frame = f.choice(
               std::vector<std::pair<std::string, bool>>{{"global", false}, {"shell", true}});

@@ -61,7 +61,8 @@ struct MaterialSection {
   double bulk_modulus = 0.0;            ///< [MPa], > 0, required when nearly incompressible
   double density = 0.0;                 ///< [tonne/mm^3], >= 0 (gravity loads)
   /// `fibre_frame: shell`: a fibre-reinforced model's directions are given in each element's
-  /// surface frame (meridian, hoop, normal) of a generated spherical shell or tube, not in x, y, z.
+  /// surface frame (meridian, hoop, normal) of a generated spherical shell, airbag or tube, not in
+  /// x, y, z.
   bool shell_fibre_frame = false;
   InputPlace fibre_frame_place;
   InputPlace place;

@@ -6,11 +6,14 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "app/wrinkling.hpp"
 #include "io/case.hpp"
+#include "material/fibre_reinforced.hpp"
 #include "mesh/generate.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "physics/model_term.hpp"
@@ -135,6 +138,63 @@ TEST(ModelBuilder, NodesWithinRoundingOfASymmetryPlaneArePutOnIt) {
   EXPECT_EQ(off.nodes[moved].x(), 5e-8);
   EXPECT_FALSE(build_model_parts(c, off).terms[0]->symmetric());
   std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace plisse::app
+
+namespace plisse::app {
+namespace {
+
+/// The unit fibre directions of every element of `parts` (a fibre-reinforced case).
+std::vector<FibreReinforced::Fibres> element_fibres(const ModelParts& parts, const Mesh& mesh) {
+  std::vector<FibreReinforced::Fibres> fibres;
+  for (int e = 0; e < mesh.n_tets(); ++e)
+    fibres.push_back(
+        std::get<FibreReinforced>(parts.materials.materials[std::size_t(parts.materials.of(e))])
+            .fibres());
+  return fibres;
+}
+
+// `fibre_frame: shell` on the generated airbag (axis y; docs/theory/materials.md, F6), an oblate
+// spheroid of radius a = 50 and half-height b = 10 mm: the hoop family runs around the axis and
+// the meridian family lies in the element's meridional plane (to round-off); on the flat faces
+// (r < 20 mm) the meridian runs along the radius within the spheroid's slope there,
+// r b² / (a² y) < 0.09 rad; at the rim's equator (y < 1 mm), where the spheroid is steeper than
+// 45° (y < r b² / a² = 2 mm), it runs more along the axis than along the radius.
+TEST(ModelBuilder, AirbagFibresInTheShellFrameFollowItsMeridiansAndHoops) {
+  const Case c = parse_case_string(
+      "element: mini\n"
+      "mesh: {generate: airbag, radius: 50, height: 20, thickness: 1, layers: 1,"
+      " element_size: 2.5, symmetry: octant}\n"
+      "material: {model: fibre-reinforced, c1: 0.1, k1: 1, k2: 0.5, a1_x: 1, a2_y: 1,"
+      " fibre_frame: shell}\n",
+      "airbag.yaml");
+  const Mesh mesh = load_case_mesh(c);
+  const ModelParts parts = build_model_parts(c, mesh);
+  const std::vector<FibreReinforced::Fibres> fibres = element_fibres(parts, mesh);
+  int flat = 0, rim = 0;
+  for (int e = 0; e < mesh.n_tets(); ++e) {
+    Vec3d X = Vec3d::Zero();
+    for (int v : mesh.tets[std::size_t(e)]) X += mesh.nodes[std::size_t(v)] / 4.0;
+    const Vec3d radial = Vec3d(X.x(), 0.0, X.z()).normalized();
+    const Vec3d around = Vec3d::UnitY().cross(radial);
+    const Vec3d meridian = fibres[std::size_t(e)].a[0], hoop = fibres[std::size_t(e)].a[1];
+    ASSERT_EQ(fibres[std::size_t(e)].n, 2);
+    EXPECT_NEAR(std::abs(hoop.dot(around)), 1.0, 1e-12) << "element " << e;
+    EXPECT_LT(std::abs(meridian.dot(around)), 1e-12) << "element " << e;
+    EXPECT_LT(std::abs(meridian.dot(hoop)), 1e-12);
+    if (std::hypot(X.x(), X.z()) < 20.0) {  // the flat top and bottom
+      ++flat;
+      EXPECT_GT(std::abs(meridian.dot(radial)), std::cos(0.09)) << "element " << e;
+    }
+    if (std::abs(X.y()) < 1.0 && std::hypot(X.x(), X.z()) > 48.0) {  // the rim's equator
+      ++rim;
+      EXPECT_GT(std::abs(meridian.y()), std::abs(meridian.dot(radial))) << "element " << e;
+    }
+  }
+  EXPECT_GT(flat, 10);
+  EXPECT_GT(rim, 3);
 }
 
 }  // namespace
