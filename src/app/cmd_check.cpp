@@ -52,6 +52,8 @@ std::string material_line(const MaterialSection& m) {
              ? "; exactly incompressible"
              : "; nearly incompressible, bulk modulus " + number(m.bulk_modulus) + " MPa";
   if (m.density > 0.0) out += "; density " + number(m.density) + " tonne/mm^3";
+  if (m.shell_fibre_frame)
+    out += "; fibre directions in each element's (meridian, hoop, normal) frame";
   return out;
 }
 
