@@ -166,10 +166,15 @@ void add_rigid_constraints(const Case& c, const Mesh& mesh, const ElementMateria
       return std::abs(a.at(t) - b.at(t)) <= 1e-12 * (1.0 + std::abs(a.value) + std::abs(b.value));
     });
   };
+  std::vector<char> deformable(static_cast<std::size_t>(mesh.n_nodes()), 0);
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+    if (!materials.rigid(static_cast<int>(t)))
+      for (int v : mesh.tets[t]) deformable[static_cast<std::size_t>(v)] = 1;
   const char* axes = "xyz";
   for (const Region& r : c.regions) {
     if (!r.rigid) continue;
-    for (int v : tet_nodes(mesh, region_tets(r, mesh))) {
+    const std::vector<int> tets = region_tets(r, mesh);
+    for (int v : tet_nodes(mesh, tets)) {
       for (int k = 0; k < 3; ++k) {
         const ConstrainedComponent cc{v, k, r.displacement[k], r.ramp};
         const auto [it, added] = existing.try_emplace({v, k}, constraints.size());
@@ -187,14 +192,7 @@ void add_rigid_constraints(const Case& c, const Mesh& mesh, const ElementMateria
         }
       }
     }
-  }
-  std::vector<char> deformable(static_cast<std::size_t>(mesh.n_nodes()), 0);
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
-    if (!materials.rigid(static_cast<int>(t)))
-      for (int v : mesh.tets[t]) deformable[static_cast<std::size_t>(v)] = 1;
-  for (const Region& r : c.regions) {
-    if (!r.rigid) continue;
-    for (int t : region_tets(r, mesh))
+    for (int t : tets)
       for (int v : mesh.tets[static_cast<std::size_t>(t)])
         if (!deformable[static_cast<std::size_t>(v)]) {
           deformable[static_cast<std::size_t>(v)] = 1;  // once

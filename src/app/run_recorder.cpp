@@ -127,21 +127,34 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
       previous_state_(model.state()) {
   // Drucker's condition in principal stretches holds for isotropic models only. The model's
   // materials are the case's `material`, then one per deformable region in the case's order.
+  // Past the sections' own models come only per-element copies (fibres in a shell's frame),
+  // which are anisotropic.
   const ElementMaterials& materials = model.element_materials();
   std::vector<std::string> regions = {""};
   for (const Region& r : c.regions)
     if (r.material) regions.push_back(r.label());
-  for (std::size_t k = 0; k < materials.materials.size(); ++k) {
+  watch_of_material_.assign(regions.size(), -1);
+  for (std::size_t k = 0; k < regions.size(); ++k) {
     const AnyMaterial& material = materials.materials[k];
     const MaterialModelInfo* info = find_material_model(material_name(material));
-    // Past the sections' own models come per-element copies (fibres in a shell's frame), which
-    // are anisotropic.
-    if (info == nullptr || !info->isotropic || k >= regions.size()) continue;
+    if (info == nullptr || !info->isotropic) continue;
     std::vector<StabilityRange> ranges = stability_ranges(material);
-    if (std::any_of(ranges.begin(), ranges.end(), [](const StabilityRange& r) {
+    if (std::none_of(ranges.begin(), ranges.end(), [](const StabilityRange& r) {
           return r.lower > kStabilityScanMin || r.upper < kStabilityScanMax;
         }))
-      watched_.push_back({static_cast<int>(k), regions.at(k), material, std::move(ranges)});
+      continue;
+    watch_of_material_[k] = static_cast<int>(watched_.size());
+    watched_.push_back({regions[k], material, std::move(ranges)});
+  }
+  if (!c.regions.empty()) {
+    // 0 the case's material, k the k-th region with a material, -1 a rigid region.
+    material_field_.assign(static_cast<std::size_t>(model.mesh().n_tets()), 0.0);
+    int k = 0;
+    for (const Region& r : c.regions) {
+      const double value = r.rigid ? -1.0 : double(++k);
+      for (int t : region_tets(r, model.mesh()))
+        material_field_[static_cast<std::size_t>(t)] = value;
+    }
   }
   // Rank 0 writes the files, every rank checks them on --resume: a failure is agreed by all.
   on_every_rank_alike([&] {
@@ -216,16 +229,15 @@ void RunRecorder::check_material_stability(int step) {
   // Every rank checks every element alike (element_deformation_gradients covers the whole mesh).
   const std::vector<Mat3d> F = model_.element_deformation_gradients();
   const ElementMaterials& materials = model_.element_materials();
-  std::vector<const AnyMaterial*> watched(materials.materials.size(), nullptr);
-  for (const WatchedMaterial& w : watched_)
-    watched[static_cast<std::size_t>(w.index)] = &w.material;
   int unstable = 0, first = -1;
   Vec3d first_stretches = Vec3d::Ones();
   for (std::size_t e = 0; e < F.size(); ++e) {
     const int m = materials.of(static_cast<int>(e));
-    if (m == ElementMaterials::kRigid || watched[static_cast<std::size_t>(m)] == nullptr) continue;
+    if (m < 0 || m >= static_cast<int>(watch_of_material_.size())) continue;  // rigid, or a copy
+    const int w = watch_of_material_[static_cast<std::size_t>(m)];
+    if (w < 0) continue;
     const Vec3d l = principal_stretches(F[e]);
-    if (drucker_stable(*watched[static_cast<std::size_t>(m)], l)) continue;
+    if (drucker_stable(watched_[static_cast<std::size_t>(w)].material, l)) continue;
     if (unstable++ == 0) first = static_cast<int>(e), first_stretches = l;
   }
   unstable_elements_ = unstable;
@@ -260,16 +272,8 @@ void RunRecorder::write_step_files(const StepInfo& info, const std::vector<doubl
       state[e] = static_cast<double>(last_wrinkles_->tension.element_state[e]);
     cell_fields.push_back(make_scalar_field("wrinkle_state", state));
   }
-  if (!case_.regions.empty()) {
-    // 0 the case's material, k the k-th region with a material, -1 a rigid region.
-    std::vector<double> index(static_cast<std::size_t>(model_.mesh().n_tets()), 0.0);
-    int k = 0;
-    for (const Region& r : case_.regions) {
-      const double value = r.rigid ? -1.0 : double(++k);
-      for (int t : region_tets(r, model_.mesh())) index[static_cast<std::size_t>(t)] = value;
-    }
-    cell_fields.push_back(make_scalar_field("material", index));
-  }
+  if (!material_field_.empty())
+    cell_fields.push_back(make_scalar_field("material", material_field_));
   write_step_vtu(directory_.directory() / name, case_, model_, fields_, columns_.wall_thickness(),
                  step_start, info.dt, point_fields, cell_fields);
   on_every_rank_alike([&] {

@@ -75,8 +75,7 @@ class RunRecorder {
   /// equibiaxial or planar test. Every recorded step checks Drucker's condition at the state of
   /// each element of it (its mean deformation's principal stretches).
   struct WatchedMaterial {
-    int index = 0;       ///< in the model's ElementMaterials
-    std::string region;  ///< the region's volume tag; empty for the case's `material`
+    std::string region;  ///< the region's label (volume tag); empty for the case's `material`
     AnyMaterial material;
     std::vector<StabilityRange> ranges;  ///< per test
   };
@@ -116,6 +115,11 @@ class RunRecorder {
   nlohmann::json instabilities_ = nlohmann::json::array();
   StepInfo last_step_;
   std::vector<WatchedMaterial> watched_;
+  /// Per material index of the case's sections (the case's `material`, then the deformable
+  /// regions'): its entry in watched_, or -1.
+  std::vector<int> watch_of_material_;
+  /// The step files' `material` cell field, made once; empty for a case without regions.
+  std::vector<double> material_field_;
   int first_unstable_step_ = -1;    ///< the first recorded step with an unstable element
   int unstable_elements_ = 0;       ///< at the last recorded step
   int most_unstable_elements_ = 0;  ///< over the recorded steps
