@@ -30,43 +30,53 @@ std::string mesh_name(const Case& c) {
   return "the generated " + (c.mesh.generate ? c.mesh.generate->kind : std::string()) + " mesh";
 }
 
-/// "available surface tags: a (12 triangles), ..." for `tags` of the given `kind` ("surface",
-/// "volume"), whose members are `items` ("triangles") and Gmsh groups of dimension `dim`.
-std::string tag_list(const std::map<std::string, std::vector<int>>& tags, const std::string& kind,
-                     const std::string& items, int dim) {
+/// The surface or the volume tags of a mesh, as the messages name them.
+struct TagKind {
+  const std::map<std::string, std::vector<int>> Mesh::*tags;
+  const char* kind;   ///< "surface"
+  const char* items;  ///< "triangles"
+  int dimension;      ///< of the Gmsh physical groups
+};
+constexpr TagKind kSurfaceTags{&Mesh::surface_tags, "surface", "triangles", 2};
+constexpr TagKind kVolumeTags{&Mesh::volume_tags, "volume", "tetrahedra", 3};
+
+/// "available surface tags: a (12 triangles), ...".
+std::string tag_list(const Mesh& mesh, const TagKind& kind) {
+  const auto& tags = mesh.*kind.tags;
   if (tags.empty())
-    return "the mesh has no " + kind + " tags (Gmsh physical groups of dimension " +
-           std::to_string(dim) + ")";
-  std::string out = "available " + kind + " tags: ";
+    return std::string("the mesh has no ") + kind.kind +
+           " tags (Gmsh physical groups of dimension " + std::to_string(kind.dimension) + ")";
+  std::string out = std::string("available ") + kind.kind + " tags: ";
   bool first = true;
   for (const auto& [name, members] : tags) {
-    out += (first ? "" : ", ") + name + " (" + std::to_string(members.size()) + " " + items + ")";
+    out +=
+        (first ? "" : ", ") + name + " (" + std::to_string(members.size()) + " " + kind.items + ")";
     first = false;
   }
   return out;
 }
 
-std::string tag_list(const Mesh& mesh) {
-  return tag_list(mesh.surface_tags, "surface", "triangles", 2);
+/// The tag `name` of `kind` exists in the mesh and is not empty; else an InputError at `place`
+/// that lists the tags there are (and the nearest name to a typo).
+void check_tag(const Case& c, const Mesh& mesh, const TagKind& kind, const std::string& name,
+               const InputPlace& place) {
+  const auto& tags = mesh.*kind.tags;
+  const auto tag = tags.find(name);
+  if (tag == tags.end()) {
+    std::vector<std::string> names;
+    for (const auto& [known, members] : tags) names.push_back(known);
+    std::string rule = std::string("no ") + kind.kind + " tag '" + name + "' in " + mesh_name(c);
+    if (const auto guess = case_detail::closest_match(name, names))
+      rule += " (did you mean '" + *guess + "'?)";
+    throw InputError(place, rule + "; " + tag_list(mesh, kind));
+  }
+  if (tag->second.empty())
+    throw InputError(place, std::string(kind.kind) + " tag '" + name + "' of " + mesh_name(c) +
+                                " has no " + kind.items + "; " + tag_list(mesh, kind));
 }
 
 void check_surface(const Case& c, const Mesh& mesh, const SurfaceRef& ref) {
-  const auto tag = mesh.surface_tags.find(ref.name);
-  if (tag == mesh.surface_tags.end()) {
-    std::vector<std::string> names;
-    for (const auto& [name, triangles] : mesh.surface_tags) names.push_back(name);
-    std::string rule = "no surface tag '" + ref.name + "' in " + mesh_name(c);
-    if (const auto guess = case_detail::closest_match(ref.name, names))
-      rule += " (did you mean '" + *guess + "'?)";
-    throw InputError(ref.place, rule + "; " + tag_list(mesh));
-  }
-  if (tag->second.empty())
-    throw InputError(ref.place, "surface tag '" + ref.name + "' of " + mesh_name(c) +
-                                    " has no triangles; " + tag_list(mesh));
-}
-
-std::string volume_tag_list(const Mesh& mesh) {
-  return tag_list(mesh.volume_tags, "volume", "tetrahedra", 3);
+  check_tag(c, mesh, kSurfaceTags, ref.name, ref.place);
 }
 
 /// Every region names a non-empty volume tag or a box holding tetrahedra, no tetrahedron is in
@@ -75,21 +85,11 @@ void check_regions(const Case& c, const Mesh& mesh) {
   std::vector<int> region_of(mesh.tets.size(), -1);
   for (std::size_t k = 0; k < c.regions.size(); ++k) {
     const Region& r = c.regions[k];
+    if (!r.box) check_tag(c, mesh, kVolumeTags, r.volume, r.volume_place);
     const std::vector<int> tets = region_tets(r, mesh);
-    if (r.box && tets.empty())
+    if (tets.empty())
       throw InputError(r.box_place,
                        "no tetrahedron of " + mesh_name(c) + " has its centroid in the box");
-    if (!r.box && mesh.volume_tags.count(r.volume) == 0) {
-      std::vector<std::string> names;
-      for (const auto& [name, tag] : mesh.volume_tags) names.push_back(name);
-      std::string rule = "no volume tag '" + r.volume + "' in " + mesh_name(c);
-      if (const auto guess = case_detail::closest_match(r.volume, names))
-        rule += " (did you mean '" + *guess + "'?)";
-      throw InputError(r.volume_place, rule + "; " + volume_tag_list(mesh));
-    }
-    if (tets.empty())
-      throw InputError(r.volume_place, "volume tag '" + r.volume + "' of " + mesh_name(c) +
-                                           " has no tetrahedra; " + volume_tag_list(mesh));
     for (int t : tets) {
       int& owner = region_of[static_cast<std::size_t>(t)];
       if (owner >= 0)
