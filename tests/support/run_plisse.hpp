@@ -1,5 +1,6 @@
 #pragma once
 /// Test helpers that run the built `plisse` executable and read its run directory.
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -14,9 +15,14 @@
 
 namespace plisse::test {
 
-/// A fresh directory under the build tree for one test's output.
+/// A fresh directory under the build tree for one test's output, inside a folder named after the
+/// running test: CTest runs tests in parallel processes, and two tests that chose the same `name`
+/// would otherwise wipe and write each other's runs.
 inline std::filesystem::path scratch_directory(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path(PLISSE_BINARY_DIR) / "test-runs" / name;
+  std::filesystem::path dir = std::filesystem::path(PLISSE_BINARY_DIR) / "test-runs";
+  if (const auto* test = ::testing::UnitTest::GetInstance()->current_test_info())
+    dir /= std::string(test->test_suite_name()) + "." + test->name();
+  dir /= name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir.parent_path());
   return dir;
