@@ -1,0 +1,161 @@
+// Radial wrinkles of a pressurised spherical shell pushed in deeply at its pole
+// (validation/pressurised-shell-wrinkles.yaml; study, scales and mesh convergence in
+// docs/studies/shell-wrinkles.md). Mid-surface radius R = 1000 mm, wall t = 1 mm, neo-Hookean
+// c1 = 1 MPa (E = 6 MPa, nu = 1/2, B = E t^3 / 9, Y = E t), octant of one Taylor-Hood layer, a
+// rigid frictionless sphere pushing the pole in by up to 6 p R^2 / Y, the stability check
+// switching branch where the tangent first loses positive definiteness.
+//
+// The shallow-shell equations about the pressurised sphere (Vella, Ajdari, Vaziri & Boudaoud
+// 2011) have the in-plane scale l_p = R (p R / Y)^(1/2), the deflection scale l_p^2 / R =
+// p R^2 / Y and the stress scale p R; bending then enters only through tau = p R^2 / (4 sqrt(B Y))
+// (its coefficient is 1 / (16 tau^2)), the indenter through a / l_p (0.1 here at every tau) and
+// the shell's curvature through l_p / R -> 0 (docs/studies/shell-wrinkles.md, W1-W4). So:
+//   - the hoop stress turns compressive at an indentation w0 = C p R^2 / Y, C a number of the
+//     membrane problem: the same C at every tau, up to bending's share of the base state, of
+//     order l_b / l_p = (4 tau)^(-1/2) (0.25 at tau = 4, 0.18 at tau = 8): C(8) / C(4) within
+//     15 % of 1, an exponent of tau within 1 +- 0.2;
+//   - the wrinkles need more compression than that, to overcome bending, and their onset
+//     approaches C p R^2 / Y from above as tau grows;
+//   - the wrinkles' wavelength is set by the bending length l_b = (B R^2 / Y)^(1/4) on a dimple
+//     of width l_p, so their count m at the same scaled indentation (here w0 = 8 p R^2 / Y) grows
+//     as l_p / l_b = 2 tau^(1/2). The octant admits only even counts (mirrors x = 0 and z = 0),
+//     so each count is the nearest even one, known to +-1: m(8) within sqrt(2) m(4) +- 2.5.
+// Two runs, tau = 4 and 8, each to w0 = 8 p R^2 / Y, on the case's mesh coarsened to 9 mm
+// about the pole (5 to 7 minutes each on 2 cores).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "io/history_writer.hpp"
+#include "io/json_file.hpp"
+#include "support/run_plisse.hpp"
+
+namespace plisse {
+namespace {
+
+constexpr double kRadius = 1000.0, kThickness = 1.0, kC1 = 1.0;
+
+double stretching_stiffness() { return 6.0 * kC1 * kThickness; }
+
+/// p for a tau: tau = 3 p R^2 / (4 E t^2).
+double pressure_of(double tau) {
+  return tau * 4.0 * 6.0 * kC1 * kThickness * kThickness / (3.0 * kRadius * kRadius);
+}
+
+/// Stretch of the sphere's mid-surface under p: p = (4 c1 t / R)(1/l - 1/l^7), by bisection.
+double inflated_stretch(double p) {
+  double lo = 1.0, hi = 1.3;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    const double f = 4.0 * kC1 * kThickness / kRadius * (1.0 / mid - std::pow(mid, -7.0)) - p;
+    (f < 0.0 ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+std::size_t column(const HistoryTable& h, const std::string& name) {
+  for (std::size_t i = 0; i < h.columns.size(); ++i)
+    if (h.columns[i] == name) return i;
+  ADD_FAILURE() << "history.csv has no column " << name;
+  return 0;
+}
+
+struct Wrinkling {
+  double unit = 0.0;         ///< p R^2 / Y [mm]
+  double compression = 0.0;  ///< w0 where a compressive membrane stress first shows (midpoint)
+  double onset = 0.0;        ///< w0 where wrinkles first show (midpoint of the step), 0: never
+  int count = 0;             ///< wrinkle count at the last step, w0 = 8 p R^2 / Y
+};
+
+/// The case's steps move the indenter by 1.35 mm (0.13 p R^2 / Y at tau = 8): as fine at larger
+/// tau, whose travel is longer, so that the first contact converges alike.
+std::string travel_steps(double tau) {
+  const double scale = std::max(1.0, tau / 8.0);
+  return " --set solver.steps=" + std::to_string(int(std::lround(55 * scale))) +
+         " --set solver.max_step=" + std::to_string(0.02 / scale);
+}
+
+/// Runs the case at `tau`, scaled as scripts/shell-wrinkles --sweep scales it.
+Wrinkling indent(double tau) {
+  const double p = pressure_of(tau);
+  const double unit = p * kRadius * kRadius / stretching_stiffness();
+  const double lp = kRadius * std::sqrt(p * kRadius / stretching_stiffness());
+  const double lambda = inflated_stretch(p);
+  const double pole = lambda * kRadius + 0.5 * kThickness / (lambda * lambda);
+  const double a = 0.1 * lp;
+  std::string rings;
+  for (double f : {0.5, 0.75, 1.0, 1.25, 1.5, 2.0}) {
+    if (!rings.empty()) rings += ',';
+    rings += std::to_string(std::acos(f * lp / kRadius) * 180.0 / std::numbers::pi);
+  }
+  const auto dir = test::scratch_directory("shell-wrinkles-tau" + std::to_string(int(tau)));
+  const std::string options =
+      " --set loads[0].value=" + std::to_string(p) +
+      " --set mesh.pole_element_size=9 --set mesh.pole_radius=" + std::to_string(2.0 * lp) +
+      " --set dies[0].radius=" + std::to_string(a) + " --set dies[0].point=[0," +
+      std::to_string(pole + 0.05 + a) + ",0] --set dies[0].move.displacement=[0," +
+      std::to_string(-(8.0 * unit + 0.05)) + ",0] --set output.wrinkles.rings_deg=[" + rings +
+      "] --set output.every=100" + travel_steps(tau);
+  const int status = test::run_plisse("run " + std::string(PLISSE_SOURCE_DIR) +
+                                          "/validation/pressurised-shell-wrinkles.yaml -o " +
+                                          dir.string() + options,
+                                      dir.string() + ".log");
+  EXPECT_EQ(status, 0) << "see " << dir.string() << ".log";
+  Wrinkling result;
+  result.unit = unit;
+  if (status != 0) return result;
+  const HistoryTable h = read_history(dir / "history.csv");
+  const std::size_t contact = column(h, "contact_nodes:indenter"), uy = column(h, "uy:mid"),
+                    step = column(h, "step"), compressed = column(h, "wrinkled_fraction"),
+                    count = column(h, "wrinkle_count"),
+                    amplitude = column(h, "wrinkle_amplitude");
+  // Wrinkles show at the first instability (the run switches branch there) or at the first step
+  // with a wrinkled ring (amplitude above 0.1 t), whichever comes first: the mesh is not exactly
+  // axisymmetric, and a coarse one can let the wrinkles grow out of it without a bifurcation.
+  const nlohmann::json events = read_json_file(dir / "summary.json")["stability"]["instabilities"];
+  const int first = events.empty() ? -1 : events[0]["step"].get<int>();
+  double rest = 0.0, before = 0.0;
+  for (const auto& row : h.rows) {
+    const double w = rest - row[uy];
+    if (row[contact] == 0.0) rest = row[uy];
+    if (result.compression == 0.0 && row[compressed] > 0.0) result.compression = 0.5 * (before + w);
+    if (result.onset == 0.0 && (int(row[step]) == first || row[amplitude] > 0.1 * kThickness))
+      result.onset = 0.5 * (before + w);
+    before = row[contact] == 0.0 ? 0.0 : w;
+  }
+  result.count = int(h.rows.back()[count]);
+  std::cout << "tau " << tau << ": compression at w0 = " << result.compression / unit
+            << " p R^2 / Y, wrinkles at " << result.onset / unit << ", m = " << result.count
+            << " at " << (rest - h.rows.back()[uy]) / unit
+            << " (m / tau^(1/2) = " << result.count / std::sqrt(tau) << ")\n";
+  return result;
+}
+
+TEST(ShellWrinklesSlow, OnsetAndCountFollowTheShallowShellScales) {
+  const Wrinkling low = indent(4.0), high = indent(8.0);
+  ASSERT_GT(low.onset, 0.0) << "no wrinkles at tau = 4";
+  ASSERT_GT(high.onset, 0.0) << "no wrinkles at tau = 8";
+  // Wrinkles need a compressive hoop stress: they come after it, never before.
+  EXPECT_GT(low.compression, 0.0);
+  EXPECT_GT(high.compression, 0.0);
+  EXPECT_GT(low.onset, low.compression);
+  EXPECT_GT(high.onset, high.compression);
+  const double compression_exponent = std::log(high.compression / low.compression) / std::log(2.0);
+  std::cout << "exponent of tau in the compression onset: " << compression_exponent << "\n";
+  EXPECT_NEAR(compression_exponent, 1.0, 0.2) << "the membrane's scale p R^2 / Y";
+  // The bifurcation approaches the membrane's compression onset as bending fades.
+  EXPECT_LT(high.onset / high.compression, low.onset / low.compression);
+  EXPECT_EQ(low.count % 2, 0) << "the octant holds even counts only";
+  EXPECT_EQ(high.count % 2, 0);
+  EXPECT_GT(low.count, 2);
+  EXPECT_NEAR(high.count, std::sqrt(2.0) * low.count, 2.5) << "m ~ l_p / l_b = 2 tau^(1/2)";
+}
+
+}  // namespace
+}  // namespace plisse
