@@ -340,18 +340,25 @@ def surface_figure(directory, results):
     plt.close(fig)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+def sweep_parser(doc, taus, radius, set_example):
+    """The options of the indented-shell scripts: runs, --summary, --sweep with --taus and --set,
+    --figures, and the shell's c1, mid-surface radius and wall thickness."""
+    parser = argparse.ArgumentParser(description=doc.split("\n")[0])
     parser.add_argument("runs", nargs="*")
     parser.add_argument("--summary", action="store_true")
     parser.add_argument("--sweep", metavar="DIR")
-    parser.add_argument("--taus", default="0,1,2,4,8")
+    parser.add_argument("--taus", default=taus)
     parser.add_argument("--set", action="append", metavar="KEY=VALUE",
-                        help="passed on to plisse run (e.g. mesh.element_size=5)")
+                        help=f"passed on to plisse run (e.g. {set_example})")
     parser.add_argument("--figures", metavar="DIR")
     parser.add_argument("--c1", type=float, default=1.0)
-    parser.add_argument("--radius", type=float, default=200.0, help="mid-surface radius [mm]")
+    parser.add_argument("--radius", type=float, default=radius, help="mid-surface radius [mm]")
     parser.add_argument("--thickness", type=float, default=1.0)
+    return parser
+
+
+def main():
+    parser = sweep_parser(__doc__, "0,1,2,4,8", 200.0, "mesh.element_size=5")
     args = parser.parse_args()
     if args.sweep:
         sweep(args.sweep, args)

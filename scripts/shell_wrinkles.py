@@ -166,11 +166,15 @@ def summary(runs, args):
               f"{fmt(c):>23} {fmt(b):>21} {m['mode_count']:6d} {m['count']:3d} "
               f"{m['count'] / math.sqrt(m['tau']):8.2f} {ring} {m['last_count']:6d} "
               f"{m['last_w0'] / unit:13.2f}")
+    compression = [(m["tau"], middle(m["compression"])) for m in results if m["compression"]]
     onset = [(m["tau"], middle(m["instability"])) for m in results if m["instability"]]
     counts = [(m["tau"], m["count"]) for m in results if m["count"] > 0]
+    if len(compression) > 1:
+        print(f"exponent of tau in the compression onset: {exponent(compression):.3f} "
+              f"(theory 1: w0 = C p R^2 / Y)")
     if len(onset) > 1:
-        print(f"exponent of tau in the wrinkling onset w0_c: {exponent(onset):.3f} "
-              f"(theory 1: w0_c = C p R^2 / Y)")
+        print(f"exponent of tau in the wrinkles' onset: {exponent(onset):.3f} "
+              f"(tends to 1 as bending fades)")
     if len(counts) > 1:
         print(f"exponent of tau in the wrinkle count m: {exponent(counts):.3f} (theory 1/2)")
     return results
@@ -310,19 +314,9 @@ def figures(directory, results):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("runs", nargs="*")
-    parser.add_argument("--summary", action="store_true")
-    parser.add_argument("--sweep", metavar="DIR")
-    parser.add_argument("--taus", default="4,8")
-    parser.add_argument("--set", action="append", metavar="KEY=VALUE",
-                        help="passed on to plisse run (e.g. mesh.pole_element_size=4)")
-    parser.add_argument("--figures", metavar="DIR")
+    parser = si.sweep_parser(__doc__, "4,8", 1000.0, "mesh.pole_element_size=4")
     parser.add_argument("--depth", type=float, default=DEPTH,
                         help="indenter travel in units of p R^2 / Y (--sweep)")
-    parser.add_argument("--c1", type=float, default=1.0)
-    parser.add_argument("--radius", type=float, default=1000.0, help="mid-surface radius [mm]")
-    parser.add_argument("--thickness", type=float, default=1.0)
     args = parser.parse_args()
     if args.sweep:
         sweep(args.sweep, args)
