@@ -113,8 +113,7 @@ Wrinkling indent(double tau) {
   const HistoryTable h = read_history(dir / "history.csv");
   const std::size_t contact = column(h, "contact_nodes:indenter"), uy = column(h, "uy:mid"),
                     step = column(h, "step"), compressed = column(h, "wrinkled_fraction"),
-                    count = column(h, "wrinkle_count"),
-                    amplitude = column(h, "wrinkle_amplitude");
+                    count = column(h, "wrinkle_count"), amplitude = column(h, "wrinkle_amplitude");
   // Wrinkles show at the first instability (the run switches branch there) or at the first step
   // with a wrinkled ring (amplitude above 0.1 t), whichever comes first: the mesh is not exactly
   // axisymmetric, and a coarse one can let the wrinkles grow out of it without a bifurcation.
