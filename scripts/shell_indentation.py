@@ -84,6 +84,15 @@ def read_history(run):
     return rows
 
 
+def inflated_pole(run, rows):
+    """uy:mid of the last step before the indenter touches: the inflated state the indentation
+    w0 is measured from."""
+    free = [r for r in rows if float(r["contact_nodes:indenter"]) == 0]
+    if not free or len(free) == len(rows):
+        raise SystemExit(f"{run}: the indenter never touched (or touched from the start)")
+    return float(free[-1]["uy:mid"])
+
+
 def geometry(run):
     """(mid-surface radius, wall thickness) of the run's shell, from its first step file."""
     import meshio
@@ -100,11 +109,8 @@ def measure(run, c1):
     radius, thickness = geometry(run)
     rows = read_history(run)
     pressure = float(rows[-1]["pressure:gas"])
-    free = [r for r in rows if float(r["contact_nodes:indenter"]) == 0]
     touching = [r for r in rows if float(r["contact_nodes:indenter"]) > 0]
-    if not free or not touching:
-        raise SystemExit(f"{run}: the indenter never touched (or touched from the start)")
-    rest = float(free[-1]["uy:mid"])
+    rest = inflated_pole(run, rows)
     points = [(rest - float(r["uy:mid"]), SYMMETRY_FACTOR * float(r["force_y:indenter"]))
               for r in touching]
     fit = [(w, f) for w, f in points if 0.0 < w <= FIT_DEPTH * thickness]

@@ -25,7 +25,6 @@ touches), and
 The octant (mirrors x = 0, z = 0) holds only even m. --summary also fits the exponents of
 w0_c and m against tau over the runs given (theory: 1 and 1/2).
 """
-import argparse
 import csv
 import json
 import math
@@ -66,33 +65,25 @@ def measure(run, c1):
     rows = si.read_history(run)
     pressure = float(rows[-1]["pressure:gas"])
     tau, lp, unit = units(pressure, c1, radius, thickness)
-    free = [r for r in rows if float(r["contact_nodes:indenter"]) == 0]
-    if not free or len(free) == len(rows):
-        raise SystemExit(f"{run}: the indenter never touched (or touched from the start)")
-    rest = float(free[-1]["uy:mid"])
+    rest = si.inflated_pole(run, rows)
     depth = lambda r: rest - float(r["uy:mid"])
     result = {"run": run, "radius": radius, "thickness": thickness, "pressure": pressure,
-              "tau": tau, "lp": lp, "unit": unit, "max_w0": max(depth(r) for r in rows),
+              "tau": tau, "lp": lp, "unit": unit,
               "force": [(depth(r), 4.0 * float(r["force_y:indenter"])) for r in rows
                         if float(r["contact_nodes:indenter"]) > 0]}
     compressed = [i for i, r in enumerate(rows) if float(r["wrinkled_fraction"]) > 0.0]
     result["compression"] = bracket(rows, compressed[0], depth) if compressed else None
     events = read_summary(run).get("stability", {}).get("instabilities", [])
-    result["mode_count"] = 0
     first = events[0]["step"] if events else None
-    if events:
-        result["mode_count"], result["mode_ring"] = mode_count(
-            os.path.join(run, events[0]["file"]), lp)
-    wrinkled = [i for i, r in enumerate(rows) if int(r["step"]) == first
-                or float(r["wrinkle_amplitude"]) > 0.1 * thickness]
-    result["instability"] = bracket(rows, wrinkled[0], depth) if wrinkled else None
-    result["bifurcated"] = bool(events) and int(rows[wrinkled[0]]["step"]) == first
-    wrinkled = [r for r in rows[wrinkled[0]:] if int(float(r["wrinkle_count"])) > 0] if wrinkled \
-        else []
-    result["count"] = int(float(wrinkled[0]["wrinkle_count"])) if wrinkled else 0
+    result["mode_count"] = mode_count(os.path.join(run, events[0]["file"]), lp) if events else 0
+    shown = [i for i, r in enumerate(rows) if int(r["step"]) == first
+             or float(r["wrinkle_amplitude"]) > 0.1 * thickness]
+    result["onset"] = bracket(rows, shown[0], depth) if shown else None
+    counted = [r for r in rows[shown[0]:] if int(float(r["wrinkle_count"])) > 0] if shown else []
+    result["count"] = int(float(counted[0]["wrinkle_count"])) if counted else 0
+    result["ring"] = wrinkled_ring(run, int(counted[0]["step"]), radius) if counted else None
     result["last_count"] = int(float(rows[-1]["wrinkle_count"]))
     result["last_w0"] = depth(rows[-1])
-    result["ring"] = wrinkled_ring(run, int(wrinkled[0]["step"]), radius) if wrinkled else None
     return result
 
 
@@ -110,10 +101,9 @@ def wrinkled_ring(run, step, radius):
 
 
 def mode_count(step_file, lp):
-    """(full-circle count, ring radius / l_p) of the critical mode (`mode_1` of the step file at
-    the instability): the even harmonic cos(m theta) with the largest amplitude of the mode's
-    normal component on the outer nodes of the ring 0.5 ... 2 l_p from the axis where it is
-    largest."""
+    """Full-circle count of the critical mode (`mode_1` of the step file at the instability): the
+    even harmonic cos(m theta) with the largest amplitude of the mode's normal component on the
+    outer nodes of the ring 0.5 ... 2 l_p from the axis where it is largest."""
     import meshio
     import numpy as np
 
@@ -124,7 +114,7 @@ def mode_count(step_file, lp):
     distance = np.hypot(x[:, 0], x[:, 2])
     theta = np.arctan2(x[:, 2], x[:, 0])
     outer = norm > np.median(norm)
-    best = (0.0, 0, None)
+    best = (0.0, 0)
     for f in RING_RADII:
         ring = outer & (np.abs(distance - f * lp) < 0.025 * lp)
         if ring.sum() < 8:
@@ -133,8 +123,8 @@ def mode_count(step_file, lp):
             c = np.cos(m * theta[ring])
             amplitude = abs((normal_part[ring] * c).sum() / (c * c).sum())
             if amplitude > best[0]:
-                best = (amplitude, m, f)
-    return best[1], best[2]
+                best = (amplitude, m)
+    return best[1]
 
 
 def exponent(points):
@@ -158,7 +148,7 @@ def summary(runs, args):
     for m in results:
         unit = m["unit"]
         c = m["compression"]
-        b = m["instability"]
+        b = m["onset"]
         fmt = lambda pair: f"{pair[0] / unit:9.2f} - {pair[1] / unit:5.2f}" if pair else "none"
         ring = f"{m['ring'] / m['lp']:8.2f}" if m["ring"] else f"{'-':>8}"
         print(f"{os.path.basename(os.path.normpath(m['run'])):<14} "
@@ -167,7 +157,7 @@ def summary(runs, args):
               f"{m['count'] / math.sqrt(m['tau']):8.2f} {ring} {m['last_count']:6d} "
               f"{m['last_w0'] / unit:13.2f}")
     compression = [(m["tau"], middle(m["compression"])) for m in results if m["compression"]]
-    onset = [(m["tau"], middle(m["instability"])) for m in results if m["instability"]]
+    onset = [(m["tau"], middle(m["onset"])) for m in results if m["onset"]]
     counts = [(m["tau"], m["count"]) for m in results if m["count"] > 0]
     if len(compression) > 1:
         print(f"exponent of tau in the compression onset: {exponent(compression):.3f} "
@@ -243,7 +233,7 @@ def figures(directory, results):
     fig, axes = plt.subplots(1, 2, figsize=(10, 3.9))
     ax = axes[0]
     for key, label, colour in (("compression", "hoop compression (tension field)", "C0"),
-                               ("instability", "wrinkles (bifurcation)", "C3")):
+                               ("onset", "wrinkles (bifurcation)", "C3")):
         pts = [(m["tau"], middle(m[key]) / m["unit"], 0.5 * (m[key][1] - m[key][0]) / m["unit"])
                for m in results if m[key]]
         if pts:
@@ -302,8 +292,8 @@ def figures(directory, results):
         w = [p[0] / m["unit"] for p in m["force"]]
         f = [p[1] / (m["pressure"] * m["lp"] ** 2) for p in m["force"]]
         ax.plot(w, f, "-", color=f"C{i}", label=rf"$\tau$ = {m['tau']:.0f}")
-        if m["instability"]:
-            ax.axvline(middle(m["instability"]) / m["unit"], color=f"C{i}", ls=":", lw=1)
+        if m["onset"]:
+            ax.axvline(middle(m["onset"]) / m["unit"], color=f"C{i}", ls=":", lw=1)
     ax.set_xlabel(r"$w_0 \,/\, (pR^2/Y)$")
     ax.set_ylabel(r"$F \,/\, (p\,\ell_p^2)$")
     ax.legend(frameon=False, fontsize=8)

@@ -29,10 +29,13 @@
 #include <vector>
 
 #include "io/history_writer.hpp"
+#include "support/run_case.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {
 namespace {
+
+using test::history_column;
 
 constexpr double kRadius = 200.0, kThickness = 1.0, kC1 = 1.0;
 constexpr double kSymmetry = 4.0;  // the octant holds a quarter of the azimuth
@@ -50,13 +53,6 @@ double vella(double tau) {
   if (tau == 0.0) return reissner();
   return reissner() * std::numbers::pi / 2.0 * std::sqrt(tau * tau - 1.0) /
          std::atanh(std::sqrt(1.0 - 1.0 / (tau * tau)));
-}
-
-std::size_t column(const HistoryTable& h, const std::string& name) {
-  for (std::size_t i = 0; i < h.columns.size(); ++i)
-    if (h.columns[i] == name) return i;
-  ADD_FAILURE() << "history.csv has no column " << name;
-  return 0;
 }
 
 struct Indentation {
@@ -80,8 +76,9 @@ Indentation indent(const std::string& name, const std::string& options) {
   Indentation result;
   if (status != 0) return result;
   const HistoryTable h = read_history(dir / "history.csv");
-  const std::size_t contact = column(h, "contact_nodes:indenter"), uy = column(h, "uy:mid"),
-                    force = column(h, "force_y:indenter"), pressure = column(h, "pressure:gas");
+  const std::size_t contact = history_column(h, "contact_nodes:indenter"),
+                    uy = history_column(h, "uy:mid"), force = history_column(h, "force_y:indenter"),
+                    pressure = history_column(h, "pressure:gas");
   result.pressure = h.rows.back()[pressure];
   double rest = 0.0;
   bool touched = false;

@@ -34,10 +34,13 @@
 
 #include "io/history_writer.hpp"
 #include "io/json_file.hpp"
+#include "support/run_case.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {
 namespace {
+
+using test::history_column;
 
 constexpr double kRadius = 1000.0, kThickness = 1.0, kC1 = 1.0;
 
@@ -57,13 +60,6 @@ double inflated_stretch(double p) {
     (f < 0.0 ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
-}
-
-std::size_t column(const HistoryTable& h, const std::string& name) {
-  for (std::size_t i = 0; i < h.columns.size(); ++i)
-    if (h.columns[i] == name) return i;
-  ADD_FAILURE() << "history.csv has no column " << name;
-  return 0;
 }
 
 struct Wrinkling {
@@ -111,9 +107,11 @@ Wrinkling indent(double tau) {
   result.unit = unit;
   if (status != 0) return result;
   const HistoryTable h = read_history(dir / "history.csv");
-  const std::size_t contact = column(h, "contact_nodes:indenter"), uy = column(h, "uy:mid"),
-                    step = column(h, "step"), compressed = column(h, "wrinkled_fraction"),
-                    count = column(h, "wrinkle_count"), amplitude = column(h, "wrinkle_amplitude");
+  const std::size_t contact = history_column(h, "contact_nodes:indenter"),
+                    uy = history_column(h, "uy:mid"), step = history_column(h, "step"),
+                    compressed = history_column(h, "wrinkled_fraction"),
+                    count = history_column(h, "wrinkle_count"),
+                    amplitude = history_column(h, "wrinkle_amplitude");
   // Wrinkles show at the first instability (the run switches branch there) or at the first step
   // with a wrinkled ring (amplitude above 0.1 t), whichever comes first: the mesh is not exactly
   // axisymmetric, and a coarse one can let the wrinkles grow out of it without a bifurcation.
