@@ -1,0 +1,324 @@
+"""The radius at which the round airbag's rim wrinkles, without viscous damping, from runs of
+validation/airbag-onset.yaml scaled in size (docs/studies/airbag-onset.md).
+
+Usage:
+  scripts/airbag-onset --sweep DIR [--radii 150,100,70,50] [--cells 15] [--minutes M]
+                       [--set KEY=VALUE ...]  run the perfect bag at each radius into DIR/a-A-nN
+  scripts/airbag-onset --summary RUN [RUN ...]
+                                              onset pressure, waves, the threshold
+  scripts/airbag-onset --figures DIR RUN [...]
+                                              onset.png and surface_A.png into DIR
+
+The bag is examples/airbag.yaml's at every size: an oblate spheroid of mid-surface semi-axes a and
+c = a / 5 (height 0.4 a), the same wall (t = 1 mm), material and pressure (4.4e-5 MPa), quarter
+model, glued to its floor at the lower pole. The case (validation/airbag-onset.yaml) makes it
+perfect (no imperfection) and undamped, with quadratic tetrahedra (Taylor-Hood, one through the
+wall) and the stability check at every step; the sweep sets the in-plane size a / N
+(--cells N). Newton takes full steps (line_search basic): without damping, the backtracking
+search accepts only a few thousandths of the first steps, whose full step first raises the
+residual while the faces bend, and stalls.
+
+Per run, from history.csv:
+  - the onset: the first step whose state is unstable (column stable: more negative pivots than
+    a stable state) or whose largest ring amplitude exceeds 0.1 t (the example's threshold),
+    bracketed in pressure by the step before it and the step itself (column pressure:gas);
+  - the wave count m around the whole rim at the onset (history.csv wrinkle_count: the ring with
+    the largest amplitude; even only, the quarter model's mirrors hold no other), and the ring
+    (latitude) whose harmonic is largest in wrinkle_spectrum.csv at the first step written from
+    the onset on.
+--summary gives d log p_c / d log a between neighbouring radii (the dimensional argument of the
+study, O3: -2) and the radii between which the onset passes the example's pressure.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import signal
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+CASE = os.path.join(ROOT, "validation", "airbag-onset.yaml")
+PRESSURE = 4.4e-5  # the example's (the paper's) pressure [MPa]
+C1 = 0.0033  # the example's neo-Hookean c1 [MPa]; E = 6 c1
+ASPECT = 5.0  # a / c of the example (150 / 30)
+THRESHOLD = 0.1  # a ring is wrinkled above this amplitude [mm]: 0.1 x the wall, as in the example
+AFTER = 3  # steps a sweep's run goes on past the onset
+
+
+def read_history(run):
+    with open(os.path.join(run, "history.csv")) as f:
+        return list(csv.DictReader(f))
+
+
+def read_summary(run):
+    with open(os.path.join(run, "summary.json")) as f:
+        return json.load(f)
+
+
+def geometry(run):
+    """(a, c, t): the undeformed mid-surface's semi-axes and the wall, from the first step file."""
+    import meshio
+    import numpy as np
+
+    mesh = meshio.read(os.path.join(run, "step_0000.vtu"))
+    x = mesh.points
+    rho = np.hypot(x[:, 0], x[:, 2])
+    equator = np.abs(x[:, 1]) < 1e-9
+    outer, inner = rho[equator].max(), rho[equator].min()
+    thickness = outer - inner
+    return 0.5 * (outer + inner), x[:, 1].max() - 0.5 * thickness, thickness
+
+
+def onset_index(rows):
+    """Index of the first row whose state is unstable or whose largest ring amplitude exceeds
+    THRESHOLD, or None."""
+    for i, r in enumerate(rows):
+        if r.get("stable", "1") == "0" or float(r["wrinkle_amplitude"]) > THRESHOLD:
+            return i
+    return None
+
+
+def steps_past_onset(run):
+    try:
+        rows = read_history(run)
+    except (OSError, ValueError, KeyError):
+        return -1
+    index = onset_index(rows) if rows else None
+    return -1 if index is None else len(rows) - 1 - index
+
+
+def spectrum_peak(run, step):
+    """(latitude [deg], m, amplitude [mm]) of the largest harmonic in wrinkle_spectrum.csv at the
+    first step at or after `step` that the file holds (it has the steps written to disk)."""
+    best, first = None, None
+    with open(os.path.join(run, "wrinkle_spectrum.csv")) as f:
+        for row in csv.DictReader(f):
+            k = int(row["step"])
+            if k < step or (first is not None and k != first):
+                continue
+            first = k
+            candidate = (float(row["latitude_deg"]), int(row["m"]), float(row["amplitude"]))
+            if best is None or candidate[2] > best[2]:
+                best = candidate
+    return best
+
+
+def measure(run):
+    a, c, t = geometry(run)
+    rows = read_history(run)
+    summary = read_summary(run)
+    result = {"run": run, "a": a, "c": c, "t": t, "onset": None, "kind": None, "count": 0,
+              "peak": None, "limit": max(float(r["pressure:gas"]) for r in rows),
+              "steps": len(rows), "interrupted": bool(summary.get("interrupted")),
+              "unknowns": summary.get("free_dofs")}
+    index = onset_index(rows)
+    if index is not None:
+        before = float(rows[index - 1]["pressure:gas"]) if index > 0 else 0.0
+        result["onset"] = (before, float(rows[index]["pressure:gas"]))
+        result["kind"] = "instability" if rows[index].get("stable") == "0" else "folds"
+        result["count"] = int(float(rows[index]["wrinkle_count"]))
+        result["peak"] = spectrum_peak(run, int(rows[index]["step"]))
+    return result
+
+
+def cells_of(run):
+    """N of a sweep's run directory DIR/a-A-nN (elements of a / N), or 0 for another name."""
+    tail = os.path.basename(os.path.normpath(run)).rsplit("-n", 1)
+    try:
+        return float(tail[1]) if len(tail) == 2 else 0.0
+    except ValueError:
+        return 0.0
+
+
+def by_cells(results):
+    groups = {}
+    for m in results:
+        groups.setdefault(cells_of(m["run"]), []).append(m)
+    return groups
+
+
+def middle(pair):
+    return 0.5 * (pair[0] + pair[1])
+
+
+def estimate(a, t):
+    """The onset pressure of the dimensional argument (docs/studies/airbag-onset.md, O1-O3):
+    membrane hoop compression of the undeformed rim against the axial buckling stress of a
+    cylinder of the rim's meridian radius c^2 / a."""
+    e = 6.0 * C1
+    return (2.0 / 3.0) * e * t**2 * ASPECT**2 / (0.5 * a**2 * (ASPECT**2 - 2.0))
+
+
+def local_exponents(points):
+    """d log p_c / d log a between neighbouring radii."""
+    points = sorted(points)
+    return [(a0, a1, math.log(p1 / p0) / math.log(a1 / a0))
+            for (a0, p0), (a1, p1) in zip(points, points[1:]) if a1 != a0]
+
+
+def threshold(results):
+    """(largest radius without an onset up to PRESSURE, smallest radius with one), either None
+    when the runs given do not have it."""
+    below = [m["a"] for m in results if m["onset"] and m["onset"][1] <= PRESSURE]
+    above = [m["a"] for m in results
+             if not (m["onset"] and m["onset"][1] <= PRESSURE) and m["limit"] >= PRESSURE]
+    smooth = [a for a in above if not below or a < min(below)]
+    return (max(smooth) if smooth else None, min(below) if below else None)
+
+
+def summary(runs):
+    results = sorted((measure(run) for run in runs), key=lambda m: (m["a"], m["unknowns"] or 0))
+    e = 6.0 * C1
+    print(f"{'run':<14} {'a [mm]':>6} {'unknowns':>8} {'onset p [MPa]':>21} {'kind':>11} "
+          f"{'p_c a^2/(E t^2)':>15} {'m':>3} {'ring [deg]':>10} "
+          f"{'largest p [MPa]':>15} {'steps':>5}")
+    for m in results:
+        if m["onset"]:
+            onset = f"{m['onset'][0]:.3e} - {m['onset'][1]:.3e}"
+            scaled = f"{middle(m['onset']) * m['a'] ** 2 / (e * m['t'] ** 2):15.3f}"
+        else:
+            onset, scaled = "none", f"{'-':>15}"
+        ring = f"{m['peak'][0]:10.0f}" if m["peak"] else f"{'-':>10}"
+        print(f"{os.path.basename(os.path.normpath(m['run'])):<14} {m['a']:6.1f} "
+              f"{m['unknowns'] or 0:8d} {onset:>21} {m['kind'] or '-':>11} {scaled} "
+              f"{m['count']:3d} {ring} {m['limit']:15.3e} {m['steps']:5d}")
+    for cells, group in sorted(by_cells(results).items()):
+        points = [(m["a"], middle(m["onset"])) for m in group if m["onset"]]
+        for a0, a1, k in local_exponents(points):
+            print(f"elements a/{cells:g}: d log p_c / d log a between a = {a0:g} and {a1:g} mm: "
+                  f"{k:.2f} (dimensional argument: -2)")
+    smooth, wrinkled = threshold(results)
+    print(f"the rim wrinkles before {PRESSURE:g} MPa for a >= {wrinkled or '?'} mm and stays "
+          f"smooth for a <= {smooth or '?'} mm (wall {results[0]['t']:g} mm)")
+    return results
+
+
+def sweep(directory, args):
+    os.makedirs(directory, exist_ok=True)
+    plisse = os.path.join(ROOT, "build", "bin", "plisse")
+    for a in (float(x) for x in args.radii.split(",")):
+        c = a / ASPECT
+        run = os.path.join(directory, f"a-{a:g}-n{args.cells:g}")
+        command = [plisse, "run", CASE, "-o", run, "--overwrite",
+                   "--set", f"mesh.radius={a:g}", "--set", f"mesh.height={2 * c:g}",
+                   "--set", f"mesh.element_size={a / args.cells:.4g}",
+                   "--set", f"dies[0].point=[0,{-(c + 0.5):g},0]",
+                   "--set", f"probes[0].point=[{a + 0.5:g},0,0]",
+                   "--set", f"probes[1].point=[0,{c + 0.5:g},0]"]
+        for s in args.set or []:
+            command += ["--set", s]
+        print(" ".join(command), flush=True)
+        # Without damping the steps shrink towards nothing once the folds grow (the quasi-static
+        # path snaps there): a few steps past the onset say all this study needs, so the run is
+        # stopped there (SIGTERM: plisse ends the step, writes its files and says `interrupted`),
+        # or after --minutes.
+        start = time.monotonic()
+        process = subprocess.Popen(command, stdout=subprocess.DEVNULL)
+        stopping = False
+        while process.poll() is None:
+            time.sleep(5)
+            late = time.monotonic() - start > 60.0 * args.minutes
+            if not stopping and (late or steps_past_onset(run) >= AFTER):
+                process.send_signal(signal.SIGTERM)
+                stopping = True
+        if process.returncode not in (0, 130, 143) and not stopping:
+            sys.exit(f"plisse run failed for a = {a:g} mm (exit status {process.returncode})")
+
+
+def figures(directory, results):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    os.makedirs(directory, exist_ok=True)
+    fig, ax = plt.subplots(figsize=(6.0, 4.2))
+    for cells, group in sorted(by_cells(results).items()):
+        group = sorted((m for m in group if m["onset"]), key=lambda m: m["a"])
+        if not group:
+            continue
+        a = [m["a"] for m in group]
+        ax.errorbar(a, [middle(m["onset"]) for m in group],
+                    yerr=[[middle(m["onset"]) - m["onset"][0] for m in group],
+                          [m["onset"][1] - middle(m["onset"]) for m in group]],
+                    marker="o", capsize=3, label=f"plisse, elements a/{cells:g}")
+    smooth_runs = [m for m in results if not m["onset"]]
+    if smooth_runs:
+        ax.plot([m["a"] for m in smooth_runs], [m["limit"] for m in smooth_runs], "v",
+                color="tab:green", label="no wrinkles up to this pressure")
+    radii = sorted({m["a"] for m in results})
+    xs = [radii[0] * (radii[-1] / radii[0]) ** (i / 40) for i in range(41)]
+    ax.plot(xs, [estimate(x, results[0]["t"]) for x in xs], "k--", lw=1,
+            label="dimensional argument (O3)")
+    ax.axhline(PRESSURE, color="tab:red", lw=1, label="the example's pressure 4.4e-5 MPa")
+    smooth, wrinkled = threshold(results)
+    if smooth and wrinkled:
+        ax.axvspan(smooth, wrinkled, color="tab:red", alpha=0.15, label="a* bracketed")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("mid-surface radius a [mm] (wall 1 mm, height 0.4 a)")
+    ax.set_ylabel("pressure at the rim's wrinkling onset [MPa]")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(directory, "onset.png"), dpi=130)
+    plt.close(fig)
+    surfaces(directory, results)
+
+
+def surfaces(directory, results):
+    """surface_A.png: the last state of the largest and the smallest wrinkled bag and of the
+    largest smooth one (runs of the coarsest in-plane size), coloured by the normal deviation
+    from the mean axisymmetric shape, with the rings."""
+    import study  # scripts/study.py: the studies' surface figure
+    import yaml
+
+    with open(CASE) as f:
+        settings = yaml.safe_load(f)["output"]["wrinkles"]
+    groups = by_cells(results)
+    runs = groups[min(groups)]
+    wrinkled = [m for m in runs if m["onset"]]
+    smooth = [m for m in runs if not m["onset"]]
+    chosen = []
+    if wrinkled:
+        chosen += [max(wrinkled, key=lambda m: m["a"]), min(wrinkled, key=lambda m: m["a"])]
+    if smooth:
+        chosen.append(max(smooth, key=lambda m: m["a"]))
+    for m in {id(m): m for m in chosen}.values():
+        vtu = study.last_vtu(m["run"])
+        if not vtu:
+            continue
+        state = (f"onset at {middle(m['onset']):.2e} MPa" if m["onset"]
+                 else "no wrinkles")
+        study.surface_figure(vtu, settings, os.path.join(directory, f"surface_{m['a']:g}.png"),
+                             f"a = {m['a']:g} mm, last state p = {m['limit']:.2e} MPa ({state})")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("runs", nargs="*")
+    parser.add_argument("--summary", action="store_true")
+    parser.add_argument("--sweep", metavar="DIR")
+    parser.add_argument("--radii", default="150,100,70,50", help="mid-surface radii a [mm]")
+    parser.add_argument("--cells", type=float, default=15.0,
+                        help="in-plane element size a / CELLS (--sweep)")
+    parser.add_argument("--set", action="append", metavar="KEY=VALUE",
+                        help="passed on to plisse run (e.g. solver.stability.modes=2)")
+    parser.add_argument("--minutes", type=float, default=40.0,
+                        help="stop a sweep's run after this long (--sweep)")
+    parser.add_argument("--figures", metavar="DIR")
+    args = parser.parse_args()
+    if args.sweep:
+        sweep(args.sweep, args)
+        return
+    if not args.runs:
+        parser.error("no run directories")
+    results = summary(args.runs)
+    if args.figures:
+        figures(args.figures, results)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
