@@ -31,7 +31,6 @@ study, O3: -2) and the radii between which the onset passes the example's pressu
 """
 import argparse
 import csv
-import json
 import math
 import os
 import signal
@@ -39,55 +38,47 @@ import subprocess
 import sys
 import time
 
+import numpy as np
+
+import study  # scripts/study.py: the studies' history and summary readers, surface figure
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CASE = os.path.join(ROOT, "validation", "airbag-onset.yaml")
 PRESSURE = 4.4e-5  # the example's (the paper's) pressure [MPa]
-C1 = 0.0033  # the example's neo-Hookean c1 [MPa]; E = 6 c1
+E = 6.0 * 0.0033  # the example's small-strain Young's modulus, 6 c1 [MPa]
 ASPECT = 5.0  # a / c of the example (150 / 30)
 THRESHOLD = 0.1  # a ring is wrinkled above this amplitude [mm]: 0.1 x the wall, as in the example
 AFTER = 3  # steps a sweep's run goes on past the onset
 
 
-def read_history(run):
-    with open(os.path.join(run, "history.csv")) as f:
-        return list(csv.DictReader(f))
-
-
-def read_summary(run):
-    with open(os.path.join(run, "summary.json")) as f:
-        return json.load(f)
-
-
 def geometry(run):
-    """(a, c, t): the undeformed mid-surface's semi-axes and the wall, from the first step file."""
+    """(a, t): the undeformed mid-surface's equatorial radius and the wall, from the first step
+    file."""
     import meshio
-    import numpy as np
 
-    mesh = meshio.read(os.path.join(run, "step_0000.vtu"))
-    x = mesh.points
-    rho = np.hypot(x[:, 0], x[:, 2])
-    equator = np.abs(x[:, 1]) < 1e-9
-    outer, inner = rho[equator].max(), rho[equator].min()
-    thickness = outer - inner
-    return 0.5 * (outer + inner), x[:, 1].max() - 0.5 * thickness, thickness
+    x = meshio.read(os.path.join(run, "step_0000.vtu")).points
+    rho = np.hypot(x[:, 0], x[:, 2])[np.abs(x[:, 1]) < 1e-9]
+    return 0.5 * (rho.max() + rho.min()), rho.max() - rho.min()
 
 
-def onset_index(rows):
-    """Index of the first row whose state is unstable or whose largest ring amplitude exceeds
-    THRESHOLD, or None."""
-    for i, r in enumerate(rows):
-        if r.get("stable", "1") == "0" or float(r["wrinkle_amplitude"]) > THRESHOLD:
-            return i
-    return None
+def onset_index(h):
+    """Index of the first step of the history columns `h` (study.read_history) whose state is
+    unstable or whose largest ring amplitude exceeds THRESHOLD, or None."""
+    if not h:
+        return None
+    hits = h["wrinkle_amplitude"] > THRESHOLD
+    if "stable" in h:
+        hits |= h["stable"] == 0
+    index = np.flatnonzero(hits)
+    return int(index[0]) if len(index) else None
 
 
 def steps_past_onset(run):
-    try:
-        rows = read_history(run)
-    except (OSError, ValueError, KeyError):
-        return -1
-    index = onset_index(rows) if rows else None
-    return -1 if index is None else len(rows) - 1 - index
+    """Steps a running run has written past its onset, or -1 (read while plisse writes: the
+    reader leaves out a row still being written)."""
+    h = study.read_history(run)
+    index = onset_index(h)
+    return -1 if index is None else len(h["step"]) - 1 - index
 
 
 def spectrum_peak(run, step):
@@ -107,20 +98,21 @@ def spectrum_peak(run, step):
 
 
 def measure(run):
-    a, c, t = geometry(run)
-    rows = read_history(run)
-    summary = read_summary(run)
-    result = {"run": run, "a": a, "c": c, "t": t, "onset": None, "kind": None, "count": 0,
-              "peak": None, "limit": max(float(r["pressure:gas"]) for r in rows),
-              "steps": len(rows), "interrupted": bool(summary.get("interrupted")),
-              "unknowns": summary.get("free_dofs")}
-    index = onset_index(rows)
+    a, t = geometry(run)
+    h = study.read_history(run)
+    if not h:
+        sys.exit(f"{run}: history.csv has no complete step")
+    p = h["pressure:gas"]
+    result = {"run": run, "a": a, "t": t, "onset": None, "kind": None, "count": 0,
+              "peak": None, "limit": float(p.max()), "steps": len(p),
+              "unknowns": study.read_summary(run).get("free_dofs")}
+    index = onset_index(h)
     if index is not None:
-        before = float(rows[index - 1]["pressure:gas"]) if index > 0 else 0.0
-        result["onset"] = (before, float(rows[index]["pressure:gas"]))
-        result["kind"] = "instability" if rows[index].get("stable") == "0" else "folds"
-        result["count"] = int(float(rows[index]["wrinkle_count"]))
-        result["peak"] = spectrum_peak(run, int(rows[index]["step"]))
+        result["onset"] = (float(p[index - 1]) if index > 0 else 0.0, float(p[index]))
+        unstable = "stable" in h and h["stable"][index] == 0
+        result["kind"] = "instability" if unstable else "folds"
+        result["count"] = int(h["wrinkle_count"][index])
+        result["peak"] = spectrum_peak(run, int(h["step"][index]))
     return result
 
 
@@ -148,8 +140,7 @@ def estimate(a, t):
     """The onset pressure of the dimensional argument (docs/studies/airbag-onset.md, O1-O3):
     membrane hoop compression of the undeformed rim against the axial buckling stress of a
     cylinder of the rim's meridian radius c^2 / a."""
-    e = 6.0 * C1
-    return (2.0 / 3.0) * e * t**2 * ASPECT**2 / (0.5 * a**2 * (ASPECT**2 - 2.0))
+    return (2.0 / 3.0) * E * t**2 * ASPECT**2 / (0.5 * a**2 * (ASPECT**2 - 2.0))
 
 
 def local_exponents(points):
@@ -171,14 +162,13 @@ def threshold(results):
 
 def summary(runs):
     results = sorted((measure(run) for run in runs), key=lambda m: (m["a"], m["unknowns"] or 0))
-    e = 6.0 * C1
     print(f"{'run':<14} {'a [mm]':>6} {'unknowns':>8} {'onset p [MPa]':>21} {'kind':>11} "
           f"{'p_c a^2/(E t^2)':>15} {'m':>3} {'ring [deg]':>10} "
           f"{'largest p [MPa]':>15} {'steps':>5}")
     for m in results:
         if m["onset"]:
             onset = f"{m['onset'][0]:.3e} - {m['onset'][1]:.3e}"
-            scaled = f"{middle(m['onset']) * m['a'] ** 2 / (e * m['t'] ** 2):15.3f}"
+            scaled = f"{middle(m['onset']) * m['a'] ** 2 / (E * m['t'] ** 2):15.3f}"
         else:
             onset, scaled = "none", f"{'-':>15}"
         ring = f"{m['peak'][0]:10.0f}" if m["peak"] else f"{'-':>10}"
@@ -272,7 +262,6 @@ def surfaces(directory, results):
     """surface_A.png: the last state of the largest and the smallest wrinkled bag and of the
     largest smooth one (runs of the coarsest in-plane size), coloured by the normal deviation
     from the mean axisymmetric shape, with the rings."""
-    import study  # scripts/study.py: the studies' surface figure
     import yaml
 
     with open(CASE) as f:
