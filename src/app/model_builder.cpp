@@ -105,6 +105,7 @@ void orient_fibres_on_the_shell(const Case& c, const MaterialSection& section, i
                          kind + "); give the directions in x, y, z with fibre_frame: global");
   const FibreReinforced base = std::get<FibreReinforced>(m.materials[std::size_t(index)]);
   const double bulk = m.inverse_bulk_moduli[std::size_t(index)];
+  const InelasticLaw law = m.laws[std::size_t(index)];
   if (m.of_element.empty()) m.of_element.assign(mesh.tets.size(), 0);
   const Vec3d a1(base.a1_x, base.a1_y, base.a1_z), a2(base.a2_x, base.a2_y, base.a2_z);
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
@@ -119,6 +120,7 @@ void orient_fibres_on_the_shell(const Case& c, const MaterialSection& section, i
     m.of_element[t] = static_cast<int>(m.materials.size());
     m.materials.push_back(oriented);
     m.inverse_bulk_moduli.push_back(bulk);
+    m.laws.push_back(law);
   }
 }
 
@@ -140,6 +142,7 @@ ElementMaterials element_materials(const Case& c, const Mesh& mesh) {
     }
     for (int t : region_tets(r, mesh)) m.of_element[static_cast<std::size_t>(t)] = index;
   }
+  for (const MaterialSection* section : sections) m.laws.push_back(section->inelastic());
   for (std::size_t k = 0; k < sections.size(); ++k)
     if (sections[k]->shell_fibre_frame)
       orient_fibres_on_the_shell(c, *sections[k], static_cast<int>(k), mesh, m);

@@ -6,7 +6,8 @@
 ///
 /// W is the isochoric energy of the material, p the pressure (positive in compression),
 /// σ = σ_iso - p I; 1/κ = 0 is exact incompressibility. The kernels are templates on the material:
-/// any type with `PointResponse evaluate(const Mat3d& F) const` (W, P = ∂W/∂F, A = ∂P/∂F) works.
+/// any type with `PointResponse evaluate(const Mat3d& F) const` (W, P = ∂W/∂F, A = ∂P/∂F) works, or
+/// with `evaluate_at(q, F)` for a model whose points carry history (material/point_response.hpp).
 /// No heap allocation; inputs are const, outputs owned by the caller: thread-safe.
 #include <algorithm>
 #include <cmath>
@@ -17,6 +18,7 @@
 #include "element/mini_layout.hpp"
 #include "element/tet_geometry.hpp"
 #include "material/inadmissible_deformation.hpp"
+#include "material/point_response.hpp"
 
 namespace plisse::mini {
 
@@ -35,7 +37,7 @@ bool integrate_points(const TetGeometry& g, const NodalState& s, const BubbleVec
     min_J = std::min(min_J, k.J);
     if (!(k.J > 0.0) || !std::isfinite(k.J)) return false;
     try {
-      sums.add_point(q, k, mat.evaluate(k.F));
+      sums.add_point(q, k, evaluate_at_point(mat, q, k.F));
     } catch (const InadmissibleDeformation&) {
       return false;
     }
@@ -137,7 +139,8 @@ ElementFields compute_element_fields(const TetGeometry& g, const ElemVec& x_e, c
     const PointKinematics k = compute_point_kinematics(g, s, bubble, q);
     FE_CHECK(k.J > 0.0, "element fields: det F = " << k.J << " <= 0 at quadrature point " << q);
     const double w = g.weight[q] / g.volume;
-    const Mat3d sigma = mat.evaluate(k.F).P * k.F.transpose() / k.J - k.p * Mat3d::Identity();
+    const Mat3d sigma =
+        evaluate_at_point(mat, q, k.F).P * k.F.transpose() / k.J - k.p * Mat3d::Identity();
     fields.cauchy += w * sigma;
     fields.J += w * k.J;
     fields.pressure += w * k.p;
@@ -156,8 +159,8 @@ double compute_element_energy(const TetGeometry& g, const ElemVec& x_e, const Ma
   for (int q = 0; q < kQuadPoints; ++q) {
     const PointKinematics k = compute_point_kinematics(g, s, bubble, q);
     if (!(k.J > 0.0)) return std::numeric_limits<double>::quiet_NaN();
-    energy += g.weight[q] *
-              (mat.evaluate(k.F).W - k.p * k.J_minus_1 - 0.5 * inverse_bulk_modulus * k.p * k.p);
+    energy += g.weight[q] * (evaluate_at_point(mat, q, k.F).W - k.p * k.J_minus_1 -
+                             0.5 * inverse_bulk_modulus * k.p * k.p);
   }
   return energy;
 }

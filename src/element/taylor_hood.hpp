@@ -85,7 +85,7 @@ ElementStatus assemble(const Geometry& g, const ElemVec& x_e, const Material& ma
     bool admissible = k.J > 0.0 && std::isfinite(k.J);
     if (admissible) {
       try {
-        m = mat.evaluate(k.F);
+        m = evaluate_at_point(mat, q, k.F);
       } catch (const InadmissibleDeformation&) {
         admissible = false;
       }
@@ -148,7 +148,8 @@ ElementFields compute_element_fields(const Geometry& g, const ElemVec& x_e, cons
     const PointKinematics k = point_kinematics(g, u, p, q);
     FE_CHECK(k.J > 0.0, "element fields: det F = " << k.J << " <= 0 at quadrature point " << q);
     const double w = g.weight[q] / g.volume;
-    fields.cauchy += w * (mat.evaluate(k.F).P * k.F.transpose() / k.J - k.p * Mat3d::Identity());
+    fields.cauchy +=
+        w * (evaluate_at_point(mat, q, k.F).P * k.F.transpose() / k.J - k.p * Mat3d::Identity());
     fields.J += w * k.J;
     fields.pressure += w * k.p;
   }
@@ -185,8 +186,8 @@ double compute_element_energy(const Geometry& g, const ElemVec& x_e, const Mater
   for (int q = 0; q < kQuadPoints; ++q) {
     const PointKinematics k = point_kinematics(g, u, p, q);
     if (!(k.J > 0.0)) return std::numeric_limits<double>::quiet_NaN();
-    energy += g.weight[q] *
-              (mat.evaluate(k.F).W - k.p * k.J_minus_1 - 0.5 * inverse_bulk_modulus * k.p * k.p);
+    energy += g.weight[q] * (evaluate_at_point(mat, q, k.F).W - k.p * k.J_minus_1 -
+                             0.5 * inverse_bulk_modulus * k.p * k.p);
   }
   return energy;
 }

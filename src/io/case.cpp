@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 
 #include "io/case_keys.hpp"
@@ -329,6 +330,53 @@ MeshSection read_mesh(const Field& field, ReadContext& context) {
   return s;
 }
 
+/// `material.viscoelastic`: up to three Maxwell elements (material/inelastic.hpp).
+Schema<Viscoelasticity> viscoelastic_schema() {
+  Schema<Viscoelasticity> s;
+  s.real("beta1", &Viscoelasticity::beta1, Range::positive(), "–",
+         "strength of Maxwell element 1 relative to the equilibrium (base model) response: the "
+         "instantaneous stress is (1 + beta1 + beta2 + beta3) times the equilibrium one")
+      .required();
+  s.real("tau1", &Viscoelasticity::tau1, Range::positive(), "s", "relaxation time of element 1")
+      .required();
+  s.real("beta2", &Viscoelasticity::beta2, Range::positive(), "–",
+         "strength of element 2 (absent: one element)");
+  s.real("tau2", &Viscoelasticity::tau2, Range::positive(), "s",
+         "relaxation time of element 2 (with `beta2`)");
+  s.real("beta3", &Viscoelasticity::beta3, Range::positive(), "–",
+         "strength of element 3 (needs element 2)");
+  s.real("tau3", &Viscoelasticity::tau3, Range::positive(), "s",
+         "relaxation time of element 3 (with `beta3`)");
+  s.rule("`beta2` and `tau2` go together, as do `beta3` and `tau3`; element 3 needs element 2",
+         [](const FieldMap& m, const Viscoelasticity&, const ReadContext&) {
+           for (const std::string n : {"2", "3"}) {
+             const bool beta = m.has("beta" + n), tau = m.has("tau" + n);
+             if (beta && !tau) m.require("tau" + n);
+             if (tau && !beta) m.require("beta" + n);
+           }
+           if (m.has("beta3") && !m.has("beta2"))
+             m.require("beta3").fail_at_key(
+                 "element 3 needs element 2: give beta2 and tau2 first (or rename this one)");
+         });
+  return s;
+}
+
+/// `material.mullins`: Ogden & Roxburgh's softening (material/inelastic.hpp).
+Schema<MullinsSoftening> mullins_schema() {
+  Schema<MullinsSoftening> s;
+  s.real("r", &MullinsSoftening::r, Range{1.0, std::numeric_limits<double>::infinity(), true, true},
+         "–",
+         "extent of the softening: the stress falls to no less than (1 - 1/r) of the virgin "
+         "material's")
+      .required();
+  s.real("m", &MullinsSoftening::m, Range::positive(), "MPa",
+         "energy scale over which the softened curve rejoins the virgin one")
+      .required();
+  s.real("beta", &MullinsSoftening::beta, Range{0.0, 1.0, false, true}, "–",
+         "growth of that scale with the largest energy reached, m + beta Wmax");
+  return s;
+}
+
 /// `material:`. Its variant is the model; the model's parameters come from the material registry
 /// (material/registry.hpp), which also checks them, and are read in read_material.
 Schema<MaterialSection> material_schema() {
@@ -394,6 +442,14 @@ Schema<MaterialSection> material_schema() {
             f.fail_at_key("fibre_frame applies only to model 'fibre-reinforced' (got '" + m.model +
                           "')");
         });
+  s.nested("viscoelastic", &MaterialSection::viscoelastic, viscoelastic_schema()).doc.help =
+      "a Prony series on the isochoric stress: the base model is the long-term response, and "
+      "each Maxwell element i relaxes its overstress with time constant tau_i "
+      "([theory/materials.md](theory/materials.md), V1-V7); times are in seconds of "
+      "`solver.end_time`";
+  s.nested("mullins", &MaterialSection::mullins, mullins_schema()).doc.help =
+      "Mullins softening (Ogden & Roxburgh 1999): below the largest energy reached the stress "
+      "is scaled by η in [1 - 1/r, 1] ([theory/materials.md](theory/materials.md), M1-M5)";
   s.rule("`bulk_modulus` is required with `incompressibility: nearly` and refused with `exact`",
          nullptr);
   s.rule(

@@ -20,6 +20,7 @@
 #include "core/types.hpp"
 #include "element/element_family.hpp"
 #include "io/vtu_writer.hpp"
+#include "material/inelastic.hpp"
 #include "mesh/generate.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/surface_ref.hpp"
@@ -65,6 +66,10 @@ struct MaterialSection {
   /// x, y, z.
   bool shell_fibre_frame = false;
   InputPlace fibre_frame_place;
+  /// `viscoelastic:` and `mullins:` (material/inelastic.hpp); absent: none.
+  Viscoelasticity viscoelastic;
+  MullinsSoftening mullins;
+  InelasticLaw inelastic() const { return {viscoelastic, mullins}; }
   InputPlace place;
   /// 1/κ [1/MPa] as the mixed formulation takes it: 0 for exact incompressibility.
   double inverse_bulk_modulus() const { return exact_incompressibility ? 0.0 : 1.0 / bulk_modulus; }

@@ -12,4 +12,17 @@ struct PointResponse {
   Mat9d A;         ///< d vec(P) / d vec(F) [MPa]
 };
 
+/// The response of `material` at quadrature point q of an element, deformation F: what the element
+/// kernels call. A model with history (material/inelastic_points.hpp) answers through
+/// `evaluate_at(q, F)`, since its response depends on the point's own past; an elastic model
+/// through `evaluate(F)`.
+template <class Material>
+PointResponse evaluate_at_point(const Material& material, int q, const Mat3d& F) {
+  if constexpr (requires { material.evaluate_at(q, F); }) {
+    return material.evaluate_at(q, F);
+  } else {
+    return material.evaluate(F);
+  }
+}
+
 }  // namespace plisse

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "material/inelastic_points.hpp"
 #include "material/registry.hpp"
 #include "mesh/mesh.hpp"
 #include "solver/assembly_status.hpp"
@@ -74,6 +75,14 @@ class ElementAssembly {
     }
     internal_.assign(n, Element::initial_internal());
     converged_internal_ = internal_;
+    // The history of the points of models with viscoelasticity or Mullins softening, element
+    // after element (none for elastic and rigid elements); all zero is the undeformed body.
+    history_offset_.assign(static_cast<std::size_t>(n) + 1, 0);
+    for (int e = 0; e < n; ++e)
+      history_offset_[e + 1] = history_offset_[e] + static_cast<std::size_t>(Element::kQuadPoints) *
+                                                        materials_.history_size(materials_.of(e));
+    history_.assign(history_offset_.back(), 0.0);
+    converged_history_ = history_;
   }
 
   /// The element node lists (a view of this object's storage).
@@ -82,6 +91,11 @@ class ElementAssembly {
   const ElementMaterials& materials() const { return materials_; }
   /// Number of elements (all ranks hold all of them).
   int n_elements() const { return static_cast<int>(geometry_.size()); }
+  /// True when some element's points carry history (viscoelasticity, Mullins softening).
+  bool has_history() const { return !history_.empty(); }
+  /// The time [s] from the last converged state to the state the next assemblies evaluate: the
+  /// step of the history update (material/inelastic.hpp). 0 evaluates the converged response.
+  void set_time_step(double dt) { dt_ = dt; }
 
   /// Adds the residual of the local elements of `distribution` at the full state `state` to
   /// `residual` (full-state layout) and updates their internal state. Collective (the status is
@@ -141,6 +155,7 @@ class ElementAssembly {
         const std::array<int, Element::kDof> full = dofs(e);
         typename Element::Vector x = gather(full, state);
         int m = materials_.of(e);
+        const InelasticLaw* law = materials_.law(m);  // nullptr for a rigid element
         if (m == ElementMaterials::kRigid) {
           // A rigid element moves rigidly and carries no stress: any model at zero pressure
           // gives F, J = 1 and zero stresses.
@@ -148,11 +163,18 @@ class ElementAssembly {
             if (full[i] % DofMap::kPerNode == 3) x[i] = 0.0;
           m = 0;
         }
-        out[e] = std::visit(
-            [&](const auto& material) {
-              return Element::fields(geometry_[e], x, material, internal_[e]);
-            },
-            materials_.materials[m]);
+        if (law != nullptr) {
+          // The stress of the state with the last converged history.
+          const InelasticPoints points{
+              &materials_.materials[m], law, converged_history(e), {}, 0.0};
+          out[e] = Element::fields(geometry_[e], x, points, internal_[e]);
+        } else {
+          out[e] = std::visit(
+              [&](const auto& material) {
+                return Element::fields(geometry_[e], x, material, internal_[e]);
+              },
+              materials_.materials[m]);
+        }
       } catch (...) {
 #pragma omp critical(plisse_element_fields_error)
         if (!error) error = std::current_exception();
@@ -197,29 +219,45 @@ class ElementAssembly {
     }
   }
 
-  /// Remember / return to the internal state of the last converged state.
-  void save_converged() { converged_internal_ = internal_; }
-  void restore_converged() { internal_ = converged_internal_; }
-
-  /// Doubles of internal state of all elements (kInternalSize per element).
-  std::size_t n_internal_values() const {
-    return internal_.size() * static_cast<std::size_t>(Element::kInternalSize);
+  /// Remember / return to the internal state and the points' history of the last converged
+  /// state. The history must have been evaluated at the state being saved (MixedModel evaluates
+  /// the residual there first).
+  void save_converged() {
+    converged_internal_ = internal_;
+    converged_history_ = history_;
   }
-  /// The converged internal state of every element, element after element, as each element's
-  /// owner holds it. Collective.
+  void restore_converged() {
+    internal_ = converged_internal_;
+    history_ = converged_history_;
+  }
+
+  /// Doubles of internal state of all elements: kInternalSize per element, then the history of
+  /// their points.
+  std::size_t n_internal_values() const {
+    return internal_.size() * static_cast<std::size_t>(Element::kInternalSize) + history_.size();
+  }
+  /// The converged internal state of every element, element after element, then the converged
+  /// history of their points, element after element, as each element's owner holds them.
+  /// Collective.
   std::vector<double> converged_values(const Distribution& distribution) const {
     constexpr int kSize = Element::kInternalSize;
     std::vector<double> values;
     values.reserve(n_internal_values());
     for (const auto& s : converged_internal_)
       values.insert(values.end(), s.data(), s.data() + kSize);
+    values.insert(values.end(), converged_history_.begin(), converged_history_.end());
     if (distribution.n_ranks() > 1) {
       // Each rank's internal state is current only on its own elements: the owners' values,
       // summed with zeros from everyone else.
       std::vector<char> mine(converged_internal_.size(), 0);
       for (int e : distribution.owned_elements()) mine[e] = 1;
-      for (std::size_t e = 0; e < mine.size(); ++e)
-        if (!mine[e]) std::fill_n(values.begin() + e * kSize, kSize, 0.0);
+      const std::size_t bubbles = converged_internal_.size() * kSize;
+      for (std::size_t e = 0; e < mine.size(); ++e) {
+        if (mine[e]) continue;
+        std::fill_n(values.begin() + e * kSize, kSize, 0.0);
+        std::fill(values.begin() + bubbles + history_offset_[e],
+                  values.begin() + bubbles + history_offset_[e + 1], 0.0);
+      }
       distribution.sum_over_ranks(values.data(), values.size());
     }
     return values;
@@ -230,7 +268,10 @@ class ElementAssembly {
     for (std::size_t e = 0; e < internal_.size(); ++e)
       std::copy_n(values.data() + e * Element::kInternalSize, Element::kInternalSize,
                   internal_[e].data());
+    std::copy(values.end() - static_cast<std::ptrdiff_t>(history_.size()), values.end(),
+              history_.begin());
     converged_internal_ = internal_;
+    converged_history_ = history_;
   }
 
  private:
@@ -245,6 +286,15 @@ class ElementAssembly {
   std::array<int, Element::kDof> dofs(int e) const {
     return Element::dofs(std::span<const int, Element::kNodes>(
         nodes_.data() + static_cast<std::size_t>(e) * Element::kNodes, Element::kNodes));
+  }
+  /// Element e's point history: the current (written by evaluations) and the converged one.
+  std::span<double> history(int e) {
+    return std::span<double>(history_).subspan(history_offset_[e],
+                                               history_offset_[e + 1] - history_offset_[e]);
+  }
+  std::span<const double> converged_history(int e) const {
+    return std::span<const double>(converged_history_)
+        .subspan(history_offset_[e], history_offset_[e + 1] - history_offset_[e]);
   }
   static typename Element::Vector gather(const std::array<int, Element::kDof>& full,
                                          std::span<const double> state) {
@@ -275,13 +325,21 @@ class ElementAssembly {
           const int m = materials_.of(e);
           out.rigid = m == ElementMaterials::kRigid;
           if (out.rigid) continue;
-          out.status = std::visit(
-              [&](const auto& material) {
-                return Element::evaluate(geometry_[e], gather(dofs(e), state), material,
-                                         materials_.inverse_bulk_moduli[m], internal_[e], out.r,
-                                         with_tangent ? &out.K : nullptr);
-              },
-              materials_.materials[m]);
+          if (const InelasticLaw* law = materials_.law(m)) {
+            const InelasticPoints points{&materials_.materials[m], law, converged_history(e),
+                                         history(e), dt_};
+            out.status = Element::evaluate(geometry_[e], gather(dofs(e), state), points,
+                                           materials_.inverse_bulk_moduli[m], internal_[e], out.r,
+                                           with_tangent ? &out.K : nullptr);
+          } else {
+            out.status = std::visit(
+                [&](const auto& material) {
+                  return Element::evaluate(geometry_[e], gather(dofs(e), state), material,
+                                           materials_.inverse_bulk_moduli[m], internal_[e], out.r,
+                                           with_tangent ? &out.K : nullptr);
+                },
+                materials_.materials[m]);
+          }
         } catch (...) {
 #pragma omp critical(plisse_element_loop_error)
           if (!error) error = std::current_exception();
@@ -302,6 +360,11 @@ class ElementAssembly {
   std::vector<int> nodes_;  ///< Element::kNodes per element
   std::vector<typename Element::Geometry> geometry_;
   std::vector<typename Element::Internal> internal_, converged_internal_;
+  /// Point history (material/inelastic.hpp): element e's at [history_offset_[e],
+  /// history_offset_[e + 1]), kQuadPoints times its law's history_size.
+  std::vector<std::size_t> history_offset_;
+  std::vector<double> history_, converged_history_;
+  double dt_ = 0.0;            ///< [s] see set_time_step
   std::vector<Result> chunk_;  ///< element loop buffer, kept between assemblies
 };
 

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "material/inelastic.hpp"
 #include "material/registry.hpp"
 
 namespace plisse {
@@ -20,6 +21,9 @@ struct ElementMaterials {
   std::vector<double> inverse_bulk_moduli;
   /// Per tetrahedron: its index into `materials`, or kRigid. Empty: every element has material 0.
   std::vector<int> of_element;
+  /// The viscoelasticity and Mullins softening of each model, index by index (material/
+  /// inelastic.hpp). Empty: every model is elastic.
+  std::vector<InelasticLaw> laws;
 
   /// Every element of one material.
   static ElementMaterials uniform(AnyMaterial material, double inverse_bulk_modulus) {
@@ -31,6 +35,23 @@ struct ElementMaterials {
   /// The material index of element e.
   int of(int e) const { return of_element.empty() ? 0 : of_element[static_cast<std::size_t>(e)]; }
   bool rigid(int e) const { return of(e) == kRigid; }
+  /// The law of model m when its points carry history, else nullptr (elastic).
+  const InelasticLaw* law(int m) const {
+    if (m < 0 || static_cast<std::size_t>(m) >= laws.size()) return nullptr;
+    const InelasticLaw& l = laws[static_cast<std::size_t>(m)];
+    return l.elastic() ? nullptr : &l;
+  }
+  /// Doubles of history per quadrature point of model m's elements (0: elastic or rigid).
+  int history_size(int m) const {
+    const InelasticLaw* l = law(m);
+    return l == nullptr ? 0 : l->history_size();
+  }
+  /// True when some model carries history.
+  bool any_history() const {
+    for (std::size_t m = 0; m < laws.size(); ++m)
+      if (law(static_cast<int>(m)) != nullptr) return true;
+    return false;
+  }
 };
 
 }  // namespace plisse

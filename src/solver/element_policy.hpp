@@ -13,6 +13,8 @@
 ///   kInternalSize  doubles of internal state per element, condensed out of the global system
 ///                  and carried from one evaluation to the next (a warm start). MINI: 3 (bubble).
 ///                  May be 0.
+///   kQuadPoints    quadrature points per element: where a model with history keeps it (the
+///                  kernels ask for the response at point q, evaluate_at_point).
 /// Types
 ///   Vector, Matrix  fixed-size Eigen types of kDof and kDof x kDof doubles (element unknowns,
 ///                   residual, tangent). No heap.
@@ -59,6 +61,7 @@ concept ElementPolicy = requires(const Mesh& mesh, std::span<const int, E::kNode
   { E::kNodes } -> std::convertible_to<int>;
   { E::kDof } -> std::convertible_to<int>;
   { E::kInternalSize } -> std::convertible_to<int>;
+  { E::kQuadPoints } -> std::convertible_to<int>;
   { E::kLocalNode } -> std::convertible_to<std::array<int, E::kDof>>;
   { E::n_elements(mesh) } -> std::same_as<int>;
   { E::nodes(mesh, 0) } -> std::same_as<std::array<int, E::kNodes>>;

@@ -278,6 +278,7 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
     // The model already holds the checkpoint's converged state.
     st = *resume_;
     resume_.reset();
+    model_.resume_at(st.time);
   } else {
     st = StepperState{};
     st.dt = std::min(end / settings_.steps, max_dt);

@@ -19,6 +19,7 @@ struct MiniElement {
   static constexpr int kNodes = mini::kNodes;
   static constexpr int kDof = mini::kDof;
   static constexpr int kInternalSize = mini::kDofBubble;
+  static constexpr int kQuadPoints = mini::kQuadPoints;
   using Vector = mini::ElemVec;
   using Matrix = mini::ElemMat;
   using Internal = mini::BubbleVec;

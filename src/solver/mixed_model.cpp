@@ -125,6 +125,7 @@ int MixedModel::assembly_threads() const {
 
 void MixedModel::set_time(double t) {
   time_ = t;
+  visit_elements([&](auto& e) { e.set_time_step(time_ - converged_time_); });
   for (const auto& c : constraints_) state_[DofMap::dof(c.node, c.component)] = c.at(t);
 }
 
@@ -226,9 +227,24 @@ void MixedModel::continue_from(std::span<const double> state, std::span<const do
   save_converged();
 }
 
+void MixedModel::resume_at(double t) {
+  converged_time_ = t;
+  set_time(t);
+}
+
 void MixedModel::save_converged() {
   converged_state_ = state_;
-  visit_elements([](auto& e) { e.save_converged(); });
+  visit_elements([&](auto& e) {
+    // The points' history must be that of this state: the last assembly may have been elsewhere
+    // (a line-search trial, a tangent at the previous iterate), so evaluate it here.
+    if (e.has_history()) {
+      history_residual_.assign(state_.size(), 0.0);
+      e.add_residual(*distribution_, state_, history_residual_, assembly_threads());
+    }
+    e.save_converged();
+  });
+  converged_time_ = time_;
+  visit_elements([](auto& e) { e.set_time_step(0.0); });
   for (auto& term : terms_) term->accept_step(state_);
   refresh_couplings();
 }

@@ -120,6 +120,9 @@ class MixedModel {
   /// external forces their ramped magnitude.
   void set_time(double t);
   double time() const { return time_; }
+  /// Takes up a run from a checkpoint at time t: the model holds the converged state of t
+  /// (restore), which is also the time its points' history was last updated.
+  void resume_at(double t);
 
   /// Fixed external nodal forces [N] on the full dofs (zero on pressure dofs), applied as
   /// ramp.factor(t) * force; the residual is internal minus external force. Replaces earlier ones.
@@ -169,7 +172,8 @@ class MixedModel {
   /// fit this model.
   void restore(const Snapshot& s);
 
-  /// Remember / return to the last converged state (state and the elements' bubbles).
+  /// Remember / return to the last converged state (state, the elements' bubbles and the history
+  /// of their points; its time is the current time).
   void save_converged();
   void restore_converged();
   /// Starts from another run's converged state on the same mesh and element: its nodal values
@@ -245,6 +249,8 @@ class MixedModel {
   std::vector<double> external_force_;
   Ramp external_ramp_;
   double time_ = 0.0;
+  double converged_time_ = 0.0;  ///< [s] of the last converged state: the history's step starts
+  std::vector<double> history_residual_;  ///< scratch of save_converged
 
   int threads_ = 0;
   std::vector<double> term_residual_;  ///< residual part discarded by assemble_tangent

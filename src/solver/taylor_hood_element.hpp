@@ -19,6 +19,7 @@ struct TaylorHoodElement {
   static constexpr int kNodes = taylor_hood::kNodes;
   static constexpr int kDof = taylor_hood::kDof;
   static constexpr int kInternalSize = 0;
+  static constexpr int kQuadPoints = taylor_hood::kQuadPoints;
   using Vector = taylor_hood::ElemVec;
   using Matrix = taylor_hood::ElemMat;
   using Geometry = taylor_hood::Geometry;
