@@ -206,6 +206,93 @@ def ogden_balloon(runs, figures):
     ]
 
 
+def inelastic_cubes(runs, figures):
+    """The viscoelastic and Mullins cubes (docs/theory/materials.md, V7 and MR2-MR3)."""
+    c1, area = 0.25, 25.0
+    lines = [
+        "## Cube with viscoelasticity and with Mullins softening",
+        "",
+        "The sliding-ends cube (neo-Hookean c1 = 0.25 MPa) deforms homogeneously, so the nominal",
+        "stress (the top's reaction over its 25 mm² reference area) has a closed form at every step.",
+        "`cube-relaxation-viscoelastic`: stretched to 2 in the first step (0.02 s) and held 20 s, with",
+        "two Maxwell elements (β = 0.8, τ = 0.5 s; β = 0.3, τ = 4 s): P(t) = P∞ (1 + Σ β_i",
+        "exp(−(t − t_jump)/τ_i)) (Simo 1987; Holzapfel 2000, section 6.10), or the same sum over the",
+        "steps that share the stretch when the first one is cut back (Taylor-Hood's). `cube-cycles-mullins`:",
+        "cycles to stretch 2, 2 and 2.5 with Ogden & Roxburgh's softening (r = 2, m = 0.05 MPa, β = 0.1):",
+        "P = η P0, η = 1 − erf((Wmax − W)/(m + β Wmax))/r (Ogden & Roxburgh 1999).",
+        "",
+        "| case | element | steps | Newton iterations | max error of P / P∞(λ = 2) |",
+        "|---|---|---|---|---|",
+    ]
+    beta, tau = (0.8, 0.3), (0.5, 4.0)
+
+    def s_axial_lateral(lam):
+        i1 = lam**2 + 2 / lam
+        return 2 * c1 * (1 - i1 / (3 * lam**2)), 2 * c1 * (1 - i1 * lam / 3)
+
+    def relaxation(h):
+        times, lams, out = [0.0], [1.0], []
+        for t, lam in zip(h["time"], h["stretch_z"]):
+            times.append(t)
+            lams.append(lam)
+            sa, sl = s_axial_lateral(lam)
+            for k in range(1, len(times)):
+                for b_i, t_i in zip(beta, tau):
+                    d = b_i * math.exp(-(t - 0.5 * (times[k - 1] + times[k])) / t_i)
+                    a1, l1 = s_axial_lateral(lams[k])
+                    a0, l0 = s_axial_lateral(lams[k - 1])
+                    sa += d * (a1 - a0)
+                    sl += d * (l1 - l0)
+            out.append(lam * sa - sl / lam**2)
+        return out
+
+    def mullins(h, r=2.0, m=0.05, b=0.1):
+        wmax, out = 0.0, []
+        for lam in h["stretch_z"]:
+            w = c1 * (lam**2 + 2 / lam - 3)
+            wmax = max(wmax, w)
+            eta = 1 - math.erf((wmax - w) / (m + b * wmax)) / r
+            out.append(eta * 2 * c1 * (lam - 1 / lam**2))
+        return out
+
+    scale = 2 * c1 * (2.0 - 0.25)
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4.2))
+    for name, exact, ax in [("cube-relaxation-viscoelastic", relaxation, ax1),
+                            ("cube-cycles-mullins", mullins, ax2)]:
+        for suffix, element in [("", "mini"), ("-th", "taylor-hood")]:
+            h = read_history(runs / f"{name}{suffix}" / "history.csv")
+            p = [f / area for f in h["force_z:top"]]
+            e = exact(h)
+            err = max(abs(a - b) for a, b in zip(p, e)) / scale
+            lines.append(f"| `{name}` | {element} | {len(p)} | {int(sum(h['newton_iterations']))} | {err:.2e} |")
+            if suffix == "":
+                x = h["time"] if name.startswith("cube-relaxation") else h["stretch_z"]
+                ax.plot(x, p, "o", ms=3, label="plisse (MINI)", zorder=3)
+    # The closed forms on fine grids: the relaxation after a jump at 0.01 s, the cycles' load curve.
+    t = [0.02 * 1000 ** (k / 400) for k in range(401)]
+    ax1.plot(t, [scale * (1 + sum(b_i * math.exp(-(x - 0.01) / t_i) for b_i, t_i in zip(beta, tau)))
+                 for x in t], "k-", lw=1, label="closed form")
+    corners = [(0, 0), (1, 1), (2, 0), (3, 1), (4, 0), (5, 1.5), (6, 0)]
+    path = []
+    for (t0, f0), (t1, f1) in zip(corners, corners[1:]):
+        path += [1 + (f0 + (f1 - f0) * k / 200) for k in range(200)]
+    ax2.plot(path, mullins({"stretch_z": path}), "k-", lw=1, label="closed form")
+    ax1.axhline(scale, color="gray", ls=":", label="equilibrium P∞")
+    ax1.set_xscale("log")
+    ax1.set_xlabel("time [s]")
+    ax1.set_ylabel("nominal stress P [MPa]")
+    ax1.set_title("Relaxation at stretch 2")
+    ax2.set_xlabel("stretch λ")
+    ax2.set_ylabel("nominal stress P [MPa]")
+    ax2.set_title("Mullins cycles to 2, 2, 2.5")
+    for ax in (ax1, ax2):
+        ax.legend()
+        ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(figures / "cube-inelastic.png", dpi=120)
+    return lines + ["", "![viscoelastic and Mullins cubes](figures/cube-inelastic.png)", ""]
+
+
 def main(runs, docs):
     root = Path(__file__).resolve().parent.parent
     figures = docs / "figures"
@@ -305,6 +392,7 @@ def main(runs, docs):
         "![cube tension, sticking](figures/cube-tension-sticking.png)",
         "",
     ]
+    lines += inelastic_cubes(runs, figures)
     lines += sphere_inflation(runs, figures)
     lines += balloon(runs, figures)
     lines += ogden_balloon(runs, figures)

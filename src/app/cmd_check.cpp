@@ -54,6 +54,16 @@ std::string material_line(const MaterialSection& m) {
   if (m.density > 0.0) out += "; density " + number(m.density) + " tonne/mm^3";
   if (m.shell_fibre_frame)
     out += "; fibre directions in each element's (meridian, hoop, normal) frame";
+  const Viscoelasticity& v = m.viscoelastic;
+  if (v.n_terms() > 0) {
+    out += "; viscoelastic, " + count(static_cast<std::size_t>(v.n_terms()), "Maxwell element") +
+           " (beta, tau):";
+    for (int i = 0; i < v.n_terms(); ++i)
+      out += std::string(i ? "," : "") + " (" + number(v.beta(i)) + ", " + number(v.tau(i)) + " s)";
+  }
+  if (m.mullins.present())
+    out += "; Mullins softening r = " + number(m.mullins.r) + ", m = " + number(m.mullins.m) +
+           " MPa, beta = " + number(m.mullins.beta);
   return out;
 }
 

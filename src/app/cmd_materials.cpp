@@ -30,6 +30,14 @@ std::string materials_text() {
     }
     for (const auto& r : m.rules) out << "  rule: " << r.statement << '\n';
   }
+  out << "\nAny model, with history (keys of the material section, `plisse case-keys material`):\n"
+      << "  viscoelastic: {beta1: B, tau1: T [s], ...}   Prony series, up to three Maxwell "
+         "elements;\n"
+      << "      the model is the long-term response, the instantaneous one (1 + Σ beta_i) times "
+         "it\n"
+      << "  mullins: {r: R, m: M [MPa], beta: B}        Ogden-Roxburgh softening below the "
+         "largest\n"
+      << "      energy reached: the stress scaled by eta in [1 - 1/r, 1]\n";
   return out.str();
 }
 

@@ -256,6 +256,15 @@ void solve_and_write(PreparedRun run) {
   if (run.from) {
     // A second load step: the nodal values and the elements' internal state carry over; the
     // terms (loads, cavities, dies, contacts, caps) and the clock start afresh from this case.
+    if (run.from->bubbles.size() != model->n_internal_values())
+      throw InputError(
+          {(fs::path(run.options.from_directory) / "checkpoint.bin").string(), 0, 0, "--from"},
+          "the run in " + run.options.from_directory + " carries " +
+              std::to_string(run.from->bubbles.size()) +
+              " internal values (element bubbles, material history), this case " +
+              std::to_string(model->n_internal_values()) +
+              ": a second step keeps the materials' viscoelasticity and Mullins "
+              "softening, or their absence");
     model->continue_from(run.from->state, run.from->bubbles);
     log.info("starting from the last state of " + run.options.from_directory + " (step " +
              std::to_string(run.from->steps) + " at t = " + std::to_string(run.from->time) +

@@ -340,13 +340,17 @@ Schema<Viscoelasticity> viscoelastic_schema() {
   s.real("tau1", &Viscoelasticity::tau1, Range::positive(), "s", "relaxation time of element 1")
       .required();
   s.real("beta2", &Viscoelasticity::beta2, Range::positive(), "–",
-         "strength of element 2 (absent: one element)");
+         "strength of element 2 (absent: one element)")
+      .doc.default_value = "none";
   s.real("tau2", &Viscoelasticity::tau2, Range::positive(), "s",
-         "relaxation time of element 2 (with `beta2`)");
+         "relaxation time of element 2 (with `beta2`)")
+      .doc.default_value = "none";
   s.real("beta3", &Viscoelasticity::beta3, Range::positive(), "–",
-         "strength of element 3 (needs element 2)");
+         "strength of element 3 (needs element 2)")
+      .doc.default_value = "none";
   s.real("tau3", &Viscoelasticity::tau3, Range::positive(), "s",
-         "relaxation time of element 3 (with `beta3`)");
+         "relaxation time of element 3 (with `beta3`)")
+      .doc.default_value = "none";
   s.rule("`beta2` and `tau2` go together, as do `beta3` and `tau3`; element 3 needs element 2",
          [](const FieldMap& m, const Viscoelasticity&, const ReadContext&) {
            for (const std::string n : {"2", "3"}) {
@@ -442,14 +446,15 @@ Schema<MaterialSection> material_schema() {
             f.fail_at_key("fibre_frame applies only to model 'fibre-reinforced' (got '" + m.model +
                           "')");
         });
-  s.nested("viscoelastic", &MaterialSection::viscoelastic, viscoelastic_schema()).doc.help =
-      "a Prony series on the isochoric stress: the base model is the long-term response, and "
-      "each Maxwell element i relaxes its overstress with time constant tau_i "
-      "([theory/materials.md](theory/materials.md), V1-V7); times are in seconds of "
-      "`solver.end_time`";
-  s.nested("mullins", &MaterialSection::mullins, mullins_schema()).doc.help =
-      "Mullins softening (Ogden & Roxburgh 1999): below the largest energy reached the stress "
-      "is scaled by η in [1 - 1/r, 1] ([theory/materials.md](theory/materials.md), M1-M5)";
+  s.nested("viscoelastic", &MaterialSection::viscoelastic, viscoelastic_schema());
+  s.nested("mullins", &MaterialSection::mullins, mullins_schema());
+  s.rule(
+      "`viscoelastic` (a Prony series of up to three Maxwell elements on the isochoric stress; the "
+      "model is the long-term response) and `mullins` (Ogden & Roxburgh's softening below the "
+      "largest energy reached) apply to every model, alone or together: see "
+      "[theory/materials.md](theory/materials.md), V1-V7 and MR1-MR5; with them the times of "
+      "ramps and load curves are physical seconds",
+      nullptr);
   s.rule("`bulk_modulus` is required with `incompressibility: nearly` and refused with `exact`",
          nullptr);
   s.rule(

@@ -58,7 +58,7 @@ PointResponse evaluate_inelastic(const InelasticLaw& law, const PointResponse& e
   PointResponse out = elastic;
   std::size_t next = 0;
 
-  // Mullins softening (M1-M3): the stress is scaled by η; during unloading η depends on W0, which
+  // Mullins softening (MR1-MR4): the stress is scaled by η; during unloading η depends on W0, which
   // adds dη/dW0 P0 ⊗ P0 to the tangent. On the primary curve (W0 at its largest) η = 1.
   if (law.mullins.present()) {
     const MullinsSoftening& mu = law.mullins;

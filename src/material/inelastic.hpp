@@ -4,10 +4,10 @@
 /// softening (Ogden & Roxburgh's pseudo-elastic damage). Both need internal variables at every
 /// material point, carried from one converged step to the next (the element assembly keeps them
 /// per quadrature point, in the checkpoint and over the ranks). Formulas and their sources are in
-/// docs/theory/materials.md, V1-V7 and M1-M5.
+/// docs/theory/materials.md, V1-V7 and MR1-MR5.
 ///
 /// Order of the two effects at a point, with W0, P0 = ∂W0/∂F, A0 = ∂P0/∂F the base model's:
-///   1. Mullins (M1-M3): Pe = η P0, with η in [1 - 1/r, 1] from W0 and the largest W0 so far;
+///   1. Mullins (MR1-MR4): Pe = η P0, with η in [1 - 1/r, 1] from W0 and the largest W0 so far;
 ///   2. viscoelasticity (V1-V5) on the softened isochoric stress Se = F⁻¹ Pe: the overstresses
 ///      Q_i follow Q̇_i + Q_i / τ_i = β_i Ṡe, integrated exactly for a stress that jumps at the
 ///      middle of the step (Simo 1987; Holzapfel 2000, section 6.10), and P = Pe + F Σ Q_i.
@@ -38,7 +38,7 @@ struct Viscoelasticity {
   double tau(int i) const { return std::array<double, kMaxTerms>{tau1, tau2, tau3}[i]; }
 };
 
-/// Ogden & Roxburgh's softening function (M2): η = 1 - erf((Wmax - W0) / (m + beta Wmax)) / r.
+/// Ogden & Roxburgh's softening function (MR2): η = 1 - erf((Wmax - W0) / (m + beta Wmax)) / r.
 /// Absent when r = 0.
 struct MullinsSoftening {
   double r = 0.0;     ///< [-], > 1: η stays above 1 - 1/r

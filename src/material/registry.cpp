@@ -314,6 +314,22 @@ std::string materials_markdown() {
      << "A parameter without a default is required; values must be finite and within the range "
         "shown.\n"
      << "`plisse materials` prints the same table in the terminal.\n";
+  md << "\nEvery model can also take **viscoelasticity** (`viscoelastic:`, a Prony series of up to "
+        "three\n"
+     << "Maxwell elements on the isochoric stress, the model being the long-term response) and "
+        "**Mullins\n"
+     << "softening** (`mullins:`, Ogden & Roxburgh's stress softening below the largest energy "
+        "reached),\n"
+     << "alone or together, for example\n\n"
+     << "```yaml\nmaterial:\n  model: neo-hookean\n  c1: 0.25\n"
+     << "  viscoelastic: {beta1: 0.8, tau1: 0.5, beta2: 0.3, tau2: 4.0}   # tau in s\n"
+     << "  mullins: {r: 2.0, m: 0.05, beta: 0.1}\n```\n\n"
+     << "Their keys are in [case-file.md](case-file.md) (`material` section), their equations in\n"
+     << "[theory/materials.md](theory/materials.md) (V1-V7, MR1-MR5); "
+        "`examples/cube-relaxation-viscoelastic.yaml`\n"
+     << "and `examples/cube-cycles-mullins.yaml` show them against closed forms. "
+        "`plisse fit` fits the\n"
+     << "elastic models only.\n";
   for (const auto& m : material_models()) {
     md << "\n## " << m.name << "\n\n"
        << m.formula << "\n\n"

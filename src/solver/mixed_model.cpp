@@ -213,6 +213,10 @@ void MixedModel::restore(const Snapshot& s) {
   refresh_couplings();
 }
 
+std::size_t MixedModel::n_internal_values() const {
+  return visit_elements([](const auto& e) { return e.n_internal_values(); });
+}
+
 void MixedModel::continue_from(std::span<const double> state, std::span<const double> internal) {
   const std::size_t nodal = static_cast<std::size_t>(DofMap::kPerNode) * mesh_.n_nodes();
   const std::size_t n_internal =

@@ -183,6 +183,9 @@ class MixedModel {
   /// the sizes do not fit.
   void continue_from(std::span<const double> state, std::span<const double> internal);
   const std::vector<double>& converged_state() const { return converged_state_; }
+  /// Doubles of internal state of the elements (bubbles, then the history of their points): the
+  /// size of Snapshot::bubbles and of continue_from's `internal`.
+  std::size_t n_internal_values() const;
 
   /// Sum of the reaction forces on the constrained dofs of the nodes of `triangles` [N], from
   /// the last assemble_residual.

@@ -78,7 +78,7 @@ void expect_same_history(const fs::path& a, const fs::path& b) {
 /// into `name`-killed, killed by SIGKILL after 6 steps and resumed; both must give the same
 /// history and readable files. Returns the killed-and-resumed directory.
 fs::path expect_kill_and_resume(const std::string& name, const std::string& set = "") {
-  const std::string options = set.empty() ? "" : " --set " + set;
+  const std::string options = set.empty() ? "" : " --set '" + set + "'";
   const fs::path reference = test::scratch_directory(name + "-reference");
   EXPECT_EQ(test::run_plisse("run " + kCase + " -o " + reference.string() + options,
                              reference.string() + ".log"),
@@ -104,6 +104,16 @@ fs::path expect_kill_and_resume(const std::string& name, const std::string& set 
 }
 
 TEST(Restart, KilledRunResumesToTheUninterruptedHistory) { expect_kill_and_resume("restart"); }
+
+TEST(Restart, ViscoelasticAndMullinsHistorySurvivesAKill) {
+  // The points' internal variables (the Maxwell elements' overstresses, the largest energy
+  // reached) are part of the checkpoint, and the resumed run's first step measures its time step
+  // from the checkpoint's time: a relaxation time of the order of the run's steps shows either.
+  expect_kill_and_resume(
+      "restart-inelastic",
+      "material={model: mooney-rivlin, c1: 0.2, c2: 0.05, viscoelastic: "
+      "{beta1: 0.8, tau1: 0.3, beta2: 0.4, tau2: 0.05}, mullins: {r: 2, m: 0.01}}");
+}
 
 TEST(Restart, ContactHistorySurvivesAKill) {
   // Sticking and frictionless dies carry glue points and multipliers from step to step: they are

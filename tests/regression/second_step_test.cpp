@@ -92,6 +92,58 @@ TEST(SecondStep, UnloadingAPulledCubeEndsWhereADirectPullDoes) {
   EXPECT_NE(text.find("starting from the last state of"), std::string::npos);
 }
 
+// A viscoelastic cube (one Maxwell element, β = 1, τ = 0.5 s) pulled to stretch 2 in its first
+// step (0.05 s) and held to t = 0.5 s; a second run from it holds for 1 s more. The overstress
+// carries over: the second run's stress continues the first one's relaxation, P∞ (1 + β exp(-(t1
+// + t2 - 0.025)/τ)) with t1 = 0.5 and t2 the second run's own time, to the solver's tolerance.
+// A second step that adds viscoelasticity to an elastic run has no history to start from: refused.
+TEST(SecondStep, ViscoelasticRelaxationContinuesInTheSecondRun) {
+  const fs::path dir = scratch_directory("second-step-viscoelastic");
+  const std::string material =
+      "material: {model: neo-hookean, c1: 0.2, viscoelastic: {beta1: 1.0, tau1: 0.5}}\n";
+  const auto with_material = [&](std::string text) {
+    return text.replace(text.find("material:"),
+                        text.find('\n', text.find("material:")) - text.find("material:") + 1,
+                        material);
+  };
+  const fs::path pull = write_case(
+      dir, "pull.yaml",
+      with_material(cube_case("1.0", "[[0, 0], [0.05, 1], [1, 1]]", 10)) + "  end_time: 0.5\n");
+  const fs::path hold =
+      write_case(dir, "hold.yaml", with_material(cube_case("1.0", "[[0, 1], [1, 1]]", 10)));
+  ASSERT_EQ(run_plisse_captured("run " + pull.string() + " -o " + (dir / "pull").string()).status,
+            0);
+  const auto held = run_plisse_captured("run " + hold.string() + " -o " + (dir / "hold").string() +
+                                        " --from " + (dir / "pull").string());
+  ASSERT_EQ(held.status, 0) << held.output;
+  const double equilibrium = 2 * 0.2 * (2.0 - 0.25);  // 2 c1 (λ - 1/λ²) at λ = 2
+  const HistoryTable first = read_history(dir / "pull" / "history.csv");
+  const HistoryTable second = read_history(dir / "hold" / "history.csv");
+  ASSERT_GE(second.rows.size(), 3u);
+  const auto index = [](const HistoryTable& h, const std::string& name) {
+    return std::size_t(std::find(h.columns.begin(), h.columns.end(), name) - h.columns.begin());
+  };
+  EXPECT_NEAR(first.rows.front()[index(first, "time")], 0.05, 1e-12);
+  for (const auto& [h, t0] : {std::pair{&first, 0.0}, {&second, 0.5}})
+    for (const auto& row : h->rows) {
+      const double t = t0 + row[index(*h, "time")];
+      const double expected = equilibrium * (1 + std::exp(-(t - 0.025) / 0.5));
+      // The unit cube's top: nominal stress = force.
+      EXPECT_NEAR(row[index(*h, "force_z:top")], expected, 1e-8 * equilibrium) << "t " << t;
+    }
+  // From an elastic run: refused before any step, naming --from.
+  const fs::path elastic = write_case(dir, "elastic.yaml", cube_case("1.0", "[0, 1]", 2));
+  ASSERT_EQ(
+      run_plisse_captured("run " + elastic.string() + " -o " + (dir / "elastic").string()).status,
+      0);
+  const auto refused =
+      run_plisse_captured("run " + hold.string() + " -o " + (dir / "refused").string() +
+                          " --from " + (dir / "elastic").string());
+  EXPECT_EQ(refused.status, 2) << refused.output;
+  EXPECT_NE(refused.output.find("viscoelasticity and Mullins softening"), std::string::npos)
+      << refused.output;
+}
+
 TEST(SecondStep, AnotherMeshElementOrDirectoryIsRefusedNamingFrom) {
   const fs::path dir = scratch_directory("second-step-refused");
   const fs::path pull = write_case(dir, "pull.yaml", cube_case("0.5", "[0, 1]", 2));

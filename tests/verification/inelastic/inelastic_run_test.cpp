@@ -8,7 +8,7 @@
 //    exp(-(t - t_jump)/τ_i)), with the jump at the middle of the first step (V3), or its sum
 //    over the steps that share the stretch when the first one is cut back;
 //  - Ogden & Roxburgh's softening in cycles to stretch 2, 2 and 2.5: P = η P0 with η from the
-//    largest energy reached so far (M2): the virgin curve on first loading and past the old
+//    largest energy reached so far (MR2): the virgin curve on first loading and past the old
 //    maximum, the first unloading curve retraced by the second cycle.
 #include <gtest/gtest.h>
 
