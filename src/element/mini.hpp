@@ -84,6 +84,8 @@ ElementStatus assemble_mini(const TetGeometry& g, const ElemVec& x_e, const Mate
   BubbleVec b_previous = b;             // last admissible iterate
   BubbleVec delta = BubbleVec::Zero();  // step taken from it
   int halvings = 0;
+  int cuts = 0;  // successive halvings of a step that raised |r_b| (B1)
+  double previous_r_norm = std::numeric_limits<double>::infinity();
   MiniLocalSystem sys;
   for (int iteration = 1; iteration <= kMaxBubbleIterations; ++iteration) {
     status.bubble_iterations = iteration;
@@ -105,6 +107,19 @@ ElementStatus assemble_mini(const TetGeometry& g, const ElemVec& x_e, const Mate
     }
     halvings = 0;
     sums.bubble_block(sys);
+    // Past the first iterations, a step that raised |r_b| is halved instead of taken: where the
+    // material's tangent jumps (Mullins softening at the largest energy reached), the points can
+    // switch between its branches at every step and plain Newton cycles (B1).
+    const double r_norm = sys.r_b.norm();
+    if (iteration > kUndampedBubbleIterations && r_norm > previous_r_norm &&
+        cuts < kMaxBubbleHalvings) {
+      ++cuts;
+      delta *= 0.5;
+      b = b_previous + delta;
+      continue;
+    }
+    cuts = 0;
+    previous_r_norm = r_norm;
     const BubbleStep step = compute_bubble_step(sys, g.size);
     if (!step.ok) break;
     if (step.converged) {

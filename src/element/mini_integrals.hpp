@@ -82,7 +82,9 @@ struct BubbleStep {
 /// Relative tolerance of the bubble solve, |r_b| <= ε (h_e |K_bb| + Σ w |P - p cof F| |g|) (B2).
 inline constexpr double kBubbleTolerance = 1e-10;
 /// Most element evaluations of one bubble solve before it is reported as failed.
-inline constexpr int kMaxBubbleIterations = 20;
+inline constexpr int kMaxBubbleIterations = 30;
+/// Bubble iterations taken as Newton gives them; after these a step that raises |r_b| is halved.
+inline constexpr int kUndampedBubbleIterations = 5;
 /// Most successive halvings of a bubble Newton step that leads to det F <= 0.
 inline constexpr int kMaxBubbleHalvings = 4;
 

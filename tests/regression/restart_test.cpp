@@ -112,7 +112,7 @@ TEST(Restart, ViscoelasticAndMullinsHistorySurvivesAKill) {
   expect_kill_and_resume(
       "restart-inelastic",
       "material={model: mooney-rivlin, c1: 0.2, c2: 0.05, viscoelastic: "
-      "{beta1: 0.8, tau1: 0.3, beta2: 0.4, tau2: 0.05}, mullins: {r: 2, m: 0.01}}");
+      "{beta1: 0.8, tau1: 0.3, beta2: 0.4, tau2: 0.05}, mullins: {r: 2, m: 0.1}}");
 }
 
 TEST(Restart, ContactHistorySurvivesAKill) {
