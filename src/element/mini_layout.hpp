@@ -19,6 +19,22 @@ using ElemMat = Eigen::Matrix<double, kDof, kDof>;
 using BubbleVec = Eigen::Matrix<double, kDofBubble, 1>;
 /// Coupling block between element unknowns x_e and the bubble.
 using ElemBubbleMat = Eigen::Matrix<double, kDof, kDofBubble>;
+/// db/dx_e: the converged bubble's derivative with respect to the element unknowns (B6).
+using BubbleSensitivity = Eigen::Matrix<double, kDofBubble, kDof>;
+
+/// An element's bubble from its last evaluation, with its sensitivity there: the warm start of the
+/// next evaluation, b(x_e) ≈ b + db/dx (x_e - x_at) (B6). The bubble is the element's state
+/// (kDofBubble doubles at data(), what a checkpoint keeps); the sensitivity and x_at are a cache,
+/// all zero meaning "no prediction".
+struct BubbleWarmStart {
+  BubbleVec b = BubbleVec::Zero();
+  BubbleSensitivity db_dx = BubbleSensitivity::Zero();
+  ElemVec x_at = ElemVec::Zero();
+
+  double* data() { return b.data(); }
+  const double* data() const { return b.data(); }
+  BubbleVec predict(const ElemVec& x_e) const { return b + db_dx * (x_e - x_at); }
+};
 
 /// Index in x_e of displacement component i (0..2) of node a (0..3).
 constexpr int dof_u(int a, int i) { return 3 * a + i; }

@@ -265,9 +265,11 @@ class ElementAssembly {
   /// Makes `values` (n_internal_values(), as from converged_values) the current and the
   /// converged internal state.
   void restore(std::span<const double> values) {
-    for (std::size_t e = 0; e < internal_.size(); ++e)
+    for (std::size_t e = 0; e < internal_.size(); ++e) {
+      internal_[e] = Element::initial_internal();  // beyond kInternalSize: a cache, now stale
       std::copy_n(values.data() + e * Element::kInternalSize, Element::kInternalSize,
                   internal_[e].data());
+    }
     std::copy(values.end() - static_cast<std::ptrdiff_t>(history_.size()), values.end(),
               history_.begin());
     converged_internal_ = internal_;

@@ -22,7 +22,7 @@ struct MiniElement {
   static constexpr int kQuadPoints = mini::kQuadPoints;
   using Vector = mini::ElemVec;
   using Matrix = mini::ElemMat;
-  using Internal = mini::BubbleVec;
+  using Internal = mini::BubbleWarmStart;
   using Geometry = mini::TetGeometry;
   using Status = mini::ElementStatus;
   using Fields = ElementFields;
@@ -55,28 +55,28 @@ struct MiniElement {
         {mesh.nodes[nodes[0]], mesh.nodes[nodes[1]], mesh.nodes[nodes[2]], mesh.nodes[nodes[3]]});
   }
 
-  /// No bubble displacement.
-  static Internal initial_internal() { return Internal::Zero(); }
+  /// No bubble displacement, no prediction.
+  static Internal initial_internal() { return {}; }
 
-  /// mini::assemble_mini: the condensed residual and tangent; `bubble` is its warm start and
-  /// receives the converged bubble.
+  /// mini::assemble_mini: the condensed residual and tangent, warm-started from the bubble's
+  /// first-order prediction at x; `warm` receives the converged bubble and its sensitivity.
   template <class Material>
   static Status evaluate(const Geometry& g, const Vector& x, const Material& material,
-                         double inverse_bulk_modulus, Internal& bubble, Vector& r, Matrix* K) {
-    return mini::assemble_mini(g, x, material, inverse_bulk_modulus, bubble, r, K);
+                         double inverse_bulk_modulus, Internal& warm, Vector& r, Matrix* K) {
+    return mini::assemble_mini(g, x, material, inverse_bulk_modulus, warm, r, K);
   }
 
   /// mini::compute_element_fields: volume averages of σ, J, von Mises and p.
   template <class Material>
   static Fields fields(const Geometry& g, const Vector& x, const Material& material,
                        const Internal& bubble) {
-    return mini::compute_element_fields(g, x, material, bubble);
+    return mini::compute_element_fields(g, x, material, bubble.b);
   }
 
   /// mini::compute_strain_energy, isochoric plus volumetric part [mJ].
   static double strain_energy(const Geometry& g, const Vector& x, const AnyMaterial& material,
                               double inverse_bulk_modulus, const Internal& bubble) {
-    return mini::compute_strain_energy(g, x, material, inverse_bulk_modulus, bubble).total();
+    return mini::compute_strain_energy(g, x, material, inverse_bulk_modulus, bubble.b).total();
   }
 
   /// ∫ F dV over the element and its reference volume V0. The bubble vanishes on the element's
