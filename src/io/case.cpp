@@ -452,7 +452,7 @@ Schema<MaterialSection> material_schema() {
       "`viscoelastic` (a Prony series of up to three Maxwell elements on the isochoric stress; the "
       "model is the long-term response) and `mullins` (Ogden & Roxburgh's softening below the "
       "largest energy reached) apply to every model, alone or together: see "
-      "[theory/materials.md](theory/materials.md), V1-V7 and MR1-MR5; with them the times of "
+      "[theory/materials.md](theory/materials.md), V1-V7 and MR1-MR6; with them the times of "
       "ramps and load curves are physical seconds",
       nullptr);
   s.rule("`bulk_modulus` is required with `incompressibility: nearly` and refused with `exact`",

@@ -4,7 +4,7 @@
 /// softening (Ogden & Roxburgh's pseudo-elastic damage). Both need internal variables at every
 /// material point, carried from one converged step to the next (the element assembly keeps them
 /// per quadrature point, in the checkpoint and over the ranks). Formulas and their sources are in
-/// docs/theory/materials.md, V1-V7 and MR1-MR5.
+/// docs/theory/materials.md, V1-V7 and MR1-MR6.
 ///
 /// Order of the two effects at a point, with W0, P0 = ∂W0/∂F, A0 = ∂P0/∂F the base model's:
 ///   1. Mullins (MR1-MR4): Pe = η P0, with η in [1 - 1/r, 1] from W0 and the largest W0 so far;

@@ -325,7 +325,7 @@ std::string materials_markdown() {
      << "  viscoelastic: {beta1: 0.8, tau1: 0.5, beta2: 0.3, tau2: 4.0}   # tau in s\n"
      << "  mullins: {r: 2.0, m: 0.05, beta: 0.1}\n```\n\n"
      << "Their keys are in [case-file.md](case-file.md) (`material` section), their equations in\n"
-     << "[theory/materials.md](theory/materials.md) (V1-V7, MR1-MR5); "
+     << "[theory/materials.md](theory/materials.md) (V1-V7, MR1-MR6); "
         "`examples/cube-relaxation-viscoelastic.yaml`\n"
      << "and `examples/cube-cycles-mullins.yaml` show them against closed forms. "
         "`plisse fit` fits the\n"

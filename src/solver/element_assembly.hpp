@@ -155,7 +155,6 @@ class ElementAssembly {
         const std::array<int, Element::kDof> full = dofs(e);
         typename Element::Vector x = gather(full, state);
         int m = materials_.of(e);
-        const InelasticLaw* law = materials_.law(m);  // nullptr for a rigid element
         if (m == ElementMaterials::kRigid) {
           // A rigid element moves rigidly and carries no stress: any model at zero pressure
           // gives F, J = 1 and zero stresses.
@@ -163,18 +162,10 @@ class ElementAssembly {
             if (full[i] % DofMap::kPerNode == 3) x[i] = 0.0;
           m = 0;
         }
-        if (law != nullptr) {
-          // The stress of the state with the last converged history.
-          const InelasticPoints points{
-              &materials_.materials[m], law, converged_history(e), {}, 0.0};
-          out[e] = Element::fields(geometry_[e], x, points, internal_[e]);
-        } else {
-          out[e] = std::visit(
-              [&](const auto& material) {
-                return Element::fields(geometry_[e], x, material, internal_[e]);
-              },
-              materials_.materials[m]);
-        }
+        // With history: the stress of the last converged history (dt = 0, nothing written).
+        out[e] = with_material(e, m, {}, 0.0, [&](const auto& material) {
+          return Element::fields(geometry_[e], x, material, internal_[e]);
+        });
       } catch (...) {
 #pragma omp critical(plisse_element_fields_error)
         if (!error) error = std::current_exception();
@@ -298,6 +289,16 @@ class ElementAssembly {
     return std::span<const double>(converged_history_)
         .subspan(history_offset_[e], history_offset_[e + 1] - history_offset_[e]);
   }
+  /// f(material) with model m for element e: the elastic model itself or, when e's own model
+  /// carries history, that model bound to e's converged history, writing the new one to `now`
+  /// (may be empty) for a time step dt. (A rigid element has no history: its fields evaluate
+  /// model 0 alone.)
+  template <class F>
+  decltype(auto) with_material(int e, int m, std::span<double> now, double dt, F&& f) const {
+    if (const InelasticLaw* law = materials_.law(materials_.of(e)))
+      return f(InelasticPoints{&materials_.materials[m], law, converged_history(e), now, dt});
+    return std::visit(f, materials_.materials[m]);
+  }
   static typename Element::Vector gather(const std::array<int, Element::kDof>& full,
                                          std::span<const double> state) {
     typename Element::Vector x;
@@ -327,21 +328,11 @@ class ElementAssembly {
           const int m = materials_.of(e);
           out.rigid = m == ElementMaterials::kRigid;
           if (out.rigid) continue;
-          if (const InelasticLaw* law = materials_.law(m)) {
-            const InelasticPoints points{&materials_.materials[m], law, converged_history(e),
-                                         history(e), dt_};
-            out.status = Element::evaluate(geometry_[e], gather(dofs(e), state), points,
-                                           materials_.inverse_bulk_moduli[m], internal_[e], out.r,
-                                           with_tangent ? &out.K : nullptr);
-          } else {
-            out.status = std::visit(
-                [&](const auto& material) {
-                  return Element::evaluate(geometry_[e], gather(dofs(e), state), material,
-                                           materials_.inverse_bulk_moduli[m], internal_[e], out.r,
-                                           with_tangent ? &out.K : nullptr);
-                },
-                materials_.materials[m]);
-          }
+          out.status = with_material(e, m, history(e), dt_, [&](const auto& material) {
+            return Element::evaluate(geometry_[e], gather(dofs(e), state), material,
+                                     materials_.inverse_bulk_moduli[m], internal_[e], out.r,
+                                     with_tangent ? &out.K : nullptr);
+          });
         } catch (...) {
 #pragma omp critical(plisse_element_loop_error)
           if (!error) error = std::current_exception();

@@ -46,12 +46,6 @@ struct ElementMaterials {
     const InelasticLaw* l = law(m);
     return l == nullptr ? 0 : l->history_size();
   }
-  /// True when some model carries history.
-  bool any_history() const {
-    for (std::size_t m = 0; m < laws.size(); ++m)
-      if (law(static_cast<int>(m)) != nullptr) return true;
-    return false;
-  }
 };
 
 }  // namespace plisse

@@ -1,5 +1,5 @@
 // Viscoelasticity and Mullins softening at one material point (material/inelastic.hpp;
-// docs/theory/materials.md V1-V7, MR1-MR5), in incompressible uniaxial tension, where the lateral
+// docs/theory/materials.md V1-V7, MR1-MR6), in incompressible uniaxial tension, where the lateral
 // faces are free: F = diag(λ, λ^-1/2, λ^-1/2), the pressure makes P22 = 0, and the nominal stress
 // is P11 - P22 F22 / F11 of the isochoric response.
 //  - the tangent is the derivative of the stress for the converged history held fixed (central
