@@ -201,6 +201,7 @@ void LoadStepper::check_stability(StepInfo& info, SteppingResult& result,
       const std::vector<double> unperturbed = model_.converged_state();
       const int n_nodes = model_.mesh().n_nodes();
       double a = stability_.perturbation_mm;
+      newton_.allow_reuse(false);  // an unstable state (newton_solver.hpp, allow_reuse)
       for (int attempt = 0; attempt < kAmplitudeTries; ++attempt, a *= kAmplitudeGrowth) {
         auto& x = model_.state();
         for (int v = 0; v < n_nodes; ++v)

@@ -112,6 +112,10 @@ NewtonSolver::NewtonSolver(MixedModel& model, const NewtonSettings& settings) : 
   atol_ = atol;
   rtol_ = rtol;
   reuse_enabled_ = settings.reuse_factor && settings.linear.type == LinearSolverType::direct;
+  // A lag given in the PETSc options (-snes_lag_jacobian) is the user's: no chord steps then.
+  PetscInt lag = 1;
+  PLISSE_PETSC(SNESGetLagJacobian(snes_, &lag));
+  chord_enabled_ = reuse_enabled_ && lag == 1;
   PLISSE_PETSC(VecDuplicate(x_, &dx_));
 }
 
@@ -157,6 +161,12 @@ PetscErrorCode NewtonSolver::converged(SNES snes, PetscInt it, PetscReal xnorm, 
   if (it == 0 && self->reference_norm_ == 0.0) self->reference_norm_ = fnorm;
   if (*reason == SNES_CONVERGED_ITERATING && fnorm <= self->pass_rtol_ * self->reference_norm_)
     *reason = SNES_CONVERGED_FNORM_RELATIVE;
+  if (it > 0 && self->chord_next_) ++self->chord_iterations_;  // iteration `it` was a chord step
+  // The next iteration keeps the factor when this one cut ||R|| tenfold (newton_solver.hpp).
+  self->chord_next_ = self->chord_enabled_ && self->reuse_allowed_ && it > 0 &&
+                      fnorm <= kReuseContraction * self->previous_fnorm_;
+  self->previous_fnorm_ = fnorm;
+  if (self->chord_enabled_) PetscCall(SNESSetLagJacobian(snes, self->chord_next_ ? -1 : 1));
   self->passed_test_ =
       *reason == SNES_CONVERGED_FNORM_ABS || *reason == SNES_CONVERGED_FNORM_RELATIVE;
   if (*reason != SNES_CONVERGED_ITERATING || !self->interrupt_) return 0;
@@ -300,12 +310,21 @@ NewtonResult NewtonSolver::refine() {
   return run();
 }
 
+PetscErrorCode NewtonSolver::snes_solve() {
+  // Every SNES solve starts with a fresh tangent; converged() lets later iterations keep it.
+  chord_next_ = false;
+  previous_fnorm_ = 0.0;
+  if (chord_enabled_) PLISSE_PETSC(SNESSetLagJacobian(snes_, 1));
+  return SNESSolve(snes_, nullptr, x_);
+}
+
 NewtonResult NewtonSolver::run() {
   NewtonResult result;
   error_ = nullptr;
   interrupted_ = false;
   passed_test_ = false;
   jacobians_ = 0;
+  chord_iterations_ = 0;
   model_.get_free(x_);
   // The tangent's sparsity grew (contact pairs): a new matrix, which the factorisation analyses
   // anew; a factor of the old pattern is not reused.
@@ -320,13 +339,13 @@ NewtonResult NewtonSolver::run() {
   int earlier_iterations = 0;  // of solves ended by a workspace too small
   try {
     reuse_converged = reuse_enabled_ && reuse_allowed_ && iterate_with_factor(result);
-    if (!reuse_converged) code = SNESSolve(snes_, nullptr, x_);
+    if (!reuse_converged) code = snes_solve();
     while (!reuse_converged && code == 0 && !error_ && !interrupted_ &&
            grow_factor_workspace(result)) {
       PetscInt its = 0;
       PLISSE_PETSC(SNESGetIterationNumber(snes_, &its));
       earlier_iterations += static_cast<int>(its);
-      code = SNESSolve(snes_, nullptr, x_);
+      code = snes_solve();
     }
   } catch (...) {
     times_.linear_solve += seconds_since(t0) - (times_.assembly - assembly_before);
@@ -369,7 +388,9 @@ NewtonResult NewtonSolver::run() {
     else if (reuse_ == own)
       offer_factor(nullptr);
   }
-  result.iterations = earlier_iterations + static_cast<int>(its);
+  // Chord steps factorise nothing: they count as reused solves, not as Newton iterations.
+  result.iterations = earlier_iterations + static_cast<int>(its) - chord_iterations_;
+  result.reused_solves += chord_iterations_;
   result.residual_norm = result.residual_history.empty() ? 0.0 : result.residual_history.back();
   if (!result.out_of_memory) {  // else its reason says how much memory was asked for
     result.reason = interrupted_ ? "interrupted" : SNESConvergedReasons[reason];

@@ -15,6 +15,12 @@
 /// first iterate that is not, SNES's Newton continues from x_k. The convergence test stays the
 /// one of a plain Newton solve: ||R|| <= max(atol, rtol ||R(x_0)||) with x_0 the state solve()
 /// started from, so the answer differs from a solve without reuse only within that tolerance.
+///
+/// Within SNES, the same rule: after an iteration that cut ||R|| at least kReuseContraction-fold,
+/// the next one keeps the tangent and its factor (a chord step, through SNES's Jacobian lag);
+/// after one that did not, Newton assembles and factorises anew. A chord step is taken, not
+/// refused, since its line search still asks ||R|| to decrease. Not done when the user gives
+/// -snes_lag_jacobian, nor while reuse is suspended (allow_reuse).
 #include <petscsnes.h>
 
 #include <exception>
@@ -110,6 +116,8 @@ class NewtonSolver {
   bool iterate_with_factor(NewtonResult& result);
   /// solve() and refine() with pass_rtol_ and reference_norm_ set (0: the first ||R||).
   NewtonResult run();
+  /// SNESSolve from x_, its first iteration with a new tangent.
+  PetscErrorCode snes_solve();
   /// After a failed linear solve: when MUMPS's workspace, sized from its analysis's estimate and
   /// ICNTL(14) percent more, proved too small, grows it for a new factor (plisse::
   /// grow_factor_workspace) and returns true (the solve goes on from the iterate reached); when
@@ -139,6 +147,10 @@ class NewtonSolver {
   double reference_norm_ = 0.0;  ///< ||R|| where the current solve started (convergence test)
   double pass_rtol_ = 0.0;       ///< relative tolerance of the current solve
   int jacobians_ = 0;            ///< tangent assemblies in the current solve
+  bool chord_enabled_ = false;   ///< SNES may keep its factor between iterations (chord steps)
+  bool chord_next_ = false;      ///< the coming SNES iteration keeps the factor
+  double previous_fnorm_ = 0.0;  ///< ||R|| at the last SNES iteration
+  int chord_iterations_ = 0;     ///< SNES iterations in the current solve that kept the factor
 };
 
 }  // namespace plisse

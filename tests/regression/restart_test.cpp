@@ -69,7 +69,10 @@ void expect_same_history(const fs::path& a, const fs::path& b) {
       // A cost, not a result: the resumed process starts without the factorisation that the
       // uninterrupted one reuses at the next step (solver/newton_solver.hpp, factor reuse).
       if (ha.columns[k] == "newton_iterations") continue;
-      EXPECT_LE(std::abs(x - y), 1e-10 * std::max(1.0, std::abs(x)))
+      // The resumed process has no factorisation to start from or keep (chord steps), so its
+      // Newton takes another path to the same tolerance: the states agree to what rtol leaves
+      // (1e-10 in these cases; 3.7e-10 mm seen on the sticking sphere's penetration).
+      EXPECT_LE(std::abs(x - y), 1e-8 * std::max(1.0, std::abs(x)))
           << "row " << r << ", column " << ha.columns[k];
     }
 }

@@ -83,6 +83,7 @@ void expect_quadratic_convergence(const NewtonCase& c) {
   settings.atol = 0.0;
   settings.max_iterations = 12;
   settings.line_search = LineSearch::basic;
+  settings.reuse_factor = false;  // every iteration with its own tangent: Newton's own rate
   NewtonSolver newton(model, settings);
   const NewtonResult result = newton.solve();
 

@@ -114,9 +114,10 @@ TEST(CoulombFriction, PlateForceOnAPressurisedSphereGrowsWithTheCoefficient) {
     const double f0 = frictionless.rows[r][force];
     // Friction 0 takes the frictionless path: the same residual and tangent (to round-off).
     EXPECT_NEAR(coulomb[0].rows[r][force], f0, 1e-10 * std::max(f0, 1e-6)) << "row " << r;
-    // More friction, more force at the same indentation, once the contact zone spreads.
+    // More friction, more force at the same indentation, once the contact zone spreads; before,
+    // the same force to what the Newton tolerance leaves (rtol 1e-10, each run on its own path).
     for (size_t k = 1; k < coefficients.size(); ++k) {
-      EXPECT_GE(coulomb[k].rows[r][force], coulomb[k - 1].rows[r][force] * (1.0 - 1e-12))
+      EXPECT_GE(coulomb[k].rows[r][force], coulomb[k - 1].rows[r][force] * (1.0 - 1e-9))
           << "row " << r << ", friction " << coefficients[k];
     }
   }
