@@ -50,7 +50,9 @@ Schema<LinearSolverSettings> linear_solver_schema() {
 Schema<NewtonSettings> newton_schema() {
   Schema<NewtonSettings> s;
   s.real("rtol", &NewtonSettings::rtol, kOpenUnit, "–", "relative residual tolerance");
-  s.real("atol", &NewtonSettings::atol, Range::non_negative(), "N", "absolute residual tolerance");
+  s.real("atol", &NewtonSettings::atol, Range::non_negative(), "N",
+         "absolute residual tolerance (the pressure equations count as forces: their volume "
+         "change times mu/h, docs/theory/mixed_up.md, W1)");
   s.integer("max_iterations", &NewtonSettings::max_iterations, Range::at_least(1),
             "Newton iterations per step before the step counts as failed");
   s.choice<LineSearch>("line_search", &NewtonSettings::line_search, kLineSearches,
@@ -60,7 +62,8 @@ Schema<NewtonSettings> newton_schema() {
   s.boolean("reuse_factor", &NewtonSettings::reuse_factor,
             "direct solver: before factorising, iterate with the last factorisation (the last "
             "Newton tangent or the stability check's) while each iteration cuts the residual "
-            "tenfold; the convergence test is unchanged (docs/performance.md)");
+            "tenfold, and within Newton keep a factorisation for the next iteration after one "
+            "that cut it tenfold; the convergence test is unchanged (docs/performance.md)");
   s.nested<LinearSolverSettings>("linear", &NewtonSettings::linear, linear_solver_schema())
       .null_is_absent();
   return s;

@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <set>
 
@@ -27,6 +28,31 @@ std::vector<int> non_corner_nodes(const Mesh& mesh) {
   for (int v = 0; v < mesh.n_nodes(); ++v)
     if (!corner[v]) nodes.push_back(v);
   return nodes;
+}
+
+/// mu / h of MixedModel::pressure_weight [N/mm^3]: mu the volume average of the deformable
+/// elements' small-strain shear moduli, h the edge of the regular tetrahedron of their mean
+/// volume (V = h^3 / (6 sqrt 2)). 1 when there is nothing to average (no deformable element, or
+/// moduli that are not positive).
+double pressure_weight_of(const Mesh& mesh, const ElementMaterials& materials) {
+  double volume = 0.0, modulus_volume = 0.0;
+  int counted = 0;
+  for (int e = 0; e < mesh.n_tets(); ++e) {
+    if (materials.rigid(e)) continue;
+    const auto& tet = mesh.tets[static_cast<std::size_t>(e)];
+    const Vec3d X0 = mesh.nodes[tet[0]];
+    Mat3d dX;
+    for (int a = 1; a < 4; ++a) dX.col(a - 1) = mesh.nodes[tet[a]] - X0;
+    const double v = std::abs(dX.determinant()) / 6.0;
+    volume += v;
+    modulus_volume +=
+        v * shear_modulus(materials.materials[static_cast<std::size_t>(materials.of(e))]);
+    ++counted;
+  }
+  if (counted == 0 || !(volume > 0.0) || !(modulus_volume > 0.0)) return 1.0;
+  const double h = std::cbrt(6.0 * std::sqrt(2.0) * volume / counted);
+  const double w = modulus_volume / volume / h;
+  return std::isfinite(w) && w > 0.0 ? w : 1.0;
 }
 
 int count_global_unknowns(const std::vector<std::unique_ptr<ModelTerm>>& terms) {
@@ -82,6 +108,7 @@ MixedModel::MixedModel(const Mesh& mesh, ElementMaterials materials,
   FE_CHECK(mesh.order() == mesh_order_of(family),
            "the " << to_string(family) << " element needs a mesh of order " << mesh_order_of(family)
                   << ", this one has order " << mesh.order());
+  pressure_weight_ = pressure_weight_of(mesh, materials);
   if (family == ElementFamily::mini) {
     elements_ = std::make_unique<ElementAssembly<MiniElement>>(mesh, std::move(materials));
   } else {
@@ -104,10 +131,15 @@ MixedModel::MixedModel(const Mesh& mesh, ElementMaterials materials,
   layout_ = std::make_unique<TangentLayout>(graph, element_nodes, *distribution_, couplings);
   state_.assign(dofs().n_dofs(), 0.0);
   full_residual_.assign(state_.size(), 0.0);
+  std::vector<double> weights(state_.size(), 1.0);
+  for (int d = 0; d < dofs().n_dofs(); ++d)
+    if (is_pressure(d)) weights[static_cast<std::size_t>(d)] = pressure_weight_;
+  equation_weights_ = create_vector();
+  distribution_->owned_from_full(weights, equation_weights_);
   save_converged();
 }
 
-MixedModel::~MixedModel() = default;
+MixedModel::~MixedModel() { VecDestroy(&equation_weights_); }
 
 const ElementMaterials& MixedModel::element_materials() const {
   return visit_elements([](const auto& e) -> const ElementMaterials& { return e.materials(); });
@@ -116,7 +148,10 @@ const ElementMaterials& MixedModel::element_materials() const {
 Vec MixedModel::create_vector() const { return distribution_->create_vector(); }
 
 std::vector<double> MixedModel::full_from_free(Vec x) const {
-  return distribution_->full_from_free(x);
+  std::vector<double> full = distribution_->full_from_free(x);
+  for (int d = 0; d < dofs().n_dofs(); ++d)
+    if (is_pressure(d)) full[static_cast<std::size_t>(d)] *= pressure_weight_;
+  return full;
 }
 
 int MixedModel::assembly_threads() const {
@@ -137,10 +172,15 @@ void MixedModel::set_external_force(std::vector<double> force, Ramp ramp) {
   external_ramp_ = ramp;
 }
 
-void MixedModel::get_free(Vec x) const { distribution_->owned_from_full(state_, x); }
+void MixedModel::get_free(Vec x) const {
+  distribution_->owned_from_full(state_, x);
+  PLISSE_PETSC(VecPointwiseDivide(x, x, equation_weights_));
+}
 
 void MixedModel::set_free(Vec x) {
-  distribution_->for_each_free_value(x, [&](int d, double value) { state_[d] = value; });
+  distribution_->for_each_free_value(x, [&](int d, double value) {
+    state_[d] = is_pressure(d) ? pressure_weight_ * value : value;
+  });
 }
 
 AssemblyStatus MixedModel::assemble_residual(Vec f) {
@@ -155,6 +195,7 @@ AssemblyStatus MixedModel::assemble_residual(Vec f) {
       full_residual_[d] -= factor * external_force_[d];
   }
   distribution_->owned_from_full(full_residual_, f);
+  PLISSE_PETSC(VecPointwiseMult(f, f, equation_weights_));
   return status;
 }
 
@@ -180,6 +221,7 @@ AssemblyStatus MixedModel::assemble_tangent(Mat K) {
   }
   PLISSE_PETSC(MatAssemblyBegin(K, MAT_FINAL_ASSEMBLY));
   PLISSE_PETSC(MatAssemblyEnd(K, MAT_FINAL_ASSEMBLY));
+  PLISSE_PETSC(MatDiagonalScale(K, equation_weights_, equation_weights_));
   return status;
 }
 

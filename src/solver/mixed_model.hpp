@@ -109,8 +109,8 @@ class MixedModel {
   const std::vector<int>& owned_elements() const { return distribution_->owned_elements(); }
   /// A vector over the free dofs with this rank's owned range (for get_free, set_free, residual).
   Vec create_vector() const;
-  /// The full state layout (zeros on constrained dofs) of a free-dof vector with the layout of
-  /// create_vector. Collective.
+  /// The full state layout (zeros on constrained dofs, pressures in MPa) of a free-dof vector
+  /// with the layout of create_vector (pressures weighted as in get_free). Collective.
   std::vector<double> full_from_free(Vec x) const;
 
   /// Full state: kPerNode values per node (ux, uy, uz, p), then the terms' global unknowns.
@@ -128,15 +128,28 @@ class MixedModel {
   /// ramp.factor(t) * force; the residual is internal minus external force. Replaces earlier ones.
   void set_external_force(std::vector<double> force, Ramp ramp);
 
+  /// The free system's weight of the pressure equations, w = mu / h [N/mm^3] (docs/theory/
+  /// mixed_up.md, W1): the free vectors, residuals and tangents below carry the pressure
+  /// unknowns as p / w [mm] and their equations (volume change, mm^3) times w [N], so that every
+  /// entry of the residual is a force and its norm, which the line search and the convergence
+  /// test read, weighs equilibrium and incompressibility alike. mu is the volume average of the
+  /// models' small-strain shear moduli, h the edge of the regular tetrahedron of the mean element
+  /// volume. A symmetric scaling: the solution, the tangent's symmetry and its inertia are those
+  /// of the unweighted system.
+  double pressure_weight() const { return pressure_weight_; }
+
   /// Copies the free dofs of the state into `x` (its owned part), or from `x` into the state
-  /// (collective: every rank receives all free values).
+  /// (collective: every rank receives all free values); pressures divided / multiplied by
+  /// pressure_weight().
   void get_free(Vec x) const;
   void set_free(Vec x);
 
-  /// Residual over the free dofs at the current state into `f` (overwritten). Also stores the
-  /// full residual, whose constrained entries are the reaction forces [N].
+  /// Residual over the free dofs at the current state into `f` (overwritten), the pressure
+  /// equations times pressure_weight(). Also stores the full residual, unweighted, whose
+  /// constrained entries are the reaction forces [N].
   AssemblyStatus assemble_residual(Vec f);
-  /// Consistent tangent over the free dofs into `K` (overwritten). A matrix from create_matrix
+  /// Consistent tangent over the free dofs into `K` (overwritten): d f / d x of the free vectors
+  /// above, i.e. pressure rows and columns times pressure_weight(). A matrix from create_matrix
   /// is filled directly in its value array through positions precomputed per element; any other
   /// matrix through MatSetValues (same values, slower).
   AssemblyStatus assemble_tangent(Mat K);
@@ -254,6 +267,13 @@ class MixedModel {
   double time_ = 0.0;
   double converged_time_ = 0.0;  ///< [s] of the last converged state: the history's step starts
   std::vector<double> history_residual_;  ///< scratch of save_converged
+
+  double pressure_weight_ = 1.0;    ///< pressure_weight()
+  Vec equation_weights_ = nullptr;  ///< per owned equation: pressure_weight() or 1
+  /// True when full-state index d is a nodal pressure.
+  bool is_pressure(int d) const {
+    return d < DofMap::kPerNode * dofs().n_nodes() && d % DofMap::kPerNode == 3;
+  }
 
   int threads_ = 0;
   std::vector<double> term_residual_;  ///< residual part discarded by assemble_tangent

@@ -69,11 +69,15 @@ Eigen::MatrixXd dense_tangent(MixedModel& model) {
   return dense;
 }
 
-/// Free-dof vector of a full state.
+/// Free-dof vector of a full state, in the free system's units (pressures over
+/// MixedModel::pressure_weight, as the assembled tangent expects them).
 Eigen::VectorXd free_part(const MixedModel& model, const std::vector<double>& state) {
   Eigen::VectorXd x(model.n_free());
   for (int d = 0; d < model.dofs().n_dofs(); ++d)
-    if (const int eq = model.dofs().equation(d); eq >= 0) x[eq] = state[d];
+    if (const int eq = model.dofs().equation(d); eq >= 0)
+      x[eq] = d < DofMap::kPerNode * model.mesh().n_nodes() && d % DofMap::kPerNode == 3
+                  ? state[d] / model.pressure_weight()
+                  : state[d];
   return x;
 }
 
