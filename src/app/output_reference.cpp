@@ -17,9 +17,9 @@ const std::vector<OutputEntry> kHistory = {
      "Newton iterations (tangents factorised) of the step's accepted attempt, over all its contact "
      "passes and a branch switch's re-solve; the attempts cut back before it are not counted "
      "here (summary.json `failed_newton_iterations`)"},
-    {"residual_norm", "–", "always",
-     "‖R‖₂ of the free equations at the converged state (nodal forces in N and pressure "
-     "equations in mm³ together)"},
+    {"residual_norm", "N", "always",
+     "‖R‖₂ of the free equations at the converged state (nodal forces, and the pressure "
+     "equations' volume change times μ/h: docs/theory/mixed_up.md, W1)"},
     {"pressure:<load>", "MPa", "`loads[]` of type pressure",
      "the pressure at t, `value` times its ramp; positive pushes against the body's outward "
      "normal (on a balloon's `inner` surface it inflates)"},
