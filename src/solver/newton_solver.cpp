@@ -117,10 +117,12 @@ NewtonSolver::NewtonSolver(MixedModel& model, const NewtonSettings& settings) : 
   PLISSE_PETSC(SNESGetLagJacobian(snes_, &lag));
   chord_enabled_ = reuse_enabled_ && lag == 1;
   PLISSE_PETSC(VecDuplicate(x_, &dx_));
+  PLISSE_PETSC(VecDuplicate(x_, &r_kept_));
 }
 
 NewtonSolver::~NewtonSolver() {
   MatDestroy(&reuse_);
+  VecDestroy(&r_kept_);
   VecDestroy(&dx_);
   SNESDestroy(&snes_);
   MatDestroy(&K_);
@@ -255,6 +257,7 @@ bool NewtonSolver::iterate_with_factor(NewtonResult& result) {
   if (!residual(x_, norm)) return false;  // SNES meets the inverted element and reports it
   if (reference_norm_ == 0.0) reference_norm_ = norm;
   const double target = std::max(atol_, pass_rtol_ * reference_norm_);
+  residual_at_x_ = true;
   if (norm <= target) return false;  // SNES converges at once
   result.residual_history.push_back(norm);
   bool converged = false;
@@ -262,10 +265,16 @@ bool NewtonSolver::iterate_with_factor(NewtonResult& result) {
     PLISSE_PETSC(MatSolve(reuse_, r_, dx_));
     ++result.reused_solves;
     PLISSE_PETSC(VecAYPX(dx_, -1.0, x_));  // dx_ = x - F^-1 R(x), the trial iterate
+    PLISSE_PETSC(VecCopy(r_, r_kept_));    // R(x), for SNES's start if the trial is refused
+    const AssemblyStatus kept_status = last_status_;
     double trial = 0.0;
     // A trial that meets the tolerance is kept whatever its rate: near the round-off floor the
     // rate is noise, and refusing there would make the outcome depend on the last bits.
-    if (!residual(dx_, trial) || !(trial <= std::max(target, kReuseContraction * norm))) break;
+    if (!residual(dx_, trial) || !(trial <= std::max(target, kReuseContraction * norm))) {
+      PLISSE_PETSC(VecCopy(r_kept_, r_));
+      last_status_ = kept_status;
+      break;
+    }
     PLISSE_PETSC(VecCopy(dx_, x_));
     norm = trial;
     result.residual_history.push_back(norm);
@@ -338,7 +347,12 @@ NewtonResult NewtonSolver::run() {
   PetscErrorCode code = 0;
   int earlier_iterations = 0;  // of solves ended by a workspace too small
   try {
+    residual_at_x_ = false;
     reuse_converged = reuse_enabled_ && reuse_allowed_ && iterate_with_factor(result);
+    // The reuse iterations end with R(x_) in r_: SNES starts from it instead of evaluating it
+    // again (the model's bubbles may be the refused trial's; the next assembly solves them anew
+    // from there).
+    if (!reuse_converged && residual_at_x_) PLISSE_PETSC(SNESSetInitialFunction(snes_, r_));
     if (!reuse_converged) code = snes_solve();
     while (!reuse_converged && code == 0 && !error_ && !interrupted_ &&
            grow_factor_workspace(result)) {

@@ -144,6 +144,8 @@ class NewtonSolver {
   double rtol_ = 0.0, atol_ = 0.0;
   Mat reuse_ = nullptr;          ///< the factor of the reuse iterations (referenced), or null
   Vec dx_ = nullptr;             ///< scratch of the reuse iterations
+  Vec r_kept_ = nullptr;         ///< R at the last kept reuse iterate (scratch)
+  bool residual_at_x_ = false;   ///< r_ holds R(x_) after the reuse iterations
   double reference_norm_ = 0.0;  ///< ||R|| where the current solve started (convergence test)
   double pass_rtol_ = 0.0;       ///< relative tolerance of the current solve
   int jacobians_ = 0;            ///< tangent assemblies in the current solve
