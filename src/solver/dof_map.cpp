@@ -14,7 +14,7 @@ DofMap::DofMap(int n_nodes, int n_global, const std::vector<ConstrainedComponent
   const auto number = [&](int d) {
     if (equation_[d] < 0) return;
     equation_[d] = n_free_++;
-    if (d < kPerNode * n_nodes_ && d % kPerNode == 3) ++n_free_pressure_;
+    if (is_pressure(d)) ++n_free_pressure_;
   };
   std::vector<char> seen(node_order.empty() ? 0 : n_nodes, 0);
   for (int k = 0; k < n_nodes; ++k) {

@@ -29,6 +29,8 @@ class DofMap {
   int n_nodes() const { return n_nodes_; }
   /// Full-state index of global unknown k (after all nodal values).
   int global_dof(int k) const { return kPerNode * n_nodes_ + k; }
+  /// True when full-state index d is a nodal pressure (not a displacement, not a global unknown).
+  bool is_pressure(int d) const { return d < kPerNode * n_nodes_ && d % kPerNode == 3; }
   /// Equation number of a full-state dof, or -1 when it is constrained.
   int equation(int dof) const { return equation_[dof]; }
   const std::vector<int>& equations() const { return equation_; }

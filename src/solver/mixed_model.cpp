@@ -40,10 +40,9 @@ double pressure_weight_of(const Mesh& mesh, const ElementMaterials& materials) {
   for (int e = 0; e < mesh.n_tets(); ++e) {
     if (materials.rigid(e)) continue;
     const auto& tet = mesh.tets[static_cast<std::size_t>(e)];
-    const Vec3d X0 = mesh.nodes[tet[0]];
-    Mat3d dX;
-    for (int a = 1; a < 4; ++a) dX.col(a - 1) = mesh.nodes[tet[a]] - X0;
-    const double v = std::abs(dX.determinant()) / 6.0;
+    const double v = std::abs(six_signed_volume(mesh.nodes[tet[0]], mesh.nodes[tet[1]],
+                                                mesh.nodes[tet[2]], mesh.nodes[tet[3]])) /
+                     6.0;
     volume += v;
     modulus_volume +=
         v * shear_modulus(materials.materials[static_cast<std::size_t>(materials.of(e))]);
@@ -133,7 +132,7 @@ MixedModel::MixedModel(const Mesh& mesh, ElementMaterials materials,
   full_residual_.assign(state_.size(), 0.0);
   std::vector<double> weights(state_.size(), 1.0);
   for (int d = 0; d < dofs().n_dofs(); ++d)
-    if (is_pressure(d)) weights[static_cast<std::size_t>(d)] = pressure_weight_;
+    if (dofs().is_pressure(d)) weights[static_cast<std::size_t>(d)] = pressure_weight_;
   equation_weights_ = create_vector();
   distribution_->owned_from_full(weights, equation_weights_);
   save_converged();
@@ -150,7 +149,7 @@ Vec MixedModel::create_vector() const { return distribution_->create_vector(); }
 std::vector<double> MixedModel::full_from_free(Vec x) const {
   std::vector<double> full = distribution_->full_from_free(x);
   for (int d = 0; d < dofs().n_dofs(); ++d)
-    if (is_pressure(d)) full[static_cast<std::size_t>(d)] *= pressure_weight_;
+    if (dofs().is_pressure(d)) full[static_cast<std::size_t>(d)] *= pressure_weight_;
   return full;
 }
 
@@ -179,7 +178,7 @@ void MixedModel::get_free(Vec x) const {
 
 void MixedModel::set_free(Vec x) {
   distribution_->for_each_free_value(x, [&](int d, double value) {
-    state_[d] = is_pressure(d) ? pressure_weight_ * value : value;
+    state_[d] = dofs().is_pressure(d) ? pressure_weight_ * value : value;
   });
 }
 

@@ -270,10 +270,6 @@ class MixedModel {
 
   double pressure_weight_ = 1.0;    ///< pressure_weight()
   Vec equation_weights_ = nullptr;  ///< per owned equation: pressure_weight() or 1
-  /// True when full-state index d is a nodal pressure.
-  bool is_pressure(int d) const {
-    return d < DofMap::kPerNode * dofs().n_nodes() && d % DofMap::kPerNode == 3;
-  }
 
   int threads_ = 0;
   std::vector<double> term_residual_;  ///< residual part discarded by assemble_tangent

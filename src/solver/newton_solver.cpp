@@ -238,7 +238,7 @@ Mat NewtonSolver::own_factor() const {
   return error == MAT_FACTOR_NOERROR ? F : nullptr;
 }
 
-bool NewtonSolver::iterate_with_factor(NewtonResult& result) {
+NewtonSolver::ReuseOutcome NewtonSolver::iterate_with_factor(NewtonResult& result) {
   const auto residual = [&](Vec x, double& norm) {
     const auto t0 = WallClock::now();
     model_.set_free(x);
@@ -249,16 +249,16 @@ bool NewtonSolver::iterate_with_factor(NewtonResult& result) {
     norm = n;
     return last_status_.ok;
   };
-  if (!reuse_) return false;
+  if (!reuse_) return ReuseOutcome::not_started;
   MatFactorError error = MAT_FACTOR_NOERROR;
   PLISSE_PETSC(MatFactorGetError(reuse_, &error));  // its owner factorised it again and failed
-  if (error != MAT_FACTOR_NOERROR) return false;
+  if (error != MAT_FACTOR_NOERROR) return ReuseOutcome::not_started;
   double norm = 0.0;
-  if (!residual(x_, norm)) return false;  // SNES meets the inverted element and reports it
+  // An inverted element: SNES meets it again and reports it.
+  if (!residual(x_, norm)) return ReuseOutcome::not_started;
   if (reference_norm_ == 0.0) reference_norm_ = norm;
   const double target = std::max(atol_, pass_rtol_ * reference_norm_);
-  residual_at_x_ = true;
-  if (norm <= target) return false;  // SNES converges at once
+  if (norm <= target) return ReuseOutcome::handed_over;  // SNES converges at once
   result.residual_history.push_back(norm);
   bool converged = false;
   for (int k = 0; k < kReuseMaxIterations && !converged; ++k) {
@@ -282,9 +282,9 @@ bool NewtonSolver::iterate_with_factor(NewtonResult& result) {
   }
   // Back to the last kept iterate (after a refused trial the model holds the trial).
   model_.set_free(x_);
-  if (converged) return true;
+  if (converged) return ReuseOutcome::converged;
   result.residual_history.pop_back();  // SNES's history starts with the same norm
-  return false;
+  return ReuseOutcome::handed_over;
 }
 
 bool NewtonSolver::grow_factor_workspace(NewtonResult& result) {
@@ -347,12 +347,12 @@ NewtonResult NewtonSolver::run() {
   PetscErrorCode code = 0;
   int earlier_iterations = 0;  // of solves ended by a workspace too small
   try {
-    residual_at_x_ = false;
-    reuse_converged = reuse_enabled_ && reuse_allowed_ && iterate_with_factor(result);
-    // The reuse iterations end with R(x_) in r_: SNES starts from it instead of evaluating it
-    // again (the model's bubbles may be the refused trial's; the next assembly solves them anew
-    // from there).
-    if (!reuse_converged && residual_at_x_) PLISSE_PETSC(SNESSetInitialFunction(snes_, r_));
+    const ReuseOutcome reuse =
+        reuse_enabled_ && reuse_allowed_ ? iterate_with_factor(result) : ReuseOutcome::not_started;
+    reuse_converged = reuse == ReuseOutcome::converged;
+    // Handed over with R(x_) in r_: SNES starts from it instead of evaluating it again (the
+    // model's bubbles may be the refused trial's; the next assembly solves them anew from there).
+    if (reuse == ReuseOutcome::handed_over) PLISSE_PETSC(SNESSetInitialFunction(snes_, r_));
     if (!reuse_converged) code = snes_solve();
     while (!reuse_converged && code == 0 && !error_ && !interrupted_ &&
            grow_factor_workspace(result)) {

@@ -111,9 +111,15 @@ class NewtonSolver {
   void make_matrix();
   /// SNES's own factor of K_ when its preconditioner is a factorisation, else null.
   Mat own_factor() const;
+  /// How the reuse iterations ended.
+  enum class ReuseOutcome {
+    not_started,  ///< no factor to use, or R(x_) could not be assembled: r_ says nothing
+    handed_over,  ///< Newton's turn: r_ holds R(x_), the last kept iterate's residual
+    converged,    ///< the last kept iterate meets the tolerance
+  };
   /// The reuse iterations from the model's state; return with the model at the last kept iterate
-  /// and reference_norm_ set. Counts into `result`; true when that iterate already converged.
-  bool iterate_with_factor(NewtonResult& result);
+  /// and reference_norm_ set. Counts into `result`.
+  ReuseOutcome iterate_with_factor(NewtonResult& result);
   /// solve() and refine() with pass_rtol_ and reference_norm_ set (0: the first ||R||).
   NewtonResult run();
   /// SNESSolve from x_, its first iteration with a new tangent.
@@ -145,7 +151,6 @@ class NewtonSolver {
   Mat reuse_ = nullptr;          ///< the factor of the reuse iterations (referenced), or null
   Vec dx_ = nullptr;             ///< scratch of the reuse iterations
   Vec r_kept_ = nullptr;         ///< R at the last kept reuse iterate (scratch)
-  bool residual_at_x_ = false;   ///< r_ holds R(x_) after the reuse iterations
   double reference_norm_ = 0.0;  ///< ||R|| where the current solve started (convergence test)
   double pass_rtol_ = 0.0;       ///< relative tolerance of the current solve
   int jacobians_ = 0;            ///< tangent assemblies in the current solve

@@ -101,12 +101,41 @@ double relative_difference(const std::vector<double>& a, const std::vector<doubl
   return diff / scale;
 }
 
+/// The bottom of `mesh` fixed, its top moved by `top` (both ramped over t in [0, 1]).
+std::vector<ConstrainedComponent> bottom_fixed_top_moved(const Mesh& mesh, const Vec3d& top) {
+  std::vector<ConstrainedComponent> constraints = fixed(mesh, "bottom", Vec3d::Zero());
+  const auto moved = fixed(mesh, "top", top);
+  constraints.insert(constraints.end(), moved.begin(), moved.end());
+  return constraints;
+}
+
+/// The neo-Hookean cube (c1 = 0.5) under `constraints`, solved by one NewtonSolver at each of
+/// `times` in turn; the last solve's result, and the state it reached in `state`.
+NewtonResult solve_cube_at(const Mesh& mesh, const std::vector<ConstrainedComponent>& constraints,
+                           bool reuse, double rtol, const std::vector<double>& times,
+                           std::vector<double>& state) {
+  MixedModel model(mesh, make_material("neo-hookean", {{"c1", 0.5}}), 0.0, constraints, {});
+  NewtonSettings settings;
+  settings.rtol = rtol;
+  settings.atol = 1e-14;
+  settings.reuse_factor = reuse;
+  NewtonSolver newton(model, settings);
+  NewtonResult result;
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    if (k > 0) {
+      EXPECT_TRUE(result.converged) << "t = " << times[k - 1];
+    }
+    model.set_time(times[k]);
+    result = newton.solve();
+  }
+  state = model.state();
+  return result;
+}
+
 SteppedRun stretch_cube(bool reuse) {
   const Mesh mesh = unit_cube(4);
-  std::vector<ConstrainedComponent> constraints = fixed(mesh, "bottom", Vec3d::Zero());
-  const auto top = fixed(mesh, "top", Vec3d(0.15, 0.075, 0.5));
-  constraints.insert(constraints.end(), top.begin(), top.end());
-  MixedModel model(mesh, make_material("neo-hookean", {{"c1", 0.5}}), 0.0, constraints, {});
+  MixedModel model(mesh, make_material("neo-hookean", {{"c1", 0.5}}), 0.0,
+                   bottom_fixed_top_moved(mesh, Vec3d(0.15, 0.075, 0.5)), {});
   return step_through(model, 10, reuse, /*stability=*/true);
 }
 
@@ -178,26 +207,13 @@ TEST(FactorReuse, ContactMultiplierUpdatesReuseTheFactorAndGiveTheSameForces) {
 
 TEST(FactorReuse, AFactorFarFromTheSolutionIsLeftToNewton) {
   const Mesh mesh = unit_cube(4);
-  std::vector<ConstrainedComponent> constraints = fixed(mesh, "bottom", Vec3d::Zero());
-  const auto top = fixed(mesh, "top", Vec3d(0.3, 0.15, 0.4));
-  constraints.insert(constraints.end(), top.begin(), top.end());
-  const auto solve_jump = [&](bool reuse, std::vector<double>& state) {
-    MixedModel model(mesh, make_material("neo-hookean", {{"c1", 0.5}}), 0.0, constraints, {});
-    NewtonSettings settings;
-    settings.rtol = kRtol;
-    settings.atol = 1e-14;
-    settings.reuse_factor = reuse;
-    NewtonSolver newton(model, settings);
-    model.set_time(0.1);
-    EXPECT_TRUE(newton.solve().converged);  // leaves the factor of the 10 % state
-    model.set_time(1.0);                    // then the whole motion in one step
-    const NewtonResult result = newton.solve();
-    state = model.state();
-    return result;
-  };
+  const auto constraints = bottom_fixed_top_moved(mesh, Vec3d(0.3, 0.15, 0.4));
+  // The 10 % state's solve leaves its factor; then the whole motion in one step.
   std::vector<double> plain_state, reused_state;
-  const NewtonResult plain = solve_jump(false, plain_state);
-  const NewtonResult reused = solve_jump(true, reused_state);
+  const NewtonResult plain =
+      solve_cube_at(mesh, constraints, false, kRtol, {0.1, 1.0}, plain_state);
+  const NewtonResult reused =
+      solve_cube_at(mesh, constraints, true, kRtol, {0.1, 1.0}, reused_state);
   ASSERT_TRUE(plain.converged);
   ASSERT_TRUE(reused.converged);
   // The old factor was tried and refused at once: a tenfold cut from the 10 % state's tangent
@@ -218,24 +234,10 @@ TEST(FactorReuse, NewtonKeepsItsFactorWhileItContractsTenfold) {
   // One solve from rest, no factor at hand: after the first Newton iteration cuts ||R|| tenfold,
   // the following ones keep its factor (chord steps) for as long as each cuts ||R|| tenfold.
   const Mesh mesh = unit_cube(4);
-  std::vector<ConstrainedComponent> constraints = fixed(mesh, "bottom", Vec3d::Zero());
-  const auto top = fixed(mesh, "top", Vec3d(0.06, 0.03, 0.1));
-  constraints.insert(constraints.end(), top.begin(), top.end());
-  const auto solve = [&](bool reuse, std::vector<double>& state) {
-    MixedModel model(mesh, make_material("neo-hookean", {{"c1", 0.5}}), 0.0, constraints, {});
-    NewtonSettings settings;
-    settings.rtol = 1e-10;
-    settings.atol = 1e-14;
-    settings.reuse_factor = reuse;
-    NewtonSolver newton(model, settings);
-    model.set_time(1.0);
-    const NewtonResult result = newton.solve();
-    state = model.state();
-    return result;
-  };
+  const auto constraints = bottom_fixed_top_moved(mesh, Vec3d(0.06, 0.03, 0.1));
   std::vector<double> plain_state, chord_state;
-  const NewtonResult plain = solve(false, plain_state);
-  const NewtonResult chord = solve(true, chord_state);
+  const NewtonResult plain = solve_cube_at(mesh, constraints, false, 1e-10, {1.0}, plain_state);
+  const NewtonResult chord = solve_cube_at(mesh, constraints, true, 1e-10, {1.0}, chord_state);
   ASSERT_TRUE(plain.converged);
   ASSERT_TRUE(chord.converged);
   EXPECT_EQ(plain.reused_solves, 0);

@@ -75,9 +75,7 @@ Eigen::VectorXd free_part(const MixedModel& model, const std::vector<double>& st
   Eigen::VectorXd x(model.n_free());
   for (int d = 0; d < model.dofs().n_dofs(); ++d)
     if (const int eq = model.dofs().equation(d); eq >= 0)
-      x[eq] = d < DofMap::kPerNode * model.mesh().n_nodes() && d % DofMap::kPerNode == 3
-                  ? state[d] / model.pressure_weight()
-                  : state[d];
+      x[eq] = model.dofs().is_pressure(d) ? state[d] / model.pressure_weight() : state[d];
   return x;
 }
 
