@@ -217,7 +217,12 @@ const std::vector<OutputEntry> kSummary = {
     {"failed_newton_iterations", "–", "always",
      "Newton iterations spent in attempts that failed and were cut back"},
     {"reused_factor_solves", "–", "always",
-     "linear solves with a factorisation already at hand (no new tangent), over all attempts"},
+     "linear solves with a factorisation already at hand, over all attempts: chord steps (no new "
+     "tangent) and the GMRES iterations of Krylov steps"},
+    {"krylov_steps", "–", "always",
+     "Newton steps without factorisation, over all attempts: the tangent assembled and its "
+     "system solved by GMRES preconditioned with a factorisation already at hand "
+     "(`solver.newton.reuse_krylov_iterations`)"},
     {"cutbacks", "–", "always", "failed attempts that were retried with a smaller step"},
     {"final_time", "–", "always", "time t of the last converged step"},
     {"factorisations", "–", "always", "numerical factorisations of the tangent"},

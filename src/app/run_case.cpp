@@ -320,12 +320,13 @@ void solve_and_write(PreparedRun run) {
   const PhaseTimes phases = stepper.times();
   char line[256];
   std::snprintf(line, sizeof line,
-                "%s: %d steps, %d Newton iterations (+%d solves with a reused factorisation), %d "
-                "cut-backs, %.2fs (assembly %.2fs, linear solve %.2fs, output %.2fs), peak memory "
-                "%.0f MiB",
+                "%s: %d steps, %d Newton iterations and %d Krylov steps (+%d solves with a reused "
+                "factorisation), %d cut-backs, %.2fs (assembly %.2fs, linear solve %.2fs, output "
+                "%.2fs), peak memory %.0f MiB",
                 result.completed ? "done" : "stopped", result.steps, result.newton_iterations,
-                result.reused_solves, result.cutbacks, seconds_since(run.start), phases.assembly,
-                phases.linear_solve, recorder.output_seconds(), memory);
+                result.krylov_steps, result.reused_solves, result.cutbacks,
+                seconds_since(run.start), phases.assembly, phases.linear_solve,
+                recorder.output_seconds(), memory);
   log.info(line);
   const StepInfo& last = recorder.last_step();
   if (result.interrupted) {

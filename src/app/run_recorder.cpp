@@ -342,6 +342,7 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
   summary["newton_iterations"] = result.newton_iterations;
   summary["failed_newton_iterations"] = result.newton_iterations - accepted_newton_iterations_;
   summary["reused_factor_solves"] = result.reused_solves;
+  summary["krylov_steps"] = result.krylov_steps;
   summary["cutbacks"] = result.cutbacks;
   summary["final_time"] = last_step_.time;
   const PhaseTimes phases = stepper_.times();

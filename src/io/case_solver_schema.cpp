@@ -64,6 +64,12 @@ Schema<NewtonSettings> newton_schema() {
             "Newton tangent or the stability check's) while each iteration cuts the residual "
             "tenfold, and within Newton keep a factorisation for the next iteration after one "
             "that cut it tenfold; the convergence test is unchanged (docs/performance.md)");
+  s.integer("reuse_krylov_iterations", &NewtonSettings::reuse_krylov_iterations, Range::at_least(0),
+            "with reuse_factor: when an iteration with the kept factorisation cuts the residual "
+            "less than tenfold, Newton steps go on without factorising, their linear system "
+            "solved by GMRES preconditioned with that factorisation in at most this many "
+            "iterations (GMRES keeps as many vectors of the unknowns); 0 factorises instead "
+            "(docs/performance.md)");
   s.nested<LinearSolverSettings>("linear", &NewtonSettings::linear, linear_solver_schema())
       .null_is_absent();
   return s;

@@ -100,6 +100,7 @@ std::string LoadStepper::solve_step(NewtonResult& newton, SteppingResult& result
     result.newton_iterations += n.iterations;
     attempt_newton_ += n.iterations;
     result.reused_solves += n.reused_solves;
+    result.krylov_steps += n.krylov_steps;
     attempt_reused_ += n.reused_solves;
   };
   try {

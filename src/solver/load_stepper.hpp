@@ -39,7 +39,8 @@ struct StepInfo {
   /// passes (failed attempts before it are in SteppingResult only)
   int newton_iterations = 0;
   /// Solves with a factorisation already at hand in the accepted attempt, over all its contact
-  /// passes (NewtonResult::reused_solves; no tangent, no factorisation)
+  /// passes (NewtonResult::reused_solves: chord steps and the GMRES iterations of Krylov steps;
+  /// no factorisation)
   int reused_solves = 0;
   double residual_norm = 0.0;
   /// The ||R|| the last pass's relative test refers to: its first residual (before any reuse
@@ -67,6 +68,7 @@ struct SteppingResult {
   int steps = 0;
   int newton_iterations = 0;  ///< total over converged and failed attempts
   int reused_solves = 0;      ///< solves with a reused factorisation, same count
+  int krylov_steps = 0;       ///< Newton steps solved by GMRES with a reused factorisation
   int cutbacks = 0;
   std::string failure;       ///< why the run stopped early (empty when completed)
   bool interrupted = false;  ///< stopped because set_interrupt's test said so, not by a failure

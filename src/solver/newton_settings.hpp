@@ -34,6 +34,11 @@ struct NewtonSettings {
   /// the last converged state) while every such iteration cuts ||R|| at least tenfold; Newton
   /// proper takes over from the last accepted iterate (newton_solver.hpp).
   bool reuse_factor = true;
+  /// With reuse_factor: when an iteration with the kept factorisation cuts ||R|| less than
+  /// tenfold, Newton steps whose linear system GMRES solves, preconditioned by that
+  /// factorisation, with at most this many iterations (newton_solver.hpp); 0: none, Newton
+  /// factorises anew instead.
+  int reuse_krylov_iterations = 20;
   LinearSolverSettings linear;
 };
 

@@ -13,8 +13,14 @@ namespace {
 /// A reuse iteration is kept when it cuts ||R|| at least this much (newton_solver.hpp): at this
 /// rate the factor's ten or so solves to rtol 1e-8 cost less than two factorisations.
 constexpr double kReuseContraction = 0.1;
-/// Reuse iterations per solve at most.
+/// Reuse iterations per solve at most (chord and Krylov steps together).
 constexpr int kReuseMaxIterations = 12;
+/// A Krylov step solves K dx = -R to this relative residual: its iterate then cuts ||R|| by
+/// about as much as Newton's exact step wherever that cut is less than a thousandfold.
+constexpr double kKrylovRtol = 1e-3;
+/// A Krylov step is kept when it cuts ||R|| at least this much; a smaller cut means the step
+/// wants a line search, which SNES does.
+constexpr double kKrylovContraction = 0.5;
 
 /// The factored matrix of the SNES's preconditioner when it is a factorisation (LU or
 /// Cholesky) that has been set up, else null.
@@ -116,11 +122,13 @@ NewtonSolver::NewtonSolver(MixedModel& model, const NewtonSettings& settings) : 
   PetscInt lag = 1;
   PLISSE_PETSC(SNESGetLagJacobian(snes_, &lag));
   chord_enabled_ = reuse_enabled_ && lag == 1;
+  krylov_iterations_ = reuse_enabled_ ? settings.reuse_krylov_iterations : 0;
   PLISSE_PETSC(VecDuplicate(x_, &dx_));
   PLISSE_PETSC(VecDuplicate(x_, &r_kept_));
 }
 
 NewtonSolver::~NewtonSolver() {
+  KSPDestroy(&krylov_);
   MatDestroy(&reuse_);
   VecDestroy(&r_kept_);
   VecDestroy(&dx_);
@@ -224,6 +232,7 @@ double NewtonSolver::factor_entries() const {
 }
 
 void NewtonSolver::offer_factor(Mat factor) {
+  factor_stale_ = false;
   if (factor == reuse_) return;
   if (factor) PLISSE_PETSC(PetscObjectReference(reinterpret_cast<PetscObject>(factor)));
   MatDestroy(&reuse_);
@@ -236,6 +245,45 @@ Mat NewtonSolver::own_factor() const {
   MatFactorError error = MAT_FACTOR_NOERROR;
   PLISSE_PETSC(MatFactorGetError(F, &error));
   return error == MAT_FACTOR_NOERROR ? F : nullptr;
+}
+
+PetscErrorCode NewtonSolver::apply_reuse(PC pc, Vec r, Vec y) {
+  void* context = nullptr;
+  PetscCall(PCShellGetContext(pc, &context));
+  return MatSolve(static_cast<NewtonSolver*>(context)->reuse_, r, y);
+}
+
+bool NewtonSolver::krylov_step(NewtonResult& result) {
+  const auto t0 = WallClock::now();
+  model_.set_free(x_);
+  const AssemblyStatus status = model_.assemble_tangent(K_);
+  times_.assembly += seconds_since(t0);
+  if (!status.ok) return false;
+  if (!krylov_) {
+    // GMRES on the true residual (right preconditioning), preconditioned by the kept factor; no
+    // restart within a step. Not in the options database: -ksp_* options are SNES's.
+    PLISSE_PETSC(KSPCreate(model_.comm(), &krylov_));
+    PLISSE_PETSC(KSPSetType(krylov_, KSPGMRES));
+    PLISSE_PETSC(KSPSetPCSide(krylov_, PC_RIGHT));
+    PLISSE_PETSC(KSPSetNormType(krylov_, KSP_NORM_UNPRECONDITIONED));
+    PLISSE_PETSC(KSPSetTolerances(krylov_, kKrylovRtol, 0.0, PETSC_DEFAULT, krylov_iterations_));
+    PLISSE_PETSC(KSPGMRESSetRestart(krylov_, krylov_iterations_));
+    PC pc = nullptr;
+    PLISSE_PETSC(KSPGetPC(krylov_, &pc));
+    PLISSE_PETSC(PCSetType(pc, PCSHELL));
+    PLISSE_PETSC(PCShellSetContext(pc, this));
+    PLISSE_PETSC(PCShellSetApply(pc, &NewtonSolver::apply_reuse));
+  }
+  PLISSE_PETSC(KSPSetOperators(krylov_, K_, K_));
+  PLISSE_PETSC(KSPSolve(krylov_, r_, dx_));
+  KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+  PLISSE_PETSC(KSPGetConvergedReason(krylov_, &reason));
+  PetscInt its = 0;
+  PLISSE_PETSC(KSPGetIterationNumber(krylov_, &its));
+  result.reused_solves += static_cast<int>(its);
+  if (reason <= 0) return false;
+  ++result.krylov_steps;
+  return true;
 }
 
 NewtonSolver::ReuseOutcome NewtonSolver::iterate_with_factor(NewtonResult& result) {
@@ -261,19 +309,32 @@ NewtonSolver::ReuseOutcome NewtonSolver::iterate_with_factor(NewtonResult& resul
   if (norm <= target) return ReuseOutcome::handed_over;  // SNES converges at once
   result.residual_history.push_back(norm);
   bool converged = false;
+  // Chord steps while they cut ||R|| tenfold; from the first that does not (F's tangent is too
+  // far from this one: a load step that moved it, contact nodes that changed state), Krylov
+  // steps, which F only preconditions, while they halve ||R||. A factor that needed Krylov
+  // steps once is not tried in chord steps again.
+  bool krylov = krylov_iterations_ > 0 && factor_stale_;
   for (int k = 0; k < kReuseMaxIterations && !converged; ++k) {
-    PLISSE_PETSC(MatSolve(reuse_, r_, dx_));
-    ++result.reused_solves;
-    PLISSE_PETSC(VecAYPX(dx_, -1.0, x_));  // dx_ = x - F^-1 R(x), the trial iterate
+    if (krylov) {
+      if (!krylov_step(result)) break;  // dx_ = K^-1 R(x), or GMRES did not get there
+    } else {
+      PLISSE_PETSC(MatSolve(reuse_, r_, dx_));  // dx_ = F^-1 R(x)
+      ++result.reused_solves;
+    }
+    PLISSE_PETSC(VecAYPX(dx_, -1.0, x_));  // dx_ = x - dx_, the trial iterate
     PLISSE_PETSC(VecCopy(r_, r_kept_));    // R(x), for SNES's start if the trial is refused
     const AssemblyStatus kept_status = last_status_;
     double trial = 0.0;
     // A trial that meets the tolerance is kept whatever its rate: near the round-off floor the
     // rate is noise, and refusing there would make the outcome depend on the last bits.
-    if (!residual(dx_, trial) || !(trial <= std::max(target, kReuseContraction * norm))) {
+    const double rate = krylov ? kKrylovContraction : kReuseContraction;
+    if (!residual(dx_, trial) || !(trial <= std::max(target, rate * norm))) {
       PLISSE_PETSC(VecCopy(r_kept_, r_));
       last_status_ = kept_status;
-      break;
+      if (krylov || krylov_iterations_ == 0) break;
+      krylov = true;  // the same iterate again, with a Krylov step
+      factor_stale_ = true;
+      continue;
     }
     PLISSE_PETSC(VecCopy(dx_, x_));
     norm = trial;

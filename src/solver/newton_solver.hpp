@@ -16,6 +16,18 @@
 /// one of a plain Newton solve: ||R|| <= max(atol, rtol ||R(x_0)||) with x_0 the state solve()
 /// started from, so the answer differs from a solve without reuse only within that tolerance.
 ///
+/// When a chord step x_k - F^-1 R(x_k) does not cut ||R|| tenfold (F's tangent is too far from
+/// the current one: the load moved, contact nodes changed state), the iteration goes on with
+/// Krylov steps from x_k instead of handing over: the tangent K(x_k) is assembled and
+///
+///   K(x_k) dx = -R(x_k)
+///
+/// solved by GMRES preconditioned with F (F^-1 K = I plus a low-rank part for the nodes that
+/// changed state, plus a small part for the load step) to kKrylovRtol; x_k + dx is kept when it
+/// halves ||R||. A Krylov step costs a tangent assembly and a few triangular solves, against a
+/// factorisation for a Newton iteration. NewtonSettings::reuse_krylov_iterations bounds GMRES;
+/// when it does not converge, or the step is not kept, SNES's Newton takes over from x_k.
+///
 /// Within SNES, the same rule: after an iteration that cut ||R|| at least kReuseContraction-fold,
 /// the next one keeps the tangent and its factor (a chord step, through SNES's Jacobian lag);
 /// after one that did not, Newton assembles and factorises anew. A chord step is taken, not
@@ -38,8 +50,10 @@ struct NewtonResult {
   int iterations = 0;
   double residual_norm = 0.0;
   std::vector<double> residual_history;  ///< ||R|| at the start and after each iteration
-  int reused_solves = 0;  ///< solves with a factor already at hand, kept or not (not counted in
-                          ///< `iterations`: no tangent and no factorisation)
+  int reused_solves = 0;  ///< solves with a factor already at hand, kept or not: chord steps and
+                          ///< the GMRES iterations of Krylov steps (not counted in `iterations`:
+                          ///< no factorisation)
+  int krylov_steps = 0;   ///< Newton steps solved by GMRES with a factor already at hand
   double reference_norm = 0.0;  ///< ||R(x_0)|| of the relative test (of the solve refined)
   std::string reason;           ///< PETSc's converged/diverged reason, in words
   AssemblyStatus status;        ///< of the last residual evaluation
@@ -120,6 +134,12 @@ class NewtonSolver {
   /// The reuse iterations from the model's state; return with the model at the last kept iterate
   /// and reference_norm_ set. Counts into `result`.
   ReuseOutcome iterate_with_factor(NewtonResult& result);
+  /// A Krylov step's correction: dx_ = K(x_)^-1 r_ by GMRES preconditioned with reuse_, the
+  /// tangent assembled at x_ into K_. False when the tangent could not be assembled or GMRES
+  /// did not reach kKrylovRtol in krylov_iterations_. Counts into `result`.
+  bool krylov_step(NewtonResult& result);
+  /// PCSHELL's apply: y = reuse_^-1 r.
+  static PetscErrorCode apply_reuse(PC pc, Vec r, Vec y);
   /// solve() and refine() with pass_rtol_ and reference_norm_ set (0: the first ||R||).
   NewtonResult run();
   /// SNESSolve from x_, its first iteration with a new tangent.
@@ -158,6 +178,10 @@ class NewtonSolver {
   bool chord_next_ = false;      ///< the coming SNES iteration keeps the factor
   double previous_fnorm_ = 0.0;  ///< ||R|| at the last SNES iteration
   int chord_iterations_ = 0;     ///< SNES iterations in the current solve that kept the factor
+  KSP krylov_ = nullptr;         ///< GMRES of the Krylov steps, made at the first one
+  int krylov_iterations_ = 0;    ///< GMRES iterations per Krylov step at most; 0: none
+  /// A chord step with reuse_ was refused: its solves start with Krylov steps.
+  bool factor_stale_ = false;
 };
 
 }  // namespace plisse

@@ -8,7 +8,10 @@
 // Cases: a stretched and sheared cube in equal steps with the stability check, whose LDL^T of the
 // converged state is offered to the next step; a block pressed by a die, whose contact multiplier
 // updates re-solve with a tangent that barely changed; a factor far from the solution (a jump
-// from 10 % to 100 % of the load), which the contraction test must refuse.
+// from 10 % to 100 % of the load), which the contraction test must refuse. When a chord step is
+// refused, Krylov steps (GMRES on the new tangent, preconditioned by the kept factor) go on
+// without factorising: they must reach plain Newton's answer at Newton's rate, and leave to
+// Newton what GMRES cannot finish within its iteration limit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -113,12 +116,14 @@ std::vector<ConstrainedComponent> bottom_fixed_top_moved(const Mesh& mesh, const
 /// `times` in turn; the last solve's result, and the state it reached in `state`.
 NewtonResult solve_cube_at(const Mesh& mesh, const std::vector<ConstrainedComponent>& constraints,
                            bool reuse, double rtol, const std::vector<double>& times,
-                           std::vector<double>& state) {
+                           std::vector<double>& state,
+                           int krylov_iterations = NewtonSettings{}.reuse_krylov_iterations) {
   MixedModel model(mesh, make_material("neo-hookean", {{"c1", 0.5}}), 0.0, constraints, {});
   NewtonSettings settings;
   settings.rtol = rtol;
   settings.atol = 1e-14;
   settings.reuse_factor = reuse;
+  settings.reuse_krylov_iterations = krylov_iterations;
   NewtonSolver newton(model, settings);
   NewtonResult result;
   for (std::size_t k = 0; k < times.size(); ++k) {
@@ -158,8 +163,9 @@ TEST(FactorReuse, StretchedCubeSameStatesWithFewerFactorisations) {
     EXPECT_LT(relative_difference(r.state, plain.steps[s].state), 1e-7) << "step " << s + 1;
   }
   // Plain Newton factorises 2 or 3 times per step. Early steps change the tangent too much for
-  // the last state's factor (its first solve cuts the residual less than tenfold and is refused);
-  // the later ones converge on it alone (measured: 25 factorisations plain, 19 with reuse).
+  // chord steps with the last state's factor (the first cuts the residual less than tenfold and
+  // is refused): Krylov steps finish them; the later ones converge in chord steps (measured: 24
+  // factorisations plain, 2 with reuse, in the first step from rest).
   std::printf(
       "stretched cube, 10 steps: %d factorisations plain, %d with reuse (+%d reused "
       "solves)\n",
@@ -208,12 +214,13 @@ TEST(FactorReuse, ContactMultiplierUpdatesReuseTheFactorAndGiveTheSameForces) {
 TEST(FactorReuse, AFactorFarFromTheSolutionIsLeftToNewton) {
   const Mesh mesh = unit_cube(4);
   const auto constraints = bottom_fixed_top_moved(mesh, Vec3d(0.3, 0.15, 0.4));
-  // The 10 % state's solve leaves its factor; then the whole motion in one step.
+  // The 10 % state's solve leaves its factor; then the whole motion in one step. No Krylov
+  // steps: the chord step is the whole reuse here.
   std::vector<double> plain_state, reused_state;
   const NewtonResult plain =
       solve_cube_at(mesh, constraints, false, kRtol, {0.1, 1.0}, plain_state);
   const NewtonResult reused =
-      solve_cube_at(mesh, constraints, true, kRtol, {0.1, 1.0}, reused_state);
+      solve_cube_at(mesh, constraints, true, kRtol, {0.1, 1.0}, reused_state, 0);
   ASSERT_TRUE(plain.converged);
   ASSERT_TRUE(reused.converged);
   // The old factor was tried and refused at once: a tenfold cut from the 10 % state's tangent
@@ -226,6 +233,68 @@ TEST(FactorReuse, AFactorFarFromTheSolutionIsLeftToNewton) {
   EXPECT_NEAR(reused.residual_history[1], plain.residual_history[1],
               1e-6 * plain.residual_history[1]);
   EXPECT_LE(reused.iterations, plain.iterations);
+  EXPECT_EQ(reused.krylov_steps, 0);
+  EXPECT_LE(reused.residual_norm, kRtol * reused.residual_history.front());
+  EXPECT_LT(relative_difference(reused_state, plain_state), 1e-7);
+}
+
+TEST(FactorReuse, KrylovStepsFinishWithAFactorTooFarForChordSteps) {
+  // The 10 % state's factor, then 40 % in one step: a chord step cuts ||R|| less than tenfold
+  // (the tangent moved), so the solve goes on in Krylov steps, GMRES on the new tangent
+  // preconditioned by the old factor, and needs no factorisation at all.
+  const Mesh mesh = unit_cube(4);
+  const auto constraints = bottom_fixed_top_moved(mesh, Vec3d(0.3, 0.15, 0.4));
+  std::vector<double> plain_state, krylov_state;
+  const NewtonResult plain =
+      solve_cube_at(mesh, constraints, false, kRtol, {0.1, 0.4}, plain_state);
+  const NewtonResult krylov =
+      solve_cube_at(mesh, constraints, true, kRtol, {0.1, 0.4}, krylov_state);
+  ASSERT_TRUE(plain.converged);
+  ASSERT_TRUE(krylov.converged);
+  std::printf("  plain Newton: %d iterations;", plain.iterations);
+  for (double r : plain.residual_history) std::printf(" %.3e", r);
+  std::printf("\n  reuse: %d iterations, %d Krylov steps, %d reused solves;", krylov.iterations,
+              krylov.krylov_steps, krylov.reused_solves);
+  for (double r : krylov.residual_history) std::printf(" %.3e", r);
+  std::printf("\n");
+  EXPECT_EQ(krylov.iterations, 0);
+  EXPECT_GE(krylov.krylov_steps, 1);
+  // The refused chord step (one solve) and at least one GMRES iteration per Krylov step.
+  EXPECT_GT(krylov.reused_solves, krylov.krylov_steps);
+  // The plain solve's test from the same start (to what the 10 % solves leave, each on its own
+  // path), and its answer within what the test leaves.
+  EXPECT_NEAR(krylov.residual_history.front(), plain.residual_history.front(),
+              1e-6 * plain.residual_history.front());
+  EXPECT_LE(krylov.residual_norm, kRtol * krylov.residual_history.front());
+  EXPECT_LT(relative_difference(krylov_state, plain_state), 1e-7);
+  // A Krylov step is Newton's step up to GMRES's relative residual 1e-3: from the same start it
+  // leaves the residual of Newton's full step within 1e-3 of the start's (plain Newton takes
+  // the full step here: its line search accepts lambda = 1 when the residual falls enough).
+  ASSERT_GE(krylov.residual_history.size(), 2u);
+  ASSERT_GE(plain.residual_history.size(), 2u);
+  EXPECT_NEAR(krylov.residual_history[1], plain.residual_history[1],
+              1e-3 * plain.residual_history[0]);
+  // Newton's rate: no more steps than plain Newton's iterations.
+  EXPECT_LE(krylov.krylov_steps, plain.iterations);
+}
+
+TEST(FactorReuse, KrylovStepsGMRESCannotFinishAreLeftToNewton) {
+  // One GMRES iteration per Krylov step cannot solve the whole jump's system to 1e-3: Newton
+  // takes over from the same state, with the plain solve's test and answer.
+  const Mesh mesh = unit_cube(4);
+  const auto constraints = bottom_fixed_top_moved(mesh, Vec3d(0.3, 0.15, 0.4));
+  std::vector<double> plain_state, reused_state;
+  const NewtonResult plain =
+      solve_cube_at(mesh, constraints, false, kRtol, {0.1, 1.0}, plain_state);
+  const NewtonResult reused =
+      solve_cube_at(mesh, constraints, true, kRtol, {0.1, 1.0}, reused_state, 1);
+  ASSERT_TRUE(reused.converged);
+  EXPECT_EQ(reused.krylov_steps, 0);
+  // The refused chord step and the one GMRES iteration, then Newton's own chord steps.
+  EXPECT_GE(reused.reused_solves, 2);
+  EXPECT_GT(reused.iterations, 0);
+  EXPECT_NEAR(reused.residual_history.front(), plain.residual_history.front(),
+              1e-6 * plain.residual_history.front());
   EXPECT_LE(reused.residual_norm, kRtol * reused.residual_history.front());
   EXPECT_LT(relative_difference(reused_state, plain_state), 1e-7);
 }
