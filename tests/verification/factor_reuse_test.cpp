@@ -211,48 +211,57 @@ TEST(FactorReuse, ContactMultiplierUpdatesReuseTheFactorAndGiveTheSameForces) {
   EXPECT_LT(reused.newton_iterations, plain.newton_iterations);
 }
 
-TEST(FactorReuse, AFactorFarFromTheSolutionIsLeftToNewton) {
+/// The cube solved at 10 % of a stretch and shear, then at `to` in one step, plainly and with
+/// reuse (the 10 % solve's factor at hand for the second).
+struct Jump {
+  NewtonResult plain, reused;
+  std::vector<double> plain_state, reused_state;
+};
+
+Jump jump_from_tenth(double to, int krylov_iterations) {
   const Mesh mesh = unit_cube(4);
   const auto constraints = bottom_fixed_top_moved(mesh, Vec3d(0.3, 0.15, 0.4));
-  // The 10 % state's solve leaves its factor; then the whole motion in one step. No Krylov
-  // steps: the chord step is the whole reuse here.
-  std::vector<double> plain_state, reused_state;
-  const NewtonResult plain =
-      solve_cube_at(mesh, constraints, false, kRtol, {0.1, 1.0}, plain_state);
-  const NewtonResult reused =
-      solve_cube_at(mesh, constraints, true, kRtol, {0.1, 1.0}, reused_state, 0);
-  ASSERT_TRUE(plain.converged);
-  ASSERT_TRUE(reused.converged);
+  Jump j;
+  j.plain = solve_cube_at(mesh, constraints, false, kRtol, {0.1, to}, j.plain_state);
+  j.reused =
+      solve_cube_at(mesh, constraints, true, kRtol, {0.1, to}, j.reused_state, krylov_iterations);
+  return j;
+}
+
+/// Both converged by the plain solve's test from the same start ("same" to what the 10 % solves
+/// leave, rtol 1e-8 each on its own path) and to the same answer within what the test leaves.
+void expect_the_plain_answer(const Jump& j) {
+  ASSERT_TRUE(j.plain.converged);
+  ASSERT_TRUE(j.reused.converged);
+  EXPECT_NEAR(j.reused.residual_history.front(), j.plain.residual_history.front(),
+              1e-6 * j.plain.residual_history.front());
+  EXPECT_LE(j.reused.residual_norm, kRtol * j.reused.residual_history.front());
+  EXPECT_LT(relative_difference(j.reused_state, j.plain_state), 1e-7);
+}
+
+TEST(FactorReuse, AFactorFarFromTheSolutionIsLeftToNewton) {
+  // The whole motion in one step, no Krylov steps: the chord step is the whole reuse here.
+  const Jump j = jump_from_tenth(1.0, 0);
+  expect_the_plain_answer(j);
   // The old factor was tried and refused at once: a tenfold cut from the 10 % state's tangent
   // is out of reach for a jump to 100 %. Newton then starts from the same state as the plain
   // solve, with its own first tangent: the same first iterate (the refused trial left no trace).
-  // "Same" to what the 10 % solves leave (rtol 1e-8, each on its own path).
-  ASSERT_GE(reused.residual_history.size(), 2u);
-  EXPECT_NEAR(reused.residual_history[0], plain.residual_history[0],
-              1e-6 * plain.residual_history[0]);
-  EXPECT_NEAR(reused.residual_history[1], plain.residual_history[1],
-              1e-6 * plain.residual_history[1]);
-  EXPECT_LE(reused.iterations, plain.iterations);
-  EXPECT_EQ(reused.krylov_steps, 0);
-  EXPECT_LE(reused.residual_norm, kRtol * reused.residual_history.front());
-  EXPECT_LT(relative_difference(reused_state, plain_state), 1e-7);
+  ASSERT_GE(j.reused.residual_history.size(), 2u);
+  EXPECT_NEAR(j.reused.residual_history[1], j.plain.residual_history[1],
+              1e-6 * j.plain.residual_history[1]);
+  EXPECT_LE(j.reused.iterations, j.plain.iterations);
+  EXPECT_EQ(j.reused.krylov_steps, 0);
 }
 
 TEST(FactorReuse, KrylovStepsFinishWithAFactorTooFarForChordSteps) {
-  // The 10 % state's factor, then 40 % in one step: a chord step cuts ||R|| less than tenfold
-  // (the tangent moved), so the solve goes on in Krylov steps, GMRES on the new tangent
+  // 40 % in one step: a chord step with the 10 % factor cuts ||R|| less than tenfold (the
+  // tangent moved), so the solve goes on in Krylov steps, GMRES on the new tangent
   // preconditioned by the old factor, and needs no factorisation at all.
-  const Mesh mesh = unit_cube(4);
-  const auto constraints = bottom_fixed_top_moved(mesh, Vec3d(0.3, 0.15, 0.4));
-  std::vector<double> plain_state, krylov_state;
-  const NewtonResult plain =
-      solve_cube_at(mesh, constraints, false, kRtol, {0.1, 0.4}, plain_state);
-  const NewtonResult krylov =
-      solve_cube_at(mesh, constraints, true, kRtol, {0.1, 0.4}, krylov_state);
-  ASSERT_TRUE(plain.converged);
-  ASSERT_TRUE(krylov.converged);
-  std::printf("  plain Newton: %d iterations;", plain.iterations);
-  for (double r : plain.residual_history) std::printf(" %.3e", r);
+  const Jump j = jump_from_tenth(0.4, NewtonSettings{}.reuse_krylov_iterations);
+  expect_the_plain_answer(j);
+  const NewtonResult& krylov = j.reused;
+  std::printf("  plain Newton: %d iterations;", j.plain.iterations);
+  for (double r : j.plain.residual_history) std::printf(" %.3e", r);
   std::printf("\n  reuse: %d iterations, %d Krylov steps, %d reused solves;", krylov.iterations,
               krylov.krylov_steps, krylov.reused_solves);
   for (double r : krylov.residual_history) std::printf(" %.3e", r);
@@ -261,42 +270,26 @@ TEST(FactorReuse, KrylovStepsFinishWithAFactorTooFarForChordSteps) {
   EXPECT_GE(krylov.krylov_steps, 1);
   // The refused chord step (one solve) and at least one GMRES iteration per Krylov step.
   EXPECT_GT(krylov.reused_solves, krylov.krylov_steps);
-  // The plain solve's test from the same start (to what the 10 % solves leave, each on its own
-  // path), and its answer within what the test leaves.
-  EXPECT_NEAR(krylov.residual_history.front(), plain.residual_history.front(),
-              1e-6 * plain.residual_history.front());
-  EXPECT_LE(krylov.residual_norm, kRtol * krylov.residual_history.front());
-  EXPECT_LT(relative_difference(krylov_state, plain_state), 1e-7);
   // A Krylov step is Newton's step up to GMRES's relative residual 1e-3: from the same start it
   // leaves the residual of Newton's full step within 1e-3 of the start's (plain Newton takes
   // the full step here: its line search accepts lambda = 1 when the residual falls enough).
   ASSERT_GE(krylov.residual_history.size(), 2u);
-  ASSERT_GE(plain.residual_history.size(), 2u);
-  EXPECT_NEAR(krylov.residual_history[1], plain.residual_history[1],
-              1e-3 * plain.residual_history[0]);
+  ASSERT_GE(j.plain.residual_history.size(), 2u);
+  EXPECT_NEAR(krylov.residual_history[1], j.plain.residual_history[1],
+              1e-3 * j.plain.residual_history[0]);
   // Newton's rate: no more steps than plain Newton's iterations.
-  EXPECT_LE(krylov.krylov_steps, plain.iterations);
+  EXPECT_LE(krylov.krylov_steps, j.plain.iterations);
 }
 
 TEST(FactorReuse, KrylovStepsGMRESCannotFinishAreLeftToNewton) {
   // One GMRES iteration per Krylov step cannot solve the whole jump's system to 1e-3: Newton
   // takes over from the same state, with the plain solve's test and answer.
-  const Mesh mesh = unit_cube(4);
-  const auto constraints = bottom_fixed_top_moved(mesh, Vec3d(0.3, 0.15, 0.4));
-  std::vector<double> plain_state, reused_state;
-  const NewtonResult plain =
-      solve_cube_at(mesh, constraints, false, kRtol, {0.1, 1.0}, plain_state);
-  const NewtonResult reused =
-      solve_cube_at(mesh, constraints, true, kRtol, {0.1, 1.0}, reused_state, 1);
-  ASSERT_TRUE(reused.converged);
-  EXPECT_EQ(reused.krylov_steps, 0);
+  const Jump j = jump_from_tenth(1.0, 1);
+  expect_the_plain_answer(j);
+  EXPECT_EQ(j.reused.krylov_steps, 0);
   // The refused chord step and the one GMRES iteration, then Newton's own chord steps.
-  EXPECT_GE(reused.reused_solves, 2);
-  EXPECT_GT(reused.iterations, 0);
-  EXPECT_NEAR(reused.residual_history.front(), plain.residual_history.front(),
-              1e-6 * plain.residual_history.front());
-  EXPECT_LE(reused.residual_norm, kRtol * reused.residual_history.front());
-  EXPECT_LT(relative_difference(reused_state, plain_state), 1e-7);
+  EXPECT_GE(j.reused.reused_solves, 2);
+  EXPECT_GT(j.reused.iterations, 0);
 }
 
 TEST(FactorReuse, NewtonKeepsItsFactorWhileItContractsTenfold) {
