@@ -10,29 +10,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "io/history_writer.hpp"
+#include "io/json_file.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {
 namespace {
-
-/// The number after `"key":` in the run's summary.json (keys used here are unique in the file).
-double summary_number(const std::filesystem::path& dir, const std::string& key) {
-  std::ifstream in(dir / "summary.json");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string json = text.str();
-  const auto at = json.find("\"" + key + "\":");
-  EXPECT_NE(at, std::string::npos) << "no " << key << " in summary.json";
-  if (at == std::string::npos) return 0.0;
-  return std::strtod(json.c_str() + at + key.size() + 3, nullptr);
-}
 
 /// The example on the preview mesh with `options`, checked as the file's header says; its
 /// history.
@@ -55,7 +40,8 @@ HistoryTable run_and_check(const std::string& name, const std::string& options) 
   // The plates' forces balance up to the step's equilibrium error: their sum is minus the sum of
   // the free y-residuals, at most sqrt(n) ||R|| for n nodes (Cauchy-Schwarz), ||R|| the step's
   // final residual_norm [N]; plus round-off of the forces.
-  const double sqrt_nodes = std::sqrt(summary_number(dir, "nodes"));
+  const double sqrt_nodes =
+      std::sqrt(read_json_file(dir / "summary.json").at("nodes").get<double>());
   const double tolerance = 1e-3;  // the dies' default `tolerance` [mm]
   EXPECT_GE(h.rows.size(), 50u);
   if (h.rows.empty()) return h;
