@@ -7,7 +7,8 @@ Units: h in mm, wall times in s, peak memory in MiB (2^20 bytes); errors and rat
 The measurements (bench/peer-shell writes them as JSON, bench/peers/peer-shell-results.json for
 the run behind the docs) are a dict:
   command: the command line that measured them; commit: `git rev-parse --short HEAD` of the
-  tree; local_changes: whether src/ or bench/ differed from that commit; date: YYYY-MM-DD;
+  tree; local_changes: whether the sources of the measurement (plisse's, the peer's, the case)
+  had uncommitted changes; date: YYYY-MM-DD;
   repeats: pairs per row;
   cases: a list, one per mesh size and element, of {h, tetrahedra, element ("mini" or
   "taylor-hood"), pairs}, where pairs holds one {"plisse": RUN, "DOLFINx": RUN} per repeat in the
