@@ -44,7 +44,7 @@ QUADRATURE_DEGREE = 4
 
 def read_mesh(path):
     """The DOLFINx mesh and facet tags of a Gmsh file. Goes through the Gmsh model because
-    gmshio.read_from_msh of DOLFINx 0.5.2 fails on this file."""
+    gmshio.read_from_msh of Debian's DOLFINx 0.5.2 fails on every file (NameError in its return)."""
     gmsh.initialize()
     gmsh.option.setNumber("General.Terminal", 0)
     gmsh.open(path)
@@ -86,7 +86,9 @@ def main():
     parser.add_argument("--json", help="file to write the results to")
     args = parser.parse_args()
     start_of_run = time.perf_counter()
-    final_pressure = args.pressure if args.pressure is not None else 0.95 * thick_sphere.limit_pressure(args.c1)[0]
+    final_pressure = args.pressure
+    if final_pressure is None:
+        final_pressure = 0.95 * thick_sphere.limit_pressure(args.c1)[0]
 
     mesh, facet_tags = read_mesh(args.mesh)
     space = mixed_space(mesh, args.element)

@@ -21,7 +21,7 @@ INNER, OUTER, PLANE_X, PLANE_Y, PLANE_Z = 1, 2, 11, 12, 13
 
 
 def octant_of_shell(ri, ro):
-    """Builds the solid {ri <= |x| <= ro, x, y, z >= 0} with OpenCASCADE; returns its volume tags."""
+    """Builds the solid {ri <= |x| <= ro, x, y, z >= 0} with OpenCASCADE; returns its volumes."""
     occ = gmsh.model.occ
     outer = occ.addSphere(0.0, 0.0, 0.0, ro)
     inner = occ.addSphere(0.0, 0.0, 0.0, ri)
