@@ -4,8 +4,8 @@ peers_test.py checks it.
 
 Units: h in mm, wall times in s, peak memory in MiB (2^20 bytes); errors and ratios have none.
 
-The measurements (bench/peer-shell writes them as JSON, bench/peers/peer-shell-results.json for
-the run behind the docs) are a dict:
+The measurements (bench/peer-shell writes them as JSON, docs/performance/peer-shell.json for the
+run behind the docs) are a dict:
   command: the command line that measured them; commit: `git rev-parse --short HEAD` of the
   tree; local_changes: whether the sources of the measurement (plisse's, the peer's, the case)
   had uncommitted changes; date: YYYY-MM-DD;
@@ -70,9 +70,10 @@ def render_block(results):
     """The lines between the markers, ending in a newline, from the measurements alone (so the
     same measurements always give the same text)."""
     changes = " with uncommitted changes" if results.get("local_changes") else ""
+    pairs = "1 pair of runs" if results["repeats"] == 1 else f"{results['repeats']} pairs of runs"
     lines = [
         f"Made by `{results['command']}` at commit {results['commit']}{changes} on "
-        f"{results['date']}: {results['repeats']} pairs of runs per row, plisse then DOLFINx, "
+        f"{results['date']}: {pairs} per row, plisse then DOLFINx, "
         "one core each. Wall time and ratio: median (smallest–largest) over the pairs; peak "
         "memory: the largest.",
         "",
