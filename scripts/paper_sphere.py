@@ -23,16 +23,15 @@ there, the wrinkle verdict and the largest ring amplitude and count at the last 
 tension-field state (fractions of elements taut, wrinkled and slack by membrane theory).
 """
 import argparse
-import csv
-import json
 import math
 import os
-import subprocess
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from shell_indentation import inflated_stretch, step_files  # noqa: E402  (thin-sphere law)
+import numpy as np
+
+from plisse_study import runs, sphere, sweep
+
+ROOT = sweep.ROOT
 CASE = os.path.join(ROOT, "validation", "paper-sphere-squeeze.yaml")
 LIMIT = 2.479  # p_max = LIMIT c1 t / R (thin neo-Hookean sphere)
 GAP = 0.2  # plate above the inflated pole, in wall thicknesses
@@ -44,18 +43,11 @@ def limit_pressure(c1, radius, thickness):
     return LIMIT * c1 * thickness / radius
 
 
-def tau_of(pressure, c1, radius, thickness):
-    """Vella et al.'s dimensionless pressure p R^2 / (4 sqrt(B Y)), nu = 1/2, E = 6 c1."""
-    return pressure * radius**2 / (8.0 * c1 * thickness**2)
-
-
 def point_settings(slenderness, ratio, args):
     r = args.radius
     t = r / slenderness
     p = ratio * limit_pressure(args.c1, r, t)
-    lam = inflated_stretch(p, args.c1, r, t)
-    pole = lam * r + 0.5 * t / lam**2  # outer pole of the inflated sphere (wall volume kept)
-    plate = pole + GAP * t
+    plate = sphere.outer_pole(sphere.inflated_stretch(p, args.c1, r, t), r, t) + GAP * t
     cell = args.cell * math.sqrt(r * t)
     far = min(2.5, r / 10.0)
     return [f"mesh.inner_radius={r - 0.5 * t:.6g}", f"mesh.thickness={t:.6g}",
@@ -71,44 +63,26 @@ def run_name(slenderness, ratio, tag):
     return f"{name}_{tag}" if tag else name
 
 
-def sweep(directory, args):
-    os.makedirs(directory, exist_ok=True)
-    plisse = os.path.join(ROOT, "build", "bin", "plisse")
-    for slenderness in (float(v) for v in args.slenderness.split(",")):
-        for ratio in (float(v) for v in args.ratios.split(",")):
-            run = os.path.join(directory, run_name(slenderness, ratio, args.tag))
-            if os.path.isfile(os.path.join(run, "summary.json")) and args.reuse:
-                print(f"{run}: kept", flush=True)
-                continue
-            command = [plisse, "run", CASE, "-o", run, "--overwrite"]
-            for s in point_settings(slenderness, ratio, args) + (args.set or []):
-                command += ["--set", s]
-            print(" ".join(command), flush=True)
-            # A point that stops (no equilibrium, a snap it cannot pass) is part of the map.
-            subprocess.run(command, stdout=subprocess.DEVNULL)
-
-
-def read_history(run):
-    with open(os.path.join(run, "history.csv")) as f:
-        return list(csv.DictReader(f))
+def run_sweep(directory, args):
+    points = [(run_name(slenderness, ratio, args.tag),
+               point_settings(slenderness, ratio, args) + (args.set or []))
+              for slenderness in (float(v) for v in args.slenderness.split(","))
+              for ratio in (float(v) for v in args.ratios.split(","))]
+    # A point that stops (no equilibrium, a snap it cannot pass) is part of the map.
+    sweep.sweep(CASE, directory, points, reuse=args.reuse)
 
 
 def geometry(run, summary):
     """(mid-surface radius, wall thickness) of the run's shell: from its --set values, else from
     its first step file (the case file's own values; an imperfection would blur them)."""
-    overrides = dict(item.split("=", 1) for item in summary.get("overrides", []) if "=" in item)
+    overrides = runs.set_values(summary)
     if "mesh.inner_radius" in overrides and "mesh.thickness" in overrides:
         thickness = float(overrides["mesh.thickness"])
         return float(overrides["mesh.inner_radius"]) + 0.5 * thickness, thickness
-
-    import meshio
-    import numpy as np
-
-    files = step_files(run)
+    files = runs.step_files(run)
     if not files:
         raise ValueError("no step files")
-    norm = np.linalg.norm(meshio.read(files[0]).points, axis=1)
-    return 0.5 * (norm.max() + norm.min()), norm.max() - norm.min()
+    return sphere.mid_surface(files[0])
 
 
 def hoop_compression(run):
@@ -116,40 +90,35 @@ def hoop_compression(run):
     free wall, over the classical buckling stress of a sphere E t / (R sqrt(3 (1 - nu^2))) =
     (2/3) E t / R (E = 6 c1, nu = 1/2): the hoop Cauchy stress minus the stress along the
     deformed radial direction, per tetrahedron; on the plate means a node in contact."""
-    import meshio
-    import numpy as np
-
-    mesh = meshio.read(step_files(run)[-1])
-    x0 = mesh.points
-    tets = (mesh.cells_dict["tetra10"][:, :4] if "tetra10" in mesh.cells_dict
-            else mesh.cells_dict["tetra"])
-    x = x0 + mesh.point_data["displacement"]
+    state = runs.read_state(runs.step_files(run)[-1])
+    x0, tets, x = state.points, state.corners, state.deformed
     centre, current = x0[tets].mean(axis=1), x[tets].mean(axis=1)
     phi = np.arctan2(centre[:, 2], centre[:, 0])
     hoop = np.c_[-np.sin(phi), np.zeros_like(phi), np.cos(phi)]
     normal = current / np.linalg.norm(current, axis=1)[:, None]
-    s = mesh.cell_data["cauchy_stress"][0]  # xx, yy, zz, xy, yz, xz
-    sigma = np.zeros((len(s), 3, 3))
-    for k, (i, j) in enumerate([(0, 0), (1, 1), (2, 2), (0, 1), (1, 2), (0, 2)]):
-        sigma[:, i, j] = sigma[:, j, i] = s[:, k]
+    sigma = state.stress()
     membrane = (np.einsum("ei,eij,ej->e", hoop, sigma, hoop)
                 - np.einsum("ei,eij,ej->e", normal, sigma, normal))
-    nodes = mesh.cells_dict.get("tetra10", tets)  # a 6-node face carries contact at edge nodes
-    touching = (mesh.point_data["contact_punch"].reshape(-1)[nodes] > 0).any(axis=1)
+    nodes = state.cells  # a 6-node face carries contact at edge nodes
+    touching = (state.mesh.point_data["contact_punch"].reshape(-1)[nodes] > 0).any(axis=1)
     return membrane[touching].min(initial=np.inf), membrane[~touching].min(initial=np.inf)
 
 
+def flattening(h):
+    """Per history row, the inward displacement of the probe `top` since the last step before the
+    plate touches (0 before it touches) [mm]."""
+    i = sphere.before_contact(h, "contact_nodes:punch")
+    rest = float(h["uy:top"][i]) if i is not None else 0.0
+    return np.where(h["contact_nodes:punch"] > 0, rest - h["uy:top"], 0.0)
+
+
 def measure(run, c1):
-    with open(os.path.join(run, "summary.json")) as f:
-        summary = json.load(f)
-    rows = read_history(run)
+    summary = runs.read_summary(run, required=True)
+    h = runs.read_history(run, required=True)
     radius, thickness = geometry(run, summary)
-    pressure = max(float(r["pressure:gas"]) for r in rows)
-    free = [r for r in rows if float(r["contact_nodes:punch"]) == 0]
-    rest = float(free[-1]["uy:top"]) if free else 0.0
-    depth = [(rest - float(r["uy:top"])) / radius if float(r["contact_nodes:punch"]) > 0
-             else 0.0 for r in rows]
-    unstable = [k for k, r in enumerate(rows) if r.get("stable", "1") in ("0", "0.0")]
+    pressure = float(max(h["pressure:gas"]))
+    depth = flattening(h) / radius
+    unstable = np.flatnonzero(h["stable"] == 0) if "stable" in h else []
     wrinkles = summary.get("wrinkles", {})
     rings = wrinkles.get("rings", [])
     largest = max(rings, key=lambda g: g.get("residual_amplitude") or 0.0) if rings else {}
@@ -159,25 +128,25 @@ def measure(run, c1):
     critical = 2.0 / 3.0 * 6.0 * c1 * thickness / radius
     return {
         "hoop_plate": plate / critical, "hoop_free": free_wall / critical,
-        "run": run, "name": os.path.basename(os.path.normpath(run)),
+        "run": run, "name": runs.run_name(run),
         "radius": radius, "thickness": thickness, "slenderness": radius / thickness,
         "pressure": pressure, "ratio": pressure / limit_pressure(c1, radius, thickness),
-        "tau": tau_of(pressure, c1, radius, thickness),
-        "completed": bool(summary.get("completed")), "depth": max(depth),
-        "unstable_depth": depth[unstable[0]] if unstable else None,
+        "tau": sphere.tau_of(pressure, c1, radius, thickness),
+        "completed": bool(summary.get("completed")), "depth": float(depth.max()),
+        "unstable_depth": float(depth[unstable[0]]) if len(unstable) else None,
         "unstable_steps": len(unstable), "wrinkled": bool(wrinkles.get("wrinkled")),
         "amplitude": (largest.get("residual_amplitude") or 0.0) / thickness,
         "count": largest.get("dominant_count"), "latitude": largest.get("latitude_deg"),
         "compressed": field.get("wrinkled", 0) / elements, "slack": field.get("slack", 0) / elements,
-        "force": 4.0 * max(float(r["force_y:punch"]) for r in rows),
+        "force": 4.0 * float(max(h["force_y:punch"])),
         "dofs": summary.get("free_dofs"), "wall_time": (summary.get("wall_time") or {}).get("total"),
         "newton": summary.get("newton_iterations"), "steps": summary.get("steps"),
     }
 
 
-def summary(runs, args):
+def summary(run_dirs, args):
     results = []
-    for run in runs:
+    for run in run_dirs:
         try:
             results.append(measure(run, args.c1))
         except (OSError, KeyError, ValueError) as error:
@@ -211,13 +180,7 @@ def summary(runs, args):
 
 
 def figures(directory, results, args):
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    import numpy as np
-
-    import study  # the deformed-surface figure of scripts/study
+    from plisse_study.figures import plt, save, surface_figure
 
     os.makedirs(directory, exist_ok=True)
     fig, ax = plt.subplots(figsize=(8.4, 4.8))
@@ -257,17 +220,13 @@ def figures(directory, results, args):
     ax.set_ylabel(r"$p / p_{max}$")
     ax.legend(fontsize=8, frameon=False, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     ax.grid(alpha=0.3, which="both")
-    fig.tight_layout()
-    fig.savefig(os.path.join(directory, "map.png"), dpi=130)
-    plt.close(fig)
+    save(fig, os.path.join(directory, "map.png"))
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     for i, m in enumerate(sorted(results, key=lambda m: (m["slenderness"], m["ratio"]))):
-        rows = read_history(m["run"])
-        free = [r for r in rows if float(r["contact_nodes:punch"]) == 0]
-        rest = float(free[-1]["uy:top"]) if free else 0.0
-        points = [((rest - float(r["uy:top"])) / m["radius"],
-                   float(r["wrinkle_amplitude"]) / m["thickness"]) for r in rows
-                  if float(r["contact_nodes:punch"]) > 0 and r["wrinkle_amplitude"] != ""]
+        h = runs.read_history(m["run"])
+        keep = (h["contact_nodes:punch"] > 0) & ~np.isnan(h["wrinkle_amplitude"])
+        points = list(zip(flattening(h)[keep] / m["radius"],
+                          h["wrinkle_amplitude"][keep] / m["thickness"]))
         if points:
             ax.plot(*zip(*points), marker="o", ms=3, lw=1, color=f"C{i % 10}",
                     ls="-" if "_" not in m["name"].split("_p-")[1] else ":",
@@ -279,16 +238,14 @@ def figures(directory, results, args):
     ax.set_yscale("log")
     ax.legend(fontsize=6, frameon=False, ncol=2)
     ax.grid(alpha=0.3, which="both")
-    fig.tight_layout()
-    fig.savefig(os.path.join(directory, "amplitude.png"), dpi=130)
-    plt.close(fig)
-    wrinkles = study.case_wrinkle_settings(CASE)
+    save(fig, os.path.join(directory, "amplitude.png"))
+    wrinkles = runs.case_wrinkle_settings(CASE)
     for m in results:
-        vtu = study.last_vtu(m["run"])
+        vtu = runs.last_vtu(m["run"])
         if vtu:
-            study.surface_figure(vtu, wrinkles, os.path.join(directory, f"surface_{m['name']}.png"),
-                                 f"R/t = {m['slenderness']:.0f}, p = {m['ratio']:.2g} p_max, "
-                                 f"d = {m['depth']:.3f} R")
+            surface_figure(vtu, wrinkles, os.path.join(directory, f"surface_{m['name']}.png"),
+                           f"R/t = {m['slenderness']:.0f}, p = {m['ratio']:.2g} p_max, "
+                           f"d = {m['depth']:.3f} R")
 
 
 def main():
@@ -311,7 +268,7 @@ def main():
     parser.add_argument("--radius", type=float, default=25.0, help="mid-surface radius [mm]")
     args = parser.parse_args()
     if args.sweep:
-        sweep(args.sweep, args)
+        run_sweep(args.sweep, args)
         return
     if not args.runs:
         parser.error("no run directories")

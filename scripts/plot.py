@@ -15,21 +15,15 @@ Reads RUN_DIR/history.csv, summary.json and the step files, and writes PNG files
 Axis labels take their units from the output reference (`plisse outputs history`).
 Exit status: 0 done, 2 RUN_DIR is not a run directory, 1 a figure could not be drawn.
 """
-import json
 import os
 import re
 import subprocess
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-from matplotlib.ticker import MaxNLocator  # noqa: E402
-
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import study  # noqa: E402  (read_history, surface_figure, case_wrinkle_settings, last_vtu)
+from plisse_study import figures, runs
+from plisse_study.figures import plt
+from matplotlib.ticker import MaxNLocator
+import numpy as np
 
 
 def fail(message, status=2):
@@ -81,9 +75,7 @@ def largest_component(h, columns):
 
 
 def save(fig, path):
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    figures.save(fig, path, dpi=110)
     print(path)
 
 
@@ -174,7 +166,7 @@ def case_wrinkle_settings(summary):
     settings = {}
     if path and os.path.isfile(path):
         try:
-            settings = study.case_wrinkle_settings(path)
+            settings = runs.case_wrinkle_settings(path)
         except Exception:  # noqa: BLE001  the case may have changed since: use the summary
             settings = {}
     table = summary.get("wrinkles") or {}
@@ -189,17 +181,17 @@ def wrinkle_maps(run, summary, out):
     if not settings.get("rings_deg"):
         return
     files = []
-    last = study.last_vtu(run)
+    last = runs.last_vtu(run)
     if last and last.endswith(".vtu"):
         files.append((last, os.path.join(out, "wrinkle_map.png"),
                       f"t = {summary.get('final_time', '?')}: normal deviation, rings"))
-    for event in (summary.get("stability") or {}).get("instabilities", []):
+    for event in runs.summary_instabilities(summary):
         vtu = os.path.join(run, event.get("file", ""))
         if vtu.endswith(".vtu") and os.path.isfile(vtu):
             files.append((vtu, os.path.join(out, f"wrinkle_map_step_{event['step']:04d}.png"),
                           f"step {event['step']} (stability lost): normal deviation, rings"))
     for vtu, path, title in files:
-        if study.surface_figure(vtu, settings, path, title):
+        if figures.surface_figure(vtu, settings, path, title):
             print(path)
 
 
@@ -209,13 +201,10 @@ def main():
     run, out, plisse = sys.argv[1:]
     if not os.path.isfile(os.path.join(run, "history.csv")):
         fail(f"{run}: not a run directory (no history.csv)")
-    h = study.read_history(run)
+    h = runs.read_history(run)
     if not h:
         fail(f"{os.path.join(run, 'history.csv')}: no converged step to plot")
-    summary = {}
-    if os.path.isfile(os.path.join(run, "summary.json")):
-        with open(os.path.join(run, "summary.json")) as f:
-            summary = json.load(f)
+    summary = runs.read_summary(run)
     os.makedirs(out, exist_ok=True)
     units = reference_units(plisse)
     forces_figure(h, units, out)

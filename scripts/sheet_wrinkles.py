@@ -26,17 +26,14 @@ The same definitions are asserted by tests/verification/wrinkling/sheet_tension_
 """
 import argparse
 import functools
-import glob
 import math
 import os
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import meshio  # noqa: E402
-import numpy as np  # noqa: E402
+from plisse_study import fits, runs
+from plisse_study.figures import plt, save
 
 CREST_FRACTION = 0.1  # crests below this fraction of the amplitude are not counted
 WRINKLED_CRESTS = 5  # a profile with at least this many crests (two waves) is wrinkled
@@ -75,10 +72,11 @@ def wavelength(y, w, found):
     return 2.0 * (zeros[-1] - zeros[0]) / (len(zeros) - 1) if len(zeros) >= 2 else 0.0
 
 
-def profile(mesh):
-    """(strain, y, w) of one VTU: the mirrored top-surface profile along x = L/2."""
-    X = mesh.points
-    u = mesh.point_data["displacement"]
+def profile(state):
+    """(strain, y, w) of one written step (runs.State): the mirrored top-surface profile along
+    x = L/2."""
+    X = state.points
+    u = state.displacement
     half_length = X[:, 0].max()
     clamp = X[:, 0] < 1e-9 * half_length
     strain = -u[clamp, 0].mean() / half_length
@@ -97,11 +95,8 @@ def profile(mesh):
 def measure(run):
     """Rows (step, strain, amplitude, crests, wavelength) and the last profile of a run."""
     rows, profiles = [], {}
-    for path in sorted(glob.glob(os.path.join(run, "step_*.vtu"))):
-        step = int(os.path.basename(path)[5:9])
-        if step == 0:  # the undeformed sheet, before the first step
-            continue
-        strain, y, w = profile(meshio.read(path))
+    for step, path in runs.written_steps(run):  # not step 0, the sheet before the first step
+        strain, y, w = profile(runs.read_state(path))
         c = crests(y, w)
         rows.append((step, strain, np.abs(w).max(), len(c), wavelength(y, w, c)))
         profiles[step] = (y, w)
@@ -125,7 +120,7 @@ def cerda_mahadevan(strain, length, thickness, poisson=0.5):
 def run_geometry(run):
     """(full length L, thickness t) of a run, from the clamp's nodes in its first VTU (an
     imperfection leaves the clamped edge where it was)."""
-    X = meshio.read(sorted(glob.glob(os.path.join(run, "step_*.vtu")))[0]).points
+    X = runs.read_state(runs.step_files(run)[0]).points
     clamp = X[:, 0] < 1e-9 * X[:, 0].max()
     return 2.0 * X[:, 0].max(), X[clamp, 2].max() - X[clamp, 2].min()
 
@@ -134,8 +129,8 @@ def surface_figure(run, rows, path, title):
     """Top view of the whole deformed sheet (the quarter mirrored twice), coloured by u_z, at the
     written step of largest centre deflection (`rows` from measure(run))."""
     step = max(rows, key=lambda r: r[2])[0]
-    mesh = meshio.read(os.path.join(run, f"step_{step:04d}.vtu"))
-    X, u = mesh.points, mesh.point_data["displacement"]
+    state = runs.read_state(dict(runs.written_steps(run))[step])
+    X, u = state.points, state.displacement
     top = X[:, 2] > 0.5 * (X[:, 2].max() + X[:, 2].min())
     half_length = X[:, 0].max()
     x, y, w = X[top, 0] + u[top, 0], X[top, 1] + u[top, 1], u[top, 2]
@@ -152,9 +147,7 @@ def surface_figure(run, rows, path, title):
     strain = [r[1] for r in rows if r[0] == step][0]
     ax.set_title(f"{title}: u_z at {100 * strain:.1f} % strain", fontsize=9)
     fig.colorbar(im, ax=ax, label="u_z [mm]", shrink=0.8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    save(fig, path, dpi=120)
 
 
 def run_label(run, profiles):
@@ -170,9 +163,7 @@ def finish(fig, ax, path, xlabel, ylabel):
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    save(fig, path, dpi=120)
 
 
 def figures(results, folder, prefix=""):
@@ -218,19 +209,9 @@ def figures(results, folder, prefix=""):
 def instability_steps(run):
     """{step: time} of every converged step (history.csv) and the steps at which log.txt reports
     a new instability ("step N: t = ...: new instability")."""
-    times = {}
-    with open(os.path.join(run, "history.csv")) as f:
-        header = f.readline().strip().split(",")
-        i_step, i_time = header.index("step"), header.index("time")
-        for line in f:
-            cells = line.strip().split(",")
-            times[int(cells[i_step])] = float(cells[i_time])
-    found = []
-    with open(os.path.join(run, "log.txt")) as f:
-        for line in f:
-            if "new instability" in line:
-                found.append(int(line.split("step ")[1].split(":")[0]))
-    return times, found
+    h = runs.read_history(run, required=True)
+    times = {int(k): float(t) for k, t in zip(h["step"], h["time"])}
+    return times, [step for step, _ in runs.log_instabilities(run)]
 
 
 def summary(results):
@@ -272,9 +253,7 @@ def summary(results):
               f"{vanish[1]},{peak:.3f}," + ",".join(lambdas) + "," + ",".join(ratios))
     for e, pts in by_strain.items():
         if len({t for t, _ in pts}) >= 2:
-            x = np.log([t for t, _ in pts])
-            y = np.log([v for _, v in pts])
-            slope = np.polyfit(x, y, 1)[0]
+            slope = fits.log_slope(pts)
             print(f"# strain {e:g}: wavelength ~ t^{slope:.3f} over {len(pts)} runs")
 
 
@@ -288,7 +267,7 @@ def main():
     args = parser.parse_args()
     results = {}
     for run in args.runs:
-        if not glob.glob(os.path.join(run, "step_*.vtu")):
+        if not runs.step_files(run):
             sys.exit(f"sheet-wrinkles: {run}: no step_*.vtu files (not a run directory?)")
         rows, profiles = measure(run)
         if not args.summary:
@@ -298,6 +277,7 @@ def main():
         summary(results)
     if args.figures:
         figures(results, args.figures, args.prefix)
+
 
 if __name__ == "__main__":
     main()

@@ -23,29 +23,20 @@ value runs a second time with its overrides added (a finer mesh), into
 report reads each run's summary.json (wrinkle table, steps, times), history.csv and last VTU
 (deformed outer surface coloured by its normal deviation from the axisymmetric mean shape).
 A run that fails (exit status 1) is reported as such with its message; bad input (2) stops.
+The runs, the readers and the surface figures are plisse_study's; the study file and the report
+are this script's.
 """
 import argparse
-import csv
-import json
 import math
 import os
 import re
-import subprocess
 import sys
-import time
-import xml.etree.ElementTree as ET
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import meshio  # noqa: E402
-from matplotlib.ticker import MaxNLocator  # noqa: E402
-import numpy as np  # noqa: E402
-import yaml  # noqa: E402
-
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-AXES = {"x": 0, "y": 1, "z": 2}
+from plisse_study import figures, runs, sweep
+from plisse_study.figures import plt
+from matplotlib.ticker import MaxNLocator
+import numpy as np
+import yaml
 
 
 def fail(message):
@@ -97,199 +88,23 @@ def shown(path):
     return path if rel.startswith("..") else rel
 
 
-def folder_name(key, value):
-    """`<leaf>=<value>`: the last part of the key without list indices, and the value with the
-    characters a file name cannot hold replaced."""
-    leaf = re.sub(r"\[\d+\]", "", key).split(".")[-1] or "value"
-    text = re.sub(r"[^A-Za-z0-9_.+-]", "_", yaml_value(value).replace(", ", ","))
-    return f"{leaf}={text}"
-
-
-def yaml_value(v):
-    return json.dumps(v) if isinstance(v, (list, dict)) else str(v).lower() if isinstance(v, bool) \
-        else str(v)
-
-
 def run_one(study, value, run_dir, reuse, extra=(), report_only=False):
-    summary = os.path.join(run_dir, "summary.json")
-    if reuse and os.path.isfile(summary):
+    if reuse and sweep.finished(run_dir):
         return {"status": "reused", "seconds": None}
     if report_only:
         return {"status": "not run", "seconds": None, "message": "not run"}
-    cmd = [os.path.join(ROOT, "build", "bin", "plisse"), "run", study["case"], "-o", run_dir,
-           "--overwrite"]
-    for o in study["set"] + [f"{study['vary']['key']}={yaml_value(value)}"] + list(extra):
-        cmd += ["--set", o]
-    print("scripts/study: " + " ".join(shown(c) if os.path.isabs(c) else c for c in cmd),
-          flush=True)
-    t0 = time.time()
-    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    seconds = time.time() - t0
-    with open(os.path.join(os.path.dirname(run_dir), os.path.basename(run_dir) + ".out"), "w") as f:
-        f.write(proc.stdout)
-    if proc.returncode == 2:
-        print(proc.stdout, file=sys.stderr)
+    transcript = os.path.join(os.path.dirname(run_dir), os.path.basename(run_dir) + ".out")
+    overrides = study["set"] + [f"{study['vary']['key']}={sweep.yaml_value(value)}"] + list(extra)
+    outcome = sweep.run_case(
+        study["case"], run_dir, overrides, transcript=transcript,
+        echo=lambda cmd: "scripts/study: " + " ".join(shown(c) if os.path.isabs(c) else c
+                                                      for c in cmd))
+    if outcome.returncode == 2:
+        with open(transcript) as f:
+            print(f.read(), file=sys.stderr)
         fail(f"plisse refused the input for {study['vary']['key']} = {value}")
-    last = [l for l in proc.stdout.splitlines() if l.strip()]
-    return {"status": "ok" if proc.returncode == 0 else "failed", "seconds": seconds,
-            "message": last[-1] if last else ""}
-
-
-def read_summary(run_dir):
-    path = os.path.join(run_dir, "summary.json")
-    if not os.path.isfile(path):
-        return {}
-    with open(path) as f:
-        return json.load(f)
-
-
-def largest_ring(summary):
-    """The ring of largest amplitude in a run's summary, or None."""
-    rings = (summary.get("wrinkles") or {}).get("rings", [])
-    return max(rings, key=lambda g: g.get("amplitude", 0.0), default=None)
-
-
-def read_history(run_dir):
-    """Column name -> values of a run's history.csv, or {} when it has no complete row."""
-    path = os.path.join(run_dir, "history.csv")
-    if not os.path.isfile(path):
-        return {}
-    with open(path) as f:
-        rows = list(csv.reader(f))
-    if len(rows) < 2:
-        return {}
-    cols = rows[0]
-    # A row of another length is one a killed run left unterminated (a run still going may be
-    # writing it): it is left out.
-    data = np.array([[float(x) if x not in ("", "nan") else np.nan for x in r]
-                     for r in rows[1:] if len(r) == len(cols)])
-    if len(data) == 0:
-        return {}
-    return {c: data[:, i] for i, c in enumerate(cols)}
-
-
-def last_vtu(run_dir):
-    pvd = os.path.join(run_dir, "solution.pvd")
-    if not os.path.isfile(pvd):
-        return None
-    files = [d.get("file") for d in ET.parse(pvd).getroot().iter("DataSet")]
-    return os.path.join(run_dir, files[-1]) if files else None
-
-
-def outer_surface(points, tets, center):
-    """Boundary faces of the tetrahedra whose outward normal points away from `center`."""
-    faces = np.concatenate([tets[:, [0, 2, 1]], tets[:, [0, 1, 3]], tets[:, [1, 2, 3]],
-                            tets[:, [0, 3, 2]]])
-    key = np.sort(faces, axis=1)
-    _, inverse, counts = np.unique(key, axis=0, return_inverse=True, return_counts=True)
-    boundary = faces[counts[inverse.ravel()] == 1]
-    p = points[boundary]
-    n = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
-    r = p.mean(axis=1) - center
-    cosine = np.einsum("ij,ij->i", n, r) / (np.linalg.norm(n, axis=1) * np.linalg.norm(r, axis=1)
-                                            + 1e-300)
-    return boundary[cosine > 0.3]
-
-
-def normal_deviation(X, x, axis, center):
-    """Deviation of the deformed points x from the mean deformed shape of their reference latitude,
-    along the mean shape's normal (bins of 0.5 degree of reference latitude)."""
-    a = np.zeros(3)
-    a[axis] = 1.0
-
-    def cyl(p):
-        r = p - center
-        h = r @ a
-        rho = np.linalg.norm(r - np.outer(h, a), axis=1)
-        return rho, h
-
-    rho0, h0 = cyl(X)
-    lat = np.degrees(np.arctan2(h0, rho0))
-    rho, h = cyl(x)
-    bins = np.round(lat / 0.5).astype(int)
-    uniq, inv = np.unique(bins, return_inverse=True)
-    inv = inv.ravel()
-    mean_rho = np.bincount(inv, rho) / np.bincount(inv)
-    mean_h = np.bincount(inv, h) / np.bincount(inv)
-    # Meridian tangent of the mean curve by differences over latitude; the normal is its rotation.
-    t_rho = np.gradient(mean_rho) if len(uniq) > 1 else np.zeros_like(mean_rho)
-    t_h = np.gradient(mean_h) if len(uniq) > 1 else np.ones_like(mean_h)
-    norm = np.hypot(t_rho, t_h) + 1e-300
-    n_rho, n_h = t_h / norm, -t_rho / norm
-    return (rho - mean_rho[inv]) * n_rho[inv] + (h - mean_h[inv]) * n_h[inv]
-
-
-def surface_figure(vtu, settings, path, title):
-    """The deformed measured surface of `vtu` coloured by its normal deviation from the mean
-    (axisymmetric) shape at the same reference latitude, with the rings of settings["rings_deg"]
-    drawn on the mean shape. `settings`: the case's output.wrinkles (axis, center, rings_deg).
-    False when the file has no tetrahedra or displacement."""
-    mesh = meshio.read(vtu)
-    X = mesh.points
-    tets = mesh.cells_dict.get("tetra")
-    if tets is None and "tetra10" in mesh.cells_dict:
-        tets = mesh.cells_dict["tetra10"][:, :4]
-    if tets is None or "displacement" not in mesh.point_data:
-        return False
-    x = X + mesh.point_data["displacement"]
-    axis = AXES.get(settings.get("axis", "y"), 1)
-    center = np.array(settings.get("center", [0.0, 0.0, 0.0]), dtype=float)
-    tris = outer_surface(X, tets, center)
-    if len(tris) == 0:
-        return False
-    used = np.unique(tris)
-    dev = np.zeros(len(X))
-    dev[used] = normal_deviation(X[used], x[used], axis, center)
-    face_dev = dev[tris].mean(axis=1)
-    limit = max(np.percentile(np.abs(face_dev), 99), 1e-9)
-    fig = plt.figure(figsize=(6.4, 5.2))
-    ax = fig.add_subplot(projection="3d")
-    ax.computed_zorder = False  # the rings are drawn over the surface
-    order = [(axis + 1) % 3, (axis + 2) % 3, axis]  # the rings' axis vertical
-    surf = ax.plot_trisurf(x[:, order[0]], x[:, order[1]], x[:, order[2]], triangles=tris,
-                           cmap="coolwarm", linewidth=0, antialiased=False, shade=False)
-    surf.set_array(face_dev)
-    surf.set_clim(-limit, limit)
-    fig.colorbar(surf, ax=ax, shrink=0.7, label="normal deviation [mm]")
-    # The rings, on the deformed mean shape: the mean distance from the axis and height of the
-    # surface nodes near each ring's reference latitude (within a node spacing), drawn over the
-    # modelled sector's azimuths.
-    a = np.zeros(3)
-    a[axis] = 1.0
-    r0 = X[used] - center
-    h0 = r0 @ a
-    rho0 = np.linalg.norm(r0 - np.outer(h0, a), axis=1)
-    latitude = np.degrees(np.arctan2(h0, rho0))
-    e_u, e_v = np.eye(3)[order[0]], np.eye(3)[order[1]]
-    azimuth = np.arctan2(r0 @ e_v, r0 @ e_u)
-    edges = np.concatenate([tris[:, [0, 1]], tris[:, [1, 2]]])
-    spacing = np.degrees(np.median(np.linalg.norm(X[edges[:, 0]] - X[edges[:, 1]], axis=1))
-                         / max(np.median(np.linalg.norm(r0, axis=1)), 1e-12))
-    xc = x[used] - center
-    hc = xc @ a
-    rhoc = np.linalg.norm(xc - np.outer(hc, a), axis=1)
-    for ring in settings.get("rings_deg") or []:
-        near = np.abs(latitude - float(ring)) < max(0.5, spacing)
-        if not near.any():
-            continue
-        phi = np.linspace(azimuth[near].min(), azimuth[near].max(), 200)
-        rho, h = rhoc[near].mean(), hc[near].mean()
-        p = center + rho * (np.outer(np.cos(phi), e_u) + np.outer(np.sin(phi), e_v)) + h * a
-        ax.plot(p[:, order[0]], p[:, order[1]], p[:, order[2]], "k-", linewidth=1.2, zorder=10)
-    ax.set_box_aspect(np.ptp(x[used][:, order], axis=0) + 1e-9)
-    ax.view_init(elev=35, azim=-55)
-    ax.set_axis_off()
-    ax.set_title(title, fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return True
-
-
-def case_wrinkle_settings(case_path):
-    with open(case_path) as f:
-        c = yaml.safe_load(f)
-    return ((c or {}).get("output") or {}).get("wrinkles") or {}
+    return {"status": "ok" if outcome.returncode == 0 else "failed", "seconds": outcome.seconds,
+            "message": outcome.message}
 
 
 def fmt(v, spec="{:.3g}"):
@@ -311,7 +126,7 @@ def fine_columns(result, label):
     s = fine["summary"]
     if not s:
         return [fine["info"].get("message") or "failed", "–"]
-    best = largest_ring(s)
+    best = runs.largest_ring(s)
     amplitude = fmt((s.get("wrinkles") or {}).get("max_amplitude"))
     if not s.get("completed"):
         amplitude += f" (stopped at t = {fmt(s.get('final_time'), '{:.4g}')})"
@@ -336,32 +151,32 @@ def main():
     label = study["vary"].get("label", key)
     fig_dir = os.path.join(args.docs, name)
     os.makedirs(fig_dir, exist_ok=True)
-    wrinkle_settings = case_wrinkle_settings(study["case"])
+    wrinkle_settings = runs.case_wrinkle_settings(study["case"])
     results = []
     for value in study["vary"]["values"]:
-        run_dir = os.path.join(args.runs, name, folder_name(key, value))
+        run_dir = os.path.join(args.runs, name, sweep.folder_name(key, value))
         os.makedirs(os.path.dirname(run_dir), exist_ok=True)
         info = run_one(study, value, run_dir, args.reuse or args.report_only,
                        report_only=args.report_only)
-        summary = read_summary(run_dir)
+        summary = runs.read_summary(run_dir)
         fine = None
         if study.get("convergence"):
             fine_dir = run_dir + "+fine"
             fine_info = run_one(study, value, fine_dir, args.reuse or args.report_only,
                                 study["convergence"]["set"], args.report_only)
-            fine = {"info": fine_info, "summary": read_summary(fine_dir), "figure": None}
-            fine_vtu = last_vtu(fine_dir)
+            fine = {"info": fine_info, "summary": runs.read_summary(fine_dir), "figure": None}
+            fine_vtu = runs.last_vtu(fine_dir)
             if fine_vtu:
-                figure_fine = f"{name}/surface_{folder_name(key, value).split('=', 1)[1]}_fine.png"
-                if surface_figure(fine_vtu, wrinkle_settings, os.path.join(args.docs, figure_fine),
+                figure_fine = f"{name}/surface_{sweep.folder_name(key, value).split('=', 1)[1]}_fine.png"
+                if figures.surface_figure(fine_vtu, wrinkle_settings, os.path.join(args.docs, figure_fine),
                                   f"{label} = {value}, {study['convergence'].get('label', 'finer mesh')}"):
                     fine["figure"] = figure_fine
-        history = read_history(run_dir)
+        history = runs.read_history(run_dir)
         figure = None
-        vtu = last_vtu(run_dir)
+        vtu = runs.last_vtu(run_dir)
         if vtu:
-            figure = f"{name}/surface_{folder_name(key, value).split('=', 1)[1]}.png"
-            if not surface_figure(vtu, wrinkle_settings, os.path.join(args.docs, figure),
+            figure = f"{name}/surface_{sweep.folder_name(key, value).split('=', 1)[1]}.png"
+            if not figures.surface_figure(vtu, wrinkle_settings, os.path.join(args.docs, figure),
                                   f"{label} = {value}"):
                 figure = None
         results.append({"value": value, "info": info, "summary": summary, "history": history,
@@ -373,7 +188,7 @@ def main():
     amp = [((r["summary"].get("wrinkles") or {}).get("max_amplitude", np.nan)) for r in results]
     count = []
     for r in results:
-        best = largest_ring(r["summary"])
+        best = runs.largest_ring(r["summary"])
         count.append(best["count"] if best else np.nan)
     fig, ax1 = plt.subplots(figsize=(6, 3.6))
     pos = xs if numeric else list(range(len(xs)))
@@ -388,7 +203,7 @@ def main():
         fine = [(r["fine"] or {}).get("summary") or {} for r in results]
         ax1.plot(pos, [(f.get("wrinkles") or {}).get("max_amplitude", np.nan) for f in fine], "o:",
                  color="tab:red", markerfacecolor="none", label="max amplitude, finer mesh")
-        ax2.plot(pos, [(largest_ring(f) or {}).get("count", np.nan) for f in fine], "s:",
+        ax2.plot(pos, [(runs.largest_ring(f) or {}).get("count", np.nan) for f in fine], "s:",
                  color="tab:blue", markerfacecolor="none", label="count, finer mesh")
         ax1.legend(loc="best", fontsize=8, handles=ax1.get_lines() + ax2.get_lines())
     ax2.set_ylabel("wrinkle count (ring of max amplitude)", color="tab:blue")
@@ -427,7 +242,7 @@ def main():
     for r, a, m in zip(results, amp, count):
         s, h = r["summary"], r["history"]
         w = s.get("wrinkles") or {}
-        best = largest_ring(s)
+        best = runs.largest_ring(s)
         if s.get("completed"):
             outcome = "completed"
         elif s:
@@ -436,15 +251,8 @@ def main():
         else:
             outcome = "not run" if r["info"]["status"] == "not run" else \
                 "failed: " + r["info"].get("message", "")
-        # Unstable: more negative pivots than a stable state has (a state with the expected count
-        # and a null pivot is singular, not unstable; the log says SINGULAR).
-        stable = h.get("stable")
-        first_unstable = None
-        if "negative_pivots" in h and "expected_negative_pivots" in h and len(h["time"]):
-            stable = (h["negative_pivots"] <= h["expected_negative_pivots"]).astype(float)
-        if stable is not None and len(stable):
-            bad = np.where(stable < 0.5)[0]
-            first_unstable = h["time"][bad[0]] if len(bad) else None
+        stable = runs.stable_column(h)
+        first_unstable = runs.first_unstable_time(h)
         lines.append("| " + " | ".join([
             str(r["value"]), outcome.replace("|", "/"), fmt(s.get("steps")),
             fmt(s.get("newton_iterations")), fmt(s.get("free_dofs")),
