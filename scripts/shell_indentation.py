@@ -28,16 +28,18 @@ and surface.png from the runs of the most frequent R/t, and thickness.png (the d
 theory against t/R) from runs at several R/t. The same definitions are asserted by
 tests/verification/indentation/shell_indentation_slow_test.cpp.
 """
-import argparse
-import csv
 import math
 import os
-import subprocess
 import sys
+
+import numpy as np
+
+from plisse_study import runs, sphere, sweep
+from plisse_study.sphere import inflated_pole, pressure_of, tau_of
 
 FIT_DEPTH = 0.2  # fit over w0 <= FIT_DEPTH * t
 SYMMETRY_FACTOR = 4.0  # octant: a quarter of the azimuth
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = sweep.ROOT
 CASE = os.path.join(ROOT, "validation", "pressurised-shell-indentation.yaml")
 
 
@@ -56,63 +58,14 @@ def theory(tau, c1, radius, thickness):
     return k0 * math.pi / 2.0 * s / math.atan(math.sqrt(1.0 / tau**2 - 1.0))
 
 
-def tau_of(pressure, c1, radius, thickness):
-    return 3.0 * pressure * radius**2 / (4.0 * 6.0 * c1 * thickness**2)
-
-
-def pressure_of(tau, c1, radius, thickness):
-    return tau * 4.0 * 6.0 * c1 * thickness**2 / (3.0 * radius**2)
-
-
-def inflated_stretch(pressure, c1, radius, thickness):
-    """lambda with p = (4 c1 t / R)(1/lambda - 1/lambda^7), below the limit point (bisection)."""
-    f = lambda s: 4.0 * c1 * thickness / radius * (1.0 / s - s**-7) - pressure
-    lo, hi = 1.0, 7.0 ** (1.0 / 6.0)
-    if f(hi) < 0.0:
-        raise SystemExit("pressure above the sphere's limit point")
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if f(mid) < 0.0 else (lo, mid)
-    return 0.5 * (lo + hi)
-
-
-def read_history(run):
-    with open(os.path.join(run, "history.csv")) as f:
-        rows = list(csv.DictReader(f))
-    if not rows:
-        raise SystemExit(f"{run}: history.csv has no steps")
-    return rows
-
-
-def inflated_pole(run, rows):
-    """uy:mid of the last step before the indenter touches: the inflated state the indentation
-    w0 is measured from."""
-    free = [r for r in rows if float(r["contact_nodes:indenter"]) == 0]
-    if not free or len(free) == len(rows):
-        raise SystemExit(f"{run}: the indenter never touched (or touched from the start)")
-    return float(free[-1]["uy:mid"])
-
-
-def geometry(run):
-    """(mid-surface radius, wall thickness) of the run's shell, from its first step file."""
-    import meshio
-    import numpy as np
-
-    files = step_files(run)
-    if not files:
-        raise SystemExit(f"{run}: no step files")
-    norm = np.linalg.norm(meshio.read(files[0]).points, axis=1)
-    return 0.5 * (norm.max() + norm.min()), norm.max() - norm.min()
-
-
 def measure(run, c1):
-    radius, thickness = geometry(run)
-    rows = read_history(run)
-    pressure = float(rows[-1]["pressure:gas"])
-    touching = [r for r in rows if float(r["contact_nodes:indenter"]) > 0]
-    rest = inflated_pole(run, rows)
-    points = [(rest - float(r["uy:mid"]), SYMMETRY_FACTOR * float(r["force_y:indenter"]))
-              for r in touching]
+    radius, thickness = sphere.shell_geometry(run)
+    h = sphere.indented_history(run)
+    pressure = float(h["pressure:gas"][-1])
+    touching = h["contact_nodes:indenter"] > 0
+    rest = inflated_pole(run, h)
+    points = [(rest - float(u), SYMMETRY_FACTOR * float(f))
+              for u, f in zip(h["uy:mid"][touching], h["force_y:indenter"][touching])]
     fit = [(w, f) for w, f in points if 0.0 < w <= FIT_DEPTH * thickness]
     if len(fit) < 3:
         raise SystemExit(f"{run}: fewer than 3 steps with 0 < w0 <= {FIT_DEPTH} t")
@@ -132,38 +85,32 @@ def measure(run, c1):
             "k0": theory(0.0, c1, radius, thickness)}
 
 
-def summary(runs, args):
+def summary(run_dirs, args):
     print(f"{'run':<24} {'R/t':>5} {'p [MPa]':>10} {'tau':>6} {'k [N/mm]':>10} {'theory':>10} "
           f"{'k/k_th':>7} {'k/k0':>7} {'fit':>4}")
-    results = [measure(run, args.c1) for run in runs]
+    results = [measure(run, args.c1) for run in run_dirs]
     for m in sorted(results, key=lambda m: (m["radius"] / m["thickness"], m["tau"])):
-        print(f"{os.path.basename(os.path.normpath(m['run'])):<24} "
+        print(f"{runs.run_name(m['run']):<24} "
               f"{m['radius'] / m['thickness']:5.0f} {m['pressure']:10.3e} "
               f"{m['tau']:6.2f} {m['k']:10.5f} {m['theory']:10.5f} "
               f"{m['k'] / m['theory']:7.4f} {m['k'] / m['k0']:7.3f} {m['n_fit']:4d}")
     return results
 
 
-def sweep(directory, args):
-    os.makedirs(directory, exist_ok=True)
-    plisse = os.path.join(ROOT, "build", "bin", "plisse")
-    for tau in (float(t) for t in args.taus.split(",")):
-        p = pressure_of(tau, args.c1, args.radius, args.thickness)
-        lam = inflated_stretch(p, args.c1, args.radius, args.thickness)
-        pole = lam * args.radius + 0.5 * args.thickness / lam**2
-        centre = pole + 0.05 + 1.0  # 0.05 mm above the pole; the indenter's radius is 1 mm
-        run = os.path.join(directory, f"tau-{tau:g}")
-        r, t = args.radius, args.thickness
-        command = [plisse, "run", CASE, "-o", run, "--overwrite", "--set", f"loads[0].value={p:.6e}",
-                   "--set", f"dies[0].point=[0,{centre:.6f},0]",
-                   "--set", f"material.c1={args.c1:g}",
-                   "--set", f"mesh.inner_radius={r - 0.5 * t:g}", "--set", f"mesh.thickness={t:g}",
-                   "--set", f"probes[0].point=[0,{r:g},0]",
-                   "--set", f"probes[1].point=[0,{r - 0.5 * t:g},0]"]
-        for s in args.set or []:
-            command += ["--set", s]
-        print(" ".join(command), flush=True)
-        subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
+def sweep_points(args):
+    """(name, overrides) of each tau of --taus: the pressure, the indenter 0.05 mm above the
+    inflated outer pole (its radius is 1 mm), the shell and its probes."""
+    points = []
+    r, t = args.radius, args.thickness
+    for tau in (float(x) for x in args.taus.split(",")):
+        p = pressure_of(tau, args.c1, r, t)
+        pole = sphere.outer_pole(sphere.inflated_stretch(p, args.c1, r, t), r, t)
+        points.append((f"tau-{tau:g}", [
+            f"loads[0].value={p:.6e}", f"dies[0].point=[0,{pole + 0.05 + 1.0:.6f},0]",
+            f"material.c1={args.c1:g}", f"mesh.inner_radius={r - 0.5 * t:g}",
+            f"mesh.thickness={t:g}", f"probes[0].point=[0,{r:g},0]",
+            f"probes[1].point=[0,{r - 0.5 * t:g},0]"] + (args.set or [])))
+    return points
 
 
 def slenderness(m):
@@ -175,10 +122,7 @@ def figures(directory, results, args):
     most frequent R/t; thickness.png for the runs at every R/t."""
     import collections
 
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from plisse_study.figures import plt, save
 
     os.makedirs(directory, exist_ok=True)
     main_ratio = collections.Counter(slenderness(m) for m in results).most_common(1)[0][0]
@@ -195,9 +139,7 @@ def figures(directory, results, args):
     ax.set_ylim(0, None)
     ax.legend(loc="upper left", frameon=False)
     ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(os.path.join(directory, "stiffness.png"), dpi=130)
-    plt.close(fig)
+    save(fig, os.path.join(directory, "stiffness.png"))
 
     fig, ax = plt.subplots(figsize=(5.5, 4))
     for i, m in enumerate(main):
@@ -212,9 +154,7 @@ def figures(directory, results, args):
     ax.set_title(f"R/t = {main_ratio}: plisse (dots), k w0 of shell theory (lines)", fontsize=9)
     ax.legend(frameon=False, fontsize=8)
     ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(os.path.join(directory, "force-indentation.png"), dpi=130)
-    plt.close(fig)
+    save(fig, os.path.join(directory, "force-indentation.png"))
 
     fig, ax = plt.subplots(figsize=(5.5, 4))
     for i, tau in enumerate(sorted({round(m["tau"], 6) for m in results})):
@@ -232,9 +172,7 @@ def figures(directory, results, args):
     ax.set_title("solid wall against shell theory, R/t = 400, 200, 100", fontsize=9)
     ax.legend(frameon=False, fontsize=8)
     ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(os.path.join(directory, "thickness.png"), dpi=130)
-    plt.close(fig)
+    save(fig, os.path.join(directory, "thickness.png"))
     return main
 
 
@@ -256,37 +194,8 @@ def theory_profile(rho, tau):
     return [transform(x) / centre for x in rho]
 
 
-def step_files(run):
-    import glob
-
-    return sorted(glob.glob(os.path.join(run, "step_*.vtu")))
-
-
-def mid_surface_deflection(run, radius, step_file):
-    """(arc length from the pole, inward normal displacement since the inflated state) of the
-    mid-surface nodes; the inflated state is the last written step before contact."""
-    import meshio
-    import numpy as np
-
-    rows = read_history(run)
-    free = {int(r["step"]) for r in rows if float(r["contact_nodes:indenter"]) == 0}
-    files = step_files(run)
-    rest = [f for f in files if int(os.path.basename(f)[5:9]) in free][-1]
-    a, b = meshio.read(rest), meshio.read(step_file)
-    x = a.points
-    norm = np.linalg.norm(x, axis=1)
-    on_mid = np.abs(norm - radius) < 1e-6 * radius
-    normal = x[on_mid] / norm[on_mid, None]
-    du = b.point_data["displacement"][on_mid] - a.point_data["displacement"][on_mid]
-    w = -(du * normal).sum(axis=1)
-    arc = radius * np.arccos(np.clip(normal[:, 1], -1.0, 1.0))
-    order = np.argsort(arc)
-    return arc[order], w[order], x[on_mid][order]
-
-
 def profile_figure(directory, results):
-    import matplotlib.pyplot as plt
-    import numpy as np
+    from plisse_study.figures import plt, save
 
     fig, ax = plt.subplots(figsize=(5.5, 4))
     rho = np.linspace(0.0, 6.0, 61)
@@ -295,8 +204,8 @@ def profile_figure(directory, results):
     chosen = [ordered[i] for i in sorted({0, len(ordered) // 2, len(ordered) - 1})]
     for i, m in enumerate(chosen):
         lb = bending_length(m["radius"], m["thickness"])
-        files = step_files(m["run"])
-        arc, w, _ = mid_surface_deflection(m["run"], m["radius"], files[-1])
+        files = runs.step_files(m["run"])
+        arc, w, _ = sphere.mid_surface_deflection(m["run"], m["radius"], files[-1])
         centre = w[0]
         ax.plot(arc / lb, w / centre, ".", ms=2, color=f"C{i}")
         ax.plot(rho, theory_profile(rho, m["tau"]), "-", color=f"C{i}", lw=1,
@@ -307,67 +216,37 @@ def profile_figure(directory, results):
     ax.set_title("mid-surface deflection: plisse (dots), shell theory (lines)", fontsize=9)
     ax.axhline(0.0, color="k", lw=0.5)
     ax.legend(frameon=False, fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(directory, "profiles.png"), dpi=130)
-    plt.close(fig)
+    save(fig, os.path.join(directory, "profiles.png"))
 
 
 def surface_figure(directory, results):
     """Top view of the dimple (outer surface about the pole), coloured by the inward normal
     displacement since the inflated state, for the lowest and the highest tau."""
-    import matplotlib.pyplot as plt
-    import matplotlib.tri as mtri
-    import meshio
-    import numpy as np
+    from plisse_study.figures import disc_map, mirrored_quarter, plt, save
 
     chosen = sorted(results, key=lambda m: m["tau"])
     chosen = [chosen[0], chosen[-1]] if len(chosen) > 1 else chosen
     fig, axes = plt.subplots(1, len(chosen), figsize=(4.6 * len(chosen), 4.2), squeeze=False)
     for ax, m in zip(axes[0], chosen):
         lb = bending_length(m["radius"], m["thickness"])
-        files = step_files(m["run"])
-        arc, w, x = mid_surface_deflection(m["run"], m["radius"], files[-1])
-        # Mirror the octant's quarter disc into the full disc (x -> -x, z -> -z).
-        px = np.concatenate([x[:, 0], -x[:, 0], x[:, 0], -x[:, 0]]) / lb
-        pz = np.concatenate([x[:, 2], x[:, 2], -x[:, 2], -x[:, 2]]) / lb
-        pw = np.concatenate([w, w, w, w]) / w[0]
-        keep = np.hypot(px, pz) < 5.0
-        points = np.unique(np.round(np.c_[px[keep], pz[keep], pw[keep]], 9), axis=0)
-        tri = mtri.Triangulation(points[:, 0], points[:, 1])
-        c = ax.tricontourf(tri, points[:, 2], levels=np.linspace(-0.1, 1.0, 23), cmap="viridis",
-                           extend="both")
+        files = runs.step_files(m["run"])
+        arc, w, x = sphere.mid_surface_deflection(m["run"], m["radius"], files[-1])
+        near = np.hypot(x[:, 0] / lb, x[:, 2] / lb) < 5.0
+        points = mirrored_quarter(x[near, 0] / lb, x[near, 2] / lb, w[near] / w[0])
+        c = disc_map(ax, points, np.linspace(-0.1, 1.0, 23), "viridis")
         ax.set_aspect("equal")
         ax.set_title(rf"$\tau$ = {m['tau']:.1f},  $w_0$ = {w[0]:.3f} mm", fontsize=9)
         ax.set_xlabel(r"$x / \ell_b$")
         ax.set_ylabel(r"$z / \ell_b$")
         fig.colorbar(c, ax=ax, label=r"$w / w_0$ (inward normal displacement)", shrink=0.85)
-    fig.tight_layout()
-    fig.savefig(os.path.join(directory, "surface.png"), dpi=130)
-    plt.close(fig)
-
-
-def sweep_parser(doc, taus, radius, set_example):
-    """The options of the indented-shell scripts: runs, --summary, --sweep with --taus and --set,
-    --figures, and the shell's c1, mid-surface radius and wall thickness."""
-    parser = argparse.ArgumentParser(description=doc.split("\n")[0])
-    parser.add_argument("runs", nargs="*")
-    parser.add_argument("--summary", action="store_true")
-    parser.add_argument("--sweep", metavar="DIR")
-    parser.add_argument("--taus", default=taus)
-    parser.add_argument("--set", action="append", metavar="KEY=VALUE",
-                        help=f"passed on to plisse run (e.g. {set_example})")
-    parser.add_argument("--figures", metavar="DIR")
-    parser.add_argument("--c1", type=float, default=1.0)
-    parser.add_argument("--radius", type=float, default=radius, help="mid-surface radius [mm]")
-    parser.add_argument("--thickness", type=float, default=1.0)
-    return parser
+    save(fig, os.path.join(directory, "surface.png"))
 
 
 def main():
-    parser = sweep_parser(__doc__, "0,1,2,4,8", 200.0, "mesh.element_size=5")
+    parser = sphere.indentation_parser(__doc__, "0,1,2,4,8", 200.0, "mesh.element_size=5")
     args = parser.parse_args()
     if args.sweep:
-        sweep(args.sweep, args)
+        sweep.sweep(CASE, args.sweep, sweep_points(args), check=True)
         return
     if not args.runs:
         parser.error("no run directories")

@@ -25,17 +25,16 @@ touches), and
 The octant (mirrors x = 0, z = 0) holds only even m. --summary also fits the exponents of
 w0_c and m against tau over the runs given (theory: 1 and 1/2).
 """
-import csv
-import json
 import math
 import os
-import subprocess
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import shell_indentation as si  # noqa: E402  (pressure_of, inflated_stretch, geometry, ...)
+import numpy as np
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from plisse_study import fits, runs, sphere, sweep
+from plisse_study.sphere import inflated_pole
+
+ROOT = sweep.ROOT
 CASE = os.path.join(ROOT, "validation", "pressurised-shell-wrinkles.yaml")
 RING_RADII = (0.5, 0.75, 1.0, 1.25, 1.5, 2.0)  # rings at these multiples of l_p from the axis
 DEPTH = 6.0  # default indenter travel in units of p R^2 / Y (--depth)
@@ -46,57 +45,47 @@ CAP = 2.0  # refined cap radius / l_p
 def units(pressure, c1, radius, thickness):
     """(tau, l_p, p R^2 / Y)."""
     y = 6.0 * c1 * thickness
-    return (si.tau_of(pressure, c1, radius, thickness), radius * math.sqrt(pressure * radius / y),
+    return (sphere.tau_of(pressure, c1, radius, thickness), radius * math.sqrt(pressure * radius / y),
             pressure * radius**2 / y)
 
 
-def read_summary(run):
-    with open(os.path.join(run, "summary.json")) as f:
-        return json.load(f)
-
-
-def bracket(rows, index, depth):
-    """(w0 of the step before, w0 of the step) around the row `index`."""
-    return (depth(rows[index - 1]) if index > 0 else 0.0, depth(rows[index]))
-
-
 def measure(run, c1):
-    radius, thickness = si.geometry(run)
-    rows = si.read_history(run)
-    pressure = float(rows[-1]["pressure:gas"])
+    radius, thickness = sphere.shell_geometry(run)
+    h = sphere.indented_history(run)
+    pressure = float(h["pressure:gas"][-1])
     tau, lp, unit = units(pressure, c1, radius, thickness)
-    rest = si.inflated_pole(run, rows)
-    depth = lambda r: rest - float(r["uy:mid"])
+    depth = inflated_pole(run, h) - h["uy:mid"]
+    touching = h["contact_nodes:indenter"] > 0
     result = {"run": run, "radius": radius, "thickness": thickness, "pressure": pressure,
               "tau": tau, "lp": lp, "unit": unit,
-              "force": [(depth(r), 4.0 * float(r["force_y:indenter"])) for r in rows
-                        if float(r["contact_nodes:indenter"]) > 0]}
-    compressed = [i for i, r in enumerate(rows) if float(r["wrinkled_fraction"]) > 0.0]
-    result["compression"] = bracket(rows, compressed[0], depth) if compressed else None
-    events = read_summary(run).get("stability", {}).get("instabilities", [])
+              "force": [(float(w), 4.0 * float(f)) for w, f in
+                        zip(depth[touching], h["force_y:indenter"][touching])]}
+    compressed = np.flatnonzero(h["wrinkled_fraction"] > 0.0)
+    result["compression"] = fits.bracket(depth, compressed[0]) if len(compressed) else None
+    events = runs.summary_instabilities(runs.read_summary(run, required=True))
     first = events[0]["step"] if events else None
     result["mode_count"] = mode_count(os.path.join(run, events[0]["file"]), lp) if events else 0
-    shown = [i for i, r in enumerate(rows) if int(r["step"]) == first
-             or float(r["wrinkle_amplitude"]) > 0.1 * thickness]
-    result["onset"] = bracket(rows, shown[0], depth) if shown else None
-    counted = [r for r in rows[shown[0]:] if int(float(r["wrinkle_count"])) > 0] if shown else []
-    result["count"] = int(float(counted[0]["wrinkle_count"])) if counted else 0
-    result["ring"] = wrinkled_ring(run, int(counted[0]["step"]), radius) if counted else None
-    result["last_count"] = int(float(rows[-1]["wrinkle_count"]))
-    result["last_w0"] = depth(rows[-1])
+    shown = np.flatnonzero(((h["step"] == first) if first is not None else False)
+                           | (h["wrinkle_amplitude"] > 0.1 * thickness))
+    result["onset"] = fits.bracket(depth, shown[0]) if len(shown) else None
+    counts = h["wrinkle_count"].astype(int)
+    counted = [k for k in range(shown[0], len(counts)) if counts[k] > 0] if len(shown) else []
+    result["count"] = int(counts[counted[0]]) if counted else 0
+    result["ring"] = wrinkled_ring(run, int(h["step"][counted[0]]), radius) if counted else None
+    result["last_count"] = int(counts[-1])
+    result["last_w0"] = float(depth[-1])
     return result
 
 
 def wrinkled_ring(run, step, radius):
     """Distance from the axis of the ring with the largest wrinkle amplitude at `step` [mm]."""
     best = (0.0, None)
-    with open(os.path.join(run, "wrinkle_spectrum.csv")) as f:
-        for row in csv.DictReader(f):
-            if int(row["step"]) == step and row["in_band"] == "1":
-                latitude = float(row["latitude_deg"])
-                amplitude = float(row["amplitude"])
-                if amplitude > best[0]:
-                    best = (amplitude, radius * math.cos(math.radians(latitude)))
+    for row in runs.read_spectrum(run):
+        if int(row["step"]) == step and row["in_band"] == "1":
+            latitude = float(row["latitude_deg"])
+            amplitude = float(row["amplitude"])
+            if amplitude > best[0]:
+                best = (amplitude, radius * math.cos(math.radians(latitude)))
     return best[1]
 
 
@@ -104,10 +93,7 @@ def mode_count(step_file, lp):
     """Full-circle count of the critical mode (`mode_1` of the step file at the instability): the
     even harmonic cos(m theta) with the largest amplitude of the mode's normal component on the
     outer nodes of the ring 0.5 ... 2 l_p from the axis where it is largest."""
-    import meshio
-    import numpy as np
-
-    mesh = meshio.read(step_file)
+    mesh = runs.read_state(step_file).mesh
     x = mesh.points
     norm = np.linalg.norm(x, axis=1)
     normal_part = (mesh.point_data["mode_1"] * x).sum(axis=1) / norm
@@ -127,21 +113,11 @@ def mode_count(step_file, lp):
     return best[1]
 
 
-def exponent(points):
-    """Least-squares slope of log y against log x."""
-    lx = [math.log(x) for x, _ in points]
-    ly = [math.log(y) for _, y in points]
-    mx, my = sum(lx) / len(lx), sum(ly) / len(ly)
-    return (sum((a - mx) * (b - my) for a, b in zip(lx, ly)) /
-            sum((a - mx) ** 2 for a in lx))
+middle = fits.middle
 
 
-def middle(pair):
-    return 0.5 * (pair[0] + pair[1])
-
-
-def summary(runs, args):
-    results = sorted((measure(run, args.c1) for run in runs), key=lambda m: m["tau"])
+def summary(run_dirs, args):
+    results = sorted((measure(run, args.c1) for run in run_dirs), key=lambda m: m["tau"])
     print(f"{'run':<14} {'R/t':>5} {'tau':>6} {'l_p':>7} {'pR2/Y':>7} "
           f"{'compression w0/(pR2/Y)':>23} {'wrinkling w0/(pR2/Y)':>21} {'mode m':>6} {'m':>3} "
           f"{'m/tau^.5':>8} {'ring/l_p':>8} {'last m':>6} {'at w0/(pR2/Y)':>13}")
@@ -151,7 +127,7 @@ def summary(runs, args):
         b = m["onset"]
         fmt = lambda pair: f"{pair[0] / unit:9.2f} - {pair[1] / unit:5.2f}" if pair else "none"
         ring = f"{m['ring'] / m['lp']:8.2f}" if m["ring"] else f"{'-':>8}"
-        print(f"{os.path.basename(os.path.normpath(m['run'])):<14} "
+        print(f"{runs.run_name(m['run']):<14} "
               f"{m['radius'] / m['thickness']:5.0f} {m['tau']:6.2f} {m['lp']:7.1f} {unit:7.3f} "
               f"{fmt(c):>23} {fmt(b):>21} {m['mode_count']:6d} {m['count']:3d} "
               f"{m['count'] / math.sqrt(m['tau']):8.2f} {ring} {m['last_count']:6d} "
@@ -160,55 +136,47 @@ def summary(runs, args):
     onset = [(m["tau"], middle(m["onset"])) for m in results if m["onset"]]
     counts = [(m["tau"], m["count"]) for m in results if m["count"] > 0]
     if len(compression) > 1:
-        print(f"exponent of tau in the compression onset: {exponent(compression):.3f} "
+        print(f"exponent of tau in the compression onset: {fits.log_slope(compression):.3f} "
               f"(theory 1: w0 = C p R^2 / Y)")
     if len(onset) > 1:
-        print(f"exponent of tau in the wrinkles' onset: {exponent(onset):.3f} "
+        print(f"exponent of tau in the wrinkles' onset: {fits.log_slope(onset):.3f} "
               f"(tends to 1 as bending fades)")
     if len(counts) > 1:
-        print(f"exponent of tau in the wrinkle count m: {exponent(counts):.3f} (theory 1/2)")
+        print(f"exponent of tau in the wrinkle count m: {fits.log_slope(counts):.3f} (theory 1/2)")
     return results
 
 
-def sweep(directory, args):
-    os.makedirs(directory, exist_ok=True)
-    plisse = os.path.join(ROOT, "build", "bin", "plisse")
+def sweep_points(args):
+    """(name, overrides) of each tau of --taus: the pressure, the shell, the indenter of radius
+    INDENTER l_p 0.05 mm above the inflated outer pole and moving --depth p R^2 / Y, the refined
+    cap, the rings, and steps as fine at a larger tau's longer travel."""
+    points = []
     r, t, c1 = args.radius, args.thickness, args.c1
     for tau in (float(x) for x in args.taus.split(",")):
-        p = si.pressure_of(tau, c1, r, t)
+        p = sphere.pressure_of(tau, c1, r, t)
         _, lp, unit = units(p, c1, r, t)
-        lam = si.inflated_stretch(p, c1, r, t)
-        pole = lam * r + 0.5 * t / lam**2
+        pole = sphere.outer_pole(sphere.inflated_stretch(p, c1, r, t), r, t)
         a = INDENTER * lp
         rings = ",".join(f"{math.degrees(math.acos(f * lp / r)):.4f}" for f in RING_RADII)
-        run = os.path.join(directory, f"tau-{tau:g}")
-        command = [plisse, "run", CASE, "-o", run, "--overwrite",
-                   "--set", f"loads[0].value={p:.6e}",
-                   "--set", f"material.c1={c1:g}",
-                   "--set", f"mesh.inner_radius={r - 0.5 * t:g}", "--set", f"mesh.thickness={t:g}",
-                   "--set", f"mesh.pole_radius={CAP * lp:.3f}",
-                   "--set", f"dies[0].radius={a:.4f}",
-                   "--set", f"dies[0].point=[0,{pole + 0.05 + a:.6f},0]",
-                   "--set", f"dies[0].move.displacement=[0,{-(args.depth * unit + 0.05):.4f},0]",
-                   "--set", f"probes[0].point=[0,{r:g},0]",
-                   "--set", f"output.wrinkles.rings_deg=[{rings}]"]
         # The case's steps move the indenter by 1.35 mm; as fine at a larger tau's longer travel.
         scale = max(1.0, tau / 8.0) * args.depth / DEPTH
-        command += ["--set", f"solver.steps={round(55 * scale)}",
-                    "--set", f"solver.max_step={0.02 / scale:.6g}"]
-        for s in args.set or []:
-            command += ["--set", s]
-        print(" ".join(command), flush=True)
-        subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
+        points.append((f"tau-{tau:g}", [
+            f"loads[0].value={p:.6e}", f"material.c1={c1:g}",
+            f"mesh.inner_radius={r - 0.5 * t:g}", f"mesh.thickness={t:g}",
+            f"mesh.pole_radius={CAP * lp:.3f}", f"dies[0].radius={a:.4f}",
+            f"dies[0].point=[0,{pole + 0.05 + a:.6f},0]",
+            f"dies[0].move.displacement=[0,{-(args.depth * unit + 0.05):.4f},0]",
+            f"probes[0].point=[0,{r:g},0]", f"output.wrinkles.rings_deg=[{rings}]",
+            f"solver.steps={round(55 * scale)}", f"solver.max_step={0.02 / scale:.6g}"]
+            + (args.set or [])))
+    return points
 
 
 def wrinkle_field(run, radius, step_file, lp):
     """Mid-surface nodes between 0.25 and 2.2 l_p from the axis: (x, z, deviation of the inward
     normal displacement since the inflated state from its axisymmetric part: the mean over bins of
     l_p / 40 in the distance from the pole, interpolated linearly between the bins)."""
-    import numpy as np
-
-    arc, w, x = si.mid_surface_deflection(run, radius, step_file)
+    arc, w, x = sphere.mid_surface_deflection(run, radius, step_file)
     bins = np.floor(arc / (lp / 40.0)).astype(int)
     count = np.bincount(bins)
     filled = count > 0
@@ -221,12 +189,7 @@ def wrinkle_field(run, radius, step_file, lp):
 
 
 def figures(directory, results):
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    import matplotlib.tri as mtri
-    import numpy as np
+    from plisse_study.figures import disc_map, mirrored_quarter, plt, save
 
     os.makedirs(directory, exist_ok=True)
     # Onsets against tau, in units of p R^2 / Y.
@@ -259,32 +222,23 @@ def figures(directory, results):
     ax.set_ylim(0, None)
     ax.legend(frameon=False, fontsize=8)
     ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(os.path.join(directory, "onset.png"), dpi=130)
-    plt.close(fig)
+    save(fig, os.path.join(directory, "onset.png"))
 
     # The wrinkled dimple of each run at its last step, top view, full disc by mirroring.
     fig, axes = plt.subplots(1, len(results), figsize=(4.4 * len(results), 4.0), squeeze=False)
     for ax, m in zip(axes[0], results):
-        files = si.step_files(m["run"])
+        files = runs.step_files(m["run"])
         x, z, dev = wrinkle_field(m["run"], m["radius"], files[-1], m["lp"])
-        px = np.concatenate([x, -x, x, -x]) / m["lp"]
-        pz = np.concatenate([z, z, -z, -z]) / m["lp"]
-        pd = np.concatenate([dev, dev, dev, dev]) / m["thickness"]
-        points = np.unique(np.round(np.c_[px, pz, pd], 9), axis=0)
-        tri = mtri.Triangulation(points[:, 0], points[:, 1])
+        points = mirrored_quarter(x / m["lp"], z / m["lp"], dev / m["thickness"])
         limit = max(1e-6, np.percentile(np.abs(points[:, 2]), 99))
-        c = ax.tricontourf(tri, points[:, 2], levels=np.linspace(-limit, limit, 21),
-                           cmap="RdBu_r", extend="both")
+        c = disc_map(ax, points, np.linspace(-limit, limit, 21), "RdBu_r")
         ax.set_aspect("equal")
         ax.set_title(rf"$\tau$ = {m['tau']:.0f}, $w_0$ = {m['last_w0'] / m['unit']:.1f} $pR^2/Y$,"
                      f" m = {m['last_count']}", fontsize=9)
         ax.set_xlabel(r"$x / \ell_p$")
         ax.set_ylabel(r"$z / \ell_p$")
         fig.colorbar(c, ax=ax, label="normal deviation from the ring mean / t", shrink=0.85)
-    fig.tight_layout()
-    fig.savefig(os.path.join(directory, "wrinkles.png"), dpi=130)
-    plt.close(fig)
+    save(fig, os.path.join(directory, "wrinkles.png"))
 
     # Force against indentation, in the theory's units.
     fig, ax = plt.subplots(figsize=(5.5, 4))
@@ -298,18 +252,16 @@ def figures(directory, results):
     ax.set_ylabel(r"$F \,/\, (p\,\ell_p^2)$")
     ax.legend(frameon=False, fontsize=8)
     ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(os.path.join(directory, "force.png"), dpi=130)
-    plt.close(fig)
+    save(fig, os.path.join(directory, "force.png"))
 
 
 def main():
-    parser = si.sweep_parser(__doc__, "4,8", 1000.0, "mesh.pole_element_size=4")
+    parser = sphere.indentation_parser(__doc__, "4,8", 1000.0, "mesh.pole_element_size=4")
     parser.add_argument("--depth", type=float, default=DEPTH,
                         help="indenter travel in units of p R^2 / Y (--sweep)")
     args = parser.parse_args()
     if args.sweep:
-        sweep(args.sweep, args)
+        sweep.sweep(CASE, args.sweep, sweep_points(args), check=True)
         return
     if not args.runs:
         parser.error("no run directories")
