@@ -30,58 +30,30 @@ import argparse
 import functools
 import math
 import os
-import re
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import meshio  # noqa: E402
-import numpy as np  # noqa: E402
+from plisse_study import runs
+from plisse_study.figures import plt, save
+from plisse_study.runs import read_history, written_steps
 
 
 WRINKLE_THRESHOLD = 0.1  # wrinkles are visible above this fraction of the wall (the rings' default)
 
 
-def read_history(run):
-    with open(os.path.join(run, "history.csv")) as f:
-        header = f.readline().strip().split(",")
-        rows = [[float(v) for v in line.split(",")] for line in f if line.strip()]
-    data = np.array(rows)
-    return {name: data[:, k] for k, name in enumerate(header)}
-
-
 def instability_times(run):
     """Times of the steps where log.txt reports a new instability."""
-    times = []
-    with open(os.path.join(run, "log.txt")) as f:
-        for line in f:
-            if "new instability" in line:
-                m = re.search(r"t = ([0-9.eE+-]+)", line)
-                if m:
-                    times.append(float(m.group(1)))
-    return times
-
-
-def written_steps(run):
-    """(step, path) of the converged steps' files listed in solution.pvd."""
-    out = []
-    with open(os.path.join(run, "solution.pvd")) as f:
-        for m in re.finditer(r'file="([^"]+)"', f.read()):
-            step = int(re.search(r"(\d+)", os.path.basename(m.group(1))).group(1))
-            if step > 0:  # step 0 is the undeformed tube, before the first step
-                out.append((step, os.path.join(run, m.group(1))))
-    return out
+    return [t for _, t in runs.log_instabilities(run)]
 
 
 @functools.lru_cache(maxsize=None)
 def geometry(run):
     """Reference points, tetrahedra and the tube's dimensions, from the run's first step file."""
-    mesh = meshio.read(written_steps(run)[0][1])
-    X = mesh.points
+    first = runs.read_state(written_steps(run)[0][1])
+    X = first.points
     r = np.hypot(X[:, 1], X[:, 2])
     ri, ro, length = r.min(), r.max(), X[:, 0].max()
-    cells = mesh.cells_dict["tetra10"]
+    cells = first.mesh.cells_dict["tetra10"]
     outer = np.flatnonzero(np.abs(r - ro) < 1e-6 * ro)
     xs = np.unique(np.round(X[outer, 0], 9))
     h = 2.0 * np.diff(xs).min()  # corner spacing: edge nodes halve it
@@ -91,10 +63,8 @@ def geometry(run):
 def state(path):
     """Displacement per node and Cauchy stress per tetrahedron (3 x 3; the file's 6 components
     are xx, yy, zz, xy, yz, xz)."""
-    mesh = meshio.read(path)
-    v = mesh.cell_data["cauchy_stress"][0]
-    sigma = v[:, [0, 3, 5, 3, 1, 4, 5, 4, 2]].reshape(-1, 3, 3)
-    return mesh.point_data["displacement"], sigma
+    s = runs.read_state(path)
+    return s.displacement, s.stress()
 
 
 def pressure_check(run, hist):
@@ -178,7 +148,7 @@ def bottom_amplitude(run, outer, phi, w):
 
 
 def measure(run, c1):
-    hist = read_history(run)
+    hist = read_history(run, required=True)
     check = pressure_check(run, hist)
     _, _, ri0, ro0, length, h, _ = geometry(run)
     p, r = check["p"], check["r"]
@@ -394,9 +364,7 @@ def figures(results, folder):
         ax.grid(alpha=0.3)
     axes[0][0].set_ylabel("tip force F [N]")
     axes[0][0].legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(folder, "load.png"), dpi=130)
-    plt.close(fig)
+    save(fig, os.path.join(folder, "load.png"))
     # Normalised, all runs together.
     fig, ax = plt.subplots(figsize=(5.5, 4))
     for res in results:
@@ -409,9 +377,7 @@ def figures(results, folder):
     ax.set_ylabel(r"$F L / (\pi p r^3)$")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(folder, "load-normalised.png"), dpi=130)
-    plt.close(fig)
+    save(fig, os.path.join(folder, "load-normalised.png"))
     # The outer surface near the clamp where the wrinkles reach 0.1 t and at the largest clamp
     # moment, per run.
     fig, axes = plt.subplots(2, n, figsize=(4.6 * n, 6.4), squeeze=False)
@@ -427,9 +393,7 @@ def figures(results, folder):
                 f"p = {res['check']['p']:.3g} MPa, F L/(pi p r^3) = "
                 f"{res['F'][kw] / res['unit_F']:.2f}")
             fig.colorbar(m, ax=axes[row][i], shrink=0.8, label="w / t")
-    fig.tight_layout()
-    fig.savefig(os.path.join(folder, "surface.png"), dpi=130)
-    plt.close(fig)
+    save(fig, os.path.join(folder, "surface.png"))
     # Wrinkle amplitude against load.
     fig, ax = plt.subplots(figsize=(5.5, 4))
     for res in results:
@@ -443,9 +407,7 @@ def figures(results, folder):
     ax.set_ylabel("deviation w along the compressed side,\npeak-to-peak / t")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(folder, "amplitude.png"), dpi=130)
-    plt.close(fig)
+    save(fig, os.path.join(folder, "amplitude.png"))
 
 
 def main():
