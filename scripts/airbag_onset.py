@@ -30,19 +30,14 @@ Per run, from history.csv:
 study, O3: -2) and the radii between which the onset passes the example's pressure.
 """
 import argparse
-import csv
-import math
 import os
-import signal
-import subprocess
 import sys
-import time
 
 import numpy as np
 
-import study  # scripts/study.py: the studies' history and summary readers, surface figure
+from plisse_study import fits, runs, sweep
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = sweep.ROOT
 CASE = os.path.join(ROOT, "validation", "airbag-onset.yaml")
 PRESSURE = 4.4e-5  # the example's (the paper's) pressure [MPa]
 E = 6.0 * 0.0033  # the example's small-strain Young's modulus, 6 c1 [MPa]
@@ -54,15 +49,13 @@ AFTER = 3  # steps a sweep's run goes on past the onset
 def geometry(run):
     """(a, t): the undeformed mid-surface's equatorial radius and the wall, from the first step
     file."""
-    import meshio
-
-    x = meshio.read(os.path.join(run, "step_0000.vtu")).points
+    x = runs.read_state(os.path.join(run, "step_0000.vtu")).points
     rho = np.hypot(x[:, 0], x[:, 2])[np.abs(x[:, 1]) < 1e-9]
     return 0.5 * (rho.max() + rho.min()), rho.max() - rho.min()
 
 
 def onset_index(h):
-    """Index of the first step of the history columns `h` (study.read_history) whose state is
+    """Index of the first step of the history columns `h` (runs.read_history) whose state is
     unstable or whose largest ring amplitude exceeds THRESHOLD, or None."""
     if not h:
         return None
@@ -76,7 +69,7 @@ def onset_index(h):
 def steps_past_onset(run):
     """Steps a running run has written past its onset, or -1 (read while plisse writes: the
     reader leaves out a row still being written)."""
-    h = study.read_history(run)
+    h = runs.read_history(run)
     index = onset_index(h)
     return -1 if index is None else len(h["step"]) - 1 - index
 
@@ -85,30 +78,29 @@ def spectrum_peak(run, step):
     """(latitude [deg], m, amplitude [mm]) of the largest harmonic in wrinkle_spectrum.csv at the
     first step at or after `step` that the file holds (it has the steps written to disk)."""
     best, first = None, None
-    with open(os.path.join(run, "wrinkle_spectrum.csv")) as f:
-        for row in csv.DictReader(f):
-            k = int(row["step"])
-            if k < step or (first is not None and k != first):
-                continue
-            first = k
-            candidate = (float(row["latitude_deg"]), int(row["m"]), float(row["amplitude"]))
-            if best is None or candidate[2] > best[2]:
-                best = candidate
+    for row in runs.read_spectrum(run):
+        k = int(row["step"])
+        if k < step or (first is not None and k != first):
+            continue
+        first = k
+        candidate = (float(row["latitude_deg"]), int(row["m"]), float(row["amplitude"]))
+        if best is None or candidate[2] > best[2]:
+            best = candidate
     return best
 
 
 def measure(run):
     a, t = geometry(run)
-    h = study.read_history(run)
+    h = runs.read_history(run)
     if not h:
         sys.exit(f"{run}: history.csv has no complete step")
     p = h["pressure:gas"]
     result = {"run": run, "a": a, "t": t, "onset": None, "kind": None, "count": 0,
               "peak": None, "limit": float(p.max()), "steps": len(p),
-              "unknowns": study.read_summary(run).get("free_dofs")}
+              "unknowns": runs.read_summary(run).get("free_dofs")}
     index = onset_index(h)
     if index is not None:
-        result["onset"] = (float(p[index - 1]) if index > 0 else 0.0, float(p[index]))
+        result["onset"] = fits.bracket(p, index)
         unstable = "stable" in h and h["stable"][index] == 0
         result["kind"] = "instability" if unstable else "folds"
         result["count"] = int(h["wrinkle_count"][index])
@@ -118,7 +110,7 @@ def measure(run):
 
 def cells_of(run):
     """N of a sweep's run directory DIR/a-A-nN (elements of a / N), or 0 for another name."""
-    tail = os.path.basename(os.path.normpath(run)).rsplit("-n", 1)
+    tail = runs.run_name(run).rsplit("-n", 1)
     try:
         return float(tail[1]) if len(tail) == 2 else 0.0
     except ValueError:
@@ -132,8 +124,7 @@ def by_cells(results):
     return groups
 
 
-def middle(pair):
-    return 0.5 * (pair[0] + pair[1])
+middle = fits.middle
 
 
 def estimate(a, t):
@@ -141,13 +132,6 @@ def estimate(a, t):
     membrane hoop compression of the undeformed rim against the axial buckling stress of a
     cylinder of the rim's meridian radius c^2 / a."""
     return (2.0 / 3.0) * E * t**2 * ASPECT**2 / (0.5 * a**2 * (ASPECT**2 - 2.0))
-
-
-def local_exponents(points):
-    """d log p_c / d log a between neighbouring radii."""
-    points = sorted(points)
-    return [(a0, a1, math.log(p1 / p0) / math.log(a1 / a0))
-            for (a0, p0), (a1, p1) in zip(points, points[1:]) if a1 != a0]
 
 
 def threshold(results):
@@ -160,8 +144,8 @@ def threshold(results):
     return (max(smooth) if smooth else None, min(below) if below else None)
 
 
-def summary(runs):
-    results = sorted((measure(run) for run in runs), key=lambda m: (m["a"], m["unknowns"] or 0))
+def summary(run_dirs):
+    results = sorted((measure(run) for run in run_dirs), key=lambda m: (m["a"], m["unknowns"] or 0))
     print(f"{'run':<14} {'a [mm]':>6} {'unknowns':>8} {'onset p [MPa]':>21} {'kind':>11} "
           f"{'p_c a^2/(E t^2)':>15} {'m':>3} {'ring [deg]':>10} "
           f"{'largest p [MPa]':>15} {'steps':>5}")
@@ -172,12 +156,12 @@ def summary(runs):
         else:
             onset, scaled = "none", f"{'-':>15}"
         ring = f"{m['peak'][0]:10.0f}" if m["peak"] else f"{'-':>10}"
-        print(f"{os.path.basename(os.path.normpath(m['run'])):<14} {m['a']:6.1f} "
+        print(f"{runs.run_name(m['run']):<14} {m['a']:6.1f} "
               f"{m['unknowns'] or 0:8d} {onset:>21} {m['kind'] or '-':>11} {scaled} "
               f"{m['count']:3d} {ring} {m['limit']:15.3e} {m['steps']:5d}")
     for cells, group in sorted(by_cells(results).items()):
         points = [(m["a"], middle(m["onset"])) for m in group if m["onset"]]
-        for a0, a1, k in local_exponents(points):
+        for a0, a1, k in fits.local_slopes(points):
             print(f"elements a/{cells:g}: d log p_c / d log a between a = {a0:g} and {a1:g} mm: "
                   f"{k:.2f} (dimensional argument: -2)")
     smooth, wrinkled = threshold(results)
@@ -186,42 +170,27 @@ def summary(runs):
     return results
 
 
-def sweep(directory, args):
+def run_sweep(directory, args):
     os.makedirs(directory, exist_ok=True)
-    plisse = os.path.join(ROOT, "build", "bin", "plisse")
     for a in (float(x) for x in args.radii.split(",")):
         c = a / ASPECT
         run = os.path.join(directory, f"a-{a:g}-n{args.cells:g}")
-        command = [plisse, "run", CASE, "-o", run, "--overwrite",
-                   "--set", f"mesh.radius={a:g}", "--set", f"mesh.height={2 * c:g}",
-                   "--set", f"mesh.element_size={a / args.cells:.4g}",
-                   "--set", f"dies[0].point=[0,{-(c + 0.5):g},0]",
-                   "--set", f"probes[0].point=[{a + 0.5:g},0,0]",
-                   "--set", f"probes[1].point=[0,{c + 0.5:g},0]"]
-        for s in args.set or []:
-            command += ["--set", s]
-        print(" ".join(command), flush=True)
+        overrides = [f"mesh.radius={a:g}", f"mesh.height={2 * c:g}",
+                     f"mesh.element_size={a / args.cells:.4g}",
+                     f"dies[0].point=[0,{-(c + 0.5):g},0]",
+                     f"probes[0].point=[{a + 0.5:g},0,0]", f"probes[1].point=[0,{c + 0.5:g},0]"]
         # Without damping the steps shrink towards nothing once the folds grow (the quasi-static
         # path snaps there): a few steps past the onset say all this study needs, so the run is
         # stopped there (SIGTERM: plisse ends the step, writes its files and says `interrupted`),
         # or after --minutes.
-        start = time.monotonic()
-        process = subprocess.Popen(command, stdout=subprocess.DEVNULL)
-        stopping = False
-        while process.poll() is None:
-            time.sleep(5)
-            late = time.monotonic() - start > 60.0 * args.minutes
-            if not stopping and (late or steps_past_onset(run) >= AFTER):
-                process.send_signal(signal.SIGTERM)
-                stopping = True
-        if process.returncode not in (0, 130, 143) and not stopping:
-            sys.exit(f"plisse run failed for a = {a:g} mm (exit status {process.returncode})")
+        outcome = sweep.run_case(CASE, run, overrides + (args.set or []), minutes=args.minutes,
+                                 stop=lambda: steps_past_onset(run) >= AFTER)
+        if outcome.returncode not in (0, 130, 143) and not outcome.stopped:
+            sys.exit(f"plisse run failed for a = {a:g} mm (exit status {outcome.returncode})")
 
 
 def figures(directory, results):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from plisse_study.figures import plt, save
 
     os.makedirs(directory, exist_ok=True)
     fig, ax = plt.subplots(figsize=(6.0, 4.2))
@@ -252,9 +221,7 @@ def figures(directory, results):
     ax.set_ylabel("pressure at the rim's wrinkling onset [MPa]")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(directory, "onset.png"), dpi=130)
-    plt.close(fig)
+    save(fig, os.path.join(directory, "onset.png"))
     surfaces(directory, results)
 
 
@@ -262,27 +229,26 @@ def surfaces(directory, results):
     """surface_A.png: the last state of the largest and the smallest wrinkled bag and of the
     largest smooth one (runs of the coarsest in-plane size), coloured by the normal deviation
     from the mean axisymmetric shape, with the rings."""
-    import yaml
+    from plisse_study.figures import surface_figure
 
-    with open(CASE) as f:
-        settings = yaml.safe_load(f)["output"]["wrinkles"]
+    settings = runs.case_wrinkle_settings(CASE)
     groups = by_cells(results)
-    runs = groups[min(groups)]
-    wrinkled = [m for m in runs if m["onset"]]
-    smooth = [m for m in runs if not m["onset"]]
+    coarsest = groups[min(groups)]
+    wrinkled = [m for m in coarsest if m["onset"]]
+    smooth = [m for m in coarsest if not m["onset"]]
     chosen = []
     if wrinkled:
         chosen += [max(wrinkled, key=lambda m: m["a"]), min(wrinkled, key=lambda m: m["a"])]
     if smooth:
         chosen.append(max(smooth, key=lambda m: m["a"]))
     for m in {id(m): m for m in chosen}.values():
-        vtu = study.last_vtu(m["run"])
+        vtu = runs.last_vtu(m["run"])
         if not vtu:
             continue
         state = (f"onset at {middle(m['onset']):.2e} MPa" if m["onset"]
                  else "no wrinkles")
-        study.surface_figure(vtu, settings, os.path.join(directory, f"surface_{m['a']:g}.png"),
-                             f"a = {m['a']:g} mm, last state p = {m['limit']:.2e} MPa ({state})")
+        surface_figure(vtu, settings, os.path.join(directory, f"surface_{m['a']:g}.png"),
+                       f"a = {m['a']:g} mm, last state p = {m['limit']:.2e} MPa ({state})")
 
 
 def main():
@@ -300,7 +266,7 @@ def main():
     parser.add_argument("--figures", metavar="DIR")
     args = parser.parse_args()
     if args.sweep:
-        sweep(args.sweep, args)
+        run_sweep(args.sweep, args)
         return
     if not args.runs:
         parser.error("no run directories")
