@@ -1,9 +1,10 @@
 // Viscoelasticity and Mullins softening in whole runs (examples/cube-relaxation-viscoelastic.yaml,
 // examples/cube-cycles-mullins.yaml): a cube with sliding ends deforms homogeneously, which both
 // elements represent exactly, so the nominal stress of every step (the top's reaction over its
-// 25 mm² reference area) and the Cauchy stress σzz = λ P of the output fields must equal the
-// closed forms of docs/theory/materials.md to the solver tolerance (1e-8 relative asked, Newton
-// at rtol 1e-10):
+// 25 mm² reference area) must equal the closed forms of docs/theory/materials.md to 1e-11 of the
+// stretched cube's equilibrium stress P∞(λ = 2), the accuracy docs/verification.md prints (Newton
+// at rtol 1e-10 on the residual, whose last quadratic step lands far below it), and the Cauchy
+// stress σzz = λ P of the output fields to 1e-10:
 //  - relaxation after a stretch to 2 in the first step, held 20 s: P(t) = P∞ (1 + Σ β_i
 //    exp(-(t - t_jump)/τ_i)), with the jump at the middle of the first step (V3), or its sum
 //    over the steps that share the stretch when the first one is cut back;
@@ -41,6 +42,12 @@ HistoryTable run_example(const std::string& example, const std::string& element)
 }
 
 constexpr double kC1 = 0.25, kArea = 25.0;  // the examples' neo-Hookean c1 [MPa], top area [mm²]
+/// Largest difference of the nominal stress (the top's reaction) from the closed forms, in units
+/// of P∞(λ = 2): docs/verification.md's claim.
+constexpr double kTolerance = 1e-11;
+/// The same for the Cauchy stress of the fields, which the page does not print: it holds the
+/// pressure unknowns, which the Newton tolerance leaves at about 2e-11 of P∞ (measured).
+constexpr double kFieldTolerance = 1e-10;
 
 double virgin_nominal(double l) { return 2 * kC1 * (l - 1 / (l * l)); }
 
@@ -75,8 +82,8 @@ TEST_P(InelasticRun, RelaxationFollowsTheClosedFormAtEveryStep) {
           total[a] += decay * (S(stretches[k])[a] - S(stretches[k - 1])[a]);
       }
     const double expected = l * total[0] - total[1] / (l * l);
-    EXPECT_NEAR(row[force] / kArea, expected, 1e-8 * scale) << "t " << t;
-    EXPECT_NEAR(row[szz], l * expected, 1e-8 * l * scale) << "t " << t;
+    EXPECT_NEAR(row[force] / kArea, expected, kTolerance * scale) << "t " << t;
+    EXPECT_NEAR(row[szz], l * expected, kFieldTolerance * l * scale) << "t " << t;
     if (t >= 0.02) {
       EXPECT_NEAR(l, 2.0, 1e-9) << "t " << t;
     }
@@ -98,7 +105,8 @@ TEST(InelasticRunMini, OneStepStretchRelaxesAsTheTextbookClosedForm) {
     const double since = row[time] - 0.01;
     const double expected =
         virgin_nominal(2.0) * (1 + 0.8 * std::exp(-since / 0.5) + 0.3 * std::exp(-since / 4.0));
-    EXPECT_NEAR(row[force] / kArea, expected, 1e-8 * virgin_nominal(2.0)) << "t " << row[time];
+    EXPECT_NEAR(row[force] / kArea, expected, kTolerance * virgin_nominal(2.0))
+        << "t " << row[time];
   }
 }
 
@@ -116,9 +124,9 @@ TEST_P(InelasticRun, MullinsCyclesFollowTheClosedFormAndRetraceTheFirstUnloading
     Wmax = std::max(Wmax, W);
     const double eta = 1 - std::erf((Wmax - W) / (m + beta * Wmax)) / r;
     const double expected = eta * virgin_nominal(l);
-    const double tolerance = 1e-8 * virgin_nominal(2.5);
+    const double tolerance = kTolerance * virgin_nominal(2.0);
     EXPECT_NEAR(row[force] / kArea, expected, tolerance) << "t " << t;
-    EXPECT_NEAR(row[szz], l * expected, l * tolerance) << "t " << t;
+    EXPECT_NEAR(row[szz], l * expected, kFieldTolerance / kTolerance * l * tolerance) << "t " << t;
     if (std::abs(t - 1.5) < 1e-9) first_unloading_at_1_5 = row[force] / kArea;
     if (std::abs(t - 2.5) < 1e-9) second_loading_at_1_5 = row[force] / kArea;
   }
@@ -126,7 +134,7 @@ TEST_P(InelasticRun, MullinsCyclesFollowTheClosedFormAndRetraceTheFirstUnloading
   // well below the virgin one.
   ASSERT_FALSE(std::isnan(first_unloading_at_1_5));
   ASSERT_FALSE(std::isnan(second_loading_at_1_5));
-  EXPECT_NEAR(second_loading_at_1_5, first_unloading_at_1_5, 1e-8 * virgin_nominal(2.5));
+  EXPECT_NEAR(second_loading_at_1_5, first_unloading_at_1_5, kTolerance * virgin_nominal(2.0));
   EXPECT_LT(first_unloading_at_1_5, 0.8 * virgin_nominal(1.5));
 }
 
