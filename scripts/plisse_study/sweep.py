@@ -55,6 +55,8 @@ def run_case(case, run_dir, overrides, transcript=None, stop=None, minutes=None,
     cmd = command(case, run_dir, overrides, plisse)
     print(echo(cmd) if echo else " ".join(cmd), flush=True)
     start = time.monotonic()
+    if transcript:
+        os.makedirs(os.path.dirname(os.path.abspath(transcript)), exist_ok=True)
     out = open(transcript, "w") if transcript else subprocess.DEVNULL
     try:
         process = subprocess.Popen(cmd, stdout=out,
