@@ -9,7 +9,9 @@ run behind the docs) are a dict:
   command: the command line that measured them; commit: `git rev-parse --short HEAD` of the
   tree; local_changes: whether the sources of the measurement (plisse's, the peer's, the case)
   had uncommitted changes; date: YYYY-MM-DD;
-  repeats: pairs per row;
+  repeats: pairs per row; cores: the machine's; load_average (optional): the 1-minute load
+  average of the machine when the run began and when it ended (other work on it, and the
+  spread it causes);
   cases: a list, one per mesh size and element, of {h, tetrahedra, element ("mini" or
   "taylor-hood"), pairs}, where pairs holds one {"plisse": RUN, "DOLFINx": RUN} per repeat in the
   order they ran, and a RUN is {unknowns, newton, factorisations, reused_solves, wall, peak,
@@ -66,6 +68,15 @@ def table_rows(case):
     return rows
 
 
+def machine_load(results):
+    """' The machine ...' sentence on the load during the run, or '' when it was not recorded."""
+    if "load_average" not in results:
+        return ""
+    begin, end = results["load_average"]
+    return (f" The machine ({results['cores']} cores) had a load average of {begin:.1f} when the "
+            f"run began and {end:.1f} when it ended.")
+
+
 def render_block(results):
     """The lines between the markers, ending in a newline, from the measurements alone (so the
     same measurements always give the same text)."""
@@ -75,7 +86,7 @@ def render_block(results):
         f"Made by `{results['command']}` at commit {results['commit']}{changes} on "
         f"{results['date']}: {pairs} per row, plisse then DOLFINx, "
         "one core each. Wall time and ratio: median (smallest–largest) over the pairs; peak "
-        "memory: the largest.",
+        f"memory: the largest.{machine_load(results)}",
         "",
         "| h [mm] | tetrahedra | element | program | unknowns | factorisations "
         "| reused-factor solves | wall [s] | peak [MiB] | error of p | DOLFINx / plisse |",

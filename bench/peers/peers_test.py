@@ -75,6 +75,12 @@ class PeerTable(unittest.TestCase):
         self.assertIn("at commit abc1234 with uncommitted changes on",
                       peer_table.render_block(dirty))
 
+    def test_load_of_the_machine_is_said_when_recorded(self):
+        loaded = copy.deepcopy(MEASUREMENTS)
+        loaded.update(cores=2, load_average=[3.04, 4.96])
+        self.assertIn("largest. The machine (2 cores) had a load average of 3.0 when the run began "
+                      "and 5.0 when it ended.\n", peer_table.render_block(loaded))
+
     def test_rewriting_keeps_the_prose_and_is_repeatable(self):
         once = peer_table.replace_block(PAGE, EXPECTED)
         self.assertEqual(once, PAGE.replace("an old table\n", EXPECTED))
