@@ -3,24 +3,21 @@
 Usage: /usr/bin/python3 scripts/verification_report.py RUNS_DIR DOCS_DIR
 Needs Debian's python3-matplotlib, python3-numpy and python3-yaml (hence /usr/bin/python3).
 """
-import csv
 import json
 import math
 import sys
 from pathlib import Path
 
-import matplotlib
 import numpy
 import yaml
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+from plisse_study.figures import plt
+from plisse_study.runs import history_columns
 
 
 def read_history(path):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    return {k: [float(r[k]) for r in rows] for k in rows[0]}
+    """The columns of a history.csv file; stops at a missing file."""
+    return history_columns(path, required=True)
 
 
 def material(case_yaml):
