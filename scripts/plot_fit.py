@@ -8,10 +8,7 @@ import csv
 import sys
 from pathlib import Path
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+from plisse_study.figures import plt, save
 
 
 def read(path):
@@ -38,8 +35,7 @@ def main(directory, title):
     ax.set_title(title)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(out / "fit.png", dpi=120)
+    save(fig, out / "fit.png", dpi=120)
 
 
 if __name__ == "__main__":
