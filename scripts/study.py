@@ -23,8 +23,6 @@ value runs a second time with its overrides added (a finer mesh), into
 report reads each run's summary.json (wrinkle table, steps, times), history.csv and last VTU
 (deformed outer surface coloured by its normal deviation from the axisymmetric mean shape).
 A run that fails (exit status 1) is reported as such with its message; bad input (2) stops.
-The runs, the readers and the surface figures are plisse_study's; the study file and the report
-are this script's.
 """
 import argparse
 import math
@@ -32,6 +30,8 @@ import os
 import re
 import sys
 
+# The runs, the readers and the surface figures are plisse_study's; the study file and the report
+# are this script's.
 from plisse_study import figures, runs, sweep
 from plisse_study.figures import plt
 from matplotlib.ticker import MaxNLocator
