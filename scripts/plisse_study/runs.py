@@ -2,7 +2,8 @@
 
 Every reader takes the run directory and leaves what is missing to its caller: an absent file
 gives an empty result ({} or []), not an error, so that a study can report a run that failed or
-was not run. Units are the run's (the examples' mm, N, MPa, s).
+was not run (the readers of history.csv and summary.json raise FileNotFoundError instead when
+asked with `required`). Units are the run's (the examples' mm, N, MPa, s).
 """
 import csv
 import json
@@ -12,7 +13,7 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 
-AXES = {"x": 0, "y": 1, "z": 2}
+AXES = {"x": 0, "y": 1, "z": 2}  # an axis name of the case file (output.wrinkles.axis) -> index
 
 
 def history_columns(path, required=False):
