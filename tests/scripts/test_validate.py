@@ -1,0 +1,116 @@
+"""Unit tests of scripts/validate.py: the generated tables of docs/validation.md and their checks.
+
+Run by CTest (label unit) with Debian's python3; needs no build and runs no plisse.
+"""
+import json
+import sys
+import tempfile
+import unittest
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
+import validate  # noqa: E402
+
+
+def claim(row, measured, reference, low, high, kind="validation", difference="relative",
+          test="Suite.Test"):
+    d = measured / reference - 1 if difference == "relative" else measured - reference
+    return {"row": row, "subject": "a sheet", "quantity": "q", "mesh": "h = 1", "measured": measured,
+            "reference": reference, "source": "Someone 2001", "difference_kind": difference,
+            "difference": d, "low": low, "high": high, "why": "because", "kind": kind,
+            "held": low <= d <= high, "test": test}
+
+
+def record(claims, tests=None):
+    return {"tier": "ci", "command": "scripts/validate --tier ci", "commit": "abc1234",
+            "date": "2026-01-01", "jobs": 2, "seconds": 90.0,
+            "tests": tests or {"Suite.Test": {"seconds": 90.0, "status": "passed"}},
+            "claims": claims}
+
+
+class Page(unittest.TestCase):
+    """A page and a record in a temporary folder, in place of docs/."""
+
+    def setUp(self):
+        self.folder = tempfile.TemporaryDirectory()
+        root = Path(self.folder.name)
+        self.page = root / "validation.md"
+        self.records = root / "records"
+        self.saved = (validate.PAGES, validate.RECORDS, validate.ROOT)
+        validate.PAGES, validate.RECORDS, validate.ROOT = [self.page], self.records, root
+
+    def tearDown(self):
+        validate.PAGES, validate.RECORDS, validate.ROOT = self.saved
+        self.folder.cleanup()
+
+    def write(self, text, ci=None):
+        self.page.write_text(text)
+        if ci is not None:
+            self.records.mkdir(exist_ok=True)
+            (self.records / "ci.json").write_text(json.dumps(ci))
+
+    def blocks(self):
+        return "\n\n".join("\n".join(validate.markers(t)) for t in validate.TIERS)
+
+
+class TablesTest(Page):
+    def test_update_writes_the_rows_and_check_then_passes(self):
+        self.write("# page\n\n" + self.blocks() + "\n",
+                   record([claim("a/b", 0.97, 1.0, -0.04, -0.02)]))
+        self.assertEqual(validate.check(), 1, "the page still has the empty blocks")
+        validate.update()
+        text = self.page.read_text()
+        self.assertIn("| a sheet | q | 0.97 | 1 (Someone 2001) | -3.00 % | [-4.0, -2.0] %", text)
+        self.assertIn("abc1234", text)
+        self.assertIn("Not run yet", text, "the full tier has no record")
+        self.assertEqual(validate.check(), 0)
+
+    def test_a_hand_edited_number_fails_the_check(self):
+        self.write("# page\n\n" + self.blocks() + "\n",
+                   record([claim("a/b", 0.97, 1.0, -0.04, -0.02)]))
+        validate.update()
+        self.page.write_text(self.page.read_text().replace("0.97 |", "0.98 |"))
+        self.assertEqual(validate.check(), 1)
+
+    def test_a_table_row_outside_the_blocks_fails_the_check(self):
+        self.write("# page\n\n| a | b |\n|---|---|\n| 1 | 2 |\n\n" + self.blocks() + "\n",
+                   record([claim("a/b", 0.97, 1.0, -0.04, -0.02)]))
+        validate.update()
+        self.assertEqual(validate.rows_outside_blocks(self.page.read_text()), [3, 4, 5])
+        self.assertEqual(validate.check(), 1)
+
+    def test_a_row_without_its_test_fails_the_check(self):
+        self.write("# page\n\n" + self.blocks() + "\n",
+                   record([claim("a/b", 0.97, 1.0, -0.04, -0.02, test="Gone.Test")]))
+        validate.update()
+        self.assertEqual(validate.check(), 1)
+
+    def test_a_failed_claim_and_a_regression_guard_are_marked_so(self):
+        self.write("# page\n\n" + self.blocks() + "\n",
+                   record([claim("a/b", 0.95, 1.0, -0.04, -0.02),
+                           claim("a/c", 3.0, 3.1, -0.2, 0.2, kind="regression",
+                                 difference="absolute")]))
+        validate.update()
+        text = self.page.read_text()
+        self.assertIn("-5.00 % **failed**", text)
+        self.assertLess(text.index("Against published results"), text.index("Regression guards"))
+        self.assertIn("| -0.1 | [-0.2, +0.2]", text)
+
+    def test_markers_out_of_order_are_refused(self):
+        begin, end = validate.markers("ci")
+        self.write(f"{end}\n{begin}\n", record([]))
+        with self.assertRaises(SystemExit):
+            validate.update()
+
+
+class NumbersTest(unittest.TestCase):
+    def test_numbers_keep_four_digits_and_small_ones_an_exponent(self):
+        self.assertEqual(validate.number(0.93512), "0.9351")
+        self.assertEqual(validate.number(3.48e-5), "3.480e-05")
+        self.assertEqual(validate.number(-0.24), "-0.24")
+        self.assertEqual(validate.difference_text("relative", -0.0296), "-2.96 %")
+        self.assertEqual(validate.band_text("absolute", -0.03, 0.03), "[-0.03, +0.03]")
+
+
+if __name__ == "__main__":
+    unittest.main()
