@@ -16,9 +16,11 @@
 // about F ln(l / c) / (2 pi kappa G t) (kappa = 5/6, G = E/3, l the decay length of the dimple),
 // a fraction 1.5 (t/R) (k/k0) ln(l/c) of the bending-stretching deflection: about 2 % at tau = 0
 // (l = l_b = 8.2 mm, c = 0.4 mm) and 4 % at tau = 4 (l = l_b / sqrt(2 tau) = 2.9 mm); the study
-// measures 3 % and 6.5 % on converged meshes, halving with t/R. So k / k_theory must lie in
-// [0.90, 1.0] at tau = 0 and [0.88, 1.0] at tau = 4, with the difference larger under pressure;
-// and the stiffening by the pressure, k(4) / k(0), within 6 % of the theory's 2.949.
+// measures 3 % and 6.5 % on converged meshes, halving with t/R. The rows of docs/validation.md
+// (validation_claim.hpp) claim k / k_theory 2 to 4 % below 1 at tau = 0 and 5.5 to 7.5 % below
+// at tau = 4 (this mesh's numbers, 1 % either way: the shear estimate above explains their size,
+// not their last digit), with the difference larger under pressure; and the stiffening by the
+// pressure, k(4) / k(0), 2.5 to 5 % below the theory's 2.949 (the two shear shares' ratio).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -31,6 +33,7 @@
 #include "io/history_writer.hpp"
 #include "support/run_case.hpp"
 #include "support/run_plisse.hpp"
+#include "support/validation_claim.hpp"
 
 namespace plisse {
 namespace {
@@ -116,12 +119,43 @@ TEST(ShellIndentationSlow, StiffnessFollowsReissnerAndVellaWithinTheWallsShear) 
             << reissner() << "; k(4) = " << pressurised.stiffness << " N/mm, " << pressurised_ratio
             << " x Vella et al.'s " << vella(tau) << "; k(4)/k(0) = " << stiffening << " (theory "
             << vella(tau) / reissner() << ")\n";
-  EXPECT_GE(bare_ratio, 0.90);
-  EXPECT_LE(bare_ratio, 1.0);
-  EXPECT_GE(pressurised_ratio, 0.88);
-  EXPECT_LE(pressurised_ratio, 1.0);
+  const char* subject = "indented sphere, R/t = 200, rigid sphere of radius t, neo-Hookean";
+  const char* mesh = "0.25 mm at the pole to 10 mm, 1 TH layer";
+  const char* why =
+      "this mesh's number ± 1 %: the wall's transverse shear, which shell theory "
+      "leaves out";
+  test::expect_claim({.row = "shell-indentation/reissner",
+                      .subject = subject,
+                      .quantity = "stiffness without pressure k [N/mm], fit over w0 ≤ 0.2 t",
+                      .mesh = mesh,
+                      .measured = bare.stiffness,
+                      .reference = reissner(),
+                      .source = "Reissner 1946, k0 = 8√(BY)/R",
+                      .low = -0.04,
+                      .high = -0.02,
+                      .why = why});
+  test::expect_claim({.row = "shell-indentation/vella",
+                      .subject = subject,
+                      .quantity = "stiffness at τ = pR²/(4√(BY)) = 4 [N/mm]",
+                      .mesh = mesh,
+                      .measured = pressurised.stiffness,
+                      .reference = vella(tau),
+                      .source = "Vella, Ajdari, Vaziri & Boudaoud 2012, k0 (π/2)√(τ²−1) / "
+                                "artanh√(1−τ⁻²)",
+                      .low = -0.075,
+                      .high = -0.055,
+                      .why = why});
   EXPECT_LT(pressurised_ratio, bare_ratio);  // the shear's share grows with the pressure
-  EXPECT_NEAR(stiffening / (vella(tau) / reissner()), 1.0, 0.06);
+  test::expect_claim({.row = "shell-indentation/stiffening",
+                      .subject = subject,
+                      .quantity = "stiffening by the pressure k(τ = 4) / k(0)",
+                      .mesh = mesh,
+                      .measured = stiffening,
+                      .reference = vella(tau) / reissner(),
+                      .source = "the ratio of the two laws above",
+                      .low = -0.05,
+                      .high = -0.025,
+                      .why = "the ratio of the two rows' shear shares"});
 }
 
 }  // namespace
