@@ -13,16 +13,21 @@
 //  - the wavelength follows Cerda & Mahadevan (2003, Phys. Rev. Lett. 90, 074302),
 //    lambda = (2 pi L t)^(1/2) / (3 (1 - nu^2) eps)^(1/4) with nu = 1/2, on the steps far from
 //    the threshold, where their law holds: strain at least 1.5 times the onset's and wrinkles at
-//    least t high. The exponent of eps fitted over them is -1/4 within 0.05 (measured -0.24);
-//    the ratio to the law is within 20 % (a scaling estimate; measured 0.88 to 0.91) and
-//    constant, within 0.04 of its mean, as the law's strain dependence requires (on the study's
-//    finest mesh it varies by 0.012 over 5-25 %; here the pattern changes from 5 to 7 crests
-//    near 9 %, which moves it by 0.02); the mean, 0.89 on every mesh and thickness of the
-//    study, is within [0.85, 0.93];
+//    least t high. Two rows of docs/validation.md (validation_claim.hpp):
+//      - the exponent of eps fitted over them is -1/4 within 0.03 (the law);
+//      - the geometric mean of lambda / lambda_CM over those steps lies 9.5 to 11.5 % below 1:
+//        this mesh's and these steps' own number, 1 % either way (the study's meshes and steps
+//        give -10.4 to -12.7 % step by step: the law is a scaling estimate whose prefactor the
+//        clamps' boundary layer changes);
+//    and the ratio is constant, within 0.04 of its mean, as the law's strain dependence requires
+//    (on the study's finest mesh it varies by 0.012 over 5-25 %; here the pattern changes from 5
+//    to 7 crests near 9 %, which moves it by 0.02);
 //  - the wrinkles shrink after their largest amplitude (over 2 t) and vanish (restabilisation of
 //    a hyperelastic sheet, Healey, Li & Cheng 2013) within one step of the study's converged
 //    vanishing strain, 28.5-29.5 %: the first flat step is in (28.5, 30.5] %, and they do not
 //    come back up to 35 %.
+// The onset and vanishing strains have no published number for this sheet: they are regression
+// guards against the study's runs, recorded apart from the validation rows.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -38,6 +43,7 @@
 #include "io/vtu_reader.hpp"
 #include "mesh/generate.hpp"
 #include "support/run_plisse.hpp"
+#include "support/validation_claim.hpp"
 #include "verification/wrinkling/sheet_profile.hpp"
 
 namespace plisse {
@@ -49,7 +55,9 @@ constexpr double kFinalStrain = 0.35;  ///< nominal strain at the end of the run
 // followed by at most one of this run's 1 % steps.
 constexpr double kOnsetLow = 0.030, kOnsetHigh = 0.045;
 constexpr double kVanishLow = 0.285, kVanishHigh = 0.305;
-constexpr double kPrefactorTolerance = 0.2;
+constexpr const char* kSubject = "stretched sheet, L/W = 2.5, W/t = 1000, neo-Hookean";
+constexpr const char* kMesh = "h = 0.5 mm = 25 t, 1 TH layer, steps of 1 %";
+constexpr const char* kCerdaMahadevan = "Cerda & Mahadevan 2003, λ = (2πLt)^½ / (3(1−ν²)ε)^¼";
 
 double cerda_mahadevan(double strain) {
   const double nu = 0.5;
@@ -141,8 +149,18 @@ TEST(TensionWrinklingSlow, StretchedSheetWrinklesWithTheCerdaMahadevanWavelength
   const auto wrinkled = [](const test::SheetProfile& s) { return s.crests >= 5; };
 
   // Onset: the converged bracket of the study, widened by the 1 % steps of this run.
-  EXPECT_GT(run.onset_strain, kOnsetLow);
-  EXPECT_LE(run.onset_strain, kOnsetHigh);
+  test::expect_claim({.row = "sheet-tension/onset",
+                      .subject = kSubject,
+                      .quantity = "strain of the step where the stability check finds the onset",
+                      .mesh = kMesh,
+                      .measured = run.onset_strain,
+                      .reference = kOnsetLow,
+                      .source = "the study's bracket on h = 0.5 and 0.25 mm, 3.0 – 3.5 %",
+                      .difference = test::Difference::absolute,
+                      .low = 1e-9,
+                      .high = kOnsetHigh - kOnsetLow,
+                      .why = "the bracket and one step of 1 %",
+                      .kind = test::ClaimKind::regression});
   // Flat before it: the out-of-plane displacement of the unbuckled sheet is the small bending
   // that one layer of tetrahedra, not symmetric about the mid-plane, couples to the stretching
   // (measured: at most 0.07 t).
@@ -160,8 +178,6 @@ TEST(TensionWrinklingSlow, StretchedSheetWrinklesWithTheCerdaMahadevanWavelength
   int n = 0;
   for (const auto& s : run.steps) {
     if (!far_from_onset(s)) continue;
-    EXPECT_NEAR(s.wavelength / cerda_mahadevan(s.strain), 1.0, kPrefactorTolerance)
-        << "strain " << s.strain;
     const double x = std::log(s.strain), y = std::log(s.wavelength);
     sx += x;
     sy += y;
@@ -173,15 +189,35 @@ TEST(TensionWrinklingSlow, StretchedSheetWrinklesWithTheCerdaMahadevanWavelength
   const double mean_ratio = std::exp((sy + 0.25 * sx) / n) /
                             cerda_mahadevan(1.0);  // geometric mean of lambda eps^(1/4) / CM's
   std::cout << "mean ratio to Cerda & Mahadevan: " << mean_ratio << "\n";
-  EXPECT_GT(mean_ratio, 0.85);
-  EXPECT_LT(mean_ratio, 0.93);
+  test::expect_claim({.row = "sheet-tension/wavelength",
+                      .subject = kSubject,
+                      .quantity = "wavelength / λ_CM, geometric mean over the steps from 1.5 × the "
+                                  "onset strain to 35 %",
+                      .mesh = kMesh,
+                      .measured = mean_ratio,
+                      .reference = 1.0,
+                      .source = kCerdaMahadevan,
+                      .difference = test::Difference::relative,
+                      .low = -0.115,
+                      .high = -0.095,
+                      .why = "this mesh's number ± 1 %; the law is a scaling estimate"});
   for (const auto& s : run.steps) {
     if (!far_from_onset(s)) continue;
     EXPECT_NEAR(s.wavelength / cerda_mahadevan(s.strain), mean_ratio, 0.04) << s.strain;
   }
   const double exponent = (n * sxy - sx * sy) / (n * sxx - sx * sx);
   std::cout << "fitted exponent of the strain: " << exponent << " over " << n << " steps\n";
-  EXPECT_NEAR(exponent, -0.25, 0.05);
+  test::expect_claim({.row = "sheet-tension/wavelength-exponent",
+                      .subject = kSubject,
+                      .quantity = "exponent of ε in the wavelength, fitted over the same steps",
+                      .mesh = kMesh,
+                      .measured = exponent,
+                      .reference = -0.25,
+                      .source = kCerdaMahadevan,
+                      .difference = test::Difference::absolute,
+                      .low = -0.03,
+                      .high = 0.03,
+                      .why = "the law's exponent"});
 
   // Restabilisation: the wrinkles, of several thicknesses at their largest, shrink and vanish.
   std::size_t peak = 0;
@@ -196,8 +232,18 @@ TEST(TensionWrinklingSlow, StretchedSheetWrinklesWithTheCerdaMahadevanWavelength
   const double vanished = run.steps[last + 1].strain;
   std::cout << "wrinkles last seen at strain " << run.steps[last].strain << ", gone at " << vanished
             << "\n";
-  EXPECT_GT(vanished, kVanishLow);
-  EXPECT_LE(vanished, kVanishHigh);
+  test::expect_claim({.row = "sheet-tension/vanishing",
+                      .subject = kSubject,
+                      .quantity = "strain of the first flat step after the wrinkles",
+                      .mesh = kMesh,
+                      .measured = vanished,
+                      .reference = kVanishLow,
+                      .source = "the study's bracket on h = 0.5 and 0.25 mm, 28.5 – 29.5 %",
+                      .difference = test::Difference::absolute,
+                      .low = 1e-9,
+                      .high = kVanishHigh - kVanishLow,
+                      .why = "the bracket and one step of 1 %",
+                      .kind = test::ClaimKind::regression});
   for (std::size_t k = last + 1; k < run.steps.size(); ++k)
     EXPECT_FALSE(wrinkled(run.steps[k])) << "wrinkles again at strain " << run.steps[k].strain;
 }
