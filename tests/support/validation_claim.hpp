@@ -11,16 +11,15 @@
 ///
 /// A regression guard compares plisse with an earlier run of plisse rather than with an external
 /// reference: `Claim::kind = ClaimKind::regression`, printed apart from the validation rows.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fcntl.h>
-#include <string>
-#include <unistd.h>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 // The tier a validation test is built for (tests/CMakeLists.txt, DEFINITIONS): 0 the coarse
 // meshes CI runs (label validation-ci), 1 the meshes the studies print (validation-full, CTest
@@ -84,9 +83,9 @@ inline void record_claim(const Claim& c, bool held) {
       {"why", c.why},
       {"kind", c.kind == ClaimKind::validation ? "validation" : "regression"},
       {"held", held},
-      {"test", info ? std::string(info->test_suite_name()) + "." + info->name() +
-                          (kFullTier ? ".full" : "")
-                    : ""}};
+      {"test",
+       info ? std::string(info->test_suite_name()) + "." + info->name() + (kFullTier ? ".full" : "")
+            : ""}};
   const std::string text = line.dump() + "\n";
   const int fd = ::open(path, O_WRONLY | O_APPEND | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
   if (fd < 0) {
