@@ -22,7 +22,8 @@
 //     so each count is the nearest even one to its law's value, off by at most 1: m(8) exceeds
 //     m(4), and lies within sqrt(2) m(4) +- (1 + sqrt(2)) (the two counts' quantisation, the
 //     second scaled by sqrt(2)). A count that does not grow fails, whatever its value.
-// Two runs, tau = 4 and 8, each to w0 = 8 p R^2 / Y, on the case's mesh coarsened to 9 mm
+// Two runs, tau = 4 and 8, each to w0 = 8 p R^2 / Y, on the case's mesh coarsened to 9 mm in the
+// full tier (the study's coarser mesh) and to 12 mm in CI's (kPoleSize)
 // about the pole (5 to 7 minutes each on 2 cores).
 #include <gtest/gtest.h>
 
@@ -46,6 +47,8 @@ namespace {
 using test::history_column;
 
 constexpr double kRadius = 1000.0, kThickness = 1.0, kC1 = 1.0;
+/// Element size about the pole [mm]: the wrinkles' wavelength there is about 75 mm.
+constexpr double kPoleSize = test::kFullTier ? 9.0 : 12.0;
 
 double stretching_stiffness() { return 6.0 * kC1 * kThickness; }
 
@@ -93,10 +96,12 @@ Wrinkling indent(double tau) {
     if (!rings.empty()) rings += ',';
     rings += std::to_string(std::acos(f * lp / kRadius) * 180.0 / std::numbers::pi);
   }
-  const auto dir = test::scratch_directory("shell-wrinkles-tau" + std::to_string(int(tau)));
+  const auto dir = test::scratch_directory("shell-wrinkles-tau" + std::to_string(int(tau)) + "-h" +
+                                           std::to_string(int(kPoleSize)));
   const std::string options =
       " --set loads[0].value=" + std::to_string(p) +
-      " --set mesh.pole_element_size=9 --set mesh.pole_radius=" + std::to_string(2.0 * lp) +
+      " --set mesh.pole_element_size=" + std::to_string(kPoleSize) +
+      " --set mesh.pole_radius=" + std::to_string(2.0 * lp) +
       " --set dies[0].radius=" + std::to_string(a) + " --set dies[0].point=[0," +
       std::to_string(pole + 0.05 + a) + ",0] --set dies[0].move.displacement=[0," +
       std::to_string(-(8.0 * unit + 0.05)) + ",0] --set output.wrinkles.rings_deg=[" + rings +
@@ -149,7 +154,8 @@ TEST(ShellWrinklesSlow, OnsetAndCountFollowTheShallowShellScales) {
   const double compression_exponent = std::log(high.compression / low.compression) / std::log(2.0);
   std::cout << "exponent of tau in the compression onset: " << compression_exponent << "\n";
   const char* subject = "sphere R/t = 1000 indented deeply at its pole, τ = 4 and 8, neo-Hookean";
-  const char* mesh = "h = 9 mm within 2 ℓ_p, 1 TH layer";
+  const char* mesh =
+      test::kFullTier ? "h = 9 mm within 2 ℓ_p, 1 TH layer" : "h = 12 mm within 2 ℓ_p, 1 TH layer";
   const char* source = "Vella, Ajdari, Vaziri & Boudaoud 2011, shallow-shell scales";
   test::expect_claim({.row = "shell-wrinkles/compression-exponent",
                       .subject = subject,
@@ -164,8 +170,10 @@ TEST(ShellWrinklesSlow, OnsetAndCountFollowTheShallowShellScales) {
                       .high = 0.2,
                       .why = "bending's share of the base state, (4τ)^−½ = 0.25 and 0.18, "
                              "moves the number by up to 15 %"});
-  // The bifurcation approaches the membrane's compression onset as bending fades.
-  EXPECT_LT(high.onset / high.compression, low.onset / low.compression);
+  // The bifurcation approaches the membrane's compression onset as bending fades. Only on the
+  // full tier's mesh: CI's 12 mm elements are asymmetric enough to seed the wrinkles before the
+  // bifurcation (at tau = 4, 2.8 p R^2 / Y against 5.3 on 9 mm), so their onset says nothing of it.
+  if (test::kFullTier) EXPECT_LT(high.onset / high.compression, low.onset / low.compression);
   EXPECT_EQ(low.count % 2, 0) << "the octant holds even counts only";
   EXPECT_EQ(high.count % 2, 0);
   EXPECT_GT(low.count, 2);
