@@ -4,7 +4,7 @@
 // neo-Hookean c1 = 0.0033 MPa, p = 1e-4 MPa = 0.31 of the thin sphere's limit pressure
 // 2.479 c1 t / R, octant of one Taylor-Hood layer, a frictionless plate flattening the pole by
 // d = 0.2 R (the paper's 10 mm plate travel onto a sphere of this size on a frictionless floor);
-// 50 steps, about 3 minutes. Asserted:
+// 50 steps. Asserted:
 //  - the paper's answer at these values is not plisse's: the stability check finds no
 //    bifurcation at any step (every pivot count is the pressure unknowns' count), no ring's
 //    amplitude reaches the wrinkle threshold 0.1 t, and no element is in compression by the

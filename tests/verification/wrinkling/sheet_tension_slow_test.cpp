@@ -2,8 +2,8 @@
 // (validation/sheet-tension-wrinkling.yaml; study, references and convergence in
 // docs/studies/sheet-tension.md): L x W x t = 50 x 20 x 0.02 mm (L/W = 2.5, W/t = 1000),
 // neo-Hookean, quarter model, one layer of Taylor-Hood tetrahedra of 0.5 mm (25 t), no
-// imperfection, pulled to 35 % nominal strain in steps of 1 % (about 4 minutes on a quiet
-// machine). Measured across the middle of the sheet as scripts/sheet-wrinkles measures it
+// imperfection, pulled to 35 % nominal strain in steps of up to 1 % (docs/validation/ci.json has
+// its time). Measured across the middle of the sheet as scripts/sheet-wrinkles measures it
 // (sheet_profile.hpp); a step is wrinkled with at least 5 crests (two waves):
 //  - before the stability check finds the bifurcation the sheet is flat (below 0.1 t: what is
 //    left is the bending that one layer of tetrahedra, not symmetric about the mid-plane, couples

@@ -3,7 +3,7 @@
 // convergence in docs/studies/shell-indentation.md): mid-surface radius R = 200 mm, wall
 // t = 1 mm, neo-Hookean c1 = 1 MPa (E = 6 MPa, nu = 1/2), octant of one Taylor-Hood layer refined
 // to 0.25 mm about the pole, a rigid sphere of 1 mm radius pushing the pole in by up to 0.3 t
-// (two runs of about 1 to 2 minutes). Measured as scripts/shell-indentation measures it: the
+// (two runs). Measured as scripts/shell-indentation measures it: the
 // force on the whole sphere F = 4 force_y:indenter against the inward displacement w0 of the
 // mid-surface pole from its inflated position, k the linear coefficient of a least-squares fit
 // F = k w0 + c w0^2 over w0 <= 0.2 t. Shell theory for a point force:

@@ -22,9 +22,8 @@
 //     so each count is the nearest even one to its law's value, off by at most 1: m(8) exceeds
 //     m(4), and lies within sqrt(2) m(4) +- (1 + sqrt(2)) (the two counts' quantisation, the
 //     second scaled by sqrt(2)). A count that does not grow fails, whatever its value.
-// Two runs, tau = 4 and 8, each to w0 = 8 p R^2 / Y, on the case's mesh coarsened to 9 mm in the
-// full tier (the study's coarser mesh) and to 12 mm in CI's (kPoleSize)
-// about the pole (5 to 7 minutes each on 2 cores).
+// Two runs, tau = 4 and 8, each to w0 = 8 p R^2 / Y, on the case's mesh coarsened about the pole
+// to 9 mm in the full tier (the study's coarser mesh) and to 12 mm in CI's (kPoleSize).
 #include <gtest/gtest.h>
 
 #include <algorithm>
