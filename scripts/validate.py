@@ -37,8 +37,8 @@ TIERS = ("ci", "full")
 PAGES = [ROOT / "docs" / "validation.md"]
 RECORDS = ROOT / "docs" / "validation"
 TIER_TITLE = {
-    "ci": "CI tier: coarse meshes, run by every CI run",
-    "full": "full tier: the meshes the studies print",
+    "ci": "CI tier: the meshes CI runs on every change (the studies' own where CI can afford them)",
+    "full": "Full tier: the studies' meshes where CI runs coarser ones",
 }
 
 
@@ -77,9 +77,11 @@ def difference_text(kind, d):
 
 
 def band_text(kind, low, high):
+    """A claimed band: percent to 0.01, absolute bounds to 6 decimals (a bound set just above 0,
+    to exclude it, prints as +0)."""
     if kind == "relative":
-        return f"[{100 * low:+.1f}, {100 * high:+.1f}] %"
-    return f"[{low:+.4g}, {high:+.4g}]"
+        return f"[{round(100 * low, 2) + 0:+g}, {round(100 * high, 2) + 0:+g}] %"
+    return f"[{round(low, 6) + 0:+.4g}, {round(high, 6) + 0:+.4g}]"
 
 
 def row_line(c):
@@ -99,9 +101,10 @@ def block_text(tier, record):
         lines += ["", f"Not run yet: `scripts/validate --tier {tier}` writes this table.", "", end]
         return "\n".join(lines)
     minutes = record["seconds"] / 60
+    tests, jobs = len(record["tests"]), record["jobs"]
     lines += [f"`{record['command']}` at commit {record['commit']}, {record['date']}: "
-              f"{len(record['tests'])} tests in {minutes:.1f} minutes on {record['jobs']} "
-              f"processes."]
+              f"{tests} test{'s' * (tests != 1)} in {minutes:.1f} minutes on {jobs} "
+              f"process{'es' * (jobs != 1)} at once."]
     header = ("| case | quantity | plisse | reference | difference | claim (asserted) | mesh | "
               "test |\n|---|---|---|---|---|---|---|---|")
     for kind, title in (("validation", "Against published results"),

@@ -60,7 +60,7 @@ class TablesTest(Page):
         self.assertEqual(validate.check(), 1, "the page still has the empty blocks")
         validate.update()
         text = self.page.read_text()
-        self.assertIn("| a sheet | q | 0.97 | 1 (Someone 2001) | -3.00 % | [-4.0, -2.0] %", text)
+        self.assertIn("| a sheet | q | 0.97 | 1 (Someone 2001) | -3.00 % | [-4, -2] %", text)
         self.assertIn("abc1234", text)
         self.assertIn("Not run yet", text, "the full tier has no record")
         self.assertEqual(validate.check(), 0)
@@ -110,6 +110,8 @@ class NumbersTest(unittest.TestCase):
         self.assertEqual(validate.number(-0.24), "-0.24")
         self.assertEqual(validate.difference_text("relative", -0.0296), "-2.96 %")
         self.assertEqual(validate.band_text("absolute", -0.03, 0.03), "[-0.03, +0.03]")
+        self.assertEqual(validate.band_text("absolute", 1e-9, 0.015), "[+0, +0.015]")
+        self.assertEqual(validate.band_text("relative", -0.0025, 0.0948276), "[-0.25, +9.48] %")
 
 
 if __name__ == "__main__":
