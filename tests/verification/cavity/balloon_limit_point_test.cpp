@@ -2,9 +2,11 @@
 // 2 mm) inflated through its pressure maximum by a cavity (docs/theory/cavities.md), run with
 // `plisse run`: by prescribed volume (examples/balloon-limit-point.yaml) and by ideal-gas inflow
 // (balloon-gas.yaml here). The maximum of the cavity pressure and the inner stretch there must
-// match the closed form within 1 %. With the Taylor-Hood element (10-node tetrahedra, edge nodes
-// on the spheres) one layer of 4 mm elements must match it within 0.1 % (measured: 0.006 % on λa,
-// 0.004 % on P, with 3.3 thousand unknowns against MINI's 2 layers of 2 mm).
+// match the closed form within 1 %; for the example itself (docs/verification.md prints its
+// maximum: +0.005 % on λa, +0.22 % on P) within 0.01 % on λa and 0.3 % on P. With the Taylor-Hood
+// element (10-node tetrahedra, edge nodes on the spheres) one layer of 4 mm elements must match it
+// within 0.1 % (measured: 0.006 % on λa, 0.004 % on P, with 3.3 thousand unknowns against MINI's 2
+// layers of 2 mm).
 //
 // Reference: the exact thick-wall solution (Ogden, Non-linear Elastic Deformations, section 5.3.1)
 //   P(λa) = ∫_{λb}^{λa} Ŵ'(λ) / (λ³ − 1) dλ,  Ŵ(λ) = c1 (2λ² + λ⁻⁴ − 3),  λb³ = 1 + (A/B)³ (λa³ −
@@ -100,7 +102,11 @@ Maximum computed_maximum(const HistoryTable& h) {
   return {xm, y[0] + d01 * (xm - x[0]) + d2 * (xm - x[0]) * (xm - x[1])};
 }
 
-void expect_closed_form_maximum(const HistoryTable& h, const char* label, double tolerance = 0.01) {
+/// The computed maximum against the thick wall's: λa within `tolerance` (relative), P within
+/// `pressure_tolerance` (the same when not given).
+void expect_closed_form_maximum(const HistoryTable& h, const char* label, double tolerance = 0.01,
+                                double pressure_tolerance = 0.0) {
+  if (pressure_tolerance == 0.0) pressure_tolerance = tolerance;
   const Maximum exact = thick_wall_maximum();
   const Maximum fe = computed_maximum(h);
   const double thin_lambda = std::pow(7.0, 1.0 / 6.0);
@@ -110,7 +116,7 @@ void expect_closed_form_maximum(const HistoryTable& h, const char* label, double
       label, fe.lambda, exact.lambda, 100 * (fe.lambda / exact.lambda - 1), thin_lambda,
       fe.pressure, exact.pressure, 100 * (fe.pressure / exact.pressure - 1));
   EXPECT_NEAR(fe.lambda, exact.lambda, tolerance * exact.lambda);
-  EXPECT_NEAR(fe.pressure, exact.pressure, tolerance * exact.pressure);
+  EXPECT_NEAR(fe.pressure, exact.pressure, pressure_tolerance * exact.pressure);
 }
 
 /// Newton converges quadratically with the consistent bordered tangent: few iterations per step.
@@ -122,7 +128,7 @@ void expect_few_newton_iterations(const HistoryTable& h) {
 TEST(BalloonLimitPoint, VolumeControlPassesThePressureMaximumAtTheClosedFormStretch) {
   const HistoryTable h = run(test::example("balloon-limit-point.yaml"), "volume");
   ASSERT_GE(h.rows.size(), 10u);
-  expect_closed_form_maximum(h, "volume control");
+  expect_closed_form_maximum(h, "volume control", 1e-4, 3e-3);  // docs/verification.md's run
   expect_few_newton_iterations(h);
   // The constraint holds: V / (1 + 3 t) is the reference volume V0 at every step (volume_ratio 4),
   // and V0 is the octant of the inscribed polyhedron, just below the sphere's 4188.79 mm^3.
