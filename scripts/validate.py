@@ -102,9 +102,15 @@ def block_text(tier, record):
         return "\n".join(lines)
     minutes = record["seconds"] / 60
     tests, jobs = len(record["tests"]), record["jobs"]
-    lines += [f"`{record['command']}` at commit {record['commit']}, {record['date']}: "
-              f"{tests} test{'s' * (tests != 1)} in {minutes:.1f} minutes on {jobs} "
-              f"process{'es' * (jobs != 1)} at once."]
+    if record.get("regex"):  # a run of some tests, the others' rows kept from earlier runs
+        lines += [f"`{record['command']}` at commit {record['commit']}, {record['date']}, ran the "
+                  f"tests matching `{record['regex']}` in {minutes:.1f} minutes on {jobs} "
+                  f"process{'es' * (jobs != 1)} at once; the other rows are from earlier runs "
+                  f"(each test's own time below)."]
+    else:
+        lines += [f"`{record['command']}` at commit {record['commit']}, {record['date']}: "
+                  f"{tests} test{'s' * (tests != 1)} in {minutes:.1f} minutes on {jobs} "
+                  f"process{'es' * (jobs != 1)} at once."]
     header = ("| case | quantity | plisse | reference | difference | claim (asserted) | mesh | "
               "test |\n|---|---|---|---|---|---|---|---|")
     for kind, title in (("validation", "Against published results"),
@@ -238,9 +244,9 @@ def run(tier, regex, jobs):
     claims = [json.loads(line) for line in lines.read_text().splitlines()] if lines.is_file() else []
     old = read_record(tier) if regex else None
     if old:  # keep the rows and times of the tests this run left out
-        tests = {**{k: v for k, v in old["tests"].items() if k not in tests}, **tests}
-        claims = [c for c in old["claims"] if c["test"] not in junit_times(junit)] + claims
-        seconds = sum(t["seconds"] for t in tests.values()) / jobs
+        ran = set(tests)
+        tests = {**{k: v for k, v in old["tests"].items() if k not in ran}, **tests}
+        claims = [c for c in old["claims"] if c["test"] not in ran] + claims
     claims.sort(key=lambda c: (c["kind"] != "validation", c["row"]))
     record = {
         "tier": tier,
@@ -248,7 +254,8 @@ def run(tier, regex, jobs):
         "commit": git_commit(),
         "date": datetime.date.today().isoformat(),
         "jobs": jobs,
-        "seconds": round(seconds, 1),
+        "seconds": round(seconds, 1),  # this invocation's wall time
+        "regex": regex if old else None,
         "tests": tests,
         "claims": claims,
     }

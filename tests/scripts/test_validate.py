@@ -96,6 +96,13 @@ class TablesTest(Page):
         self.assertLess(text.index("Against published results"), text.index("Regression guards"))
         self.assertIn("| -0.1 | [-0.2, +0.2]", text)
 
+    def test_a_partial_run_says_which_tests_it_ran(self):
+        partial = record([claim("a/b", 0.97, 1.0, -0.04, -0.02)])
+        partial["regex"] = "Sheet"
+        self.write("# page\n\n" + self.blocks() + "\n", partial)
+        validate.update()
+        self.assertIn("ran the tests matching `Sheet` in 1.5 minutes", self.page.read_text())
+
     def test_markers_out_of_order_are_refused(self):
         begin, end = validate.markers("ci")
         self.write(f"{end}\n{begin}\n", record([]))
