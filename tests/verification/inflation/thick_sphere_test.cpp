@@ -75,8 +75,11 @@ void expect_convergence(const std::string& label, const std::string& overrides,
       "%s: max relative pressure error %.4f (h 1.4, 3 layers), %.4f (1.0, 4), %.4f (0.7, 6)\n",
       label.c_str(), coarse, medium, fine);
   const double errors[3] = {coarse, medium, fine};
-  for (int k = 0; k < 3; ++k)
-    if (bounds[k] > 0.0) EXPECT_LT(errors[k], bounds[k]) << label << ", mesh " << k;
+  for (int k = 0; k < 3; ++k) {
+    if (bounds[k] > 0.0) {
+      EXPECT_LT(errors[k], bounds[k]) << label << ", mesh " << k;
+    }
+  }
   EXPECT_LT(medium, coarse);
   EXPECT_LT(fine, medium);
 }
