@@ -32,6 +32,8 @@ import time
 import xml.etree.ElementTree as ElementTree
 from pathlib import Path
 
+from plisse_study.provenance import tree_commit
+
 ROOT = Path(__file__).resolve().parent.parent
 TIERS = ("ci", "full")
 PAGES = [ROOT / "docs" / "validation.md"]
@@ -194,15 +196,6 @@ def update():
             print(f"validate: wrote {page.relative_to(ROOT)}")
 
 
-def git_commit():
-    done = subprocess.run(["git", "-C", str(ROOT), "rev-parse", "--short", "HEAD"],
-                          capture_output=True, text=True)
-    commit = done.stdout.strip() if done.returncode == 0 else "unknown"
-    dirty = subprocess.run(["git", "-C", str(ROOT), "diff", "--quiet", "HEAD", "--", "src",
-                            "tests"]).returncode
-    return commit + ("+changes" if dirty else "")
-
-
 def junit_times(path):
     """{test: {seconds, status}} from ctest's JUnit output."""
     tests = {}
@@ -251,7 +244,7 @@ def run(tier, regex, jobs):
     record = {
         "tier": tier,
         "command": f"scripts/validate --tier {tier}",
-        "commit": git_commit(),
+        "commit": tree_commit(ROOT),
         "date": datetime.date.today().isoformat(),
         "jobs": jobs,
         "seconds": round(seconds, 1),  # this invocation's wall time

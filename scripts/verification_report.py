@@ -21,9 +21,10 @@ import datetime
 import difflib
 import json
 import math
-import subprocess
 import sys
 from pathlib import Path
+
+from plisse_study.provenance import tree_commit
 
 ROOT = Path(__file__).resolve().parent.parent
 COMMAND = "scripts/verification-report"
@@ -51,17 +52,6 @@ def claim_holds(run, error, tolerance):
 
 def record_path(docs):
     return docs / "verification" / "record.json"
-
-
-def git_commit():
-    """The short commit of HEAD, with "+changes" when src/ or tests/ differ from it."""
-    done = subprocess.run(["git", "-C", str(ROOT), "rev-parse", "--short", "HEAD"],
-                          capture_output=True, text=True)
-    if done.returncode != 0:
-        return "unknown"
-    dirty = subprocess.run(["git", "-C", str(ROOT), "diff", "--quiet", "HEAD", "--", "src",
-                            "tests"]).returncode
-    return done.stdout.strip() + ("+changes" if dirty else "")
 
 
 # Measure: runs -> numbers (and figures).
@@ -371,7 +361,7 @@ def measure(runs, figures, run_time=None):
         "balloon_limit_point": measure_balloon(runs, figures),
         "balloon_ogden": measure_ogden_balloon(runs, figures),
     }
-    return {"command": COMMAND, "commit": git_commit(), "date": datetime.date.today().isoformat(),
+    return {"command": COMMAND, "commit": tree_commit(ROOT), "date": datetime.date.today().isoformat(),
             "run_time_seconds": run_time, "tables": tables}
 
 
