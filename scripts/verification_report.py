@@ -424,7 +424,7 @@ def render_cube_sticking(t):
         "The stuck edges are stress singularities, and a coarse mesh overestimates the force markedly.",
         "tests/verification/cube_tension_test.cpp asserts every force above the homogeneous one and",
         "falling with refinement, and, as regression guards (no closed form gives the converged",
-        "force), the three forces to 1e-5 and the order within 0.05.",
+        "force), the three forces to 1e-5, the order and the extrapolation to the digits shown.",
         "",
         "![cube tension, sticking](figures/cube-tension-sticking.png)",
         "",

@@ -322,7 +322,9 @@ TEST(CubeTension, FibresAlongAndAcrossThePullMatchClosedFormsWithBothElements) {
 // of docs/verification.md's runs: the die force at λ = 5 stays above that bound and falls with
 // refinement. Regression guards against the page's runs (the stuck edges are singular and no
 // closed form gives the converged force): the three forces 93.6872, 67.7645 and 60.0091 N to
-// 1e-5, and the observed order of the force under halving of h, 1.74, within 0.05.
+// 1e-5, the observed order of the force under halving of h, 1.74, within 0.005, and the
+// Richardson extrapolation from the two finest meshes, 56.70 N (1.089 times the homogeneous
+// force), within 0.005 N; it must lie between the homogeneous force and the finest mesh's.
 TEST(CubeTension, StickingEndsNeedMoreForceThanTheHomogeneousStretchAndConverge) {
   const double lambda = 5.0, c1 = 0.2, c2 = 0.05;
   const double homogeneous =
@@ -348,7 +350,12 @@ TEST(CubeTension, StickingEndsNeedMoreForceThanTheHomogeneousStretchAndConverge)
   EXPECT_LT(force[1], force[0]);
   EXPECT_LT(force[2], force[1]);
   const double order = std::log((force[0] - force[1]) / (force[1] - force[2])) / std::log(2.0);
-  EXPECT_NEAR(order, 1.74, 0.05);
+  EXPECT_NEAR(order, 1.74, 0.005);
+  const double extrapolated = force[2] - (force[1] - force[2]) / (std::pow(2.0, order) - 1.0);
+  EXPECT_NEAR(extrapolated, 56.70, 0.005);
+  EXPECT_NEAR(extrapolated / homogeneous, 1.089, 0.0005);
+  EXPECT_GT(extrapolated, homogeneous);
+  EXPECT_LT(extrapolated, force[2]);
 }
 
 }  // namespace
