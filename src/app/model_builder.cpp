@@ -415,7 +415,7 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
       terms.push_back(make_surface_contact_term(pair, mesh, mu));
   }
   if (c.solver.viscosity > 0.0) {
-    // ℓ of docs/theory/viscous.md (V1): the wall thickness (generated shell, airbag or sheet, or
+    // ℓ of docs/theory/viscous.md (Z1): the wall thickness (generated shell, airbag or sheet, or
     // `mesh.thickness` of a file mesh), else the mean edge length of the mesh.
     const double length = c.mesh.wall_thickness().value_or(mean_edge_length(mesh));
     terms.push_back(

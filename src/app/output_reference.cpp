@@ -19,7 +19,7 @@ const std::vector<OutputEntry> kHistory = {
      "here (summary.json `failed_newton_iterations`)"},
     {"residual_norm", "N", "always",
      "‖R‖₂ of the free equations at the converged state (nodal forces, and the pressure "
-     "equations' volume change times μ/h: docs/theory/mixed_up.md, W1)"},
+     "equations' volume change times μ/h: docs/theory/mixed_up.md, X1)"},
     {"pressure:<load>", "MPa", "`loads[]` of type pressure",
      "the pressure at t, `value` times its ramp; positive pushes against the body's outward "
      "normal (on a balloon's `inner` surface it inflates)"},

@@ -169,7 +169,7 @@ ElementStatus assemble_mini(const TetGeometry& g, const ElemVec& x_e, const Mate
 
 /// Volume averages of Cauchy stress, J, von Mises stress and pressure over the element at the
 /// given state (x_e, bubble); the bubble is not re-solved (pass the converged one).
-///   σ = J⁻¹ (P - p cof F) Fᵀ = J⁻¹ P Fᵀ - p I   (F1)
+///   σ = J⁻¹ (P - p cof F) Fᵀ = J⁻¹ P Fᵀ - p I   (Y1)
 /// Precondition: det F > 0 at every quadrature point (checked, throws plisse::Error).
 template <class Material>
 ElementFields compute_element_fields(const TetGeometry& g, const ElemVec& x_e, const Material& mat,

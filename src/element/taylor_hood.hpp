@@ -134,7 +134,7 @@ ElementStatus assemble(const Geometry& g, const ElemVec& x_e, const Material& ma
 }
 
 /// Volume averages of Cauchy stress, J, von Mises stress and pressure over the element.
-///   σ = J⁻¹ P Fᵀ - p I   (as the MINI element's F1)
+///   σ = J⁻¹ P Fᵀ - p I   (mixed_up.md, Y1, as for the MINI element)
 /// Precondition: det F > 0 at every quadrature point (checked, throws plisse::Error).
 template <class Material>
 ElementFields compute_element_fields(const Geometry& g, const ElemVec& x_e, const Material& mat) {

@@ -52,7 +52,7 @@ Schema<NewtonSettings> newton_schema() {
   s.real("rtol", &NewtonSettings::rtol, kOpenUnit, "–", "relative residual tolerance");
   s.real("atol", &NewtonSettings::atol, Range::non_negative(), "N",
          "absolute residual tolerance (the pressure equations count as forces: their volume "
-         "change times mu/h, docs/theory/mixed_up.md, W1)");
+         "change times mu/h, docs/theory/mixed_up.md, X1)");
   s.integer("max_iterations", &NewtonSettings::max_iterations, Range::at_least(1),
             "Newton iterations per step before the step counts as failed");
   s.choice<LineSearch>("line_search", &NewtonSettings::line_search, kLineSearches,

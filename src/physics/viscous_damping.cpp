@@ -31,7 +31,7 @@ double mean_edge_length(const Mesh& mesh) {
 namespace {
 
 /// Calls add(node, V) with the lumped volume V [mm^3] of every node of every tetrahedron
-/// (viscous.md, V1 and V5), element by element.
+/// (viscous.md, Z1 and Z5), element by element.
 template <class Add>
 void for_each_lumped_volume(const Mesh& mesh, Add&& add) {
   if (mesh.order() == 1) {
@@ -53,7 +53,7 @@ void for_each_lumped_volume(const Mesh& mesh, Add&& add) {
       nodes[a] = a < th::kCorners ? mesh.tets[t][a] : mesh.tet_edge_nodes[t][a - th::kCorners];
       X[a] = mesh.nodes[static_cast<std::size_t>(nodes[a])];
     }
-    // (viscous.md, V5): V_a = V_e m_a / Σ_b m_b with m_a = ∫ N_a² dV (the row sums ∫ N_a dV
+    // (viscous.md, Z5): V_a = V_e m_a / Σ_b m_b with m_a = ∫ N_a² dV (the row sums ∫ N_a dV
     // would give the corners -V_e / 20, a negative damping).
     const th::Geometry g = th::compute_geometry(X);
     std::array<double, th::kNodes> m{};
@@ -98,10 +98,10 @@ void ViscousDamping::assemble(double t, std::span<const double> x, std::span<dou
   const double dt = t - t_accepted_;
   if (!(dt > 0.0)) return;
   for (std::size_t j = 0; j < coefficient_.size(); ++j) {
-    const double c = coefficient_[j] / dt;  // (V2)
+    const double c = coefficient_[j] / dt;  // (Z2)
     if (c == 0.0) continue;                 // constrained, or a node of no element
     const std::size_t dof = state_index(j);
-    residual[dof] += c * (x[dof] - u_accepted_[j]);  // (V1)
+    residual[dof] += c * (x[dof] - u_accepted_[j]);  // (Z1)
     if (tangent != nullptr) {
       const std::array<int, 1> index = {static_cast<int>(dof)};
       const std::array<double, 1> value = {c};
@@ -121,7 +121,7 @@ double ViscousDamping::step_work(std::span<const double> x, double dt) const {
 
 void ViscousDamping::accept_step(std::span<const double> x) {
   const double dt = t_current_ - t_accepted_;
-  if (dt > 0.0) dissipated_energy_ += step_work(x, dt);  // (V3)
+  if (dt > 0.0) dissipated_energy_ += step_work(x, dt);  // (Z3)
   for (std::size_t j = 0; j < u_accepted_.size(); ++j) u_accepted_[j] = x[state_index(j)];
   t_accepted_ = t_current_;
 }

@@ -1,13 +1,13 @@
 #pragma once
 /// Viscous stabilisation: an artificial nodal damping force that resists the displacement
 /// increment of the current step, to pass snap-throughs and wrinkle onset quasi-statically
-/// (docs/theory/viscous.md, eqs. V1-V4).
+/// (docs/theory/viscous.md, eqs. Z1-Z4).
 ///
-///   F_i = c_i (u_i - u_i^n) / Δt,   c_i = η V_i / ℓ²,   Δt = t - t^n > 0                   (V1)
-///   dF_i / du_i = c_i / Δt I (diagonal, symmetric positive)                                (V2)
-///   D^{n+1} = D^n + Σ_i F_i · (u_i - u_i^n)   at the converged state of the step             (V3)
+///   F_i = c_i (u_i - u_i^n) / Δt,   c_i = η V_i / ℓ²,   Δt = t - t^n > 0                   (Z1)
+///   dF_i / du_i = c_i / Δt I (diagonal, symmetric positive)                                (Z2)
+///   D^{n+1} = D^n + Σ_i F_i · (u_i - u_i^n)   at the converged state of the step             (Z3)
 /// η [MPa s] is `solver.viscosity`, ℓ [mm] a length (wall thickness), V_i [mm³] the lumped
-/// reference volume of node i (Σ_e V_e / 4 on linear tetrahedra, V5 on 10-node ones), u^n and
+/// reference volume of node i (Σ_e V_e / 4 on linear tetrahedra, Z5 on 10-node ones), u^n and
 /// t^n the last accepted state.
 /// F = 0 when Δt <= 0, and on constrained components (fixed, prescribed, symmetry): their residual
 /// rows are not equations, so a force there would not act but would count in D. The force is
@@ -35,11 +35,11 @@ class ViscousDamping : public ModelTerm {
   ViscousDamping(const Mesh& mesh, double viscosity, double length,
                  const std::vector<ConstrainedComponent>& constraints = {});
 
-  /// Adds F_i (V1) to the displacement rows of `residual` and c_i / Δt (V2) to the diagonal of
+  /// Adds F_i (Z1) to the displacement rows of `residual` and c_i / Δt (Z2) to the diagonal of
   /// `tangent`; remembers t as the time of the step being solved.
   void assemble(double t, std::span<const double> x, std::span<double> residual,
                 TangentSink* tangent) override;
-  /// Adds the step's dissipation (V3) at the converged x, then u^n = u(x), t^n = t of the last
+  /// Adds the step's dissipation (Z3) at the converged x, then u^n = u(x), t^n = t of the last
   /// assemble.
   void accept_step(std::span<const double> x) override;
 
@@ -56,14 +56,14 @@ class ViscousDamping : public ModelTerm {
   double dissipated_energy() const { return dissipated_energy_; }  ///< D [mJ]
   /// c_i = η V_i / ℓ² [N s / mm] of one component (0 when it is constrained). V_i is the lumped
   /// volume of node i: Σ_e V_e / 4 over its linear tetrahedra; for 10-node tetrahedra the
-  /// diagonally scaled lumping V_e ∫ N_i² dV / Σ_b ∫ N_b² dV (V5: V_e / 36 per corner and
+  /// diagonally scaled lumping V_e ∫ N_i² dV / Σ_b ∫ N_b² dV (Z5: V_e / 36 per corner and
   /// 4 V_e / 27 per edge node of a straight one), which stays positive.
   double damping_coefficient(int node, int component) const {
     return coefficient_[3 * static_cast<std::size_t>(node) + static_cast<std::size_t>(component)];
   }
 
  private:
-  /// Σ_i F_i · (u_i - u_i^n) at state x and step Δt > 0 (the work of V3).
+  /// Σ_i F_i · (u_i - u_i^n) at state x and step Δt > 0 (the work of Z3).
   double step_work(std::span<const double> x, double dt) const;
 
   std::vector<double> coefficient_;  ///< c_i [N s / mm], 3 per node (0: constrained component)

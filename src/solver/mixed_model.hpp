@@ -129,7 +129,7 @@ class MixedModel {
   void set_external_force(std::vector<double> force, Ramp ramp);
 
   /// The free system's weight of the pressure equations, w = mu / h [N/mm^3] (docs/theory/
-  /// mixed_up.md, W1): the free vectors, residuals and tangents below carry the pressure
+  /// mixed_up.md, X1): the free vectors, residuals and tangents below carry the pressure
   /// unknowns as p / w [mm] and their equations (volume change, mm^3) times w [N], so that every
   /// entry of the residual is a force and its norm, which the line search and the convergence
   /// test read, weighs equilibrium and incompressibility alike. mu is the volume average of the

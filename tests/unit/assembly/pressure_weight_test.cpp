@@ -1,4 +1,4 @@
-// The weighted free system of MixedModel (docs/theory/mixed_up.md, W1): the pressure unknowns
+// The weighted free system of MixedModel (docs/theory/mixed_up.md, X1): the pressure unknowns
 // enter the free vectors as p / w and their equations times w, w = mu / h, so that every entry of
 // the residual is a force.
 //  - w is the shear modulus over the edge of the regular tetrahedron of the mean element volume

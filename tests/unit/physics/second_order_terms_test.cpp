@@ -3,7 +3,7 @@
 // and their nodes, the follower pressure on flat, curved and closed surfaces, the cavity volume of
 // a sphere and its convergence, the cavity's derivatives, Dirichlet conditions on edge nodes, body
 // force and viscous lumping on 10-node tetrahedra, and the die's consistent tributary areas
-// (docs/theory/loads.md L7-L10, cavities.md C12-C13, contact.md D16, viscous.md V5).
+// (docs/theory/loads.md L7-L10, cavities.md C12-C13, contact.md D16, viscous.md Z5).
 #include <gtest/gtest.h>
 
 #include <cmath>

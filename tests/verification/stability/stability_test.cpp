@@ -76,7 +76,7 @@ TEST(InertiaCheck, CountsTheNegativeEigenvaluesOfTheTangentExactly) {
   std::uniform_real_distribution<double> noise(-1e-3, 1e-3);
   for (double strain : {0.0, 0.05, 0.25}) {  // Euler: eps_cr = pi^2 / 108 = 0.091 here
     // Uniaxial compression, lateral stress free: l1 = 1 - strain, l2 = l3 = l1^(-1/2), and
-    // sigma = 2 c1 dev B - p I with sigma_22 = 0 (mixed_up.md, F1); plus noise.
+    // sigma = 2 c1 dev B - p I with sigma_22 = 0 (mixed_up.md, Y1); plus noise.
     const double l1 = 1.0 - strain, l2 = 1.0 / std::sqrt(l1);
     const double p = 2.0 * spec.c1 * (l2 * l2 - (l1 * l1 + 2.0 * l2 * l2) / 3.0);
     auto& x = model.state();
