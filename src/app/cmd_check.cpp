@@ -9,7 +9,7 @@
 
 #include "app/commands.hpp"
 #include "app/model_builder.hpp"
-#include "app/run_case.hpp"
+#include "app/run_session.hpp"
 #include "app/wrinkling.hpp"
 #include "io/case.hpp"
 #include "material/registry.hpp"

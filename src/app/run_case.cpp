@@ -1,24 +1,23 @@
 #include "app/run_case.hpp"
 
-#include <unistd.h>
-
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <sstream>
 
 #include "analysis/point_location.hpp"
 #include "app/model_builder.hpp"
 #include "app/progress_line.hpp"
+#include "app/run_plan.hpp"
 #include "app/run_recorder.hpp"
+#include "app/run_session.hpp"
 #include "app/wrinkling.hpp"
 #include "core/error.hpp"
 #include "core/wall_clock.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case.hpp"
 #include "io/checkpoint.hpp"
-#include "io/petsc_option_text.hpp"
 #include "io/run_directory.hpp"
 #include "io/run_log.hpp"
 #include "mesh/topology.hpp"
@@ -27,52 +26,32 @@
 #include "solver/load_stepper.hpp"
 #include "solver/petsc_call.hpp"
 #include "solver/petsc_session.hpp"
-#include "solver/thread_counts.hpp"
 
 namespace plisse::app {
 namespace {
 
 namespace fs = std::filesystem;
 
-volatile std::sig_atomic_t g_interrupt = 0;
-/// The first SIGINT/SIGTERM asks the run to stop; a second one ends the process at once. What
-/// was written stays whole: files are replaced by rename or grow by whole lines, and the next run
-/// or resume in the directory removes the temporaries and takes over the lock.
-extern "C" void on_interrupt(int) {
-  if (g_interrupt != 0) {
-    static const char kMessage[] =
-        "\nplisse: second interrupt: stopping at once; the files written so far are whole, the "
-        "last checkpoint is the place to resume from\n";
-    const ssize_t written = ::write(STDERR_FILENO, kMessage, sizeof kMessage - 1);
-    (void)written;
-    ::_exit(1);
-  }
-  g_interrupt = 1;
-}
-
-/// SIGINT/SIGTERM set a flag for the duration of a run; the stepper asks it before every step and
-/// after every Newton iteration, stops with the last converged step and the run checkpoints it. A
-/// second signal ends the process at once (on_interrupt). The previous handlers come back at the
-/// end.
-class InterruptGuard {
- public:
-  InterruptGuard() {
-    g_interrupt = 0;
-    previous_int_ = std::signal(SIGINT, on_interrupt);
-    previous_term_ = std::signal(SIGTERM, on_interrupt);
-  }
-  ~InterruptGuard() {
-    std::signal(SIGINT, previous_int_);
-    std::signal(SIGTERM, previous_term_);
-  }
-  InterruptGuard(const InterruptGuard&) = delete;
-  InterruptGuard& operator=(const InterruptGuard&) = delete;
-  bool requested() const { return g_interrupt != 0; }
-
- private:
-  void (*previous_int_)(int) = SIG_DFL;
-  void (*previous_term_)(int) = SIG_DFL;
+/// The mesh the run solves on, the seconds its reading or generation took, and the run's
+/// fingerprint (of the case file, the --set values and the mesh).
+struct RunMesh {
+  Mesh mesh;
+  double seconds = 0.0;
+  RunFingerprint fingerprint;
 };
+
+/// Reads or generates the case's mesh and refuses what this build cannot solve on it.
+RunMesh load_run_mesh(const Case& c, const RunOptions& options) {
+  const auto t0 = WallClock::now();
+  RunMesh run_mesh{load_perturbed_mesh(c), 0.0, {}};
+  if (const auto unsupported = unsupported_features(c, run_mesh.mesh); !unsupported.empty())
+    throw unsupported.front();
+  run_mesh.seconds = seconds_since(t0);
+  // After the mesh file has passed its reader's checks (type, size): it is hashed whole.
+  run_mesh.fingerprint = run_fingerprint(options.case_file, options.overrides,
+                                         c.mesh.file.value_or(""), run_mesh.mesh);
+  return run_mesh;
+}
 
 /// Every rank builds the mesh on its own (reads or generates it); they must agree, node for node.
 void check_same_mesh_on_every_rank(const Mesh& mesh) {
@@ -88,67 +67,105 @@ void check_same_mesh_on_every_rank(const Mesh& mesh) {
         "reproducible here); write the mesh once with `plisse mesh` and use mesh.file");
 }
 
-/// Why a new run may not write into `directory` (empty: it may): the files of an earlier run.
-std::string earlier_run_refusal(const fs::path& directory) {
-  const std::vector<fs::path> files = run_files(directory);
-  if (files.empty()) return {};
-  std::string names;
-  for (std::size_t i = 0; i < std::min<std::size_t>(files.size(), 3); ++i)
-    names += (i > 0 ? ", " : "") + files[i].filename().string();
-  if (files.size() > 3) names += " and " + std::to_string(files.size() - 3) + " more";
-  return "holds an earlier run (" + names +
-         "); continue it with --resume, replace it with --overwrite, or choose another -o";
-}
-
-}  // namespace
-
-void check_solver_options(const Case& c, const std::vector<std::string>& command_line_options) {
-  try {
-    check_petsc_options(c.solver.newton);
-  } catch (const Error& e) {
-    std::string given = c.solver.petsc_options;
-    for (const auto& o : command_line_options) given += (given.empty() ? "" : " ") + o;
-    const InputPlace place = command_line_options.empty()
-                                 ? c.solver.petsc_options_place
-                                 : InputPlace{"command line", 0, 0, "--petsc"};
-    throw InputError(place, "PETSc refuses the options '" + given + "': " + e.what());
-  }
-}
-
-namespace {
-
-/// Everything run_case prepared and checked before PETSc started: what solve_and_write needs.
-struct PreparedRun {
+/// What every step of the driver reads: the options, the case, the plan, the mesh, the session
+/// and the run's start (all borrowed from run_case).
+struct RunContext {
   const RunOptions& options;
   const Case& c;
+  const RunPlan& plan;
+  const RunMesh& mesh;
+  const RunSession& session;
   WallClock::time_point start;
-  fs::path out_dir;
-  const RunFingerprint& fingerprint;
-  const std::optional<Checkpoint>& checkpoint;
-  const std::optional<Checkpoint>& from;  ///< --from: the earlier run's last state
-  const Mesh& mesh;
-  double time_mesh;
-  ModelParts parts;
-  const InterruptGuard& interrupts;
-  std::string threads;  ///< describe(apply_thread_counts(...)), for the log
 };
 
-/// The log's opening lines: the case, the output directory, the sizes and (distributed) the
-/// split of the work among the ranks. Collective.
-void log_header(RunLog& log, const PreparedRun& run, const fs::path& directory,
-                const MixedModel& model, std::size_t n_constrained) {
+/// What solves the case: the model, its load stepper and, when the case measures wrinkles, the
+/// wrinkle meter. Needs a live RunSession.
+struct RunSolver {
+  RunSolver(const Case& c, const Mesh& mesh, ModelParts parts)
+      : n_constrained(parts.constraints.size()),
+        model(make_run_model(c, mesh, std::move(parts))),
+        stepper(*model, c.solver) {
+    stepper.set_stability(stability_options(c));
+    if (c.output.wrinkles.enabled()) wrinkle_meter.emplace(c, mesh);
+  }
+  static std::unique_ptr<MixedModel> make_run_model(const Case& c, const Mesh& mesh,
+                                                    ModelParts parts) {
+    // A rigid cap borders the tangent with one multiplier per tied component: MUMPS needs more
+    // working space than it estimates (linear_solver.hpp, request_factor_workspace).
+    if (!c.caps.empty()) request_factor_workspace(100);
+    return make_model(mesh, std::move(parts));
+  }
+  std::size_t n_constrained;  ///< constrained components of the model
+  std::unique_ptr<MixedModel> model;
+  LoadStepper stepper;
+  std::optional<WrinkleMeter> wrinkle_meter;
+};
+
+/// The run directory, this run's alone while it runs, with the run's log (rank 0's writes
+/// log.txt, the other ranks' write nowhere). Collective.
+class RunOutput {
+ public:
+  /// Takes the directory's lock and applies the plan: a directory in use, or holding an earlier
+  /// run that the plan refuses to replace, is refused (InputError at the directory, key --resume
+  /// or -o; rank 0 decides for all). Then removes the earlier run's files (--overwrite) or the
+  /// temporaries a killed run left, and starts the log (a resumed run appends to its log.txt).
+  explicit RunOutput(const RunPlan& plan) : directory_(plan.directory) {
+    const bool root = PetscSession::rank() == 0;
+    const InputPlace place{directory_.directory().string(), 0, 0, plan.directory_key};
+    std::string refusal;
+    if (root) {
+      try {
+        lock_.emplace(directory_.directory(), place);
+        if (plan.refuse_earlier_run) refusal = earlier_run_refusal(directory_.directory());
+      } catch (const InputError& e) {
+        refusal = e.rule();
+      }
+    }
+    refusal = from_root(refusal);
+    if (!refusal.empty()) throw InputError(place, refusal);
+    // The earlier run's files themselves are whole (atomic writes and whole-line appends).
+    // Rank 0's files: a failure there is agreed by all ranks, which then unwind together.
+    on_every_rank_alike([&] {
+      if (!root) return;
+      removed_ = plan.overwrite ? remove_run_files(directory_.directory())
+                                : remove_stale_temporaries(directory_.directory());
+      log_.emplace(directory_.log_txt(), plan.resume ? LogStart::append : LogStart::replace);
+    });
+    if (!root) log_.emplace(fs::path{}, nullptr, nullptr);
+  }
+
+  const RunDirectory& directory() const { return directory_; }
+  RunLog& log() { return *log_; }
+  /// Appends the new log lines to log.txt (collective: a failed write is agreed by all ranks).
+  void flush_log() {
+    on_every_rank_alike([&] { log_->flush(); });
+  }
+  /// The files removed when the directory was taken (rank 0; 0 on the other ranks).
+  int removed() const { return removed_; }
+
+ private:
+  RunDirectory directory_;
+  std::optional<DirectoryLock> lock_;  ///< rank 0's
+  std::optional<RunLog> log_;
+  int removed_ = 0;
+};
+
+/// The log's lines about the input: the case, the output directory, the sizes, the threads, the
+/// warnings, where the point loads and probes sit.
+void log_input(RunLog& log, const RunContext& run, const RunOutput& out, const RunSolver& solver) {
   const Case& c = run.c;
-  const Mesh& mesh = run.mesh;
+  const Mesh& mesh = run.mesh.mesh;
+  const MixedModel& model = *solver.model;
   log.info("plisse run " + run.options.case_file + (c.title.empty() ? "" : "  (" + c.title + ")"));
-  log.info("output: " + directory.string());
+  log.info("output: " + out.directory().directory().string());
   for (const auto& o : run.options.overrides) log.info("  --set " + o);
   char line[256];
   std::snprintf(line, sizeof line,
                 "mesh: %d nodes, %d tetrahedra (%s); unknowns: %d (%d pressure), %zu constrained",
                 mesh.n_nodes(), mesh.n_tets(), to_string(model.element_family()).c_str(),
-                model.n_free(), model.dofs().n_free_pressure(), n_constrained);
+                model.n_free(), model.dofs().n_free_pressure(), solver.n_constrained);
   log.info(line);
-  log.info("threads: " + run.threads);
+  log.info("threads: " + run.session.threads());
   log.info(
       "units: the case's, consistent (mm, N, MPa, s in plisse's docs); history.csv's "
       "columns: summary.json history_units, plisse outputs");
@@ -170,109 +187,69 @@ void log_header(RunLog& log, const PreparedRun& run, const fs::path& directory,
                   at.position.x(), at.position.y(), at.position.z(), at.distance);
     log.info(line);
   }
+}
+
+/// The log's line on the split of the work among the ranks of a distributed run. Collective.
+void log_distribution(RunLog& log, const MixedModel& model) {
   if (model.n_ranks() == 1) return;
   // Each rank evaluates the elements touching its nodes: the cut elements twice.
-  const int owned = model.n_owned();
+  const int owned = model.n_owned(), n_tets = model.mesh().n_tets();
   int most = owned, fewest = owned, evaluated = static_cast<int>(model.local_elements().size());
   PLISSE_PETSC(MPI_Allreduce(MPI_IN_PLACE, &most, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD));
   PLISSE_PETSC(MPI_Allreduce(MPI_IN_PLACE, &fewest, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD));
   PLISSE_PETSC(MPI_Allreduce(MPI_IN_PLACE, &evaluated, 1, MPI_INT, MPI_SUM, PETSC_COMM_WORLD));
+  char line[256];
   std::snprintf(line, sizeof line,
                 "distributed over %d ranks: %d to %d unknowns per rank; %d element "
                 "evaluations per assembly for %d elements (+%.1f %%)",
-                model.n_ranks(), fewest, most, evaluated, mesh.n_tets(),
-                100.0 * (evaluated - mesh.n_tets()) / std::max(1, mesh.n_tets()));
+                model.n_ranks(), fewest, most, evaluated, n_tets,
+                100.0 * (evaluated - n_tets) / std::max(1, n_tets));
   log.info(line);
 }
 
-/// Builds the model, steps to the end and writes the run directory through a RunRecorder.
-/// Distributed runs: every rank runs all of it; rank 0 alone writes the log.
-void solve_and_write(PreparedRun run) {
-  const Case& c = run.c;
-  const std::optional<Checkpoint>& checkpoint = run.checkpoint;
-  const bool root = PetscSession::rank() == 0;
+/// The log's opening lines, and what taking the directory removed. Collective.
+void log_header(const RunContext& run, RunOutput& out, const RunSolver& solver) {
+  log_input(out.log(), run, out, solver);
+  log_distribution(out.log(), *solver.model);
+  if (out.removed() > 0)
+    out.log().info("removed " + std::to_string(out.removed()) +
+                   (run.plan.overwrite ? " file(s) of the earlier run (--overwrite)"
+                                       : " temporary file(s) an interrupted run left"));
+}
 
-  const auto t0 = WallClock::now();
-  const std::size_t n_constrained = run.parts.constraints.size();
-  // A rigid cap borders the tangent with one multiplier per tied component: MUMPS needs more
-  // working space than it estimates (linear_solver.hpp, request_factor_workspace).
-  if (!c.caps.empty()) request_factor_workspace(100);
-  const std::unique_ptr<MixedModel> model = make_model(run.mesh, std::move(run.parts));
-  LoadStepper stepper(*model, c.solver);
-  stepper.set_stability(stability_options(c));
-  std::optional<WrinkleMeter> wrinkle_meter;
-  if (c.output.wrinkles.enabled()) wrinkle_meter.emplace(c, run.mesh);
-  const StartTimes times{run.start, run.time_mesh, seconds_since(t0)};
+/// A resumed run: the model and the stepper continue from the checkpoint. A checkpoint the model
+/// cannot take is an InputError at the directory's checkpoint.bin (key --resume).
+void restore_checkpoint(const RunPlan& plan, const RunDirectory& directory, RunSolver& solver) {
+  if (!plan.resume) return;
+  const Checkpoint& checkpoint = *plan.resume;
+  try {
+    solver.model->restore({checkpoint.state, checkpoint.bubbles, checkpoint.term_states});
+  } catch (const InputError&) {
+    throw;
+  } catch (const Error& e) {
+    throw InputError({(directory.directory() / "checkpoint.bin").string(), 0, 0, "--resume"},
+                     e.what());
+  }
+  solver.stepper.resume({checkpoint.steps, checkpoint.time, checkpoint.dt, checkpoint.previous_dt,
+                         checkpoint.previous_state, checkpoint.negative_pivots});
+}
 
-  const RunDirectory dir(run.out_dir);
-  // The directory is this run's alone while it runs, and a new run neither mixes its files with
-  // an earlier run's nor replaces them unless asked to. Rank 0 decides for all.
-  const InputPlace place{dir.directory().string(), 0, 0, checkpoint ? "--resume" : "-o"};
-  std::optional<DirectoryLock> lock;
-  std::string refusal;
-  if (root) {
-    try {
-      lock.emplace(dir.directory(), place);
-      if (!checkpoint && !run.options.overwrite) refusal = earlier_run_refusal(dir.directory());
-    } catch (const InputError& e) {
-      refusal = e.rule();
-    }
-  }
-  refusal = from_root(refusal);
-  if (!refusal.empty()) throw InputError(place, refusal);
-  // --overwrite: the earlier run's files go; otherwise what a run killed mid-write left behind
-  // (its files themselves are whole: atomic writes and whole-line appends).
-  // Rank 0's files: a failure there is agreed by all ranks, which then unwind together.
-  int removed = 0;
-  std::optional<RunLog> root_log;  // other ranks: a log that writes nowhere
-  on_every_rank_alike([&] {
-    if (!root) return;
-    removed = run.options.overwrite ? remove_run_files(dir.directory())
-                                    : remove_stale_temporaries(dir.directory());
-    root_log.emplace(dir.log_txt(), checkpoint ? LogStart::append : LogStart::replace);
-  });
-  if (!root) root_log.emplace(fs::path{}, nullptr, nullptr);
-  RunLog& log = *root_log;
-  const auto flush_log = [&] { on_every_rank_alike([&] { log.flush(); }); };
-  log_header(log, run, dir.directory(), *model, n_constrained);
-  if (removed > 0)
-    log.info("removed " + std::to_string(removed) +
-             (run.options.overwrite ? " file(s) of the earlier run (--overwrite)"
-                                    : " temporary file(s) an interrupted run left"));
-  if (checkpoint) {
-    try {
-      model->restore({checkpoint->state, checkpoint->bubbles, checkpoint->term_states});
-    } catch (const InputError&) {
-      throw;
-    } catch (const Error& e) {
-      throw InputError({(dir.directory() / "checkpoint.bin").string(), 0, 0, "--resume"}, e.what());
-    }
-    stepper.resume({checkpoint->steps, checkpoint->time, checkpoint->dt, checkpoint->previous_dt,
-                    checkpoint->previous_state, checkpoint->negative_pivots});
-  }
-  RunRecorder recorder(c, dir, {run.options.case_file, run.options.overrides, run.fingerprint},
-                       *model, stepper, wrinkle_meter ? &*wrinkle_meter : nullptr,
-                       checkpoint ? &*checkpoint : nullptr);
-  if (run.from) {
+/// Where the stepping starts: a second step (--from) from the earlier run's last state, a
+/// resumed run after its checkpoint's step, a new run from the initial state, which the recorder
+/// writes. Then the log's lines on the watched materials.
+void set_start(const RunContext& run, RunSolver& solver, RunRecorder& recorder, RunLog& log) {
+  if (const std::optional<Checkpoint>& from = run.plan.from) {
     // A second load step: the nodal values and the elements' internal state carry over; the
     // terms (loads, cavities, dies, contacts, caps) and the clock start afresh from this case.
-    if (run.from->bubbles.size() != model->n_internal_values())
-      throw InputError(
-          {(fs::path(run.options.from_directory) / "checkpoint.bin").string(), 0, 0, "--from"},
-          "the run in " + run.options.from_directory + " carries " +
-              std::to_string(run.from->bubbles.size()) +
-              " internal values (element bubbles, material history), this case " +
-              std::to_string(model->n_internal_values()) +
-              ": a second step keeps the materials' viscoelasticity and Mullins "
-              "softening, or their absence");
-    model->continue_from(run.from->state, run.from->bubbles);
-    log.info("starting from the last state of " + run.options.from_directory + " (step " +
-             std::to_string(run.from->steps) + " at t = " + std::to_string(run.from->time) +
+    check_from_internal_values(run.plan, solver.model->n_internal_values());
+    solver.model->continue_from(from->state, from->bubbles);
+    log.info("starting from the last state of " + run.plan.from_directory + " (step " +
+             std::to_string(from->steps) + " at t = " + std::to_string(from->time) +
              "); this case's time starts at 0");
   }
-  if (checkpoint)
-    log.info("resuming after step " + std::to_string(checkpoint->steps) +
-             " at t = " + std::to_string(checkpoint->time));
+  if (const std::optional<Checkpoint>& resume = run.plan.resume)
+    log.info("resuming after step " + std::to_string(resume->steps) +
+             " at t = " + std::to_string(resume->time));
   else
     recorder.record_initial_state();
   for (const RunRecorder::WatchedMaterial& w : recorder.watched_materials()) {
@@ -285,39 +262,44 @@ void solve_and_write(PreparedRun run) {
     line << "; every step checks each element, and the log warns at the first that is not";
     log.info(line.str());
   }
+}
 
-  WallClock::time_point last_checkpoint = WallClock::now();
+/// Steps to the end time. Every converged step is recorded, logged with its progress line and
+/// checkpointed when due (RunRecorder::checkpoint_when_due). SIGINT/SIGTERM stop the stepper
+/// before the next step or within the current one (Newton iterations, cut-backs, multiplier
+/// updates); the model is back at the last converged step, whose checkpoint the recorder's
+/// finish writes.
+SteppingResult step_to_the_end(const RunContext& run, RunSolver& solver, RunRecorder& recorder,
+                               RunOutput& out) {
+  RunLog& log = out.log();
   const WallClock::time_point stepping_start = WallClock::now();
+  const double start_time = run.plan.resume ? run.plan.resume->time : 0.0;
   const auto on_step = [&](const StepInfo& info) {
     recorder.record(info);
     if (const std::string w = recorder.take_material_warning(); !w.empty()) log.warn(w);
     const auto& wrinkles = recorder.last_wrinkles();
     log.info(progress_line(info, wrinkles ? &wrinkles->rings : nullptr,
-                           {seconds_since(run.start), seconds_since(stepping_start),
-                            checkpoint ? checkpoint->time : 0.0, c.solver.end_time}));
-    // By step count, or by wall time (decided on every rank alike: the write is collective).
-    const bool by_count =
-        c.output.checkpoint_every > 0 && info.step % c.output.checkpoint_every == 0;
-    const bool by_time =
-        c.output.checkpoint_minutes > 0.0 &&
-        any_rank(seconds_since(last_checkpoint) >= 60.0 * c.output.checkpoint_minutes);
-    if (by_count || by_time) {
-      recorder.save_checkpoint();
-      last_checkpoint = WallClock::now();
-    }
-    flush_log();
+                           {seconds_since(run.start), seconds_since(stepping_start), start_time,
+                            run.c.solver.end_time}));
+    recorder.checkpoint_when_due(info.step);
+    out.flush_log();
   };
-  // SIGINT/SIGTERM stop the stepper before the next step or within the current one (Newton
-  // iterations, cut-backs, multiplier updates); the model is back at the last converged step,
-  // whose checkpoint recorder.finish writes.
-  stepper.set_interrupt([&] { return any_rank(run.interrupts.requested()); });
-  const SteppingResult result = stepper.run(on_step, [&](const std::string& s) { log.warn(s); });
+  solver.stepper.set_interrupt([&] { return run.session.interrupt_requested(); });
+  const SteppingResult result =
+      solver.stepper.run(on_step, [&](const std::string& s) { log.warn(s); });
   if (result.interrupted)
     log.warn("interrupted by a signal during step " + std::to_string(result.steps + 1) +
              ": stopping; the checkpoint holds step " + std::to_string(result.steps));
-  const double memory = recorder.finish(result, times);
+  return result;
+}
 
-  const PhaseTimes phases = stepper.times();
+/// The recorder's last files and summary, the log's closing line, and the outcome: returns when
+/// the run reached its end time, throws SolverError (with the command that resumes it, or the
+/// last converged step) when a signal or the solver stopped it.
+void finish_run(const RunContext& run, const SteppingResult& result, const StartTimes& times,
+                const RunSolver& solver, RunRecorder& recorder, RunOutput& out) {
+  const double memory = recorder.finish(result, times);
+  const PhaseTimes phases = solver.stepper.times();
   char line[256];
   std::snprintf(line, sizeof line,
                 "%s: %d steps, %d Newton iterations and %d Krylov steps (+%d solves with a reused "
@@ -327,144 +309,69 @@ void solve_and_write(PreparedRun run) {
                 result.krylov_steps, result.reused_solves, result.cutbacks,
                 seconds_since(run.start), phases.assembly, phases.linear_solve,
                 recorder.output_seconds(), memory);
-  log.info(line);
+  out.log().info(line);
   const StepInfo& last = recorder.last_step();
+  const fs::path& directory = out.directory().directory();
   if (result.interrupted) {
-    flush_log();
-    // The full command: a resume must repeat the --set values (the checkpoint's fingerprint
-    // holds them), each quoted for the shell (keys such as loads[0].value hold brackets).
-    // A distributed run is resumed on as many ranks.
-    std::string command = "plisse run " + run.options.case_file;
-    if (model->n_ranks() > 1) command += " -n " + std::to_string(model->n_ranks());
-    for (const auto& o : run.options.overrides) {
-      std::string quoted = "'";
-      for (char ch : o) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-      command += " --set " + quoted + "'";
-    }
+    out.flush_log();
+    // A resume must repeat the --set values (the checkpoint's fingerprint holds them); a
+    // distributed run is resumed on as many ranks.
     throw SolverError("interrupted after step " + std::to_string(last.step) +
-                      " at t = " + std::to_string(last.time) + "; continue with: " + command +
-                      " --resume " + dir.directory().string());
+                      " at t = " + std::to_string(last.time) + "; continue with: " +
+                      resume_command(run.options, solver.model->n_ranks(), directory));
   }
   if (!result.completed) {
-    log.error(result.failure);
-    flush_log();
+    out.log().error(result.failure);
+    out.flush_log();
     throw SolverError(result.failure + " (last converged step " + std::to_string(last.step) +
                       " at t = " + std::to_string(last.time) + " is written in " +
-                      dir.directory().string() + ")");
+                      directory.string() + ")");
   }
-  flush_log();
+  out.flush_log();
 }
 
 }  // namespace
 
 void run_case(const RunOptions& options) {
-  const auto t_start = WallClock::now();
+  const WallClock::time_point start = WallClock::now();
+  // 1. Read the case and plan the run: the directory, the checkpoint to resume from, the --from
+  //    state and every rule of the command line. Nothing is written yet.
   const Case c = parse_case_file(options.case_file, options.overrides);
-  for (const std::string& o : options.petsc_options)
-    if (const std::string problem = petsc_option_problem(o); !problem.empty())
-      throw InputError({"command line", 0, 0, "--petsc"}, problem);
-  if (!options.resume_directory.empty() && options.overwrite)
-    throw InputError({"command line", 0, 0, "--overwrite"},
-                     "a resumed run continues the run in its directory; --overwrite would "
-                     "replace it: give one of them");
-  if (!options.resume_directory.empty() && !options.output_directory.empty() &&
-      fs::weakly_canonical(options.resume_directory) !=
-          fs::weakly_canonical(options.output_directory))
-    throw InputError({"command line", 0, 0, "--resume"},
-                     "a resumed run writes into its own directory; -o must be omitted or the same");
-  const fs::path out_dir = !options.resume_directory.empty() ? fs::path(options.resume_directory)
-                           : options.output_directory.empty()
-                               ? fs::path("runs") / fs::path(options.case_file).stem()
-                               : fs::path(options.output_directory);
-  std::optional<Checkpoint> from;
-  const InputPlace from_place{"command line", 0, 0, "--from"};
-  if (!options.from_directory.empty()) {
-    if (!options.resume_directory.empty())
-      throw InputError(from_place,
-                       "--from starts a new run from a finished one, --resume continues an "
-                       "interrupted run in its own directory: give one of them");
-    const fs::path file = fs::path(options.from_directory) / "checkpoint.bin";
-    try {
-      from = read_checkpoint(file);
-    } catch (const InputError& e) {
-      throw InputError({file.string(), 0, 0, "--from"}, e.rule());
-    }
-    if (from->element != c.element)
-      throw InputError({file.string(), 0, 0, "--from"},
-                       "the run in " + options.from_directory +
-                           " used `element: " + to_string(from->element) +
-                           "`, this case has `element: " + to_string(c.element) +
-                           "`; a second step keeps the element family");
-    if (!options.output_directory.empty() && fs::weakly_canonical(options.from_directory) ==
-                                                 fs::weakly_canonical(options.output_directory))
-      throw InputError(from_place,
-                       "the second step writes a new run directory: -o must differ from --from, "
-                       "whose run stays as it is");
-  }
-  std::optional<Checkpoint> checkpoint;
-  if (!options.resume_directory.empty()) {
-    checkpoint = read_checkpoint(out_dir / "checkpoint.bin");
-    if (checkpoint->element != c.element)
-      throw InputError(
-          {(out_dir / "checkpoint.bin").string(), 0, 0, "--resume"},
-          "the checkpoint was written by a run with `element: " + to_string(checkpoint->element) +
-              "`, this case has `element: " + to_string(c.element) +
-              "`; a run cannot change its element family");
-  }
-
-  auto t0 = WallClock::now();
-  const Mesh mesh = load_perturbed_mesh(c);
-  if (const auto unsupported = unsupported_features(c, mesh); !unsupported.empty())
-    throw unsupported.front();
-  const double time_mesh = seconds_since(t0);
-  // After the mesh file has passed its reader's checks (type, size): it is hashed whole.
-  const RunFingerprint fingerprint =
-      run_fingerprint(options.case_file, options.overrides, c.mesh.file.value_or(""), mesh);
-  if (checkpoint) {
-    if (const std::string changes = fingerprint_changes(checkpoint->fingerprint, fingerprint);
-        !changes.empty())
-      throw InputError({(out_dir / "checkpoint.bin").string(), 0, 0, "--resume"},
-                       "the checkpoint belongs to another run: " + changes +
-                           "; resume with the case, --set values and mesh it was written for, "
-                           "or start a new run");
-  }
-
-  if (from && from->fingerprint.geometry != fingerprint.geometry)
-    throw InputError(
-        {(fs::path(options.from_directory) / "checkpoint.bin").string(), 0, 0, "--from"},
-        "the run in " + options.from_directory +
-            " solved another mesh (its nodes or their coordinates differ from this "
-            "case's): a second step needs the same mesh");
-
-  // Everything that can be rejected is checked before the run directory is touched.
-  ModelParts parts = build_model_parts(c, mesh);
-  check_rigid_pieces(c, mesh, parts.constraints);
-
-  // PETSc's own signal handler would abort on SIGINT/SIGTERM; plisse checkpoints instead.
-  PetscSession petsc({"-no_signal_handler", c.solver.petsc_options});
-  for (const auto& o : options.petsc_options) PetscSession::insert_options(o);
-  check_solver_options(c, options.petsc_options);
-  const ThreadCounts threads = apply_thread_counts(PETSC_COMM_WORLD);
-  InterruptGuard interrupts;
-  end_with_launcher();
-  abort_job_when_memory_runs_out();
-  check_same_mesh_on_every_rank(mesh);
-  // Input and solver errors from here on arise on every rank alike, and so do failed writes
-  // (on_every_rank_alike); anything else on one rank would leave the others waiting in a
-  // collective call, so it ends the whole job.
-  try {
-    solve_and_write({options, c, t_start, out_dir, fingerprint, checkpoint, from, mesh, time_mesh,
-                     std::move(parts), interrupts, describe(threads)});
-  } catch (const InputError&) {
-    throw;
-  } catch (const SolverError&) {
-    throw;
-  } catch (const SharedError&) {
-    throw;
-  } catch (...) {
-    if (PetscSession::size() > 1) abort_all_ranks(std::current_exception());
-    throw;
-  }
+  const RunPlan plan = plan_run(options, c);
+  // 2. Read or generate the mesh; a checkpoint or --from state must belong to it.
+  const RunMesh mesh = load_run_mesh(c, options);
+  check_plan_against_mesh(plan, mesh.fingerprint);
+  // 3. Build the parts of the model (materials, constraints, terms): everything that can be
+  //    refused is refused before the run directory is touched.
+  ModelParts parts = build_model_parts(c, mesh.mesh);
+  check_rigid_pieces(c, mesh.mesh, parts.constraints);
+  // 4. Start PETSc with the run's options, the threads and the signal handlers; the ranks of a
+  //    distributed run must have built the same mesh.
+  const RunSession session(c, options.petsc_options);
+  check_same_mesh_on_every_rank(mesh.mesh);
+  const RunContext run{options, c, plan, mesh, session, start};
+  session.run_collectively([&] {
+    // 5. Make the model, its load stepper and the wrinkle meter.
+    const auto t0 = WallClock::now();
+    RunSolver solver(c, mesh.mesh, std::move(parts));
+    const StartTimes times{start, mesh.seconds, seconds_since(t0)};
+    // 6. Take the run directory (lock, earlier run, temporaries) and open the log.
+    RunOutput out(plan);
+    log_header(run, out, solver);
+    // 7. A resumed run restores the model and the stepper from its checkpoint.
+    restore_checkpoint(plan, out.directory(), solver);
+    // 8. Open the run's files: history.csv, solution.pvd (a resume cuts them back to its step).
+    RunRecorder recorder(c, out.directory(),
+                         {options.case_file, options.overrides, mesh.fingerprint}, *solver.model,
+                         solver.stepper, solver.wrinkle_meter ? &*solver.wrinkle_meter : nullptr,
+                         plan.resume ? &*plan.resume : nullptr);
+    // 9. Set the starting state: --from's last state, or the initial state written as step 0.
+    set_start(run, solver, recorder, out.log());
+    // 10. Step to the end time, recording, logging and checkpointing every converged step.
+    const SteppingResult result = step_to_the_end(run, solver, recorder, out);
+    // 11. Write the last files and the summary, and report how the run ended.
+    finish_run(run, result, times, solver, recorder, out);
+  });
 }
 
 }  // namespace plisse::app

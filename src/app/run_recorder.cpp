@@ -124,7 +124,8 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
       meter_(meter),
       root_(PetscSession::rank() == 0),
       columns_(c, model, meter),
-      previous_state_(model.state()) {
+      previous_state_(model.state()),
+      last_checkpoint_(WallClock::now()) {
   // Drucker's condition in principal stretches holds for isotropic models only. The model's
   // materials are the case's `material`, then one per deformable region in the case's order.
   // Past the sections' own models come only per-element copies (fibres in a shell's frame),
@@ -191,6 +192,7 @@ void RunRecorder::record_initial_state() {
   initial.time = model_.time();
   write_step_files(initial, model_.state());
   last_wrinkles_.reset();
+  last_checkpoint_ = WallClock::now();
 }
 
 void RunRecorder::record(const StepInfo& info) {
@@ -297,6 +299,18 @@ void RunRecorder::save_checkpoint() {
   });
 }
 
+void RunRecorder::checkpoint_when_due(int step) {
+  // By step count, or by wall time (decided on every rank alike: the write is collective).
+  const bool by_count =
+      case_.output.checkpoint_every > 0 && step % case_.output.checkpoint_every == 0;
+  const bool by_time =
+      case_.output.checkpoint_minutes > 0.0 &&
+      any_rank(seconds_since(last_checkpoint_) >= 60.0 * case_.output.checkpoint_minutes);
+  if (!by_count && !by_time) return;
+  save_checkpoint();
+  last_checkpoint_ = WallClock::now();
+}
+
 double RunRecorder::finish(const SteppingResult& result, const StartTimes& times) {
   // A run that stopped early has not written its last step yet.
   if (last_step_.step > 0 && last_written_ != last_step_.step)
@@ -369,22 +383,7 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
                             {"stable_at_end", last_step_.stable},
                             {"instabilities", instabilities_}};
   }
-  if (!watched_.empty()) {
-    nlohmann::json stability = {
-        {"first_unstable_step",
-         first_unstable_step_ >= 0 ? nlohmann::json(first_unstable_step_) : nlohmann::json()},
-        {"unstable_elements", unstable_elements_},
-        {"most_unstable_elements", most_unstable_elements_}};
-    for (const WatchedMaterial& w : watched_) {
-      nlohmann::json ranges;
-      for (const StabilityRange& r : w.ranges) ranges[test_mode_name(r.mode)] = {r.lower, r.upper};
-      if (w.region.empty())
-        stability["stable_stretches"] = ranges;
-      else
-        stability["regions"][w.region] = ranges;
-    }
-    summary["material_stability"] = stability;
-  }
+  if (!watched_.empty()) summary["material_stability"] = material_stability();
   if (last_wrinkles_) summary["wrinkles"] = wrinkles_json(c, *last_wrinkles_);
   for (const HistoryColumns::ProbePoint& p : columns_.probe_points()) {
     const auto xyz = [](const Vec3d& v) { return nlohmann::json::array({v[0], v[1], v[2]}); };
@@ -403,6 +402,23 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
   }
   require_documented_summary(summary);
   return summary;
+}
+
+nlohmann::json RunRecorder::material_stability() const {
+  nlohmann::json stability = {
+      {"first_unstable_step",
+       first_unstable_step_ >= 0 ? nlohmann::json(first_unstable_step_) : nlohmann::json()},
+      {"unstable_elements", unstable_elements_},
+      {"most_unstable_elements", most_unstable_elements_}};
+  for (const WatchedMaterial& w : watched_) {
+    nlohmann::json ranges;
+    for (const StabilityRange& r : w.ranges) ranges[test_mode_name(r.mode)] = {r.lower, r.upper};
+    if (w.region.empty())
+      stability["stable_stretches"] = ranges;
+    else
+      stability["regions"][w.region] = ranges;
+  }
+  return stability;
 }
 
 }  // namespace plisse::app

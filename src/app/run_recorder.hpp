@@ -1,7 +1,8 @@
 #pragma once
 /// The run recorder: everything a run leaves in its run directory besides the log. It owns
 /// history.csv (rows from HistoryColumns), the VTU files with solution.pvd, wrinkle_spectrum.csv,
-/// checkpoint.bin and summary.json, and decides when each is written. Distributed runs: rank 0
+/// checkpoint.bin and summary.json, and decides when each is written (the checkpoint's cadence
+/// included). Distributed runs: rank 0
 /// writes the history, the PVD index, the checkpoint and the summary; every rank writes its own
 /// piece of each VTU step. The members that write are collective: every rank calls them in the same
 /// order.
@@ -59,6 +60,11 @@ class RunRecorder {
   void record(const StepInfo& info);
   /// Writes checkpoint.bin from the model and stepper's last converged state.
   void save_checkpoint();
+  /// The checkpoint cadence, after recording the converged step `step`: writes checkpoint.bin
+  /// every output.checkpoint_every steps, and when output.checkpoint_minutes have passed since
+  /// the last checkpoint (or since the recorder started, or wrote the initial state), decided on
+  /// every rank alike. A run stopped by a signal or a solver failure is checkpointed by finish.
+  void checkpoint_when_due(int step);
   /// After the stepping: the last step's VTU if it is not written yet, the final checkpoint (the
   /// state `plisse wrinkles DIR` reads) and summary.json. Returns the job's peak memory [MiB].
   double finish(const SteppingResult& result, const StartTimes& times);
@@ -93,6 +99,9 @@ class RunRecorder {
   void check_material_stability(int step);
   nlohmann::json summary(const SteppingResult& result, const StartTimes& times, double memory_total,
                          double memory_largest) const;
+  /// summary.json's material_stability: the first step and counts of unstable elements, and the
+  /// stable stretch ranges of each watched material.
+  nlohmann::json material_stability() const;
 
   const Case& case_;
   const RunDirectory& directory_;
@@ -127,6 +136,7 @@ class RunRecorder {
   int last_written_ = -1;
   int accepted_newton_iterations_ = 0;  ///< over the steps recorded by this run
   double output_seconds_ = 0.0;
+  WallClock::time_point last_checkpoint_;  ///< of the wall-time cadence
 };
 
 }  // namespace plisse::app

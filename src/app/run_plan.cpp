@@ -1,0 +1,156 @@
+#include "app/run_plan.hpp"
+
+#include <algorithm>
+
+#include "io/petsc_option_text.hpp"
+#include "io/run_directory.hpp"
+
+namespace plisse::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A rule broken by the command line's option `key`.
+InputPlace command_line_option(const std::string& key) { return {"command line", 0, 0, key}; }
+
+/// The run directory the options name.
+fs::path run_directory_of(const RunOptions& options) {
+  if (!options.resume_directory.empty()) return options.resume_directory;
+  if (options.output_directory.empty())
+    return fs::path("runs") / fs::path(options.case_file).stem();
+  return options.output_directory;
+}
+
+/// Rules between the options alone, before any file is read.
+void check_option_rules(const RunOptions& options) {
+  for (const std::string& o : options.petsc_options)
+    if (const std::string problem = petsc_option_problem(o); !problem.empty())
+      throw InputError(command_line_option("--petsc"), problem);
+  const bool resume = !options.resume_directory.empty();
+  if (resume && options.overwrite)
+    throw InputError(command_line_option("--overwrite"),
+                     "a resumed run continues the run in its directory; --overwrite would "
+                     "replace it: give one of them");
+  if (resume && !options.output_directory.empty() &&
+      fs::weakly_canonical(options.resume_directory) !=
+          fs::weakly_canonical(options.output_directory))
+    throw InputError(command_line_option("--resume"),
+                     "a resumed run writes into its own directory; -o must be omitted or the same");
+}
+
+/// --from DIR: the finished run's last state, which must be of the case's element, in another
+/// directory than the new run's.
+Checkpoint read_from_state(const RunOptions& options, const Case& c) {
+  if (!options.resume_directory.empty())
+    throw InputError(command_line_option("--from"),
+                     "--from starts a new run from a finished one, --resume continues an "
+                     "interrupted run in its own directory: give one of them");
+  const fs::path file = fs::path(options.from_directory) / "checkpoint.bin";
+  Checkpoint from;
+  try {
+    from = read_checkpoint(file);
+  } catch (const InputError& e) {
+    throw InputError({file.string(), 0, 0, "--from"}, e.rule());
+  }
+  if (from.element != c.element)
+    throw InputError({file.string(), 0, 0, "--from"},
+                     "the run in " + options.from_directory +
+                         " used `element: " + to_string(from.element) +
+                         "`, this case has `element: " + to_string(c.element) +
+                         "`; a second step keeps the element family");
+  if (!options.output_directory.empty() && fs::weakly_canonical(options.from_directory) ==
+                                               fs::weakly_canonical(options.output_directory))
+    throw InputError(command_line_option("--from"),
+                     "the second step writes a new run directory: -o must differ from --from, "
+                     "whose run stays as it is");
+  return from;
+}
+
+/// --resume DIR: the checkpoint in DIR, which must be of the case's element.
+Checkpoint read_resume_checkpoint(const fs::path& directory, const Case& c) {
+  Checkpoint checkpoint = read_checkpoint(directory / "checkpoint.bin");
+  if (checkpoint.element != c.element)
+    throw InputError(
+        {(directory / "checkpoint.bin").string(), 0, 0, "--resume"},
+        "the checkpoint was written by a run with `element: " + to_string(checkpoint.element) +
+            "`, this case has `element: " + to_string(c.element) +
+            "`; a run cannot change its element family");
+  return checkpoint;
+}
+
+InputPlace resume_place(const RunPlan& plan) {
+  return {(plan.directory / "checkpoint.bin").string(), 0, 0, "--resume"};
+}
+
+InputPlace from_place(const RunPlan& plan) {
+  return {(fs::path(plan.from_directory) / "checkpoint.bin").string(), 0, 0, "--from"};
+}
+
+}  // namespace
+
+RunPlan plan_run(const RunOptions& options, const Case& c) {
+  check_option_rules(options);
+  RunPlan plan;
+  plan.directory = run_directory_of(options);
+  const bool resume = !options.resume_directory.empty();
+  plan.directory_key = resume ? "--resume" : "-o";
+  plan.overwrite = options.overwrite;
+  plan.refuse_earlier_run = !resume && !options.overwrite;
+  if (!options.from_directory.empty()) {
+    plan.from = read_from_state(options, c);
+    plan.from_directory = options.from_directory;
+  }
+  if (resume) plan.resume = read_resume_checkpoint(plan.directory, c);
+  return plan;
+}
+
+void check_plan_against_mesh(const RunPlan& plan, const RunFingerprint& fingerprint) {
+  if (plan.resume) {
+    if (const std::string changes = fingerprint_changes(plan.resume->fingerprint, fingerprint);
+        !changes.empty())
+      throw InputError(resume_place(plan),
+                       "the checkpoint belongs to another run: " + changes +
+                           "; resume with the case, --set values and mesh it was written for, "
+                           "or start a new run");
+  }
+  if (plan.from && plan.from->fingerprint.geometry != fingerprint.geometry)
+    throw InputError(from_place(plan),
+                     "the run in " + plan.from_directory +
+                         " solved another mesh (its nodes or their coordinates differ from this "
+                         "case's): a second step needs the same mesh");
+}
+
+void check_from_internal_values(const RunPlan& plan, std::size_t n_internal_values) {
+  if (!plan.from || plan.from->bubbles.size() == n_internal_values) return;
+  throw InputError(from_place(plan),
+                   "the run in " + plan.from_directory + " carries " +
+                       std::to_string(plan.from->bubbles.size()) +
+                       " internal values (element bubbles, material history), this case " +
+                       std::to_string(n_internal_values) +
+                       ": a second step keeps the materials' viscoelasticity and Mullins "
+                       "softening, or their absence");
+}
+
+std::string earlier_run_refusal(const fs::path& directory) {
+  const std::vector<fs::path> files = run_files(directory);
+  if (files.empty()) return {};
+  std::string names;
+  for (std::size_t i = 0; i < std::min<std::size_t>(files.size(), 3); ++i)
+    names += (i > 0 ? ", " : "") + files[i].filename().string();
+  if (files.size() > 3) names += " and " + std::to_string(files.size() - 3) + " more";
+  return "holds an earlier run (" + names +
+         "); continue it with --resume, replace it with --overwrite, or choose another -o";
+}
+
+std::string resume_command(const RunOptions& options, int n_ranks, const fs::path& directory) {
+  std::string command = "plisse run " + options.case_file;
+  if (n_ranks > 1) command += " -n " + std::to_string(n_ranks);
+  for (const std::string& o : options.overrides) {
+    std::string quoted = "'";
+    for (char ch : o) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+    command += " --set " + quoted + "'";
+  }
+  return command + " --resume " + directory.string();
+}
+
+}  // namespace plisse::app

@@ -1,0 +1,78 @@
+#pragma once
+/// The plan of `plisse run`: every decision the command line and the run directory's earlier
+/// contents settle before anything is solved: the output directory, the checkpoint a resumed run
+/// continues and the state a second step (--from) starts from, with every rule between the
+/// options. No PETSc, no MPI: the functions here read files at most, and each refusal is the
+/// InputError `plisse run` reports (exit status 2). The driver (app/run_case) follows the plan.
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "io/case.hpp"
+#include "io/checkpoint.hpp"
+
+namespace plisse::app {
+
+/// The options of `plisse run` as given on the command line.
+struct RunOptions {
+  std::string case_file;
+  std::string output_directory;            ///< empty: runs/<case file stem>
+  std::vector<std::string> overrides;      ///< --set key.path=value
+  std::vector<std::string> petsc_options;  ///< --petsc "-snes_monitor ..."
+  std::string resume_directory;            ///< --resume DIR: continue from DIR/checkpoint.bin
+  /// --from DIR: start from the last state of the run in DIR (a second step with this case's loads)
+  std::string from_directory;
+  bool overwrite = false;  ///< --overwrite: replace an earlier run in the directory
+  int ranks = 0;           ///< -n N: MPI ranks (run under mpiexec); 0: not given
+};
+
+/// What a run does with its directory and where it starts: plain data, decided by plan_run.
+struct RunPlan {
+  /// The run directory: --resume DIR, else -o DIR, else runs/<case file stem>.
+  std::filesystem::path directory;
+  /// The option that named the directory, for the refusals about it: key "--resume" when
+  /// resuming, else "-o" (file: the directory as the run writes it, set by the driver).
+  std::string directory_key;
+  /// --overwrite: the earlier run's files are removed (once the case has passed every check).
+  bool overwrite = false;
+  /// A new run without --overwrite: a directory holding an earlier run's files is refused
+  /// (earlier_run_refusal).
+  bool refuse_earlier_run = true;
+  /// --resume: the checkpoint read from `directory`/checkpoint.bin; its element is the case's.
+  std::optional<Checkpoint> resume;
+  /// --from: the last state of the run in from_directory, read from its checkpoint.bin; its
+  /// element is the case's.
+  std::optional<Checkpoint> from;
+  std::string from_directory;  ///< --from DIR as given; empty without --from
+};
+
+/// Decides the plan of `options` for the parsed case `c`, checking, in this order: each --petsc
+/// option's text; --resume with --overwrite; --resume with another -o; --from with --resume; the
+/// --from run's checkpoint (readable, same element) and -o naming the --from directory; the
+/// --resume checkpoint (readable, same element). Throws the InputError of the first rule broken.
+RunPlan plan_run(const RunOptions& options, const Case& c);
+
+/// The checks that need the mesh the run solves on, through its `fingerprint`: a resumed run
+/// must be the run its checkpoint belongs to, and a second step (--from) must solve the same
+/// mesh as the run it continues. Throws InputError (key --resume or --from) otherwise.
+void check_plan_against_mesh(const RunPlan& plan, const RunFingerprint& fingerprint);
+
+/// A second step keeps the elements' internal values (bubbles, material history): throws
+/// InputError (key --from) when the --from run holds another number of them than the model
+/// (`n_internal_values`). No-op without --from.
+void check_from_internal_values(const RunPlan& plan, std::size_t n_internal_values);
+
+/// Why a new run may not write into `directory` (empty: it may): the files of an earlier run,
+/// the first three named.
+std::string earlier_run_refusal(const std::filesystem::path& directory);
+
+/// The command that resumes an interrupted run in `directory`: the case file, -n for a run on
+/// more than one rank, and every --set value quoted for a POSIX shell (keys such as
+/// loads[0].value hold brackets).
+std::string resume_command(const RunOptions& options, int n_ranks,
+                           const std::filesystem::path& directory);
+
+}  // namespace plisse::app
