@@ -89,79 +89,61 @@ std::vector<std::string> string_list(const nlohmann::json& j) {
   return out;
 }
 
-void recompute_wrinkles(const WrinklesOptions& options) {
-  const fs::path dir = options.run_directory;
-  const InputPlace place{dir.string(), 0, 0, "DIR"};
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw InputError(place, "is not a run directory");
-  const fs::path summary_path = dir / "summary.json";
-  if (!fs::exists(summary_path, ec))
-    throw InputError(place, "holds no summary.json: not a finished plisse run");
-  // A run still writing here would replace its files under this command, or the reverse.
-  const DirectoryLock lock(dir, place);
+/// What summary.json says of the run: the case file and its --set values.
+struct RunRecord {
   nlohmann::json summary;
+  std::string case_path;
+  std::vector<std::string> run_overrides;
+};
+
+/// Reads the run's summary.json; refuses --set values other than output.wrinkles.* and a case
+/// file that is gone.
+RunRecord read_run_record(const fs::path& summary_path, const WrinklesOptions& options) {
+  RunRecord run;
   try {
-    summary = read_json_file(summary_path);
+    run.summary = read_json_file(summary_path);
   } catch (const Error& e) {
     throw InputError({summary_path.string(), 0, 0, ""}, e.what());
   }
+  const nlohmann::json& summary = run.summary;
   if (!summary.is_object() || !summary.contains("case_path") || !summary["case_path"].is_string())
     throw InputError({summary_path.string(), 0, 0, "case_path"},
                      "does not name the case file (written by plisse run since version 0.1)");
-  const std::string case_path = summary["case_path"].get<std::string>();
-  const std::vector<std::string> run_overrides = string_list(summary["overrides"]);
+  run.case_path = summary["case_path"].get<std::string>();
+  run.run_overrides = string_list(summary["overrides"]);
   for (const std::string& o : options.overrides)
     if (o.rfind("output.wrinkles.", 0) != 0)
       throw InputError({"command line", 0, 0, "--set"},
                        "'" + o +
                            "': only output.wrinkles.* can change after the run (anything "
                            "else would not match the computed state)");
-  if (!fs::exists(case_path, ec))
+  std::error_code ec;
+  if (!fs::exists(run.case_path, ec))
     throw InputError({summary_path.string(), 0, 0, "case_path"},
-                     "the case file of this run, " + case_path + ", no longer exists");
-  std::vector<std::string> overrides = run_overrides;
-  overrides.insert(overrides.end(), options.overrides.begin(), options.overrides.end());
-  const Case c = parse_case_file(case_path, overrides);
+                     "the case file of this run, " + run.case_path + ", no longer exists");
+  return run;
+}
 
-  const Checkpoint checkpoint = read_checkpoint(dir / "checkpoint.bin");
-  if (!c.output.wrinkles.enabled())
-    throw InputError({case_path, 0, 0, "output.wrinkles.rings_deg"},
-                     "no rings to measure: give their latitudes, e.g. --set "
-                     "output.wrinkles.rings_deg=[0,30,60]");
-
-  const Mesh mesh = load_perturbed_mesh(c);
-  // After the mesh file has passed its reader's checks (type, size): it is hashed whole.
-  if (const std::string changes = fingerprint_changes(
-          checkpoint.fingerprint,
-          run_fingerprint(case_path, run_overrides, c.mesh.file.value_or(""), mesh));
-      !changes.empty())
-    throw InputError({(dir / "checkpoint.bin").string(), 0, 0, "DIR"},
-                     "the run's state no longer matches its case (" + case_path + "): " + changes);
-  const WrinkleMeter meter(c, mesh);
-  MeasuredState measured;
-  if (options.step >= 0) {
-    measured = measure_step_file(dir, options.step, mesh, meter);
-  } else {
-    ModelParts parts = build_model_parts(c, mesh);
-    PetscSession petsc({"-no_signal_handler"});
-    const std::unique_ptr<MixedModel> model = make_model(mesh, std::move(parts));
-    try {
-      model->restore({checkpoint.state, checkpoint.bubbles, checkpoint.term_states});
-    } catch (const Error& e) {
-      throw InputError({(dir / "checkpoint.bin").string(), 0, 0, "DIR"}, e.what());
-    }
-    measured = {meter.evaluate(*model, model->element_fields()), checkpoint.steps, checkpoint.time};
+/// The metrics of the checkpoint's state, restored into the case's model.
+MeasuredState measure_last_state(const fs::path& dir, const Case& c, const Mesh& mesh,
+                                 const WrinkleMeter& meter, const Checkpoint& checkpoint) {
+  ModelParts parts = build_model_parts(c, mesh);
+  PetscSession petsc({"-no_signal_handler"});
+  const std::unique_ptr<MixedModel> model = make_model(mesh, std::move(parts));
+  try {
+    model->restore({checkpoint.state, checkpoint.bubbles, checkpoint.term_states});
+  } catch (const Error& e) {
+    throw InputError({(dir / "checkpoint.bin").string(), 0, 0, "DIR"}, e.what());
   }
-  const WrinkleMeter::Result& result = measured.result;
-  // Its own file: summary.json stays the run's, matching history.csv.
-  const nlohmann::json table = {{"case", case_path},
-                                {"run_overrides", run_overrides},
-                                {"step", measured.step},
-                                {"time", measured.time},
-                                {"overrides", options.overrides},
-                                {"wrinkles", wrinkles_json(c, result)}};
-  write_json_file(dir / "wrinkles.json", table);
+  return {meter.evaluate(*model, model->element_fields()), checkpoint.steps, checkpoint.time};
+}
 
+/// The table on the terminal: the state measured, each ring's metrics and decision, the tension
+/// field's counts.
+void print_wrinkles(const fs::path& dir, const WrinklesOptions& options, const RunRecord& run,
+                    const MeasuredState& measured, int checkpoint_steps) {
+  const WrinkleMeter::Result& result = measured.result;
+  const nlohmann::json& summary = run.summary;
   std::printf(
       "plisse wrinkles: %s, step %d at t = %g: %s (max amplitude %.4g mm, threshold %.4g mm)\n",
       dir.string().c_str(), measured.step, measured.time,
@@ -171,7 +153,7 @@ void recompute_wrinkles(const WrinklesOptions& options) {
   if (options.step < 0 && summary.contains("completed") && summary["completed"] == false)
     std::printf(
         "  note: the run did not reach its end time; step %d is its last converged step%s\n",
-        checkpoint.steps,
+        checkpoint_steps,
         summary.contains("failure") && summary["failure"].is_string()
             ? (" (it stopped: " + summary["failure"].get<std::string>() + ")").c_str()
             : "");
@@ -193,6 +175,51 @@ void recompute_wrinkles(const WrinklesOptions& options) {
   }
   const auto& n = result.tension.n_elements;
   std::printf("  tension field (elements): %d taut, %d wrinkled, %d slack\n", n[0], n[1], n[2]);
+}
+
+void recompute_wrinkles(const WrinklesOptions& options) {
+  const fs::path dir = options.run_directory;
+  const InputPlace place{dir.string(), 0, 0, "DIR"};
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw InputError(place, "is not a run directory");
+  const fs::path summary_path = dir / "summary.json";
+  if (!fs::exists(summary_path, ec))
+    throw InputError(place, "holds no summary.json: not a finished plisse run");
+  // A run still writing here would replace its files under this command, or the reverse.
+  const DirectoryLock lock(dir, place);
+  const RunRecord run = read_run_record(summary_path, options);
+  const std::string& case_path = run.case_path;
+  std::vector<std::string> overrides = run.run_overrides;
+  overrides.insert(overrides.end(), options.overrides.begin(), options.overrides.end());
+  const Case c = parse_case_file(case_path, overrides);
+
+  const Checkpoint checkpoint = read_checkpoint(dir / "checkpoint.bin");
+  if (!c.output.wrinkles.enabled())
+    throw InputError({case_path, 0, 0, "output.wrinkles.rings_deg"},
+                     "no rings to measure: give their latitudes, e.g. --set "
+                     "output.wrinkles.rings_deg=[0,30,60]");
+
+  const Mesh mesh = load_perturbed_mesh(c);
+  // After the mesh file has passed its reader's checks (type, size): it is hashed whole.
+  if (const std::string changes = fingerprint_changes(
+          checkpoint.fingerprint,
+          run_fingerprint(case_path, run.run_overrides, c.mesh.file.value_or(""), mesh));
+      !changes.empty())
+    throw InputError({(dir / "checkpoint.bin").string(), 0, 0, "DIR"},
+                     "the run's state no longer matches its case (" + case_path + "): " + changes);
+  const WrinkleMeter meter(c, mesh);
+  const MeasuredState measured = options.step >= 0
+                                     ? measure_step_file(dir, options.step, mesh, meter)
+                                     : measure_last_state(dir, c, mesh, meter, checkpoint);
+  // Its own file: summary.json stays the run's, matching history.csv.
+  const nlohmann::json table = {{"case", case_path},
+                                {"run_overrides", run.run_overrides},
+                                {"step", measured.step},
+                                {"time", measured.time},
+                                {"overrides", options.overrides},
+                                {"wrinkles", wrinkles_json(c, measured.result)}};
+  write_json_file(dir / "wrinkles.json", table);
+  print_wrinkles(dir, options, run, measured, checkpoint.steps);
 }
 
 }  // namespace

@@ -136,8 +136,110 @@ std::string LoadStepper::solve_step(NewtonResult& newton, SteppingResult& result
   }
 }
 
-void LoadStepper::check_stability(StepInfo& info, SteppingResult& result,
-                                  const std::function<void(const std::string&)>& log,
+bool LoadStepper::compute_inertia(Inertia& out, int step, const Log& log) {
+  try {
+    out = inertia_->compute();
+    return true;
+  } catch (const Error& e) {
+    log("  step " + std::to_string(step) + ": the stability check failed (" + e.what() +
+        "); the step is reported unchecked");
+    return false;
+  }
+}
+
+std::string LoadStepper::report_instability(StepInfo& info, const Inertia& inertia, int expected,
+                                            int baseline, const Log& log) {
+  info.new_instability = true;
+  info.unstable_negative_pivots = inertia.negative;
+  std::string lowest = "not computed";
+  char line[320];
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    EigenOptions eigen;
+    eigen.count = stability_.modes;
+    const LogStage stage("Stability eigenmodes");
+    info.modes = lowest_eigenmodes(model_, eigen);
+    if (!info.modes.empty()) {
+      std::snprintf(line, sizeof line, "%.6g", info.modes.front().eigenvalue);
+      lowest = line;
+    }
+  } catch (const Error& e) {
+    log("  step " + std::to_string(info.step) +
+        ": the eigenmodes could not be computed: " + e.what());
+  }
+  eigenmode_seconds_ +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::snprintf(line, sizeof line,
+                "step %d: t = %.6g: new instability, %d negative pivots (stable: %d, previous "
+                "step: %d), %d zero; lowest eigenvalue %s",
+                info.step, info.time, inertia.negative, expected, baseline, inertia.zero,
+                lowest.c_str());
+  log("  " + std::string(line));
+  return lowest;
+}
+
+bool LoadStepper::switch_branch(StepInfo& info, SteppingResult& result, const Log& log,
+                                const std::string& lowest, int expected, Inertia& inertia,
+                                bool& switched) {
+  // (stability.md, S10): u += a φ1 on the displacement dofs (φ1 is zero on constrained ones),
+  // the same time solved again; the model's converged state is the unperturbed one.
+  const std::vector<double>& phi = info.modes.front().state;
+  const std::vector<double> unperturbed = model_.converged_state();
+  const int n_nodes = model_.mesh().n_nodes();
+  char line[320];
+  double a = stability_.perturbation_mm;
+  newton_.allow_reuse(false);  // an unstable state (newton_solver.hpp, allow_reuse)
+  for (int attempt = 0; attempt < kAmplitudeTries; ++attempt, a *= kAmplitudeGrowth) {
+    auto& x = model_.state();
+    for (int v = 0; v < n_nodes; ++v)
+      for (int k = 0; k < 3; ++k) x[DofMap::dof(v, k)] += a * phi[DofMap::dof(v, k)];
+    NewtonResult newton;
+    const std::string failure = solve_step(newton, result);
+    if (!failure.empty()) {
+      model_.restore_converged();
+      std::snprintf(line, sizeof line,
+                    "step %d: branch switching with amplitude %.4g mm failed (%s); keeping "
+                    "the unperturbed state",
+                    info.step, a, failure.c_str());
+      log("  " + std::string(line));
+      return true;
+    }
+    const double moved = max_nodal_distance(model_.state(), unperturbed, n_nodes);
+    if (moved < 0.5 * a) {
+      model_.restore_converged();
+      std::snprintf(line, sizeof line,
+                    "step %d: the re-solve from amplitude %.4g mm fell back onto the "
+                    "unperturbed state (max |du| %.3g mm)%s",
+                    info.step, a, moved,
+                    attempt + 1 < kAmplitudeTries ? "; trying a larger amplitude"
+                                                  : "; keeping the unperturbed state");
+      log("  " + std::string(line));
+      continue;
+    }
+    model_.save_converged();
+    const bool checked = compute_inertia(inertia, info.step, log);
+    if (checked) newton_.offer_factor(inertia_->factor());
+    switched = true;
+    info.branch_switched = true;
+    info.perturbation_mm = a;
+    info.newton_iterations += attempt_newton_;
+    info.reused_solves += attempt_reused_;
+    info.residual_norm = newton.residual_norm;
+    info.reference_norm = newton.reference_norm;
+    info.residual_history = newton.residual_history;
+    std::snprintf(line, sizeof line,
+                  "step %d: switched branch along mode 1 (eigenvalue %s): amplitude %.4g mm, "
+                  "%d extra negative pivot(s) before, max |du| %.4g mm, %d Newton "
+                  "iterations; now %d negative pivots",
+                  info.step, lowest.c_str(), a, info.unstable_negative_pivots - expected, moved,
+                  newton.iterations, checked ? inertia.negative : -1);
+    log("  " + std::string(line));
+    return checked;
+  }
+  return true;
+}
+
+void LoadStepper::check_stability(StepInfo& info, SteppingResult& result, const Log& log,
                                   bool& switched) {
   switched = false;
   if (!stability_.check) return;
@@ -147,114 +249,24 @@ void LoadStepper::check_stability(StepInfo& info, SteppingResult& result,
         "the inertia is that of its symmetric part 0.5 (K + K^T)");
     told_symmetric_part_ = true;
   }
-  char line[320];
   const int expected = expected_negative_pivots(model_);
   info.expected_negative_pivots = expected;
   // The check is a diagnostic of an accepted step: when it fails, the step is reported unchecked
   // (negative_pivots = -1) and the run goes on.
-  const auto inertia_or_log = [&](Inertia& out) {
-    try {
-      out = inertia_->compute();
-      return true;
-    } catch (const Error& e) {
-      log("  step " + std::to_string(info.step) + ": the stability check failed (" + e.what() +
-          "); the step is reported unchecked");
-      return false;
-    }
-  };
   Inertia inertia;
-  if (!inertia_or_log(inertia)) return;
+  if (!compute_inertia(inertia, info.step, log)) return;
   // The tangent of the converged state, just factorised: the next solve starts from it.
   newton_.offer_factor(inertia_->factor());
   // A rise above the previous step is a new instability; before the first check the baseline is
   // the stable count (the reference state is stable).
   const int baseline = current_.negative_pivots >= 0 ? current_.negative_pivots : expected;
   if (inertia.negative > baseline) {
-    info.new_instability = true;
-    info.unstable_negative_pivots = inertia.negative;
-    std::string lowest = "not computed";
-    const auto t0 = std::chrono::steady_clock::now();
-    try {
-      EigenOptions eigen;
-      eigen.count = stability_.modes;
-      const LogStage stage("Stability eigenmodes");
-      info.modes = lowest_eigenmodes(model_, eigen);
-      if (!info.modes.empty()) {
-        std::snprintf(line, sizeof line, "%.6g", info.modes.front().eigenvalue);
-        lowest = line;
-      }
-    } catch (const Error& e) {
-      log("  step " + std::to_string(info.step) +
-          ": the eigenmodes could not be computed: " + e.what());
-    }
-    eigenmode_seconds_ +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::snprintf(line, sizeof line,
-                  "step %d: t = %.6g: new instability, %d negative pivots (stable: %d, previous "
-                  "step: %d), %d zero; lowest eigenvalue %s",
-                  info.step, info.time, inertia.negative, expected, baseline, inertia.zero,
-                  lowest.c_str());
-    log("  " + std::string(line));
-    if (stability_.branch_switch && !info.modes.empty()) {
-      // (stability.md, S10): u += a φ1 on the displacement dofs (φ1 is zero on constrained
-      // ones), the same time solved again; the model's converged state is the unperturbed one.
-      const std::vector<double>& phi = info.modes.front().state;
-      const std::vector<double> unperturbed = model_.converged_state();
-      const int n_nodes = model_.mesh().n_nodes();
-      double a = stability_.perturbation_mm;
-      newton_.allow_reuse(false);  // an unstable state (newton_solver.hpp, allow_reuse)
-      for (int attempt = 0; attempt < kAmplitudeTries; ++attempt, a *= kAmplitudeGrowth) {
-        auto& x = model_.state();
-        for (int v = 0; v < n_nodes; ++v)
-          for (int k = 0; k < 3; ++k) x[DofMap::dof(v, k)] += a * phi[DofMap::dof(v, k)];
-        NewtonResult newton;
-        const std::string failure = solve_step(newton, result);
-        if (!failure.empty()) {
-          model_.restore_converged();
-          std::snprintf(line, sizeof line,
-                        "step %d: branch switching with amplitude %.4g mm failed (%s); keeping "
-                        "the unperturbed state",
-                        info.step, a, failure.c_str());
-          log("  " + std::string(line));
-          break;
-        }
-        const double moved = max_nodal_distance(model_.state(), unperturbed, n_nodes);
-        if (moved < 0.5 * a) {
-          model_.restore_converged();
-          std::snprintf(line, sizeof line,
-                        "step %d: the re-solve from amplitude %.4g mm fell back onto the "
-                        "unperturbed state (max |du| %.3g mm)%s",
-                        info.step, a, moved,
-                        attempt + 1 < kAmplitudeTries ? "; trying a larger amplitude"
-                                                      : "; keeping the unperturbed state");
-          log("  " + std::string(line));
-          continue;
-        }
-        model_.save_converged();
-        const bool checked = inertia_or_log(inertia);
-        if (checked) newton_.offer_factor(inertia_->factor());
-        switched = true;
-        info.branch_switched = true;
-        info.perturbation_mm = a;
-        info.newton_iterations += attempt_newton_;
-        info.reused_solves += attempt_reused_;
-        info.residual_norm = newton.residual_norm;
-        info.reference_norm = newton.reference_norm;
-        info.residual_history = newton.residual_history;
-        std::snprintf(line, sizeof line,
-                      "step %d: switched branch along mode 1 (eigenvalue %s): amplitude %.4g mm, "
-                      "%d extra negative pivot(s) before, max |du| %.4g mm, %d Newton "
-                      "iterations; now %d negative pivots",
-                      info.step, lowest.c_str(), a, info.unstable_negative_pivots - expected, moved,
-                      newton.iterations, checked ? inertia.negative : -1);
-        log("  " + std::string(line));
-        if (!checked) {
-          newton_.allow_reuse(false);  // stability unknown
-          current_.negative_pivots = -1;
-          return;
-        }
-        break;
-      }
+    const std::string lowest = report_instability(info, inertia, expected, baseline, log);
+    if (stability_.branch_switch && !info.modes.empty() &&
+        !switch_branch(info, result, log, lowest, expected, inertia, switched)) {
+      newton_.allow_reuse(false);  // stability unknown
+      current_.negative_pivots = -1;
+      return;
     }
   }
   info.negative_pivots = inertia.negative;
@@ -269,124 +281,143 @@ void LoadStepper::set_interrupt(std::function<bool()> stop) {
   newton_.set_interrupt(std::move(stop));
 }
 
-SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_step,
-                                const std::function<void(const std::string&)>& log) {
-  SteppingResult result;
-  const double end = settings_.end_time;
-  const double min_dt = settings_.min_step * end;
-  const double max_dt = settings_.max_step * end;
+void LoadStepper::start() {
   StepperState& st = current_;
   if (resume_) {
     // The model already holds the checkpoint's converged state.
     st = *resume_;
     resume_.reset();
     model_.resume_at(st.time);
-  } else {
-    st = StepperState{};
-    st.dt = std::min(end / settings_.steps, max_dt);
-    model_.set_time(0.0);
-    model_.save_converged();
-    st.previous_state = model_.converged_state();
+    return;
   }
-  double& dt = st.dt;
-  double& t = st.time;
-  double& previous_dt = st.previous_dt;
-  std::vector<double>& previous_state = st.previous_state;
+  st = StepperState{};
+  st.dt = std::min(settings_.end_time / settings_.steps, settings_.max_step * settings_.end_time);
+  model_.set_time(0.0);
+  model_.save_converged();
+  st.previous_state = model_.converged_state();
+}
+
+void LoadStepper::predict(double step) {
+  // Extrapolate the last increment (secant); the caller then imposes the new boundary values.
+  if (current_.previous_dt <= 0.0) return;
+  const double s = step / current_.previous_dt;
+  const auto& now = model_.converged_state();
+  const std::vector<double>& previous_state = current_.previous_state;
+  auto& x = model_.state();
+  for (size_t i = 0; i < x.size(); ++i) x[i] = now[i] + s * (now[i] - previous_state[i]);
+}
+
+void LoadStepper::report_workspace_growth(int step, const Log& log) {
+  const WorkspaceGrowth g = factor_workspace_growth();
+  if (g.count == reported_growths_) return;
+  reported_growths_ = g.count;
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "  step %d: the factorisation needed more working memory than MUMPS estimated "
+                "(INFOG(1) = %d): its margin ICNTL(14) is now %d %%",
+                step, g.status, g.percent);
+  log(text);
+}
+
+bool LoadStepper::cut_back(const NewtonResult& newton, const std::string& failure, double t_new,
+                           double step, SteppingResult& result, const Log& log) {
+  if (newton.out_of_memory) {
+    result.failure = "step " + std::to_string(result.steps + 1) + ": " + failure;
+    return false;
+  }
+  ++result.cutbacks;
+  const double new_dt = step * settings_.cutback;
+  const double min_dt = settings_.min_step * settings_.end_time;
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "step %d: t = %.6g failed after %d iterations: ", result.steps + 1, t_new,
+                newton.iterations);
+  if (new_dt < min_dt) {
+    result.failure = std::string(line) + failure + "; step " + std::to_string(new_dt) +
+                     " below the minimum " + std::to_string(min_dt);
+    return false;
+  }
+  log("  " + std::string(line) + failure + "; cutting the step to " + std::to_string(new_dt));
+  current_.dt = new_dt;
+  return true;
+}
+
+StepInfo LoadStepper::accept_step(const NewtonResult& newton, double t_new, double step,
+                                  SteppingResult& result) {
+  StepperState& st = current_;
+  st.previous_state = model_.converged_state();
+  model_.save_converged();
+  st.previous_dt = step;
+  st.time = t_new;
+  ++result.steps;
+  st.steps = result.steps;
+  if (newton.iterations <= settings_.easy_iterations)
+    st.dt = std::min(step * settings_.growth, settings_.max_step * settings_.end_time);
+  else
+    st.dt = step;
+  StepInfo info;
+  info.step = result.steps;
+  info.time = t_new;
+  info.dt = step;
+  info.load_factor = t_new / settings_.end_time;
+  info.newton_iterations = attempt_newton_;
+  info.reused_solves = attempt_reused_;
+  info.residual_norm = newton.residual_norm;
+  info.reference_norm = newton.reference_norm;
+  info.residual_history = newton.residual_history;
+  return info;
+}
+
+SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_step,
+                                const Log& log) {
+  SteppingResult result;
+  const double end = settings_.end_time;
+  start();
+  StepperState& st = current_;
   result.steps = st.steps;
   int cutbacks_this_step = 0;
-  char line[256];
   const auto requested = [&] { return interrupt_ && interrupt_(); };
   // A factorisation whose workspace proved too small was done again with a larger one: said once.
-  int reported_growths = factor_workspace_growth().count;
-  const auto report_workspace_growth = [&](int step) {
-    const WorkspaceGrowth g = factor_workspace_growth();
-    if (g.count == reported_growths) return;
-    reported_growths = g.count;
-    char text[200];
-    std::snprintf(text, sizeof text,
-                  "  step %d: the factorisation needed more working memory than MUMPS estimated "
-                  "(INFOG(1) = %d): its margin ICNTL(14) is now %d %%",
-                  step, g.status, g.percent);
-    log(text);
-  };
+  reported_growths_ = factor_workspace_growth().count;
   const auto stop = [&] {
     result.interrupted = true;
     result.failure = "interrupted during step " + std::to_string(result.steps + 1);
     return result;
   };
-  while (t < end * (1.0 - 1e-12)) {
+  while (st.time < end * (1.0 - 1e-12)) {
     if (requested()) return stop();
     if (result.steps >= settings_.max_steps) {
       result.failure = "reached solver.max_steps = " + std::to_string(settings_.max_steps) +
-                       " at time " + std::to_string(t);
+                       " at time " + std::to_string(st.time);
       return result;
     }
     // Land on end_time without a sliver: take the rest when it fits, halve it when it is less
     // than two steps.
-    const double remaining = end - t;
-    if (remaining > dt * (1.0 + 1e-9) && remaining < 2.0 * dt) dt = 0.5 * remaining;
-    const double t_new = (remaining <= dt * (1.0 + 1e-9)) ? end : t + dt;
-    const double step = t_new - t;
-    // Predictor: extrapolate the last increment (secant), then impose the new boundary values.
-    if (previous_dt > 0.0) {
-      const double s = step / previous_dt;
-      const auto& now = model_.converged_state();
-      auto& x = model_.state();
-      for (size_t i = 0; i < x.size(); ++i) x[i] = now[i] + s * (now[i] - previous_state[i]);
-    }
+    const double remaining = end - st.time;
+    if (remaining > st.dt * (1.0 + 1e-9) && remaining < 2.0 * st.dt) st.dt = 0.5 * remaining;
+    const double t_new = (remaining <= st.dt * (1.0 + 1e-9)) ? end : st.time + st.dt;
+    const double step = t_new - st.time;
+    // Predictor, then the new boundary values.
+    predict(step);
     model_.set_time(t_new);
     NewtonResult newton;
     const std::string failure = solve_step(newton, result);
-    report_workspace_growth(result.steps + 1);
+    report_workspace_growth(result.steps + 1, log);
     if (!failure.empty()) {
       model_.restore_converged();
       if (newton.interrupted || requested()) return stop();
-      if (newton.out_of_memory) {
-        result.failure = "step " + std::to_string(result.steps + 1) + ": " + failure;
-        return result;
-      }
-      ++result.cutbacks;
+      if (!cut_back(newton, failure, t_new, step, result, log)) return result;
       ++cutbacks_this_step;
-      const double new_dt = step * settings_.cutback;
-      std::snprintf(line, sizeof line,
-                    "step %d: t = %.6g failed after %d iterations: ", result.steps + 1, t_new,
-                    newton.iterations);
-      if (new_dt < min_dt) {
-        result.failure = std::string(line) + failure + "; step " + std::to_string(new_dt) +
-                         " below the minimum " + std::to_string(min_dt);
-        return result;
-      }
-      log("  " + std::string(line) + failure + "; cutting the step to " + std::to_string(new_dt));
-      dt = new_dt;
       continue;
     }
-    previous_state = model_.converged_state();
-    model_.save_converged();
-    previous_dt = step;
-    t = t_new;
-    ++result.steps;
-    st.steps = result.steps;
-    if (newton.iterations <= settings_.easy_iterations)
-      dt = std::min(step * settings_.growth, max_dt);
-    else
-      dt = step;
-    StepInfo info;
-    info.step = result.steps;
-    info.time = t;
-    info.dt = step;
-    info.load_factor = t / end;
-    info.newton_iterations = attempt_newton_;
-    info.reused_solves = attempt_reused_;
-    info.residual_norm = newton.residual_norm;
-    info.reference_norm = newton.reference_norm;
-    info.residual_history = newton.residual_history;
+    StepInfo info = accept_step(newton, t_new, step, result);
     info.cutbacks = cutbacks_this_step;
     cutbacks_this_step = 0;
     bool switched = false;
     check_stability(info, result, log, switched);
-    report_workspace_growth(info.step);
+    report_workspace_growth(info.step, log);
     // After a switch the last increment holds the jump onto the new branch: no extrapolation.
-    if (switched) previous_dt = 0.0;
+    if (switched) st.previous_dt = 0.0;
     on_step(info);
   }
   result.completed = true;

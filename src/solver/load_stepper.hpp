@@ -123,10 +123,39 @@ class LoadStepper {
   std::string describe_failure(const NewtonResult& newton) const;
   /// Newton, then multiplier updates and re-solves; empty on success, else why it failed.
   std::string solve_step(NewtonResult& newton, SteppingResult& result);
+  using Log = std::function<void(const std::string&)>;
   /// The stability part of a converged, saved step: inertia, modes, branch switching. The model
   /// holds the step's accepted state on return. Sets `switched` when the predictor must restart.
-  void check_stability(StepInfo& info, SteppingResult& result,
-                       const std::function<void(const std::string&)>& log, bool& switched);
+  void check_stability(StepInfo& info, SteppingResult& result, const Log& log, bool& switched);
+  /// The inertia of the model's tangent into `out`; false when the check failed (said in the
+  /// log for `step`, which is then reported unchecked).
+  bool compute_inertia(Inertia& out, int step, const Log& log);
+  /// A new instability of `info`'s step (`inertia` above `baseline`): marks it, computes the
+  /// lowest eigenmodes into info.modes and logs the line; returns the lowest eigenvalue as text
+  /// ("not computed" without one).
+  std::string report_instability(StepInfo& info, const Inertia& inertia, int expected, int baseline,
+                                 const Log& log);
+  /// Branch switching along the first mode (stability.md, S10) with growing amplitudes. On a
+  /// switch, sets `switched`, updates `info` and `inertia` (the new state's) and returns false
+  /// when the new state's inertia could not be computed; else the model keeps the unperturbed
+  /// state and `inertia`, and it returns true.
+  bool switch_branch(StepInfo& info, SteppingResult& result, const Log& log,
+                     const std::string& lowest, int expected, Inertia& inertia, bool& switched);
+  /// The state run() starts from: the resumed one, or t = 0 with the first step size.
+  void start();
+  /// The predictor of a step of size `step` from the last converged state (secant).
+  void predict(double step);
+  /// A failed attempt at the step to `t_new` (of size `step`), the model back at the last
+  /// converged state: cuts the step back (said in the log) and returns true, or returns false
+  /// with result.failure set when the run must stop (out of memory, step below the minimum).
+  bool cut_back(const NewtonResult& newton, const std::string& failure, double t_new, double step,
+                SteppingResult& result, const Log& log);
+  /// Accepts the converged step to `t_new` (of size `step`): saves it, chooses the next step
+  /// size and returns the step's record (its cut-backs and stability not yet filled in).
+  StepInfo accept_step(const NewtonResult& newton, double t_new, double step,
+                       SteppingResult& result);
+  /// Logs, once, that a factorisation's workspace had to grow since the last report.
+  void report_workspace_growth(int step, const Log& log);
 
   MixedModel& model_;
   SteppingSettings settings_;
@@ -140,6 +169,7 @@ class LoadStepper {
   int attempt_reused_ = 0;          ///< reused solves of the current solve_step, all passes
   int attempt_newton_ = 0;          ///< Newton iterations of the current solve_step, all passes
   bool last_step_updated_ = false;  ///< the last converged solve_step updated multipliers
+  int reported_growths_ = 0;        ///< factor workspace growths already in the log
   double eigenmode_seconds_ = 0.0;
 };
 

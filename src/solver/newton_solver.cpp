@@ -402,11 +402,26 @@ NewtonResult NewtonSolver::run() {
     make_matrix();
     offer_factor(nullptr);
   }
+  int earlier_iterations = 0;  // of solves ended by a workspace too small
+  const bool reuse_converged = solve_timed(result, earlier_iterations);
+  model_.set_free(x_);
+  if (reuse_converged) {
+    result.converged = last_status_.ok;
+    result.residual_norm = result.residual_history.back();
+    result.reason = "CONVERGED_FNORM_RELATIVE with a reused factorisation";
+    result.reference_norm = reference_norm_;
+    result.status = last_status_;
+    return result;
+  }
+  read_snes_outcome(result, earlier_iterations);
+  return result;
+}
+
+bool NewtonSolver::solve_timed(NewtonResult& result, int& earlier_iterations) {
   const double assembly_before = times_.assembly;
   const auto t0 = WallClock::now();
   bool reuse_converged = false;
   PetscErrorCode code = 0;
-  int earlier_iterations = 0;  // of solves ended by a workspace too small
   try {
     const ReuseOutcome reuse =
         reuse_enabled_ && reuse_allowed_ ? iterate_with_factor(result) : ReuseOutcome::not_started;
@@ -430,15 +445,10 @@ NewtonResult NewtonSolver::run() {
   times_.linear_solve += elapsed - (times_.assembly - assembly_before);
   if (error_) std::rethrow_exception(error_);
   PLISSE_PETSC(code);
-  model_.set_free(x_);
-  if (reuse_converged) {
-    result.converged = last_status_.ok;
-    result.residual_norm = result.residual_history.back();
-    result.reason = "CONVERGED_FNORM_RELATIVE with a reused factorisation";
-    result.reference_norm = reference_norm_;
-    result.status = last_status_;
-    return result;
-  }
+  return reuse_converged;
+}
+
+void NewtonSolver::read_snes_outcome(NewtonResult& result, int earlier_iterations) {
   SNESConvergedReason reason;
   PLISSE_PETSC(SNESGetConvergedReason(snes_, &reason));
   PetscInt its = 0, n_history = 0;
@@ -476,7 +486,6 @@ NewtonResult NewtonSolver::run() {
   }
   result.interrupted = interrupted_;
   result.status = last_status_;
-  return result;
 }
 
 }  // namespace plisse

@@ -142,6 +142,14 @@ class NewtonSolver {
   static PetscErrorCode apply_reuse(PC pc, Vec r, Vec y);
   /// solve() and refine() with pass_rtol_ and reference_norm_ set (0: the first ||R||).
   NewtonResult run();
+  /// The solve of run(), timed into times_: the reuse iterations, then SNES (again after each
+  /// growth of the factor's workspace, counting the iterations before it into
+  /// `earlier_iterations`). Returns true when the reuse iterations converged. Rethrows an error
+  /// of the model's callbacks or PETSc's.
+  bool solve_timed(NewtonResult& result, int& earlier_iterations);
+  /// After SNES ended: its reason, iterations and residual history into `result`, and which
+  /// factor the next solve may reuse.
+  void read_snes_outcome(NewtonResult& result, int earlier_iterations);
   /// SNESSolve from x_, its first iteration with a new tangent.
   PetscErrorCode snes_solve();
   /// After a failed linear solve: when MUMPS's workspace, sized from its analysis's estimate and

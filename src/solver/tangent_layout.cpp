@@ -8,35 +8,66 @@
 
 namespace plisse {
 
+namespace {
+
+/// The free components of every node and the equation of its first free one (-1: none).
+struct NodeEquations {
+  std::vector<int> n_free;
+  std::vector<int> first;
+};
+
+NodeEquations node_equations(const DofMap& dofs) {
+  const int n_nodes = dofs.n_nodes();
+  NodeEquations nodes{std::vector<int>(n_nodes, 0), std::vector<int>(n_nodes, -1)};
+  for (int v = 0; v < n_nodes; ++v)
+    for (int k = DofMap::kPerNode - 1; k >= 0; --k)
+      if (const int eq = dofs.equation(DofMap::dof(v, k)); eq >= 0) {
+        ++nodes.n_free[v];
+        nodes.first[v] = eq;
+      }
+  return nodes;
+}
+
+/// Owned couplings that involve a global unknown, and the diagonal of every owned free global
+/// unknown, as sorted unique (row, column) equations. Their equations follow all nodal ones, so
+/// in a nodal row they come after the node columns.
+std::vector<std::pair<int, int>> global_unknown_entries(
+    const Distribution& distribution, const std::vector<std::pair<int, int>>& couplings) {
+  const DofMap& dofs = distribution.dofs();
+  const int n_nodal = DofMap::kPerNode * dofs.n_nodes();
+  const auto owned = [&](int eq) { return distribution.owns_equation(eq); };
+  std::vector<std::pair<int, int>> entries;
+  for (const auto& [row, col] : couplings) {
+    const int r = dofs.equation(row), c = dofs.equation(col);
+    if ((row >= n_nodal || col >= n_nodal) && owned(r) && c >= 0) entries.emplace_back(r, c);
+  }
+  for (int d = n_nodal; d < dofs.n_dofs(); ++d)
+    if (const int eq = dofs.equation(d); owned(eq)) entries.emplace_back(eq, eq);
+  std::sort(entries.begin(), entries.end());
+  entries.erase(std::unique(entries.begin(), entries.end()), entries.end());
+  return entries;
+}
+
+}  // namespace
+
 TangentLayout::TangentLayout(const NodeGraph& graph, ElementNodes elements,
                              const Distribution& distribution,
                              const std::vector<std::pair<int, int>>& couplings)
     : distribution_(distribution), width_(elements.width) {
-  const DofMap& dofs = distribution.dofs();
-  const int n_nodes = dofs.n_nodes();
-  const int n_nodal = DofMap::kPerNode * n_nodes;
+  const NodeEquations nodes = node_equations(distribution.dofs());
+  const std::vector<std::pair<int, int>> extra_entries =
+      global_unknown_entries(distribution, couplings);
+  set_rows(graph, nodes.n_free, nodes.first, extra_entries);
+  set_element_shifts(elements, nodes.n_free, nodes.first);
+}
+
+void TangentLayout::set_rows(const NodeGraph& graph, const std::vector<int>& node_free,
+                             const std::vector<int>& node_first_equation,
+                             const std::vector<std::pair<int, int>>& extra_entries) {
+  const Distribution& distribution = distribution_;
+  const int n_nodes = static_cast<int>(node_free.size());
   const int first_equation = distribution.first_equation();
-  // Free components and first free equation of every node.
-  std::vector<int> node_free(n_nodes, 0), node_first_equation(n_nodes, -1);
-  for (int v = 0; v < n_nodes; ++v)
-    for (int k = DofMap::kPerNode - 1; k >= 0; --k)
-      if (const int eq = dofs.equation(DofMap::dof(v, k)); eq >= 0) {
-        ++node_free[v];
-        node_first_equation[v] = eq;
-      }
   const auto owned = [&](int eq) { return distribution.owns_equation(eq); };
-  // Owned couplings that involve a global unknown, and the diagonal of every owned free global
-  // unknown. Their equations follow all nodal ones, so in a nodal row they come after the node
-  // columns.
-  std::vector<std::pair<int, int>> extra_entries;
-  for (const auto& [row, col] : couplings) {
-    const int r = dofs.equation(row), c = dofs.equation(col);
-    if ((row >= n_nodal || col >= n_nodal) && owned(r) && c >= 0) extra_entries.emplace_back(r, c);
-  }
-  for (int d = n_nodal; d < dofs.n_dofs(); ++d)
-    if (const int eq = dofs.equation(d); owned(eq)) extra_entries.emplace_back(eq, eq);
-  std::sort(extra_entries.begin(), extra_entries.end());
-  extra_entries.erase(std::unique(extra_entries.begin(), extra_entries.end()), extra_entries.end());
   // Row lengths of the owned rows: the free columns of the neighbour nodes, then the extra
   // entries of the row.
   const int n_rows = distribution.n_owned();
@@ -76,16 +107,22 @@ TangentLayout::TangentLayout(const NodeGraph& graph, ElementNodes elements,
   if (distribution.n_ranks() > 1)
     for (int r = 0; r < n_rows; ++r)
       std::sort(columns_.begin() + row_start_[r], columns_.begin() + row_start_[r + 1]);
+}
+
+void TangentLayout::set_element_shifts(const ElementNodes& elements,
+                                       const std::vector<int>& node_free,
+                                       const std::vector<int>& node_first_equation) {
+  const int first_equation = distribution_.first_equation();
   // Per local element and local node pair (a, b): where node b's run of columns starts in a row
   // of node a, minus b's first equation, so that adding a column's equation gives its position.
   // The run of b starts where its first equation sits in the (sorted) row.
   element_shift_.assign(static_cast<std::size_t>(elements.n_elements()) * width_ * width_, 0);
-  for (int e : distribution.local_elements()) {
+  for (int e : distribution_.local_elements()) {
     const auto nodes = elements.of(e);
     int* shift = element_shift_.data() + static_cast<std::size_t>(e) * width_ * width_;
     for (int a = 0; a < width_; ++a) {
       const int first_row = node_first_equation[nodes[a]];
-      if (node_free[nodes[a]] == 0 || !owned(first_row)) continue;
+      if (node_free[nodes[a]] == 0 || !distribution_.owns_equation(first_row)) continue;
       const PetscInt* row_begin = columns_.data() + row_start_[first_row - first_equation];
       const PetscInt* row_end = columns_.data() + row_start_[first_row - first_equation + 1];
       for (int b = 0; b < width_; ++b) {

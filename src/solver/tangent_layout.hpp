@@ -74,6 +74,17 @@ class TangentLayout {
   };
 
  private:
+  /// row_start_ and columns_ of the owned rows: the free equations of each node's neighbours in
+  /// `graph`, then `extra_entries` (sorted (row, column) equations of the global unknowns).
+  /// `node_free` and `node_first_equation`: per node, its free components and the equation of the
+  /// first (-1: none).
+  void set_rows(const NodeGraph& graph, const std::vector<int>& node_free,
+                const std::vector<int>& node_first_equation,
+                const std::vector<std::pair<int, int>>& extra_entries);
+  /// element_shift_ of the local elements, from the rows set by set_rows.
+  void set_element_shifts(const ElementNodes& elements, const std::vector<int>& node_free,
+                          const std::vector<int>& node_first_equation);
+
   const Distribution& distribution_;
   int width_ = 0;                          ///< nodes per element
   std::vector<PetscInt> row_start_;        ///< owned rows + 1 row starts (local rows)
