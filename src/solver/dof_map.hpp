@@ -21,8 +21,9 @@ class DofMap {
   DofMap(int n_nodes, int n_global, const std::vector<ConstrainedComponent>& constrained,
          const std::vector<int>& node_order = {});
 
-  /// Index of component `comp` (0..2 displacement, 3 pressure) of `node` in the full state.
-  static int dof(int node, int comp) { return kPerNode * node + comp; }
+  /// Index of component `comp` (0..2 displacement, 3 pressure) of `node` in the full state: the
+  /// layout's one formula, node_dof (physics/model_term.hpp), which the terms use.
+  static int dof(int node, int comp) { return node_dof(node, comp); }
   int n_dofs() const { return static_cast<int>(equation_.size()); }
   int n_free() const { return n_free_; }
   int n_free_pressure() const { return n_free_pressure_; }

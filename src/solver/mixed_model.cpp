@@ -200,7 +200,13 @@ AssemblyStatus MixedModel::assemble_residual(Vec f) {
 
 AssemblyStatus MixedModel::assemble_tangent(Mat K) {
   AssemblyStatus status;
-  term_residual_.assign(state_.size(), 0.0);  // the terms' residual part is discarded here
+  // A term adds its residual and its tangent in one call (ModelTerm::assemble); the residual part
+  // lands in term_residual_ and is not kept. No caller of this pass needs it: Newton's Jacobian
+  // callback comes after SNES evaluated the residual at the same state (assemble_residual, with
+  // the elements' part and the external force, which this pass does not compute), and the
+  // stability check, the eigenmodes and the Krylov steps ask for the tangent alone. A residual
+  // kept here would be the terms' part only, a second and partial copy that nothing reads.
+  term_residual_.assign(state_.size(), 0.0);
   if (layout_->matches(K)) {
     // Each entry receives its element contributions in element order, then the terms', exactly
     // as MatSetValues(ADD_VALUES) would add them: the same bits.
