@@ -27,7 +27,7 @@
 #include <vector>
 
 #include "app/model_builder.hpp"
-#include "io/case.hpp"
+#include "case/case.hpp"
 #include "material/registry.hpp"
 #include "physics/dirichlet.hpp"
 #include "solver/mixed_model.hpp"

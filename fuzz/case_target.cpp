@@ -3,8 +3,8 @@
 #include <string_view>
 #include <vector>
 
+#include "case/case.hpp"
 #include "core/error.hpp"
-#include "io/case.hpp"
 #include "targets.hpp"
 
 namespace plisse::fuzz {
@@ -27,9 +27,10 @@ Outcome parse_case(Bytes data) {
       throw Finding("accepted case has neither mesh.file nor mesh.generate");
     if (!(c.solver.end_time > 0.0) || c.solver.steps < 1 || c.output.every < 1)
       throw Finding("accepted case violates solver.end_time > 0, steps >= 1 or every >= 1");
-    for (const Load& l : c.loads)
-      if (!(l.ramp.end > l.ramp.start) || l.ramp.start < 0.0)
-        throw Finding("accepted load '" + l.name + "' has a ramp with end <= start or start < 0");
+    for (const TermEntry& entry : c.terms)
+      for (const RampUse& use : entry.kind->ramps(entry))
+        if (!(use.ramp.end > use.ramp.start) || use.ramp.start < 0.0)
+          throw Finding("accepted " + use.what + " has a ramp with end <= start or start < 0");
     return Outcome::accepted;
   } catch (const Error&) {  // InputError derives from Error
     return Outcome::rejected;

@@ -2,7 +2,7 @@
 #include <cstring>
 
 #include "core/error.hpp"
-#include "io/checkpoint.hpp"
+#include "output/checkpoint.hpp"
 #include "scratch_file.hpp"
 #include "targets.hpp"
 

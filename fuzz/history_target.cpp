@@ -3,8 +3,8 @@
 #include <cstring>
 
 #include "core/error.hpp"
-#include "io/append_file.hpp"
-#include "io/history_writer.hpp"
+#include "output/append_file.hpp"
+#include "output/history_writer.hpp"
 #include "scratch_file.hpp"
 #include "targets.hpp"
 

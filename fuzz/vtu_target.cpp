@@ -1,7 +1,7 @@
 // Fuzz target "vtu": the reader of plisse's step files (`plisse wrinkles DIR --step N`, mode
 // imperfections from an earlier run), raw or zlib-compressed.
 #include "core/error.hpp"
-#include "io/vtu_reader.hpp"
+#include "output/vtu_reader.hpp"
 #include "scratch_file.hpp"
 #include "targets.hpp"
 

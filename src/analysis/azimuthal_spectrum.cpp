@@ -62,8 +62,8 @@ AzimuthGrid make_azimuth_grid(double sector_deg, double start) {
 
 std::vector<double> resample_on_grid(const std::vector<double>& theta,
                                      const std::vector<double>& value, const AzimuthGrid& grid) {
-  FE_CHECK(!theta.empty() && theta.size() == value.size(),
-           "resample_on_grid: need as many values as angles, at least one");
+  PLISSE_CHECK(!theta.empty() && theta.size() == value.size(),
+               "resample_on_grid: need as many values as angles, at least one");
   // Samples in [start - margin, start + 2 pi - margin), sorted: the margin keeps points of a
   // sector's start plane that round-off puts just below `start` at the beginning.
   const double margin = grid.full() ? 0.0 : 0.5 * (kTwoPi - grid.sector);
@@ -105,9 +105,10 @@ double AzimuthalSpectrum::amplitude(int j) const {
 
 AzimuthalSpectrum compute_spectrum(const AzimuthGrid& grid, const std::vector<double>& g,
                                    int j_max) {
-  FE_CHECK(static_cast<int>(g.size()) == grid.n_points(), "compute_spectrum: signal size");
-  FE_CHECK(j_max >= 0 && (grid.full() ? 2 * j_max < grid.n_intervals : j_max < grid.n_intervals),
-           "compute_spectrum: harmonic " << j_max << " beyond the grid's resolution");
+  PLISSE_CHECK(static_cast<int>(g.size()) == grid.n_points(), "compute_spectrum: signal size");
+  PLISSE_CHECK(
+      j_max >= 0 && (grid.full() ? 2 * j_max < grid.n_intervals : j_max < grid.n_intervals),
+      "compute_spectrum: harmonic " << j_max << " beyond the grid's resolution");
   AzimuthalSpectrum sp;
   sp.count_step = grid.count_step;
   sp.a.assign(static_cast<std::size_t>(j_max) + 1, 0.0);
@@ -147,7 +148,8 @@ void remove_harmonics(const AzimuthGrid& grid, const AzimuthalSpectrum& spectrum
 std::vector<double> harmonics_sum(const AzimuthGrid& grid, const AzimuthalSpectrum& spectrum,
                                   const std::vector<int>& j_list) {
   for (int j : j_list)
-    FE_CHECK(j >= 0 && j <= spectrum.j_max(), "harmonics_sum: harmonic " << j << " not computed");
+    PLISSE_CHECK(j >= 0 && j <= spectrum.j_max(),
+                 "harmonics_sum: harmonic " << j << " not computed");
   const PhaseTable table(grid);
   std::vector<double> g(static_cast<std::size_t>(grid.n_points()), 0.0);
   for (int k = 0; k < grid.n_points(); ++k) {

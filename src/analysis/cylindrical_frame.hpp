@@ -19,7 +19,7 @@ struct CylindricalCoordinates {
 /// right-handed and theta grows from e1 towards e2.
 class CylindricalFrame {
  public:
-  /// Throws Error (FE_CHECK) unless 0 <= axis <= 2.
+  /// Throws Error (PLISSE_CHECK) unless 0 <= axis <= 2.
   CylindricalFrame(int axis, const Vec3d& center);
 
   CylindricalCoordinates coordinates(const Vec3d& X) const {

@@ -81,7 +81,7 @@ double smallest(const std::array<double, 4>& L) { return *std::min_element(L.beg
 }  // namespace
 
 MeshPoint locate_point(const Mesh& mesh, const Vec3d& point) {
-  FE_CHECK(mesh.n_tets() > 0, "locate_point: the mesh has no tetrahedra");
+  PLISSE_CHECK(mesh.n_tets() > 0, "locate_point: the mesh has no tetrahedra");
   // A point on a face shared by two elements is inside both, to rounding: accept a coordinate
   // this far below zero as inside.
   constexpr double kInside = -1e-10;
@@ -126,8 +126,8 @@ MeshPoint locate_point(const Mesh& mesh, const Vec3d& point) {
 }
 
 std::vector<std::pair<int, double>> interpolation_weights(const Mesh& mesh, const MeshPoint& p) {
-  FE_CHECK(p.element >= 0 && p.element < mesh.n_tets(),
-           "interpolation_weights: element " << p.element << " is not in the mesh");
+  PLISSE_CHECK(p.element >= 0 && p.element < mesh.n_tets(),
+               "interpolation_weights: element " << p.element << " is not in the mesh");
   const std::vector<int> nodes = element_nodes(mesh, p.element);
   const std::vector<double> N = shape_values(mesh, p.L);
   std::vector<std::pair<int, double>> weights;

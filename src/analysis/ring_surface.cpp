@@ -31,7 +31,7 @@ std::vector<Vec3d> vertex_normals(const std::vector<Vec3d>& x,
 RingSurface::RingSurface(const std::vector<Vec3d>& nodes,
                          const std::vector<std::array<int, 3>>& triangles,
                          const std::vector<Vec3d>& displacement) {
-  FE_CHECK(
+  PLISSE_CHECK(
       displacement.empty() || displacement.size() == nodes.size(),
       "ring surface: " << displacement.size() << " displacements for " << nodes.size() << " nodes");
   // Local numbering of the surface nodes.
@@ -41,7 +41,7 @@ RingSurface::RingSurface(const std::vector<Vec3d>& nodes,
   for (const auto& t : triangles) {
     std::array<int, 3> lt{};
     for (int k = 0; k < 3; ++k) {
-      FE_CHECK(
+      PLISSE_CHECK(
           t[k] >= 0 && t[k] < static_cast<int>(nodes.size()),
           "ring surface: triangle node " << t[k] << " out of range [0, " << nodes.size() << ")");
       const auto [it, inserted] = local.try_emplace(t[k], static_cast<int>(X_.size()));

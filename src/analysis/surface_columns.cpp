@@ -166,8 +166,8 @@ namespace {
 void check_triangles(std::size_t n_nodes, const std::vector<std::array<int, 3>>& triangles) {
   for (const auto& t : triangles)
     for (int a : t)
-      FE_CHECK(a >= 0 && static_cast<std::size_t>(a) < n_nodes,
-               "surface search: triangle node " << a << " out of range");
+      PLISSE_CHECK(a >= 0 && static_cast<std::size_t>(a) < n_nodes,
+                   "surface search: triangle node " << a << " out of range");
 }
 
 }  // namespace
@@ -177,7 +177,7 @@ std::vector<int> nearest_triangles(const std::vector<Vec3d>& nodes,
                                    const std::vector<Vec3d>& points) {
   std::vector<int> nearest(points.size(), -1);
   if (points.empty()) return nearest;
-  FE_CHECK(!triangles.empty(), "surface search: no surface triangles");
+  PLISSE_CHECK(!triangles.empty(), "surface search: no surface triangles");
   check_triangles(nodes.size(), triangles);
   const TriangleGrid grid(nodes, triangles);
   for (std::size_t i = 0; i < points.size(); ++i) nearest[i] = grid.nearest(points[i]);
@@ -189,14 +189,15 @@ std::vector<int> assign_columns(const std::vector<Vec3d>& nodes,
                                 const std::vector<std::array<int, 3>>& triangles) {
   std::vector<int> column(tets.size(), -1);
   if (tets.empty()) return column;
-  FE_CHECK(!triangles.empty(), "surface columns: no surface triangles");
+  PLISSE_CHECK(!triangles.empty(), "surface columns: no surface triangles");
   const int n_nodes = static_cast<int>(nodes.size());
   check_triangles(nodes.size(), triangles);
   const TriangleGrid grid(nodes, triangles);
   for (std::size_t e = 0; e < tets.size(); ++e) {
     Vec3d centroid = Vec3d::Zero();
     for (int a : tets[e]) {
-      FE_CHECK(a >= 0 && a < n_nodes, "surface columns: tetrahedron node " << a << " out of range");
+      PLISSE_CHECK(a >= 0 && a < n_nodes,
+                   "surface columns: tetrahedron node " << a << " out of range");
       centroid += nodes[static_cast<std::size_t>(a)];
     }
     column[e] = grid.nearest(centroid / 4.0);

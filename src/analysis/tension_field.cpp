@@ -50,26 +50,27 @@ TensionField compute_tension_field(
     const std::vector<Vec3d>& nodes, const std::vector<std::array<int, 4>>& tets,
     const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& column,
     const std::vector<Vec3d>& displacement, const std::vector<Mat3d>& cauchy_stress,
-    const std::vector<double>& J, const TensionFieldOptions& options) {
+    const std::vector<double>& J, const TensionFieldSettings& options) {
   const std::size_t n_tets = tets.size(), n_tri = triangles.size();
   const int n_nodes = static_cast<int>(nodes.size());
-  FE_CHECK(column.size() == n_tets,
-           "tension field: " << column.size() << " columns for " << n_tets << " tetrahedra");
-  FE_CHECK(displacement.size() == nodes.size(), "tension field: " << displacement.size()
-                                                                  << " displacements for "
-                                                                  << nodes.size() << " nodes");
-  FE_CHECK(cauchy_stress.size() == n_tets, "tension field: " << cauchy_stress.size()
-                                                             << " stresses for " << n_tets
-                                                             << " tetrahedra");
-  FE_CHECK(J.empty() || J.size() == n_tets,
-           "tension field: " << J.size() << " values of J for " << n_tets << " tetrahedra");
-  FE_CHECK(!options.tolerance || (std::isfinite(*options.tolerance) && *options.tolerance >= 0.0),
-           "tension field: tolerance must be >= 0");
-  FE_CHECK(std::isfinite(options.relative_tolerance) && options.relative_tolerance >= 0.0,
-           "tension field: relative_tolerance must be >= 0");
+  PLISSE_CHECK(column.size() == n_tets,
+               "tension field: " << column.size() << " columns for " << n_tets << " tetrahedra");
+  PLISSE_CHECK(displacement.size() == nodes.size(), "tension field: " << displacement.size()
+                                                                      << " displacements for "
+                                                                      << nodes.size() << " nodes");
+  PLISSE_CHECK(cauchy_stress.size() == n_tets, "tension field: " << cauchy_stress.size()
+                                                                 << " stresses for " << n_tets
+                                                                 << " tetrahedra");
+  PLISSE_CHECK(J.empty() || J.size() == n_tets,
+               "tension field: " << J.size() << " values of J for " << n_tets << " tetrahedra");
+  PLISSE_CHECK(
+      !options.tolerance || (std::isfinite(*options.tolerance) && *options.tolerance >= 0.0),
+      "tension field: tolerance must be >= 0");
+  PLISSE_CHECK(std::isfinite(options.relative_tolerance) && options.relative_tolerance >= 0.0,
+               "tension field: relative_tolerance must be >= 0");
   for (const auto& t : triangles)
     for (int a : t)
-      FE_CHECK(a >= 0 && a < n_nodes, "tension field: triangle node " << a << " out of range");
+      PLISSE_CHECK(a >= 0 && a < n_nodes, "tension field: triangle node " << a << " out of range");
   const auto X = [&](int a) -> const Vec3d& { return nodes[static_cast<std::size_t>(a)]; };
   const auto x = [&](int a) {
     const auto i = static_cast<std::size_t>(a);
@@ -81,10 +82,11 @@ TensionField compute_tension_field(
   std::vector<double> weight(n_tri, 0.0);
   for (std::size_t e = 0; e < n_tets; ++e) {
     const int c = column[e];
-    FE_CHECK(c >= 0 && c < static_cast<int>(n_tri),
-             "tension field: column " << c << " of tetrahedron " << e << " out of range");
+    PLISSE_CHECK(c >= 0 && c < static_cast<int>(n_tri),
+                 "tension field: column " << c << " of tetrahedron " << e << " out of range");
     for (int a : tets[e])
-      FE_CHECK(a >= 0 && a < n_nodes, "tension field: tetrahedron node " << a << " out of range");
+      PLISSE_CHECK(a >= 0 && a < n_nodes,
+                   "tension field: tetrahedron node " << a << " out of range");
     const auto& t = tets[e];
     const double V0 =
         std::abs((X(t[1]) - X(t[0])).dot((X(t[2]) - X(t[0])).cross(X(t[3]) - X(t[0])))) / 6.0;
@@ -107,8 +109,9 @@ TensionField compute_tension_field(
         weight[it->second] = 1.0;
         orphan.erase(it);
       }
-    FE_CHECK(orphan.empty(), "tension field: " << orphan.size()
-                                               << " surface triangle(s) are no tetrahedron's face");
+    PLISSE_CHECK(
+        orphan.empty(),
+        "tension field: " << orphan.size() << " surface triangle(s) are no tetrahedron's face");
   }
 
   TensionField out;
@@ -142,7 +145,8 @@ TensionField compute_tension_field(
 
 TensionField compute_tension_field(const Mesh& mesh, const std::vector<Vec3d>& displacement,
                                    const std::vector<Mat3d>& cauchy_stress,
-                                   const std::vector<double>& J, const TensionFieldOptions& options,
+                                   const std::vector<double>& J,
+                                   const TensionFieldSettings& options,
                                    const std::string& outer_tag) {
   const auto triangles = tagged_triangles(mesh, outer_tag);
   const auto column = assign_columns(mesh.nodes, mesh.tets, triangles);

@@ -25,7 +25,7 @@ enum class MembraneState : int { taut = 0, wrinkled = 1, slack = 2 };
 /// "taut" | "wrinkled" | "slack".
 const char* to_string(MembraneState state);
 
-struct TensionFieldOptions {
+struct TensionFieldSettings {
   /// Stress below which a principal value counts as not tensile [MPa]; default (nullopt):
   /// relative_tolerance times the largest |sigma_1| over all columns (T4).
   std::optional<double> tolerance;
@@ -56,14 +56,14 @@ TensionField compute_tension_field(
     const std::vector<Vec3d>& nodes, const std::vector<std::array<int, 4>>& tets,
     const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& column,
     const std::vector<Vec3d>& displacement, const std::vector<Mat3d>& cauchy_stress,
-    const std::vector<double>& J, const TensionFieldOptions& options = {});
+    const std::vector<double>& J, const TensionFieldSettings& options = {});
 
 /// Same on `mesh` with the triangles tagged `outer_tag` (columns computed here; when calling
 /// every step, compute them once with assign_columns and use the overload above).
 TensionField compute_tension_field(const Mesh& mesh, const std::vector<Vec3d>& displacement,
                                    const std::vector<Mat3d>& cauchy_stress,
                                    const std::vector<double>& J,
-                                   const TensionFieldOptions& options = {},
+                                   const TensionFieldSettings& options = {},
                                    const std::string& outer_tag = "outer");
 
 }  // namespace plisse

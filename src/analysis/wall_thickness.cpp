@@ -21,7 +21,8 @@ WallThickness::WallThickness(const Mesh& mesh, const WallFaces& faces)
 WallThickness::Face WallThickness::face(const std::string& tag) const {
   Face f;
   f.triangles = sampling_triangles(mesh_, tag);  // checks the tag
-  FE_CHECK(!f.triangles.empty(), "wall thickness: the surface '" << tag << "' has no triangles");
+  PLISSE_CHECK(!f.triangles.empty(),
+               "wall thickness: the surface '" << tag << "' has no triangles");
   const std::size_t n = mesh_.nodes.size();
   f.start.assign(n + 1, 0);
   for (const auto& t : f.triangles)
@@ -67,9 +68,9 @@ double WallThickness::distance(const Face& f, const std::vector<Vec3d>& x, std::
 }
 
 std::vector<double> WallThickness::operator()(const std::vector<Vec3d>& displacement) const {
-  FE_CHECK(displacement.size() == mesh_.nodes.size(),
-           "wall thickness: " << displacement.size() << " displacements for " << mesh_.n_nodes()
-                              << " nodes");
+  PLISSE_CHECK(displacement.size() == mesh_.nodes.size(),
+               "wall thickness: " << displacement.size() << " displacements for " << mesh_.n_nodes()
+                                  << " nodes");
   std::vector<Vec3d> x(mesh_.nodes.size());
   for (std::size_t v = 0; v < x.size(); ++v) x[v] = mesh_.nodes[v] + displacement[v];
   std::vector<double> thickness(x.size(), 0.0);

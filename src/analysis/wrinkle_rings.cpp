@@ -73,7 +73,7 @@ const char* ring_decision_name(RingDecision decision) {
 
 std::vector<double> shape_envelope(const std::vector<int>& counts,
                                    const std::vector<double>& amplitudes) {
-  FE_CHECK(counts.size() == amplitudes.size(), "shape_envelope: one amplitude per count");
+  PLISSE_CHECK(counts.size() == amplitudes.size(), "shape_envelope: one amplitude per count");
   std::vector<double> envelope(counts.size(), 0.0);
   for (std::size_t i = 0; i < counts.size(); ++i) {
     const int m = counts[i];
@@ -93,8 +93,8 @@ std::vector<double> shape_envelope(const std::vector<int>& counts,
 
 int wrinkle_valley(const std::vector<int>& counts, const std::vector<double>& amplitudes,
                    std::size_t peak, double ratio) {
-  FE_CHECK(counts.size() == amplitudes.size() && peak < counts.size(),
-           "wrinkle_valley: one amplitude per count, and the peak among them");
+  PLISSE_CHECK(counts.size() == amplitudes.size() && peak < counts.size(),
+               "wrinkle_valley: one amplitude per count, and the peak among them");
   // (W18) A wrinkle pattern of several waves is a band-limited peak: its spectrum rises to m*
   // from a valley. A local change of shape (a flat patch, a dent) has a broad, flat spectrum up
   // to m ~ circumference / its width, with no valley. The valley must be two consecutive
@@ -119,29 +119,29 @@ int wrinkle_valley(const std::vector<int>& counts, const std::vector<double>& am
   return -1;
 }
 
-void validate_ring_options(const RingOptions& options) {
-  FE_CHECK(options.axis >= 0 && options.axis <= 2,
-           "wrinkle rings: axis must be 0 (x), 1 (y) or 2 (z), got " << options.axis);
-  FE_CHECK(options.center.allFinite(), "wrinkle rings: the axis centre must be finite");
+void validate_ring_settings(const RingSettings& options) {
+  PLISSE_CHECK(options.axis >= 0 && options.axis <= 2,
+               "wrinkle rings: axis must be 0 (x), 1 (y) or 2 (z), got " << options.axis);
+  PLISSE_CHECK(options.center.allFinite(), "wrinkle rings: the axis centre must be finite");
   for (double lat : options.latitudes_deg)
-    FE_CHECK(std::isfinite(lat) && lat > -90.0 && lat < 90.0,
-             "wrinkle rings: latitude " << lat << " deg is not in (-90, 90)");
-  FE_CHECK(options.min_count >= 1,
-           "wrinkle rings: min_count must be >= 1, got " << options.min_count);
-  FE_CHECK(options.max_count >= options.min_count,
-           "wrinkle rings: max_count (" << options.max_count << ") must be >= min_count ("
-                                        << options.min_count << ")");
-  FE_CHECK(std::isfinite(options.peak_ratio) && options.peak_ratio >= 1.0,
-           "wrinkle rings: peak_ratio must be >= 1, got " << options.peak_ratio);
+    PLISSE_CHECK(std::isfinite(lat) && lat > -90.0 && lat < 90.0,
+                 "wrinkle rings: latitude " << lat << " deg is not in (-90, 90)");
+  PLISSE_CHECK(options.min_count >= 1,
+               "wrinkle rings: min_count must be >= 1, got " << options.min_count);
+  PLISSE_CHECK(options.max_count >= options.min_count,
+               "wrinkle rings: max_count (" << options.max_count << ") must be >= min_count ("
+                                            << options.min_count << ")");
+  PLISSE_CHECK(std::isfinite(options.peak_ratio) && options.peak_ratio >= 1.0,
+               "wrinkle rings: peak_ratio must be >= 1, got " << options.peak_ratio);
   if (options.sector_deg) {
     const double s = *options.sector_deg;
-    FE_CHECK(std::find(kSectorsDeg.begin(), kSectorsDeg.end(), s) != kSectorsDeg.end(),
-             "wrinkle rings: sector_deg must be 45, 90, 180 or 360, got " << s);
+    PLISSE_CHECK(std::find(kSectorsDeg.begin(), kSectorsDeg.end(), s) != kSectorsDeg.end(),
+                 "wrinkle rings: sector_deg must be 45, 90, 180 or 360, got " << s);
   }
 }
 
 DetectedSector detect_sector(std::vector<double> theta) {
-  FE_CHECK(theta.size() >= 2, "detect_sector: need at least two azimuths");
+  PLISSE_CHECK(theta.size() >= 2, "detect_sector: need at least two azimuths");
   std::sort(theta.begin(), theta.end());
   // Largest cyclic gap; the wrap-around gap goes from the last angle to the first + 2 pi.
   double gap = theta.front() + kTwoPi - theta.back();
@@ -165,11 +165,11 @@ DetectedSector detect_sector(std::vector<double> theta) {
   return out;
 }
 
-RingMetrics evaluate_ring(const RingSurface& surface, const RingOptions& options,
+RingMetrics evaluate_ring(const RingSurface& surface, const RingSettings& options,
                           double latitude_deg) {
-  validate_ring_options(options);
-  FE_CHECK(std::isfinite(latitude_deg) && latitude_deg > -90.0 && latitude_deg < 90.0,
-           "wrinkle rings: latitude " << latitude_deg << " deg is not in (-90, 90)");
+  validate_ring_settings(options);
+  PLISSE_CHECK(std::isfinite(latitude_deg) && latitude_deg > -90.0 && latitude_deg < 90.0,
+               "wrinkle rings: latitude " << latitude_deg << " deg is not in (-90, 90)");
   const CylindricalFrame frame(options.axis, options.center);
   const std::vector<RingPoint> points = surface.sample(frame, latitude_deg * kDegree);
   RingMetrics out;
@@ -300,15 +300,16 @@ RingMetrics evaluate_ring(const RingSurface& surface, const RingOptions& options
 WrinkleReport evaluate_wrinkles(const std::vector<Vec3d>& reference_nodes,
                                 const std::vector<std::array<int, 3>>& triangles,
                                 const std::vector<Vec3d>& displacement,
-                                const WrinkleOptions& options) {
-  validate_ring_options(options.rings);
-  FE_CHECK(std::isfinite(options.thickness) && options.thickness > 0.0,
-           "wrinkle metrics: thickness must be > 0, got " << options.thickness);
-  FE_CHECK(std::isfinite(options.threshold_fraction) && options.threshold_fraction > 0.0,
-           "wrinkle metrics: threshold_fraction must be > 0, got " << options.threshold_fraction);
-  FE_CHECK(displacement.size() == reference_nodes.size(),
-           "wrinkle metrics: " << displacement.size() << " displacements for "
-                               << reference_nodes.size() << " nodes");
+                                const WrinkleMeasureSettings& options) {
+  validate_ring_settings(options.rings);
+  PLISSE_CHECK(std::isfinite(options.thickness) && options.thickness > 0.0,
+               "wrinkle metrics: thickness must be > 0, got " << options.thickness);
+  PLISSE_CHECK(
+      std::isfinite(options.threshold_fraction) && options.threshold_fraction > 0.0,
+      "wrinkle metrics: threshold_fraction must be > 0, got " << options.threshold_fraction);
+  PLISSE_CHECK(displacement.size() == reference_nodes.size(),
+               "wrinkle metrics: " << displacement.size() << " displacements for "
+                                   << reference_nodes.size() << " nodes");
   const RingSurface surface(reference_nodes, triangles, displacement);
   WrinkleReport report;
   report.threshold = options.threshold_fraction * options.thickness;
@@ -324,18 +325,19 @@ WrinkleReport evaluate_wrinkles(const std::vector<Vec3d>& reference_nodes,
 }
 
 WrinkleReport evaluate_wrinkles(const Mesh& mesh, const std::vector<Vec3d>& displacement,
-                                const WrinkleOptions& options, const std::string& outer_tag) {
+                                const WrinkleMeasureSettings& options,
+                                const std::string& outer_tag) {
   return evaluate_wrinkles(mesh.nodes, sampling_triangles(mesh, outer_tag), displacement, options);
 }
 
 std::vector<std::array<int, 3>> tagged_triangles(const Mesh& mesh, const std::string& tag) {
   const auto it = mesh.surface_tags.find(tag);
-  FE_CHECK(it != mesh.surface_tags.end(), "the mesh has no surface tag '" << tag << "'");
+  PLISSE_CHECK(it != mesh.surface_tags.end(), "the mesh has no surface tag '" << tag << "'");
   std::vector<std::array<int, 3>> out;
   out.reserve(it->second.size());
   for (int t : it->second) {
-    FE_CHECK(t >= 0 && t < static_cast<int>(mesh.triangles.size()),
-             "surface tag '" << tag << "': triangle " << t << " out of range");
+    PLISSE_CHECK(t >= 0 && t < static_cast<int>(mesh.triangles.size()),
+                 "surface tag '" << tag << "': triangle " << t << " out of range");
     out.push_back(mesh.triangles[static_cast<std::size_t>(t)]);
   }
   return out;

@@ -3,7 +3,7 @@
 /// count, peak-to-peak amplitude and wavelength per ring (docs/theory/wrinkles.md).
 ///
 /// Typical call from a solver step (mesh, displacements u per node, thickness t):
-///   WrinkleOptions opt;
+///   WrinkleMeasureSettings opt;
 ///   opt.rings.axis = 1;  opt.rings.latitudes_deg = {0, 30, 60};  opt.thickness = t;
 ///   const WrinkleReport r = evaluate_wrinkles(mesh, u, opt);   // outer tag "outer"
 #include <optional>
@@ -17,8 +17,8 @@
 
 namespace plisse {
 
-/// Where and how rings are taken. Invalid values throw Error (see validate_ring_options).
-struct RingOptions {
+/// Where and how rings are taken. Invalid values throw Error (see validate_ring_settings).
+struct RingSettings {
   int axis = 1;                       ///< 0 x, 1 y, 2 z: the wrinkle axis
   Vec3d center = Vec3d::Zero();       ///< a point on the axis [mm]
   std::vector<double> latitudes_deg;  ///< rings, each in (-90, 90) [deg]
@@ -83,15 +83,15 @@ struct RingMetrics {
   std::vector<int> band;
 };
 
-/// Ring options plus the wrinkled/unwrinkled criterion.
-struct WrinkleOptions {
-  RingOptions rings;
+/// Ring settings plus the wrinkled/unwrinkled criterion.
+struct WrinkleMeasureSettings {
+  RingSettings rings;
   double thickness = 0.0;           ///< membrane thickness [mm], > 0
   double threshold_fraction = 0.1;  ///< wrinkled when max amplitude > this * thickness; > 0
 };
 
 struct WrinkleReport {
-  std::vector<RingMetrics> rings;  ///< in the order of RingOptions::latitudes_deg
+  std::vector<RingMetrics> rings;  ///< in the order of RingSettings::latitudes_deg
   double max_amplitude = 0.0;      ///< largest ring amplitude [mm]
   double threshold = 0.0;          ///< threshold_fraction * thickness [mm]
   bool wrinkled = false;           ///< max_amplitude > threshold (wrinkles.md, W14)
@@ -114,7 +114,7 @@ int wrinkle_valley(const std::vector<int>& counts, const std::vector<double>& am
 /// Throws Error naming the rule if: axis not in 0..2, a latitude not in (-90, 90) or not finite,
 /// min_count < 1, max_count < min_count, sector_deg not one of 45, 90, 180, 360, peak_ratio
 /// not finite or < 1.
-void validate_ring_options(const RingOptions& options);
+void validate_ring_settings(const RingSettings& options);
 
 /// Sector of a ring from the reference azimuths of its points [rad]: the span 2 pi - (largest
 /// gap between consecutive azimuths, cyclically), rounded to the nearest of 45, 90, 180, 360
@@ -129,7 +129,7 @@ DetectedSector detect_sector(std::vector<double> theta);
 /// misses the surface or has fewer than 4 points gets count 0, amplitude 0, sector_deg 0 and
 /// the decision `empty`. A ring with a wrinkle peak gets `wrinkled` whatever its amplitude (the
 /// threshold is evaluate_wrinkles' business).
-RingMetrics evaluate_ring(const RingSurface& surface, const RingOptions& options,
+RingMetrics evaluate_ring(const RingSurface& surface, const RingSettings& options,
                           double latitude_deg);
 
 /// All rings of `options.rings` on the outer surface given by `triangles` (node indices into
@@ -139,12 +139,12 @@ RingMetrics evaluate_ring(const RingSurface& surface, const RingOptions& options
 WrinkleReport evaluate_wrinkles(const std::vector<Vec3d>& reference_nodes,
                                 const std::vector<std::array<int, 3>>& triangles,
                                 const std::vector<Vec3d>& displacement,
-                                const WrinkleOptions& options);
+                                const WrinkleMeasureSettings& options);
 
 /// Same, on the sampling_triangles of `mesh` tagged `outer_tag`. Throws Error if the tag is
 /// missing.
 WrinkleReport evaluate_wrinkles(const Mesh& mesh, const std::vector<Vec3d>& displacement,
-                                const WrinkleOptions& options,
+                                const WrinkleMeasureSettings& options,
                                 const std::string& outer_tag = "outer");
 
 /// The corner triples of the triangles of `mesh` tagged `tag`. Throws Error if the tag is missing.

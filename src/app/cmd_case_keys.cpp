@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "case/keys.hpp"
 #include "core/error.hpp"
-#include "io/case_keys.hpp"
-#include "io/generated_blocks.hpp"
+#include "output/generated_blocks.hpp"
 
 namespace plisse::app {
 namespace {

@@ -11,7 +11,7 @@
 #include "app/model_builder.hpp"
 #include "app/run_session.hpp"
 #include "app/wrinkling.hpp"
-#include "io/case.hpp"
+#include "case/case.hpp"
 #include "material/registry.hpp"
 #include "mesh/quality.hpp"
 #include "solver/petsc_session.hpp"
@@ -121,9 +121,11 @@ void check_case(const CheckOptions& options) {
   for (const InputError& e : setup_warnings(c))
     std::cerr << "plisse check: warning: " << e.what() << '\n';
   out << "  case      " << count(c.boundary.size(), "boundary condition") << ", "
-      << count(c.loads.size(), "load") << ", " << count(c.cavities.size(), "cavity", "cavities")
-      << ", " << count(c.dies.size(), "die") << ", " << count(c.caps.size(), "cap") << ", "
-      << count(c.contacts.size(), "contact") << ", " << count(c.probes.size(), "probe") << '\n';
+      << count(c.terms_in("loads").size(), "load") << ", "
+      << count(c.terms_in("cavities").size(), "cavity", "cavities") << ", "
+      << count(c.terms_in("dies").size(), "die") << ", " << count(c.terms_in("caps").size(), "cap")
+      << ", " << count(c.terms_in("contacts").size(), "contact") << ", "
+      << count(c.probes.size(), "probe") << '\n';
   out << "  solver    "
       << (c.solver.scheme == Scheme::total_lagrangian ? "total-lagrangian" : "incremental")
       << ", end_time " << number(c.solver.end_time) << " s, " << c.solver.steps

@@ -13,11 +13,11 @@
 
 #include "app/commands.hpp"
 #include "app/python_script.hpp"
+#include "case/test_data_reader.hpp"
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
-#include "io/json_file.hpp"
-#include "io/test_data_reader.hpp"
 #include "material/material_fit.hpp"
+#include "output/atomic_file.hpp"
+#include "output/json_file.hpp"
 
 namespace plisse::app {
 namespace {
@@ -149,7 +149,7 @@ void write_files(const FitCommandOptions& o, const std::vector<TestPoint>& data,
 
 void fit_command(const FitCommandOptions& o) {
   const std::vector<TestPoint> data = read_test_data(o.data);
-  FitOptions options;
+  FitSettings options;
   options.model = o.model;
   options.ogden_terms = o.terms;
   const MaterialModelInfo* info = find_material_model(o.model);

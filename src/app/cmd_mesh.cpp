@@ -11,10 +11,10 @@
 #include "app/commands.hpp"
 #include "core/error.hpp"
 #include "element/element_family.hpp"
-#include "io/atomic_file.hpp"
 #include "mesh/generate.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "mesh/quality.hpp"
+#include "output/atomic_file.hpp"
 
 namespace plisse::app {
 namespace {
@@ -71,8 +71,8 @@ void run(const MeshKind& kind, MeshCommand& cmd) {
   const MeshReport report = check_mesh(mesh);
   for (const auto& warning : report.warnings)
     std::cerr << "plisse mesh: warning: " << warning << '\n';
-  FE_CHECK(report.ok(),
-           "internal error: the generated mesh fails check_mesh: " << report.errors.front());
+  PLISSE_CHECK(report.ok(),
+               "internal error: the generated mesh fails check_mesh: " << report.errors.front());
 
   const double version = cmd.format == 2 ? 2.2 : 4.1;
   // Written beside the target and renamed over it: an interrupted write leaves the earlier file

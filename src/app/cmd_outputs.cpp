@@ -8,7 +8,7 @@
 
 #include "app/commands.hpp"
 #include "app/output_reference.hpp"
-#include "io/generated_blocks.hpp"
+#include "output/generated_blocks.hpp"
 
 namespace plisse::app {
 namespace {

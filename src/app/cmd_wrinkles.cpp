@@ -17,12 +17,12 @@
 #include "app/model_builder.hpp"
 #include "app/wrinkling.hpp"
 #include "core/error.hpp"
-#include "io/checkpoint.hpp"
-#include "io/json_file.hpp"
-#include "io/pvd_writer.hpp"
-#include "io/run_directory.hpp"
-#include "io/vtu_reader.hpp"
-#include "io/vtu_writer.hpp"
+#include "output/checkpoint.hpp"
+#include "output/json_file.hpp"
+#include "output/pvd_writer.hpp"
+#include "output/run_directory.hpp"
+#include "output/vtu_reader.hpp"
+#include "output/vtu_writer.hpp"
 #include "solver/petsc_session.hpp"
 
 namespace plisse::app {

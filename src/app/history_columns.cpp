@@ -8,8 +8,8 @@
 #include "analysis/point_location.hpp"
 #include "analysis/wall_thickness.hpp"
 #include "app/output_reference.hpp"
-#include "io/history_writer.hpp"
 #include "mesh/topology.hpp"
+#include "output/history_writer.hpp"
 #include "physics/dirichlet.hpp"
 
 namespace plisse::app {
@@ -54,6 +54,38 @@ HistoryColumns::HistoryColumns(const Case& c, const MixedModel& model, const Wri
           row.push_back(r.averages.cauchy(i, j));
       });
   const Mesh& mesh = model.mesh();
+  add_reactions(c, mesh);
+  // A wall: a shell or sheet (a cube's top and bottom are not one).
+  if (const auto faces = c.mesh.wall_thickness() ? wall_faces(mesh) : std::nullopt)
+    wall_ = std::make_shared<const WallThickness>(mesh, *faces);
+  add_probes(c.probes, mesh);
+  add({"volume", "min_J", "strain_energy"}, [](const StepRecord& r, std::vector<double>& row) {
+    double min_J = std::numeric_limits<double>::infinity();
+    for (const auto& f : r.fields) min_J = std::min(min_J, f.J);
+    row.insert(row.end(), {r.averages.volume, min_J, r.model.strain_energy()});
+  });
+  if (wall_) {
+    add({"min_thickness"}, [wall = wall_](const StepRecord& r, std::vector<double>& row) {
+      const std::vector<double> t = (*wall)(nodal_displacements(r.model));
+      row.push_back(*std::min_element(t.begin(), t.end()));
+    });
+  }
+  if (c.solver.stability.check)
+    add({"negative_pivots", "expected_negative_pivots", "stable"}, [](const StepRecord& r,
+                                                                      std::vector<double>& row) {
+      row.insert(row.end(), {double(r.info.negative_pivots),
+                             double(r.info.expected_negative_pivots), r.info.stable ? 1.0 : 0.0});
+    });
+  if (c.output.wrinkles.enabled()) {
+    PLISSE_CHECK(meter, "history: the wrinkle columns need a wrinkle meter");
+    add(WrinkleMeter::history_columns(), [meter](const StepRecord& r, std::vector<double>& row) {
+      PLISSE_CHECK(r.wrinkles, "history: the wrinkle columns need the step's wrinkle metrics");
+      for (double v : meter->history_values(*r.wrinkles)) row.push_back(v);
+    });
+  }
+}
+
+void HistoryColumns::add_reactions(const Case& c, const Mesh& mesh) {
   const int mirrors = mirror_planes(c.boundary, mesh);
   for (const BoundaryCondition& bc : c.boundary) {
     if (bc.name.empty()) continue;
@@ -81,34 +113,6 @@ HistoryColumns::HistoryColumns(const Case& c, const MixedModel& model, const Wri
     add(xyz_columns("force_", region.name), [nodes](const StepRecord& r, std::vector<double>& row) {
       const Vec3d f = r.model.node_reaction(*nodes);
       for (int k = 0; k < 3; ++k) row.push_back(f[k]);
-    });
-  }
-  // A wall: a shell or sheet (a cube's top and bottom are not one).
-  if (const auto faces = c.mesh.wall_thickness() ? wall_faces(mesh) : std::nullopt)
-    wall_ = std::make_shared<const WallThickness>(mesh, *faces);
-  add_probes(c.probes, mesh);
-  add({"volume", "min_J", "strain_energy"}, [](const StepRecord& r, std::vector<double>& row) {
-    double min_J = std::numeric_limits<double>::infinity();
-    for (const auto& f : r.fields) min_J = std::min(min_J, f.J);
-    row.insert(row.end(), {r.averages.volume, min_J, r.model.strain_energy()});
-  });
-  if (wall_) {
-    add({"min_thickness"}, [wall = wall_](const StepRecord& r, std::vector<double>& row) {
-      const std::vector<double> t = (*wall)(nodal_displacements(r.model));
-      row.push_back(*std::min_element(t.begin(), t.end()));
-    });
-  }
-  if (c.solver.stability.check)
-    add({"negative_pivots", "expected_negative_pivots", "stable"}, [](const StepRecord& r,
-                                                                      std::vector<double>& row) {
-      row.insert(row.end(), {double(r.info.negative_pivots),
-                             double(r.info.expected_negative_pivots), r.info.stable ? 1.0 : 0.0});
-    });
-  if (c.output.wrinkles.enabled()) {
-    FE_CHECK(meter, "history: the wrinkle columns need a wrinkle meter");
-    add(WrinkleMeter::history_columns(), [meter](const StepRecord& r, std::vector<double>& row) {
-      FE_CHECK(r.wrinkles, "history: the wrinkle columns need the step's wrinkle metrics");
-      for (double v : meter->history_values(*r.wrinkles)) row.push_back(v);
     });
   }
 }
@@ -170,7 +174,7 @@ void HistoryColumns::add_probes(const std::vector<Probe>& probes, const Mesh& me
       needs_pressure |= f == ProbeField::pressure;
     }
   }
-  FE_CHECK(!needs_thickness || wall_, "history: a probe of the thickness needs a wall");
+  PLISSE_CHECK(!needs_thickness || wall_, "history: a probe of the thickness needs a wall");
   add(std::move(names), [located = std::move(located), needs_F, needs_thickness, needs_pressure,
                          &mesh, wall = wall_](const StepRecord& r, std::vector<double>& row) {
     // What several probes share, computed once a row.
@@ -228,10 +232,10 @@ std::vector<double> HistoryColumns::row(const StepRecord& record) const {
   for (const Group& g : groups_) {
     const std::size_t before = row.size();
     g.append(record, row);
-    FE_CHECK(row.size() - before == g.names.size(),
-             "history: the column group starting with '"
-                 << (g.names.empty() ? std::string("(none)") : g.names.front()) << "' gave "
-                 << row.size() - before << " values for " << g.names.size() << " columns");
+    PLISSE_CHECK(row.size() - before == g.names.size(),
+                 "history: the column group starting with '"
+                     << (g.names.empty() ? std::string("(none)") : g.names.front()) << "' gave "
+                     << row.size() - before << " values for " << g.names.size() << " columns");
   }
   return row;
 }

@@ -9,7 +9,7 @@
 #include "analysis/point_location.hpp"
 #include "analysis/wall_thickness.hpp"
 #include "app/wrinkling.hpp"
-#include "io/case.hpp"
+#include "case/case.hpp"
 #include "solver/load_stepper.hpp"
 #include "solver/mixed_model.hpp"
 
@@ -64,6 +64,10 @@ class HistoryColumns {
   void add(std::vector<std::string> names, Values append);
   /// The probes' columns, one group for all (they share the nodal fields of a row).
   void add_probes(const std::vector<Probe>& probes, const Mesh& mesh);
+  /// The reactions of the named boundary conditions (`force_x:<name>` ..., and
+  /// `full_force_x:<name>`
+  /// ... for one that reaches a mirror plane) and of the named rigid regions.
+  void add_reactions(const Case& c, const Mesh& mesh);
 
   std::vector<Group> groups_;
   std::vector<std::string> names_;

@@ -210,7 +210,9 @@ void check_rigid_pieces(const Case& c, const Mesh& mesh,
                         const std::vector<ConstrainedComponent>& constraints) {
   // Dies, surface contacts and caps can hold a piece, and viscosity (solver.viscosity) makes a
   // free one solvable: then the pieces are not judged.
-  if (!c.dies.empty() || !c.contacts.empty() || !c.caps.empty() || c.solver.viscosity > 0.0) return;
+  if (!c.terms_in("dies").empty() || !c.terms_in("contacts").empty() ||
+      !c.terms_in("caps").empty() || c.solver.viscosity > 0.0)
+    return;
   std::vector<int> parent(mesh.n_nodes());
   for (int v = 0; v < mesh.n_nodes(); ++v) parent[v] = v;
   const auto root = [&](int v) {
@@ -248,119 +250,6 @@ void check_rigid_pieces(const Case& c, const Mesh& mesh,
   throw InputError({c.path, 0, 0, "boundary"}, text);
 }
 
-namespace {
-
-/// The term of a `contacts:` item; penalty and search distance default to the surfaces' mean
-/// edge length h (surface-contact.md, N8): the penalty the dies' 10 mu / h (contact.md, D11) with
-/// the material's small-strain shear modulus `mu`.
-std::unique_ptr<ModelTerm> make_surface_contact_term(const SurfaceContactPair& pair,
-                                                     const Mesh& mesh, double mu) {
-  const bool self = pair.self.has_value();
-  const auto first = outward_triangles(mesh, self ? pair.self->name : pair.first->name);
-  const auto second = self ? first : outward_triangles(mesh, pair.second->name);
-  std::vector<std::array<int, 3>> both = first;
-  if (!self) both.insert(both.end(), second.begin(), second.end());
-  const double h = mean_edge_length(mesh, both);
-  SurfaceContactSettings settings;
-  settings.name = pair.name;
-  settings.tolerance = pair.tolerance;
-  settings.penalty = pair.penalty > 0.0 ? pair.penalty : default_die_penalty(mu, h);
-  settings.search_distance = pair.search_distance > 0.0 ? pair.search_distance : h;
-  return std::make_unique<SurfaceContact>(mesh, settings, first, second, self);
-}
-
-/// The signed gap at t = 0 of the node of `triangles` farthest from the die on the side that
-/// `worse` prefers (the most penetrating one: worse(a, b) = a < b; the farthest: |a| > |b|).
-struct NodeGap {
-  int node = -1;
-  double g = 0.0;
-};
-template <class Worse>
-NodeGap extreme_gap(const DieGeometry& geometry, const Mesh& mesh,
-                    const std::vector<std::array<int, 3>>& triangles, Worse worse) {
-  NodeGap extreme;
-  for (const auto& t : triangles)
-    for (const int v : t) {
-      double g = 0.0;
-      try {
-        g = geometry.gap(mesh.nodes[v], 0.0).g;
-      } catch (const Error&) {  // on a sphere's centre or a cylinder's axis: deep inside anyway
-        g = -std::numeric_limits<double>::infinity();
-      }
-      if (extreme.node < 0 || worse(g, extreme.g)) extreme = {v, g};
-    }
-  return extreme;
-}
-
-/// Where a die starts (t = 0) against the body: no node of its contact surface may be inside it
-/// (the first step would have to push the whole penetration out at once, and a deep one pulls the
-/// body through the die), and a sticking region glued from the start must touch it, or the glue
-/// would drag the region across the gap. "Inside" and "touching" allow the larger of the die's
-/// tolerance and a tenth of the surface's mean edge length `h`. InputError at the die otherwise.
-void check_die_start(const Die& die, const DieGeometry& geometry, const Mesh& mesh,
-                     const std::vector<std::array<int, 3>>& candidates,
-                     const std::vector<std::array<int, 3>>& region, double h) {
-  const auto where = [&](const NodeGap& n) {
-    const Vec3d& x = mesh.nodes[n.node];
-    char text[160];
-    std::snprintf(text, sizeof text, "node %d at [%.6g, %.6g, %.6g]", n.node, x.x(), x.y(), x.z());
-    return std::string(text);
-  };
-  const auto mm = [](double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4g mm", value);
-    return std::string(text);
-  };
-  // A die placed on the nominal geometry touches a faceted or generated surface only within a
-  // fraction of an element: that much is taken as touching.
-  const double allowed = std::max(die.tolerance, 0.1 * h);
-  const NodeGap deepest =
-      extreme_gap(geometry, mesh, candidates, [](double a, double b) { return a < b; });
-  if (deepest.node >= 0 && deepest.g < -allowed)
-    throw InputError(die.place,
-                     "the die starts inside the body: " + where(deepest) +
-                         " of its contact "
-                         "surface is " +
-                         (std::isfinite(deepest.g) ? mm(-deepest.g) : std::string("deep")) +
-                         " inside it at t = 0 (at most " + mm(allowed) +
-                         " is taken as touching); place the die outside the body");
-  if (region.empty()) return;
-  const NodeGap farthest = extreme_gap(
-      geometry, mesh, region, [](double a, double b) { return std::abs(a) > std::abs(b); });
-  if (farthest.node >= 0 && std::abs(farthest.g) > allowed)
-    throw InputError(die.place, "the sticking region '" + die.region->name +
-                                    "' is glued to the die from the start, but " + where(farthest) +
-                                    " is " + mm(std::abs(farthest.g)) +
-                                    " from it at t = 0 (at most " + mm(allowed) +
-                                    " is taken as touching); place the die against the region");
-}
-
-/// The contact term of `die`: candidates are the nodes of `die.surface`, or of
-/// default_die_candidates; the penalty defaults to contact.md (D11) with the material's
-/// small-strain shear modulus `mu`. Throws InputError (at the die) when the surface is empty.
-std::unique_ptr<ModelTerm> make_die_term(const Die& die, const Case& c, const Mesh& mesh, double mu,
-                                         int mirrors) {
-  const auto candidates =
-      die.surface ? outward_triangles(mesh, die.surface->name) : default_die_candidates(c, mesh);
-  if (candidates.empty()) throw InputError(die.place, "the die's contact surface is empty");
-  const auto region =
-      die.region ? outward_triangles(mesh, die.region->name) : std::vector<std::array<int, 3>>{};
-  const double h = mean_edge_length(mesh, candidates);
-  DieContactSettings settings;
-  settings.name = die.name;
-  settings.contact = die.contact;
-  settings.tolerance = die.tolerance;
-  settings.friction = die.friction;
-  settings.touch_slack = 1e-9 * h;
-  settings.penalty = die.penalty > 0.0 ? die.penalty : default_die_penalty(mu, h);
-  const DieGeometry geometry(die.shape, die.point, die.normal, die.axis, die.radius,
-                             die.displacement, die.ramp);
-  check_die_start(die, geometry, mesh, candidates, region, h);
-  return std::make_unique<DieContact>(mesh, geometry, settings, candidates, region, mirrors);
-}
-
-}  // namespace
-
 ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
   ModelParts parts{
       element_materials(c, mesh), collect_constraints(c.boundary, mesh), {}, c.element};
@@ -368,52 +257,15 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
   check_free_displacements(c, mesh, parts.constraints);
   const auto& constraints = parts.constraints;
   const int mirrors = mirror_planes(c.boundary, mesh);
+  const TermContext context{
+      mesh, constraints, mirrors,
+      // The contact penalties' default scale (contact.md, D11): the case's `material`.
+      [&parts] { return shear_modulus(parts.materials.materials.front()); },
+      [&] { return element_densities(c, mesh); }, [&] { return default_die_candidates(c, mesh); }};
   auto& terms = parts.terms;
-  for (const Load& load : c.loads) {
-    switch (load.type) {
-      case LoadType::pressure:
-        terms.push_back(std::make_unique<PressureLoad>(
-            mesh, load.name, load.surface.name, load.value, load.ramp, constraints, mirrors));
-        break;
-      case LoadType::gravity:
-        terms.push_back(std::make_unique<BodyForce>(mesh, load.name, load.acceleration, load.ramp,
-                                                    element_densities(c, mesh)));
-        break;
-      case LoadType::traction: {
-        const auto faces = outward_faces(mesh, load.surface.name);
-        terms.push_back(
-            std::make_unique<DeadLoad>(load.name,
-                                       load.traction ? traction_forces(mesh, faces, *load.traction)
-                                                     : total_force(mesh, faces, *load.force),
-                                       load.ramp));
-        break;
-      }
-      case LoadType::follower_traction: {
-        FollowerTractionValues values;
-        values.normal = load.normal;
-        values.shear = load.shear;
-        if (load.direction) values.direction = *load.direction;
-        terms.push_back(std::make_unique<FollowerTraction>(mesh, load.name, load.surface.name,
-                                                           values, load.ramp, constraints));
-        break;
-      }
-      case LoadType::point_force:
-        terms.push_back(std::make_unique<DeadLoad>(
-            load.name, std::vector<NodalForce>{{nearest_node(mesh, load.point), *load.force}},
-            load.ramp));
-        break;
-    }
-  }
-  for (const Cavity& cavity : c.cavities)
-    terms.push_back(std::make_unique<CavityTerm>(cavity, mesh, constraints, mirrors));
-  for (const Cap& cap : c.caps) terms.push_back(std::make_unique<RigidCap>(cap, mesh, constraints));
-  if (!c.dies.empty() || !c.contacts.empty()) {
-    // The contact penalties' default scale (contact.md, D11): the case's `material`.
-    const double mu = shear_modulus(parts.materials.materials.front());
-    for (const Die& die : c.dies) terms.push_back(make_die_term(die, c, mesh, mu, mirrors));
-    for (const SurfaceContactPair& pair : c.contacts)
-      terms.push_back(make_surface_contact_term(pair, mesh, mu));
-  }
+  for (const TermSection& section : term_sections())
+    for (const TermEntry* entry : c.terms_in(section.key))
+      terms.push_back(entry->kind->make(*entry, context));
   if (c.solver.viscosity > 0.0) {
     // ℓ of docs/theory/viscous.md (Z1): the wall thickness (generated shell, airbag or sheet, or
     // `mesh.thickness` of a file mesh), else the mean edge length of the mesh.
@@ -450,10 +302,9 @@ std::vector<InputError> setup_warnings(const Case& c) {
                                   " s): the run ends at " + number(100.0 * ramp.factor(end)) +
                                   " % of it");
   };
-  for (const Load& load : c.loads) check(load.ramp, load.place, "load '" + load.name + "'");
-  for (const Die& die : c.dies)
-    if (die.displacement != Vec3d::Zero())
-      check(die.ramp, die.place, "the motion of die '" + die.name + "'");
+  for (const TermSection& section : term_sections())
+    for (const TermEntry* entry : c.terms_in(section.key))
+      for (const RampUse& use : entry->kind->ramps(*entry)) check(use.ramp, entry->place, use.what);
   return out;
 }
 

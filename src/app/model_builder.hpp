@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "io/case.hpp"
+#include "case/case.hpp"
 #include "material/registry.hpp"
 #include "mesh/mesh.hpp"
 #include "physics/dirichlet.hpp"

@@ -1,11 +1,13 @@
 #include "app/output_reference.hpp"
 
+#include <algorithm>
+
 #include "core/error.hpp"
 
 namespace plisse::app {
 namespace {
 
-const std::vector<OutputEntry> kHistory = {
+const std::vector<OutputEntry> kHistoryBefore = {
     {"step", "–", "always", "converged step, counted from 1"},
     {"time", "–", "always",
      "the step's time t in [0, `solver.end_time`]: the quasi-static load parameter every ramp is a "
@@ -20,69 +22,10 @@ const std::vector<OutputEntry> kHistory = {
     {"residual_norm", "N", "always",
      "‖R‖₂ of the free equations at the converged state (nodal forces, and the pressure "
      "equations' volume change times μ/h: docs/theory/mixed_up.md, X1)"},
-    {"pressure:<load>", "MPa", "`loads[]` of type pressure",
-     "the pressure at t, `value` times its ramp; positive pushes against the body's outward "
-     "normal (on a balloon's `inner` surface it inflates)"},
-    {"volume:<load>", "mm³",
-     "a pressure load whose surface is closed, or closed by the planes "
-     "x = 0, y = 0, z = 0",
-     "the volume the loaded surface encloses in the deformed state (of the modelled part), "
-     "positive; with `pressure:<load>` the pressure–volume curve"},
-    {"full_volume:<load>", "mm³", "as `volume:<load>`, on a surface closed by mirror planes",
-     "the whole body's: `volume:<load>` times 2 for each mirror plane (`symmetry` condition) "
-     "that closes it"},
-    {"load_x:<load>", "N", "`loads[]` of types gravity, traction, point-force, follower-traction",
-     "x component of the load's total force on the body at t (likewise `load_y`, `load_z`)"},
-    {"load_y:<load>", "N", "as `load_x:<load>`", "y component of the load's total force"},
-    {"load_z:<load>", "N", "as `load_x:<load>`", "z component of the load's total force"},
-    {"work:<load>", "mJ", "as `load_x:<load>`",
-     "work done by the load on the body since t = 0 (N mm = mJ; trapezoidal in the steps, exact "
-     "while the load is held)"},
-    {"pressure:<cavity>", "MPa", "`cavities[]`",
-     "the cavity's gauge pressure (gas law, or the multiplier of a prescribed volume); positive "
-     "pushes the wall away from the cavity"},
-    {"volume:<cavity>", "mm³", "`cavities[]`",
-     "the cavity's volume in the deformed state, of the modelled part (an octant holds V/8)"},
-    {"full_volume:<cavity>", "mm³", "`cavities[]` closed by mirror planes",
-     "the whole cavity's volume: `volume:<cavity>` times 2 for each mirror plane (`symmetry` "
-     "condition) that closes it"},
-    {"force_x:<die>", "N", "`dies[]`",
-     "x component of the force of the body on the die (a die pushing down, −y, on a body has "
-     "`force_y` > 0); of the modelled part (likewise `force_y`, `force_z`)"},
-    {"force_y:<die>", "N", "`dies[]`", "y component of the force of the body on the die"},
-    {"force_z:<die>", "N", "`dies[]`", "z component of the force of the body on the die"},
-    {"full_force_x:<die>", "N", "`dies[]` symmetric about a mirror plane",
-     "x component of the whole body's force on the die: its mirror images summed, 0 along a "
-     "mirror plane's normal and doubled per plane along the others (likewise y, z; see Symmetry)"},
-    {"full_force_y:<die>", "N", "as `full_force_x:<die>`", "y component of the whole body's force"},
-    {"full_force_z:<die>", "N", "as `full_force_x:<die>`", "z component of the whole body's force"},
-    {"contact_nodes:<die>", "–", "`dies[]`, `contacts[]`",
-     "surface nodes in contact (or glued, for a sticking die) at the converged state"},
-    {"penetration:<die>", "mm", "`dies[]`, `contacts[]`",
-     "largest penetration of a node into the die (or the other surface); at most the contact "
-     "`tolerance` once converged"},
-    {"stick_nodes:<die>", "–", "`dies[]` with `contact: coulomb`", "contact nodes that stick"},
-    {"slip_nodes:<die>", "–", "`dies[]` with `contact: coulomb`", "contact nodes that slip"},
-    {"force_x:<contact>", "N", "`contacts[]`",
-     "x component of the force of the second surface on the first (likewise y, z); a self-contact "
-     "reports the force across it"},
-    {"force_y:<contact>", "N", "`contacts[]`", "as `force_x:<contact>`, y component"},
-    {"force_z:<contact>", "N", "`contacts[]`", "as `force_x:<contact>`, z component"},
-    {"force_x:<cap>", "N", "`caps[]`",
-     "x component of the force the cap exerts on the body (likewise y, z)"},
-    {"force_y:<cap>", "N", "`caps[]`", "y component of the cap's force on the body"},
-    {"force_z:<cap>", "N", "`caps[]`", "z component of the cap's force on the body"},
-    {"moment_x:<cap>", "N mm", "`caps[]`",
-     "x component of the cap's moment on the body about its moved reference point (likewise y, "
-     "z)"},
-    {"moment_y:<cap>", "N mm", "`caps[]`", "y component of the cap's moment"},
-    {"moment_z:<cap>", "N mm", "`caps[]`", "z component of the cap's moment"},
-    {"ux:<cap>", "mm", "`caps[]`", "x displacement of the cap's reference point (likewise y, z)"},
-    {"uy:<cap>", "mm", "`caps[]`", "y displacement of the cap's reference point"},
-    {"uz:<cap>", "mm", "`caps[]`", "z displacement of the cap's reference point"},
-    {"rx:<cap>", "rad", "`caps[]`", "x component of the cap's rotation vector (likewise y, z)"},
-    {"ry:<cap>", "rad", "`caps[]`", "y component of the cap's rotation vector"},
-    {"rz:<cap>", "rad", "`caps[]`", "z component of the cap's rotation vector"},
+};
+
+/// After the term kinds' columns.
+const std::vector<OutputEntry> kHistoryAfter = {
     {"dissipated_energy", "mJ", "`solver.viscosity` > 0",
      "energy the viscous stabilisation has dissipated since t = 0; keep it small against "
      "`strain_energy`"},
@@ -363,16 +306,6 @@ const std::vector<OutputEntry> kVtuPoint = {
     {"mode_<k>", "–", "the step where stability was lost (`solver.stability.modes`)",
      "the displacement part of the k-th lowest eigenmode of the tangent (a shape: its scale is "
      "arbitrary)"},
-    {"contact_<die>", "–", "`dies[]`",
-     "the node's contact state with the die: 0 free, 1 sliding, 2 sticking"},
-    {"contact_pressure_<die>", "MPa", "`dies[]`",
-     "the normal part of the die's force on the node per reference area, positive pushing the "
-     "body away from the die; 0 off the die's surface `dies[].surface`"},
-    {"gap_<die>", "mm", "`dies[]`",
-     "the signed normal distance from the die to the node, negative when it penetrates; 0 off "
-     "the die's surface"},
-    {"contact_<contact>", "MPa", "`contacts[]`",
-     "the contact pressure per reference area at the nodes of the first surface"},
 };
 
 const std::vector<OutputEntry> kVtuCell = {
@@ -440,6 +373,21 @@ std::string markdown_cell(const std::string& text) {
   return out;
 }
 
+/// `before`, then the term kinds' entries (`of` picks the list; an entry that several kinds share
+/// once), then `after`.
+std::vector<OutputEntry> with_term_outputs(const std::vector<OutputEntry>& before,
+                                           std::vector<OutputEntry> TermKind::*of,
+                                           const std::vector<OutputEntry>& after) {
+  std::vector<OutputEntry> out = before;
+  for (const TermKind& kind : term_kinds())
+    for (const OutputEntry& entry : kind.*of)
+      if (std::none_of(out.begin(), out.end(),
+                       [&](const OutputEntry& e) { return e.name == entry.name; }))
+        out.push_back(entry);
+  out.insert(out.end(), after.begin(), after.end());
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::string> output_reference_sections() {
@@ -447,17 +395,21 @@ std::vector<std::string> output_reference_sections() {
 }
 
 const std::vector<OutputEntry>& output_reference(OutputTable table) {
+  static const std::vector<OutputEntry> history =
+      with_term_outputs(kHistoryBefore, &TermKind::history, kHistoryAfter);
+  static const std::vector<OutputEntry> vtu_point =
+      with_term_outputs(kVtuPoint, &TermKind::point_fields, {});
   switch (table) {
     case OutputTable::history:
-      return kHistory;
+      return history;
     case OutputTable::summary:
       return kSummary;
     case OutputTable::vtu_point:
-      return kVtuPoint;
+      return vtu_point;
     case OutputTable::vtu_cell:
       return kVtuCell;
   }
-  return kHistory;
+  return history;
 }
 
 const OutputEntry* find_output_entry(OutputTable table, std::string_view name) {
@@ -469,10 +421,10 @@ const OutputEntry* find_output_entry(OutputTable table, std::string_view name) {
 }
 
 void require_output_entry(OutputTable table, std::string_view name) {
-  FE_CHECK(find_output_entry(table, name),
-           "the " << table_name(table) << " '" << name
-                  << "' has no entry in the output reference (app/output_reference.cpp, "
-                     "docs/output.md)");
+  PLISSE_CHECK(find_output_entry(table, name),
+               "the " << table_name(table) << " '" << name
+                      << "' has no entry in the output reference (app/output_reference.cpp, "
+                         "docs/output.md)");
 }
 
 namespace {

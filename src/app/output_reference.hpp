@@ -9,16 +9,9 @@
 #include <string_view>
 #include <vector>
 
-namespace plisse::app {
+#include "terms/term_kind.hpp"
 
-/// One output quantity. `name` is the exact name, or a pattern in which `<...>` stands for a name
-/// from the case file (e.g. `force_x:<die>`, `contact_<die>`) or a number (`mode_<k>`).
-struct OutputEntry {
-  std::string name;
-  std::string unit;     ///< in the case's consistent units (mm, N, MPa, s); "–" dimensionless
-  std::string when;     ///< when it is written ("always", or the case keys that add it)
-  std::string meaning;  ///< meaning, and sign where it has one
-};
+namespace plisse::app {
 
 /// The tables of the reference, one a generated block of docs/output.md.
 enum class OutputTable { history, summary, vtu_point, vtu_cell };

@@ -17,7 +17,7 @@ namespace plisse::app {
 std::string own_executable() {
   std::array<char, 4096> path{};
   const ssize_t n = readlink("/proc/self/exe", path.data(), path.size() - 1);
-  FE_CHECK(n > 0, "cannot find the plisse executable (/proc/self/exe)");
+  PLISSE_CHECK(n > 0, "cannot find the plisse executable (/proc/self/exe)");
   return std::string(path.data(), static_cast<std::size_t>(n));
 }
 
@@ -36,10 +36,11 @@ int run_python_script(const std::string& command, const std::string& script,
   argv.push_back(nullptr);
   pid_t child = 0;
   const int spawned = posix_spawn(&child, python.c_str(), nullptr, nullptr, argv.data(), environ);
-  FE_CHECK(spawned == 0, command << ": cannot start " << python << " (error " << spawned << ")");
+  PLISSE_CHECK(spawned == 0,
+               command << ": cannot start " << python << " (error " << spawned << ")");
   int status = 0;
   while (waitpid(child, &status, 0) < 0)
-    FE_CHECK(errno == EINTR, command << ": waiting for " << script << " failed");
+    PLISSE_CHECK(errno == EINTR, command << ": waiting for " << script << " failed");
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 

@@ -13,14 +13,14 @@
 #include "app/run_recorder.hpp"
 #include "app/run_session.hpp"
 #include "app/wrinkling.hpp"
+#include "case/case.hpp"
 #include "core/error.hpp"
 #include "core/wall_clock.hpp"
-#include "io/atomic_file.hpp"
-#include "io/case.hpp"
-#include "io/checkpoint.hpp"
-#include "io/run_directory.hpp"
-#include "io/run_log.hpp"
 #include "mesh/topology.hpp"
+#include "output/atomic_file.hpp"
+#include "output/checkpoint.hpp"
+#include "output/run_directory.hpp"
+#include "output/run_log.hpp"
 #include "solver/collective.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/load_stepper.hpp"
@@ -85,14 +85,14 @@ struct RunSolver {
       : n_constrained(parts.constraints.size()),
         model(make_run_model(c, mesh, std::move(parts))),
         stepper(*model, c.solver) {
-    stepper.set_stability(stability_options(c));
+    stepper.set_stability(stability_check_settings(c));
     if (c.output.wrinkles.enabled()) wrinkle_meter.emplace(c, mesh);
   }
   static std::unique_ptr<MixedModel> make_run_model(const Case& c, const Mesh& mesh,
                                                     ModelParts parts) {
     // A rigid cap borders the tangent with one multiplier per tied component: MUMPS needs more
     // working space than it estimates (linear_solver.hpp, request_factor_workspace).
-    if (!c.caps.empty()) request_factor_workspace(100);
+    if (!c.terms_in("caps").empty()) request_factor_workspace(100);
     return make_model(mesh, std::move(parts));
   }
   std::size_t n_constrained;  ///< constrained components of the model
@@ -170,15 +170,8 @@ void log_input(RunLog& log, const RunContext& run, const RunOutput& out, const R
       "units: the case's, consistent (mm, N, MPa, s in plisse's docs); history.csv's "
       "columns: summary.json history_units, plisse outputs");
   for (const InputError& e : setup_warnings(c)) log.warn(e.what());
-  for (const Load& load : c.loads) {
-    if (load.type != LoadType::point_force) continue;
-    const int v = nearest_node(mesh, load.point);
-    const Vec3d& x = mesh.nodes[v];
-    std::snprintf(line, sizeof line,
-                  "load '%s': on node %d at [%.6g, %.6g, %.6g], %.3g mm from its point",
-                  load.name.c_str(), v, x.x(), x.y(), x.z(), (x - load.point).norm());
-    log.info(line);
-  }
+  for (const TermEntry& entry : c.terms)
+    for (const std::string& note : entry.kind->notes(entry, mesh)) log.info(note);
   for (const Probe& probe : c.probes) {
     const MeshPoint at = locate_point(mesh, probe.point);
     std::snprintf(line, sizeof line,

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "io/petsc_option_text.hpp"
-#include "io/run_directory.hpp"
+#include "case/petsc_option_text.hpp"
+#include "output/run_directory.hpp"
 
 namespace plisse::app {
 namespace {

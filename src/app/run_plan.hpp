@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "case/case.hpp"
 #include "core/error.hpp"
-#include "io/case.hpp"
-#include "io/checkpoint.hpp"
+#include "output/checkpoint.hpp"
 
 namespace plisse::app {
 

@@ -14,13 +14,13 @@
 
 #include "app/history_columns.hpp"
 #include "app/wrinkling.hpp"
+#include "case/case.hpp"
 #include "core/wall_clock.hpp"
-#include "io/case.hpp"
-#include "io/checkpoint.hpp"
-#include "io/history_writer.hpp"
-#include "io/pvd_writer.hpp"
-#include "io/run_directory.hpp"
 #include "material/material_fit.hpp"
+#include "output/checkpoint.hpp"
+#include "output/history_writer.hpp"
+#include "output/pvd_writer.hpp"
+#include "output/run_directory.hpp"
 #include "solver/load_stepper.hpp"
 #include "solver/mixed_model.hpp"
 

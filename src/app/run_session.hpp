@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "app/run_plan.hpp"
-#include "io/case.hpp"
+#include "case/case.hpp"
 #include "solver/petsc_session.hpp"
 
 namespace plisse::app {

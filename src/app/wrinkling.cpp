@@ -8,12 +8,12 @@
 
 #include "analysis/surface_columns.hpp"
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
-#include "io/history_writer.hpp"
-#include "io/pvd_writer.hpp"
-#include "io/vtu_reader.hpp"
 #include "mesh/imperfection.hpp"
 #include "mesh/topology.hpp"
+#include "output/atomic_file.hpp"
+#include "output/history_writer.hpp"
+#include "output/pvd_writer.hpp"
+#include "output/vtu_reader.hpp"
 #include "physics/dirichlet.hpp"
 #include "solver/dof_map.hpp"
 
@@ -163,9 +163,9 @@ Mesh load_perturbed_mesh(const Case& c) {
   return mesh;
 }
 
-StabilityOptions stability_options(const Case& c) {
+StabilityCheckSettings stability_check_settings(const Case& c) {
   const StabilitySettings& st = c.solver.stability;
-  StabilityOptions o;
+  StabilityCheckSettings o;
   o.check = st.check;
   o.branch_switch = st.branch_switch;
   o.modes = st.modes;

@@ -12,9 +12,9 @@
 
 #include "analysis/tension_field.hpp"
 #include "analysis/wrinkle_rings.hpp"
-#include "io/append_file.hpp"
-#include "io/case.hpp"
+#include "case/case.hpp"
 #include "mesh/mesh.hpp"
+#include "output/append_file.hpp"
 #include "solver/load_stepper.hpp"
 #include "solver/mixed_model.hpp"
 
@@ -28,7 +28,7 @@ Mesh load_perturbed_mesh(const Case& c);
 
 /// solver.stability mapped to the stepper's options (the perturbation in mm: branch_amplitude x
 /// wall thickness).
-StabilityOptions stability_options(const Case& c);
+StabilityCheckSettings stability_check_settings(const Case& c);
 
 /// Wrinkle metrics of converged states of one model (output.wrinkles). Holds the outer
 /// triangles and the through-thickness columns, computed once.
@@ -55,7 +55,7 @@ class WrinkleMeter {
   std::vector<double> history_values(const Result& r) const;
 
  private:
-  WrinkleOptions options_;
+  WrinkleMeasureSettings options_;
   std::string surface_;
   std::vector<std::array<int, 3>> triangles_;       ///< the surface's corner triangles
   std::vector<std::array<int, 3>> ring_triangles_;  ///< sampling_triangles of the surface
@@ -76,7 +76,7 @@ nlohmann::json wrinkles_json(const Case& c, const WrinkleMeter::Result& r);
 /// (A_m and E_m in mm, wrinkles.md W10 and W15; in_band 1 for the counts of the wrinkle band,
 /// W17; decision the ring's, W16-W18), so a user sees how each ring's decision evolved. Numbers
 /// are written as the shortest text that reads back to the same double. Like history.csv, the
-/// file grows by one append per written step (io/append_file.hpp), so it holds whole lines.
+/// file grows by one append per written step (output/append_file.hpp), so it holds whole lines.
 class WrinkleSpectrumWriter {
  public:
   static constexpr const char* kFileName = "wrinkle_spectrum.csv";

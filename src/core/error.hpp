@@ -5,8 +5,8 @@
 ///   column, key path) and the rule broken; the command line turns it into exit status 2.
 /// - `SolverError`: the numerical solution failed (exit status 1, last converged state kept).
 /// - `Error`: anything else (a bug or an environment failure).
-/// - `FE_CHECK(cond, msg)`: always on, for admissibility of input and files; throws `Error`.
-/// - `FE_ASSERT(cond)`: debug builds only, for internal invariants.
+/// - `PLISSE_CHECK(cond, msg)`: always on, for admissibility of input and files; throws `Error`.
+/// - `PLISSE_ASSERT(cond)`: debug builds only, for internal invariants.
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -59,19 +59,19 @@ class SolverError : public Error {
 
 }  // namespace plisse
 
-#define FE_CHECK(cond, msg)                          \
-  do {                                               \
-    if (!(cond)) {                                   \
-      std::ostringstream fe_check_stream_;           \
-      fe_check_stream_ << msg;                       \
-      throw ::plisse::Error(fe_check_stream_.str()); \
-    }                                                \
+#define PLISSE_CHECK(cond, msg)                   \
+  do {                                            \
+    if (!(cond)) {                                \
+      std::ostringstream check_stream_;           \
+      check_stream_ << msg;                       \
+      throw ::plisse::Error(check_stream_.str()); \
+    }                                             \
   } while (false)
 
 #ifdef NDEBUG
-#define FE_ASSERT(cond) ((void)0)
+#define PLISSE_ASSERT(cond) ((void)0)
 #else
-#define FE_ASSERT(cond)                                                                          \
+#define PLISSE_ASSERT(cond)                                                                      \
   do {                                                                                           \
     if (!(cond))                                                                                 \
       throw ::plisse::Error(std::string("internal error: assertion failed: ") + #cond + " at " + \

@@ -181,7 +181,7 @@ ElementFields compute_element_fields(const TetGeometry& g, const ElemVec& x_e, c
   fields.pressure = 0.0;
   for (int q = 0; q < kQuadPoints; ++q) {
     const PointKinematics k = compute_point_kinematics(g, s, bubble, q);
-    FE_CHECK(k.J > 0.0, "element fields: det F = " << k.J << " <= 0 at quadrature point " << q);
+    PLISSE_CHECK(k.J > 0.0, "element fields: det F = " << k.J << " <= 0 at quadrature point " << q);
     const double w = g.weight[q] / g.volume;
     const Mat3d sigma =
         evaluate_at_point(mat, q, k.F).P * k.F.transpose() / k.J - k.p * Mat3d::Identity();

@@ -48,7 +48,7 @@ StrainEnergy compute_strain_energy(const TetGeometry& g, const ElemVec& x_e, con
   StrainEnergy e;
   for (int q = 0; q < kQuadPoints; ++q) {
     const PointKinematics k = compute_point_kinematics(g, s, bubble, q);
-    FE_CHECK(k.J > 0.0, "strain energy: det F = " << k.J << " <= 0 at quadrature point " << q);
+    PLISSE_CHECK(k.J > 0.0, "strain energy: det F = " << k.J << " <= 0 at quadrature point " << q);
     e.isochoric += g.weight[q] * compute_energy_density(mat, k.F);
     // p_h² is quadratic: the degree-2 rule integrates it exactly.
     e.volumetric += g.weight[q] * 0.5 * inverse_bulk_modulus * k.p * k.p;

@@ -146,7 +146,7 @@ ElementFields compute_element_fields(const Geometry& g, const ElemVec& x_e, cons
   fields.pressure = 0.0;
   for (int q = 0; q < kQuadPoints; ++q) {
     const PointKinematics k = point_kinematics(g, u, p, q);
-    FE_CHECK(k.J > 0.0, "element fields: det F = " << k.J << " <= 0 at quadrature point " << q);
+    PLISSE_CHECK(k.J > 0.0, "element fields: det F = " << k.J << " <= 0 at quadrature point " << q);
     const double w = g.weight[q] / g.volume;
     fields.cauchy +=
         w * (evaluate_at_point(mat, q, k.F).P * k.F.transpose() / k.J - k.p * Mat3d::Identity());
@@ -168,7 +168,7 @@ double compute_strain_energy(const Geometry& g, const ElemVec& x_e, const Materi
   double energy = 0.0;
   for (int q = 0; q < kQuadPoints; ++q) {
     const PointKinematics k = point_kinematics(g, u, p, q);
-    FE_CHECK(k.J > 0.0, "strain energy: det F = " << k.J << " <= 0 at quadrature point " << q);
+    PLISSE_CHECK(k.J > 0.0, "strain energy: det F = " << k.J << " <= 0 at quadrature point " << q);
     energy +=
         g.weight[q] * (compute_energy_density(mat, k.F) + 0.5 * inverse_bulk_modulus * k.p * k.p);
   }

@@ -59,11 +59,11 @@ Geometry compute_geometry(const std::array<Vec3d, kNodes>& X) {
     for (int b = a + 1; b < kCorners; ++b) g.size = std::max(g.size, (X[a] - X[b]).norm());
   const double h3 = g.size * g.size * g.size;
   const auto check = [&](double det, const char* where) {
-    FE_CHECK(std::isfinite(det) && det > 1e-12 * h3,
-             "10-node tetrahedron with corners ("
-                 << X[0].transpose() << "), (" << X[1].transpose() << "), (" << X[2].transpose()
-                 << "), (" << X[3].transpose() << ") has det(dX/dξ) = " << det << " <= 0 at "
-                 << where << " (inverted, degenerate or too strongly curved element)");
+    PLISSE_CHECK(std::isfinite(det) && det > 1e-12 * h3,
+                 "10-node tetrahedron with corners ("
+                     << X[0].transpose() << "), (" << X[1].transpose() << "), (" << X[2].transpose()
+                     << "), (" << X[3].transpose() << ") has det(dX/dξ) = " << det << " <= 0 at "
+                     << where << " (inverted, degenerate or too strongly curved element)");
   };
   Mat3d jacobian;
   // The Jacobian of a curved element is a quadratic polynomial: positive at the points and the

@@ -17,11 +17,11 @@ TetGeometry compute_tet_geometry(const std::array<Vec3d, 4>& X) {
     for (int b = a + 1; b < 4; ++b) size = std::max(size, (X[a] - X[b]).norm());
   // Degenerate to working precision counts as zero volume: det below 1e-12 h³ is roundoff of a
   // flat element (a regular tetrahedron has det = h³/√2).
-  FE_CHECK(std::isfinite(det) && det > 1e-12 * size * size * size,
-           "tetrahedron with corners (" << X[0].transpose() << "), (" << X[1].transpose() << "), ("
-                                        << X[2].transpose() << "), (" << X[3].transpose()
-                                        << ") has volume " << det / 6.0
-                                        << " <= 0 (inverted or degenerate element)");
+  PLISSE_CHECK(std::isfinite(det) && det > 1e-12 * size * size * size,
+               "tetrahedron with corners (" << X[0].transpose() << "), (" << X[1].transpose()
+                                            << "), (" << X[2].transpose() << "), ("
+                                            << X[3].transpose() << ") has volume " << det / 6.0
+                                            << " <= 0 (inverted or degenerate element)");
   TetGeometry g;
   g.volume = det / 6.0;
   const Mat3d inverse = jacobian.inverse();  // row a-1 = Grad L_a

@@ -51,10 +51,10 @@ int InelasticLaw::history_size() const {
 PointResponse evaluate_inelastic(const InelasticLaw& law, const PointResponse& elastic,
                                  const Mat3d& F, std::span<const double> converged,
                                  std::span<double> now, double dt) {
-  FE_CHECK(static_cast<int>(converged.size()) == law.history_size() &&
-               (now.empty() || now.size() == converged.size()),
-           "inelastic point: " << converged.size() << " history values for a law of "
-                               << law.history_size());
+  PLISSE_CHECK(static_cast<int>(converged.size()) == law.history_size() &&
+                   (now.empty() || now.size() == converged.size()),
+               "inelastic point: " << converged.size() << " history values for a law of "
+                                   << law.history_size());
   PointResponse out = elastic;
   std::size_t next = 0;
 

@@ -135,7 +135,7 @@ double nominal_stress_or_nan(const AnyMaterial& material, TestMode mode, double 
   }
 }
 
-FitResult fit_material(const std::vector<TestPoint>& data, const FitOptions& options) {
+FitResult fit_material(const std::vector<TestPoint>& data, const FitSettings& options) {
   const MaterialModelInfo* info = find_material_model(options.model);
   if (info == nullptr) {
     std::string known;
@@ -152,10 +152,10 @@ FitResult fit_material(const std::vector<TestPoint>& data, const FitOptions& opt
     throw InputError(
         {"command line", 0, 0, "terms"},
         "an Ogden fit has 1 to 3 terms (got " + std::to_string(options.ogden_terms) + ")");
-  FE_CHECK(!data.empty(), "fit_material: no data");
+  PLISSE_CHECK(!data.empty(), "fit_material: no data");
   const std::vector<std::string> fitted = fitted_parameters(*info, options.ogden_terms);
-  FE_CHECK(data.size() >= fitted.size(),
-           "fit_material: " << data.size() << " points for " << fitted.size() << " parameters");
+  PLISSE_CHECK(data.size() >= fitted.size(),
+               "fit_material: " << data.size() << " points for " << fitted.size() << " parameters");
 
   double max_I1 = 0.0, max_stretch = 1.0;
   for (const TestPoint& p : data) {
@@ -282,7 +282,7 @@ std::string material_block(const FitResult& fit) {
   out.precision(6);
   out << "material: {model: " << fit.model;
   const MaterialModelInfo* info = find_material_model(fit.model);
-  FE_CHECK(info != nullptr, "material_block: unknown model " << fit.model);
+  PLISSE_CHECK(info != nullptr, "material_block: unknown model " << fit.model);
   for (const ParamSpec& p : info->params) {
     const double v = fit.values.at(p.name);
     // Leave out optional parameters at their defaults (Ogden's absent terms).

@@ -19,7 +19,7 @@ struct TestPoint {
   double stress = 0.0;  ///< nominal (force / undeformed area) [MPa], non-zero
 };
 
-struct FitOptions {
+struct FitSettings {
   std::string model;    ///< a registered model name
   int ogden_terms = 3;  ///< for "ogden": terms fitted (1 to 3), the others absent
 };
@@ -62,7 +62,7 @@ double nominal_stress_or_nan(const AnyMaterial& material, TestMode mode, double 
 
 /// Fits `options.model` to `data`. Throws InputError (place: key "model" or "terms") for an unknown
 /// model or a terms count out of range, and Error when no start converges to finite values.
-FitResult fit_material(const std::vector<TestPoint>& data, const FitOptions& options);
+FitResult fit_material(const std::vector<TestPoint>& data, const FitSettings& options);
 
 /// Drucker's condition at the incompressible state with principal stretches λ (normalised here
 /// to λ1 λ2 λ3 = 1): dτ · dε > 0 for every isochoric increment of the logarithmic strains ε_a =

@@ -12,10 +12,10 @@ void tag_boundary(Mesh& mesh, const std::vector<std::vector<std::string>>& side_
   std::vector<std::vector<int>> by_side(side_tags.size());
   for (std::size_t i = 0; i < faces.size(); ++i) {
     const int side = side_of(faces[i]);
-    FE_CHECK(side >= 0 && static_cast<std::size_t>(side) < side_tags.size(),
-             "internal error: boundary face (" << faces[i].nodes[0] << ", " << faces[i].nodes[1]
-                                               << ", " << faces[i].nodes[2]
-                                               << ") of a generated mesh is on no known side");
+    PLISSE_CHECK(side >= 0 && static_cast<std::size_t>(side) < side_tags.size(),
+                 "internal error: boundary face (" << faces[i].nodes[0] << ", " << faces[i].nodes[1]
+                                                   << ", " << faces[i].nodes[2]
+                                                   << ") of a generated mesh is on no known side");
     by_side[static_cast<std::size_t>(side)].push_back(static_cast<int>(i));
   }
   mesh.triangles.clear();
@@ -41,9 +41,9 @@ void orient_generated_tets(Mesh& mesh, const std::string& generator) {
                           mesh.nodes[static_cast<std::size_t>(n[static_cast<std::size_t>(e[1])])])
                              .norm());
     const double volume = tet_signed_volume(mesh, t);
-    FE_CHECK(std::abs(volume) > 1e-12 * longest * longest * longest,
-             generator << ": generated tetrahedron " << t << " is degenerate (volume " << volume
-                       << " mm^3); try a smaller element_size");
+    PLISSE_CHECK(std::abs(volume) > 1e-12 * longest * longest * longest,
+                 generator << ": generated tetrahedron " << t << " is degenerate (volume " << volume
+                           << " mm^3); try a smaller element_size");
     if (volume < 0.0) flip_tet(mesh, t);
   }
 }

@@ -30,8 +30,8 @@ void append_kuhn_tets(Mesh& mesh, const std::array<int, 3>& cells,
 
 Mesh make_box_mesh(const Vec3d& extent, const std::array<int, 3>& cells, int order) {
   const int nx = cells[0], ny = cells[1], nz = cells[2];
-  FE_CHECK(nx >= 1 && ny >= 1 && nz >= 1, "make_box_mesh: cell counts must be >= 1");
-  FE_CHECK(order == 1 || order == 2, "make_box_mesh: order must be 1 or 2");
+  PLISSE_CHECK(nx >= 1 && ny >= 1 && nz >= 1, "make_box_mesh: cell counts must be >= 1");
+  PLISSE_CHECK(order == 1 || order == 2, "make_box_mesh: order must be 1 or 2");
   Mesh mesh;
   auto coordinate = [](double length, int i, int n) { return i == n ? length : length * i / n; };
   auto node = [&](int i, int j, int k) { return i + (nx + 1) * (j + (ny + 1) * k); };

@@ -370,8 +370,9 @@ Signatures compute_signatures(const std::map<std::string, std::vector<int>>& tag
     const int id = static_cast<int>(s.names.size());
     s.names.push_back(name);
     for (int i : indices) {
-      FE_CHECK(i >= 0 && static_cast<std::size_t>(i) < n_elements,
-               "write_gmsh: tag '" << name << "' lists " << what << " " << i << " out of range");
+      PLISSE_CHECK(
+          i >= 0 && static_cast<std::size_t>(i) < n_elements,
+          "write_gmsh: tag '" << name << "' lists " << what << " " << i << " out of range");
       per_element[static_cast<std::size_t>(i)].push_back(id);
     }
   }
@@ -618,18 +619,19 @@ void write_gmsh(const Mesh& mesh, const std::string& path, double version, bool 
     throw file_error(
         path, "the mesh file name must end in .msh (Gmsh picks the format from the extension)");
   const bool v2 = version == 2.2;
-  FE_CHECK(v2 || version == 4.1, "write_gmsh: version must be 2.2 or 4.1 (got " << version << ")");
-  FE_CHECK(!mesh.tets.empty(), "write_gmsh: the mesh has no tetrahedra");
+  PLISSE_CHECK(v2 || version == 4.1,
+               "write_gmsh: version must be 2.2 or 4.1 (got " << version << ")");
+  PLISSE_CHECK(!mesh.tets.empty(), "write_gmsh: the mesh has no tetrahedra");
   const bool second = mesh.order() == 2;
-  FE_CHECK(!second || mesh.tet_edge_nodes.size() == mesh.tets.size(),
-           "write_gmsh: tet_edge_nodes size");
-  FE_CHECK(!second || mesh.triangle_edge_nodes.size() == mesh.triangles.size(),
-           "write_gmsh: triangle_edge_nodes size");
+  PLISSE_CHECK(!second || mesh.tet_edge_nodes.size() == mesh.tets.size(),
+               "write_gmsh: tet_edge_nodes size");
+  PLISSE_CHECK(!second || mesh.triangle_edge_nodes.size() == mesh.triangles.size(),
+               "write_gmsh: triangle_edge_nodes size");
   const auto n_nodes = static_cast<std::size_t>(mesh.n_nodes());
   std::vector<char> used(n_nodes, 0);
   auto use = [&](int node) {
-    FE_CHECK(node >= 0 && static_cast<std::size_t>(node) < n_nodes,
-             "write_gmsh: node index " << node << " out of range");
+    PLISSE_CHECK(node >= 0 && static_cast<std::size_t>(node) < n_nodes,
+                 "write_gmsh: node index " << node << " out of range");
     used[static_cast<std::size_t>(node)] = 1;
   };
   for (const auto& t : mesh.tets)

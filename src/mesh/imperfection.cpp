@@ -108,17 +108,18 @@ std::vector<std::array<int, 3>> orient_outward(const Mesh& mesh,
   out.reserve(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     for (int n : triangles[t])
-      FE_CHECK(n >= 0 && n < mesh.n_nodes(), "imperfection: " << what << " triangle " << t
-                                                              << " refers to node " << n
-                                                              << ", which does not exist");
+      PLISSE_CHECK(n >= 0 && n < mesh.n_nodes(), "imperfection: " << what << " triangle " << t
+                                                                  << " refers to node " << n
+                                                                  << ", which does not exist");
     const std::array<int, 3> key = sorted_face(triangles[t]);
     const auto it = std::lower_bound(faces.begin(), faces.end(), key,
                                      [](const BoundaryFace& f, const std::array<int, 3>& k) {
                                        return sorted_face(f.nodes) < k;
                                      });
-    FE_CHECK(it != faces.end() && sorted_face(it->nodes) == key,
-             "imperfection: " << what << " triangle " << t << " (nodes " << key[0] << ", " << key[1]
-                              << ", " << key[2] << ") is not a boundary face of the tetrahedra");
+    PLISSE_CHECK(it != faces.end() && sorted_face(it->nodes) == key,
+                 "imperfection: " << what << " triangle " << t << " (nodes " << key[0] << ", "
+                                  << key[1] << ", " << key[2]
+                                  << ") is not a boundary face of the tetrahedra");
     out.push_back(it->nodes);
   }
   return out;
@@ -134,11 +135,11 @@ Vec3d area_normal(const Mesh& mesh, const std::array<int, 3>& t) {
 Vec3d plane_normal(const Mesh& mesh, const std::vector<BoundaryFace>& faces, const std::string& tag,
                    double length_scale) {
   const auto it = mesh.surface_tags.find(tag);
-  FE_CHECK(it != mesh.surface_tags.end() && !it->second.empty(),
-           "imperfection: planar surface '" << tag << "' does not exist or is empty");
+  PLISSE_CHECK(it != mesh.surface_tags.end() && !it->second.empty(),
+               "imperfection: planar surface '" << tag << "' does not exist or is empty");
   std::vector<std::array<int, 3>> triangles;
   for (int t : it->second) {
-    FE_CHECK(
+    PLISSE_CHECK(
         t >= 0 && static_cast<std::size_t>(t) < mesh.triangles.size(),
         "imperfection: surface '" << tag << "' lists triangle " << t << ", which does not exist");
     triangles.push_back(mesh.triangles[static_cast<std::size_t>(t)]);
@@ -146,15 +147,15 @@ Vec3d plane_normal(const Mesh& mesh, const std::vector<BoundaryFace>& faces, con
   const auto oriented = orient_outward(mesh, faces, triangles, "surface '" + tag + "'");
   Vec3d n = Vec3d::Zero();
   for (const auto& t : oriented) n += area_normal(mesh, t);
-  FE_CHECK(n.norm() > 0.0, "imperfection: surface '" << tag << "' has no area");
+  PLISSE_CHECK(n.norm() > 0.0, "imperfection: surface '" << tag << "' has no area");
   n.normalize();
   const Vec3d& x0 = mesh.nodes[static_cast<std::size_t>(oriented.front()[0])];
   for (const auto& t : oriented)
     for (int v : t) {
       const double distance = std::abs(n.dot(mesh.nodes[static_cast<std::size_t>(v)] - x0));
-      FE_CHECK(distance <= 1e-9 * length_scale, "imperfection: surface '"
-                                                    << tag << "' is not planar (node " << v
-                                                    << " is " << distance << " mm off its plane)");
+      PLISSE_CHECK(distance <= 1e-9 * length_scale,
+                   "imperfection: surface '" << tag << "' is not planar (node " << v << " is "
+                                             << distance << " mm off its plane)");
     }
   return n;
 }
@@ -170,14 +171,14 @@ std::vector<Vec3d> compute_random_imperfection(const Mesh& mesh,
                                                std::span<const std::array<int, 3>> outer_triangles,
                                                double amplitude, std::uint64_t seed,
                                                const std::vector<std::string>& planar_tags) {
-  FE_CHECK(std::isfinite(amplitude) && amplitude > 0.0,
-           "imperfection: amplitude must be finite and > 0 (got " << amplitude << " mm)");
-  FE_CHECK(!outer_triangles.empty(), "imperfection: the outer surface has no triangles");
+  PLISSE_CHECK(std::isfinite(amplitude) && amplitude > 0.0,
+               "imperfection: amplitude must be finite and > 0 (got " << amplitude << " mm)");
+  PLISSE_CHECK(!outer_triangles.empty(), "imperfection: the outer surface has no triangles");
   const std::size_t n_nodes = mesh.nodes.size();
   Vec3d lo = Vec3d::Constant(std::numeric_limits<double>::infinity());
   Vec3d hi = -lo;
   for (const Vec3d& x : mesh.nodes) {
-    FE_CHECK(x.allFinite(), "imperfection: the mesh has a node with non-finite coordinates");
+    PLISSE_CHECK(x.allFinite(), "imperfection: the mesh has a node with non-finite coordinates");
     lo = lo.cwiseMin(x);
     hi = hi.cwiseMax(x);
   }
@@ -194,7 +195,7 @@ std::vector<Vec3d> compute_random_imperfection(const Mesh& mesh,
   std::vector<int> outer_nodes;
   for (std::size_t v = 0; v < n_nodes; ++v)
     if (!normal_of_node[v].isZero(0.0)) outer_nodes.push_back(static_cast<int>(v));
-  FE_CHECK(!outer_nodes.empty(), "imperfection: the outer surface has no area");
+  PLISSE_CHECK(!outer_nodes.empty(), "imperfection: the outer surface has no area");
 
   std::mt19937_64 engine(seed);
   std::vector<Vec3d> outer_points, outer_shift;
@@ -237,38 +238,38 @@ std::vector<Vec3d> compute_random_imperfection(const Mesh& mesh,
 
   double largest = 0.0;
   for (const Vec3d& v : d) largest = std::max(largest, v.norm());
-  FE_CHECK(largest > 0.0,
-           "imperfection: the random field vanishes (every outer node is held "
-           "in a symmetry plane along its normal)");
+  PLISSE_CHECK(largest > 0.0,
+               "imperfection: the random field vanishes (every outer node is held "
+               "in a symmetry plane along its normal)");
   for (Vec3d& v : d) v *= amplitude / largest;
   return d;
 }
 
 std::vector<Vec3d> compute_mode_imperfection(const Mesh& mesh, std::span<const Vec3d> shape,
                                              double amplitude) {
-  FE_CHECK(std::isfinite(amplitude) && amplitude > 0.0,
-           "imperfection: amplitude must be finite and > 0 (got " << amplitude << " mm)");
-  FE_CHECK(shape.size() == mesh.nodes.size(), "imperfection: the mode has "
-                                                  << shape.size() << " nodal vectors, the mesh "
-                                                  << mesh.nodes.size() << " nodes");
+  PLISSE_CHECK(std::isfinite(amplitude) && amplitude > 0.0,
+               "imperfection: amplitude must be finite and > 0 (got " << amplitude << " mm)");
+  PLISSE_CHECK(shape.size() == mesh.nodes.size(), "imperfection: the mode has "
+                                                      << shape.size() << " nodal vectors, the mesh "
+                                                      << mesh.nodes.size() << " nodes");
   double largest = 0.0;
   for (std::size_t j = 0; j < shape.size(); ++j) {
-    FE_CHECK(shape[j].allFinite(), "imperfection: the mode is not finite at node " << j);
+    PLISSE_CHECK(shape[j].allFinite(), "imperfection: the mode is not finite at node " << j);
     largest = std::max(largest, shape[j].norm());
   }
-  FE_CHECK(largest > 0.0, "imperfection: the mode is zero everywhere");
+  PLISSE_CHECK(largest > 0.0, "imperfection: the mode is zero everywhere");
   std::vector<Vec3d> d(shape.begin(), shape.end());
   for (Vec3d& v : d) v *= amplitude / largest;
   return d;
 }
 
 void apply_imperfection(Mesh& mesh, std::span<const Vec3d> displacement) {
-  FE_CHECK(displacement.size() == mesh.nodes.size(),
-           "imperfection: " << displacement.size() << " nodal displacements for a mesh of "
-                            << mesh.nodes.size() << " nodes");
+  PLISSE_CHECK(displacement.size() == mesh.nodes.size(),
+               "imperfection: " << displacement.size() << " nodal displacements for a mesh of "
+                                << mesh.nodes.size() << " nodes");
   double amplitude = 0.0;
   for (const Vec3d& v : displacement) {
-    FE_CHECK(v.allFinite(), "imperfection: a nodal displacement is not finite");
+    PLISSE_CHECK(v.allFinite(), "imperfection: a nodal displacement is not finite");
     amplitude = std::max(amplitude, v.norm());
   }
   std::vector<Vec3d> original = mesh.nodes;

@@ -27,7 +27,7 @@ Mesh make_layered_shell(
     const SurfaceTriangulation& surface, int layers, Symmetry symmetry,
     const std::function<Vec3d(int node, int layer)>& position,
     const std::function<Vec3d(int node1, int layer1, int node2, int layer2)>& midpoint) {
-  FE_CHECK(layers >= 1, "make_layered_shell: layers must be >= 1");
+  PLISSE_CHECK(layers >= 1, "make_layered_shell: layers must be >= 1");
   const int n = static_cast<int>(surface.nodes.size());
   Mesh mesh;
   mesh.nodes.reserve(static_cast<std::size_t>(n * (layers + 1)));
@@ -73,8 +73,8 @@ Mesh make_layered_shell(
         if (planes[static_cast<std::size_t>(axis)] &&
             mesh.nodes[static_cast<std::size_t>(a)][axis] == 0.0 &&
             mesh.nodes[static_cast<std::size_t>(b)][axis] == 0.0) {
-          FE_CHECK(std::abs(x[axis]) <= 1e-9 * x.norm(),
-                   "layered shell: the edge node between two nodes on a cut plane is off it");
+          PLISSE_CHECK(std::abs(x[axis]) <= 1e-9 * x.norm(),
+                       "layered shell: the edge node between two nodes on a cut plane is off it");
           x[axis] = 0.0;
         }
       return x;

@@ -20,8 +20,8 @@ std::uint64_t edge_key(int a, int b) {
 }  // namespace
 
 void add_edge_nodes(Mesh& mesh, const std::function<Vec3d(int a, int b)>& midpoint) {
-  FE_CHECK(mesh.order() == 1 && mesh.triangle_edge_nodes.empty(),
-           "add_edge_nodes: the mesh is already second order");
+  PLISSE_CHECK(mesh.order() == 1 && mesh.triangle_edge_nodes.empty(),
+               "add_edge_nodes: the mesh is already second order");
   std::vector<std::uint64_t> edges;
   edges.reserve(6 * mesh.tets.size());
   for (const auto& tet : mesh.tets)
@@ -35,8 +35,8 @@ void add_edge_nodes(Mesh& mesh, const std::function<Vec3d(int a, int b)>& midpoi
   auto node_of = [&](int a, int b) {
     const std::uint64_t key = edge_key(a, b);
     const auto it = std::lower_bound(edges.begin(), edges.end(), key);
-    FE_CHECK(it != edges.end() && *it == key,
-             "add_edge_nodes: edge (" << a << ", " << b << ") is no tetrahedron edge");
+    PLISSE_CHECK(it != edges.end() && *it == key,
+                 "add_edge_nodes: edge (" << a << ", " << b << ") is no tetrahedron edge");
     return first + static_cast<int>(it - edges.begin());
   };
 

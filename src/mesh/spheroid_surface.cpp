@@ -141,9 +141,9 @@ void orient_and_repair_surface(SurfaceTriangulation& s, const std::array<bool, 3
               .push_back(t);
       repaired = true;
     }
-    FE_CHECK(repaired,
-             "spheroid surface: a surface triangle lies in a symmetry plane and could not be "
-             "repaired; try a smaller element_size");
+    PLISSE_CHECK(repaired,
+                 "spheroid surface: a surface triangle lies in a symmetry plane and could not be "
+                 "repaired; try a smaller element_size");
   }
 }
 
@@ -195,7 +195,7 @@ double kept_fraction(Symmetry symmetry) {
 
 SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetry symmetry,
                                            const PoleRefinement& pole) {
-  FE_CHECK(a > 0.0 && b > 0.0 && h > 0.0, "mesh_spheroid_surface: sizes must be positive");
+  PLISSE_CHECK(a > 0.0 && b > 0.0 && h > 0.0, "mesh_spheroid_surface: sizes must be positive");
   const auto planes = cut_planes(symmetry);
   const double tolerance = 1e-9 * std::max(a, b);  // cut-plane nodes are within round-off of it
   GmshSession session;
@@ -236,8 +236,8 @@ SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetr
       gmsh::vectorpair points;
       const double eps = 1e-3 * std::max(a, b);  // larger than OCC's tolerance, no other point
       gmsh::model::getEntitiesInBoundingBox(-eps, b - eps, -eps, eps, b + eps, eps, points, 0);
-      FE_CHECK(!points.empty(),
-               "spheroid surface: no geometry point at the pole (0, " << b << ", 0)");
+      PLISSE_CHECK(!points.empty(),
+                   "spheroid surface: no geometry point at the pole (0, " << b << ", 0)");
       std::vector<double> tags;
       for (const auto& [dim, tag] : points) tags.push_back(tag);
       const int distance = gmsh::model::mesh::field::add("Distance");
@@ -279,13 +279,13 @@ SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetr
   } catch (const std::string& message) {
     throw Error("spheroid surface: Gmsh: " + message);
   }
-  FE_CHECK(!surface.triangles.empty(), "spheroid surface: Gmsh produced no triangles");
+  PLISSE_CHECK(!surface.triangles.empty(), "spheroid surface: Gmsh produced no triangles");
   for (auto& p : surface.nodes) {
     for (int axis = 0; axis < 3; ++axis) {
       if (!planes[static_cast<std::size_t>(axis)]) continue;
       if (std::abs(p[axis]) < tolerance) p[axis] = 0.0;
-      FE_CHECK(p[axis] >= 0.0, "spheroid surface: node outside the kept part (coordinate "
-                                   << axis << " = " << p[axis] << ")");
+      PLISSE_CHECK(p[axis] >= 0.0, "spheroid surface: node outside the kept part (coordinate "
+                                       << axis << " = " << p[axis] << ")");
     }
     const double s =
         std::sqrt(p.x() * p.x() / (a * a) + p.y() * p.y() / (b * b) + p.z() * p.z() / (a * a));

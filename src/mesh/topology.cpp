@@ -68,8 +68,8 @@ std::set<int> nodes_of(const Mesh& mesh, const std::vector<int>& elements, const
   for (int e : elements) {
     for (int v : corners[static_cast<std::size_t>(e)]) nodes.insert(v);
     if (mesh.order() == 2) {
-      FE_CHECK(static_cast<std::size_t>(e) < edge_nodes.size(),
-               what << " " << e << " of the second-order mesh has no edge nodes");
+      PLISSE_CHECK(static_cast<std::size_t>(e) < edge_nodes.size(),
+                   what << " " << e << " of the second-order mesh has no edge nodes");
       for (int v : edge_nodes[static_cast<std::size_t>(e)]) nodes.insert(v);
     }
   }

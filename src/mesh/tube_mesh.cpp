@@ -19,9 +19,9 @@ int tube_divisions_around(double radius, double h, bool half) {
 
 Mesh make_tube_mesh(double radius, double length, double thickness, int layers, double h, bool half,
                     int order) {
-  FE_CHECK(radius > 0.5 * thickness && length > 0.0 && layers >= 1 && h > 0.0,
-           "make_tube_mesh: needs radius > thickness / 2 > 0, length > 0, layers >= 1, h > 0");
-  FE_CHECK(order == 1 || order == 2, "make_tube_mesh: order must be 1 or 2");
+  PLISSE_CHECK(radius > 0.5 * thickness && length > 0.0 && layers >= 1 && h > 0.0,
+               "make_tube_mesh: needs radius > thickness / 2 > 0, length > 0, layers >= 1, h > 0");
+  PLISSE_CHECK(order == 1 || order == 2, "make_tube_mesh: order must be 1 or 2");
   const int nx = std::max(1, static_cast<int>(std::lround(length / h)));
   const int na = tube_divisions_around(radius, h, half);
   // Node rows about the axis: na + 1 on the half tube (phi = 0 ... pi), na on the full one, whose

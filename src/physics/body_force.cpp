@@ -7,8 +7,8 @@ namespace plisse {
 
 std::vector<double> consistent_nodal_volumes(const Mesh& mesh,
                                              const std::vector<double>& element_weight) {
-  FE_CHECK(element_weight.empty() || element_weight.size() == mesh.tets.size(),
-           element_weight.size() << " element weights for " << mesh.tets.size() << " elements");
+  PLISSE_CHECK(element_weight.empty() || element_weight.size() == mesh.tets.size(),
+               element_weight.size() << " element weights for " << mesh.tets.size() << " elements");
   const auto weight = [&](std::size_t t) {
     return element_weight.empty() ? 1.0 : element_weight[t];
   };

@@ -1,12 +1,23 @@
 #pragma once
 /// Body force rho g (dead load on the reference volume), e.g. gravity.
+#include <string>
 #include <vector>
 
+#include "core/error.hpp"
+#include "core/types.hpp"
 #include "mesh/mesh.hpp"
 #include "physics/model_term.hpp"
 #include "physics/ramp.hpp"
 
 namespace plisse {
+
+/// A `loads:` entry of type gravity, as the case file gives it (terms/gravity_load.cpp).
+struct GravityLoadSettings {
+  std::string name;                    ///< history columns `load_x:<name>` ...
+  Vec3d acceleration = Vec3d::Zero();  ///< [mm/s^2], e.g. [0, -9810, 0]
+  Ramp ramp;
+  InputPlace place;
+};
 
 /// The consistent nodal volumes ∫ N_a dV [mm^3] of every node (docs/theory/loads.md): V_e / 4 per
 /// corner of a linear tetrahedron (L6; the MINI bubble's share is not applied), and for a 10-node

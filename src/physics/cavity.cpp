@@ -103,9 +103,9 @@ double CavityTerm::fluid_volume(double p_c, double t) const {
   }
   // (C9): V_c = (p0 + p_amb) V0 m(t) / (p_c + p_amb)
   const double p_amb = cavity_.ambient_pressure;
-  FE_CHECK(p_c + p_amb > 0.0, "cavity '" << cavity_.name
-                                         << "': the absolute gas pressure p_c + p_amb = "
-                                         << p_c + p_amb << " MPa is not positive");
+  PLISSE_CHECK(p_c + p_amb > 0.0, "cavity '" << cavity_.name
+                                             << "': the absolute gas pressure p_c + p_amb = "
+                                             << p_c + p_amb << " MPa is not positive");
   const double mass = 1.0 + (cavity_.mass_ratio - 1.0) * ramp;
   return (cavity_.initial_pressure + p_amb) * reference_volume_ * mass / (p_c + p_amb);
 }
@@ -170,7 +170,7 @@ void CavityTerm::add_face(const SurfaceFace& face, double p, std::span<const dou
 
 void CavityTerm::assemble(double t, std::span<const double> x, std::span<double> residual,
                           TangentSink* tangent) {
-  FE_ASSERT(pressure_dof_ >= 0);
+  PLISSE_ASSERT(pressure_dof_ >= 0);
   const double p = x[pressure_dof_];
   const double fluid = fluid_volume(p, t);
   double six_volume = 0.0;

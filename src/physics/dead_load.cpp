@@ -44,7 +44,7 @@ std::vector<NodalForce> total_force(const Mesh& mesh, const std::vector<SurfaceF
   const auto areas = consistent_nodal_areas(mesh, faces);
   double total = 0.0;
   for (const auto& entry : areas) total += entry.second;
-  FE_CHECK(total > 0.0, "the loaded surface has no area (" << faces.size() << " faces)");
+  PLISSE_CHECK(total > 0.0, "the loaded surface has no area (" << faces.size() << " faces)");
   std::vector<NodalForce> out;
   for (const auto& [node, area] : areas) out.push_back({node, (area / total) * force});  // (L12)
   return out;
@@ -85,10 +85,10 @@ void DeadLoad::accept_step(std::span<const double> x) {
 std::vector<double> DeadLoad::save_state() const { return {t_accepted_, s_accepted_, work_}; }
 
 void DeadLoad::load_state(std::span<const double> state) {
-  FE_CHECK(state.size() == 3, "load '" << name_ << "': checkpoint state has " << state.size()
-                                       << " values, expected 3 (t, S, W)");
+  PLISSE_CHECK(state.size() == 3, "load '" << name_ << "': checkpoint state has " << state.size()
+                                           << " values, expected 3 (t, S, W)");
   for (double v : state)
-    FE_CHECK(std::isfinite(v), "load '" << name_ << "': checkpoint state is not finite");
+    PLISSE_CHECK(std::isfinite(v), "load '" << name_ << "': checkpoint state is not finite");
   t_accepted_ = t_current_ = state[0];
   s_accepted_ = state[1];
   work_ = state[2];

@@ -2,16 +2,40 @@
 /// Dead loads given as forces on nodes: a surface traction per unit undeformed area, a total force
 /// spread over a surface, a concentrated force on one node (docs/theory/loads.md, L11-L13). Their
 /// nodal forces are fixed vectors scaled by a ramp, so they add nothing to the tangent.
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "core/error.hpp"
 #include "mesh/mesh.hpp"
+#include "mesh/surface_ref.hpp"
 #include "physics/model_term.hpp"
 #include "physics/ramp.hpp"
 #include "physics/surface.hpp"
 
 namespace plisse {
+
+/// A `loads:` entry of type traction, as the case file gives it (terms/traction_load.cpp): exactly
+/// one of `traction` and `force`.
+struct TractionLoadSettings {
+  std::string name;               ///< history columns `load_x:<name>` ...
+  SurfaceRef surface;             ///< the loaded surface
+  std::optional<Vec3d> traction;  ///< [MPa] per unit undeformed area, non-zero
+  std::optional<Vec3d> force;     ///< [N] in total, spread in proportion to undeformed area
+  Ramp ramp;
+  InputPlace place;
+};
+
+/// A `loads:` entry of type point-force, as the case file gives it (terms/point_force.cpp).
+struct PointForceSettings {
+  std::string name;             ///< history columns `load_x:<name>` ...
+  std::optional<Vec3d> force;   ///< [N] on the node nearest `point`, non-zero; required
+  Vec3d point = Vec3d::Zero();  ///< [mm], a point of the undeformed body
+  InputPlace point_place;       ///< where `point` is written
+  Ramp ramp;
+  InputPlace place;
+};
 
 /// The consistent nodal areas ∫ N_a dA [mm^2] of the nodes of `faces` on the undeformed mesh
 /// (loads.md, L11): A_e / 3 per corner of a 3-node face; for a 6-node face the degree-4 rule on

@@ -20,16 +20,18 @@ DieContact::DieContact(const Mesh& mesh, DieGeometry die, DieContactSettings set
       die_(std::move(die)),
       settings_(std::move(settings)),
       cut_planes_(die_.symmetric_planes(mirror_planes)) {
-  FE_CHECK(settings_.penalty > 0.0,
-           "die '" << settings_.name << "': penalty must be > 0 (got " << settings_.penalty << ")");
-  FE_CHECK(settings_.tolerance > 0.0, "die '" << settings_.name << "': tolerance must be > 0 (got "
-                                              << settings_.tolerance << ")");
-  FE_CHECK(region.empty() || settings_.contact == ContactKind::sticking,
-           "die '" << settings_.name << "': only a sticking die glues a region");
-  FE_CHECK(settings_.friction >= 0.0, "die '" << settings_.name << "': friction must be >= 0 (got "
-                                              << settings_.friction << ")");
-  FE_CHECK(settings_.friction == 0.0 || settings_.contact == ContactKind::coulomb,
-           "die '" << settings_.name << "': only a Coulomb die has a friction coefficient");
+  PLISSE_CHECK(settings_.penalty > 0.0, "die '" << settings_.name << "': penalty must be > 0 (got "
+                                                << settings_.penalty << ")");
+  PLISSE_CHECK(settings_.tolerance > 0.0, "die '" << settings_.name
+                                                  << "': tolerance must be > 0 (got "
+                                                  << settings_.tolerance << ")");
+  PLISSE_CHECK(region.empty() || settings_.contact == ContactKind::sticking,
+               "die '" << settings_.name << "': only a sticking die glues a region");
+  PLISSE_CHECK(settings_.friction >= 0.0, "die '" << settings_.name
+                                                  << "': friction must be >= 0 (got "
+                                                  << settings_.friction << ")");
+  PLISSE_CHECK(settings_.friction == 0.0 || settings_.contact == ContactKind::coulomb,
+               "die '" << settings_.name << "': only a Coulomb die has a friction coefficient");
   // Each triangle once, whichever list it comes from, so a region inside the candidate surface
   // does not double the area.
   std::set<std::array<int, 3>> seen;
@@ -254,9 +256,9 @@ std::vector<double> DieContact::save_state() const {
 }
 
 void DieContact::load_state(std::span<const double> state) {
-  FE_CHECK(state.size() == 8 * accepted_.size(),
-           "die '" << settings_.name << "': the checkpoint has " << state.size() / 8
-                   << " contact nodes, the model " << accepted_.size());
+  PLISSE_CHECK(state.size() == 8 * accepted_.size(),
+               "die '" << settings_.name << "': the checkpoint has " << state.size() / 8
+                       << " contact nodes, the model " << accepted_.size());
   for (size_t i = 0; i < accepted_.size(); ++i) {
     const double* v = state.data() + 8 * i;
     NodeState& s = accepted_[i];

@@ -17,11 +17,11 @@ DieGeometry::DieGeometry(DieShape shape, const Vec3d& point, const Vec3d& normal
       displacement_(displacement),
       ramp_(ramp) {
   if (shape == DieShape::plane)
-    FE_CHECK(std::abs(normal.norm() - 1.0) < 1e-12, "die normal must be a unit vector");
+    PLISSE_CHECK(std::abs(normal.norm() - 1.0) < 1e-12, "die normal must be a unit vector");
   if (shape == DieShape::cylinder)
-    FE_CHECK(std::abs(axis.norm() - 1.0) < 1e-12, "die axis must be a unit vector");
+    PLISSE_CHECK(std::abs(axis.norm() - 1.0) < 1e-12, "die axis must be a unit vector");
   if (shape != DieShape::plane)
-    FE_CHECK(radius > 0.0, "die radius must be > 0 (got " << radius << ")");
+    PLISSE_CHECK(radius > 0.0, "die radius must be > 0 (got " << radius << ")");
 }
 
 DieGap DieGeometry::gap(const Vec3d& x, double t) const {
@@ -38,7 +38,7 @@ DieGap DieGeometry::gap(const Vec3d& x, double t) const {
       // g = |x - c| - R, n = (x - c)/|x - c|, H = (I - n n^T)/|x - c|   (D3)
       const Vec3d r = x - c;
       const double distance = r.norm();
-      FE_CHECK(distance > 1e-12 * radius_, "point at the centre of a spherical die: no normal");
+      PLISSE_CHECK(distance > 1e-12 * radius_, "point at the centre of a spherical die: no normal");
       out.g = distance - radius_;
       out.n = r / distance;
       out.H = (Mat3d::Identity() - out.n * out.n.transpose()) / distance;
@@ -49,7 +49,7 @@ DieGap DieGeometry::gap(const Vec3d& x, double t) const {
       const Mat3d P = Mat3d::Identity() - axis_ * axis_.transpose();
       const Vec3d r = P * (x - c);
       const double distance = r.norm();
-      FE_CHECK(distance > 1e-12 * radius_, "point on the axis of a cylindrical die: no normal");
+      PLISSE_CHECK(distance > 1e-12 * radius_, "point on the axis of a cylindrical die: no normal");
       out.g = distance - radius_;
       out.n = r / distance;
       out.H = (P - out.n * out.n.transpose()) / distance;

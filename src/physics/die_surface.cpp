@@ -82,7 +82,7 @@ std::map<int, double> tie_areas(const Mesh& mesh, const std::vector<SurfaceFace>
 }
 
 double mean_edge_length(const Mesh& mesh, const std::vector<std::array<int, 3>>& triangles) {
-  FE_CHECK(!triangles.empty(), "a contact surface without triangles has no element size");
+  PLISSE_CHECK(!triangles.empty(), "a contact surface without triangles has no element size");
   double sum = 0.0;
   for (const auto& t : triangles)
     for (int k = 0; k < 3; ++k) sum += (mesh.nodes[t[(k + 1) % 3]] - mesh.nodes[t[k]]).norm();

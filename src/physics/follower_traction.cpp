@@ -26,7 +26,7 @@ const quadratic_triangle::RulePoint& linear_centroid() {
 void follower_traction_face(const FollowerTractionValues& v, double factor,
                             std::span<const Vec3d> xs, std::span<double> f, double* k) {
   const int n = static_cast<int>(xs.size());
-  FE_ASSERT(n == 3 || n == 6);
+  PLISSE_ASSERT(n == 3 || n == 6);
   const double sigma = factor * v.normal, tau = factor * v.shear;
   std::fill(f.begin(), f.begin() + 3 * n, 0.0);
   if (k) std::fill(k, k + 9 * n * n, 0.0);
@@ -165,10 +165,11 @@ std::vector<double> FollowerTraction::save_state() const {
 
 void FollowerTraction::load_state(std::span<const double> state) {
   const std::size_t expected = 2 + 6 * nodes_.size();
-  FE_CHECK(state.size() == expected, "load '" << name_ << "': checkpoint state has " << state.size()
-                                              << " values, expected " << expected);
+  PLISSE_CHECK(state.size() == expected, "load '" << name_ << "': checkpoint state has "
+                                                  << state.size() << " values, expected "
+                                                  << expected);
   for (double v : state)
-    FE_CHECK(std::isfinite(v), "load '" << name_ << "': checkpoint state is not finite");
+    PLISSE_CHECK(std::isfinite(v), "load '" << name_ << "': checkpoint state is not finite");
   t_accepted_ = t_current_ = state[0];
   work_ = state[1];
   for (std::size_t j = 0; j < nodes_.size(); ++j) {

@@ -3,16 +3,31 @@
 /// a shear component along the projection of a fixed direction onto the deformed surface, both per
 /// unit deformed area, with their consistent load stiffness (docs/theory/loads.md, L14-L16).
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "mesh/mesh.hpp"
+#include "mesh/surface_ref.hpp"
 #include "physics/dirichlet.hpp"
 #include "physics/model_term.hpp"
 #include "physics/ramp.hpp"
 #include "physics/surface.hpp"
 
 namespace plisse {
+
+/// A `loads:` entry of type follower-traction, as the case file gives it
+/// (terms/follower_traction.cpp): a non-zero normal or shear, and a direction with a shear.
+struct FollowerTractionSettings {
+  std::string name;                ///< history columns `load_x:<name>` ...
+  SurfaceRef surface;              ///< the loaded surface
+  double normal = 0.0;             ///< [MPa] per unit deformed area along the outward normal
+  double shear = 0.0;              ///< [MPa] per unit deformed area along `direction`'s projection
+  std::optional<Vec3d> direction;  ///< normalised; required with a shear
+  Ramp ramp;
+  InputPlace place;
+};
 
 /// What a follower traction applies at the end of its ramp.
 struct FollowerTractionValues {

@@ -32,8 +32,8 @@ NodeFacetGap node_facet_gap(const Vec3d& xs, const Vec3d& xa, const Vec3d& xb, c
   const Vec3d e1 = xb - xa, e2 = xc - xa, w = xs - xa;
   const Vec3d a = e1.cross(e2);
   const double m = a.norm();
-  FE_CHECK(std::isfinite(m) && m > 1e-300,
-           "degenerate contact facet: |(xb - xa) x (xc - xa)| = " << m);
+  PLISSE_CHECK(std::isfinite(m) && m > 1e-300,
+               "degenerate contact facet: |(xb - xa) x (xc - xa)| = " << m);
   const Vec3d n = a / m;
   const double q = a.dot(w);
 

@@ -6,13 +6,24 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "mesh/mesh.hpp"
+#include "mesh/surface_ref.hpp"
 #include "physics/dirichlet.hpp"
 #include "physics/model_term.hpp"
 #include "physics/ramp.hpp"
 #include "physics/surface.hpp"
 
 namespace plisse {
+
+/// A `loads:` entry of type pressure, as the case file gives it (terms/pressure_load.cpp).
+struct PressureLoadSettings {
+  std::string name;    ///< history columns `pressure:<name>`, `volume:<name>` ...
+  SurfaceRef surface;  ///< the loaded surface
+  double value = 0.0;  ///< [MPa] at the end of the ramp, positive against the outward normal
+  Ramp ramp;
+  InputPlace place;
+};
 
 class PressureLoad : public ModelTerm {
  public:

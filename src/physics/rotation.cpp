@@ -30,8 +30,8 @@ std::array<double, 3> series(double s, int k) {
 
 RotatedVector rotate(const Vec3d& theta, const Vec3d& d) {
   const double s = theta.squaredNorm();
-  FE_CHECK(s <= kMaxRotationAngle * kMaxRotationAngle,
-           "rotation angle " << std::sqrt(s) << " rad is beyond 2 pi");
+  PLISSE_CHECK(s <= kMaxRotationAngle * kMaxRotationAngle,
+               "rotation angle " << std::sqrt(s) << " rad is beyond 2 pi");
   const auto [a, da, dda] = series(s, 1);
   const auto [b, db, ddb] = series(s, 2);
   const Vec3d c = theta.cross(d);     // θ × d

@@ -12,11 +12,12 @@ namespace plisse {
 
 std::vector<SurfaceFace> outward_faces(const Mesh& mesh, const std::string& name) {
   const auto tag = mesh.surface_tags.find(name);
-  FE_CHECK(tag != mesh.surface_tags.end(), "no surface tag '" << name << "'");
+  PLISSE_CHECK(tag != mesh.surface_tags.end(), "no surface tag '" << name << "'");
   const bool second_order = mesh.order() == 2;
-  FE_CHECK(!second_order || mesh.triangle_edge_nodes.size() == mesh.triangles.size(),
-           "surface '" << name << "': the second-order mesh has " << mesh.triangle_edge_nodes.size()
-                       << " edge-node triples for " << mesh.triangles.size() << " triangles");
+  PLISSE_CHECK(!second_order || mesh.triangle_edge_nodes.size() == mesh.triangles.size(),
+               "surface '" << name << "': the second-order mesh has "
+                           << mesh.triangle_edge_nodes.size() << " edge-node triples for "
+                           << mesh.triangles.size() << " triangles");
   // The fourth node of the tetrahedron owning each face, keyed by the sorted face.
   std::map<std::array<int, 3>, int> wanted;
   for (int t : tag->second) {
@@ -45,8 +46,8 @@ std::vector<SurfaceFace> outward_faces(const Mesh& mesh, const std::string& name
     auto key = tri;
     std::sort(key.begin(), key.end());
     const int opposite = wanted.at(key);
-    FE_CHECK(opposite >= 0,
-             "triangle " << t << " of surface '" << name << "' is not a face of any tetrahedron");
+    PLISSE_CHECK(opposite >= 0, "triangle " << t << " of surface '" << name
+                                            << "' is not a face of any tetrahedron");
     const Vec3d& x0 = mesh.nodes[tri[0]];
     const Vec3d n = (mesh.nodes[tri[1]] - x0).cross(mesh.nodes[tri[2]] - x0);
     if (n.dot(mesh.nodes[opposite] - x0) > 0) {
@@ -90,8 +91,9 @@ std::vector<SurfaceFace> faces_with_corners(const Mesh& mesh,
     for (int k = 0; k < 3; ++k) {
       const int a = face.nodes[k], b = face.nodes[(k + 1) % 3];
       const auto it = edge_node.find(pair_key(a, b));
-      FE_CHECK(it != edge_node.end(),
-               "nodes " << a << " and " << b << " of a face are not an edge of any tetrahedron");
+      PLISSE_CHECK(it != edge_node.end(), "nodes "
+                                              << a << " and " << b
+                                              << " of a face are not an edge of any tetrahedron");
       face.nodes[3 + k] = it->second;
     }
   }

@@ -93,14 +93,15 @@ SurfaceContact::SurfaceContact(const Mesh& mesh, SurfaceContactSettings settings
                                const std::vector<std::array<int, 3>>& facets_from, bool self)
     : mesh_(mesh), settings_(std::move(settings)), self_(self) {
   const std::string& name = settings_.name;
-  FE_CHECK(settings_.penalty > 0.0,
-           "contact '" << name << "': penalty must be > 0 (got " << settings_.penalty << ")");
-  FE_CHECK(settings_.tolerance > 0.0,
-           "contact '" << name << "': tolerance must be > 0 (got " << settings_.tolerance << ")");
-  FE_CHECK(settings_.search_distance > 0.0, "contact '" << name
-                                                        << "': search distance must be > 0 (got "
-                                                        << settings_.search_distance << ")");
-  FE_CHECK(!nodes_from.empty() && !facets_from.empty(), "contact '" << name << "': empty surface");
+  PLISSE_CHECK(settings_.penalty > 0.0,
+               "contact '" << name << "': penalty must be > 0 (got " << settings_.penalty << ")");
+  PLISSE_CHECK(settings_.tolerance > 0.0, "contact '" << name << "': tolerance must be > 0 (got "
+                                                      << settings_.tolerance << ")");
+  PLISSE_CHECK(settings_.search_distance > 0.0,
+               "contact '" << name << "': search distance must be > 0 (got "
+                           << settings_.search_distance << ")");
+  PLISSE_CHECK(!nodes_from.empty() && !facets_from.empty(),
+               "contact '" << name << "': empty surface");
   const std::vector<SurfaceFace> node_faces = faces_with_corners(mesh_, nodes_from);
   facets_ = flat_facets(faces_with_corners(mesh_, facets_from));
   const std::vector<std::array<int, 3>> own = flat_facets(node_faces);
@@ -331,7 +332,7 @@ std::vector<double> SurfaceContact::save_state() const {
 
 void SurfaceContact::load_state(std::span<const double> state) {
   const size_t n = nodes_.size();
-  FE_CHECK(
+  PLISSE_CHECK(
       state.size() > 2 * n && state.size() == 2 * n + 1 + 2 * static_cast<size_t>(state[2 * n]),
       "contact '" << settings_.name << "': the checkpoint does not fit this contact ("
                   << state.size() << " values for " << n << " contact nodes)");

@@ -5,17 +5,33 @@
 /// surface's triangles (a 6-node face counts as its four flat sub-triangles). Candidate facets
 /// are found with a bounding-volume hierarchy (Eigen's KdBVH). docs/theory/surface-contact.md.
 #include <array>
+#include <optional>
 #include <set>
 #include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "core/error.hpp"
 #include "mesh/mesh.hpp"
+#include "mesh/surface_ref.hpp"
 #include "physics/model_term.hpp"
 #include "physics/node_facet_gap.hpp"
 
 namespace plisse {
+
+/// A `contacts:` entry as the case file gives it: two surfaces, or one with itself
+/// (terms/surface_contact.cpp turns it into SurfaceContactSettings).
+struct ContactPairSettings {
+  std::string name;                  ///< history columns `force_x:<name>` ...
+  std::optional<SurfaceRef> first;   ///< `surfaces: [first, second]`: nodes of first ...
+  std::optional<SurfaceRef> second;  ///< ... kept out of the faces of second
+  std::optional<SurfaceRef> self;    ///< `self:` one surface against itself
+  double penalty = 0.0;              ///< [MPa/mm]; 0: chosen from the material and mesh
+  double tolerance = 1e-3;           ///< allowed penetration [mm], > 0
+  double search_distance = 0.0;      ///< [mm]; 0: the mean edge length of the surfaces
+  InputPlace place;
+};
 
 /// Parameters of one surface contact (docs/theory/surface-contact.md).
 struct SurfaceContactSettings {

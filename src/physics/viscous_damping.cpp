@@ -18,7 +18,7 @@ std::size_t state_index(std::size_t j) {
 }  // namespace
 
 double mean_edge_length(const Mesh& mesh) {
-  FE_CHECK(!mesh.tets.empty(), "mean edge length: the mesh has no tetrahedra");
+  PLISSE_CHECK(!mesh.tets.empty(), "mean edge length: the mesh has no tetrahedra");
   double sum = 0.0;
   for (const auto& tet : mesh.tets)
     for (const auto& e : kTetEdges)
@@ -72,21 +72,21 @@ void for_each_lumped_volume(const Mesh& mesh, Add&& add) {
 ViscousDamping::ViscousDamping(const Mesh& mesh, double viscosity, double length,
                                const std::vector<ConstrainedComponent>& constraints)
     : coefficient_(3 * mesh.nodes.size(), 0.0), u_accepted_(3 * mesh.nodes.size(), 0.0) {
-  FE_CHECK(
+  PLISSE_CHECK(
       std::isfinite(viscosity) && viscosity > 0.0,
       "viscous stabilisation: viscosity must be finite and > 0 (got " << viscosity << " MPa s)");
-  FE_CHECK(std::isfinite(length) && length > 0.0,
-           "viscous stabilisation: length must be finite and > 0 (got " << length << " mm)");
+  PLISSE_CHECK(std::isfinite(length) && length > 0.0,
+               "viscous stabilisation: length must be finite and > 0 (got " << length << " mm)");
   const double scale = viscosity / (length * length);
   for_each_lumped_volume(mesh, [&](int v, double volume) {
     for (std::size_t k = 0; k < 3; ++k)
       coefficient_[3 * static_cast<std::size_t>(v) + k] += scale * volume;
   });
   for (const ConstrainedComponent& c : constraints) {
-    FE_CHECK(c.node >= 0 && static_cast<std::size_t>(c.node) < mesh.nodes.size() &&
-                 c.component >= 0 && c.component < 3,
-             "viscous stabilisation: constraint on node " << c.node << ", component " << c.component
-                                                          << " does not exist");
+    PLISSE_CHECK(c.node >= 0 && static_cast<std::size_t>(c.node) < mesh.nodes.size() &&
+                     c.component >= 0 && c.component < 3,
+                 "viscous stabilisation: constraint on node " << c.node << ", component "
+                                                              << c.component << " does not exist");
     coefficient_[3 * static_cast<std::size_t>(c.node) + static_cast<std::size_t>(c.component)] =
         0.0;
   }
@@ -136,12 +136,12 @@ std::vector<double> ViscousDamping::save_state() const {
 }
 
 void ViscousDamping::load_state(std::span<const double> state) {
-  FE_CHECK(state.size() == 2 + u_accepted_.size(),
-           "viscous stabilisation: checkpoint state has "
-               << state.size() << " values, expected " << 2 + u_accepted_.size() << " (t, D, "
-               << u_accepted_.size() / 3 << " nodal displacements)");
+  PLISSE_CHECK(state.size() == 2 + u_accepted_.size(),
+               "viscous stabilisation: checkpoint state has "
+                   << state.size() << " values, expected " << 2 + u_accepted_.size() << " (t, D, "
+                   << u_accepted_.size() / 3 << " nodal displacements)");
   for (double v : state)
-    FE_CHECK(std::isfinite(v), "viscous stabilisation: checkpoint state is not finite");
+    PLISSE_CHECK(std::isfinite(v), "viscous stabilisation: checkpoint state is not finite");
   t_accepted_ = state[0];
   t_current_ = state[0];
   dissipated_energy_ = state[1];

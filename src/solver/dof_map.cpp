@@ -7,7 +7,7 @@ namespace plisse {
 DofMap::DofMap(int n_nodes, int n_global, const std::vector<ConstrainedComponent>& constrained,
                const std::vector<int>& node_order)
     : equation_(static_cast<size_t>(kPerNode) * n_nodes + n_global, 0), n_nodes_(n_nodes) {
-  FE_CHECK(
+  PLISSE_CHECK(
       node_order.empty() || node_order.size() == static_cast<size_t>(n_nodes),
       "DofMap: a node order of " << node_order.size() << " entries for " << n_nodes << " nodes");
   for (const auto& c : constrained) equation_[dof(c.node, c.component)] = -1;
@@ -20,7 +20,8 @@ DofMap::DofMap(int n_nodes, int n_global, const std::vector<ConstrainedComponent
   for (int k = 0; k < n_nodes; ++k) {
     const int v = node_order.empty() ? k : node_order[k];
     if (!node_order.empty()) {
-      FE_CHECK(v >= 0 && v < n_nodes && !seen[v], "DofMap: the node order is not a permutation");
+      PLISSE_CHECK(v >= 0 && v < n_nodes && !seen[v],
+                   "DofMap: the node order is not a permutation");
       seen[v] = 1;
     }
     for (int c = 0; c < kPerNode; ++c) number(dof(v, c));

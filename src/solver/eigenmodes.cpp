@@ -87,13 +87,13 @@ std::vector<double> to_normalised_state(const MixedModel& model, Vec x) {
 
 }  // namespace
 
-std::vector<Eigenmode> lowest_eigenmodes(MixedModel& model, const EigenOptions& options) {
-  FE_CHECK(options.count >= 1,
-           "lowest_eigenmodes: count must be at least 1, not " << options.count);
-  FE_CHECK(options.count <= model.n_free(),
-           "lowest_eigenmodes: " << options.count << " modes asked of a model with "
-                                 << model.n_free() << " free dofs");
-  FE_CHECK(options.tolerance > 0, "lowest_eigenmodes: tolerance must be positive");
+std::vector<Eigenmode> lowest_eigenmodes(MixedModel& model, const EigenSettings& options) {
+  PLISSE_CHECK(options.count >= 1,
+               "lowest_eigenmodes: count must be at least 1, not " << options.count);
+  PLISSE_CHECK(options.count <= model.n_free(),
+               "lowest_eigenmodes: " << options.count << " modes asked of a model with "
+                                     << model.n_free() << " free dofs");
+  PLISSE_CHECK(options.tolerance > 0, "lowest_eigenmodes: tolerance must be positive");
   EigenObjects o;
   o.K = model.create_matrix();
   const AssemblyStatus status = model.assemble_tangent(o.K);

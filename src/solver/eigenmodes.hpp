@@ -23,7 +23,7 @@ struct Eigenmode {
   std::vector<double> state;
 };
 
-struct EigenOptions {
+struct EigenSettings {
   int count = 4;            ///< number of eigenpairs wanted (nearest the target)
   double target = 0.0;      ///< shift σ of the shift-invert transformation [same unit as λ]
   double tolerance = 1e-8;  ///< SLEPc's relative tolerance on the residual of each pair
@@ -35,6 +35,6 @@ struct EigenOptions {
 /// SLEPc fails or does not converge to `count` pairs, plisse::Error on bad options or another
 /// PETSc error. Requires a live PetscSession (which initialises SLEPc too). Options -eps_* and
 /// -st_* (e.g. -st_pc_factor_mat_solver_type) in PETSc's database override the defaults.
-std::vector<Eigenmode> lowest_eigenmodes(MixedModel& model, const EigenOptions& options);
+std::vector<Eigenmode> lowest_eigenmodes(MixedModel& model, const EigenSettings& options);
 
 }  // namespace plisse

@@ -55,17 +55,17 @@ class ElementAssembly {
   /// unstressed element).
   ElementAssembly(const Mesh& mesh, ElementMaterials materials) : materials_(std::move(materials)) {
     const int n = Element::n_elements(mesh);
-    FE_CHECK(!materials_.materials.empty() &&
-                 materials_.inverse_bulk_moduli.size() == materials_.materials.size() &&
-                 (materials_.of_element.empty() ||
-                  materials_.of_element.size() == static_cast<std::size_t>(n)),
-             "element materials: " << materials_.materials.size() << " models, "
-                                   << materials_.of_element.size() << " indices for " << n
-                                   << " elements");
+    PLISSE_CHECK(!materials_.materials.empty() &&
+                     materials_.inverse_bulk_moduli.size() == materials_.materials.size() &&
+                     (materials_.of_element.empty() ||
+                      materials_.of_element.size() == static_cast<std::size_t>(n)),
+                 "element materials: " << materials_.materials.size() << " models, "
+                                       << materials_.of_element.size() << " indices for " << n
+                                       << " elements");
     for (int m : materials_.of_element)
-      FE_CHECK(m == ElementMaterials::kRigid ||
-                   (m >= 0 && m < static_cast<int>(materials_.materials.size())),
-               "element material index " << m << " out of range");
+      PLISSE_CHECK(m == ElementMaterials::kRigid ||
+                       (m >= 0 && m < static_cast<int>(materials_.materials.size())),
+                   "element material index " << m << " out of range");
     nodes_.reserve(static_cast<std::size_t>(n) * Element::kNodes);
     geometry_.reserve(n);
     for (int e = 0; e < n; ++e) {

@@ -43,9 +43,9 @@ FieldIndexSets& FieldIndexSets::operator=(FieldIndexSets&& other) noexcept {
 
 FieldIndexSets make_field_index_sets(MPI_Comm comm, const DofMap& dofs, PetscInt first,
                                      PetscInt end) {
-  FE_CHECK(0 <= first && first <= end && end <= dofs.n_free(),
-           "owned equation range [" + std::to_string(first) + ", " + std::to_string(end) +
-               ") is not inside [0, " + std::to_string(dofs.n_free()) + ")");
+  PLISSE_CHECK(0 <= first && first <= end && end <= dofs.n_free(),
+               "owned equation range [" + std::to_string(first) + ", " + std::to_string(end) +
+                   ") is not inside [0, " + std::to_string(dofs.n_free()) + ")");
   std::vector<PetscInt> u, p;
   const int n_nodal = DofMap::kPerNode * dofs.n_nodes();
   for (int d = 0; d < dofs.n_dofs(); ++d) {
@@ -155,7 +155,8 @@ bool grow_factor_workspace(PC pc, const FactorMemory& memory) {
 }
 
 void configure_iterative(KSP ksp, IS u, IS p, const LinearSolverSettings& settings) {
-  FE_CHECK((u == nullptr) == (p == nullptr), "configure_iterative: give both index sets or none");
+  PLISSE_CHECK((u == nullptr) == (p == nullptr),
+               "configure_iterative: give both index sets or none");
   // Flexible GMRES: right preconditioning, so the tolerance applies to the true residual
   // ||K dx + R||, and the preconditioner may change between iterations (an inner Krylov solve
   // chosen with -fieldsplit_p_ksp_type gmres, say).

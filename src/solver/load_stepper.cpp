@@ -70,14 +70,15 @@ LoadStepper::LoadStepper(MixedModel& model, const SteppingSettings& settings)
 
 LoadStepper::~LoadStepper() = default;
 
-void LoadStepper::set_stability(const StabilityOptions& options) {
-  FE_CHECK(!options.branch_switch || options.check,
-           "branch switching needs the stability check (it switches where the check finds a new "
-           "instability)");
-  FE_CHECK(options.modes >= 1, "stability: modes = " << options.modes << ", must be >= 1");
-  FE_CHECK(!options.branch_switch || options.perturbation_mm > 0.0,
-           "branch switching needs a positive perturbation amplitude, got "
-               << options.perturbation_mm << " mm");
+void LoadStepper::set_stability(const StabilityCheckSettings& options) {
+  PLISSE_CHECK(
+      !options.branch_switch || options.check,
+      "branch switching needs the stability check (it switches where the check finds a new "
+      "instability)");
+  PLISSE_CHECK(options.modes >= 1, "stability: modes = " << options.modes << ", must be >= 1");
+  PLISSE_CHECK(!options.branch_switch || options.perturbation_mm > 0.0,
+               "branch switching needs a positive perturbation amplitude, got "
+                   << options.perturbation_mm << " mm");
   stability_ = options;
 }
 
@@ -155,7 +156,7 @@ std::string LoadStepper::report_instability(StepInfo& info, const Inertia& inert
   char line[320];
   const auto t0 = std::chrono::steady_clock::now();
   try {
-    EigenOptions eigen;
+    EigenSettings eigen;
     eigen.count = stability_.modes;
     const LogStage stage("Stability eigenmodes");
     info.modes = lowest_eigenmodes(model_, eigen);

@@ -21,7 +21,7 @@
 namespace plisse {
 
 /// What the stepper does about stability (the app maps solver.stability.* to it).
-struct StabilityOptions {
+struct StabilityCheckSettings {
   bool check = false;            ///< inertia of the tangent at every converged step
   bool branch_switch = false;    ///< at a new instability: perturb along mode 1 and re-solve
   int modes = 4;                 ///< eigenmodes computed at a new instability, >= 1
@@ -48,7 +48,7 @@ struct StepInfo {
   double reference_norm = 0.0;
   std::vector<double> residual_history;  ///< of the last Newton solve of the step
   int cutbacks = 0;                      ///< failed attempts before this step converged
-  // Stability (StabilityOptions::check; stability.md, S7):
+  // Stability (StabilityCheckSettings::check; stability.md, S7):
   int negative_pivots = -1;          ///< of the accepted state's tangent; -1: not checked
   int zero_pivots = 0;               ///< null pivots (a critical point)
   int expected_negative_pivots = 0;  ///< of a stable state (expected_negative_pivots)
@@ -92,7 +92,7 @@ class LoadStepper {
 
   /// Stability check and branch switching (off by default). Throws plisse::Error when
   /// branch_switch is set without check, modes < 1 or a non-positive amplitude.
-  void set_stability(const StabilityOptions& options);
+  void set_stability(const StabilityCheckSettings& options);
 
   /// Continue from `state` (the model must hold the matching converged state) instead of t = 0.
   void resume(StepperState state) { resume_ = std::move(state); }
@@ -163,7 +163,7 @@ class LoadStepper {
   std::optional<StepperState> resume_;
   StepperState current_;
   std::function<bool()> interrupt_;
-  StabilityOptions stability_;
+  StabilityCheckSettings stability_;
   std::unique_ptr<InertiaCheck> inertia_;
   bool told_symmetric_part_ = false;
   int attempt_reused_ = 0;          ///< reused solves of the current solve_step, all passes

@@ -104,9 +104,9 @@ MixedModel::MixedModel(const Mesh& mesh, ElementMaterials materials,
                        std::vector<ConstrainedComponent> constraints,
                        std::vector<std::unique_ptr<ModelTerm>> terms, ElementFamily family)
     : mesh_(mesh), family_(family), constraints_(std::move(constraints)), terms_(std::move(terms)) {
-  FE_CHECK(mesh.order() == mesh_order_of(family),
-           "the " << to_string(family) << " element needs a mesh of order " << mesh_order_of(family)
-                  << ", this one has order " << mesh.order());
+  PLISSE_CHECK(mesh.order() == mesh_order_of(family),
+               "the " << to_string(family) << " element needs a mesh of order "
+                      << mesh_order_of(family) << ", this one has order " << mesh.order());
   pressure_weight_ = pressure_weight_of(mesh, materials);
   if (family == ElementFamily::mini) {
     elements_ = std::make_unique<ElementAssembly<MiniElement>>(mesh, std::move(materials));
@@ -164,9 +164,9 @@ void MixedModel::set_time(double t) {
 }
 
 void MixedModel::set_external_force(std::vector<double> force, Ramp ramp) {
-  FE_CHECK(force.size() == state_.size(), "external force has " << force.size()
-                                                                << " entries, the model "
-                                                                << state_.size() << " dofs");
+  PLISSE_CHECK(force.size() == state_.size(), "external force has " << force.size()
+                                                                    << " entries, the model "
+                                                                    << state_.size() << " dofs");
   external_force_ = std::move(force);
   external_ramp_ = ramp;
 }
@@ -249,10 +249,10 @@ MixedModel::Snapshot MixedModel::snapshot() const {
 void MixedModel::restore(const Snapshot& s) {
   const std::size_t n_internal =
       visit_elements([](const auto& e) { return e.n_internal_values(); });
-  FE_CHECK(s.state.size() == state_.size() && s.bubbles.size() == n_internal &&
-               s.term_states.size() == terms_.size(),
-           "the checkpoint does not fit this model (" << s.state.size() << " values for "
-                                                      << state_.size() << " dofs)");
+  PLISSE_CHECK(s.state.size() == state_.size() && s.bubbles.size() == n_internal &&
+                   s.term_states.size() == terms_.size(),
+               "the checkpoint does not fit this model (" << s.state.size() << " values for "
+                                                          << state_.size() << " dofs)");
   state_ = s.state;
   visit_elements([&](auto& e) { e.restore(s.bubbles); });
   for (size_t k = 0; k < terms_.size(); ++k) terms_[k]->load_state(s.term_states[k]);
@@ -268,10 +268,10 @@ void MixedModel::continue_from(std::span<const double> state, std::span<const do
   const std::size_t nodal = static_cast<std::size_t>(DofMap::kPerNode) * mesh_.n_nodes();
   const std::size_t n_internal =
       visit_elements([](const auto& e) { return e.n_internal_values(); });
-  FE_CHECK(state.size() >= nodal && internal.size() == n_internal,
-           "the earlier run's state does not fit this model ("
-               << state.size() << " values for " << nodal << " nodal values, " << internal.size()
-               << " internal for " << n_internal << ")");
+  PLISSE_CHECK(state.size() >= nodal && internal.size() == n_internal,
+               "the earlier run's state does not fit this model ("
+                   << state.size() << " values for " << nodal << " nodal values, "
+                   << internal.size() << " internal for " << n_internal << ")");
   std::copy_n(state.begin(), nodal, state_.begin());
   visit_elements([&](auto& e) { e.restore(internal); });
   set_time(time_);
@@ -387,7 +387,7 @@ double MixedModel::strain_energy() const {
 BodyAverages MixedModel::averages() const { return averages(element_fields()); }
 
 BodyAverages MixedModel::averages(const std::vector<ElementFields>& fields) const {
-  FE_CHECK(
+  PLISSE_CHECK(
       fields.size() == static_cast<std::size_t>(mesh_.n_tets()),
       "averages: " << fields.size() << " element fields for " << mesh_.n_tets() << " elements");
   BodyAverages avg;

@@ -33,11 +33,11 @@ std::vector<int> partition_here(const std::vector<int>& start, const std::vector
   const int status =
       METIS_PartGraphKway(&n, &constraints, xadj.data(), adjncy.data(), vertex_weights.data(),
                           nullptr, nullptr, &n_parts, nullptr, nullptr, options, &cut, part.data());
-  FE_CHECK(status == METIS_OK, "METIS_PartGraphKway failed (status " << status << ")");
+  PLISSE_CHECK(status == METIS_OK, "METIS_PartGraphKway failed (status " << status << ")");
   std::vector<int> out(part.begin(), part.end());
   for (idx_t v = 0; v < n; ++v)
-    FE_CHECK(out[v] >= 0 && out[v] < parts,
-             "the partitioner put node " << v << " into part " << out[v] << " of " << parts);
+    PLISSE_CHECK(out[v] >= 0 && out[v] < parts,
+                 "the partitioner put node " << v << " into part " << out[v] << " of " << parts);
   return out;
 }
 
@@ -45,10 +45,10 @@ std::vector<int> partition_here(const std::vector<int>& start, const std::vector
 
 std::vector<int> partition_graph(const std::vector<int>& start, const std::vector<int>& adjacency,
                                  const std::vector<int>& weights, int parts, MPI_Comm comm) {
-  FE_CHECK(
+  PLISSE_CHECK(
       !start.empty() && weights.size() + 1 == start.size(),
       "partition_graph: " << weights.size() << " weights for " << start.size() - 1 << " vertices");
-  FE_CHECK(parts >= 1, "partition_graph: " << parts << " parts");
+  PLISSE_CHECK(parts >= 1, "partition_graph: " << parts << " parts");
   const int n = static_cast<int>(weights.size());
   if (parts == 1) return std::vector<int>(n, 0);
   int rank = 0;

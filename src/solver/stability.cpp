@@ -77,10 +77,10 @@ Inertia InertiaCheck::compute() {
     pattern_version_ = model_.pattern_version();
   }
   const AssemblyStatus status = model_.assemble_tangent(K_);
-  FE_CHECK(status.ok,
-           "stability check: the tangent cannot be assembled at the converged state "
-           "(element "
-               << status.worst_element << ", min J " << status.min_J << ")");
+  PLISSE_CHECK(status.ok,
+               "stability check: the tangent cannot be assembled at the converged state "
+               "(element "
+                   << status.worst_element << ", min J " << status.min_J << ")");
   Mat A = symmetric_operator();
   assembly_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   Mat F = nullptr;
@@ -110,9 +110,9 @@ Inertia InertiaCheck::compute() {
     if (!grow_factor_workspace(pc_, memory)) break;
     configured_ = false;  // the new factor needs its settings again
   }
-  FE_CHECK(error == MAT_FACTOR_NOERROR,
-           "stability check: the LDL^T factorisation of the tangent failed (MatFactorError "
-               << static_cast<int>(error) << ")");
+  PLISSE_CHECK(error == MAT_FACTOR_NOERROR,
+               "stability check: the LDL^T factorisation of the tangent failed (MatFactorError "
+                   << static_cast<int>(error) << ")");
   PetscInt negative = 0, zero = 0, positive = 0;
   PLISSE_PETSC(MatGetInertia(F, &negative, &zero, &positive));
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

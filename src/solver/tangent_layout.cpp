@@ -83,8 +83,8 @@ void TangentLayout::set_rows(const NodeGraph& graph, const std::vector<int>& nod
   for (const auto& [row, col] : extra_entries) ++length[row - first_equation];
   row_start_.assign(n_rows + 1, 0);
   for (int r = 0; r < n_rows; ++r) {
-    FE_CHECK(row_start_[r] + length[r] <= std::numeric_limits<int>::max(),
-             "the tangent has more nonzeros than 32-bit positions hold");
+    PLISSE_CHECK(row_start_[r] + length[r] <= std::numeric_limits<int>::max(),
+                 "the tangent has more nonzeros than 32-bit positions hold");
     row_start_[r + 1] = row_start_[r] + length[r];
   }
   // Column equations, sorted within each row (node runs in node order; global unknowns last).
@@ -223,10 +223,10 @@ void TangentLayout::TermSink::add(std::span<const int> rows, std::span<const int
       const int col = dofs.equation(cols[j]);
       if (col < 0) continue;
       const PetscInt* at = std::lower_bound(begin, end, static_cast<PetscInt>(col));
-      FE_CHECK(at != end && *at == col,
-               "a model term adds the tangent entry ("
-                   << rows[i] << ", " << cols[j]
-                   << ") outside the couplings it declares (ModelTerm::add_couplings)");
+      PLISSE_CHECK(at != end && *at == col,
+                   "a model term adds the tangent entry ("
+                       << rows[i] << ", " << cols[j]
+                       << ") outside the couplings it declares (ModelTerm::add_couplings)");
       values_[at - ja] += values[i * cols.size() + j];
     }
   }

@@ -26,9 +26,9 @@
 #include <thread>
 #include <vector>
 
-#include "io/history_writer.hpp"
-#include "io/json_file.hpp"
-#include "io/vtu_reader.hpp"
+#include "output/history_writer.hpp"
+#include "output/json_file.hpp"
+#include "output/vtu_reader.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <string>
 
-#include "io/json_file.hpp"
+#include "output/json_file.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {

@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "io/history_writer.hpp"
+#include "output/history_writer.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {

@@ -14,9 +14,9 @@
 #include <thread>
 #include <vector>
 
-#include "io/history_writer.hpp"
-#include "io/json_file.hpp"
-#include "io/pvd_writer.hpp"
+#include "output/history_writer.hpp"
+#include "output/json_file.hpp"
+#include "output/pvd_writer.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {

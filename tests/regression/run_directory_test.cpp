@@ -4,7 +4,7 @@
 // locked while a run or `plisse wrinkles` uses it, so a second process is refused, and the lock
 // goes with its holder, also after SIGKILL; history.csv and log.txt grow by appending, and a run
 // killed at any moment leaves them whole, line for line.
-#include "io/run_directory.hpp"
+#include "output/run_directory.hpp"
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -22,10 +22,10 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "io/history_writer.hpp"
-#include "io/json_file.hpp"
-#include "io/pvd_writer.hpp"
-#include "io/vtu_reader.hpp"
+#include "output/history_writer.hpp"
+#include "output/json_file.hpp"
+#include "output/pvd_writer.hpp"
+#include "output/vtu_reader.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {

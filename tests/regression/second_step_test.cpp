@@ -16,7 +16,7 @@
 #include <string>
 #include <tuple>
 
-#include "io/history_writer.hpp"
+#include "output/history_writer.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {

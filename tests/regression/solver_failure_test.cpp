@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/history_writer.hpp"
-#include "io/json_file.hpp"
-#include "io/vtu_reader.hpp"
+#include "output/history_writer.hpp"
+#include "output/json_file.hpp"
+#include "output/vtu_reader.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {

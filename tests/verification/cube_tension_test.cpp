@@ -15,10 +15,10 @@
 
 #include "core/error.hpp"
 #include "core/types.hpp"
-#include "io/history_writer.hpp"
-#include "io/json_file.hpp"
-#include "io/run_directory.hpp"
-#include "io/vtu_reader.hpp"
+#include "output/history_writer.hpp"
+#include "output/json_file.hpp"
+#include "output/run_directory.hpp"
+#include "output/vtu_reader.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {

@@ -59,7 +59,7 @@ std::vector<Mat3d> stress_field(const Shell& s, const std::function<Mat3d(int, i
 }
 
 TensionField run(const Shell& s, const std::vector<Mat3d>& sigma, const std::vector<double>& J = {},
-                 const TensionFieldOptions& o = {}, const std::vector<Vec3d>& u = {}) {
+                 const TensionFieldSettings& o = {}, const std::vector<Vec3d>& u = {}) {
   const std::vector<Vec3d> zero(s.mesh.nodes.size(), Vec3d::Zero());
   return compute_tension_field(s.mesh.nodes, s.mesh.tets, s.outer, s.column, u.empty() ? zero : u,
                                sigma, J, o);
@@ -99,7 +99,7 @@ TEST(TensionField, UniformStatesEverywhere) {
     const Vec3d er = triangle_centroid(s, t).normalized();
     return Mat3d(5.0 * er * er.transpose());
   });
-  TensionFieldOptions o;
+  TensionFieldSettings o;
   o.tolerance = 0.1;  // the in-plane leak of 5 e_r e_r is 5 (angle n, e_r)^2 ~ 5 (h/R)^2 / 3 < 0.1
   EXPECT_EQ(run(s, normal_only, {}, o).n_triangles, (std::array<int, 3>{0, 0, n_tri()}));
 }
@@ -185,7 +185,7 @@ TEST(TensionField, AStatedToleranceIsUsed) {
   const Shell& s = shell();
   const auto sigma = stress_field(
       s, [&](int t, int) { return membrane_stress(triangle_centroid(s, t), 1.0, 0.8); });
-  TensionFieldOptions o;
+  TensionFieldSettings o;
   o.tolerance = 0.9;  // sigma_2 ~ 0.8 <= 0.9 < sigma_1 ~ 1: wrinkled by this criterion
   const TensionField tf = run(s, sigma, {}, o);
   EXPECT_EQ(tf.tolerance, 0.9);

@@ -54,8 +54,8 @@ std::function<Vec3d(const Vec3d&)> radial_wrinkles(const CylindricalFrame& frame
   };
 }
 
-WrinkleOptions options_for(std::vector<double> latitudes) {
-  WrinkleOptions o;
+WrinkleMeasureSettings options_for(std::vector<double> latitudes) {
+  WrinkleMeasureSettings o;
   o.rings.latitudes_deg = std::move(latitudes);
   o.thickness = kThickness;
   return o;
@@ -169,7 +169,7 @@ TEST(WrinkleRings, OtherAxesAndAnOffsetCentre) {
   for (int axis : {0, 2}) {
     const CylindricalFrame frame(axis, c);
     const auto u = displacement(mesh, radial_wrinkles(frame, A, 6, 1.0, 25.0 * kDeg));
-    WrinkleOptions o = options_for({25.0});
+    WrinkleMeasureSettings o = options_for({25.0});
     o.rings.axis = axis;
     o.rings.center = c;
     const WrinkleReport r = evaluate_wrinkles(mesh, u, o);
@@ -255,7 +255,7 @@ TEST(WrinkleRings, ReferenceFacetsAreWrinklesOnlyWhenNotSubtracted) {
   // micrometres, far below any physical threshold but far above round-off. (Not at the equator:
   // the generator puts nodes and edges exactly on it, so that ring has no chords.)
   const Mesh& mesh = shell(Symmetry::full);
-  WrinkleOptions o = options_for({20.0});
+  WrinkleMeasureSettings o = options_for({20.0});
   o.rings.subtract_reference = false;
   const WrinkleReport r =
       evaluate_wrinkles(mesh, std::vector<Vec3d>(mesh.nodes.size(), Vec3d::Zero()), o);
@@ -268,7 +268,7 @@ TEST(WrinkleRings, GlobalOvalisationIsNotAWrinkle) {
   const CylindricalFrame frame(1, Vec3d::Zero());
   const double A = 0.5;  // ovalisation 2A = 1 mm = the thickness
   const auto u = displacement(mesh, radial_wrinkles(frame, A, 2, 0.2, 0.0));
-  WrinkleOptions o = options_for({0.0});
+  WrinkleMeasureSettings o = options_for({0.0});
   const WrinkleReport r = evaluate_wrinkles(mesh, u, o);
   // The m = 2 part is removed; what is left is its interpolation error, A (2 dtheta)^2 / 8 ~
   // 1e-3 A, and it is far below the threshold 0.1 t.
@@ -439,7 +439,7 @@ TEST(WrinkleCriterion, SmallWrinklesOnALargeOvalAreTheDocumentedLimit) {
   const Mesh& mesh = shell(Symmetry::full);
   const CylindricalFrame frame(1, Vec3d::Zero());
   const RingShape oval = [](double t) { return kOuter + 1.0 * std::cos(2 * t); };
-  WrinkleOptions o = options_for({0.0});
+  WrinkleMeasureSettings o = options_for({0.0});
   const auto u8 = shaped(mesh, oval, radial_wrinkles(frame, 0.1, 8, 0.3, 0.0));
   RingMetrics r = evaluate_wrinkles(mesh, u8, o).rings[0];
   EXPECT_EQ(r.decision, RingDecision::global_shape);
@@ -619,7 +619,7 @@ TEST(WrinkleRings, WrinkledFlagComparesWithTheThicknessFraction) {
   const Mesh& mesh = shell(Symmetry::quarter);
   const CylindricalFrame frame(1, Vec3d::Zero());
   const auto u = displacement(mesh, radial_wrinkles(frame, 0.02, 8, 0.0, 0.0));
-  WrinkleOptions o = options_for({0.0});
+  WrinkleMeasureSettings o = options_for({0.0});
   o.threshold_fraction = 0.03;  // 0.03 mm < amplitude ~ 0.04 mm
   EXPECT_TRUE(evaluate_wrinkles(mesh, u, o).wrinkled);
   o.threshold_fraction = 0.05;  // 0.05 mm > amplitude
@@ -673,23 +673,23 @@ TEST(WrinkleRings, AirbagEquatorRing) {
 TEST(WrinkleRings, InvalidOptionsAreErrors) {
   const Mesh& mesh = shell(Symmetry::octant);
   const std::vector<Vec3d> u(mesh.nodes.size(), Vec3d::Zero());
-  const auto fails = [&](const std::function<void(WrinkleOptions&)>& change) {
-    WrinkleOptions o = options_for({30.0});
+  const auto fails = [&](const std::function<void(WrinkleMeasureSettings&)>& change) {
+    WrinkleMeasureSettings o = options_for({30.0});
     change(o);
     EXPECT_THROW(evaluate_wrinkles(mesh, u, o), Error);
   };
-  fails([](WrinkleOptions& o) { o.rings.axis = 3; });
-  fails([](WrinkleOptions& o) { o.rings.axis = -1; });
-  fails([](WrinkleOptions& o) { o.rings.latitudes_deg = {90.0}; });
-  fails([](WrinkleOptions& o) { o.rings.latitudes_deg = {-90.0}; });
-  fails([](WrinkleOptions& o) { o.rings.latitudes_deg = {std::nan("")}; });
-  fails([](WrinkleOptions& o) { o.rings.sector_deg = 60.0; });
-  fails([](WrinkleOptions& o) { o.rings.min_count = 0; });
-  fails([](WrinkleOptions& o) { o.rings.max_count = 2; });
-  fails([](WrinkleOptions& o) { o.rings.peak_ratio = 0.9; });
-  fails([](WrinkleOptions& o) { o.rings.peak_ratio = std::nan(""); });
-  fails([](WrinkleOptions& o) { o.thickness = 0.0; });
-  fails([](WrinkleOptions& o) { o.threshold_fraction = -1.0; });
+  fails([](WrinkleMeasureSettings& o) { o.rings.axis = 3; });
+  fails([](WrinkleMeasureSettings& o) { o.rings.axis = -1; });
+  fails([](WrinkleMeasureSettings& o) { o.rings.latitudes_deg = {90.0}; });
+  fails([](WrinkleMeasureSettings& o) { o.rings.latitudes_deg = {-90.0}; });
+  fails([](WrinkleMeasureSettings& o) { o.rings.latitudes_deg = {std::nan("")}; });
+  fails([](WrinkleMeasureSettings& o) { o.rings.sector_deg = 60.0; });
+  fails([](WrinkleMeasureSettings& o) { o.rings.min_count = 0; });
+  fails([](WrinkleMeasureSettings& o) { o.rings.max_count = 2; });
+  fails([](WrinkleMeasureSettings& o) { o.rings.peak_ratio = 0.9; });
+  fails([](WrinkleMeasureSettings& o) { o.rings.peak_ratio = std::nan(""); });
+  fails([](WrinkleMeasureSettings& o) { o.thickness = 0.0; });
+  fails([](WrinkleMeasureSettings& o) { o.threshold_fraction = -1.0; });
   EXPECT_THROW(evaluate_wrinkles(mesh, std::vector<Vec3d>(3), options_for({0.0})), Error);
   EXPECT_THROW(evaluate_wrinkles(mesh, u, options_for({0.0}), "no-such-tag"), Error);
 }

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "app/model_builder.hpp"
-#include "io/case.hpp"
+#include "case/case.hpp"
 
 namespace plisse {
 namespace {

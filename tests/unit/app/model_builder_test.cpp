@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "app/wrinkling.hpp"
-#include "io/case.hpp"
+#include "case/case.hpp"
 #include "material/fibre_reinforced.hpp"
 #include "mesh/generate.hpp"
 #include "mesh/gmsh_io.hpp"

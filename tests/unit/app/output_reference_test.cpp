@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
-#include "io/generated_blocks.hpp"
+#include "output/generated_blocks.hpp"
 
 namespace plisse::app {
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "io/checkpoint.hpp"
+#include "output/checkpoint.hpp"
 #include "unit/output/output_test_support.hpp"
 
 namespace plisse::app {

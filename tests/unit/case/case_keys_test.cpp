@@ -1,12 +1,11 @@
 // The key tables of docs/case-file.md are exactly what the case-file schema generates, and every
 // section has one.
-#include "io/case_keys.hpp"
-
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
 
+#include "case/keys.hpp"
 #include "core/error.hpp"
 
 namespace plisse {

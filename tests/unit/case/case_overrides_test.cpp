@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "case_test_util.hpp"
+#include "physics/die_contact_settings.hpp"
+#include "physics/pressure_load.hpp"
 
 namespace plisse {
 namespace {
@@ -29,20 +31,20 @@ TEST(CaseOverrides, ScalarNestedAndListValues) {
   EXPECT_EQ(c.mesh.generate->divisions, 3);
   EXPECT_EQ(c.material.params.at("c1"), 0.25);
   EXPECT_EQ(c.solver.newton.rtol, 1e-6);  // solver section created by the override
-  EXPECT_EQ(c.loads[0].value, 2e-3);
-  EXPECT_EQ(c.dies[0].displacement, Vec3d(0, -5, 0));
+  EXPECT_EQ(test::term_settings<PressureLoadSettings>(c, "loads", 0).value, 2e-3);
+  EXPECT_EQ(test::term_settings<DieSettings>(c, "dies", 0).displacement, Vec3d(0, -5, 0));
   EXPECT_EQ(c.output.wrinkles.rings_deg, (std::vector<double>{10, 20.5}));
   EXPECT_EQ(c.title, "a run from --set");
   // Overridden values are placed at --set; untouched ones keep their line.
   EXPECT_EQ(c.material.param_places.at("c1").file, "--set");
   EXPECT_EQ(c.material.param_places.at("c1").line, 0);
-  EXPECT_EQ(c.loads[0].surface.place.line, 4);
+  EXPECT_EQ(test::term_settings<PressureLoadSettings>(c, "loads", 0).surface.place.line, 4);
 }
 
 TEST(CaseOverrides, ListItemAndMapValuesAndOrder) {
   const Case c = parse({"dies[0].move.displacement[1]=-2", "solver.steps=5", "solver.steps=7",
                         "material={model: mooney-rivlin, c1: 0.1, c2: 0.02}"});
-  EXPECT_EQ(c.dies[0].displacement, Vec3d(0, -2, -1));
+  EXPECT_EQ(test::term_settings<DieSettings>(c, "dies", 0).displacement, Vec3d(0, -2, -1));
   EXPECT_EQ(c.solver.steps, 7);  // later overrides win
   EXPECT_EQ(c.material.model, "mooney-rivlin");
   EXPECT_EQ(c.material.params.at("c2"), 0.02);

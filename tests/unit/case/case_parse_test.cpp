@@ -5,8 +5,12 @@
 #include <fstream>
 #include <sstream>
 
+#include "case/case.hpp"
 #include "case_test_util.hpp"
-#include "io/case.hpp"
+#include "physics/body_force.hpp"
+#include "physics/cavity_settings.hpp"
+#include "physics/die_contact_settings.hpp"
+#include "physics/pressure_load.hpp"
 
 namespace plisse {
 namespace {
@@ -54,29 +58,33 @@ TEST(CaseParse, CompleteCaseHasEveryValue) {
   EXPECT_EQ(d.ramp.end, 0.5);
   EXPECT_EQ(d.place.line, 18);
 
-  ASSERT_EQ(c.loads.size(), 2u);
-  EXPECT_EQ(c.loads[0].type, LoadType::pressure);
-  EXPECT_EQ(c.loads[0].name, "push");
-  EXPECT_EQ(c.loads[0].surface.name, "right");
-  EXPECT_EQ(c.loads[0].value, -1.0e-3);
-  EXPECT_EQ(c.loads[0].ramp.start, 0.1);
-  EXPECT_EQ(c.loads[0].ramp.end, 0.9);
-  EXPECT_EQ(c.loads[1].type, LoadType::gravity);
-  EXPECT_EQ(c.loads[1].acceleration, Vec3d(0, -9810, 0));
-  EXPECT_EQ(c.loads[1].ramp.start, 0.0);
-  EXPECT_EQ(c.loads[1].ramp.end, 2.0);  // default end: solver.end_time
+  ASSERT_EQ(c.terms_in("loads").size(), 2u);
+  EXPECT_EQ(test::term(c, "loads", 0).kind->word, "pressure");
+  const auto& push = test::term_settings<PressureLoadSettings>(c, "loads", 0);
+  EXPECT_EQ(push.name, "push");
+  EXPECT_EQ(push.surface.name, "right");
+  EXPECT_EQ(push.value, -1.0e-3);
+  EXPECT_EQ(push.ramp.start, 0.1);
+  EXPECT_EQ(push.ramp.end, 0.9);
+  EXPECT_EQ(test::term(c, "loads", 1).kind->word, "gravity");
+  const auto& weight = test::term_settings<GravityLoadSettings>(c, "loads", 1);
+  EXPECT_EQ(weight.acceleration, Vec3d(0, -9810, 0));
+  EXPECT_EQ(weight.ramp.start, 0.0);
+  EXPECT_EQ(weight.ramp.end, 2.0);  // default end: solver.end_time
 
-  ASSERT_EQ(c.cavities.size(), 2u);
-  EXPECT_EQ(c.cavities[0].control, CavityControl::gas);
-  EXPECT_EQ(c.cavities[0].initial_pressure, 0.01);
-  EXPECT_EQ(c.cavities[0].mass_ratio, 2.0);
-  EXPECT_EQ(c.cavities[0].ambient_pressure, 0.1);
-  EXPECT_EQ(c.cavities[1].control, CavityControl::volume);
-  EXPECT_EQ(c.cavities[1].volume_ratio, 1.5);
-  EXPECT_EQ(c.cavities[1].surface.name, "front");
+  ASSERT_EQ(c.terms_in("cavities").size(), 2u);
+  const auto& gas = test::term_settings<Cavity>(c, "cavities", 0);
+  const auto& held = test::term_settings<Cavity>(c, "cavities", 1);
+  EXPECT_EQ(gas.control, CavityControl::gas);
+  EXPECT_EQ(gas.initial_pressure, 0.01);
+  EXPECT_EQ(gas.mass_ratio, 2.0);
+  EXPECT_EQ(gas.ambient_pressure, 0.1);
+  EXPECT_EQ(held.control, CavityControl::volume);
+  EXPECT_EQ(held.volume_ratio, 1.5);
+  EXPECT_EQ(held.surface.name, "front");
 
-  ASSERT_EQ(c.dies.size(), 3u);
-  const Die& punch = c.dies[0];
+  ASSERT_EQ(c.terms_in("dies").size(), 3u);
+  const auto& punch = test::term_settings<DieSettings>(c, "dies", 0);
   EXPECT_EQ(punch.shape, DieShape::sphere);
   EXPECT_EQ(punch.point, Vec3d(1, 1, 3));
   EXPECT_EQ(punch.radius, 0.5);
@@ -86,14 +94,14 @@ TEST(CaseParse, CompleteCaseHasEveryValue) {
   EXPECT_EQ(punch.ramp.end, 2.0);
   EXPECT_EQ(punch.penalty, 10.0);
   EXPECT_EQ(punch.tolerance, 1.0e-4);
-  const Die& floor = c.dies[1];
+  const auto& floor = test::term_settings<DieSettings>(c, "dies", 1);
   EXPECT_EQ(floor.shape, DieShape::plane);
   EXPECT_EQ(floor.normal, Vec3d(0, 0, 1));  // [0, 0, 2] normalised
   EXPECT_EQ(floor.contact, ContactKind::sticking);
   ASSERT_TRUE(floor.region.has_value());
   EXPECT_EQ(floor.region->name, "bottom");
   EXPECT_EQ(floor.displacement, Vec3d::Zero());
-  const Die& roller = c.dies[2];
+  const auto& roller = test::term_settings<DieSettings>(c, "dies", 2);
   EXPECT_EQ(roller.shape, DieShape::cylinder);
   EXPECT_NEAR((roller.axis - Vec3d(0.6, 0.8, 0)).norm(), 0.0, 1e-15);  // [3, 4, 0] / 5
   ASSERT_TRUE(roller.surface.has_value());
@@ -149,8 +157,7 @@ TEST(CaseParse, MinimalCaseTakesTheDocumentedDefaults) {
   EXPECT_TRUE(c.material.exact_incompressibility);
   EXPECT_EQ(c.material.bulk_modulus, 0.0);
   EXPECT_EQ(c.material.density, 0.0);
-  EXPECT_TRUE(c.boundary.empty() && c.loads.empty() && c.cavities.empty() && c.dies.empty() &&
-              c.probes.empty());
+  EXPECT_TRUE(c.boundary.empty() && c.terms.empty() && c.probes.empty());
   const SolverSettings s = c.solver;
   EXPECT_EQ(s.scheme, Scheme::total_lagrangian);
   EXPECT_EQ(s.end_time, 1.0);
@@ -191,14 +198,16 @@ TEST(CaseParse, RampsDefaultToTheWholeRun) {
                             "     move: {displacement: [0, 0, -1]}}\n"
                             "boundary: [{type: displacement, surface: top, value: [0, 0, 1]}]\n",
                         "case.yaml");
-  EXPECT_EQ(c.loads[0].ramp.start, 0.0);
-  EXPECT_EQ(c.loads[0].ramp.end, 3.5);
-  EXPECT_EQ(c.dies[0].ramp.start, 0.0);
-  EXPECT_EQ(c.dies[0].ramp.end, 3.5);
+  const auto& load = test::term_settings<PressureLoadSettings>(c, "loads", 0);
+  const auto& die = test::term_settings<DieSettings>(c, "dies", 0);
+  EXPECT_EQ(load.ramp.start, 0.0);
+  EXPECT_EQ(load.ramp.end, 3.5);
+  EXPECT_EQ(die.ramp.start, 0.0);
+  EXPECT_EQ(die.ramp.end, 3.5);
   EXPECT_EQ(c.boundary[0].ramp.end, 3.5);
-  EXPECT_EQ(c.dies[0].contact, ContactKind::frictionless);
-  EXPECT_EQ(c.dies[0].penalty, 0.0);
-  EXPECT_EQ(c.dies[0].tolerance, 1e-3);
+  EXPECT_EQ(die.contact, ContactKind::frictionless);
+  EXPECT_EQ(die.penalty, 0.0);
+  EXPECT_EQ(die.tolerance, 1e-3);
 }
 
 TEST(CaseParse, FlowAndBlockStylesGiveTheSameCase) {
@@ -318,8 +327,8 @@ TEST(CaseParse, DocumentedCompleteExampleIsValidAgainstItsMesh) {
   const Case c = parse_case_string(example, "docs/case-file.md");
   EXPECT_EQ(c.mesh.generate->kind, "spherical-shell");
   EXPECT_EQ(c.mesh.generate->symmetry, Symmetry::quarter);
-  EXPECT_EQ(c.dies[0].ramp.start, 0.2);
-  EXPECT_EQ(c.loads[0].ramp.end, 0.2);
+  EXPECT_EQ(test::term_settings<DieSettings>(c, "dies", 0).ramp.start, 0.2);
+  EXPECT_EQ(test::term_settings<PressureLoadSettings>(c, "loads", 0).ramp.end, 0.2);
   const Mesh mesh = load_case_mesh(c);
   EXPECT_NO_THROW(check_case_against_mesh(c, mesh));
 }

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "case/case.hpp"
 #include "core/error.hpp"
-#include "io/case.hpp"
 
 namespace plisse::test {
 
@@ -21,6 +21,23 @@ inline InputError case_error(const std::string& text,
   }
   ADD_FAILURE() << "expected an InputError for:\n" << text;
   return InputError({}, "(no error)");
+}
+
+/// Item `index` of the case's term section `section` ("loads"); fails the test when there is none.
+inline const TermEntry& term(const Case& c, const std::string& section, std::size_t index) {
+  const std::vector<const TermEntry*> entries = c.terms_in(section);
+  if (index >= entries.size()) {
+    ADD_FAILURE() << section << " has " << entries.size() << " items, not " << index + 1;
+    static const TermEntry none;
+    return none;
+  }
+  return *entries[index];
+}
+
+/// Its settings, as the kind's settings type S.
+template <class S>
+const S& term_settings(const Case& c, const std::string& section, std::size_t index) {
+  return term(c, section, index).as<S>();
 }
 
 /// A minimal valid case; tests append sections to it (lines 1-2).

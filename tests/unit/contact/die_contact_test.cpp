@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "app/model_builder.hpp"
-#include "io/case.hpp"
+#include "case/case.hpp"
 #include "mesh/generate.hpp"
 #include "physics/die_surface.hpp"
 #include "physics/surface.hpp"

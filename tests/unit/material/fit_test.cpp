@@ -1,5 +1,5 @@
 // The homogeneous tests and the least-squares fit (material/homogeneous_test.hpp,
-// material/material_fit.hpp, io/test_data_reader.hpp; docs/fit.md): nominal stresses against
+// material/material_fit.hpp, case/test_data_reader.hpp; docs/fit.md): nominal stresses against
 // closed forms, parameters recovered from data a model generated, the stability range against the
 // closed form of Mooney-Rivlin with c2 < 0, the data file's rules, and Treloar's data (1944) fitted
 // by four models whose errors fall in the order the literature reports.
@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "case/test_data_reader.hpp"
 #include "core/error.hpp"
-#include "io/test_data_reader.hpp"
 #include "material/material_fit.hpp"
 
 namespace plisse {

@@ -1,4 +1,4 @@
-#include "io/atomic_file.hpp"
+#include "output/atomic_file.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -8,7 +8,7 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "io/append_file.hpp"
+#include "output/append_file.hpp"
 #include "output_test_support.hpp"
 
 namespace plisse {

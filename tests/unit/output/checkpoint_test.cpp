@@ -1,6 +1,6 @@
 // checkpoint.bin: every field reads back bit for bit; damage, truncation and out-of-range values
 // are refused as bad input at --resume, naming what is wrong; the fingerprint says what changed.
-#include "io/checkpoint.hpp"
+#include "output/checkpoint.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <limits>
 
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
+#include "output/atomic_file.hpp"
 #include "output_test_support.hpp"
 
 namespace plisse {

@@ -1,4 +1,4 @@
-#include "io/history_writer.hpp"
+#include "output/history_writer.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -9,7 +9,7 @@
 #include <limits>
 
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
+#include "output/atomic_file.hpp"
 #include "output_test_support.hpp"
 
 namespace plisse {

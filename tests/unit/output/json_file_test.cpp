@@ -1,4 +1,4 @@
-#include "io/json_file.hpp"
+#include "output/json_file.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "io/pvd_writer.hpp"
+#include "output/pvd_writer.hpp"
 
 #include <gtest/gtest.h>
 

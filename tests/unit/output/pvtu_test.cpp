@@ -1,8 +1,8 @@
-// Parallel VTU output (io/pvtu_writer.hpp) and reading it back (io/vtu_reader.hpp): a box mesh
-// split into element sets, written as pieces + .pvtu, merged back bit for bit through global_node
-// by plisse and, independently, by Python (xml.etree + meshio, fixtures/read_pvtu.py); then every
-// input check and every error path of the reader (missing piece, "../" piece, conflicting shared
-// nodes, missing global_node, truncated or corrupted .pvtu).
+// Parallel VTU output (output/pvtu_writer.hpp) and reading it back (output/vtu_reader.hpp): a box
+// mesh split into element sets, written as pieces + .pvtu, merged back bit for bit through
+// global_node by plisse and, independently, by Python (xml.etree + meshio, fixtures/read_pvtu.py);
+// then every input check and every error path of the reader (missing piece, "../" piece,
+// conflicting shared nodes, missing global_node, truncated or corrupted .pvtu).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -15,9 +15,9 @@
 #include <set>
 
 #include "core/error.hpp"
-#include "io/pvtu_writer.hpp"
-#include "io/vtu_reader.hpp"
 #include "mesh/box_mesh.hpp"
+#include "output/pvtu_writer.hpp"
+#include "output/vtu_reader.hpp"
 #include "output_test_support.hpp"
 
 namespace plisse {

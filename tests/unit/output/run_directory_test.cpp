@@ -1,4 +1,4 @@
-#include "io/run_directory.hpp"
+#include "output/run_directory.hpp"
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -6,7 +6,7 @@
 #include <unistd.h>
 
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
+#include "output/atomic_file.hpp"
 #include "output_test_support.hpp"
 
 namespace plisse {

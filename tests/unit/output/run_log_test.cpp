@@ -1,4 +1,4 @@
-#include "io/run_log.hpp"
+#include "output/run_log.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>

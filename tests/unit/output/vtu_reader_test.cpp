@@ -1,8 +1,8 @@
-// VTU reader (io/vtu_reader.hpp): bit-exact round trip with write_vtu, raw or zlib-compressed, and
-// a plisse::Error (never a crash, a huge allocation or a read past the end) for missing fields,
+// VTU reader (output/vtu_reader.hpp): bit-exact round trip with write_vtu, raw or zlib-compressed,
+// and a plisse::Error (never a crash, a huge allocation or a read past the end) for missing fields,
 // foreign formats, truncated and corrupted files: every truncation length and every single-byte
 // corruption are tried, in both formats.
-#include "io/vtu_reader.hpp"
+#include "output/vtu_reader.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "io/vtu_writer.hpp"
+#include "output/vtu_writer.hpp"
 
 #include <gtest/gtest.h>
 

@@ -96,7 +96,7 @@ Eigen::VectorXd lumped_volume(const MixedModel& model) {
 }
 
 /// Checks lowest_eigenmodes at the model's current state against the condensed dense problem.
-void expect_matches_dense_reference(MixedModel& model, const EigenOptions& options,
+void expect_matches_dense_reference(MixedModel& model, const EigenSettings& options,
                                     int expected_kernel) {
   const Eigen::MatrixXd K = dense_tangent(model);
   ASSERT_LT((K - K.transpose()).norm(), 1e-12 * K.norm()) << "the test assumes a symmetric tangent";
@@ -224,7 +224,7 @@ TEST(Eigenmodes, PrestressedCubeMatchesCondensedDenseProblem) {
   NewtonSolver newton(model, settings);
   ASSERT_TRUE(newton.solve().converged);
   model.save_converged();
-  expect_matches_dense_reference(model, EigenOptions{4, 0.0, 1e-12}, /*expected_kernel=*/1);
+  expect_matches_dense_reference(model, EigenSettings{4, 0.0, 1e-12}, /*expected_kernel=*/1);
 }
 
 TEST(Eigenmodes, TargetInsideTheSpectrumNearlyIncompressibleRandomState) {
@@ -238,7 +238,7 @@ TEST(Eigenmodes, TargetInsideTheSpectrumNearlyIncompressibleRandomState) {
       model.state()[d] = (d % 4 == 3 ? 0.1 : 0.02) * uniform(random);
   // A target between eigenvalues (not at the bottom of the spectrum) exercises the selection
   // "nearest the target" and the ascending order of the result.
-  expect_matches_dense_reference(model, EigenOptions{5, 20.0, 1e-12}, /*expected_kernel=*/0);
+  expect_matches_dense_reference(model, EigenSettings{5, 20.0, 1e-12}, /*expected_kernel=*/0);
 }
 
 TEST(Eigenmodes, UnsymmetricTangentOfAFollowerPressure) {
@@ -284,7 +284,7 @@ TEST(Eigenmodes, UnsymmetricTangentOfAFollowerPressure) {
   ASSERT_EQ(dense.info(), Eigen::Success);
   std::vector<std::complex<double>> reference(
       dense.eigenvalues().data(), dense.eigenvalues().data() + dense.eigenvalues().size());
-  const EigenOptions options{4, 0.0, 1e-12};
+  const EigenSettings options{4, 0.0, 1e-12};
   std::sort(reference.begin(), reference.end(), [&](auto a, auto b) {
     return std::abs(a - options.target) < std::abs(b - options.target);
   });
@@ -317,7 +317,7 @@ TEST(Eigenmodes, NonConvergenceIsASolverError) {
   PetscSession::insert_options("-eps_max_it 2");
   std::string message;
   try {
-    lowest_eigenmodes(model, EigenOptions{4, 0.0, 1e-30});
+    lowest_eigenmodes(model, EigenSettings{4, 0.0, 1e-30});
   } catch (const SolverError& e) {
     message = e.what();
   }
@@ -329,7 +329,7 @@ TEST(Eigenmodes, NonConvergenceIsASolverError) {
 TEST(Eigenmodes, RefusesMoreModesThanDofs) {
   const Mesh mesh = make_box_mesh(Vec3d(1.0, 1.0, 1.0), {1, 1, 1});
   MixedModel model(mesh, make_material("neo-hookean", {{"c1", 0.5}}), 0.0, {});
-  EXPECT_THROW(lowest_eigenmodes(model, EigenOptions{model.n_free() + 1, 0.0, 1e-8}), Error);
+  EXPECT_THROW(lowest_eigenmodes(model, EigenSettings{model.n_free() + 1, 0.0, 1e-8}), Error);
 }
 
 }  // namespace

@@ -24,7 +24,7 @@
 #include <string>
 #include <utility>
 
-#include "io/history_writer.hpp"
+#include "output/history_writer.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {

@@ -18,7 +18,7 @@
 #include <cstdio>
 #include <string>
 
-#include "io/history_writer.hpp"
+#include "output/history_writer.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {

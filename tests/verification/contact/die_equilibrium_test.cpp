@@ -12,8 +12,8 @@
 #include <sstream>
 #include <vector>
 
-#include "io/case.hpp"
-#include "io/history_writer.hpp"
+#include "case/case.hpp"
+#include "output/history_writer.hpp"
 #include "physics/follower_pressure.hpp"
 #include "physics/surface.hpp"
 #include "support/run_plisse.hpp"

@@ -13,7 +13,7 @@
 #include <cmath>
 #include <string>
 
-#include "io/history_writer.hpp"
+#include "output/history_writer.hpp"
 #include "support/run_case.hpp"
 
 namespace plisse {

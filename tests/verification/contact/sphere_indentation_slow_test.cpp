@@ -12,8 +12,8 @@
 #include <cmath>
 #include <string>
 
-#include "io/history_writer.hpp"
-#include "io/json_file.hpp"
+#include "output/history_writer.hpp"
+#include "output/json_file.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {

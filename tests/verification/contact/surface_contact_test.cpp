@@ -12,9 +12,9 @@
 #include <cmath>
 #include <string>
 
-#include "io/history_writer.hpp"
-#include "io/pvd_writer.hpp"
-#include "io/vtu_reader.hpp"
+#include "output/history_writer.hpp"
+#include "output/pvd_writer.hpp"
+#include "output/vtu_reader.hpp"
 #include "support/run_case.hpp"
 
 namespace plisse {

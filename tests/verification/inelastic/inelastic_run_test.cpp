@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "io/history_writer.hpp"
+#include "output/history_writer.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {

@@ -18,9 +18,9 @@
 #include <string>
 
 #include "core/types.hpp"
-#include "io/history_writer.hpp"
-#include "io/run_directory.hpp"
-#include "io/vtu_reader.hpp"
+#include "output/history_writer.hpp"
+#include "output/run_directory.hpp"
+#include "output/vtu_reader.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {

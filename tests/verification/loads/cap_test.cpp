@@ -13,7 +13,7 @@
 #include <string>
 
 #include "core/types.hpp"
-#include "io/history_writer.hpp"
+#include "output/history_writer.hpp"
 #include "support/run_case.hpp"
 
 namespace plisse {

@@ -11,10 +11,10 @@
 #include <fstream>
 #include <string>
 
-#include "io/history_writer.hpp"
 #include "mesh/box_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "mesh/second_order.hpp"
+#include "output/history_writer.hpp"
 #include "support/run_case.hpp"
 
 namespace plisse {

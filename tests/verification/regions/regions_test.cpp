@@ -14,12 +14,12 @@
 #include <string>
 #include <vector>
 
-#include "io/history_writer.hpp"
-#include "io/json_file.hpp"
 #include "material/homogeneous_test.hpp"
 #include "material/registry.hpp"
 #include "mesh/box_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
+#include "output/history_writer.hpp"
+#include "output/json_file.hpp"
 #include "support/run_case.hpp"
 
 namespace plisse {

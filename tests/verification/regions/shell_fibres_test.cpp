@@ -22,9 +22,9 @@
 #include <utility>
 
 #include "core/types.hpp"
-#include "io/history_writer.hpp"
 #include "material/homogeneous_test.hpp"
 #include "material/registry.hpp"
+#include "output/history_writer.hpp"
 #include "support/run_case.hpp"
 
 namespace plisse {

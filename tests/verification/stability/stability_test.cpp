@@ -49,8 +49,8 @@ SteppingSettings fixed_steps(int steps) {
   return settings;
 }
 
-StabilityOptions check_only() {
-  StabilityOptions o;
+StabilityCheckSettings check_only() {
+  StabilityCheckSettings o;
   o.check = true;
   o.modes = 2;
   return o;
@@ -170,7 +170,7 @@ TEST(LoadStepperStability, RefusesInconsistentOptions) {
   spec.width = 1.0;
   test::ModelOnMesh m = test::clamped_strip(spec);
   LoadStepper stepper(*m.model, SteppingSettings{});
-  StabilityOptions o;
+  StabilityCheckSettings o;
   o.branch_switch = true;
   o.perturbation_mm = 0.01;
   EXPECT_THROW(stepper.set_stability(o), Error);  // branch switching without the check
@@ -191,7 +191,7 @@ TEST(LoadStepperStability, StepsAreNotCheckedByDefault) {
   spec.width = 1.0;
   spec.shortening = 0.01;
   test::ModelOnMesh m = test::clamped_strip(spec);
-  const test::SteppedRun run = test::run_steps(*m.model, fixed_steps(2), StabilityOptions{});
+  const test::SteppedRun run = test::run_steps(*m.model, fixed_steps(2), StabilityCheckSettings{});
   ASSERT_EQ(run.steps.size(), 2u);
   for (const StepInfo& s : run.steps) {
     EXPECT_EQ(s.negative_pivots, -1);
@@ -401,7 +401,7 @@ TEST(BranchSwitching, ClampedStripDeflectsLaterallyAfterTheSwitch) {
   test::StripSpec spec;
   test::ModelOnMesh m = test::clamped_strip(spec);
   const int stable = expected_negative_pivots(*m.model);
-  StabilityOptions options = check_only();
+  StabilityCheckSettings options = check_only();
   options.branch_switch = true;
   options.perturbation_mm = 0.01 * spec.thickness;
   SteppingSettings settings = fixed_steps(40);

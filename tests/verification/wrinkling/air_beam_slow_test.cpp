@@ -40,12 +40,12 @@
 #include <string>
 #include <vector>
 
-#include "io/history_writer.hpp"
-#include "io/pvd_writer.hpp"
-#include "io/run_directory.hpp"
-#include "io/vtu_reader.hpp"
 #include "mesh/generate.hpp"
 #include "mesh/tube_mesh.hpp"
+#include "output/history_writer.hpp"
+#include "output/pvd_writer.hpp"
+#include "output/run_directory.hpp"
+#include "output/vtu_reader.hpp"
 #include "support/run_case.hpp"
 #include "support/run_plisse.hpp"
 #include "support/validation_claim.hpp"

@@ -33,7 +33,7 @@
 #include <iostream>
 #include <string>
 
-#include "io/history_writer.hpp"
+#include "output/history_writer.hpp"
 #include "support/run_case.hpp"
 #include "support/run_plisse.hpp"
 #include "support/validation_claim.hpp"

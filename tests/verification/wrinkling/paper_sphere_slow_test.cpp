@@ -26,10 +26,10 @@
 #include <iostream>
 #include <string>
 
-#include "io/history_writer.hpp"
-#include "io/pvd_writer.hpp"
-#include "io/vtu_reader.hpp"
 #include "mesh/generate.hpp"
+#include "output/history_writer.hpp"
+#include "output/pvd_writer.hpp"
+#include "output/vtu_reader.hpp"
 #include "support/run_case.hpp"
 #include "support/run_plisse.hpp"
 #include "support/validation_claim.hpp"

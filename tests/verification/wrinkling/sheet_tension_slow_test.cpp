@@ -39,10 +39,10 @@
 #include <string>
 #include <vector>
 
-#include "io/pvd_writer.hpp"
-#include "io/run_directory.hpp"
-#include "io/vtu_reader.hpp"
 #include "mesh/generate.hpp"
+#include "output/pvd_writer.hpp"
+#include "output/run_directory.hpp"
+#include "output/vtu_reader.hpp"
 #include "support/run_plisse.hpp"
 #include "support/validation_claim.hpp"
 #include "verification/wrinkling/sheet_profile.hpp"

@@ -30,7 +30,7 @@
 #include <string>
 #include <vector>
 
-#include "io/history_writer.hpp"
+#include "output/history_writer.hpp"
 #include "support/run_case.hpp"
 #include "support/run_plisse.hpp"
 #include "support/validation_claim.hpp"

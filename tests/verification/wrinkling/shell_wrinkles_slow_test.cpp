@@ -34,8 +34,8 @@
 #include <string>
 #include <vector>
 
-#include "io/history_writer.hpp"
-#include "io/json_file.hpp"
+#include "output/history_writer.hpp"
+#include "output/json_file.hpp"
 #include "support/run_case.hpp"
 #include "support/run_plisse.hpp"
 #include "support/validation_claim.hpp"

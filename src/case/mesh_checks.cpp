@@ -1,0 +1,310 @@
+// The checks of a case that need its mesh: loading or generating the mesh with errors placed at
+// the case's `mesh:` keys, surface tags named by the case, planar symmetry surfaces, mesh quality.
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "analysis/point_location.hpp"
+#include "analysis/wall_thickness.hpp"
+#include "case/case.hpp"
+#include "mesh/gmsh_io.hpp"
+#include "mesh/quality.hpp"
+#include "mesh/topology.hpp"
+#include "schema/field.hpp"
+
+namespace plisse {
+namespace {
+
+using schema::format_number;
+
+/// Symmetry surfaces may deviate from their best-fit plane by this fraction of their mean edge
+/// length: far below any discretisation of a curved surface (a sphere of radius R meshed with
+/// edges h has sagitta ~ h^2 / (8 R), i.e. 1e-3 h only when h < 0.008 R, and its nodes span the
+/// whole cap), far above the round-off of coordinates written to a .msh file.
+constexpr double kPlanarityTolerance = 1e-3;
+
+std::string mesh_name(const Case& c) {
+  if (c.mesh.file) return "mesh file '" + *c.mesh.file + "'";
+  return "the generated " + (c.mesh.generate ? c.mesh.generate->kind : std::string()) + " mesh";
+}
+
+/// The surface or the volume tags of a mesh, as the messages name them.
+struct TagKind {
+  const std::map<std::string, std::vector<int>> Mesh::*tags;
+  const char* kind;   ///< "surface"
+  const char* items;  ///< "triangles"
+  int dimension;      ///< of the Gmsh physical groups
+};
+constexpr TagKind kSurfaceTags{&Mesh::surface_tags, "surface", "triangles", 2};
+constexpr TagKind kVolumeTags{&Mesh::volume_tags, "volume", "tetrahedra", 3};
+
+/// "available surface tags: a (12 triangles), ...".
+std::string tag_list(const Mesh& mesh, const TagKind& kind) {
+  const auto& tags = mesh.*kind.tags;
+  if (tags.empty())
+    return std::string("the mesh has no ") + kind.kind +
+           " tags (Gmsh physical groups of dimension " + std::to_string(kind.dimension) + ")";
+  std::string out = std::string("available ") + kind.kind + " tags: ";
+  bool first = true;
+  for (const auto& [name, members] : tags) {
+    out +=
+        (first ? "" : ", ") + name + " (" + std::to_string(members.size()) + " " + kind.items + ")";
+    first = false;
+  }
+  return out;
+}
+
+/// The tag `name` of `kind` exists in the mesh and is not empty; else an InputError at `place`
+/// that lists the tags there are (and the nearest name to a typo).
+void check_tag(const Case& c, const Mesh& mesh, const TagKind& kind, const std::string& name,
+               const InputPlace& place) {
+  const auto& tags = mesh.*kind.tags;
+  const auto tag = tags.find(name);
+  if (tag == tags.end()) {
+    std::vector<std::string> names;
+    for (const auto& [known, members] : tags) names.push_back(known);
+    std::string rule = std::string("no ") + kind.kind + " tag '" + name + "' in " + mesh_name(c);
+    if (const auto guess = schema::closest_match(name, names))
+      rule += " (did you mean '" + *guess + "'?)";
+    throw InputError(place, rule + "; " + tag_list(mesh, kind));
+  }
+  if (tag->second.empty())
+    throw InputError(place, std::string(kind.kind) + " tag '" + name + "' of " + mesh_name(c) +
+                                " has no " + kind.items + "; " + tag_list(mesh, kind));
+}
+
+void check_surface(const Case& c, const Mesh& mesh, const SurfaceRef& ref) {
+  check_tag(c, mesh, kSurfaceTags, ref.name, ref.place);
+}
+
+/// Every region names a non-empty volume tag or a box holding tetrahedra, no tetrahedron is in
+/// two regions, and something is left to deform.
+void check_regions(const Case& c, const Mesh& mesh) {
+  std::vector<int> region_of(mesh.tets.size(), -1);
+  for (std::size_t k = 0; k < c.regions.size(); ++k) {
+    const Region& r = c.regions[k];
+    if (!r.box) check_tag(c, mesh, kVolumeTags, r.volume, r.volume_place);
+    const std::vector<int> tets = region_tets(r, mesh);
+    if (tets.empty())
+      throw InputError(r.box_place,
+                       "no tetrahedron of " + mesh_name(c) + " has its centroid in the box");
+    for (int t : tets) {
+      int& owner = region_of[static_cast<std::size_t>(t)];
+      if (owner >= 0)
+        throw InputError(r.box ? r.box_place : r.volume_place,
+                         "region '" + r.label() + "' shares tetrahedron " + std::to_string(t) +
+                             " with region '" + c.regions[static_cast<std::size_t>(owner)].label() +
+                             "': a tetrahedron may be in one region only");
+      owner = static_cast<int>(k);
+    }
+  }
+  const bool deforms = std::any_of(region_of.begin(), region_of.end(), [&](int k) {
+    return k < 0 || !c.regions[static_cast<std::size_t>(k)].rigid;
+  });
+  if (!deforms)
+    throw InputError(c.regions.back().place,
+                     "every tetrahedron is in a rigid region: nothing is left to deform");
+}
+
+/// Largest distance of the tag's nodes from their least-squares plane, and the tolerance for it.
+std::pair<double, double> planarity(const Mesh& mesh, const std::vector<int>& triangles) {
+  std::set<int> nodes;
+  double edge_sum = 0.0;
+  for (int t : triangles) {
+    const auto& tri = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      nodes.insert(tri[k]);
+      edge_sum += (mesh.nodes[tri[(k + 1) % 3]] - mesh.nodes[tri[k]]).norm();
+    }
+  }
+  const double mean_edge = edge_sum / (3.0 * static_cast<double>(triangles.size()));
+  Vec3d centroid = Vec3d::Zero();
+  for (int v : nodes) centroid += mesh.nodes[v];
+  centroid /= static_cast<double>(nodes.size());
+  Mat3d covariance = Mat3d::Zero();
+  for (int v : nodes) {
+    const Vec3d d = mesh.nodes[v] - centroid;
+    covariance += d * d.transpose();
+  }
+  // The best-fit plane's normal is the eigenvector of the smallest eigenvalue (ascending order).
+  const Eigen::SelfAdjointEigenSolver<Mat3d> eigen(covariance);
+  const Vec3d normal = eigen.eigenvectors().col(0);
+  double deviation = 0.0;
+  for (int v : nodes)
+    deviation = std::max(deviation, std::abs(normal.dot(mesh.nodes[v] - centroid)));
+  return {deviation, kPlanarityTolerance * mean_edge};
+}
+
+/// "[x, y, z]" with the case file's number format.
+std::string vector_text(const Vec3d& v) {
+  std::string out = "[";  // appended, not "[" + ...: g++ 12 warns falsely (-Wrestrict) there
+  for (int i = 0; i < 3; ++i) out += format_number(v[i]) + (i < 2 ? ", " : "]");
+  return out;
+}
+
+/// A probe reports at a material point of the body: one farther from the mesh than the longest
+/// edge of the element nearest to it lies off the body (a wrong coordinate or unit). A probe of
+/// the thickness needs a wall.
+void check_probe(const Case& c, const Mesh& mesh, const Probe& probe) {
+  const std::string what = "probe '" + probe.name + "'";
+  const MeshPoint at = locate_point(mesh, probe.point);
+  const auto& t = mesh.tets[static_cast<std::size_t>(at.element)];
+  double longest = 0.0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b)
+      longest = std::max(longest, (mesh.nodes[static_cast<std::size_t>(t[a])] -
+                                   mesh.nodes[static_cast<std::size_t>(t[b])])
+                                      .norm());
+  if (at.distance > longest)
+    throw InputError(probe.point_place,
+                     what + ": the point " + vector_text(probe.point) + " is " +
+                         format_number(at.distance) + " mm from the body (its nearest point " +
+                         vector_text(at.position) + "), farther than the longest edge of the " +
+                         "element there (" + format_number(longest) +
+                         " mm): give a point on the body");
+  const bool thickness = std::find(probe.fields.begin(), probe.fields.end(),
+                                   ProbeField::thickness) != probe.fields.end();
+  if (thickness && !(c.mesh.wall_thickness() && wall_faces(mesh)))
+    throw InputError(
+        probe.fields_place.line > 0 ? probe.fields_place : probe.place,
+        what + ": the thickness is measured across a wall: " +
+            (c.mesh.wall_thickness()
+                 ? std::string("the mesh needs surface tags 'inner' and 'outer' (or 'bottom' "
+                               "and 'top')")
+                 : std::string(c.mesh.file ? "give the wall thickness as 'mesh.thickness' [mm]"
+                                           : "the generated cube has no wall")));
+}
+
+/// Imperfections, branch switching and the wrinkle threshold are relative to the wall thickness: a
+/// case that uses them needs a shell mesh or a file mesh with `thickness:`.
+void check_wall_thickness(const Case& c) {
+  if (c.mesh.wall_thickness()) return;
+  const std::string why = c.mesh.file ? "give the wall thickness as 'mesh.thickness' [mm]"
+                                      : "the generated cube has no wall";
+  const StabilitySettings& st = c.solver.stability;
+  if (st.imperfection > 0.0)
+    throw InputError(st.place,
+                     "the imperfection amplitude is relative to the wall thickness: " + why);
+  if (st.branch_switch)
+    throw InputError(st.place,
+                     "the branch-switching perturbation is relative to the wall thickness: " + why);
+  if (c.output.wrinkles.enabled())
+    throw InputError(c.output.wrinkles.place,
+                     "the wrinkle threshold is relative to the wall thickness: " + why);
+}
+
+}  // namespace
+
+std::vector<int> region_tets(const Region& region, const Mesh& mesh) {
+  if (!region.box) {
+    const auto tag = mesh.volume_tags.find(region.volume);
+    if (tag == mesh.volume_tags.end()) return {};
+    std::vector<int> tets = tag->second;
+    std::sort(tets.begin(), tets.end());
+    tets.erase(std::unique(tets.begin(), tets.end()), tets.end());
+    return tets;
+  }
+  const auto& [lower, upper] = *region.box;
+  std::vector<int> tets;
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    Vec3d centroid = Vec3d::Zero();
+    for (int v : mesh.tets[t]) centroid += mesh.nodes[static_cast<std::size_t>(v)] / 4.0;
+    if ((centroid.array() >= lower.array()).all() && (centroid.array() <= upper.array()).all())
+      tets.push_back(static_cast<int>(t));
+  }
+  return tets;
+}
+
+Mesh load_case_mesh(const Case& c) {
+  namespace fs = std::filesystem;
+  if (c.mesh.file) {
+    const std::string& path = *c.mesh.file;
+    std::error_code ec;
+    const std::string note = c.directory.empty()
+                                 ? std::string()
+                                 : " (relative paths are read from the case file's directory)";
+    if (!fs::exists(path, ec))
+      throw InputError(c.mesh.file_place, "mesh file '" + path + "' does not exist" + note);
+    if (fs::is_directory(path, ec))
+      throw InputError(c.mesh.file_place, "'" + path + "' is a directory, not a mesh file");
+    try {
+      return read_gmsh(path);
+    } catch (const InputError& e) {
+      // The reader names the mesh file (the error is in it, not in the YAML); add the case key
+      // that chose it.
+      if (!e.place().key.empty()) throw;
+      InputPlace place = e.place();
+      place.key = c.mesh.file_place.key;
+      throw InputError(place, e.rule());
+    }
+  }
+  if (!c.mesh.generate) throw InputError(c.mesh.place, "no mesh file and nothing to generate");
+  try {
+    // The element chooses the order of a generated mesh unless `mesh.order` says otherwise (a
+    // mismatch is then reported by the model builder, naming both keys' meaning).
+    MeshGenerationSpec spec = *c.mesh.generate;
+    if (!c.mesh.option_places.count("order")) spec.order = mesh_order_of(c.element);
+    return generate_mesh(spec);
+  } catch (const InputError& e) {
+    // The generator names the option ("mesh.thickness") but not the case file: place the error at
+    // that key's line, or at `mesh:` when the option took its default.
+    if (!e.place().file.empty()) throw;
+    InputPlace place = c.mesh.place;
+    const std::string& key = e.place().key;
+    const std::string prefix = "mesh.";
+    const std::string option = key.rfind(prefix, 0) == 0 ? key.substr(prefix.size()) : key;
+    if (const auto it = c.mesh.option_places.find(option); it != c.mesh.option_places.end())
+      place = it->second;
+    place.key = key.empty() ? c.mesh.place.key : prefix + option;
+    throw InputError(place, e.rule());
+  } catch (const SolverError&) {
+    throw;
+  } catch (const Error& e) {
+    // The generators are deterministic functions of the options: when one fails on options that
+    // passed validate_mesh_spec (a shell of radius 1e-300 mm, 64 layers in a 1e-12 mm wall), the
+    // options are what cannot be meshed. This was exit status 1, an "internal" error.
+    throw InputError(c.mesh.place,
+                     std::string("cannot generate this mesh from these options: ") + e.what());
+  }
+}
+
+void check_case_against_mesh(const Case& c, const Mesh& mesh) {
+  check_regions(c, mesh);
+  for (const BoundaryCondition& bc : c.boundary) check_surface(c, mesh, bc.surface);
+  const TermMeshCheck terms{mesh, [&](const SurfaceRef& ref) { check_surface(c, mesh, ref); }};
+  for (const TermSection& section : term_sections())
+    for (const TermEntry* entry : c.terms_in(section.key)) entry->kind->check_mesh(*entry, terms);
+  for (const Probe& probe : c.probes) check_probe(c, mesh, probe);
+  check_wall_thickness(c);
+  if (c.output.wrinkles.enabled()) {
+    const WrinkleSettings& w = c.output.wrinkles;
+    check_surface(c, mesh, {w.surface, w.surface_place.line > 0 ? w.surface_place : w.place});
+  }
+
+  for (const BoundaryCondition& bc : c.boundary) {
+    if (bc.type != BoundaryType::symmetry) continue;
+    const auto [deviation, tolerance] = planarity(mesh, mesh.surface_tags.at(bc.surface.name));
+    if (deviation > tolerance)
+      throw InputError(bc.surface.place,
+                       "symmetry surface '" + bc.surface.name +
+                           "' is not planar: its nodes lie up to " + format_number(deviation) +
+                           " mm from their best-fit plane (tolerance " + format_number(tolerance) +
+                           " mm = " + format_number(kPlanarityTolerance) + " x mean edge length)");
+  }
+
+  const MeshReport report = check_mesh(mesh);
+  if (!report.ok()) {
+    const InputPlace place =
+        c.mesh.file ? InputPlace{*c.mesh.file, 0, 0, c.mesh.file_place.key} : c.mesh.place;
+    const std::size_t shown = std::min<std::size_t>(report.errors.size(), 5);
+    std::string rule = (c.mesh.file ? "the mesh" : mesh_name(c)) + " fails its check: ";
+    for (std::size_t i = 0; i < shown; ++i) rule += (i ? "; " : "") + report.errors[i];
+    if (report.errors.size() > shown)
+      rule += "; and " + std::to_string(report.errors.size() - shown) + " more";
+    throw InputError(place, rule);
+  }
+}
+
+}  // namespace plisse

@@ -1,0 +1,39 @@
+#pragma once
+/// The tables of the case file's sections, one file each (internal to src/case; case.cpp puts them
+/// in the top-level table): `mesh` (mesh_section.cpp), `material` (material_section.cpp),
+/// `regions`, `boundary`, `probes`, `output` (their *_section.cpp) and `solver`
+/// (solver_section.hpp). The term sections (`loads`, `cavities`, `caps`, `dies`, `contacts`)
+/// belong to the term kinds of src/terms. Each schema is built anew on each call; the case's
+/// table keeps one.
+#include <string>
+
+#include "case/case.hpp"
+#include "schema/field.hpp"
+#include "schema/table.hpp"
+
+namespace plisse::case_detail {
+
+/// `mesh:`. Its variant is which of `file` and `generate` is given; the generators' options come
+/// from the mesh registry (mesh_kinds) and are read by read_mesh.
+schema::Schema<MeshSection> mesh_schema();
+/// Reads `mesh:` with the options of its generator.
+MeshSection read_mesh(const schema::Field& field, schema::ReadContext& context);
+/// The table of the generators' options (docs/case-file.md, block "mesh-options").
+std::string mesh_options_markdown();
+
+/// `material:`. Its variant is the model; the model's parameters come from the material registry
+/// and are read by read_material, which also checks them.
+schema::Schema<MaterialSection> material_schema();
+/// Reads `material:` (or a region's) with the parameters of its model.
+MaterialSection read_material(const schema::Field& field, schema::ReadContext& context);
+
+/// `regions:` items.
+schema::Schema<Region> region_schema();
+/// `boundary:` items.
+schema::Schema<BoundaryCondition> boundary_schema();
+/// `probes:` items.
+schema::Schema<Probe> probe_schema();
+/// `output:`, with its `wrinkles` table.
+schema::Schema<OutputSettings> output_schema();
+
+}  // namespace plisse::case_detail

@@ -1,0 +1,38 @@
+// `loads:` of type gravity: a body force from the materials' densities (physics/body_force.hpp).
+#include "physics/body_force.hpp"
+#include "terms/keys.hpp"
+#include "terms/term_kind.hpp"
+
+namespace plisse {
+
+TermKind gravity_load_kind() {
+  using namespace term_keys;
+  using S = GravityLoadSettings;
+  TermDefinition<S> d;
+  d.section = "loads";
+  d.word = "gravity";
+  d.summary = "a body force";
+  Schema<S>& s = d.keys;
+  s.place(&S::place, false);
+  load_name_key(s, &S::name);
+  s.vec3("acceleration", &S::acceleration, "mm/s²", "e.g. `[0, -9810, 0]`").required();
+  load_ramp_key(s, &S::ramp);
+  s.rule("a gravity load needs `material.density` > 0, or a region's",
+         [](const FieldMap& m, const S&, const ReadContext& context) {
+           if (!(context.density > 0.0))
+             m.require("type").fail(
+                 "a gravity load needs material.density > 0, or a region's material with a "
+                 "density (got " +
+                 schema::format_number(context.density) + ")");
+         });
+  d.check_mesh = [](const S&, const TermMeshCheck&) {};
+  d.make = [](const S& load, const TermContext& c) -> std::unique_ptr<ModelTerm> {
+    return std::make_unique<BodyForce>(c.mesh, load.name, load.acceleration, load.ramp,
+                                       c.element_densities());
+  };
+  d.ramps = [](const S& load) { return std::vector<RampUse>{{load.ramp, "load '" + load.name + "'"}}; };
+  // A body force writes no history column of its own (its total is the weight of the body).
+  return make_term_kind(std::move(d));
+}
+
+}  // namespace plisse

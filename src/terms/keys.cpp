@@ -1,0 +1,98 @@
+#include "terms/keys.hpp"
+
+#include <cmath>
+
+namespace plisse::term_keys {
+
+using schema::format_number;
+
+const std::string load_curve_help =
+    "; a list of points [[t, factor], ...] is a load curve instead: the factor joins them "
+    "linearly and holds the first and last values outside (load, hold, unload, cycles)";
+
+SurfaceRef surface_ref(const Field& f) {
+  const std::string name = f.text();
+  if (name.empty()) f.fail("a surface tag name must not be empty");
+  return {name, f.place()};
+}
+
+Vec3d non_zero_vector(const Field& f) {
+  const Vec3d v = f.vec3();
+  if (v.isZero(0.0)) f.fail("must not be the zero vector (leave the load out instead)");
+  return v;
+}
+
+Vec3d unit_vector(const Field& f) {
+  const Vec3d v = f.vec3();
+  const double norm = v.norm();
+  if (!(norm > 0.0) || !std::isfinite(norm))
+    f.fail("must be a non-zero direction (its length is 0)");
+  return v / norm;
+}
+
+Ramp read_ramp(const Field& f) {
+  if (f.node().IsSequence() && f.node().size() > 0 && f.node()[0].IsSequence()) {
+    Ramp ramp;
+    const std::vector<Field> points = f.items();
+    if (points.size() < 2)
+      f.fail("a load curve needs at least 2 points [t, factor], got " + f.describe());
+    for (const Field& point : points) {
+      if (!point.node().IsSequence() || point.node().size() != 2)
+        point.fail("expected a point [t, factor] of 2 numbers, got " + point.describe());
+      const std::vector<double> p = point.reals();
+      if (p[0] < 0.0) point.fail("the time must be >= 0 (got " + format_number(p[0]) + ")");
+      if (!ramp.table.empty() && !(p[0] > ramp.table.back()[0]))
+        point.fail("the times must increase: " + format_number(p[0]) + " follows " +
+                   format_number(ramp.table.back()[0]));
+      ramp.table.push_back({p[0], p[1]});
+    }
+    ramp.start = ramp.table.front()[0];
+    ramp.end = ramp.table.back()[0];
+    return ramp;
+  }
+  if (!f.node().IsSequence() || f.node().size() != 2)
+    f.fail(
+        "expected a list of 2 numbers [start, end] in s, or a load curve [[t, factor], ...], "
+        "got " +
+        f.describe());
+  const std::vector<double> t = f.reals();
+  if (t[0] < 0.0) f.fail("ramp start must be >= 0 (got " + format_number(t[0]) + ")");
+  if (!(t[1] > t[0]))
+    f.fail("ramp end must be > start (got [" + format_number(t[0]) + ", " + format_number(t[1]) +
+           "])");
+  return {t[0], t[1]};
+}
+
+std::array<std::optional<double>, 3> optional_components(const Field& f, const std::string& what) {
+  if (!f.node().IsSequence() || f.node().size() != 3)
+    f.fail("expected a list of 3 " + what + ", ~ for a free component, got " + f.describe());
+  std::array<std::optional<double>, 3> out;
+  const std::vector<Field> items = f.items();
+  for (int k = 0; k < 3; ++k)
+    if (!items[k].is_null()) out[k] = items[k].real();
+  return out;
+}
+
+std::vector<OutputEntry> load_force_outputs() {
+  return {
+      {"load_x:<load>", "N", "`loads[]` of types traction, point-force, follower-traction",
+       "x component of the load's total force on the body at t (likewise `load_y`, `load_z`)"},
+      {"load_y:<load>", "N", "as `load_x:<load>`", "y component of the load's total force"},
+      {"load_z:<load>", "N", "as `load_x:<load>`", "z component of the load's total force"},
+      {"work:<load>", "mJ", "as `load_x:<load>`",
+       "work done by the load on the body since t = 0 (N mm = mJ; trapezoidal in the steps, exact "
+       "while the load is held)"},
+  };
+}
+
+std::vector<OutputEntry> contact_state_outputs() {
+  return {
+      {"contact_nodes:<die>", "–", "`dies[]`, `contacts[]`",
+       "surface nodes in contact (or glued, for a sticking die) at the converged state"},
+      {"penetration:<die>", "mm", "`dies[]`, `contacts[]`",
+       "largest penetration of a node into the die (or the other surface); at most the contact "
+       "`tolerance` once converged"},
+  };
+}
+
+}  // namespace plisse::term_keys

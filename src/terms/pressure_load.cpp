@@ -1,0 +1,46 @@
+// `loads:` of type pressure: a follower pressure on a surface (physics/pressure_load.hpp).
+#include "physics/pressure_load.hpp"
+#include "terms/keys.hpp"
+#include "terms/term_kind.hpp"
+
+namespace plisse {
+
+TermKind pressure_load_kind() {
+  using namespace term_keys;
+  using S = PressureLoadSettings;
+  TermDefinition<S> d;
+  d.section = "loads";
+  d.word = "pressure";
+  d.summary = "a follower pressure on a surface";
+  Schema<S>& s = d.keys;
+  s.place(&S::place, false);
+  load_name_key(s, &S::name);
+  surface_key(s, "surface", &S::surface, "the loaded surface").required();
+  s.real("value", &S::value, Range::any(), "MPa",
+         "follower pressure at the end of the ramp; positive pushes against the outward normal "
+         "of the body (inflates from `inner`)")
+      .required();
+  load_ramp_key(s, &S::ramp);
+  d.check_mesh = [](const S& load, const TermMeshCheck& check) { check.surface(load.surface); };
+  d.make = [](const S& load, const TermContext& c) -> std::unique_ptr<ModelTerm> {
+    return std::make_unique<PressureLoad>(c.mesh, load.name, load.surface.name, load.value,
+                                          load.ramp, c.constraints, c.mirrors);
+  };
+  d.ramps = [](const S& load) { return std::vector<RampUse>{{load.ramp, "load '" + load.name + "'"}}; };
+  d.history = {
+      {"pressure:<load>", "MPa", "`loads[]` of type pressure",
+       "the pressure at t, `value` times its ramp; positive pushes against the body's outward "
+       "normal (on a balloon's `inner` surface it inflates)"},
+      {"volume:<load>", "mm³",
+       "a pressure load whose surface is closed, or closed by the planes "
+       "x = 0, y = 0, z = 0",
+       "the volume the loaded surface encloses in the deformed state (of the modelled part), "
+       "positive; with `pressure:<load>` the pressure–volume curve"},
+      {"full_volume:<load>", "mm³", "as `volume:<load>`, on a surface closed by mirror planes",
+       "the whole body's: `volume:<load>` times 2 for each mirror plane (`symmetry` condition) "
+       "that closes it"},
+  };
+  return make_term_kind(std::move(d));
+}
+
+}  // namespace plisse
