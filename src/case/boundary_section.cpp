@@ -1,21 +1,10 @@
 // The `boundary:` section: Dirichlet conditions on tagged surfaces.
 #include "case/sections.hpp"
-
 #include "schema/field.hpp"
 #include "schema/table.hpp"
 #include "terms/keys.hpp"
 
 namespace plisse::case_detail {
-
-using schema::Choices;
-using schema::Field;
-using schema::FieldMap;
-using schema::format_number;
-using schema::join;
-using schema::KeyDoc;
-using schema::ReadContext;
-using schema::Schema;
-using namespace term_keys;
 namespace {
 
 const Choices<BoundaryType> kBoundaryTypes{{"fixed", BoundaryType::fixed},

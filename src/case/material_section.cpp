@@ -1,23 +1,12 @@
 // The `material:` section: the model of the material registry and its parameters, the
 // compressibility, the density, the fibre frame and the inelastic laws.
 #include "case/sections.hpp"
-
 #include "material/registry.hpp"
 #include "schema/field.hpp"
 #include "schema/table.hpp"
 #include "terms/keys.hpp"
 
 namespace plisse::case_detail {
-
-using schema::Choices;
-using schema::Field;
-using schema::FieldMap;
-using schema::format_number;
-using schema::join;
-using schema::KeyDoc;
-using schema::ReadContext;
-using schema::Schema;
-using namespace term_keys;
 namespace {
 
 const Choices<bool> kIncompressibility{{"exact", true}, {"nearly", false}};

@@ -1,24 +1,13 @@
 // The `mesh:` section: a mesh file or a generator of the mesh registry with its options.
-#include "case/sections.hpp"
-
 #include <filesystem>
 
+#include "case/sections.hpp"
 #include "mesh/generate.hpp"
 #include "schema/field.hpp"
 #include "schema/table.hpp"
 #include "terms/keys.hpp"
 
 namespace plisse::case_detail {
-
-using schema::Choices;
-using schema::Field;
-using schema::FieldMap;
-using schema::format_number;
-using schema::join;
-using schema::KeyDoc;
-using schema::ReadContext;
-using schema::Schema;
-using namespace term_keys;
 namespace {
 
 std::vector<std::string> kind_names() {

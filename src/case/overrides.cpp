@@ -4,8 +4,8 @@
 #include <cstddef>
 #include <utility>
 
-#include "core/error.hpp"
 #include "case/yaml_text.hpp"
+#include "core/error.hpp"
 
 namespace plisse::case_detail {
 namespace {

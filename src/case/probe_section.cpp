@@ -1,21 +1,10 @@
 // The `probes:` section: named material points reported at every step.
 #include "case/sections.hpp"
-
 #include "schema/field.hpp"
 #include "schema/table.hpp"
 #include "terms/keys.hpp"
 
 namespace plisse::case_detail {
-
-using schema::Choices;
-using schema::Field;
-using schema::FieldMap;
-using schema::format_number;
-using schema::join;
-using schema::KeyDoc;
-using schema::ReadContext;
-using schema::Schema;
-using namespace term_keys;
 
 /// `probes:` items: named points reported as displacement columns.
 const Choices<ProbeField> kProbeFields{{"displacement", ProbeField::displacement},

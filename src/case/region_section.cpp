@@ -1,21 +1,10 @@
 // The `regions:` section: volume tags or boxes with a material of their own, or rigid.
 #include "case/sections.hpp"
-
 #include "schema/field.hpp"
 #include "schema/table.hpp"
 #include "terms/keys.hpp"
 
 namespace plisse::case_detail {
-
-using schema::Choices;
-using schema::Field;
-using schema::FieldMap;
-using schema::format_number;
-using schema::join;
-using schema::KeyDoc;
-using schema::ReadContext;
-using schema::Schema;
-using namespace term_keys;
 
 /// `regions:` items: a volume tag with a material of its own, or rigid.
 Schema<Region> region_schema() {

@@ -10,8 +10,20 @@
 #include "case/case.hpp"
 #include "schema/field.hpp"
 #include "schema/table.hpp"
+#include "terms/keys.hpp"
 
 namespace plisse::case_detail {
+
+// What every section's file reads and declares its rows with.
+using schema::Choices;
+using schema::Field;
+using schema::FieldMap;
+using schema::format_number;
+using schema::join;
+using schema::KeyDoc;
+using schema::ReadContext;
+using schema::Schema;
+using namespace term_keys;
 
 /// `mesh:`. Its variant is which of `file` and `generate` is given; the generators' options come
 /// from the mesh registry (mesh_kinds) and are read by read_mesh.

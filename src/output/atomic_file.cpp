@@ -59,7 +59,7 @@ int write_all(int fd, const char* data, std::size_t n_bytes) {
 
 AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
   PLISSE_CHECK(!target_.empty() && target_.has_filename(),
-           "cannot write '" << target_.string() << "': not a file name");
+               "cannot write '" << target_.string() << "': not a file name");
   temporary_ = temporary_name(target_);
   fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd_ < 0) {
@@ -213,7 +213,7 @@ std::string read_file(const std::filesystem::path& path, std::uintmax_t max_byte
 
 AtomicPath::AtomicPath(std::filesystem::path target) : target_(std::move(target)) {
   PLISSE_CHECK(!target_.empty() && target_.has_filename(),
-           "cannot write '" << target_.string() << "': not a file name");
+               "cannot write '" << target_.string() << "': not a file name");
   temporary_ = temporary_name(target_, target_.extension().string());
 }
 

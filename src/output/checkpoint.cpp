@@ -8,8 +8,8 @@
 #include "core/error.hpp"
 #include "core/fnv1a.hpp"
 #include "core/input_file.hpp"
-#include "output/atomic_file.hpp"
 #include "mesh/topology.hpp"
+#include "output/atomic_file.hpp"
 
 namespace plisse {
 namespace {

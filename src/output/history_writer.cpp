@@ -63,9 +63,9 @@ HistoryWriter::HistoryWriter(std::filesystem::path path,
   for (const std::string& name : table_.columns) {
     const char* problem = column_name_problem(name);
     PLISSE_CHECK(problem == nullptr,
-             "history '" << path_.string() << "': column name '" << name << "' " << problem);
+                 "history '" << path_.string() << "': column name '" << name << "' " << problem);
     PLISSE_CHECK(seen.insert(name).second,
-             "history '" << path_.string() << "': column '" << name << "' appears twice");
+                 "history '" << path_.string() << "': column '" << name << "' appears twice");
   }
   rewrite();
 }
@@ -91,8 +91,8 @@ HistoryWriter HistoryWriter::reopen(std::filesystem::path path) {
 
 void HistoryWriter::add_row(std::span<const double> values) {
   PLISSE_CHECK(values.size() == n_columns(), "history '" << path_.string() << "': row has "
-                                                     << values.size() << " values for "
-                                                     << n_columns() << " columns");
+                                                         << values.size() << " values for "
+                                                         << n_columns() << " columns");
   std::string text;
   append_row(text, values);
   if (!file_) file_.emplace(path_, false);

@@ -12,8 +12,8 @@
 namespace plisse {
 
 /// Writes `value` to `path`, indented by 2 spaces, ending with a newline, atomically
-/// (output/atomic_file.hpp). NaN and +-infinity become null (see file comment). Strings must be valid
-/// UTF-8 (plisse::Error otherwise). Throws plisse::Error naming the path on a write failure.
+/// (output/atomic_file.hpp). NaN and +-infinity become null (see file comment). Strings must be
+/// valid UTF-8 (plisse::Error otherwise). Throws plisse::Error naming the path on a write failure.
 void write_json_file(const std::filesystem::path& path, const nlohmann::json& value);
 
 /// Parses the JSON file at `path`. Throws plisse::InputError (file = path, with the line and

@@ -20,11 +20,11 @@ std::string shortest(double value) {
 
 void check_entry(const std::filesystem::path& pvd, double time, const std::string& file) {
   PLISSE_CHECK(std::isfinite(time),
-           "collection '" << pvd.string() << "': time of '" << file << "' is not finite");
+               "collection '" << pvd.string() << "': time of '" << file << "' is not finite");
   PLISSE_CHECK(!file.empty(), "collection '" << pvd.string() << "': empty file name");
   PLISSE_CHECK(std::filesystem::path(file).is_relative(),
-           "collection '" << pvd.string() << "': file '" << file
-                          << "' must be relative to the collection's directory");
+               "collection '" << pvd.string() << "': file '" << file
+                              << "' must be relative to the collection's directory");
 }
 
 /// Value of attribute `name` inside one start tag `tag` (our own writer's layout: name="...").

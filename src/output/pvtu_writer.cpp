@@ -16,12 +16,13 @@ void check_declared_fields(const std::filesystem::path& path,
                            const std::vector<VtuArrayInfo>& fields, const char* kind) {
   std::set<std::string> names;
   for (const VtuArrayInfo& f : fields) {
-    PLISSE_CHECK(!f.name.empty(), "PVTU '" << path.string() << "': a " << kind << " field has no name");
+    PLISSE_CHECK(!f.name.empty(),
+                 "PVTU '" << path.string() << "': a " << kind << " field has no name");
     PLISSE_CHECK(std::none_of(f.name.begin(), f.name.end(), is_control),
-             "PVTU '" << path.string() << "': " << kind << " field name '" << f.name
-                      << "' contains a control character");
+                 "PVTU '" << path.string() << "': " << kind << " field name '" << f.name
+                          << "' contains a control character");
     PLISSE_CHECK(names.insert(f.name).second, "PVTU '" << path.string() << "': two " << kind
-                                                   << " fields are named '" << f.name << "'");
+                                                       << " fields are named '" << f.name << "'");
     PLISSE_CHECK(
         f.n_components == 1 || f.n_components == 3 || f.n_components == 6 || f.n_components == 9,
         "PVTU '" << path.string() << "': " << kind << " field '" << f.name << "' has "
@@ -67,7 +68,7 @@ void write_pvtu(const std::filesystem::path& path, const std::vector<std::string
   for (const std::string& piece : piece_files) {
     const std::string problem = pvtu_piece_source_problem(piece);
     PLISSE_CHECK(problem.empty(),
-             "PVTU '" << path.string() << "': piece '" << piece << "': " << problem);
+                 "PVTU '" << path.string() << "': piece '" << piece << "': " << problem);
     PLISSE_CHECK(
         sources.insert(std::filesystem::path(piece).lexically_normal().generic_string()).second,
         "PVTU '" << path.string() << "': piece '" << piece << "' is listed twice");
@@ -75,9 +76,9 @@ void write_pvtu(const std::filesystem::path& path, const std::vector<std::string
   check_declared_fields(path, point_fields, "point");
   check_declared_fields(path, cell_fields, "cell");
   for (const VtuArrayInfo& f : point_fields)
-    PLISSE_CHECK(f.name != kGlobalNodeField, "PVTU '" << path.string() << "': the point field name '"
-                                                  << kGlobalNodeField
-                                                  << "' is reserved (added to every piece)");
+    PLISSE_CHECK(f.name != kGlobalNodeField,
+                 "PVTU '" << path.string() << "': the point field name '" << kGlobalNodeField
+                          << "' is reserved (added to every piece)");
 
   std::string xml;
   xml += "<?xml version=\"1.0\"?>\n";
@@ -111,30 +112,31 @@ void write_vtu_piece(const std::filesystem::path& path, const Mesh& mesh,
   const auto n_tets = static_cast<std::size_t>(mesh.n_tets());
   const bool quadratic = mesh.order() == 2;
   PLISSE_CHECK(points.size() == n_nodes, "VTU piece '" << path.string() << "': " << points.size()
-                                                   << " points given for a mesh of " << n_nodes
-                                                   << " nodes");
+                                                       << " points given for a mesh of " << n_nodes
+                                                       << " nodes");
   PLISSE_CHECK(!quadratic || mesh.tet_edge_nodes.size() == n_tets,
-           "VTU piece '" << path.string() << "': mesh has " << n_tets << " tetrahedra but "
-                         << mesh.tet_edge_nodes.size() << " edge-node lists");
+               "VTU piece '" << path.string() << "': mesh has " << n_tets << " tetrahedra but "
+                             << mesh.tet_edge_nodes.size() << " edge-node lists");
   // Full-mesh sizes first: the restriction below indexes them.
   const auto check_full = [&](const std::vector<VtuField>& fields, std::size_t n_entities,
                               const char* kind) {
     for (const VtuField& f : fields) {
-      PLISSE_CHECK(f.n_components >= 1, "VTU piece '" << path.string() << "': " << kind << " field '"
-                                                  << f.name << "' has " << f.n_components
-                                                  << " components");
+      PLISSE_CHECK(f.n_components >= 1, "VTU piece '" << path.string() << "': " << kind
+                                                      << " field '" << f.name << "' has "
+                                                      << f.n_components << " components");
       PLISSE_CHECK(f.values.size() == n_entities * static_cast<std::size_t>(f.n_components),
-               "VTU piece '" << path.string() << "': " << kind << " field '" << f.name << "' has "
-                             << f.values.size() << " values; expected " << n_entities << " " << kind
-                             << "s x " << f.n_components << " components of the full mesh");
+                   "VTU piece '" << path.string() << "': " << kind << " field '" << f.name
+                                 << "' has " << f.values.size() << " values; expected "
+                                 << n_entities << " " << kind << "s x " << f.n_components
+                                 << " components of the full mesh");
     }
   };
   check_full(point_fields, n_nodes, "point");
   check_full(cell_fields, n_tets, "cell");
   for (const VtuField& f : point_fields)
     PLISSE_CHECK(f.name != kGlobalNodeField,
-             "VTU piece '" << path.string() << "': the point field name '" << kGlobalNodeField
-                           << "' is reserved (added to every piece)");
+                 "VTU piece '" << path.string() << "': the point field name '" << kGlobalNodeField
+                               << "' is reserved (added to every piece)");
 
   // Nodes used by the piece, and their local numbers in increasing global order.
   std::vector<char> element_seen(n_tets, 0);
@@ -144,12 +146,12 @@ void write_vtu_piece(const std::filesystem::path& path, const Mesh& mesh,
         e >= 0 && static_cast<std::size_t>(e) < n_tets,
         "VTU piece '" << path.string() << "': element " << e << " outside [0, " << n_tets << ")");
     PLISSE_CHECK(!element_seen[e],
-             "VTU piece '" << path.string() << "': element " << e << " listed twice");
+                 "VTU piece '" << path.string() << "': element " << e << " listed twice");
     element_seen[e] = 1;
     const auto mark = [&](int node) {
       PLISSE_CHECK(node >= 0 && static_cast<std::size_t>(node) < n_nodes,
-               "VTU piece '" << path.string() << "': element " << e << " refers to node " << node
-                             << ", outside [0, " << n_nodes << ")");
+                   "VTU piece '" << path.string() << "': element " << e << " refers to node "
+                                 << node << ", outside [0, " << n_nodes << ")");
       local_of[node] = 0;
     };
     for (const int node : mesh.tets[e]) mark(node);

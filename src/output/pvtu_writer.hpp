@@ -25,9 +25,9 @@
 ///     </PUnstructuredGrid>
 ///   </VTKFile>
 ///
-/// Each Source is a VTU file (output/vtu_writer.hpp), named relative to the folder of the .pvtu ('/'
-/// separated, no absolute paths and no ".." components, so a run directory can be moved whole).
-/// Names and sources are XML-escaped (escape_xml).
+/// Each Source is a VTU file (output/vtu_writer.hpp), named relative to the folder of the .pvtu
+/// ('/' separated, no absolute paths and no ".." components, so a run directory can be moved
+/// whole). Names and sources are XML-escaped (escape_xml).
 ///
 /// Pieces (write_vtu_piece): every element of the mesh is in exactly one piece; a piece holds
 /// the nodes its elements use, numbered locally in increasing global order, so a node on the
@@ -46,8 +46,8 @@
 #include <vector>
 
 #include "core/types.hpp"
-#include "output/vtu_writer.hpp"
 #include "mesh/mesh.hpp"
+#include "output/vtu_writer.hpp"
 
 namespace plisse {
 

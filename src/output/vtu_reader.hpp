@@ -1,6 +1,6 @@
 #pragma once
-/// Reader for the VTU and PVTU files plisse writes (output/vtu_writer.hpp, output/pvtu_writer.hpp), e.g.
-/// to seed a "mode" imperfection from the `mode_1` point field of an earlier run, serial or
+/// Reader for the VTU and PVTU files plisse writes (output/vtu_writer.hpp, output/pvtu_writer.hpp),
+/// e.g. to seed a "mode" imperfection from the `mode_1` point field of an earlier run, serial or
 /// distributed.
 ///
 /// VTU, accepted format, exactly what write_vtu produces: VTKFile type="UnstructuredGrid",

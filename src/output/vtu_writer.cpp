@@ -36,22 +36,23 @@ void check_fields(const std::filesystem::path& path, const std::vector<VtuField>
                   std::size_t n_entities, const char* kind) {
   std::set<std::string> names;
   for (const VtuField& f : fields) {
-    PLISSE_CHECK(!f.name.empty(), "VTU '" << path.string() << "': a " << kind << " field has no name");
+    PLISSE_CHECK(!f.name.empty(),
+                 "VTU '" << path.string() << "': a " << kind << " field has no name");
     PLISSE_CHECK(std::none_of(f.name.begin(), f.name.end(),
-                          [](char c) { return static_cast<unsigned char>(c) < 0x20; }),
-             "VTU '" << path.string() << "': " << kind << " field name '" << f.name
-                     << "' contains a control character");
+                              [](char c) { return static_cast<unsigned char>(c) < 0x20; }),
+                 "VTU '" << path.string() << "': " << kind << " field name '" << f.name
+                         << "' contains a control character");
     PLISSE_CHECK(names.insert(f.name).second, "VTU '" << path.string() << "': two " << kind
-                                                  << " fields are named '" << f.name << "'");
+                                                      << " fields are named '" << f.name << "'");
     PLISSE_CHECK(
         f.n_components == 1 || f.n_components == 3 || f.n_components == 6 || f.n_components == 9,
         "VTU '" << path.string() << "': " << kind << " field '" << f.name << "' has "
                 << f.n_components << " components; must be 1, 3, 6 or 9");
     PLISSE_CHECK(f.values.size() == n_entities * static_cast<std::size_t>(f.n_components),
-             "VTU '" << path.string() << "': " << kind << " field '" << f.name << "' has "
-                     << f.values.size() << " values; expected " << n_entities << " " << kind
-                     << "s x " << f.n_components
-                     << " components = " << n_entities * static_cast<std::size_t>(f.n_components));
+                 "VTU '" << path.string() << "': " << kind << " field '" << f.name << "' has "
+                         << f.values.size() << " values; expected " << n_entities << " " << kind
+                         << "s x " << f.n_components << " components = "
+                         << n_entities * static_cast<std::size_t>(f.n_components));
   }
 }
 
@@ -111,8 +112,8 @@ void write_piece(const std::filesystem::path& path, std::span<const Vec3d> point
     for (int k = 0; k < nodes_per_cell; ++k) {
       const int n = node(c, k);
       PLISSE_CHECK(n >= 0 && static_cast<std::size_t>(n) < n_points,
-               "VTU '" << path.string() << "': cell " << c << " refers to node " << n
-                       << ", outside [0, " << n_points << ")");
+                   "VTU '" << path.string() << "': cell " << c << " refers to node " << n
+                           << ", outside [0, " << n_points << ")");
     }
   check_fields(path, point_fields, n_points, "point");
   check_fields(path, cell_fields, n_cells, "cell");
@@ -284,8 +285,8 @@ VtuField make_symmetric_tensor_field(std::string name, std::span<const Mat3d> te
 
 std::vector<Mat3d> symmetric_tensors(const VtuField& field) {
   PLISSE_CHECK(field.n_components == 6, "VTU field '"
-                                        << field.name << "' has " << field.n_components
-                                        << " components, not the 6 of a symmetric tensor");
+                                            << field.name << "' has " << field.n_components
+                                            << " components, not the 6 of a symmetric tensor");
   std::vector<Mat3d> tensors(field.values.size() / 6);
   for (std::size_t k = 0; k < tensors.size(); ++k) {
     const double* c = &field.values[6 * k];
@@ -322,8 +323,8 @@ void write_vtu(const std::filesystem::path& path, std::span<const Vec3d> points,
                const std::vector<VtuField>& cell_fields, VtuCompression compression) {
   const auto nodes_per_cell = static_cast<std::size_t>(n_cell_nodes(type));
   PLISSE_CHECK(connectivity.size() % nodes_per_cell == 0,
-           "VTU '" << path.string() << "': connectivity has " << connectivity.size()
-                   << " entries, not a multiple of " << nodes_per_cell << " nodes per cell");
+               "VTU '" << path.string() << "': connectivity has " << connectivity.size()
+                       << " entries, not a multiple of " << nodes_per_cell << " nodes per cell");
   write_piece(
       path, points, type, connectivity.size() / nodes_per_cell,
       [&](std::size_t c, int k) { return connectivity[c * nodes_per_cell + k]; }, point_fields,
@@ -351,17 +352,17 @@ void write_vtu(const std::filesystem::path& path, std::span<const Vec3d> points,
 void write_vtu(const std::filesystem::path& path, const Mesh& mesh, std::span<const Vec3d> points,
                const std::vector<VtuField>& point_fields, const std::vector<VtuField>& cell_fields,
                VtuCompression compression) {
-  PLISSE_CHECK(points.size() == mesh.nodes.size(), "VTU '" << path.string() << "': " << points.size()
-                                                       << " points given for a mesh of "
-                                                       << mesh.nodes.size() << " nodes");
+  PLISSE_CHECK(points.size() == mesh.nodes.size(),
+               "VTU '" << path.string() << "': " << points.size() << " points given for a mesh of "
+                       << mesh.nodes.size() << " nodes");
   if (mesh.order() == 1) {
     write_vtu(path, points, std::span<const std::array<int, 4>>(mesh.tets), point_fields,
               cell_fields, compression);
     return;
   }
   PLISSE_CHECK(mesh.tet_edge_nodes.size() == mesh.tets.size(),
-           "VTU '" << path.string() << "': mesh has " << mesh.tets.size() << " tetrahedra but "
-                   << mesh.tet_edge_nodes.size() << " edge-node lists");
+               "VTU '" << path.string() << "': mesh has " << mesh.tets.size() << " tetrahedra but "
+                       << mesh.tet_edge_nodes.size() << " edge-node lists");
   write_piece(
       path, points, VtkCellType::kQuadraticTetra, mesh.tets.size(),
       [&](std::size_t c, int k) {

@@ -1,6 +1,7 @@
 // `cavities:`: a closed surface (or one closed by symmetry planes) enclosing a fluid, at a
 // prescribed volume or as an ideal gas (physics/cavity.hpp).
 #include "physics/cavity.hpp"
+
 #include "terms/keys.hpp"
 #include "terms/term_kind.hpp"
 

@@ -116,7 +116,8 @@ TermKind die_kind() {
   TermDefinition<DieSettings> d;
   d.section = "dies";
   Schema<DieSettings> move;
-  move.vec3("displacement", &DieSettings::displacement, "mm", "displacement reached at the end of `ramp`");
+  move.vec3("displacement", &DieSettings::displacement, "mm",
+            "displacement reached at the end of `ramp`");
   ramp_key(move, &DieSettings::ramp, "time ramp of the motion");
 
   Schema<DieSettings>& s = d.keys;
@@ -140,9 +141,10 @@ TermKind die_kind() {
   optional_surface_key(s, "surface", &DieSettings::surface,
                        "whole boundary except the faces on symmetry planes",
                        "candidate contact surface");
-  s.nested_here("move", move).when_absent([](const FieldMap&, DieSettings& d, ReadContext& context) {
-    d.ramp = {0.0, context.end_time};  // a die without `move` stays put; its ramp is unused
-  });
+  s.nested_here("move", move)
+      .when_absent([](const FieldMap&, DieSettings& d, ReadContext& context) {
+        d.ramp = {0.0, context.end_time};  // a die without `move` stays put; its ramp is unused
+      });
   s.real("penalty", &DieSettings::penalty, Range::non_negative(), "MPa/mm",
          "contact penalty; 0 chooses 10 μ / h (μ the small-strain shear modulus, h the mean edge "
          "length of the contact surface; docs/theory/contact.md, D11)");
@@ -162,7 +164,8 @@ TermKind die_kind() {
   s.add({"axis", "vector", "–", "non-zero", "", {"cylinder"}, "axis direction; normalised"},
         [](const Field& f, DieSettings& d, ReadContext&) { d.axis = unit_vector(f); })
       .required();
-  s.real("radius", &DieSettings::radius, Range::positive(), "mm", "radius of the sphere or cylinder")
+  s.real("radius", &DieSettings::radius, Range::positive(), "mm",
+         "radius of the sphere or cylinder")
       .required()
       .applies({"sphere", "cylinder"});
   optional_surface_key(s, "region", &DieSettings::region, "none", "glued to the die from the start")
@@ -190,15 +193,21 @@ TermKind die_kind() {
       {"force_z:<die>", "N", "`dies[]`", "z component of the force of the body on the die"},
       {"full_force_x:<die>", "N", "`dies[]` symmetric about a mirror plane",
        "x component of the whole body's force on the die: its mirror images summed, 0 along a "
-       "mirror plane's normal and doubled per plane along the others (likewise y, z; see Symmetry)"},
-      {"full_force_y:<die>", "N", "as `full_force_x:<die>`", "y component of the whole body's force"},
-      {"full_force_z:<die>", "N", "as `full_force_x:<die>`", "z component of the whole body's force"},
+       "mirror plane's normal and doubled per plane along the others (likewise y, z; see "
+       "Symmetry)"},
+      {"full_force_y:<die>", "N", "as `full_force_x:<die>`",
+       "y component of the whole body's force"},
+      {"full_force_z:<die>", "N", "as `full_force_x:<die>`",
+       "z component of the whole body's force"},
   };
   for (const OutputEntry& e : contact_state_outputs()) d.history.push_back(e);
-  d.history.insert(d.history.end(), {
-      {"stick_nodes:<die>", "–", "`dies[]` with `contact: coulomb`", "contact nodes that stick"},
-      {"slip_nodes:<die>", "–", "`dies[]` with `contact: coulomb`", "contact nodes that slip"},
-  });
+  d.history.insert(
+      d.history.end(),
+      {
+          {"stick_nodes:<die>", "–", "`dies[]` with `contact: coulomb`",
+           "contact nodes that stick"},
+          {"slip_nodes:<die>", "–", "`dies[]` with `contact: coulomb`", "contact nodes that slip"},
+      });
   d.point_fields = {
       {"contact_<die>", "–", "`dies[]`",
        "the node's contact state with the die: 0 free, 1 sliding, 2 sticking"},

@@ -1,6 +1,7 @@
 // `loads:` of type follower-traction: normal and shear tractions that turn with the deformed
 // surface (physics/follower_traction.hpp).
 #include "physics/follower_traction.hpp"
+
 #include "terms/keys.hpp"
 #include "terms/term_kind.hpp"
 
@@ -23,7 +24,12 @@ TermKind follower_traction_kind() {
   s.real("shear", &S::shear, Range::any(), "MPa",
          "traction per unit deformed area along `direction` projected onto the deformed surface, "
          "at the end of the ramp");
-  s.add({"direction", "vector", "–", "", "", {},
+  s.add({"direction",
+         "vector",
+         "–",
+         "",
+         "",
+         {},
          "the shear's direction, normalised: the shear acts along its projection onto the "
          "deformed surface (nowhere where the surface is normal to it); required with a shear"},
         [](const Field& f, S& load, ReadContext&) { load.direction = unit_vector(f); });
@@ -47,7 +53,9 @@ TermKind follower_traction_kind() {
     return std::make_unique<FollowerTraction>(c.mesh, load.name, load.surface.name, values,
                                               load.ramp, c.constraints);
   };
-  d.ramps = [](const S& load) { return std::vector<RampUse>{{load.ramp, "load '" + load.name + "'"}}; };
+  d.ramps = [](const S& load) {
+    return std::vector<RampUse>{{load.ramp, "load '" + load.name + "'"}};
+  };
   d.history = load_force_outputs();
   return make_term_kind(std::move(d));
 }

@@ -44,11 +44,21 @@ TermKind point_force_kind() {
   Schema<S>& s = d.keys;
   s.place(&S::place, false);
   load_name_key(s, &S::name);
-  s.add({"force", "vector", "N", "", "", {},
+  s.add({"force",
+         "vector",
+         "N",
+         "",
+         "",
+         {},
          "the force on the node nearest `point` at the end of the ramp (required); dead, "
          "non-zero"},
         [](const Field& f, S& load, ReadContext&) { load.force = non_zero_vector(f); });
-  s.add({"point", "vector", "mm", "", "", {},
+  s.add({"point",
+         "vector",
+         "mm",
+         "",
+         "",
+         {},
          "where the force acts: on the mesh node nearest this point of the undeformed body "
          "(refused when farther from it than the longest edge at that node)"},
         [](const Field& f, S& load, ReadContext&) {
@@ -57,9 +67,10 @@ TermKind point_force_kind() {
         })
       .required();
   load_ramp_key(s, &S::ramp);
-  s.rule("a point-force load needs `force`", [](const FieldMap& m, const S& load, const ReadContext&) {
-    if (!load.force) m.require("force");
-  });
+  s.rule("a point-force load needs `force`",
+         [](const FieldMap& m, const S& load, const ReadContext&) {
+           if (!load.force) m.require("force");
+         });
   d.check_mesh = [](const S& load, const TermMeshCheck& check) {
     check_point_on_body(load, check.mesh);
   };
@@ -68,12 +79,15 @@ TermKind point_force_kind() {
         load.name, std::vector<NodalForce>{{nearest_node(c.mesh, load.point), *load.force}},
         load.ramp);
   };
-  d.ramps = [](const S& load) { return std::vector<RampUse>{{load.ramp, "load '" + load.name + "'"}}; };
+  d.ramps = [](const S& load) {
+    return std::vector<RampUse>{{load.ramp, "load '" + load.name + "'"}};
+  };
   d.notes = [](const S& load, const Mesh& mesh) {
     const int v = nearest_node(mesh, load.point);
     const Vec3d& x = mesh.nodes[v];
     char line[256];
-    std::snprintf(line, sizeof line, "load '%s': on node %d at [%.6g, %.6g, %.6g], %.3g mm from its point",
+    std::snprintf(line, sizeof line,
+                  "load '%s': on node %d at [%.6g, %.6g, %.6g], %.3g mm from its point",
                   load.name.c_str(), v, x.x(), x.y(), x.z(), (x - load.point).norm());
     return std::vector<std::string>{line};
   };

@@ -1,5 +1,6 @@
 // `loads:` of type pressure: a follower pressure on a surface (physics/pressure_load.hpp).
 #include "physics/pressure_load.hpp"
+
 #include "terms/keys.hpp"
 #include "terms/term_kind.hpp"
 
@@ -26,7 +27,9 @@ TermKind pressure_load_kind() {
     return std::make_unique<PressureLoad>(c.mesh, load.name, load.surface.name, load.value,
                                           load.ramp, c.constraints, c.mirrors);
   };
-  d.ramps = [](const S& load) { return std::vector<RampUse>{{load.ramp, "load '" + load.name + "'"}}; };
+  d.ramps = [](const S& load) {
+    return std::vector<RampUse>{{load.ramp, "load '" + load.name + "'"}};
+  };
   d.history = {
       {"pressure:<load>", "MPa", "`loads[]` of type pressure",
        "the pressure at t, `value` times its ramp; positive pushes against the body's outward "

@@ -26,14 +26,8 @@ const std::vector<TermSection>& term_sections() {
 
 const std::vector<TermKind>& term_kinds() {
   static const std::vector<TermKind> kinds = {
-      pressure_load_kind(),
-      gravity_load_kind(),
-      traction_load_kind(),
-      point_force_kind(),
-      follower_traction_kind(),
-      cavity_kind(),
-      cap_kind(),
-      die_kind(),
+      pressure_load_kind(),     gravity_load_kind(), traction_load_kind(), point_force_kind(),
+      follower_traction_kind(), cavity_kind(),       cap_kind(),           die_kind(),
       surface_contact_kind(),
   };
   return kinds;

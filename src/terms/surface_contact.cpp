@@ -1,9 +1,10 @@
 // `contacts:`: contact between two tagged surfaces of the body, or of one surface with itself
 // (physics/surface_contact.hpp, docs/theory/surface-contact.md).
+#include "physics/surface_contact.hpp"
+
 #include "physics/die_contact.hpp"
 #include "physics/die_surface.hpp"
 #include "physics/surface.hpp"
-#include "physics/surface_contact.hpp"
 #include "terms/keys.hpp"
 #include "terms/term_kind.hpp"
 
@@ -90,13 +91,16 @@ TermKind surface_contact_kind() {
   };
   d.make = make_surface_contact_term;
   d.history = contact_state_outputs();
-  d.history.insert(d.history.end(), {
-      {"force_x:<contact>", "N", "`contacts[]`",
-       "x component of the force of the second surface on the first (likewise y, z); a self-contact "
-       "reports the force across it"},
-      {"force_y:<contact>", "N", "`contacts[]`", "as `force_x:<contact>`, y component"},
-      {"force_z:<contact>", "N", "`contacts[]`", "as `force_x:<contact>`, z component"},
-  });
+  d.history.insert(
+      d.history.end(),
+      {
+          {"force_x:<contact>", "N", "`contacts[]`",
+           "x component of the force of the second surface on the first (likewise y, z); a "
+           "self-contact "
+           "reports the force across it"},
+          {"force_y:<contact>", "N", "`contacts[]`", "as `force_x:<contact>`, y component"},
+          {"force_z:<contact>", "N", "`contacts[]`", "as `force_x:<contact>`, z component"},
+      });
   d.point_fields = {
       {"contact_<contact>", "MPa", "`contacts[]`",
        "the contact pressure per reference area at the nodes of the first surface"},

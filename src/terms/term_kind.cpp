@@ -91,7 +91,12 @@ SectionDoc term_section_doc(const std::string& section) {
     meanings.push_back(kind->word + ": " + kind->summary);
   }
   SectionDoc out;
-  out.keys.push_back({s.selector, schema::doc_choice(words), "–", "", "required", {},
+  out.keys.push_back({s.selector,
+                      schema::doc_choice(words),
+                      "–",
+                      "",
+                      "required",
+                      {},
                       schema::join(meanings, "; ")});
   for (const TermKind* kind : kinds) {
     const SectionDoc doc = kind->doc();

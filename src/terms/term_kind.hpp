@@ -122,7 +122,7 @@ struct TermDefinition {
   schema::Schema<S> keys;
   std::function<void(const S&, const TermMeshCheck&)> check_mesh;
   std::function<std::unique_ptr<ModelTerm>(const S&, const TermContext&)> make;
-  std::function<std::vector<RampUse>(const S&)> ramps;  ///< empty: none
+  std::function<std::vector<RampUse>(const S&)> ramps;                   ///< empty: none
   std::function<std::vector<std::string>(const S&, const Mesh&)> notes;  ///< empty: none
   std::vector<OutputEntry> history;
   std::vector<OutputEntry> point_fields;

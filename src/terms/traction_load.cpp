@@ -18,11 +18,21 @@ TermKind traction_load_kind() {
   s.place(&S::place, false);
   load_name_key(s, &S::name);
   surface_key(s, "surface", &S::surface, "the loaded surface").required();
-  s.add({"traction", "vector", "MPa", "", "", {},
+  s.add({"traction",
+         "vector",
+         "MPa",
+         "",
+         "",
+         {},
          "traction per unit undeformed area at the end of the ramp, fixed in direction and "
          "magnitude (a dead load); non-zero"},
         [](const Field& f, S& load, ReadContext&) { load.traction = non_zero_vector(f); });
-  s.add({"force", "vector", "N", "", "", {},
+  s.add({"force",
+         "vector",
+         "N",
+         "",
+         "",
+         {},
          "the total force at the end of the ramp, spread over the surface in proportion to "
          "undeformed area; dead, non-zero"},
         [](const Field& f, S& load, ReadContext&) { load.force = non_zero_vector(f); });
@@ -41,12 +51,13 @@ TermKind traction_load_kind() {
   d.make = [](const S& load, const TermContext& c) -> std::unique_ptr<ModelTerm> {
     const auto faces = outward_faces(c.mesh, load.surface.name);
     return std::make_unique<DeadLoad>(load.name,
-                                      load.traction
-                                          ? traction_forces(c.mesh, faces, *load.traction)
-                                          : total_force(c.mesh, faces, *load.force),
+                                      load.traction ? traction_forces(c.mesh, faces, *load.traction)
+                                                    : total_force(c.mesh, faces, *load.force),
                                       load.ramp);
   };
-  d.ramps = [](const S& load) { return std::vector<RampUse>{{load.ramp, "load '" + load.name + "'"}}; };
+  d.ramps = [](const S& load) {
+    return std::vector<RampUse>{{load.ramp, "load '" + load.name + "'"}};
+  };
   d.history = load_force_outputs();
   return make_term_kind(std::move(d));
 }

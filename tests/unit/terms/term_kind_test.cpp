@@ -1,6 +1,8 @@
 // The table of term kinds (src/terms): its sections and words, the merged key table of a section
 // with a selector, the messages an item gets from its kind, and that every history column a
 // kind's term writes is one of the kind's own output rows.
+#include "terms/term_kind.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,7 +13,6 @@
 
 #include "case/case.hpp"
 #include "mesh/box_mesh.hpp"
-#include "terms/term_kind.hpp"
 
 namespace plisse {
 namespace {
@@ -43,7 +44,8 @@ TEST(TermKinds, EverySectionHasKindsWithDistinctWords) {
     std::set<std::string> words;
     for (const TermKind* kind : kinds) {
       EXPECT_FALSE(kind->word.empty()) << section.key;
-      EXPECT_TRUE(words.insert(kind->word).second) << section.key << ": '" << kind->word << "' twice";
+      EXPECT_TRUE(words.insert(kind->word).second)
+          << section.key << ": '" << kind->word << "' twice";
     }
   }
   for (const TermKind& kind : term_kinds())
@@ -88,7 +90,8 @@ TEST(TermKinds, ItemsAreJudgedByTheirOwnKind) {
                        "surface, value, ramp"),
             std::string::npos)
       << other;
-  EXPECT_NE(error_of(kCube + "loads: [{name: p, surface: top, value: 1}]\n").find("key 'loads[0].type': required value is missing"),
+  EXPECT_NE(error_of(kCube + "loads: [{name: p, surface: top, value: 1}]\n")
+                .find("key 'loads[0].type': required value is missing"),
             std::string::npos);
 }
 
@@ -97,7 +100,7 @@ bool matches(const std::string& pattern, const std::string& column) {
   const std::string re = std::regex_replace(pattern, std::regex("<[^>]*>"), "@");
   std::string escaped;
   for (char ch : re)
-    escaped += ch == '@'                                          ? std::string(".+")
+    escaped += ch == '@'                                      ? std::string(".+")
                : std::isalnum(static_cast<unsigned char>(ch)) ? std::string(1, ch)
                                                               : std::string("\\") + ch;
   return std::regex_match(column, std::regex(escaped));
@@ -114,7 +117,8 @@ TEST(TermKinds, EveryColumnATermWritesIsOneOfItsKindsRows) {
           "  - {type: point-force, name: f, point: [2, 2, 2], force: [0, 1e-3, 0]}\n"
           "  - {type: follower-traction, name: ft, surface: left, normal: -1e-3}\n"
           "caps: [{name: cap, surface: back}]\n"
-          "dies: [{name: die, shape: plane, point: [0, 0, 2.5], normal: [0, 0, -1], surface: top, contact: "
+          "dies: [{name: die, shape: plane, point: [0, 0, 2.5], normal: [0, 0, -1], surface: top, "
+          "contact: "
           "coulomb, friction: 0.2}]\n"
           "contacts: [{name: fold, self: front}]\n",
       "case.yaml");
