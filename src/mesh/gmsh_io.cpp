@@ -25,9 +25,6 @@
 namespace plisse {
 namespace {
 
-// Gmsh element type numbers (Gmsh reference manual, "MSH file format", element types).
-constexpr int kTri3 = 2, kTet4 = 4, kTri6 = 9, kTet10 = 11, kPoint = 15;
-
 std::string element_type_name(int type) {
   std::string name;
   int dim = 0, order = 0, n_nodes = 0, n_primary = 0;
@@ -355,83 +352,6 @@ Mesh build_mesh(const RawGmshModel& model, const std::string& path, GmshReadInfo
   return mesh;
 }
 
-/// Per element: the indices (into `names`) of the tags containing it, and the tag names.
-struct Signatures {
-  std::vector<int> of_element;             ///< signature id per element
-  std::vector<std::vector<int>> name_ids;  ///< per signature id: sorted name indices
-  std::vector<std::string> names;
-};
-
-Signatures compute_signatures(const std::map<std::string, std::vector<int>>& tags,
-                              std::size_t n_elements, const char* what) {
-  Signatures s;
-  std::vector<std::vector<int>> per_element(n_elements);
-  for (const auto& [name, indices] : tags) {
-    const int id = static_cast<int>(s.names.size());
-    s.names.push_back(name);
-    for (int i : indices) {
-      PLISSE_CHECK(
-          i >= 0 && static_cast<std::size_t>(i) < n_elements,
-          "write_gmsh: tag '" << name << "' lists " << what << " " << i << " out of range");
-      per_element[static_cast<std::size_t>(i)].push_back(id);
-    }
-  }
-  std::map<std::vector<int>, int> id_of;
-  s.of_element.resize(n_elements);
-  for (std::size_t e = 0; e < n_elements; ++e) {
-    auto& sig = per_element[e];
-    std::sort(sig.begin(), sig.end());
-    sig.erase(std::unique(sig.begin(), sig.end()), sig.end());
-    const auto [it, inserted] = id_of.emplace(sig, static_cast<int>(s.name_ids.size()));
-    if (inserted) s.name_ids.push_back(sig);
-    s.of_element[e] = it->second;
-  }
-  return s;
-}
-
-/// A run of consecutive elements with the same signature, stored as one discrete Gmsh entity
-/// (runs keep the element order through v2 files, whose writer renumbers elements entity by
-/// entity).
-struct Run {
-  int entity;
-  int signature;
-  std::size_t begin, end;
-};
-
-std::vector<Run> make_runs(int dim, const Signatures& s) {
-  std::vector<Run> runs;
-  for (std::size_t e = 0; e < s.of_element.size(); ++e) {
-    if (runs.empty() || s.of_element[e] != runs.back().signature)
-      runs.push_back({gmsh::model::addDiscreteEntity(dim), s.of_element[e], e, e + 1});
-    else
-      runs.back().end = e + 1;
-  }
-  return runs;
-}
-
-/// Physical groups of dimension `dim` from the runs; in v2 files untagged runs join the group
-/// kUntaggedGroupName so that Gmsh writes them.
-void add_groups(int dim, const Signatures& s, const std::vector<Run>& runs, bool keep_untagged) {
-  for (std::size_t id = 0; id < s.names.size(); ++id) {
-    std::vector<int> entities;
-    for (const auto& run : runs) {
-      const auto& sig = s.name_ids[static_cast<std::size_t>(run.signature)];
-      if (std::binary_search(sig.begin(), sig.end(), static_cast<int>(id)))
-        entities.push_back(run.entity);
-    }
-    if (entities.empty()) continue;
-    const int group = gmsh::model::addPhysicalGroup(dim, entities);
-    gmsh::model::setPhysicalName(dim, group, s.names[id]);
-  }
-  if (!keep_untagged) return;
-  std::vector<int> untagged;
-  for (const auto& run : runs)
-    if (s.name_ids[static_cast<std::size_t>(run.signature)].empty()) untagged.push_back(run.entity);
-  if (untagged.empty()) return;
-  const int group = gmsh::model::addPhysicalGroup(dim, untagged);
-  gmsh::model::setPhysicalName(dim, group, kUntaggedGroupName);
-}
-
 /// Length of the well-formed UTF-8 sequence of 2 to 4 bytes at s[i], or 0 (RFC 3629, section 4;
 /// overlong forms and surrogates are not excluded: the point is only a printable message).
 std::size_t utf8_length(const std::string& s, std::size_t i) {
@@ -479,11 +399,6 @@ std::string readable_errors(const std::string& report) {
   if (n > kShownGmshErrors)
     out += "; and " + std::to_string(n - kShownGmshErrors) + " more Gmsh errors";
   return out;
-}
-
-bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() &&
-         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 /// ".msh" in any letter case: Gmsh picks its MSH reader from the extension, case-insensitively.
@@ -611,110 +526,6 @@ Mesh read_gmsh(const std::string& path, GmshReadInfo& info, const ChildLimits& l
   } catch (const std::bad_alloc&) {
     throw file_error(path, "cannot read the mesh file: not enough memory for its " +
                                std::to_string(reply.model.node_tags.size()) + " nodes");
-  }
-}
-
-void write_gmsh(const Mesh& mesh, const std::string& path, double version, bool binary) {
-  if (!ends_with(path, ".msh"))
-    throw file_error(
-        path, "the mesh file name must end in .msh (Gmsh picks the format from the extension)");
-  const bool v2 = version == 2.2;
-  PLISSE_CHECK(v2 || version == 4.1,
-               "write_gmsh: version must be 2.2 or 4.1 (got " << version << ")");
-  PLISSE_CHECK(!mesh.tets.empty(), "write_gmsh: the mesh has no tetrahedra");
-  const bool second = mesh.order() == 2;
-  PLISSE_CHECK(!second || mesh.tet_edge_nodes.size() == mesh.tets.size(),
-               "write_gmsh: tet_edge_nodes size");
-  PLISSE_CHECK(!second || mesh.triangle_edge_nodes.size() == mesh.triangles.size(),
-               "write_gmsh: triangle_edge_nodes size");
-  const auto n_nodes = static_cast<std::size_t>(mesh.n_nodes());
-  std::vector<char> used(n_nodes, 0);
-  auto use = [&](int node) {
-    PLISSE_CHECK(node >= 0 && static_cast<std::size_t>(node) < n_nodes,
-                 "write_gmsh: node index " << node << " out of range");
-    used[static_cast<std::size_t>(node)] = 1;
-  };
-  for (const auto& t : mesh.tets)
-    for (int n : t) use(n);
-  for (const auto& t : mesh.tet_edge_nodes)
-    for (int n : t) use(n);
-  for (const auto& t : mesh.triangles)
-    for (int n : t) use(n);
-  for (const auto& t : mesh.triangle_edge_nodes)
-    for (int n : t) use(n);
-
-  const Signatures tet_sig = compute_signatures(mesh.volume_tags, mesh.tets.size(), "tetrahedron");
-  const Signatures tri_sig =
-      compute_signatures(mesh.surface_tags, mesh.triangles.size(), "triangle");
-
-  GmshSession session;
-  try {
-    gmsh::model::add("plisse");
-    const auto tet_runs = make_runs(3, tet_sig);
-    const auto tri_runs = make_runs(2, tri_sig);
-
-    // All nodes live on the first volume entity; tags are index + 1.
-    std::vector<std::size_t> node_tags(n_nodes);
-    std::vector<double> coords(3 * n_nodes);
-    for (std::size_t i = 0; i < n_nodes; ++i) {
-      node_tags[i] = i + 1;
-      for (int c = 0; c < 3; ++c) coords[3 * i + static_cast<std::size_t>(c)] = mesh.nodes[i][c];
-    }
-    gmsh::model::mesh::addNodes(3, tet_runs.front().entity, node_tags, coords);
-
-    // Element tags: tetrahedra 1..n_tets, then triangles, then (v2) points, in mesh order.
-    std::size_t next_tag = 1;
-    for (const auto& run : tet_runs) {
-      std::vector<std::size_t> tags, nodes;
-      for (std::size_t e = run.begin; e < run.end; ++e) {
-        tags.push_back(next_tag++);
-        for (int n : mesh.tets[e]) nodes.push_back(static_cast<std::size_t>(n) + 1);
-        if (second)
-          for (int n : mesh.tet_edge_nodes[e]) nodes.push_back(static_cast<std::size_t>(n) + 1);
-      }
-      gmsh::model::mesh::addElementsByType(run.entity, second ? kTet10 : kTet4, tags, nodes);
-    }
-    for (const auto& run : tri_runs) {
-      std::vector<std::size_t> tags, nodes;
-      for (std::size_t e = run.begin; e < run.end; ++e) {
-        tags.push_back(next_tag++);
-        for (int n : mesh.triangles[e]) nodes.push_back(static_cast<std::size_t>(n) + 1);
-        if (second)
-          for (int n : mesh.triangle_edge_nodes[e])
-            nodes.push_back(static_cast<std::size_t>(n) + 1);
-      }
-      gmsh::model::mesh::addElementsByType(run.entity, second ? kTri6 : kTri3, tags, nodes);
-    }
-    add_groups(3, tet_sig, tet_runs, v2);
-    add_groups(2, tri_sig, tri_runs, v2);
-    if (v2) {
-      // Gmsh's v2 writer only writes nodes of written elements: keep unused nodes as points.
-      std::vector<std::size_t> tags, nodes;
-      for (std::size_t i = 0; i < n_nodes; ++i)
-        if (!used[i]) {
-          tags.push_back(next_tag++);
-          nodes.push_back(i + 1);
-        }
-      if (!tags.empty()) {
-        const int entity = gmsh::model::addDiscreteEntity(0);
-        gmsh::model::mesh::addElementsByType(entity, kPoint, tags, nodes);
-        const int group = gmsh::model::addPhysicalGroup(0, {entity});
-        gmsh::model::setPhysicalName(0, group, kUntaggedGroupName);
-      }
-    }
-    session.check_internal("write_gmsh: building the Gmsh model");
-    gmsh::option::setNumber("Mesh.MshFileVersion", version);
-    gmsh::option::setNumber("Mesh.Binary", binary ? 1 : 0);
-    // v4: SaveAll writes every element and keeps the physical groups in $Entities. v2: SaveAll
-    // would write physical tag 0 for every element, so only grouped elements are written.
-    gmsh::option::setNumber("Mesh.SaveAll", v2 ? 0 : 1);
-    gmsh::option::setNumber("Mesh.SaveParametric", 0);
-    gmsh::write(path);
-    session.check_input(path, "cannot write the mesh file");
-  } catch (const Error&) {
-    throw;
-  } catch (const std::string& message) {
-    throw file_error(path, "cannot write the mesh file: " + message);
   }
 }
 

@@ -26,6 +26,10 @@
 
 namespace plisse {
 
+// Gmsh element type numbers (Gmsh reference manual, "MSH file format", element types), which the
+// reader and the writer share.
+constexpr int kTri3 = 2, kTet4 = 4, kTri6 = 9, kTet10 = 11, kPoint = 15;
+
 class ChildOutput;
 
 /// An element type found in the model (dimensions 2 and 3 only).
