@@ -18,9 +18,19 @@
 
 #include "core/error.hpp"
 #include "core/input_file.hpp"
+#include "output/xml_tags.hpp"
 
 namespace plisse {
 namespace {
+
+using vtu_detail::attribute;
+using vtu_detail::is_space;
+using vtu_detail::parse_tag;
+using vtu_detail::parse_unsigned;
+using vtu_detail::require_attribute;
+using vtu_detail::require_unsigned;
+using vtu_detail::Tag;
+using vtu_detail::VtuFile;
 
 // Byte counts and values are read as the host's bytes, as the writer writes them.
 static_assert(std::endian::native == std::endian::little,
@@ -46,159 +56,6 @@ struct ArrayDecl {
   std::uint64_t block_bytes = 0;
   std::vector<std::uint64_t> compressed;
 };
-
-struct Tag {
-  std::string name;
-  bool closing = false;
-  std::map<std::string, std::string> attributes;
-};
-
-class VtuFile {
- public:
-  /// `kind` starts every error message ("VTU", "PVTU").
-  explicit VtuFile(std::filesystem::path path, std::string kind = "VTU")
-      : path_(std::move(path)), kind_(std::move(kind)) {
-    std::error_code ec;
-    const auto status = std::filesystem::status(path_, ec);
-    if (ec || !std::filesystem::exists(status)) fail("cannot open: no such file");
-    if (!std::filesystem::is_regular_file(status)) fail("cannot open: not a regular file");
-    in_.open(path_, std::ios::binary);
-    if (!in_) fail("cannot open for reading");
-    in_.seekg(0, std::ios::end);
-    const std::streamoff end = in_.tellg();
-    if (end < 0) fail("cannot determine the file size");
-    size_ = static_cast<std::uint64_t>(end);
-    // Its blocks are read whole into memory: a file beyond half the machine's memory (a sparse
-    // file, or not one of plisse's) is refused before any block is allocated.
-    const std::uint64_t memory = physical_memory_bytes();
-    if (size_ > memory / 2)
-      fail("is " + std::to_string(size_ >> 20) + " MiB, more than half of this machine's memory (" +
-           std::to_string(memory >> 20) + " MiB): too large to read");
-  }
-
-  [[noreturn]] void fail(const std::string& what) const {
-    throw Error(kind_ + " '" + path_.string() + "': " + what);
-  }
-
-  std::uint64_t size() const { return size_; }
-  const std::filesystem::path& path() const { return path_; }
-
-  /// Reads n bytes at pos; pos + n <= size() is checked first.
-  void read_at(std::uint64_t pos, void* out, std::uint64_t n) {
-    if (pos > size_ || n > size_ - pos) fail("truncated: a read past the end of the file");
-    if (n == 0) return;  // out may be the null data() of an empty vector
-    in_.clear();
-    in_.seekg(static_cast<std::streamoff>(pos));
-    in_.read(static_cast<char*>(out), static_cast<std::streamsize>(n));
-    if (static_cast<std::uint64_t>(in_.gcount()) != n)
-      fail("read error (file changed while read?)");
-  }
-
-  std::string read_string(std::uint64_t pos, std::uint64_t n) {
-    std::string s(static_cast<std::size_t>(n), '\0');
-    read_at(pos, s.data(), n);
-    return s;
-  }
-
- private:
-  std::filesystem::path path_;
-  std::string kind_;
-  std::ifstream in_;
-  std::uint64_t size_ = 0;
-};
-
-bool is_space(char c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; }
-
-std::optional<std::uint64_t> parse_unsigned(std::string_view text) {
-  std::uint64_t value = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
-  return value;
-}
-
-/// Decodes the five predefined XML entities; nullopt for any other '&' sequence.
-std::optional<std::string> decode_entities(std::string_view text) {
-  static constexpr std::array<std::pair<std::string_view, char>, 5> kEntities = {
-      {{"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}}};
-  std::string out;
-  out.reserve(text.size());
-  for (std::size_t i = 0; i < text.size();) {
-    if (text[i] != '&') {
-      out += text[i++];
-      continue;
-    }
-    bool known = false;
-    for (const auto& [entity, c] : kEntities)
-      if (text.substr(i, entity.size()) == entity) {
-        out += c;
-        i += entity.size();
-        known = true;
-        break;
-      }
-    if (!known) return std::nullopt;
-  }
-  return out;
-}
-
-/// Parses the inside of one tag, text between '<' and '>'.
-Tag parse_tag(const VtuFile& file, std::string_view text) {
-  Tag tag;
-  std::size_t i = 0;
-  if (!text.empty() && text[0] == '/') {
-    tag.closing = true;
-    ++i;
-  }
-  const std::size_t name_start = i;
-  while (i < text.size() && !is_space(text[i]) && text[i] != '/') ++i;
-  tag.name = std::string(text.substr(name_start, i - name_start));
-  if (tag.name.empty()) file.fail("malformed XML header: a tag without a name");
-  while (true) {
-    while (i < text.size() && is_space(text[i])) ++i;
-    if (i == text.size()) break;
-    if (text[i] == '/' && i + 1 == text.size()) break;  // self-closing
-    const std::size_t key_start = i;
-    while (i < text.size() && text[i] != '=' && !is_space(text[i])) ++i;
-    const std::string key(text.substr(key_start, i - key_start));
-    while (i < text.size() && is_space(text[i])) ++i;
-    if (key.empty() || i == text.size() || text[i] != '=')
-      file.fail("malformed XML header: attribute '" + key + "' of <" + tag.name + "> has no value");
-    ++i;
-    while (i < text.size() && is_space(text[i])) ++i;
-    if (i == text.size() || (text[i] != '"' && text[i] != '\''))
-      file.fail("malformed XML header: attribute '" + key + "' of <" + tag.name +
-                "> is not quoted");
-    const char quote = text[i++];
-    const std::size_t close = text.find(quote, i);
-    if (close == std::string_view::npos)
-      file.fail("malformed XML header: unterminated value of '" + key + "' in <" + tag.name + ">");
-    const auto value = decode_entities(text.substr(i, close - i));
-    if (!value)
-      file.fail("malformed XML header: unknown entity in '" + key + "' of <" + tag.name + ">");
-    if (!tag.attributes.emplace(key, *value).second)
-      file.fail("malformed XML header: attribute '" + key + "' repeated in <" + tag.name + ">");
-    i = close + 1;
-  }
-  return tag;
-}
-
-const std::string* attribute(const Tag& tag, const std::string& key) {
-  const auto it = tag.attributes.find(key);
-  return it == tag.attributes.end() ? nullptr : &it->second;
-}
-
-std::string require_attribute(const VtuFile& file, const Tag& tag, const std::string& key) {
-  const std::string* value = attribute(tag, key);
-  if (value == nullptr) file.fail("<" + tag.name + "> has no " + key + " attribute");
-  return *value;
-}
-
-std::uint64_t require_unsigned(const VtuFile& file, const Tag& tag, const std::string& key) {
-  const std::string text = require_attribute(file, tag, key);
-  const auto value = parse_unsigned(text);
-  if (!value)
-    file.fail("<" + tag.name + "> " + key + "=\"" + text + "\" is not an unsigned integer");
-  return *value;
-}
 
 const char* section_name(Section s) {
   switch (s) {
