@@ -137,13 +137,6 @@ std::pair<double, double> planarity(const Mesh& mesh, const std::vector<int>& tr
   return {deviation, kPlanarityTolerance * mean_edge};
 }
 
-/// "[x, y, z]" with the case file's number format.
-std::string vector_text(const Vec3d& v) {
-  std::string out = "[";  // appended, not "[" + ...: g++ 12 warns falsely (-Wrestrict) there
-  for (int i = 0; i < 3; ++i) out += format_number(v[i]) + (i < 2 ? ", " : "]");
-  return out;
-}
-
 /// A probe reports at a material point of the body: one farther from the mesh than the longest
 /// edge of the element nearest to it lies off the body (a wrong coordinate or unit). A probe of
 /// the thickness needs a wall.
@@ -159,11 +152,11 @@ void check_probe(const Case& c, const Mesh& mesh, const Probe& probe) {
                                       .norm());
   if (at.distance > longest)
     throw InputError(probe.point_place,
-                     what + ": the point " + vector_text(probe.point) + " is " +
+                     what + ": the point " + schema::format_vector(probe.point) + " is " +
                          format_number(at.distance) + " mm from the body (its nearest point " +
-                         vector_text(at.position) + "), farther than the longest edge of the " +
-                         "element there (" + format_number(longest) +
-                         " mm): give a point on the body");
+                         schema::format_vector(at.position) +
+                         "), farther than the longest edge of the " + "element there (" +
+                         format_number(longest) + " mm): give a point on the body");
   const bool thickness = std::find(probe.fields.begin(), probe.fields.end(),
                                    ProbeField::thickness) != probe.fields.end();
   if (thickness && !(c.mesh.wall_thickness() && wall_faces(mesh)))

@@ -127,6 +127,12 @@ std::string format_number(double value) {
   return out.str();
 }
 
+std::string format_vector(const Vec3d& v) {
+  std::string out = "[";  // appended, not "[" + ...: g++ 12 warns falsely (-Wrestrict) there
+  for (int i = 0; i < 3; ++i) out += format_number(v[i]) + (i < 2 ? ", " : "]");
+  return out;
+}
+
 std::string join(const std::vector<std::string>& words, const std::string& separator) {
   std::string out;
   for (std::size_t i = 0; i < words.size(); ++i) out += (i ? separator : "") + words[i];

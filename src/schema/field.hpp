@@ -51,6 +51,8 @@ std::optional<std::string> closest_match(const std::string& word,
                                          const std::vector<std::string>& candidates);
 /// A number as written in messages (up to 12 significant digits), e.g. "0.0033".
 std::string format_number(double value);
+/// "[x, y, z]" with format_number's digits.
+std::string format_vector(const Vec3d& v);
 /// "a, b, c".
 std::string join(const std::vector<std::string>& words, const std::string& separator = ", ");
 

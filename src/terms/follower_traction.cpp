@@ -53,9 +53,7 @@ TermKind follower_traction_kind() {
     return std::make_unique<FollowerTraction>(c.mesh, load.name, load.surface.name, values,
                                               load.ramp, c.constraints);
   };
-  d.ramps = [](const S& load) {
-    return std::vector<RampUse>{{load.ramp, "load '" + load.name + "'"}};
-  };
+  d.ramps = load_ramps<S>;
   d.history = load_force_outputs();
   return make_term_kind(std::move(d));
 }

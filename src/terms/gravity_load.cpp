@@ -30,9 +30,7 @@ TermKind gravity_load_kind() {
     return std::make_unique<BodyForce>(c.mesh, load.name, load.acceleration, load.ramp,
                                        c.element_densities());
   };
-  d.ramps = [](const S& load) {
-    return std::vector<RampUse>{{load.ramp, "load '" + load.name + "'"}};
-  };
+  d.ramps = load_ramps<S>;
   // A body force writes no history column of its own (its total is the weight of the body).
   return make_term_kind(std::move(d));
 }

@@ -106,6 +106,12 @@ typename Schema<S>::Row& load_ramp_key(Schema<S>& schema, std::type_identity_t<R
   return ramp_key(schema, member, "time ramp of the load");
 }
 
+/// The ramp of a `loads:` entry, which `plisse check` compares with solver.end_time.
+template <class S>
+std::vector<RampUse> load_ramps(const S& load) {
+  return {{load.ramp, "load '" + load.name + "'"}};
+}
+
 /// The history columns of the loads given as forces on a surface or a node (traction,
 /// point-force, follower-traction): the total force and its work.
 std::vector<OutputEntry> load_force_outputs();

@@ -11,13 +11,6 @@ namespace {
 
 using schema::format_number;
 
-/// "[x, y, z]" with the case file's number format.
-std::string vector_text(const Vec3d& v) {
-  std::string out = "[";  // appended, not "[" + ...: g++ 12 warns falsely (-Wrestrict) there
-  for (int i = 0; i < 3; ++i) out += format_number(v[i]) + (i < 2 ? ", " : "]");
-  return out;
-}
-
 /// The force acts on the node nearest its point: a point farther from that node than the longest
 /// edge there lies off the body (a wrong coordinate or unit), and is refused.
 void check_point_on_body(const PointForceSettings& load, const Mesh& mesh) {
@@ -26,10 +19,11 @@ void check_point_on_body(const PointForceSettings& load, const Mesh& mesh) {
   const double longest = longest_edge_at(mesh, v);
   if (distance > longest)
     throw InputError(load.point_place,
-                     "point-force '" + load.name + "': the point " + vector_text(load.point) +
-                         " is " + format_number(distance) + " mm from the nearest node " +
-                         vector_text(mesh.nodes[v]) + ", farther than the longest edge there (" +
-                         format_number(longest) + " mm): give a point on the body");
+                     "point-force '" + load.name + "': the point " +
+                         schema::format_vector(load.point) + " is " + format_number(distance) +
+                         " mm from the nearest node " + schema::format_vector(mesh.nodes[v]) +
+                         ", farther than the longest edge there (" + format_number(longest) +
+                         " mm): give a point on the body");
 }
 
 }  // namespace
@@ -79,9 +73,7 @@ TermKind point_force_kind() {
         load.name, std::vector<NodalForce>{{nearest_node(c.mesh, load.point), *load.force}},
         load.ramp);
   };
-  d.ramps = [](const S& load) {
-    return std::vector<RampUse>{{load.ramp, "load '" + load.name + "'"}};
-  };
+  d.ramps = load_ramps<S>;
   d.notes = [](const S& load, const Mesh& mesh) {
     const int v = nearest_node(mesh, load.point);
     const Vec3d& x = mesh.nodes[v];

@@ -27,9 +27,7 @@ TermKind pressure_load_kind() {
     return std::make_unique<PressureLoad>(c.mesh, load.name, load.surface.name, load.value,
                                           load.ramp, c.constraints, c.mirrors);
   };
-  d.ramps = [](const S& load) {
-    return std::vector<RampUse>{{load.ramp, "load '" + load.name + "'"}};
-  };
+  d.ramps = load_ramps<S>;
   d.history = {
       {"pressure:<load>", "MPa", "`loads[]` of type pressure",
        "the pressure at t, `value` times its ramp; positive pushes against the body's outward "

@@ -55,9 +55,7 @@ TermKind traction_load_kind() {
                                                     : total_force(c.mesh, faces, *load.force),
                                       load.ramp);
   };
-  d.ramps = [](const S& load) {
-    return std::vector<RampUse>{{load.ramp, "load '" + load.name + "'"}};
-  };
+  d.ramps = load_ramps<S>;
   d.history = load_force_outputs();
   return make_term_kind(std::move(d));
 }
