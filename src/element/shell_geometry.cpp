@@ -1,0 +1,127 @@
+#include "element/shell_geometry.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace plisse::shell {
+
+namespace {
+
+/// Derivatives (∂/∂ξ, ∂/∂η) of the six patch functions of (KL2) at (ξ, η), one row per node.
+SideCoefficients natural_derivatives(double xi, double eta) {
+  const double s = xi + eta;
+  SideCoefficients d;
+  d.row(0) << -(1.0 - eta), -(1.0 - xi);
+  d.row(1) << 1.0 - eta, 1.0 - xi - 2.0 * eta;
+  d.row(2) << 1.0 - 2.0 * xi - eta, 1.0 - xi;
+  d.row(3) << s - 0.5, s - 0.5;
+  d.row(4) << xi - 0.5, 0.0;
+  d.row(5) << 0.0, eta - 0.5;
+  return d;
+}
+
+/// The midpoint of side i in the natural coordinates of the triangle (KL2).
+Vec2d side_midpoint(int i) {
+  static const std::array<Vec2d, 3> m = {Vec2d(0.5, 0.5), Vec2d(0.0, 0.5), Vec2d(0.5, 0.0)};
+  return m[i];
+}
+
+/// The reference frame of the triangle (KL3) and its area; throws for a degenerate triangle.
+Mat3d triangle_frame(const PatchPositions& X, double& area) {
+  const Vec3d g = (X[1] - X[0]).cross(X[2] - X[0]);
+  const double edge = (X[1] - X[0]).norm();
+  area = 0.5 * g.norm();
+  PLISSE_CHECK(std::isfinite(area) && area > 1e-12 * edge * edge && edge > 0.0,
+               "shell patch: degenerate triangle (area " << area << " mm²)");
+  Mat3d frame;
+  frame.col(0) = (X[1] - X[0]) / edge;
+  frame.col(2) = g.normalized();
+  frame.col(1) = frame.col(2).cross(frame.col(0));
+  return frame;
+}
+
+/// 2-D coordinates of the six nodes in the triangle's plane; a missing neighbour is the mirror
+/// image of the opposite node through its side's midpoint (KL8).
+std::array<Vec2d, kPatchNodes> plane_coordinates(const PatchPositions& X, const Mat3d& frame,
+                                                 const NeighbourFlags& has_neighbour) {
+  std::array<Vec2d, kPatchNodes> p;
+  for (int n = 0; n < kPatchNodes; ++n) {
+    p[n] = frame.leftCols<2>().transpose() * (X[n] - X[0]);
+  }
+  for (int i = 0; i < 3; ++i) {
+    if (!has_neighbour[i]) p[3 + i] = p[(i + 1) % 3] + p[(i + 2) % 3] - p[i];
+  }
+  return p;
+}
+
+/// c^i of (KL3), with a missing neighbour's coefficients moved onto the nodes its mirror image
+/// is made of (KL8).
+SideCoefficients side_coefficients(const std::array<Vec2d, kPatchNodes>& p, int i,
+                                   bool has_neighbour) {
+  const Vec2d m = side_midpoint(i);
+  const SideCoefficients dN = natural_derivatives(m.x(), m.y());
+  Mat2d J = Mat2d::Zero();  // J(a, b) = ∂X̃_a/∂ξ_b
+  for (int n = 0; n < kPatchNodes; ++n) J += p[n] * dN.row(n);
+  const double det = J.determinant();
+  const double scale = J.squaredNorm();
+  PLISSE_CHECK(std::isfinite(det) && det > 1e-8 * scale, "shell patch: the quadratic map of side "
+                                                             << i << " is singular or folded (det "
+                                                             << det << ")");
+  SideCoefficients c = dN * J.inverse();  // row n: (J⁻ᵀ ∇_ξ N_n)ᵀ
+  if (!has_neighbour) {
+    const int ghost = 3 + i;
+    c.row((i + 1) % 3) += c.row(ghost);
+    c.row((i + 2) % 3) += c.row(ghost);
+    c.row(i) -= c.row(ghost);
+    c.row(ghost).setZero();
+  }
+  return c;
+}
+
+/// Gradients of the linear shape functions of the triangle, one row per node (KL6).
+Eigen::Matrix<double, 3, 2> linear_gradients(const std::array<Vec2d, kPatchNodes>& p) {
+  const double two_area =
+      (p[1] - p[0]).x() * (p[2] - p[0]).y() - (p[1] - p[0]).y() * (p[2] - p[0]).x();
+  Eigen::Matrix<double, 3, 2> L;
+  for (int i = 0; i < 3; ++i) {
+    const Vec2d& pj = p[(i + 1) % 3];
+    const Vec2d& pk = p[(i + 2) % 3];
+    L.row(i) << (pj.y() - pk.y()) / two_area, (pk.x() - pj.x()) / two_area;
+  }
+  return L;
+}
+
+/// k^{αβ} of (KL6) for (11, 22, 12).
+std::array<NodeWeights, 3> curvature_weights(const std::array<SideCoefficients, 3>& c,
+                                             const Eigen::Matrix<double, 3, 2>& L) {
+  std::array<NodeWeights, 3> k;
+  for (auto& w : k) w.setZero();
+  for (int i = 0; i < 3; ++i) {
+    k[0] -= 2.0 * L(i, 0) * c[i].col(0);
+    k[1] -= 2.0 * L(i, 1) * c[i].col(1);
+    k[2] -= L(i, 0) * c[i].col(1) + L(i, 1) * c[i].col(0);
+  }
+  return k;
+}
+
+}  // namespace
+
+ShellGeometry compute_shell_geometry(const PatchPositions& X, const NeighbourFlags& has_neighbour) {
+  ShellGeometry g;
+  g.has_neighbour = has_neighbour;
+  g.frame = triangle_frame(X, g.area);
+  const std::array<Vec2d, kPatchNodes> p = plane_coordinates(X, g.frame, has_neighbour);
+  for (int i = 0; i < 3; ++i) g.side[i] = side_coefficients(p, i, has_neighbour[i]);
+  g.curvature = curvature_weights(g.side, linear_gradients(p));
+  for (int n = 0; n < kPatchNodes; ++n) {
+    const bool used = n < kTriangleNodes || has_neighbour[n - kTriangleNodes];
+    g.X.segment<3>(3 * n) = used ? X[n] : Vec3d::Zero();
+  }
+  g.reference_metric = mean_metric(g, g.X);
+  const std::array<Vec3d, 3> V = curvature_vectors(g, g.X);
+  for (int c = 0; c < 3; ++c) g.reference_curvature(c) = g.frame.col(2).dot(V[c]);
+  return g;
+}
+
+}  // namespace plisse::shell

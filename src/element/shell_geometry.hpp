@@ -1,0 +1,91 @@
+#pragma once
+/// Reference geometry of one patch of the rotation-free shell triangle (EBST,
+/// docs/theory/shell.md): the triangle, the three nodes opposite its sides, and the coefficients
+/// that turn nodal positions into the gradients on the sides (KL3), the membrane strain (KL4) and
+/// the curvature (KL6). Computed once per element from the reference positions; the kernels
+/// (element/shell.hpp) only read it.
+///
+/// Node order (KL1): 0, 1, 2 the triangle, counter-clockwise about its normal; 3 + i the node of
+/// the neighbour across side i, the side opposite node i (side 0 joins 1-2, side 1 joins 2-0,
+/// side 2 joins 0-1). Unknowns: node n's three translations at 3n, 3n + 1, 3n + 2.
+#include <array>
+
+#include "core/types.hpp"
+
+namespace plisse::shell {
+
+inline constexpr int kPatchNodes = 6;
+inline constexpr int kTriangleNodes = 3;
+inline constexpr int kPatchDofs = 3 * kPatchNodes;
+/// Generalized strains s = (ε11, ε22, ε12, κ11, κ22, κ12) (KL15).
+inline constexpr int kStrains = 6;
+
+using Vec2d = Eigen::Vector2d;
+using Mat2d = Eigen::Matrix2d;
+using Mat32d = Eigen::Matrix<double, 3, 2>;
+using PatchVec = Eigen::Matrix<double, kPatchDofs, 1>;
+using PatchMat = Eigen::Matrix<double, kPatchDofs, kPatchDofs>;
+using StrainVec = Eigen::Matrix<double, kStrains, 1>;
+using StrainMat = Eigen::Matrix<double, kStrains, kStrains>;
+using PatchPositions = std::array<Vec3d, kPatchNodes>;
+/// For each node, the coefficients of one side's gradient (KL3): φ'_α = Σ_n c(n, α) x_n.
+using SideCoefficients = Eigen::Matrix<double, kPatchNodes, 2>;
+/// For each node, the coefficient of one component of v (KL6): v = Σ_n k(n) x_n.
+using NodeWeights = Eigen::Matrix<double, kPatchNodes, 1>;
+
+/// Which sides have a neighbour; a missing one is a free or hinged edge (KL8).
+using NeighbourFlags = std::array<bool, 3>;
+
+/// The reference geometry of a patch. Plain data; thread-safe to share between kernels.
+struct ShellGeometry {
+  PatchVec X;                            ///< reference positions of the 6 nodes [mm] (a missing
+                                         ///< neighbour's entries are ignored)
+  Mat3d frame;                           ///< columns e1, e2, e3 of the triangle (KL3)
+  double area = 0.0;                     ///< A0 [mm²]
+  NeighbourFlags has_neighbour{};        ///< false: the side is an edge of the mesh (KL8)
+  std::array<SideCoefficients, 3> side;  ///< c^i [1/mm] (KL3), a missing neighbour folded in
+  std::array<NodeWeights, 3> curvature;  ///< k^{αβ} for (11, 22, 12) [1/mm²] (KL6)
+  Vec3d reference_metric;                ///< Ā as (11, 22, 12) [-] (KL4)
+  Vec3d reference_curvature;             ///< B as (11, 22, 12) [1/mm] (KL6)
+};
+
+/// The geometry of the patch with reference positions X (entries 3 + i ignored when side i has
+/// no neighbour). Throws plisse::Error for a degenerate triangle or a side whose quadratic map is
+/// singular (a neighbour on the side's line, or folded over onto the triangle).
+ShellGeometry compute_shell_geometry(const PatchPositions& X, const NeighbourFlags& has_neighbour);
+
+/// The gradient on side i (3 × 2, columns φ'_1, φ'_2) of the patch at positions x (KL3).
+inline Mat32d side_gradient(const ShellGeometry& g, const PatchVec& x, int i) {
+  Mat32d d = Mat32d::Zero();
+  for (int n = 0; n < kPatchNodes; ++n) {
+    d += x.segment<3>(3 * n) * g.side[i].row(n);
+  }
+  return d;
+}
+
+/// ā of (KL4) as (11, 22, 12): the mean of the three side metrics at positions x.
+inline Vec3d mean_metric(const ShellGeometry& g, const PatchVec& x) {
+  Vec3d a = Vec3d::Zero();
+  for (int i = 0; i < 3; ++i) {
+    const Mat32d d = side_gradient(g, x, i);
+    a += Vec3d(d.col(0).squaredNorm(), d.col(1).squaredNorm(), d.col(0).dot(d.col(1))) / 3.0;
+  }
+  return a;
+}
+
+/// v_αβ of (KL6) for (11, 22, 12) at positions x: b_αβ = t3 · v_αβ.
+inline std::array<Vec3d, 3> curvature_vectors(const ShellGeometry& g, const PatchVec& x) {
+  std::array<Vec3d, 3> v;
+  for (int c = 0; c < 3; ++c) {
+    v[c].setZero();
+    for (int n = 0; n < kPatchNodes; ++n) v[c] += g.curvature[c](n) * x.segment<3>(3 * n);
+  }
+  return v;
+}
+
+/// The unnormalised normal g = (x1 - x0) × (x2 - x0) of the triangle at positions x (KL5).
+inline Vec3d triangle_normal(const PatchVec& x) {
+  return (x.segment<3>(3) - x.segment<3>(0)).cross(x.segment<3>(6) - x.segment<3>(0));
+}
+
+}  // namespace plisse::shell

@@ -1,0 +1,226 @@
+/// The shell triangle's kernel (docs/theory/shell.md): the thickness rule, the plane-stress
+/// derivatives (KL10, KL11), the residual and tangent against finite differences for every
+/// registry model (KL15-KL18), and rigid motions.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "shell_test_support.hpp"
+
+namespace plisse::test {
+namespace {
+
+using namespace plisse::shell;
+
+TEST(ShellSection, GaussLegendreIsExactToDegreeTwoNMinusOne) {
+  const double t = 0.8;
+  for (int n = kMinThicknessPoints; n <= kMaxThicknessPoints; ++n) {
+    const ShellSection s = make_shell_section(t, n);
+    // ∫ ζ^k dζ over [-t/2, t/2] for the highest even degree the rule must integrate, 2n - 2,
+    // and the sum of the weights (k = 0); round-off only: 1e-14 relative.
+    for (int k : {0, 2 * n - 2}) {
+      double sum = 0.0;
+      for (int g = 0; g < n; ++g) sum += s.weight[g] * std::pow(s.zeta[g], k);
+      const double exact = 2.0 * std::pow(t / 2.0, k + 1) / (k + 1);
+      EXPECT_NEAR(sum, exact, 1e-14 * exact) << n << " points, degree " << k;
+    }
+  }
+  EXPECT_THROW(make_shell_section(t, 1), Error);
+  EXPECT_THROW(make_shell_section(-t, 5), Error);
+}
+
+/// A random in-plane C₂ with stretches between about 0.7 and 1.4, and a random frame.
+Mat2d random_C2(std::mt19937& rng) {
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  Mat2d F;
+  F << 1.0 + 0.3 * unit(rng), 0.3 * unit(rng), 0.3 * unit(rng), 1.0 + 0.3 * unit(rng);
+  return F.transpose() * F;
+}
+
+Vec3d components(const Mat2d& C) { return Vec3d(C(0, 0), C(1, 1), C(0, 1)); }
+
+Mat2d from_components(const Vec3d& c) {
+  Mat2d C;
+  C << c(0), c(2), c(2), c(1);
+  return C;
+}
+
+TEST(ShellPlaneStress, DerivativesMatchFiniteDifferencesForEveryModel) {
+  std::mt19937 rng(3);
+  const Mat3d frame = Eigen::AngleAxisd(0.7, Vec3d(1, -1, 2).normalized()).toRotationMatrix();
+  for (const AnyMaterial& material : every_material()) {
+    const Vec3d c = components(random_C2(rng)) + Vec3d(0.2, 0.2, 0.0);  // fibres stretched
+    auto response = [&](const Vec3d& cc) {
+      return std::visit(
+          [&](const auto& m) { return evaluate_plane_stress(m, 0, from_components(cc), frame); },
+          material);
+    };
+    const PlaneStressResponse r = response(c);
+    // Central differences with h = 1e-6: truncation ~ h² |W'''| ~ 1e-12, round-off
+    // ~ 1e-16 |W| / h ~ 1e-10; the derivatives are O(1) MPa, so 1e-7 leaves a margin of 1000.
+    const double h = 1e-6;
+    for (int a = 0; a < 3; ++a) {
+      const Vec3d e = h * Vec3d::Unit(a);
+      const PlaneStressResponse plus = response(c + e);
+      const PlaneStressResponse minus = response(c - e);
+      EXPECT_NEAR(r.dW(a), (plus.W - minus.W) / (2 * h), 1e-7) << material_name(material);
+      const Vec3d column = (plus.dW - minus.dW) / (2 * h);
+      for (int b = 0; b < 3; ++b) {
+        EXPECT_NEAR(r.d2W(b, a), column(b), 1e-7) << material_name(material) << " " << a << b;
+      }
+    }
+  }
+}
+
+TEST(ShellPlaneStress, NeoHookeanClosedForm) {
+  // W₂ = c1 (C11 + C22 + 1/det C₂ - 3) for the neo-Hookean model at det F = 1 (KL9); its
+  // derivative in C11 is c1 (1 - C22 / det²). Round-off only: 1e-13.
+  const NeoHookean nh{0.5};
+  std::mt19937 rng(5);
+  const Mat2d C = random_C2(rng);
+  const PlaneStressResponse r = evaluate_plane_stress(nh, 0, C, Mat3d::Identity());
+  const double det = C.determinant();
+  EXPECT_NEAR(r.W, 0.5 * (C.trace() + 1.0 / det - 3.0), 1e-13);
+  EXPECT_NEAR(r.dW(0), 0.5 * (1.0 - C(1, 1) / (det * det)), 1e-13);
+}
+
+/// The reference patch and a deformed state of it: the curved patch stretched by 15 % in every
+/// direction and moved randomly by up to 5 % of its size.
+struct PatchState {
+  ShellGeometry geometry;
+  PatchVec u;
+};
+
+PatchState deformed_curved_patch(unsigned seed, const NeighbourFlags& neighbours) {
+  const PatchPositions X = curved_patch(seed);
+  PatchState s{compute_shell_geometry(X, neighbours), PatchVec::Zero()};
+  std::mt19937 rng(seed + 100);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const Vec3d centre = X[0];
+  for (int n = 0; n < kPatchNodes; ++n) {
+    const Vec3d Xn = s.geometry.X.segment<3>(3 * n);
+    s.u.segment<3>(3 * n) = 0.15 * (Xn - centre) + 0.05 * Vec3d(unit(rng), unit(rng), unit(rng));
+  }
+  return s;
+}
+
+/// The largest difference between the residual and central differences of the energy, and
+/// between the tangent and central differences of the residual, each relative to the largest
+/// entry of what it checks.
+struct FiniteDifferenceErrors {
+  double residual = 0.0;
+  double tangent = 0.0;
+};
+
+FiniteDifferenceErrors compare_with_finite_differences(const PatchState& s,
+                                                       const ShellSection& section,
+                                                       const AnyMaterial& material, double h) {
+  PatchVec r;
+  PatchMat K;
+  EXPECT_TRUE(assemble_shell(s.geometry, section, s.u, material, r, &K).ok);
+  PatchVec r_fd;
+  PatchMat K_fd;
+  for (int j = 0; j < kPatchDofs; ++j) {
+    PatchVec up = s.u;
+    PatchVec um = s.u;
+    up(j) += h;
+    um(j) -= h;
+    PatchVec rp;
+    PatchVec rm;
+    const double Ep = assemble_shell(s.geometry, section, up, material, rp, nullptr).energy;
+    const double Em = assemble_shell(s.geometry, section, um, material, rm, nullptr).energy;
+    r_fd(j) = (Ep - Em) / (2 * h);
+    K_fd.col(j) = (rp - rm) / (2 * h);
+  }
+  return {(r - r_fd).cwiseAbs().maxCoeff() / r.cwiseAbs().maxCoeff(),
+          (K - K_fd).cwiseAbs().maxCoeff() / K.cwiseAbs().maxCoeff()};
+}
+
+TEST(ShellKernel, ResidualAndTangentMatchFiniteDifferencesForEveryModel) {
+  const ShellSection section = make_shell_section(0.1);
+  const std::vector<NeighbourFlags> cases = {{true, true, true}, {true, false, true}};
+  for (const NeighbourFlags& neighbours : cases) {
+    const PatchState s = deformed_curved_patch(7, neighbours);
+    for (const AnyMaterial& material : every_material()) {
+      // h = 1e-6 mm on a patch of 1 mm: truncation ~ h² ~ 1e-12 and round-off ~ 1e-16 / h
+      // ~ 1e-10 relative to the entries; 1e-7 relative leaves a margin of 1000 and is far below
+      // any wrong term (a missing term of KL16 or KL18 shows at 1e-2 or more).
+      const FiniteDifferenceErrors e = compare_with_finite_differences(s, section, material, 1e-6);
+      EXPECT_LT(e.residual, 1e-7) << material_name(material) << ", side 1 free: " << !neighbours[1];
+      EXPECT_LT(e.tangent, 1e-7) << material_name(material) << ", side 1 free: " << !neighbours[1];
+    }
+  }
+}
+
+TEST(ShellKernel, TangentIsSymmetricAndMissingNeighbourIsUncoupled) {
+  const PatchState s = deformed_curved_patch(11, {true, true, false});
+  PatchVec r;
+  PatchMat K;
+  ASSERT_TRUE(assemble_shell(s.geometry, make_shell_section(0.1), s.u, NeoHookean{0.5}, r, &K).ok);
+  // A Hessian: symmetric to round-off (1e-12 of its largest entry).
+  EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-12 * K.cwiseAbs().maxCoeff());
+  // Node 5 (across side 2) is missing: exactly zero rows and columns (KL8).
+  EXPECT_EQ(r.segment<3>(15).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(K.middleRows<3>(15).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(K.middleCols<3>(15).cwiseAbs().maxCoeff(), 0.0);
+}
+
+/// x -> Q x + c applied to every node's current position, as a displacement of the patch.
+PatchVec moved_rigidly(const ShellGeometry& g, const PatchVec& u, const Mat3d& Q, const Vec3d& c) {
+  PatchVec out;
+  for (int n = 0; n < kPatchNodes; ++n) {
+    const Vec3d X = g.X.segment<3>(3 * n);
+    out.segment<3>(3 * n) = Q * (X + u.segment<3>(3 * n)) + c - X;
+  }
+  return out;
+}
+
+TEST(ShellKernel, RigidMotionsChangeNothing) {
+  const ShellSection section = make_shell_section(0.1);
+  const Mat3d Q = Eigen::AngleAxisd(1.1, Vec3d(0.3, -1, 0.6).normalized()).toRotationMatrix();
+  const Vec3d c(0.7, -2.0, 1.3);
+  const NeoHookean nh{0.5};
+  const PatchState s = deformed_curved_patch(13, {true, true, true});
+  PatchVec r;
+  PatchMat K;
+  // From the reference: zero energy and residual. Scale: the energy of a 10 % strain is about
+  // μ (0.1)² t A ~ 5e-4 mJ and its forces ~ 5e-3 N; round-off leaves 1e-13 of that.
+  const PatchVec rigid = moved_rigidly(s.geometry, PatchVec::Zero(), Q, c);
+  const ShellStatus at_rest = assemble_shell(s.geometry, section, rigid, nh, r, &K);
+  EXPECT_NEAR(at_rest.energy, 0.0, 1e-15);
+  EXPECT_LT(r.cwiseAbs().maxCoeff(), 1e-14);
+  // The tangent at rest annihilates the infinitesimal rotations and translations.
+  PatchVec mode;
+  for (int n = 0; n < kPatchNodes; ++n) {
+    const Vec3d x = s.geometry.X.segment<3>(3 * n) + rigid.segment<3>(3 * n);
+    mode.segment<3>(3 * n) = Vec3d(0.2, -0.5, 1.0).cross(x) + Vec3d(1.0, 0.4, -0.3);
+  }
+  EXPECT_LT((K * mode).cwiseAbs().maxCoeff(), 1e-12 * K.cwiseAbs().maxCoeff() * mode.norm());
+  // From a deformed state: the same energy, the residual turned with the patch (relative 1e-12).
+  PatchVec r0;
+  const double E0 = assemble_shell(s.geometry, section, s.u, nh, r0, nullptr).energy;
+  const ShellStatus moved =
+      assemble_shell(s.geometry, section, moved_rigidly(s.geometry, s.u, Q, c), nh, r, nullptr);
+  EXPECT_NEAR(moved.energy, E0, 1e-12 * E0);
+  for (int n = 0; n < kPatchNodes; ++n) {
+    EXPECT_LT((r.segment<3>(3 * n) - Q * r0.segment<3>(3 * n)).norm(), 1e-12 * r0.norm());
+  }
+}
+
+TEST(ShellKernel, InadmissibleStateIsReportedNotThrown) {
+  const PatchState s = deformed_curved_patch(17, {true, true, true});
+  PatchVec u = PatchVec::Zero();
+  // Node 1 onto node 0: the triangle collapses.
+  u.segment<3>(3) = s.geometry.X.segment<3>(0) - s.geometry.X.segment<3>(3);
+  PatchVec r;
+  PatchMat K;
+  const ShellStatus status =
+      assemble_shell(s.geometry, make_shell_section(0.1), u, NeoHookean{0.5}, r, &K);
+  EXPECT_FALSE(status.ok);
+  EXPECT_EQ(r.cwiseAbs().maxCoeff(), 0.0);
+}
+
+}  // namespace
+}  // namespace plisse::test
