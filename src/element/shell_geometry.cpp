@@ -8,6 +8,10 @@ namespace plisse::shell {
 
 namespace {
 
+/// Below this ratio of the smallest to the largest singular value of the fit (KL3a) the six nodes
+/// are taken to lie on a conic and the isoparametric interpolation (KL3) is used instead.
+constexpr double kMinFitConditioning = 1e-6;
+
 /// Derivatives (∂/∂ξ, ∂/∂η) of the six patch functions of (KL2) at (ξ, η), one row per node.
 SideCoefficients natural_derivatives(double xi, double eta) {
   const double s = xi + eta;
@@ -55,28 +59,56 @@ std::array<Vec2d, kPatchNodes> plane_coordinates(const PatchPositions& X, const 
   return p;
 }
 
-/// c^i of (KL3), with a missing neighbour's coefficients moved onto the nodes its mirror image
-/// is made of (KL8).
-SideCoefficients side_coefficients(const std::array<Vec2d, kPatchNodes>& p, int i,
-                                   bool has_neighbour) {
+/// The gradient on side i of the isoparametric quadratic patch (KL2): c^i = ∇_ξN (m_i) 𝐉_i⁻¹.
+/// Throws for a singular or folded map.
+SideCoefficients isoparametric_side_coefficients(const std::array<Vec2d, kPatchNodes>& p, int i) {
   const Vec2d m = side_midpoint(i);
   const SideCoefficients dN = natural_derivatives(m.x(), m.y());
   Mat2d J = Mat2d::Zero();  // J(a, b) = ∂X̃_a/∂ξ_b
   for (int n = 0; n < kPatchNodes; ++n) J += p[n] * dN.row(n);
   const double det = J.determinant();
-  const double scale = J.squaredNorm();
-  PLISSE_CHECK(std::isfinite(det) && det > 1e-8 * scale, "shell patch: the quadratic map of side "
-                                                             << i << " is singular or folded (det "
-                                                             << det << ")");
-  SideCoefficients c = dN * J.inverse();  // row n: (J⁻ᵀ ∇_ξ N_n)ᵀ
-  if (!has_neighbour) {
-    const int ghost = 3 + i;
-    c.row((i + 1) % 3) += c.row(ghost);
-    c.row((i + 2) % 3) += c.row(ghost);
-    c.row(i) -= c.row(ghost);
-    c.row(ghost).setZero();
+  PLISSE_CHECK(std::isfinite(det) && det > 1e-8 * J.squaredNorm(),
+               "shell patch: the quadratic map of side " << i << " is singular or folded (det "
+                                                         << det << ")");
+  return dN * J.inverse();  // row n: (J⁻ᵀ ∇_ξ N_n)ᵀ
+}
+
+/// The gradients on the three sides of the quadratic polynomial in the plane coordinates that
+/// takes the six nodal values (KL3a): exact for every quadratic field on any patch. False when
+/// the six points lie (nearly) on a conic, where that polynomial is not unique.
+bool fitted_side_coefficients(const std::array<Vec2d, kPatchNodes>& p,
+                              std::array<SideCoefficients, 3>& c) {
+  const Vec2d centre = (p[0] + p[1] + p[2]) / 3.0;
+  const double scale = (p[1] - p[0]).norm();
+  auto scaled = [&](const Vec2d& q) { return Vec2d((q - centre) / scale); };
+  Eigen::Matrix<double, kPatchNodes, kPatchNodes> V;  // row n: (1, x, y, x², xy, y²) at node n
+  for (int n = 0; n < kPatchNodes; ++n) {
+    const Vec2d q = scaled(p[n]);
+    V.row(n) << 1.0, q.x(), q.y(), q.x() * q.x(), q.x() * q.y(), q.y() * q.y();
   }
-  return c;
+  // The ratio of the extreme singular values, not an LU estimate: the estimate can miss an
+  // exactly singular V.
+  const Eigen::Vector<double, kPatchNodes> sv =
+      Eigen::JacobiSVD<Eigen::Matrix<double, kPatchNodes, kPatchNodes>>(V).singularValues();
+  if (!(sv(kPatchNodes - 1) > kMinFitConditioning * sv(0))) return false;
+  const Eigen::Matrix<double, kPatchNodes, kPatchNodes> V_inverse_T =
+      V.partialPivLu().inverse().transpose();
+  for (int i = 0; i < 3; ++i) {
+    const Vec2d m = scaled(0.5 * (p[(i + 1) % 3] + p[(i + 2) % 3]));
+    SideCoefficients dP;  // ∂(1, x, y, x², xy, y²)/∂X_α at the side's midpoint
+    dP << 0, 0, 1, 0, 0, 1, 2 * m.x(), 0, m.y(), m.x(), 0, 2 * m.y();
+    c[i] = V_inverse_T * dP / scale;
+  }
+  return true;
+}
+
+/// A missing neighbour's coefficients moved onto the nodes its mirror image is made of (KL8).
+void fold_mirror_node(SideCoefficients& c, int missing_side) {
+  const int ghost = 3 + missing_side;
+  c.row((missing_side + 1) % 3) += c.row(ghost);
+  c.row((missing_side + 2) % 3) += c.row(ghost);
+  c.row(missing_side) -= c.row(ghost);
+  c.row(ghost).setZero();
 }
 
 /// Gradients of the linear shape functions of the triangle, one row per node (KL6).
@@ -112,8 +144,18 @@ ShellGeometry compute_shell_geometry(const PatchPositions& X, const NeighbourFla
   g.has_neighbour = has_neighbour;
   g.frame = triangle_frame(X, g.area);
   const std::array<Vec2d, kPatchNodes> p = plane_coordinates(X, g.frame, has_neighbour);
-  for (int i = 0; i < 3; ++i) g.side[i] = side_coefficients(p, i, has_neighbour[i]);
-  g.curvature = curvature_weights(g.side, linear_gradients(p));
+  const Eigen::Matrix<double, 3, 2> L = linear_gradients(p);
+  g.fitted = fitted_side_coefficients(p, g.side);
+  if (!g.fitted) {
+    for (int i = 0; i < 3; ++i) g.side[i] = isoparametric_side_coefficients(p, i);
+  }
+  for (int i = 0; i < 3; ++i) {
+    if (has_neighbour[i]) continue;
+    for (SideCoefficients& c : g.side) fold_mirror_node(c, i);
+    g.side[i].setZero();  // the triangle's own constant gradient on a free side (KL8)
+    g.side[i].topRows<3>() = L;
+  }
+  g.curvature = curvature_weights(g.side, L);
   for (int n = 0; n < kPatchNodes; ++n) {
     const bool used = n < kTriangleNodes || has_neighbour[n - kTriangleNodes];
     g.X.segment<3>(3 * n) = used ? X[n] : Vec3d::Zero();

@@ -38,11 +38,12 @@ using NeighbourFlags = std::array<bool, 3>;
 
 /// The reference geometry of a patch. Plain data; thread-safe to share between kernels.
 struct ShellGeometry {
-  PatchVec X;                            ///< reference positions of the 6 nodes [mm] (a missing
-                                         ///< neighbour's entries are ignored)
-  Mat3d frame;                           ///< columns e1, e2, e3 of the triangle (KL3)
-  double area = 0.0;                     ///< A0 [mm²]
-  NeighbourFlags has_neighbour{};        ///< false: the side is an edge of the mesh (KL8)
+  PatchVec X;                      ///< reference positions of the 6 nodes [mm] (a missing
+                                   ///< neighbour's entries are ignored)
+  Mat3d frame;                     ///< columns e1, e2, e3 of the triangle (KL3)
+  double area = 0.0;               ///< A0 [mm²]
+  NeighbourFlags has_neighbour{};  ///< false: the side is an edge of the mesh (KL8)
+  bool fitted = true;  ///< side gradients from the quadratic fit (KL3a), else isoparametric (KL3)
   std::array<SideCoefficients, 3> side;  ///< c^i [1/mm] (KL3), a missing neighbour folded in
   std::array<NodeWeights, 3> curvature;  ///< k^{αβ} for (11, 22, 12) [1/mm²] (KL6)
   Vec3d reference_metric;                ///< Ā as (11, 22, 12) [-] (KL4)
