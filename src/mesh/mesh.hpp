@@ -1,9 +1,11 @@
 #pragma once
-/// Tetrahedral mesh with named boundary tags.
+/// Tetrahedral mesh with named boundary tags, or the triangulated mid-surface of a shell.
 ///
 /// Linear tetrahedra (4 corner nodes) with optional second-order edge nodes (Gmsh's 10-node
 /// tetrahedron). Boundary triangles carry named tags (Gmsh physical groups of dimension 2);
 /// tetrahedra may carry named volume tags (physical groups of dimension 3).
+/// A shell mesh (docs/theory/shell.md) has no tetrahedra: its `triangles` are the mid-surface's
+/// elements, with the thickness and the edge neighbours of mesh/shell_surface.hpp.
 /// Node numbering is 0-based and contiguous. Coordinates are in mm.
 #include <array>
 #include <map>
@@ -25,11 +27,21 @@ struct Mesh {
   std::map<std::string, std::vector<int>> surface_tags;
   /// Volume tags: name -> indices into `tets`.
   std::map<std::string, std::vector<int>> volume_tags;
+  /// Shell meshes only (set by make_shell_surface, mesh/shell_surface.hpp), else empty. The
+  /// reference thickness at every node [mm]: a triangle's is the mean of its corners' (uniform
+  /// for the shells plisse makes so far).
+  std::vector<double> shell_thickness;
+  /// Shell meshes only: for each triangle and each side i (the side opposite corner i), the
+  /// corner of the neighbouring triangle across that side that is not on it (shell.md, KL1),
+  /// -1 where the side is an edge of the surface. Else empty.
+  std::vector<std::array<int, 3>> triangle_neighbours;
 
   int n_nodes() const { return static_cast<int>(nodes.size()); }
   int n_tets() const { return static_cast<int>(tets.size()); }
   int order() const { return tet_edge_nodes.empty() ? 1 : 2; }
   bool has_surface(const std::string& name) const { return surface_tags.count(name) != 0; }
+  /// True for the mid-surface of a shell (make_shell_surface has run).
+  bool is_shell() const { return !shell_thickness.empty(); }
 };
 
 }  // namespace plisse
