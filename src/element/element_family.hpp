@@ -10,6 +10,9 @@ namespace plisse {
 enum class ElementFamily {
   mini,         ///< MINI (P1+/P1): linear tetrahedra with a condensed bubble, linear pressure
   taylor_hood,  ///< Taylor-Hood (P2/P1): 10-node tetrahedra, linear pressure on the corners
+  shell,        ///< rotation-free Kirchhoff-Love triangle (EBST, docs/theory/shell.md) on the
+                ///< mid-surface (mesh/shell_surface.hpp): displacements only, exactly
+                ///< incompressible plane stress; not yet a case-file word
 };
 
 /// The element of a case file without the key `element`, and the order `plisse mesh` writes by
@@ -17,17 +20,29 @@ enum class ElementFamily {
 /// (docs/performance.md, "Element families").
 inline constexpr ElementFamily kDefaultElement = ElementFamily::taylor_hood;
 
-/// "mini" | "taylor-hood".
+/// "mini" | "taylor-hood" | "shell".
 inline std::string to_string(ElementFamily family) {
-  return family == ElementFamily::mini ? "mini" : "taylor-hood";
+  switch (family) {
+    case ElementFamily::mini:
+      return "mini";
+    case ElementFamily::taylor_hood:
+      return "taylor-hood";
+    case ElementFamily::shell:
+      return "shell";
+  }
+  return "taylor-hood";
 }
-/// The family named `name` ("mini", "taylor-hood"), or nullopt.
+/// The family named `name` ("mini", "taylor-hood"), or nullopt. The shell is not a word of the
+/// case file yet.
 inline std::optional<ElementFamily> parse_element_family(std::string_view name) {
   if (name == "mini") return ElementFamily::mini;
   if (name == "taylor-hood") return ElementFamily::taylor_hood;
   return std::nullopt;
 }
-/// The mesh order a family needs: 1 (4-node tetrahedra) for MINI, 2 (10-node) for Taylor-Hood.
-constexpr int mesh_order_of(ElementFamily family) { return family == ElementFamily::mini ? 1 : 2; }
+/// The mesh order a family needs: 1 (4-node tetrahedra) for MINI, 2 (10-node) for Taylor-Hood,
+/// 1 for the shell (Mesh::order of a mesh without tetrahedra).
+constexpr int mesh_order_of(ElementFamily family) {
+  return family == ElementFamily::taylor_hood ? 2 : 1;
+}
 
 }  // namespace plisse

@@ -53,9 +53,14 @@ std::string LoadStepper::describe_failure(const NewtonResult& newton) const {
   std::string why = status.ok ? "Newton did not converge (" + newton.reason + ")"
                               : "an element inverted or its bubble did not converge";
   if (status.worst_element >= 0) {
-    const auto& tet = model_.mesh().tets[status.worst_element];
+    // A tetrahedron, or the triangle of a shell (a mesh without tetrahedra).
+    const Mesh& mesh = model_.mesh();
     Vec3d centroid = Vec3d::Zero();
-    for (int v : tet) centroid += 0.25 * model_.mesh().nodes[v];
+    if (mesh.tets.empty()) {
+      for (int v : mesh.triangles[status.worst_element]) centroid += mesh.nodes[v] / 3.0;
+    } else {
+      for (int v : mesh.tets[status.worst_element]) centroid += 0.25 * mesh.nodes[v];
+    }
     char where[160];
     std::snprintf(where, sizeof where,
                   "; worst element %d (reference centroid %.4g, %.4g, %.4g), min J %.3g",

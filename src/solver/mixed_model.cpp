@@ -12,6 +12,7 @@
 #include "solver/mini_element.hpp"
 #include "solver/node_graph.hpp"
 #include "solver/petsc_call.hpp"
+#include "solver/shell_element.hpp"
 #include "solver/tangent_layout.hpp"
 #include "solver/taylor_hood_element.hpp"
 #include "solver/thread_counts.hpp"
@@ -110,10 +111,24 @@ MixedModel::MixedModel(const Mesh& mesh, ElementMaterials materials,
   pressure_weight_ = pressure_weight_of(mesh, materials);
   if (family == ElementFamily::mini) {
     elements_ = std::make_unique<ElementAssembly<MiniElement>>(mesh, std::move(materials));
-  } else {
+  } else if (family == ElementFamily::taylor_hood) {
     elements_ = std::make_unique<ElementAssembly<TaylorHoodElement>>(mesh, std::move(materials));
     // The pressure is linear: the edge nodes' pressure values are not unknowns.
     for (int v : non_corner_nodes(mesh)) constraints_.push_back({v, 3, 0.0, Ramp{}});
+  } else {
+    PLISSE_CHECK(mesh.is_shell() && mesh.shell_thickness.size() == mesh.nodes.size() &&
+                     mesh.triangle_neighbours.size() == mesh.triangles.size(),
+                 "the shell element needs the mid-surface of a shell (make_shell_surface)");
+    for (double inverse_bulk_modulus : materials.inverse_bulk_moduli)
+      PLISSE_CHECK(inverse_bulk_modulus == 0.0,
+                   "the shell element is exactly incompressible: 1/kappa must be 0, got "
+                       << inverse_bulk_modulus << " 1/MPa (docs/theory/shell.md, KL12)");
+    elements_ = std::make_unique<ElementAssembly<ShellElement>>(mesh, std::move(materials));
+    // Plane stress eliminates the pressure inside the element (shell.md, KL9): no node has a
+    // pressure unknown. The state keeps its four values per node, so that the terms, the
+    // outputs and the checkpoints read one layout; held at 0, the pressure values get no
+    // equation (the system would be singular in them) and no weight (pressure_weight() is 1).
+    for (int v = 0; v < mesh.n_nodes(); ++v) constraints_.push_back({v, 3, 0.0, Ramp{}});
   }
   const ElementNodes element_nodes = visit_elements([](const auto& e) { return e.nodes(); });
   const int n_global = count_global_unknowns(terms_);
@@ -139,6 +154,10 @@ MixedModel::MixedModel(const Mesh& mesh, ElementMaterials materials,
 }
 
 MixedModel::~MixedModel() { VecDestroy(&equation_weights_); }
+
+int MixedModel::n_elements() const {
+  return visit_elements([](const auto& e) { return e.n_elements(); });
+}
 
 const ElementMaterials& MixedModel::element_materials() const {
   return visit_elements([](const auto& e) -> const ElementMaterials& { return e.materials(); });
@@ -354,7 +373,7 @@ std::vector<double> MixedModel::nodal_reactions() const {
 }
 
 std::vector<Mat3d> MixedModel::element_deformation_gradients() const {
-  std::vector<Mat3d> F(static_cast<std::size_t>(mesh_.n_tets()), Mat3d::Identity());
+  std::vector<Mat3d> F(static_cast<std::size_t>(n_elements()), Mat3d::Identity());
   visit_elements([&](const auto& elements) {
     elements.for_each_deformation(mesh_, state_, [&](int e, double V0, const Mat3d& F_integral) {
       F[static_cast<std::size_t>(e)] = F_integral / V0;
@@ -388,8 +407,8 @@ BodyAverages MixedModel::averages() const { return averages(element_fields()); }
 
 BodyAverages MixedModel::averages(const std::vector<ElementFields>& fields) const {
   PLISSE_CHECK(
-      fields.size() == static_cast<std::size_t>(mesh_.n_tets()),
-      "averages: " << fields.size() << " element fields for " << mesh_.n_tets() << " elements");
+      fields.size() == static_cast<std::size_t>(n_elements()),
+      "averages: " << fields.size() << " element fields for " << n_elements() << " elements");
   BodyAverages avg;
   avg.F.setZero();
   double reference_volume = 0.0;

@@ -11,7 +11,9 @@
 ///     element policy of the model's family (solver/mini_element.hpp: the MINI tetrahedron on a
 ///     linear mesh; solver/taylor_hood_element.hpp: the Taylor-Hood tetrahedron on a second-order
 ///     mesh, whose edge nodes carry displacements only: the model constrains their pressure
-///     values to 0).
+///     values to 0; solver/shell_element.hpp: the rotation-free shell triangle on the mid-surface
+///     of a shell mesh, which has no pressure unknowns: the model constrains the pressure value
+///     of every node to 0).
 ///
 /// Distributed runs (more than one rank in PETSC_COMM_WORLD): every rank holds the whole mesh and
 /// the whole state; the equations are distributed (solver/partition.hpp). Rank r owns the equations
@@ -45,6 +47,7 @@
 #include "solver/element_materials.hpp"
 #include "solver/element_policy.hpp"
 #include "solver/mini_element.hpp"
+#include "solver/shell_element.hpp"
 #include "solver/taylor_hood_element.hpp"
 
 namespace plisse {
@@ -65,7 +68,9 @@ class MixedModel {
   /// Borrows `mesh` (must outlive the model). `inverse_bulk_modulus` is 1/κ, 0 for exact
   /// incompressibility. `terms` (loads, ...) are owned by the model; their global unknowns follow
   /// the nodal values in the full state, in the order given. `family` is the element of every
-  /// tetrahedron; the mesh must have its order (mesh_order_of; plisse::Error otherwise).
+  /// tetrahedron; the mesh must have its order (mesh_order_of; plisse::Error otherwise). The
+  /// shell family takes the triangles of a shell mesh (Mesh::is_shell) instead, and exact
+  /// incompressibility only (1/κ = 0; plisse::Error otherwise).
   MixedModel(const Mesh& mesh, AnyMaterial material, double inverse_bulk_modulus,
              std::vector<ConstrainedComponent> constraints,
              std::vector<std::unique_ptr<ModelTerm>> terms = {},
@@ -90,6 +95,8 @@ class MixedModel {
   /// The material of every element.
   const ElementMaterials& element_materials() const;
   ElementFamily element_family() const { return family_; }
+  /// The number of elements: tetrahedra, or the triangles of a shell.
+  int n_elements() const;
   const DofMap& dofs() const { return distribution_->dofs(); }
   int n_free() const { return dofs().n_free(); }
 
@@ -211,7 +218,7 @@ class MixedModel {
   std::vector<double> nodal_reactions() const;
 
   /// The volume average of the deformation gradient over each element, (1/V0) ∫ F dV0, at the
-  /// current state (for principal stretches).
+  /// current state (for principal stretches; of a shell, its mid-surface's, shell_output.hpp).
   std::vector<Mat3d> element_deformation_gradients() const;
 
   /// The pressure field at every node [MPa]: the nodal unknowns, and on the edge nodes of a
@@ -219,14 +226,15 @@ class MixedModel {
   /// the edge's two corners (for output).
   std::vector<double> nodal_pressures() const;
 
-  /// Per-element Cauchy stress, J and von Mises at the current state.
+  /// Per-element Cauchy stress, J and von Mises at the current state (of a shell, thickness
+  /// averages: element/shell_output.hpp).
   std::vector<ElementFields> element_fields() const;
   BodyAverages averages() const;
   /// The same from element_fields() of the current state, when the caller already has them.
   BodyAverages averages(const std::vector<ElementFields>& fields) const;
   /// Stored energy of the body at the current state [mJ = N mm]: the sum over the elements of
   /// the isochoric W plus, nearly incompressible, the volumetric p^2/(2 kappa) part
-  /// (element/strain_energy.hpp; element/taylor_hood.hpp).
+  /// (element/strain_energy.hpp; element/taylor_hood.hpp; element/shell.hpp).
   double strain_energy() const;
 
  private:
@@ -235,8 +243,9 @@ class MixedModel {
   double local_reaction(int node, int k) const;
   /// The element assembly of the model's family.
   using Elements = std::variant<std::unique_ptr<ElementAssembly<MiniElement>>,
-                                std::unique_ptr<ElementAssembly<TaylorHoodElement>>>;
-  /// f(assembly) on the model's element assembly (either family).
+                                std::unique_ptr<ElementAssembly<TaylorHoodElement>>,
+                                std::unique_ptr<ElementAssembly<ShellElement>>>;
+  /// f(assembly) on the model's element assembly (any family).
   template <class F>
   decltype(auto) visit_elements(F&& f) const {
     return std::visit([&](const auto& e) -> decltype(auto) { return f(std::as_const(*e)); },

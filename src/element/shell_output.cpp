@@ -1,0 +1,53 @@
+#include "element/shell_output.hpp"
+
+#include <cmath>
+
+namespace plisse::shell {
+
+namespace {
+
+/// [φ̄'_1 φ̄'_2 n]: the mean side gradients of the patch at positions x and a third column n.
+Mat3d mean_gradient(const ShellGeometry& g, const PatchVec& x, const Vec3d& n) {
+  Mat32d d = Mat32d::Zero();
+  for (int i = 0; i < 3; ++i) d += side_gradient(g, x, i) / 3.0;
+  Mat3d M;
+  M << d, n;
+  return M;
+}
+
+}  // namespace
+
+Mat3d mid_surface_deformation(const ShellGeometry& g, const PatchVec& u) {
+  const Mat3d reference = mean_gradient(g, g.X, g.frame.col(2));
+  const PatchVec x = g.X + u;
+  const Vec3d normal = triangle_normal(x);
+  const double length = normal.norm();
+  Mat3d current = mean_gradient(g, x, normal / length);
+  const double in_plane = current.determinant();  // (φ̄'_1 × φ̄'_2) · t3
+  if (!(length > 0.0) || !(in_plane > 0.0) || !std::isfinite(in_plane)) {
+    throw InadmissibleDeformation("shell: the triangle has collapsed or turned over");
+  }
+  current.col(2) *= reference.determinant() / in_plane;  // det F = 1 (KO1)
+  return current * reference.inverse();
+}
+
+Mat3d current_frame(const Mat3d& F, const ShellGeometry& g, const Vec3d& t3) {
+  const Vec3d image = F * g.frame.col(0);
+  Mat3d Q;
+  Q.col(0) = (image - image.dot(t3) * t3).normalized();
+  Q.col(2) = t3;
+  Q.col(1) = t3.cross(Q.col(0));
+  return Q;
+}
+
+Mat3d plane_stress_cauchy(const Mat2d& C2, const Mat2d& S2, const Mat3d& current_frame) {
+  Mat2d U = Mat2d::Zero();  // upper Cholesky factor, UᵀU = C₂
+  U(0, 0) = std::sqrt(C2(0, 0));
+  U(0, 1) = C2(0, 1) / U(0, 0);
+  U(1, 1) = std::sqrt(C2.determinant()) / U(0, 0);
+  const Mat2d tau = U * S2 * U.transpose();  // Kirchhoff = Cauchy stress, J = 1
+  const Eigen::Matrix<double, 3, 2> Q = current_frame.leftCols<2>();
+  return Q * tau * Q.transpose();
+}
+
+}  // namespace plisse::shell
