@@ -1,4 +1,4 @@
-/// The shell triangle against closed forms (docs/theory/shell.md, section 8): the membrane patch
+/// The shell triangle against closed forms (docs/theory/shell.md, section 9): the membrane patch
 /// test, the bending energy of a cylinder, the curvature of cylinders and spheres under
 /// refinement, and the thickness integration of a strongly bent patch.
 #include <gtest/gtest.h>
