@@ -27,7 +27,7 @@ Mat3d mid_surface_deformation(const ShellGeometry& g, const PatchVec& u) {
   if (!(length > 0.0) || !(in_plane > 0.0) || !std::isfinite(in_plane)) {
     throw InadmissibleDeformation("shell: the triangle has collapsed or turned over");
   }
-  current.col(2) *= reference.determinant() / in_plane;  // det F = 1 (KO1)
+  current.col(2) *= reference.determinant() / in_plane;  // det F = 1 (KL19)
   return current * reference.inverse();
 }
 

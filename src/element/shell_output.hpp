@@ -1,5 +1,5 @@
 #pragma once
-/// What the shell triangle reports besides its energy (docs/theory/shell.md, KO1-KO3): the
+/// What the shell triangle reports besides its energy (docs/theory/shell.md, KL19-KL21): the
 /// deformation gradient of its mid-surface and the thickness averages of the Cauchy stress, in
 /// the global basis, so that the outputs of solid elements (principal stretches, σ, von Mises)
 /// mean the same on a shell. No heap; inputs const; thread-safe.
@@ -8,7 +8,7 @@
 
 namespace plisse::shell {
 
-/// The mid-surface's deformation gradient, F = [φ̄'_1 φ̄'_2 s t3] [Φ̄'_1 Φ̄'_2 e3]⁻¹ (KO1):
+/// The mid-surface's deformation gradient, F = [φ̄'_1 φ̄'_2 s t3] [Φ̄'_1 Φ̄'_2 e3]⁻¹ (KL19):
 /// φ̄' the mean of the three side gradients (KL3) at the current positions, Φ̄' at the reference
 /// ones, t3 and e3 the current and reference normals (KL5), and s the thickness stretch that
 /// makes det F = 1 (incompressible, KL9). F = I in the reference, F = Q under a rotation Q, and
@@ -18,14 +18,14 @@ Mat3d mid_surface_deformation(const ShellGeometry& g, const PatchVec& u);
 
 /// The Cauchy stress [MPa] of the incompressible plane-stress point with in-plane C₂ and 2nd
 /// Piola-Kirchhoff stress S₂ (both 2 × 2, in the element's local frame), in the global basis
-/// (KO2): σ = Q (U S₂ Uᵀ ⊕ 0) Qᵀ, with U the upper Cholesky factor of C₂ (UᵀU = C₂) and Q the
+/// (KL20): σ = Q (U S₂ Uᵀ ⊕ 0) Qᵀ, with U the upper Cholesky factor of C₂ (UᵀU = C₂) and Q the
 /// columns of the current in-plane frame ê1 (along the image of e1), ê2 = t3 × ê1, t3.
 Mat3d plane_stress_cauchy(const Mat2d& C2, const Mat2d& S2, const Mat3d& current_frame);
 
-/// The current frame of KO2 from F of KO1 and the current normal t3.
+/// The current frame of KL20 from F of KL19 and the current normal t3.
 Mat3d current_frame(const Mat3d& F, const ShellGeometry& g, const Vec3d& t3);
 
-/// Output averages of one patch at displacements u [mm] (KO3): the Cauchy stress averaged
+/// Output averages of one patch at displacements u [mm] (KL21): the Cauchy stress averaged
 /// through the thickness, J = 1 (exactly incompressible), its von Mises stress, and as the
 /// pressure -tr σ̄ / 3, the mean of the thickness stress that incompressibility eliminated (the
 /// plane-stress shell has no pressure unknown; for the isotropic models it equals the pressure

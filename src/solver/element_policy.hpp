@@ -3,13 +3,15 @@
 /// policy type, all static, that the one element loop, the scatter into the residual and the
 /// tangent, the output fields and the checkpoints are written against. A new element family is a
 /// new policy; the loop is not copied. solver/mini_element.hpp is the MINI tetrahedron's,
-/// solver/taylor_hood_element.hpp the Taylor-Hood tetrahedron's.
+/// solver/taylor_hood_element.hpp the Taylor-Hood tetrahedron's, solver/shell_element.hpp the
+/// shell triangle's.
 ///
 /// Sizes
 ///   kNodes         nodes in the element's node list (the width of its ElementNodes; the tangent
-///                  layout stores one position per pair of them). MINI: 4, Taylor-Hood: 10.
+///                  layout stores one position per pair of them; a node may appear twice).
+///                  MINI: 4, Taylor-Hood: 10, shell: 6.
 ///   kDof           element unknowns seen by the global solver, all nodal values. MINI: 16,
-///                  Taylor-Hood: 34.
+///                  Taylor-Hood: 34, shell: 18.
 ///   kInternalSize  doubles of internal state per element, condensed out of the global system
 ///                  and carried from one evaluation to the next (a warm start). MINI: 3 (bubble).
 ///                  May be 0.

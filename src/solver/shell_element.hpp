@@ -107,7 +107,7 @@ struct ShellElement {
     return {shell::assemble_shell(g.patch, g.section, x, material, r, K).ok, 1.0};
   }
 
-  /// shell::compute_shell_fields: thickness averages of σ, J = 1, von Mises, -tr σ / 3 (KO3).
+  /// shell::compute_shell_fields: thickness averages of σ, J = 1, von Mises, -tr σ / 3 (KL21).
   template <class Material>
   static Fields fields(const Geometry& g, const Vector& x, const Material& material,
                        const Internal& /*internal*/) {
@@ -120,7 +120,7 @@ struct ShellElement {
     return shell::compute_shell_energy(g.patch, g.section, x, material);
   }
 
-  /// ∫ F dV over the element, V0 F with F the mid-surface's deformation gradient (KO1), constant
+  /// ∫ F dV over the element, V0 F with F the mid-surface's deformation gradient (KL19), constant
   /// through the thickness of a thin shell, and its reference volume V0 = A0 t.
   static Mat3d deformation_integral(const Mesh& /*mesh*/, std::span<const int, kNodes> /*nodes*/,
                                     const Geometry& g, const Vector& x, double& volume) {
