@@ -120,7 +120,7 @@ void check_case(const CheckOptions& options) {
     std::cerr << "plisse check: warning: " << e.what() << " (plisse run refuses this case)\n";
   for (const InputError& e : setup_warnings(c))
     std::cerr << "plisse check: warning: " << e.what() << '\n';
-  out << "  case      " << count(c.boundary.size(), "boundary condition") << ", "
+  out << "  case      " << count(c.terms_in("boundary").size(), "boundary condition") << ", "
       << count(c.terms_in("loads").size(), "load") << ", "
       << count(c.terms_in("cavities").size(), "cavity", "cavities") << ", "
       << count(c.terms_in("dies").size(), "die") << ", " << count(c.terms_in("caps").size(), "cap")

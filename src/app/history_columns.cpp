@@ -11,6 +11,7 @@
 #include "mesh/topology.hpp"
 #include "output/history_writer.hpp"
 #include "physics/dirichlet.hpp"
+#include "terms/term_kind.hpp"
 
 namespace plisse::app {
 namespace {
@@ -86,17 +87,16 @@ HistoryColumns::HistoryColumns(const Case& c, const MixedModel& model, const Wri
 }
 
 void HistoryColumns::add_reactions(const Case& c, const Mesh& mesh) {
-  const int mirrors = mirror_planes(c.boundary, mesh);
-  for (const BoundaryCondition& bc : c.boundary) {
-    if (bc.name.empty()) continue;
-    const std::vector<int>* triangles = &mesh.surface_tags.at(bc.surface.name);
+  const int mirrors = mirror_planes(mirror_surfaces(c.terms), mesh);
+  for (const TermEntry& entry : c.terms) {
+    if (!entry.kind->constrain || entry.name.empty()) continue;
+    const std::vector<int>* triangles = &mesh.surface_tags.at(entry.kind->surface(entry).name);
     // Reaching a mirror plane, the condition continues across it: the whole body's reaction sums
     // the images (a symmetry condition's reaction is internal to the whole body).
-    const int cut =
-        bc.type == BoundaryType::symmetry ? 0 : planes_reached(mesh, *triangles, mirrors);
-    std::vector<std::string> names = xyz_columns("force_", bc.name);
+    const int cut = entry.kind->mirror ? 0 : planes_reached(mesh, *triangles, mirrors);
+    std::vector<std::string> names = xyz_columns("force_", entry.name);
     if (cut != 0) {
-      const std::vector<std::string> whole = xyz_columns("full_force_", bc.name);
+      const std::vector<std::string> whole = xyz_columns("full_force_", entry.name);
       names.insert(names.end(), whole.begin(), whole.end());
     }
     add(names, [triangles, cut](const StepRecord& r, std::vector<double>& row) {

@@ -29,9 +29,8 @@ namespace {
 /// area of the nodes on the cut (docs/theory/contact.md, D5).
 std::vector<std::array<int, 3>> default_die_candidates(const Case& c, const Mesh& mesh) {
   std::set<std::array<int, 3>> cut;
-  for (const BoundaryCondition& bc : c.boundary) {
-    if (bc.type != BoundaryType::symmetry) continue;
-    for (int t : mesh.surface_tags.at(bc.surface.name)) {
+  for (const std::string& surface : mirror_surfaces(c.terms)) {
+    for (int t : mesh.surface_tags.at(surface)) {
       auto key = mesh.triangles[t];
       std::sort(key.begin(), key.end());
       cut.insert(key);
@@ -251,12 +250,11 @@ void check_rigid_pieces(const Case& c, const Mesh& mesh,
 }
 
 ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
-  ModelParts parts{
-      element_materials(c, mesh), collect_constraints(c.boundary, mesh), {}, c.element};
+  ModelParts parts{element_materials(c, mesh), collect_constraints(c.terms, mesh), {}, c.element};
   add_rigid_constraints(c, mesh, parts.materials, parts.constraints);
   check_free_displacements(c, mesh, parts.constraints);
   const auto& constraints = parts.constraints;
-  const int mirrors = mirror_planes(c.boundary, mesh);
+  const int mirrors = mirror_planes(mirror_surfaces(c.terms), mesh);
   const TermContext context{
       mesh, constraints, mirrors,
       // The contact penalties' default scale (contact.md, D11): the case's `material`.
@@ -265,7 +263,7 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
   auto& terms = parts.terms;
   for (const TermSection& section : term_sections())
     for (const TermEntry* entry : c.terms_in(section.key))
-      terms.push_back(entry->kind->make(*entry, context));
+      if (entry->kind->make) terms.push_back(entry->kind->make(*entry, context));
   if (c.solver.viscosity > 0.0) {
     // ℓ of docs/theory/viscous.md (Z1): the wall thickness (generated shell, airbag or sheet, or
     // `mesh.thickness` of a file mesh), else the mean edge length of the mesh.

@@ -45,20 +45,6 @@ const std::vector<OutputEntry> kHistoryAfter = {
     {"cauchy_xy", "MPa", "always", "average σ_xy"},
     {"cauchy_yz", "MPa", "always", "average σ_yz"},
     {"cauchy_xz", "MPa", "always", "average σ_xz"},
-    {"force_x:<boundary>", "N", "`boundary[]` with a `name`",
-     "x component of the reaction: the force the condition exerts on the body, summed over the "
-     "constrained components of its surface's nodes (a mirror plane holding a pressurised "
-     "octant pulls it, negative along the plane's outward normal; likewise y, z)"},
-    {"force_y:<boundary>", "N", "`boundary[]` with a `name`", "y component of the reaction"},
-    {"force_z:<boundary>", "N", "`boundary[]` with a `name`", "z component of the reaction"},
-    {"full_force_x:<boundary>", "N",
-     "`boundary[]` with a `name`, not `symmetry`, whose surface reaches a mirror plane",
-     "x component of the whole body's reaction on the condition, which continues across the "
-     "plane: the mirror images summed (likewise y, z; see Symmetry)"},
-    {"full_force_y:<boundary>", "N", "as `full_force_x:<boundary>`",
-     "y component of the whole body's reaction"},
-    {"full_force_z:<boundary>", "N", "as `full_force_x:<boundary>`",
-     "z component of the whole body's reaction"},
     {"force_x:<region>", "N", "`regions[]` rigid, with a `name`",
      "x component of the reaction on a rigid region: the force the region exerts on the body, "
      "summed over the nodes of its tetrahedra (a held base under a membrane pressed down onto it "

@@ -16,6 +16,7 @@
 #include "output/vtu_reader.hpp"
 #include "physics/dirichlet.hpp"
 #include "solver/dof_map.hpp"
+#include "terms/term_kind.hpp"
 
 namespace plisse::app {
 namespace {
@@ -112,9 +113,8 @@ void snap_to_symmetry_planes(const Case& c, Mesh& mesh) {
     high = high.cwiseMax(x);
   }
   const double rounding = 1e-9 * std::max((high - low).maxCoeff(), 1e-300);
-  for (const BoundaryCondition& bc : c.boundary) {
-    if (bc.type != BoundaryType::symmetry) continue;
-    const auto tag = mesh.surface_tags.find(bc.surface.name);
+  for (const std::string& surface : mirror_surfaces(c.terms)) {
+    const auto tag = mesh.surface_tags.find(surface);
     if (tag == mesh.surface_tags.end()) continue;
     const int axis = coordinate_plane_axis(mesh, tag->second);
     if (axis < 0) continue;
@@ -147,11 +147,9 @@ Mesh load_perturbed_mesh(const Case& c) {
         throw InputError(imperfection_place(c),
                          "a random imperfection moves the wall along the normals of the surface '" +
                              tag + "' (output.wrinkles.surface), which the mesh does not have");
-      std::vector<std::string> planes;
-      for (const BoundaryCondition& bc : c.boundary)
-        if (bc.type == BoundaryType::symmetry) planes.push_back(bc.surface.name);
       field = compute_random_imperfection(mesh, tagged_triangles(mesh, tag), amplitude,
-                                          static_cast<std::uint64_t>(st.seed), planes);
+                                          static_cast<std::uint64_t>(st.seed),
+                                          mirror_surfaces(c.terms));
     }
     apply_imperfection(mesh, field);
     snap_to_symmetry_planes(c, mesh);  // the imperfection keeps plane nodes in their plane

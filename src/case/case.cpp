@@ -81,8 +81,7 @@ Schema<Case> case_schema() {
       .nested = material_schema().doc();
   list_key(s, "regions", &Case::regions, region_schema(),
            "volume tags with their own material, or rigid");
-  list_key(s, "boundary", &Case::boundary, boundary_schema(), "Dirichlet conditions");
-  for (const char* section : {"loads", "cavities", "dies", "caps", "contacts"})
+  for (const char* section : {"boundary", "loads", "cavities", "dies", "caps", "contacts"})
     term_list_key(s, section);
   list_key(s, "probes", &Case::probes, probe_schema(),
            "points whose displacement, stresses or thickness are reported at every step");

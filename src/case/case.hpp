@@ -2,8 +2,8 @@
 /// A plisse case: the typed, validated contents of a case file (YAML).
 ///
 /// Keys of the file are the member names below (docs/architecture.md, "Coding conventions"). The
-/// sections are made of the parameter types of the layers that use them (Ramp, BoundaryCondition
-/// in physics/; SteppingSettings, NewtonSettings in solver/), and the term sections of the term
+/// sections are made of the parameter types of the layers that use them (Ramp, Cavity in
+/// physics/; SteppingSettings, NewtonSettings in solver/), and the term sections of the term
 /// kinds' entries (terms/), so those layers never see this file. Every value that refers to the
 /// user's input keeps its InputPlace, so later checks (tags against the mesh, material rules) can
 /// name the file, line, column and key. The parser
@@ -25,7 +25,6 @@
 #include "mesh/mesh.hpp"
 #include "mesh/surface_ref.hpp"
 #include "output/vtu_writer.hpp"
-#include "physics/boundary_condition.hpp"
 #include "physics/ramp.hpp"
 #include "solver/stepping_settings.hpp"
 #include "terms/term_kind.hpp"
@@ -182,9 +181,8 @@ struct Case {
   MeshSection mesh;
   MaterialSection material;
   std::vector<Region> regions;
-  std::vector<BoundaryCondition> boundary;
-  /// The items of the term sections (`loads`, `cavities`, `dies`, `caps`, `contacts`), each with
-  /// its kind and settings (terms/term_kind.hpp), in the order of the file.
+  /// The items of the term sections (`boundary`, `loads`, `cavities`, `dies`, `caps`, `contacts`),
+  /// each with its kind and settings (terms/term_kind.hpp), in the order of the file.
   std::vector<TermEntry> terms;
   std::vector<Probe> probes;
   SolverSettings solver;

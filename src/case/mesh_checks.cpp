@@ -19,12 +19,6 @@ namespace {
 
 using schema::format_number;
 
-/// Symmetry surfaces may deviate from their best-fit plane by this fraction of their mean edge
-/// length: far below any discretisation of a curved surface (a sphere of radius R meshed with
-/// edges h has sagitta ~ h^2 / (8 R), i.e. 1e-3 h only when h < 0.008 R, and its nodes span the
-/// whole cap), far above the round-off of coordinates written to a .msh file.
-constexpr double kPlanarityTolerance = 1e-3;
-
 std::string mesh_name(const Case& c) {
   if (c.mesh.file) return "mesh file '" + *c.mesh.file + "'";
   return "the generated " + (c.mesh.generate ? c.mesh.generate->kind : std::string()) + " mesh";
@@ -106,35 +100,6 @@ void check_regions(const Case& c, const Mesh& mesh) {
   if (!deforms)
     throw InputError(c.regions.back().place,
                      "every tetrahedron is in a rigid region: nothing is left to deform");
-}
-
-/// Largest distance of the tag's nodes from their least-squares plane, and the tolerance for it.
-std::pair<double, double> planarity(const Mesh& mesh, const std::vector<int>& triangles) {
-  std::set<int> nodes;
-  double edge_sum = 0.0;
-  for (int t : triangles) {
-    const auto& tri = mesh.triangles[t];
-    for (int k = 0; k < 3; ++k) {
-      nodes.insert(tri[k]);
-      edge_sum += (mesh.nodes[tri[(k + 1) % 3]] - mesh.nodes[tri[k]]).norm();
-    }
-  }
-  const double mean_edge = edge_sum / (3.0 * static_cast<double>(triangles.size()));
-  Vec3d centroid = Vec3d::Zero();
-  for (int v : nodes) centroid += mesh.nodes[v];
-  centroid /= static_cast<double>(nodes.size());
-  Mat3d covariance = Mat3d::Zero();
-  for (int v : nodes) {
-    const Vec3d d = mesh.nodes[v] - centroid;
-    covariance += d * d.transpose();
-  }
-  // The best-fit plane's normal is the eigenvector of the smallest eigenvalue (ascending order).
-  const Eigen::SelfAdjointEigenSolver<Mat3d> eigen(covariance);
-  const Vec3d normal = eigen.eigenvectors().col(0);
-  double deviation = 0.0;
-  for (int v : nodes)
-    deviation = std::max(deviation, std::abs(normal.dot(mesh.nodes[v] - centroid)));
-  return {deviation, kPlanarityTolerance * mean_edge};
 }
 
 /// A probe reports at a material point of the body: one farther from the mesh than the longest
@@ -265,7 +230,6 @@ Mesh load_case_mesh(const Case& c) {
 
 void check_case_against_mesh(const Case& c, const Mesh& mesh) {
   check_regions(c, mesh);
-  for (const BoundaryCondition& bc : c.boundary) check_surface(c, mesh, bc.surface);
   const TermMeshCheck terms{mesh, [&](const SurfaceRef& ref) { check_surface(c, mesh, ref); }};
   for (const TermSection& section : term_sections())
     for (const TermEntry* entry : c.terms_in(section.key)) entry->kind->check_mesh(*entry, terms);
@@ -274,17 +238,6 @@ void check_case_against_mesh(const Case& c, const Mesh& mesh) {
   if (c.output.wrinkles.enabled()) {
     const WrinkleSettings& w = c.output.wrinkles;
     check_surface(c, mesh, {w.surface, w.surface_place.line > 0 ? w.surface_place : w.place});
-  }
-
-  for (const BoundaryCondition& bc : c.boundary) {
-    if (bc.type != BoundaryType::symmetry) continue;
-    const auto [deviation, tolerance] = planarity(mesh, mesh.surface_tags.at(bc.surface.name));
-    if (deviation > tolerance)
-      throw InputError(bc.surface.place,
-                       "symmetry surface '" + bc.surface.name +
-                           "' is not planar: its nodes lie up to " + format_number(deviation) +
-                           " mm from their best-fit plane (tolerance " + format_number(tolerance) +
-                           " mm = " + format_number(kPlanarityTolerance) + " x mean edge length)");
   }
 
   const MeshReport report = check_mesh(mesh);

@@ -1,10 +1,9 @@
 #pragma once
 /// The tables of the case file's sections, one file each (internal to src/case; case.cpp puts them
 /// in the top-level table): `mesh` (mesh_section.cpp), `material` (material_section.cpp),
-/// `regions`, `boundary`, `probes`, `output` (their *_section.cpp) and `solver`
-/// (solver_section.hpp). The term sections (`loads`, `cavities`, `caps`, `dies`, `contacts`)
-/// belong to the term kinds of src/terms. Each schema is built anew on each call; the case's
-/// table keeps one.
+/// `regions`, `probes`, `output` (their *_section.cpp) and `solver` (solver_section.hpp). The term
+/// sections (`boundary`, `loads`, `cavities`, `caps`, `dies`, `contacts`) belong to the term kinds
+/// of src/terms. Each schema is built anew on each call; the case's table keeps one.
 #include <string>
 
 #include "case/case.hpp"
@@ -41,8 +40,6 @@ MaterialSection read_material(const schema::Field& field, schema::ReadContext& c
 
 /// `regions:` items.
 schema::Schema<Region> region_schema();
-/// `boundary:` items.
-schema::Schema<BoundaryCondition> boundary_schema();
 /// `probes:` items.
 schema::Schema<Probe> probe_schema();
 /// `output:`, with its `wrinkles` table.

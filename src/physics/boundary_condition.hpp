@@ -1,6 +1,6 @@
 #pragma once
-/// A Dirichlet condition on the nodes of a tagged surface, as a case gives it
-/// (physics/dirichlet.hpp turns it into constrained components).
+/// The settings of the `boundary:` section's conditions, as a case gives them
+/// (physics/dirichlet.hpp turns them into constrained components; src/terms has their kinds).
 #include <array>
 #include <optional>
 #include <string>
@@ -11,16 +11,21 @@
 
 namespace plisse {
 
-enum class BoundaryType { fixed, symmetry, displacement };
-
-/// Dirichlet condition on the nodes of a tagged surface.
-struct BoundaryCondition {
-  BoundaryType type = BoundaryType::fixed;
+/// A condition on the nodes of a tagged surface that prescribes no value: `fixed` (u = 0) or
+/// `symmetry` (zero displacement normal to the surface's plane).
+struct SurfaceConditionSettings {
   std::string name;  ///< optional, unique; the reaction force on the surface is reported in the
                      ///< history as `force_x:<name>`, `force_y:<name>`, `force_z:<name>`
   SurfaceRef surface;
-  /// `displacement` only: prescribed components [mm] at the end of the ramp; an empty optional
-  /// (`~`/null in YAML) leaves that component free.
+  InputPlace place;
+};
+
+/// A `displacement` condition: prescribed components on the nodes of a tagged surface.
+struct DisplacementConditionSettings {
+  std::string name;  ///< as SurfaceConditionSettings::name
+  SurfaceRef surface;
+  /// Prescribed components [mm] at the end of the ramp; an empty optional (`~`/null in YAML)
+  /// leaves that component free.
   std::array<std::optional<double>, 3> value{};
   Ramp ramp;
   InputPlace place;

@@ -1,5 +1,6 @@
 #include "physics/dirichlet.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <map>
 #include <set>
@@ -10,11 +11,10 @@
 
 namespace plisse {
 
-int mirror_planes(const std::vector<BoundaryCondition>& conditions, const Mesh& mesh, double tol) {
+int mirror_planes(const std::vector<std::string>& symmetry_surfaces, const Mesh& mesh, double tol) {
   int planes = 0;
-  for (const BoundaryCondition& bc : conditions) {
-    if (bc.type != BoundaryType::symmetry) continue;
-    const auto tag = mesh.surface_tags.find(bc.surface.name);
+  for (const std::string& surface : symmetry_surfaces) {
+    const auto tag = mesh.surface_tags.find(surface);
     if (tag == mesh.surface_tags.end() || tag->second.empty()) continue;
     const int axis = coordinate_plane_axis(mesh, tag->second, tol);
     if (axis < 0) continue;
@@ -77,54 +77,87 @@ int coordinate_plane_axis(const Mesh& mesh, const std::vector<int>& triangles, d
   return axis;
 }
 
-std::vector<ConstrainedComponent> collect_constraints(
-    const std::vector<BoundaryCondition>& conditions, const Mesh& mesh) {
-  std::map<std::pair<int, int>, std::pair<ConstrainedComponent, const BoundaryCondition*>> by_dof;
-  auto add = [&](const BoundaryCondition& bc, int node, int comp, double value, const Ramp& ramp) {
-    const ConstrainedComponent cc{node, comp, value, ramp};
-    auto [it, inserted] = by_dof.try_emplace({node, comp}, cc, &bc);
-    if (inserted) return;
-    const ConstrainedComponent& old = it->second.first;
-    const bool same =
-        (old.value == 0.0 && value == 0.0) || (old.value == value && old.ramp == ramp);
-    if (!same) {
-      const char* axis = "xyz";
-      throw InputError(bc.place, "node " + std::to_string(node) + " already has its " +
-                                     std::string(1, axis[comp]) +
-                                     " displacement prescribed differently by the condition on '" +
-                                     it->second.second->surface.name + "'");
-    }
-  };
-  for (const BoundaryCondition& bc : conditions) {
-    const auto tag = mesh.surface_tags.find(bc.surface.name);
-    if (tag == mesh.surface_tags.end())
-      throw InputError(bc.surface.place, "no surface tag '" + bc.surface.name + "' in the mesh");
-    // The corners of the tagged triangles and, on a second-order mesh, their edge nodes.
-    const std::set<int> nodes = triangle_nodes(mesh, tag->second);
-    switch (bc.type) {
-      case BoundaryType::fixed:
-        for (int v : nodes)
-          for (int k = 0; k < 3; ++k) add(bc, v, k, 0.0, bc.ramp);
-        break;
-      case BoundaryType::symmetry: {
-        const int axis = coordinate_plane_axis(mesh, tag->second);
-        if (axis < 0)
-          throw InputError(bc.surface.place, "symmetry surface '" + bc.surface.name +
-                                                 "' must be a plane x, y or z = const");
-        for (int v : nodes) add(bc, v, axis, 0.0, bc.ramp);
-        break;
-      }
-      case BoundaryType::displacement:
-        for (int v : nodes)
-          for (int k = 0; k < 3; ++k)
-            if (bc.value[k]) add(bc, v, k, *bc.value[k], bc.ramp);
-        break;
+void ConstraintSet::begin(const InputPlace& place, const std::string& surface) {
+  place_ = place;
+  surface_ = surface;
+}
+
+void ConstraintSet::add(int node, int component, double value, const Ramp& ramp) {
+  const ConstrainedComponent cc{node, component, value, ramp};
+  auto [it, inserted] = by_dof_.try_emplace({node, component}, Held{cc, surface_});
+  if (inserted) return;
+  const ConstrainedComponent& old = it->second.component;
+  const bool same = (old.value == 0.0 && value == 0.0) || (old.value == value && old.ramp == ramp);
+  if (same) return;
+  const char* axis = "xyz";
+  throw InputError(place_, "node " + std::to_string(node) + " already has its " +
+                               std::string(1, axis[component]) +
+                               " displacement prescribed differently by the condition on '" +
+                               it->second.surface + "'");
+}
+
+std::vector<ConstrainedComponent> ConstraintSet::components() const {
+  std::vector<ConstrainedComponent> out;
+  out.reserve(by_dof_.size());
+  for (const auto& [key, held] : by_dof_) out.push_back(held.component);
+  return out;
+}
+
+std::set<int> condition_nodes(const Mesh& mesh, const SurfaceRef& surface) {
+  const auto tag = mesh.surface_tags.find(surface.name);
+  if (tag == mesh.surface_tags.end())
+    throw InputError(surface.place, "no surface tag '" + surface.name + "' in the mesh");
+  return triangle_nodes(mesh, tag->second);
+}
+
+void fix_surface(const Mesh& mesh, const SurfaceRef& surface, ConstraintSet& set) {
+  for (int v : condition_nodes(mesh, surface))
+    for (int k = 0; k < 3; ++k) set.add(v, k, 0.0, Ramp{});
+}
+
+void hold_in_plane(const Mesh& mesh, const SurfaceRef& surface, ConstraintSet& set) {
+  const std::set<int> nodes = condition_nodes(mesh, surface);
+  const int axis = coordinate_plane_axis(mesh, mesh.surface_tags.at(surface.name));
+  if (axis < 0)
+    throw InputError(surface.place,
+                     "symmetry surface '" + surface.name + "' must be a plane x, y or z = const");
+  for (int v : nodes) set.add(v, axis, 0.0, Ramp{});
+}
+
+void prescribe_surface(const Mesh& mesh, const SurfaceRef& surface,
+                       const std::array<std::optional<double>, 3>& value, const Ramp& ramp,
+                       ConstraintSet& set) {
+  for (int v : condition_nodes(mesh, surface))
+    for (int k = 0; k < 3; ++k)
+      if (value[k]) set.add(v, k, *value[k], ramp);
+}
+
+Planarity planarity(const Mesh& mesh, const std::vector<int>& triangles) {
+  std::set<int> nodes;
+  double edge_sum = 0.0;
+  for (int t : triangles) {
+    const auto& tri = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      nodes.insert(tri[k]);
+      edge_sum += (mesh.nodes[tri[(k + 1) % 3]] - mesh.nodes[tri[k]]).norm();
     }
   }
-  std::vector<ConstrainedComponent> out;
-  out.reserve(by_dof.size());
-  for (const auto& [key, entry] : by_dof) out.push_back(entry.first);
-  return out;
+  const double mean_edge = edge_sum / (3.0 * static_cast<double>(triangles.size()));
+  Vec3d centroid = Vec3d::Zero();
+  for (int v : nodes) centroid += mesh.nodes[v];
+  centroid /= static_cast<double>(nodes.size());
+  Mat3d covariance = Mat3d::Zero();
+  for (int v : nodes) {
+    const Vec3d d = mesh.nodes[v] - centroid;
+    covariance += d * d.transpose();
+  }
+  // The best-fit plane's normal is the eigenvector of the smallest eigenvalue (ascending order).
+  const Eigen::SelfAdjointEigenSolver<Mat3d> eigen(covariance);
+  const Vec3d normal = eigen.eigenvectors().col(0);
+  double deviation = 0.0;
+  for (int v : nodes)
+    deviation = std::max(deviation, std::abs(normal.dot(mesh.nodes[v] - centroid)));
+  return {deviation, kPlanarityTolerance * mean_edge};
 }
 
 }  // namespace plisse

@@ -1,10 +1,17 @@
 #pragma once
 /// Dirichlet conditions (fixed, prescribed, symmetry) turned into constrained displacement
 /// components of nodes.
+#include <array>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
 #include <vector>
 
+#include "core/error.hpp"
 #include "mesh/mesh.hpp"
-#include "physics/boundary_condition.hpp"
+#include "mesh/surface_ref.hpp"
 #include "physics/ramp.hpp"
 
 namespace plisse {
@@ -22,12 +29,12 @@ struct ConstrainedComponent {
 /// is not a plane normal to x, y or z (relative tolerance `tol` on the triangle normals).
 int coordinate_plane_axis(const Mesh& mesh, const std::vector<int>& triangles, double tol = 1e-8);
 
-/// The mirror planes of a model: bit k (1: x = 0, 2: y = 0, 4: z = 0) is set when a `symmetry`
-/// condition of `conditions` holds a surface in the plane x_k = 0 (within `tol` of the surface's
-/// extent). The planes that double a volume or force for the whole body (cavity_volume.hpp,
-/// full_body_factor); a plane that merely closes a cavity, such as the base under a bulged sheet,
-/// is not one.
-int mirror_planes(const std::vector<BoundaryCondition>& conditions, const Mesh& mesh,
+/// The mirror planes of a model: bit k (1: x = 0, 2: y = 0, 4: z = 0) is set when one of the
+/// `symmetry` conditions' surfaces `symmetry_surfaces` lies in the plane x_k = 0 (within `tol` of
+/// the surface's extent). The planes that double a volume or force for the whole body
+/// (cavity_volume.hpp, full_body_factor); a plane that merely closes a cavity, such as the base
+/// under a bulged sheet, is not one.
+int mirror_planes(const std::vector<std::string>& symmetry_surfaces, const Mesh& mesh,
                   double tol = 1e-8);
 
 /// The mirror planes among `mirrors` (bits as mirror_planes) that the surface `triangles` reaches:
@@ -43,11 +50,57 @@ int planes_reached(const Mesh& mesh, const std::vector<int>& triangles, int mirr
 /// component doubles, once per plane.
 Vec3d whole_body_force(Vec3d f, int cut);
 
-/// All constrained components of `conditions`, one per (node, component). A condition holds the
-/// corners of its tagged triangles and, on a second-order mesh, their edge nodes. A node where two
-/// conditions prescribe different motions of the same component is an InputError at the later
-/// condition. Symmetry surfaces must be coordinate planes (x, y or z = const).
-std::vector<ConstrainedComponent> collect_constraints(
-    const std::vector<BoundaryCondition>& conditions, const Mesh& mesh);
+/// The constrained components of a model's conditions, gathered one condition at a time, one per
+/// (node, component). A node where two conditions prescribe different motions of the same
+/// component is an InputError at the later condition; zero motions agree whatever their ramps.
+class ConstraintSet {
+ public:
+  /// The components added next are the condition's at `place`, on the surface `surface` (named
+  /// when a later condition conflicts with one of them).
+  void begin(const InputPlace& place, const std::string& surface);
+  /// u_component(node, t) = value * ramp.factor(t).
+  void add(int node, int component, double value, const Ramp& ramp);
+  /// Every component, ordered by (node, component).
+  std::vector<ConstrainedComponent> components() const;
+
+ private:
+  struct Held {
+    ConstrainedComponent component;
+    std::string surface;  ///< of the condition that added it
+  };
+  std::map<std::pair<int, int>, Held> by_dof_;
+  InputPlace place_;
+  std::string surface_;
+};
+
+/// The nodes a condition on `surface` holds: the corners of its tagged triangles and, on a
+/// second-order mesh, their edge nodes. InputError at the surface's place when the mesh has no
+/// such tag.
+std::set<int> condition_nodes(const Mesh& mesh, const SurfaceRef& surface);
+
+/// `fixed`: every displacement component of the surface's nodes is zero.
+void fix_surface(const Mesh& mesh, const SurfaceRef& surface, ConstraintSet& set);
+
+/// `symmetry`: the displacement normal to the surface's plane is zero. The surface must be a
+/// coordinate plane (x, y or z = const): else an InputError at its place.
+void hold_in_plane(const Mesh& mesh, const SurfaceRef& surface, ConstraintSet& set);
+
+/// `displacement`: the given components of `value` [mm], times `ramp`; an empty one stays free.
+void prescribe_surface(const Mesh& mesh, const SurfaceRef& surface,
+                       const std::array<std::optional<double>, 3>& value, const Ramp& ramp,
+                       ConstraintSet& set);
+
+/// Largest distance of a tagged surface's nodes from their least-squares plane, and the tolerance
+/// a symmetry surface's may reach: kPlanarityTolerance times the mean edge of its triangles.
+struct Planarity {
+  double deviation = 0.0;  ///< [mm]
+  double tolerance = 0.0;  ///< [mm]
+};
+/// Symmetry surfaces may deviate from their best-fit plane by this fraction of their mean edge
+/// length: far below any discretisation of a curved surface (a sphere of radius R meshed with
+/// edges h has sagitta ~ h^2 / (8 R), i.e. 1e-3 h only when h < 0.008 R, and its nodes span the
+/// whole cap), far above the round-off of coordinates written to a .msh file.
+inline constexpr double kPlanarityTolerance = 1e-3;
+Planarity planarity(const Mesh& mesh, const std::vector<int>& triangles);
 
 }  // namespace plisse

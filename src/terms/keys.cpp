@@ -73,6 +73,31 @@ std::array<std::optional<double>, 3> optional_components(const Field& f, const s
   return out;
 }
 
+std::vector<OutputEntry> reaction_outputs(bool whole) {
+  std::vector<OutputEntry> out = {
+      {"force_x:<boundary>", "N", "`boundary[]` with a `name`",
+       "x component of the reaction: the force the condition exerts on the body, summed over the "
+       "constrained components of its surface's nodes (a mirror plane holding a pressurised "
+       "octant pulls it, negative along the plane's outward normal; likewise y, z)"},
+      {"force_y:<boundary>", "N", "`boundary[]` with a `name`", "y component of the reaction"},
+      {"force_z:<boundary>", "N", "`boundary[]` with a `name`", "z component of the reaction"},
+  };
+  if (!whole) return out;
+  out.insert(out.end(),
+             {
+                 {"full_force_x:<boundary>", "N",
+                  "`boundary[]` with a `name`, not `symmetry`, whose surface reaches a mirror "
+                  "plane",
+                  "x component of the whole body's reaction on the condition, which continues "
+                  "across the plane: the mirror images summed (likewise y, z; see Symmetry)"},
+                 {"full_force_y:<boundary>", "N", "as `full_force_x:<boundary>`",
+                  "y component of the whole body's reaction"},
+                 {"full_force_z:<boundary>", "N", "as `full_force_x:<boundary>`",
+                  "z component of the whole body's reaction"},
+             });
+  return out;
+}
+
 std::vector<OutputEntry> load_force_outputs() {
   return {
       {"load_x:<load>", "N", "`loads[]` of types traction, point-force, follower-traction",

@@ -112,6 +112,20 @@ std::vector<RampUse> load_ramps(const S& load) {
   return {{load.ramp, "load '" + load.name + "'"}};
 }
 
+/// The `name` and `surface` of a `boundary:` condition: the same rows in every kind.
+template <class S>
+void condition_keys(Schema<S>& schema, std::type_identity_t<std::string S::*> name,
+                    std::type_identity_t<SurfaceRef S::*> surface) {
+  name_key(schema, name,
+           "when given, the reaction force on the surface is reported as `force_x:<name>`, "
+           "`force_y:<name>`, `force_z:<name>`");
+  surface_key(schema, "surface", surface, "where the condition acts").required();
+}
+
+/// The history columns of a named condition's reaction; `whole`: also the whole body's, for a
+/// condition that continues across a mirror plane (all but `symmetry`).
+std::vector<OutputEntry> reaction_outputs(bool whole);
+
 /// The history columns of the loads given as forces on a surface or a node (traction,
 /// point-force, follower-traction): the total force and its work.
 std::vector<OutputEntry> load_force_outputs();

@@ -3,6 +3,9 @@
 
 namespace plisse {
 
+TermKind fixed_condition_kind();
+TermKind symmetry_condition_kind();
+TermKind displacement_condition_kind();
 TermKind pressure_load_kind();
 TermKind gravity_load_kind();
 TermKind traction_load_kind();
@@ -15,6 +18,7 @@ TermKind surface_contact_kind();
 
 const std::vector<TermSection>& term_sections() {
   static const std::vector<TermSection> sections = {
+      {"boundary", "type", "Dirichlet conditions"},
       {"loads", "type", "pressure, gravity, traction and point-force loads"},
       {"cavities", "", "fluid-filled cavities"},
       {"caps", "", "rigid end caps"},
@@ -26,8 +30,17 @@ const std::vector<TermSection>& term_sections() {
 
 const std::vector<TermKind>& term_kinds() {
   static const std::vector<TermKind> kinds = {
-      pressure_load_kind(),     gravity_load_kind(), traction_load_kind(), point_force_kind(),
-      follower_traction_kind(), cavity_kind(),       cap_kind(),           die_kind(),
+      fixed_condition_kind(),
+      symmetry_condition_kind(),
+      displacement_condition_kind(),
+      pressure_load_kind(),
+      gravity_load_kind(),
+      traction_load_kind(),
+      point_force_kind(),
+      follower_traction_kind(),
+      cavity_kind(),
+      cap_kind(),
+      die_kind(),
       surface_contact_kind(),
   };
   return kinds;

@@ -57,6 +57,24 @@ std::vector<const TermKind*> term_kinds(const std::string& section) {
   return out;
 }
 
+std::vector<ConstrainedComponent> collect_constraints(const std::vector<TermEntry>& entries,
+                                                      const Mesh& mesh) {
+  ConstraintSet set;
+  for (const TermEntry& entry : entries) {
+    if (!entry.kind->constrain) continue;
+    set.begin(entry.place, entry.kind->surface(entry).name);
+    entry.kind->constrain(entry, mesh, set);
+  }
+  return set.components();
+}
+
+std::vector<std::string> mirror_surfaces(const std::vector<TermEntry>& entries) {
+  std::vector<std::string> out;
+  for (const TermEntry& entry : entries)
+    if (entry.kind->mirror) out.push_back(entry.kind->surface(entry).name);
+  return out;
+}
+
 TermEntry read_term(const std::string& section, const schema::Field& item,
                     schema::ReadContext& context) {
   const TermSection& s = term_section(section);

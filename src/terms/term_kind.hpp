@@ -1,16 +1,17 @@
 #pragma once
-/// The kinds of model term a case can ask for: the loads, cavities, dies, caps and contacts of
-/// its term sections. Each kind is one entry, in a file of its own in this folder, that says
-/// everything plisse needs to know about it:
+/// The kinds of model term a case can ask for: the boundary conditions, loads, cavities, dies, caps
+/// and contacts of its term sections. Each kind is one entry, in a file of its own in this folder,
+/// that says everything plisse needs to know about it:
 /// - its section of the case file and its input word (`loads:` with `type: pressure`);
 /// - its key table over the settings type of its physics (schema::Schema<S>), which reads and
 ///   checks an entry and renders the kind's rows of docs/case-file.md;
 /// - its checks against the mesh;
-/// - make(settings, context): the ModelTerm it adds to the model;
+/// - make(settings, context): the ModelTerm it adds to the model, or, for a condition (the
+///   `boundary:` section), constrain(settings, mesh, set): the components it prescribes;
 /// - the ramps `plisse check` warns about and the lines it adds to a run's log.
 /// The table (term_kinds(), registry.cpp) lists the entries; the case reader (case/case.cpp), the
-/// mesh checks (case/mesh_checks.cpp) and the model builder (app/model_builder.cpp) loop over it
-/// (docs/architecture.md, "Term kinds").
+/// mesh checks (case/mesh_checks.cpp), the model builder (app/model_builder.cpp) and the history's
+/// reaction columns loop over it (docs/architecture.md, "Term kinds").
 ///
 /// Ownership: the kinds are built once and never change; a TermEntry points at its kind and owns
 /// its settings.
@@ -91,7 +92,8 @@ struct RampUse {
 /// A kind of model term (see the file comment). Made by make_term_kind from a TermDefinition.
 class TermKind {
  public:
-  std::string section;  ///< the case file's list: "loads", "cavities", "dies", "caps", "contacts"
+  /// The case file's list: "boundary", "loads", "cavities", "dies", "caps", "contacts".
+  std::string section;
   /// The word of the section's selector key (`type: pressure`); empty in a section of one kind.
   std::string word;
   std::string summary;  ///< what the word means, in a phrase (the selector key's help)
@@ -105,7 +107,16 @@ class TermKind {
   /// Checks the entry against the mesh (InputError at the offending key).
   std::function<void(const TermEntry&, const TermMeshCheck&)> check_mesh;
   /// The entry's term; may throw InputError for what only the built term can judge.
+  /// Empty for a condition, which adds constraints instead of a term.
   std::function<std::unique_ptr<ModelTerm>(const TermEntry&, const TermContext&)> make;
+  /// A condition's constrained components; empty for the other kinds.
+  std::function<void(const TermEntry&, const Mesh&, ConstraintSet&)> constrain;
+  /// A condition's surface: its reaction force is reported when the entry has a name.
+  std::function<SurfaceRef(const TermEntry&)> surface;
+  /// A condition whose surface is a mirror plane of the model: a cut through the whole body
+  /// (`symmetry`). Its reaction is internal to the whole body; the default contact surface of a
+  /// die leaves its faces out; an imperfection keeps its nodes in the plane.
+  bool mirror = false;
   std::function<std::vector<RampUse>(const TermEntry&)> ramps;  ///< for the end-time warnings
   /// Lines for the run's log (e.g. the node a point force acts on).
   std::function<std::vector<std::string>(const TermEntry&, const Mesh&)> notes;
@@ -121,7 +132,11 @@ struct TermDefinition {
   std::string summary;
   schema::Schema<S> keys;
   std::function<void(const S&, const TermMeshCheck&)> check_mesh;
+  /// A term's maker, or for a condition the two below and `mirror`.
   std::function<std::unique_ptr<ModelTerm>(const S&, const TermContext&)> make;
+  std::function<void(const S&, const Mesh&, ConstraintSet&)> constrain;
+  std::function<SurfaceRef(const S&)> surface;
+  bool mirror = false;
   std::function<std::vector<RampUse>(const S&)> ramps;                   ///< empty: none
   std::function<std::vector<std::string>(const S&, const Mesh&)> notes;  ///< empty: none
   std::vector<OutputEntry> history;
@@ -155,10 +170,21 @@ TermKind make_term_kind(TermDefinition<S> definition) {
                                                                const TermMeshCheck& mesh) {
     check(entry.as<S>(), mesh);
   };
-  kind.make = [make = std::move(definition.make)](const TermEntry& entry,
-                                                  const TermContext& context) {
-    return make(entry.as<S>(), context);
-  };
+  if (definition.make)
+    kind.make = [make = std::move(definition.make)](const TermEntry& entry,
+                                                    const TermContext& context) {
+      return make(entry.as<S>(), context);
+    };
+  if (definition.constrain)
+    kind.constrain = [constrain = std::move(definition.constrain)](
+                         const TermEntry& entry, const Mesh& mesh, ConstraintSet& set) {
+      constrain(entry.as<S>(), mesh, set);
+    };
+  if (definition.surface)
+    kind.surface = [surface = std::move(definition.surface)](const TermEntry& entry) {
+      return surface(entry.as<S>());
+    };
+  kind.mirror = definition.mirror;
   kind.ramps = [ramps = std::move(definition.ramps)](const TermEntry& entry) {
     return ramps ? ramps(entry.as<S>()) : std::vector<RampUse>{};
   };
@@ -172,7 +198,7 @@ TermKind make_term_kind(TermDefinition<S> definition) {
 
 /// A term section of the case file.
 struct TermSection {
-  std::string key;  ///< "loads"
+  std::string key;  ///< "boundary", "loads"
   /// The key whose word picks the item's kind ("type"); empty when the section has one kind.
   std::string selector;
   std::string help;  ///< the section's meaning in the case's table
@@ -194,6 +220,14 @@ const std::vector<TermKind>& term_kinds();
 
 /// The kinds of one section.
 std::vector<const TermKind*> term_kinds(const std::string& section);
+
+/// The constrained components of the conditions among `entries` (the `boundary:` section), in
+/// their order (ConstraintSet judges conflicts between them).
+std::vector<ConstrainedComponent> collect_constraints(const std::vector<TermEntry>& entries,
+                                                      const Mesh& mesh);
+
+/// The surfaces of the mirror conditions among `entries` (`symmetry`), in their order.
+std::vector<std::string> mirror_surfaces(const std::vector<TermEntry>& entries);
 
 /// Reads one item of `section`: its selector (a required choice among the kinds' words), then
 /// the kind's keys. Throws InputError at the offending key.

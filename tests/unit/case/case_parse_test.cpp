@@ -8,6 +8,7 @@
 #include "case/case.hpp"
 #include "case_test_util.hpp"
 #include "physics/body_force.hpp"
+#include "physics/boundary_condition.hpp"
 #include "physics/cavity_settings.hpp"
 #include "physics/die_contact_settings.hpp"
 #include "physics/pressure_load.hpp"
@@ -40,16 +41,17 @@ TEST(CaseParse, CompleteCaseHasEveryValue) {
   EXPECT_EQ(c.material.bulk_modulus, 100.0);
   EXPECT_EQ(c.material.density, 1.0e-9);
 
-  ASSERT_EQ(c.boundary.size(), 3u);
-  EXPECT_EQ(c.boundary[0].type, BoundaryType::symmetry);
-  EXPECT_EQ(c.boundary[0].surface.name, "sym_x");
-  EXPECT_EQ(c.boundary[0].surface.place.line, 16);
-  EXPECT_EQ(c.boundary[0].surface.place.column, 31);
-  EXPECT_EQ(c.boundary[0].surface.place.key, "boundary[0].surface");
-  EXPECT_EQ(c.boundary[1].type, BoundaryType::fixed);
-  EXPECT_EQ(c.boundary[1].name, "base");
-  const BoundaryCondition& d = c.boundary[2];
-  EXPECT_EQ(d.type, BoundaryType::displacement);
+  ASSERT_EQ(c.terms_in("boundary").size(), 3u);
+  EXPECT_EQ(test::term(c, "boundary", 0).kind->word, "symmetry");
+  const auto& symmetry = test::term_settings<SurfaceConditionSettings>(c, "boundary", 0);
+  EXPECT_EQ(symmetry.surface.name, "sym_x");
+  EXPECT_EQ(symmetry.surface.place.line, 16);
+  EXPECT_EQ(symmetry.surface.place.column, 31);
+  EXPECT_EQ(symmetry.surface.place.key, "boundary[0].surface");
+  EXPECT_EQ(test::term(c, "boundary", 1).kind->word, "fixed");
+  EXPECT_EQ(test::term(c, "boundary", 1).name, "base");
+  EXPECT_EQ(test::term(c, "boundary", 2).kind->word, "displacement");
+  const auto& d = test::term_settings<DisplacementConditionSettings>(c, "boundary", 2);
   EXPECT_FALSE(d.value[0].has_value());
   ASSERT_TRUE(d.value[1].has_value());
   EXPECT_EQ(*d.value[1], 0.5);
@@ -157,7 +159,7 @@ TEST(CaseParse, MinimalCaseTakesTheDocumentedDefaults) {
   EXPECT_TRUE(c.material.exact_incompressibility);
   EXPECT_EQ(c.material.bulk_modulus, 0.0);
   EXPECT_EQ(c.material.density, 0.0);
-  EXPECT_TRUE(c.boundary.empty() && c.terms.empty() && c.probes.empty());
+  EXPECT_TRUE(c.terms.empty() && c.probes.empty());
   const SolverSettings s = c.solver;
   EXPECT_EQ(s.scheme, Scheme::total_lagrangian);
   EXPECT_EQ(s.end_time, 1.0);
@@ -204,7 +206,7 @@ TEST(CaseParse, RampsDefaultToTheWholeRun) {
   EXPECT_EQ(load.ramp.end, 3.5);
   EXPECT_EQ(die.ramp.start, 0.0);
   EXPECT_EQ(die.ramp.end, 3.5);
-  EXPECT_EQ(c.boundary[0].ramp.end, 3.5);
+  EXPECT_EQ(test::term_settings<DisplacementConditionSettings>(c, "boundary", 0).ramp.end, 3.5);
   EXPECT_EQ(die.contact, ContactKind::frictionless);
   EXPECT_EQ(die.penalty, 0.0);
   EXPECT_EQ(die.tolerance, 1e-3);
@@ -245,12 +247,16 @@ TEST(CaseParse, FlowAndBlockStylesGiveTheSameCase) {
     EXPECT_EQ(g.symmetry, Symmetry::octant);
     EXPECT_EQ(c->material.model, "neo-hookean");
     EXPECT_EQ(c->material.params, (std::map<std::string, double>{{"c1", 0.0033}}));
-    ASSERT_EQ(c->boundary.size(), 2u);
-    EXPECT_EQ(c->boundary[1].surface.name, "sym_z");
+    ASSERT_EQ(c->terms_in("boundary").size(), 2u);
+    EXPECT_EQ(test::term_settings<SurfaceConditionSettings>(*c, "boundary", 1).surface.name,
+              "sym_z");
   }
-  EXPECT_EQ(flow.boundary[1].surface.place.line, 4);
-  EXPECT_EQ(block.boundary[1].surface.place.line, 16);
-  EXPECT_EQ(block.boundary[1].surface.place.column, 14);
+  const auto surface = [](const Case& c) {
+    return test::term_settings<SurfaceConditionSettings>(c, "boundary", 1).surface.place;
+  };
+  EXPECT_EQ(surface(flow).line, 4);
+  EXPECT_EQ(surface(block).line, 16);
+  EXPECT_EQ(surface(block).column, 14);
 }
 
 TEST(CaseParse, MaterialDefaultsFromTheRegistryAreFilledIn) {

@@ -43,16 +43,11 @@ std::vector<ConstrainedComponent> symmetry_constraints(const Mesh& mesh) {
   return out;
 }
 
-/// A `symmetry` condition on each of the mesh's planes sym_x, sym_y, sym_z.
-std::vector<BoundaryCondition> symmetry_conditions(const Mesh& mesh) {
-  std::vector<BoundaryCondition> out;
-  for (const char* tag : {"sym_x", "sym_y", "sym_z"}) {
-    if (!mesh.has_surface(tag)) continue;
-    BoundaryCondition bc;
-    bc.type = BoundaryType::symmetry;
-    bc.surface.name = tag;
-    out.push_back(bc);
-  }
+/// The surfaces of a `symmetry` condition on each of the mesh's planes sym_x, sym_y, sym_z.
+std::vector<std::string> symmetry_surfaces(const Mesh& mesh) {
+  std::vector<std::string> out;
+  for (const char* tag : {"sym_x", "sym_y", "sym_z"})
+    if (mesh.has_surface(tag)) out.emplace_back(tag);
   return out;
 }
 
@@ -101,7 +96,7 @@ CavitySetup make_setup(Symmetry symmetry, CavityControl control, bool constrain)
   s.mesh = small_shell(symmetry);
   if (constrain) s.constraints = symmetry_constraints(s.mesh);
   s.term = std::make_unique<CavityTerm>(make_cavity(control), s.mesh, s.constraints,
-                                        mirror_planes(symmetry_conditions(s.mesh), s.mesh));
+                                        mirror_planes(symmetry_surfaces(s.mesh), s.mesh));
   s.n = kValuesPerNode * s.mesh.n_nodes() + 1;
   s.term->set_first_global_dof(s.n - 1);
   return s;

@@ -98,14 +98,7 @@ TEST(PressureLoad, SymmetryPlanesCloseTheBoundaryOfAnOpenSurface) {
 // not 8; the symmetry condition on x = 4 is not at a coordinate plane and mirrors nothing.
 TEST(PressureLoad, EnclosedVolumeAndTheWholeBodysCountOnlyMirrorPlanes) {
   const Mesh mesh = make_box_mesh(Vec3d(4.0, 3.0, 0.5), {4, 3, 1});
-  std::vector<BoundaryCondition> conditions;
-  for (const char* tag : {"left", "front", "right"}) {
-    BoundaryCondition bc;
-    bc.type = BoundaryType::symmetry;
-    bc.surface.name = tag;
-    conditions.push_back(bc);
-  }
-  const int mirrors = mirror_planes(conditions, mesh);
+  const int mirrors = mirror_planes({"left", "front", "right"}, mesh);
   EXPECT_EQ(mirrors, 1 | 2);
   // The bottom face reaches both mirror planes, the far edge x = 4 neither; a force on a surface
   // that reaches a plane loses its normal component and doubles the others.

@@ -321,13 +321,10 @@ TEST(SecondOrderCavity, OpenEdgesAreFoundOnCornerEdgesAndCurvedPlaneEdgesAreRefu
 
 TEST(SecondOrderDirichlet, ConditionsHoldTheEdgeNodesOfTheTaggedTriangles) {
   const Mesh mesh = quadratic_cube();
-  BoundaryCondition fixed;
-  fixed.type = BoundaryType::fixed;
-  fixed.surface = {"bottom", InputPlace{}};
-  BoundaryCondition symmetry;
-  symmetry.type = BoundaryType::symmetry;
-  symmetry.surface = {"left", InputPlace{}};
-  const auto constraints = collect_constraints({fixed, symmetry}, mesh);
+  ConstraintSet set;
+  fix_surface(mesh, {"bottom", InputPlace{}}, set);
+  hold_in_plane(mesh, {"left", InputPlace{}}, set);
+  const auto constraints = set.components();
   std::set<std::pair<int, int>> held;
   for (const auto& c : constraints) held.insert({c.node, c.component});
   int bottom = 0, left = 0;

@@ -50,7 +50,8 @@ TEST(TermKinds, EverySectionHasKindsWithDistinctWords) {
   }
   for (const TermKind& kind : term_kinds())
     EXPECT_TRUE(sections.count(kind.section)) << "kind of an unknown section " << kind.section;
-  EXPECT_EQ(sections, (std::set<std::string>{"loads", "cavities", "caps", "dies", "contacts"}));
+  EXPECT_EQ(sections,
+            (std::set<std::string>{"boundary", "loads", "cavities", "caps", "dies", "contacts"}));
 }
 
 TEST(TermKinds, SelectorRowComesFirstAndRowsSharedByEveryKindApplyToAll) {
@@ -132,6 +133,7 @@ TEST(TermKinds, EveryColumnATermWritesIsOneOfItsKindsRows) {
                             [] { return std::vector<std::array<int, 3>>{}; }};
   std::set<std::string> made;
   for (const TermEntry& entry : c.terms) {
+    if (!entry.kind->make) continue;  // a condition: its columns are the reactions (below)
     const std::unique_ptr<ModelTerm> term = entry.kind->make(entry, context);
     made.insert(entry.kind->section + ":" + entry.kind->word);
     const std::vector<std::string> columns = term->history_columns();
@@ -143,8 +145,62 @@ TEST(TermKinds, EveryColumnATermWritesIsOneOfItsKindsRows) {
           << entry.kind->section << " " << entry.kind->word << " writes '" << column
           << "', which none of its output rows names";
   }
-  // Every kind but the cavity (its wall must enclose a volume; tests/unit/cavity builds it).
-  EXPECT_EQ(made.size(), term_kinds().size() - 1);
+  // Every kind of term but the cavity (its wall must enclose a volume; tests/unit/cavity builds
+  // it).
+  const auto terms = std::count_if(term_kinds().begin(), term_kinds().end(),
+                                   [](const TermKind& kind) { return bool(kind.make); });
+  EXPECT_EQ(made.size(), static_cast<std::size_t>(terms - 1));
+  // A condition makes no term: it constrains, and its reaction is what the history reports.
+  for (const TermKind* kind : term_kinds("boundary")) {
+    EXPECT_FALSE(kind->make) << kind->word;
+    EXPECT_TRUE(kind->constrain && kind->surface) << kind->word;
+    EXPECT_TRUE(std::any_of(kind->history.begin(), kind->history.end(), [](const OutputEntry& e) {
+      return e.name == "force_x:<boundary>";
+    })) << kind->word;
+  }
+}
+
+// The conditions of a cube of edge 2: fixed bottom (z = 0), symmetry on the left (x = 0), and
+// the top (z = 2) moved 0.5 up. The held components, counted from the nodes' coordinates: every
+// component at z = 0, x at x = 0, z at z = 2; where two conditions hold the same component with
+// zero motion they agree.
+TEST(TermKinds, ConditionsHoldTheirSurfacesComponentsAndJudgeConflicts) {
+  const std::string conditions =
+      "boundary:\n"
+      "  - {type: fixed, surface: bottom}\n"
+      "  - {type: symmetry, surface: left}\n"
+      "  - {type: displacement, surface: top, value: [~, ~, 0.5]}\n";
+  const Case c = parse_case_string(kCube + conditions, "case.yaml");
+  const Mesh mesh = load_case_mesh(c);
+  std::set<std::pair<int, int>> expected;
+  for (int v = 0; v < mesh.n_nodes(); ++v) {
+    const Vec3d& x = mesh.nodes[v];
+    if (x.z() == 0.0) expected.insert({{v, 0}, {v, 1}, {v, 2}});
+    if (x.x() == 0.0) expected.insert({v, 0});
+    if (x.z() == 2.0) expected.insert({v, 2});
+  }
+  std::set<std::pair<int, int>> held;
+  for (const ConstrainedComponent& cc : collect_constraints(c.terms, mesh)) {
+    EXPECT_TRUE(held.insert({cc.node, cc.component}).second) << "held twice: " << cc.node;
+    const double top = mesh.nodes[cc.node].z() == 2.0 && cc.component == 2 ? 0.5 : 0.0;
+    EXPECT_EQ(cc.value, top) << cc.node << " " << cc.component;
+  }
+  EXPECT_EQ(held, expected);
+  EXPECT_EQ(mirror_surfaces(c.terms), std::vector<std::string>{"left"});
+  // Moving the bottom, which the first condition fixes, is refused at the later condition.
+  const Case conflict = parse_case_string(
+      kCube + conditions + "  - {type: displacement, surface: bottom, value: [0.1, ~, ~]}\n",
+      "case.yaml");
+  try {
+    collect_constraints(conflict.terms, mesh);
+    ADD_FAILURE() << "a conflict between two conditions was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.place().key, "boundary[3]");
+    EXPECT_NE(std::string(e.what()).find("x displacement prescribed differently by the "
+                                         "condition on 'bottom'"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
