@@ -59,6 +59,8 @@ class SolverError : public Error {
 
 }  // namespace plisse
 
+// msg is a stream chain ("a" << b), not an expression: it cannot be parenthesised.
+// NOLINTBEGIN(bugprone-macro-parentheses)
 #define PLISSE_CHECK(cond, msg)                   \
   do {                                            \
     if (!(cond)) {                                \
@@ -67,6 +69,7 @@ class SolverError : public Error {
       throw ::plisse::Error(check_stream_.str()); \
     }                                             \
   } while (false)
+// NOLINTEND(bugprone-macro-parentheses)
 
 #ifdef NDEBUG
 #define PLISSE_ASSERT(cond) ((void)0)

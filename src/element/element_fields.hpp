@@ -26,7 +26,7 @@ inline double von_mises_stress(const Mat3d& cauchy) {
 /// The eigenvalues of the symmetric matrix `s`, largest first.
 inline Vec3d principal_values(const Mat3d& s) {
   const Eigen::SelfAdjointEigenSolver<Mat3d> eigen(s, Eigen::EigenvaluesOnly);
-  const Vec3d ascending = eigen.eigenvalues();
+  const Vec3d& ascending = eigen.eigenvalues();
   return {ascending[2], ascending[1], ascending[0]};
 }
 

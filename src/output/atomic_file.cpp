@@ -1,7 +1,7 @@
 #include "output/atomic_file.hpp"
 
 #include <fcntl.h>
-#include <signal.h>
+#include <signal.h>  // NOLINT(modernize-deprecated-headers): ::kill is POSIX's, not <csignal>'s
 #include <sys/stat.h>
 #include <unistd.h>
 

@@ -264,7 +264,7 @@ FieldMap::FieldMap(const Field& self) : self_(self) {
     if (!key.IsScalar()) {
       Field(self_.source(), it->second, key, self.path()).fail_at_key("expected a plain key");
     }
-    const std::string name = key.Scalar();
+    const std::string& name = key.Scalar();
     Field field(self_.source(), it->second, key, child_path(self.path(), name));
     if (const auto [first, inserted] = seen.try_emplace(name, entries_.size()); !inserted) {
       const InputPlace p = entries_[first->second].second.key_place();

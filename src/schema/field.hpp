@@ -61,8 +61,9 @@ class FieldMap;
 /// One value of the tree with its key path.
 class Field {
  public:
-  Field(const Source& source, YAML::Node value, YAML::Node key, std::string path)
-      : source_(&source), value_(std::move(value)), key_(std::move(key)), path_(std::move(path)) {}
+  // yaml-cpp's Node has no move constructor: it is taken by reference and copied once.
+  Field(const Source& source, const YAML::Node& value, const YAML::Node& key, std::string path)
+      : source_(&source), value_(value), key_(key), path_(std::move(path)) {}
 
   const std::string& path() const { return path_; }
   const YAML::Node& node() const { return value_; }
