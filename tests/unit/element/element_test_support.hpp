@@ -1,13 +1,18 @@
 #pragma once
-/// Helpers shared by the element unit tests: random distorted tetrahedra and states, and the
-/// observed order of a sequence of finite-difference errors.
+/// Helpers shared by the element unit tests: random distorted tetrahedra and states, every registry
+/// model with parameters, and the observed order of a sequence of finite-difference errors.
+#include <gtest/gtest.h>
+
 #include <array>
 #include <cmath>
+#include <map>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "core/types.hpp"
 #include "element/mini.hpp"
+#include "material/registry.hpp"
 
 namespace plisse::test {
 
@@ -98,6 +103,33 @@ inline PatchMesh distorted_cube(int n, unsigned seed) {
           m.tets.push_back(tet);
         }
   return m;
+}
+
+/// Every registry model, with moduli of the order of 1 MPa; the fibre model's fibres lie along
+/// (1, 0.5, 0) and along z. A model without an entry here fails the calling test.
+inline std::vector<AnyMaterial> every_material() {
+  const std::map<std::string, MaterialValues> values = {
+      {"neo-hookean", {{"c1", 0.5}}},
+      {"mooney-rivlin", {{"c1", 0.35}, {"c2", 0.15}}},
+      {"fung", {{"mu", 1.0}, {"gamma", 1.5}}},
+      {"yeoh", {{"c1", 0.5}, {"c2", -0.05}, {"c3", 0.02}}},
+      {"gent", {{"mu", 1.0}, {"jm", 20.0}}},
+      {"arruda-boyce", {{"mu", 1.0}, {"lambda_m", 3.0}}},
+      {"ogden",
+       {{"mu1", 0.6},
+        {"alpha1", 1.3},
+        {"mu2", 0.01},
+        {"alpha2", 5.0},
+        {"mu3", -0.02},
+        {"alpha3", -2.0}}},
+      {"fibre-reinforced",
+       {{"c1", 0.4}, {"k1", 1.0}, {"k2", 0.5}, {"a1_x", 1.0}, {"a1_y", 0.5}, {"a2_z", 1.0}}}};
+  std::vector<AnyMaterial> out;
+  for (const MaterialModelInfo& info : material_models()) {
+    EXPECT_EQ(values.count(info.name), 1u) << "no parameters for " << info.name;
+    if (values.count(info.name)) out.push_back(make_material(info.name, values.at(info.name)));
+  }
+  return out;
 }
 
 }  // namespace plisse::test

@@ -1,7 +1,7 @@
 #pragma once
 /// Patches of the shell triangle for its unit tests: flat 2-D patches (the triangle and its three
-/// neighbours' opposite nodes, mirrored or distorted), mapped onto surfaces, and every registry
-/// model with parameters of the order of 1 MPa.
+/// neighbours' opposite nodes, mirrored or distorted) and mapped onto surfaces (every registry
+/// model: element_test_support.hpp).
 #include <gtest/gtest.h>
 
 #include <array>
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "element/shell.hpp"
+#include "element_test_support.hpp"
 #include "material/registry.hpp"
 
 namespace plisse::test {
@@ -58,39 +59,6 @@ inline PatchPositions curved_patch(unsigned seed) {
     const double z = 0.3 * q.x() * q.x() - 0.2 * q.x() * q.y() + 0.15 * q.y() * q.y();
     return Vec3d(R * Vec3d(q.x(), q.y(), z) + Vec3d(2.0, -1.0, 0.5));
   });
-}
-
-/// Every registry model, with moduli of the order of 1 MPa; the fibre model's fibres lie in the
-/// plane of curved_patch's surface near the triangle, and along its normal.
-inline std::vector<AnyMaterial> every_material() {
-  const std::map<std::string, MaterialValues> values = {
-      {"neo-hookean", {{"c1", 0.5}}},
-      {"mooney-rivlin", {{"c1", 0.35}, {"c2", 0.15}}},
-      {"fung", {{"mu", 1.0}, {"gamma", 1.5}}},
-      {"yeoh", {{"c1", 0.5}, {"c2", -0.05}, {"c3", 0.02}}},
-      {"gent", {{"mu", 1.0}, {"jm", 20.0}}},
-      {"arruda-boyce", {{"mu", 1.0}, {"lambda_m", 3.0}}},
-      {"ogden",
-       {{"mu1", 0.6},
-        {"alpha1", 1.3},
-        {"mu2", 0.01},
-        {"alpha2", 5.0},
-        {"mu3", -0.02},
-        {"alpha3", -2.0}}},
-      {"fibre-reinforced",
-       {{"c1", 0.4}, {"k1", 1.0}, {"k2", 0.5}, {"a1_x", 1.0}, {"a1_y", 0.5}, {"a2_z", 1.0}}}};
-  std::vector<AnyMaterial> out;
-  for (const MaterialModelInfo& info : material_models()) {
-    EXPECT_EQ(values.count(info.name), 1u) << "no parameters for " << info.name;
-    if (values.count(info.name)) out.push_back(make_material(info.name, values.at(info.name)));
-  }
-  return out;
-}
-
-/// log2 slope between the last two errors of a sequence taken with h halved each time.
-inline double observed_order(const std::vector<double>& errors) {
-  const std::size_t n = errors.size();
-  return std::log2(errors[n - 2] / errors[n - 1]);
 }
 
 }  // namespace plisse::test

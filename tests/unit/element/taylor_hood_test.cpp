@@ -60,33 +60,6 @@ ElemVec random_state(unsigned seed, double size, double u_fraction) {
   return x;
 }
 
-/// Every registry model, with moduli of the order of kC1.
-std::vector<AnyMaterial> every_material() {
-  const std::map<std::string, MaterialValues> values = {
-      {"neo-hookean", {{"c1", 0.5}}},
-      {"mooney-rivlin", {{"c1", 0.35}, {"c2", 0.15}}},
-      {"fung", {{"mu", 1.0}, {"gamma", 1.5}}},
-      {"yeoh", {{"c1", 0.5}, {"c2", -0.05}, {"c3", 0.02}}},
-      {"gent", {{"mu", 1.0}, {"jm", 20.0}}},
-      {"arruda-boyce", {{"mu", 1.0}, {"lambda_m", 3.0}}},
-      {"ogden",
-       {{"mu1", 0.6},
-        {"alpha1", 1.3},
-        {"mu2", 0.01},
-        {"alpha2", 5.0},
-        {"mu3", -0.02},
-        {"alpha3", -2.0}}},
-      // Fibres in the x-y plane and along z (see the pre-stretch in the element test below).
-      {"fibre-reinforced",
-       {{"c1", 0.4}, {"k1", 1.0}, {"k2", 0.5}, {"a1_x", 1.0}, {"a1_y", 0.5}, {"a2_z", 1.0}}}};
-  std::vector<AnyMaterial> out;
-  for (const MaterialModelInfo& info : material_models()) {
-    EXPECT_EQ(values.count(info.name), 1u) << "no parameters for " << info.name;
-    if (values.count(info.name)) out.push_back(make_material(info.name, values.at(info.name)));
-  }
-  return out;
-}
-
 TEST(TaylorHoodShape, PartitionOfUnityAndKroneckerProperty) {
   const std::array<std::array<double, 4>, kNodes> node_L = {{{1, 0, 0, 0},
                                                              {0, 1, 0, 0},
@@ -185,7 +158,7 @@ double residual_error(const Geometry& g, const ElemVec& x, const ElemVec& r, con
 }
 
 TEST(TaylorHoodElement, ResidualIsGradientOfFunctionalAndTangentItsDerivativeForEveryMaterial) {
-  for (const AnyMaterial& any : every_material())
+  for (const AnyMaterial& any : test::every_material())
     for (const double inverse_bulk_modulus : {0.0, 0.1})
       for (const double bulge : {0.0, 0.1})
         std::visit(
