@@ -10,11 +10,22 @@
 #include <array>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/types.hpp"
 
 namespace plisse {
+
+/// How a shell triangle's side on a clamped or symmetry edge sees its missing neighbour
+/// (docs/theory/shell.md, KL8a): as the image of the triangle's opposite corner under the fixed
+/// affine map x -> point + map (x - point), in the reference and the current configuration alike.
+/// `map` is orthogonal and symmetric: the reflection through a symmetry plane, or for a clamped
+/// edge the half turn about the reference normal through the side's midpoint.
+struct SideMirror {
+  Vec3d point = Vec3d::Zero();  ///< a fixed point of the map [mm]
+  Mat3d map = Mat3d::Identity();
+};
 
 struct Mesh {
   std::vector<Vec3d> nodes;                        ///< reference coordinates [mm]
@@ -35,6 +46,15 @@ struct Mesh {
   /// corner of the neighbouring triangle across that side that is not on it (shell.md, KL1),
   /// -1 where the side is an edge of the surface. Else empty.
   std::vector<std::array<int, 3>> triangle_neighbours;
+  /// Shell meshes only: the tagged curves of the mid-surface (Gmsh physical groups of dimension
+  /// 1, or a generator's named edges) as node pairs, and their tags: name -> indices into `edges`.
+  /// A shell's boundary conditions name these (docs/meshes.md, "Shell meshes").
+  std::vector<std::array<int, 2>> edges;
+  std::map<std::string, std::vector<int>> edge_tags;
+  /// Shell meshes only: the sides without a neighbour, by (triangle, side), whose missing node
+  /// is a mirror image (clamped and symmetry edges, KL8a); every other such side is free or
+  /// hinged (KL8). Set from the case's conditions before the model is made.
+  std::map<std::pair<int, int>, SideMirror> side_mirrors;
 
   int n_nodes() const { return static_cast<int>(nodes.size()); }
   int n_tets() const { return static_cast<int>(tets.size()); }

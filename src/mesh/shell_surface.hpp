@@ -3,6 +3,9 @@
 /// with the thickness of every node and, for every triangle, the nodes across its three sides,
 /// the 6-node patch of the rotation-free shell triangle (KL1). The neighbours are found once,
 /// here, so that the assembly reads an element's patch in O(1).
+#include <utility>
+#include <vector>
+
 #include "mesh/mesh.hpp"
 
 namespace plisse {
@@ -14,5 +17,21 @@ namespace plisse {
 /// triangles, or two triangles sharing an edge are oriented inconsistently (both run through it
 /// in the same direction: their normals, and a follower pressure on them, would disagree).
 void make_shell_surface(Mesh& mesh, double thickness);
+
+/// The sides of the shell's triangles that lie on the tagged edges `edges` (indices into
+/// mesh.edges) and have no neighbour, each as its directed pair of nodes (corner i + 1, corner
+/// i + 2 of its triangle, the key of Mesh::side_mirrors). Precondition: mesh.is_shell().
+std::vector<std::pair<int, int>> sides_on_edges(const Mesh& mesh, const std::vector<int>& edges);
+
+/// A clamped edge (docs/theory/shell.md, KL8a): every side of `edges` without a neighbour sees
+/// its missing node as the half turn of the opposite corner about the triangle's reference
+/// normal through the side's midpoint, so that the slope across the edge stays in the reference
+/// tangent plane while the edge's nodes are held. Precondition: mesh.is_shell().
+void clamp_sides(Mesh& mesh, const std::vector<int>& edges);
+
+/// A symmetry edge (KL8a): every side of `edges` without a neighbour sees its missing node as the
+/// mirror image of the opposite corner through the plane x_axis = value, so that the surface
+/// meets the plane at a right angle. Precondition: mesh.is_shell(), axis 0, 1 or 2.
+void mirror_sides(Mesh& mesh, const std::vector<int>& edges, int axis, double value);
 
 }  // namespace plisse
