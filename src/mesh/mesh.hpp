@@ -51,6 +51,11 @@ struct Mesh {
   /// A shell's boundary conditions name these (docs/meshes.md, "Shell meshes").
   std::vector<std::array<int, 2>> edges;
   std::map<std::string, std::vector<int>> edge_tags;
+  /// Shell meshes only: the face of the shell that a surface tag names, +1 the face the
+  /// triangles' normals point out of (a generated shell's `outer` or `top`), -1 the other
+  /// (`inner`, `bottom`). A tag not listed (a Gmsh physical surface) names the -1 face: a
+  /// pressure on it pushes along the normals.
+  std::map<std::string, int> shell_face_side;
   /// Shell meshes only: the sides without a neighbour, by (triangle, side), whose missing node
   /// is a mirror image (clamped and symmetry edges, KL8a); every other such side is free or
   /// hinged (KL8). Set from the case's conditions before the model is made.
