@@ -139,7 +139,15 @@ std::array<NodeWeights, 3> curvature_weights(const std::array<SideCoefficients, 
 
 }  // namespace
 
-ShellGeometry compute_shell_geometry(const PatchPositions& X, const NeighbourFlags& has_neighbour) {
+ShellGeometry compute_shell_geometry(const PatchPositions& X_global,
+                                     const NeighbourFlags& has_neighbour) {
+  // Positions relative to the triangle's centroid: the element depends on differences only, and
+  // the sums of the side gradients (KL3) then cancel terms of the element's size, not of its
+  // distance from the origin (a patch 100 mm out in elements of 5 mm had strain round-off of
+  // 1e-14, forces of 1e-14 N, which stalled Newton on a small load).
+  const Vec3d origin = (X_global[0] + X_global[1] + X_global[2]) / 3.0;
+  PatchPositions X;
+  for (int n = 0; n < kPatchNodes; ++n) X[n] = X_global[n] - origin;
   ShellGeometry g;
   g.has_neighbour = has_neighbour;
   g.frame = triangle_frame(X, g.area);

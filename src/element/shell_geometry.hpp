@@ -38,8 +38,9 @@ using NeighbourFlags = std::array<bool, 3>;
 
 /// The reference geometry of a patch. Plain data; thread-safe to share between kernels.
 struct ShellGeometry {
-  PatchVec X;                      ///< reference positions of the 6 nodes [mm] (a missing
-                                   ///< neighbour's entries are ignored)
+  PatchVec X;                      ///< reference positions of the 6 nodes relative to the
+                                   ///< triangle's centroid [mm] (a missing neighbour's entries
+                                   ///< are ignored); the element depends on differences only
   Mat3d frame;                     ///< columns e1, e2, e3 of the triangle (KL3)
   double area = 0.0;               ///< A0 [mm²]
   NeighbourFlags has_neighbour{};  ///< false: the side is an edge of the mesh (KL8)
