@@ -1,6 +1,10 @@
 #include "mesh/boundary_tags.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
+#include <utility>
 
 #include "core/error.hpp"
 
@@ -45,6 +49,39 @@ void orient_generated_tets(Mesh& mesh, const std::string& generator) {
                  generator << ": generated tetrahedron " << t << " is degenerate (volume " << volume
                            << " mm^3); try a smaller element_size");
     if (volume < 0.0) flip_tet(mesh, t);
+  }
+}
+
+void tag_boundary_edges(Mesh& mesh, const std::vector<EdgePlane>& planes) {
+  // Undirected side -> number of triangles using it.
+  std::map<std::pair<int, int>, int> uses;
+  auto key = [](int a, int b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
+  for (const auto& tri : mesh.triangles)
+    for (std::size_t i = 0; i < 3; ++i) ++uses[key(tri[i], tri[(i + 1) % 3])];
+  // The plane of each boundary side, so that each plane's edges are consecutive (one Gmsh curve
+  // per tag when written).
+  std::vector<std::vector<std::array<int, 2>>> in_plane(planes.size());
+  for (const auto& tri : mesh.triangles)
+    for (std::size_t i = 0; i < 3; ++i) {
+      const int a = tri[i], b = tri[(i + 1) % 3];
+      if (uses.at(key(a, b)) != 1) continue;
+      const Vec3d& xa = mesh.nodes[static_cast<std::size_t>(a)];
+      const Vec3d& xb = mesh.nodes[static_cast<std::size_t>(b)];
+      for (std::size_t p = 0; p < planes.size(); ++p)
+        if (xa[planes[p].axis] == planes[p].value && xb[planes[p].axis] == planes[p].value) {
+          in_plane[p].push_back({a, b});
+          break;
+        }
+    }
+  mesh.edges.clear();
+  mesh.edge_tags.clear();
+  for (std::size_t p = 0; p < planes.size(); ++p) {
+    for (const auto& name : planes[p].names) mesh.edge_tags[name];
+    for (const auto& edge : in_plane[p]) {
+      const int index = static_cast<int>(mesh.edges.size());
+      mesh.edges.push_back(edge);
+      for (const auto& name : planes[p].names) mesh.edge_tags[name].push_back(index);
+    }
   }
 }
 

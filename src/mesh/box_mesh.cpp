@@ -65,4 +65,33 @@ Mesh make_box_mesh(const Vec3d& extent, const std::array<int, 3>& cells, int ord
   return mesh;
 }
 
+Mesh make_rectangle_surface(double length, double width, double z,
+                            const std::array<int, 2>& cells) {
+  const int nx = cells[0], ny = cells[1];
+  PLISSE_CHECK(nx >= 1 && ny >= 1, "make_rectangle_surface: cell counts must be >= 1");
+  Mesh mesh;
+  auto coordinate = [](double extent, int i, int n) { return i == n ? extent : extent * i / n; };
+  auto node = [&](int i, int j) { return i + (nx + 1) * j; };
+  mesh.nodes.reserve(static_cast<std::size_t>((nx + 1) * (ny + 1)));
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i)
+      mesh.nodes.emplace_back(coordinate(length, i, nx), coordinate(width, j, ny), z);
+  mesh.triangles.reserve(static_cast<std::size_t>(2 * nx * ny));
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      mesh.triangles.push_back({node(i, j), node(i + 1, j), node(i + 1, j + 1)});
+      mesh.triangles.push_back({node(i, j), node(i + 1, j + 1), node(i, j + 1)});
+    }
+  std::vector<int> all(mesh.triangles.size());
+  for (std::size_t t = 0; t < all.size(); ++t) all[t] = static_cast<int>(t);
+  mesh.surface_tags["bottom"] = all;
+  mesh.surface_tags["top"] = all;
+  mesh.shell_face_side = {{"bottom", -1}, {"top", +1}};
+  tag_boundary_edges(mesh, {{{"left", "sym_x"}, 0, 0.0},
+                            {{"right"}, 0, length},
+                            {{"front", "sym_y"}, 1, 0.0},
+                            {{"back"}, 1, width}});
+  return mesh;
+}
+
 }  // namespace plisse

@@ -1,5 +1,6 @@
 #pragma once
-/// Structured tetrahedral mesh of a box (cube and sheet generators).
+/// Structured tetrahedral mesh of a box (cube and sheet generators), and the structured mid-plane
+/// of the sheet as a shell.
 #include <array>
 #include <functional>
 
@@ -18,6 +19,16 @@ namespace plisse {
 /// `order` 2 adds the straight edge midpoints as edge nodes (10-node tetrahedra, 6-node
 /// triangles; add_straight_edge_nodes), which are exact for the flat-sided box.
 Mesh make_box_mesh(const Vec3d& extent, const std::array<int, 3>& cells, int order = 1);
+
+/// The shell mid-surface of a sheet: the rectangle [0, length] x [0, width] in the plane z = `z`
+/// [mm] with cells[0] x cells[1] cells, each cut into two triangles by its diagonal from
+/// (i, j) to (i + 1, j + 1) (the faces of make_box_mesh's Kuhn cells on a plane z = const),
+/// numbered counter-clockwise seen from +z, so every normal is +z. Nodes are those of
+/// make_box_mesh's plane of the same z (x = length i / nx, exactly length at i = nx; the same in
+/// y). Surface tags `bottom` and `top` both list every triangle (Mesh::shell_face_side -1 and +1);
+/// edge tags `left` = `sym_x` (x = 0), `right` (x = length), `front` = `sym_y` (y = 0), `back`
+/// (y = width). The shell's thickness and neighbours are left to make_shell_surface.
+Mesh make_rectangle_surface(double length, double width, double z, const std::array<int, 2>& cells);
 
 /// Appends to `mesh.tets` the 6 Kuhn tetrahedra (above) of every cell of a structured grid of
 /// cells[0] x cells[1] x cells[2] cells, cell (i, j, k) having the corner nodes

@@ -4,10 +4,15 @@
 #include <cmath>
 #include <functional>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "core/error.hpp"
+#include "mesh/boundary_tags.hpp"
 #include "mesh/box_mesh.hpp"
 #include "mesh/layered_shell.hpp"
+#include "mesh/shell_surface.hpp"
 #include "mesh/spheroid_surface.hpp"
 #include "mesh/tube_mesh.hpp"
 
@@ -196,20 +201,51 @@ double estimate_n_tets(const MeshGenerationSpec& spec) {
   return 0.0;
 }
 
-void validate_mesh_spec(const MeshGenerationSpec& spec) {
+double estimate_n_shell_triangles(const MeshGenerationSpec& spec) {
+  if (spec.kind == "sheet")
+    return 2.0 * sheet_cells(spec.length, spec.element_size) *
+           sheet_cells(spec.width, spec.element_size);
+  if (spec.kind == "tube")
+    return 2.0 * std::max(1.0, std::round(spec.length / spec.element_size)) *
+           tube_divisions_around(spec.radius, spec.element_size, spec.symmetry == Symmetry::half);
+  if (spec.kind == "spherical-shell") {
+    const double r = spec.inner_radius + 0.5 * spec.thickness;
+    return estimate_spheroid_triangles(r, r, spec.element_size, spec.symmetry,
+                                       pole_refinement(spec));
+  }
+  if (spec.kind == "airbag")
+    return estimate_spheroid_triangles(spec.radius, std::min(spec.radius, spec.height / 2.0),
+                                       spec.element_size, spec.symmetry, pole_refinement(spec));
+  return 0.0;
+}
+
+namespace {
+
+/// validate_mesh_spec, or (`shell`) the rules of generate_shell_surface: no cube, `layers`
+/// ignored, order 1, and the limit on triangles.
+void validate_spec(const MeshGenerationSpec& spec, bool shell) {
   const MeshKind* kind = find_mesh_kind(spec.kind);
   if (kind == nullptr) {
     std::string known;
     for (const auto& k : mesh_kinds()) known += (known.empty() ? "" : ", ") + k.name;
     reject("generate", "unknown mesh kind '" + spec.kind + "' (known: " + known + ")");
   }
+  if (shell && spec.kind == "cube")
+    reject("generate",
+           "the cube is a solid and has no mid-surface: shell meshes are generated for sheet, "
+           "spherical-shell, airbag and tube");
   for (const auto& option : kind->options) {
+    if (shell && option.integer == &Spec::layers) continue;
     std::optional<std::string> violation;
     if (option.real) violation = option.range.violation(spec.*option.real);
     if (option.integer)
       violation = option.range.violation(static_cast<double>(spec.*option.integer));
     if (violation) reject(option.key, *violation);
   }
+  if (shell && spec.order != 1)
+    reject("order",
+           "a shell mesh is a mid-surface of linear (3-node) triangles: order must be 1 (got " +
+               std::to_string(spec.order) + ")");
   if (spec.kind == "spherical-shell" || spec.kind == "airbag") {
     if (spec.pole_element_size > spec.element_size)
       reject("pole_element_size", "must be <= element_size = " + number(spec.element_size) +
@@ -248,6 +284,14 @@ void validate_mesh_spec(const MeshGenerationSpec& spec) {
       reject("element_size", "must be <= radius = " + number(spec.radius) + " mm (got " +
                                  number(spec.element_size) + ")");
   }
+  if (shell) {
+    const double n = estimate_n_shell_triangles(spec);
+    if (n > kMaxGeneratedTriangles)
+      reject("element_size", "the mid-surface would have about " + number(n) +
+                                 " triangles, more than the limit of " +
+                                 number(kMaxGeneratedTriangles) + "; choose a coarser mesh");
+    return;
+  }
   const double n = estimate_n_tets(spec);
   if (n > kMaxGeneratedTets) {
     const std::string key = spec.kind == "cube" ? "divisions" : "element_size";
@@ -255,6 +299,30 @@ void validate_mesh_spec(const MeshGenerationSpec& spec) {
                     number(kMaxGeneratedTets) + "; choose a coarser mesh");
   }
 }
+
+/// The mid-surface `surface` (outward triangles, from mesh_spheroid_surface) of a spheroid shell
+/// cut by `symmetry`, with its tags.
+Mesh spheroid_shell_surface(SurfaceTriangulation surface, Symmetry symmetry) {
+  Mesh mesh;
+  mesh.nodes = std::move(surface.nodes);
+  mesh.triangles = std::move(surface.triangles);
+  std::vector<int> all(mesh.triangles.size());
+  for (std::size_t t = 0; t < all.size(); ++t) all[t] = static_cast<int>(t);
+  mesh.surface_tags["inner"] = all;
+  mesh.surface_tags["outer"] = all;
+  mesh.shell_face_side = {{"inner", -1}, {"outer", +1}};
+  const auto planes = cut_planes(symmetry);
+  std::vector<EdgePlane> edge_planes;
+  for (int axis = 0; axis < 3; ++axis)
+    if (planes[static_cast<std::size_t>(axis)])
+      edge_planes.push_back({{std::string("sym_") + "xyz"[axis]}, axis, 0.0});
+  tag_boundary_edges(mesh, edge_planes);
+  return mesh;
+}
+
+}  // namespace
+
+void validate_mesh_spec(const MeshGenerationSpec& spec) { validate_spec(spec, false); }
 
 Mesh generate_mesh(const MeshGenerationSpec& spec) {
   validate_mesh_spec(spec);
@@ -326,6 +394,29 @@ Mesh generate_mesh(const MeshGenerationSpec& spec) {
       return Vec3d(m + o * unit_normal(m));
     };
   return make_layered_shell(surface, spec.layers, spec.symmetry, position, midpoint);
+}
+
+Mesh generate_shell_surface(const MeshGenerationSpec& spec) {
+  validate_spec(spec, true);
+  Mesh mesh;
+  if (spec.kind == "sheet") {
+    mesh = make_rectangle_surface(
+        spec.length, spec.width, 0.5 * spec.thickness,
+        {sheet_cells(spec.length, spec.element_size), sheet_cells(spec.width, spec.element_size)});
+  } else if (spec.kind == "tube") {
+    mesh = make_tube_surface(spec.radius, spec.length, spec.element_size,
+                             spec.symmetry == Symmetry::half);
+  } else {
+    // The sphere of the wall's mid radius, or the airbag's mid-surface (generate_mesh).
+    const bool sphere = spec.kind == "spherical-shell";
+    const double a = sphere ? spec.inner_radius + 0.5 * spec.thickness : spec.radius;
+    const double c = sphere ? a : spec.height / 2.0;
+    mesh = spheroid_shell_surface(
+        mesh_spheroid_surface(a, c, spec.element_size, spec.symmetry, pole_refinement(spec)),
+        spec.symmetry);
+  }
+  make_shell_surface(mesh, spec.thickness);
+  return mesh;
 }
 
 }  // namespace plisse

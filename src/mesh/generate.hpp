@@ -1,5 +1,6 @@
 #pragma once
-/// Generated meshes (through the Gmsh API): cube, spherical shell, airbag, sheet, tube.
+/// Generated meshes (through the Gmsh API): cube, spherical shell, airbag, sheet, tube; and the
+/// mid-surfaces of all but the cube as shells.
 ///
 /// The options of each kind are declared once in `mesh_kinds()` (key, unit, range, help, default);
 /// the case-file parser (`mesh:` section) and `plisse mesh KIND --key value` both read that table,
@@ -36,7 +37,8 @@ struct MeshGenerationSpec {
   double width = 50.0;   ///< [mm]
   // shared by shell, airbag, sheet
   double thickness = 1.0;              ///< wall/sheet thickness [mm]
-  int layers = 3;                      ///< tetrahedra through the thickness (exactly)
+  int layers = 3;                      ///< tetrahedra through the thickness (exactly); not a
+                                       ///< shell's (generate_shell_surface ignores it)
   double element_size = 1.0;           ///< target in-surface element size [mm]
   Symmetry symmetry = Symmetry::full;  ///< shell and airbag; tube: full or half
   // shell and airbag: finer elements about the +y pole (0 = none; docs/meshes.md)
@@ -80,6 +82,28 @@ std::string to_string(Symmetry s);
 /// true curved surfaces for the shell and the airbag (docs/meshes.md, "Second-order meshes").
 Mesh generate_mesh(const MeshGenerationSpec& spec);
 
+/// Generates the mid-surface of the shell `spec` describes (docs/meshes.md, "Shell meshes"): a
+/// Mesh of linear triangles and no tetrahedra, made a shell of thickness `spec.thickness` by
+/// make_shell_surface (mesh/shell_surface.hpp), for the kinds
+/// - `sheet`: the plane z = thickness/2 over [0, length] x [0, width], structured like the solid
+///   sheet's planes (the same nodes in x and y), normals +z;
+/// - `spherical-shell`: the sphere of radius inner_radius + thickness/2; `airbag`: the spheroid
+///   the solid airbag's wall is centred on; both triangulated by Gmsh as the solids' surfaces are
+///   (mesh_spheroid_surface), nodes exactly on the surface, normals outward;
+/// - `tube`: the cylinder of radius `radius` from x = 0 to length, structured like the solid
+///   tube's layers, normals outward;
+/// with the solid's `symmetry`, `element_size` and pole refinement. Nodes on a cut plane have
+/// that coordinate exactly 0. Surface tags list every triangle: `bottom` and `top` (sheet) or
+/// `inner` and `outer`, with Mesh::shell_face_side -1 and +1. Edge tags (Mesh::edges, edge_tags)
+/// are the boundary edges in the planes of the solid's tags: `sym_x`, `sym_y`, `sym_z` (x, y, z =
+/// 0) of a cut, the sheet's `left` = `sym_x`, `right`, `front` = `sym_y`, `back`, the tube's
+/// `left` (x = 0) and `right` (x = length).
+/// `layers` is ignored (not even range-checked). Throws InputError at "mesh.generate" for the
+/// cube (it has no mid-surface), at "mesh.order" for order 2 (the shell triangle is linear), and
+/// as validate_mesh_spec for the other options, with the size limit on triangles
+/// (kMaxGeneratedTriangles) instead of tetrahedra.
+Mesh generate_shell_surface(const MeshGenerationSpec& spec);
+
 /// Checks `spec` without generating: the kind is known (key "mesh.generate"), each option of the
 /// kind is in its declared range, the cross-option rules hold (e.g. airbag thickness below the
 /// smallest radius of curvature of the mid-surface) and the estimated size is at most
@@ -91,5 +115,10 @@ double estimate_n_tets(const MeshGenerationSpec& spec);
 
 /// Largest accepted estimated mesh size (tetrahedra).
 inline constexpr double kMaxGeneratedTets = 20e6;
+
+/// Estimated number of triangles `generate_shell_surface(spec)` makes (exact for the sheet and
+/// the tube), and its limit.
+double estimate_n_shell_triangles(const MeshGenerationSpec& spec);
+inline constexpr double kMaxGeneratedTriangles = 20e6;
 
 }  // namespace plisse

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "core/error.hpp"
 #include "mesh/boundary_tags.hpp"
@@ -11,6 +12,26 @@
 #include "mesh/second_order.hpp"
 
 namespace plisse {
+namespace {
+
+/// Unit directions (cos phi, sin phi) of the node rows about the axis, phi = sweep k / na: na + 1
+/// rows over pi for the half tube, na over 2 pi for the full one. z is exactly 0 at phi = 0 and
+/// phi = pi.
+std::vector<std::array<double, 2>> directions_about_axis(int na, bool half) {
+  const int rows = half ? na + 1 : na;
+  const double sweep = half ? std::numbers::pi : 2.0 * std::numbers::pi;
+  std::vector<std::array<double, 2>> direction(static_cast<std::size_t>(rows));
+  for (int k = 0; k < rows; ++k) {
+    const double phi = sweep * k / na;
+    auto& d = direction[static_cast<std::size_t>(k)];
+    const bool at_pi = half ? k == na : 2 * k == na;
+    d = at_pi ? std::array<double, 2>{-1.0, 0.0}
+              : std::array<double, 2>{std::cos(phi), std::sin(phi)};
+  }
+  return direction;
+}
+
+}  // namespace
 
 int tube_divisions_around(double radius, double h, bool half) {
   const int n = std::max(3, static_cast<int>(std::lround(std::numbers::pi * radius / h)));
@@ -28,16 +49,7 @@ Mesh make_tube_mesh(double radius, double length, double thickness, int layers, 
   // row na is row 0 again (the Kuhn cut is the same in every cell, so the seam is conforming).
   const int rows = half ? na + 1 : na;
   auto node = [&](int i, int k, int j) { return i + (nx + 1) * (k % rows + rows * j); };
-  const double sweep = half ? std::numbers::pi : 2.0 * std::numbers::pi;
-  // Unit directions (cos phi, sin phi) about the axis; z exactly 0 at phi = 0 and phi = pi.
-  std::vector<std::array<double, 2>> direction(static_cast<std::size_t>(rows));
-  for (int k = 0; k < rows; ++k) {
-    const double phi = sweep * k / na;
-    auto& d = direction[static_cast<std::size_t>(k)];
-    const bool at_pi = half ? k == na : 2 * k == na;
-    d = at_pi ? std::array<double, 2>{-1.0, 0.0}
-              : std::array<double, 2>{std::cos(phi), std::sin(phi)};
-  }
+  const auto direction = directions_about_axis(na, half);
   auto x_of = [&](int i) { return i == nx ? length : length * i / nx; };
   auto r_of = [&](int j) {
     const double inner = radius - 0.5 * thickness;
@@ -84,6 +96,39 @@ Mesh make_tube_mesh(double radius, double length, double thickness, int layers, 
       // Both ends on z = 0 (same row, phi = 0 or pi): dz is exactly 0, so z stays exactly 0.
       return Vec3d(0.5 * (x_of(ia[0]) + x_of(ib[0])), r * dy / norm, r * dz / norm);
     });
+  return mesh;
+}
+
+Mesh make_tube_surface(double radius, double length, double h, bool half) {
+  PLISSE_CHECK(radius > 0.0 && length > 0.0 && h > 0.0,
+               "make_tube_surface: needs radius > 0, length > 0, h > 0");
+  const int nx = std::max(1, static_cast<int>(std::lround(length / h)));
+  const int na = tube_divisions_around(radius, h, half);
+  const int rows = half ? na + 1 : na;  // the full tube's row na is row 0
+  auto node = [&](int i, int k) { return i + (nx + 1) * (k % rows); };
+  const auto direction = directions_about_axis(na, half);
+  Mesh mesh;
+  mesh.nodes.reserve(static_cast<std::size_t>((nx + 1) * rows));
+  for (int k = 0; k < rows; ++k)
+    for (int i = 0; i <= nx; ++i) {
+      const auto& d = direction[static_cast<std::size_t>(k)];
+      mesh.nodes.emplace_back(i == nx ? length : length * i / nx, radius * d[0], radius * d[1]);
+    }
+  // Counter-clockwise in (x, phi) runs the normal e_x x e_phi towards the axis: reversed.
+  mesh.triangles.reserve(static_cast<std::size_t>(2 * nx * na));
+  for (int k = 0; k < na; ++k)
+    for (int i = 0; i < nx; ++i) {
+      mesh.triangles.push_back({node(i, k), node(i + 1, k + 1), node(i + 1, k)});
+      mesh.triangles.push_back({node(i, k), node(i, k + 1), node(i + 1, k + 1)});
+    }
+  std::vector<int> all(mesh.triangles.size());
+  for (std::size_t t = 0; t < all.size(); ++t) all[t] = static_cast<int>(t);
+  mesh.surface_tags["inner"] = all;
+  mesh.surface_tags["outer"] = all;
+  mesh.shell_face_side = {{"inner", -1}, {"outer", +1}};
+  std::vector<EdgePlane> planes = {{{"left"}, 0, 0.0}, {{"right"}, 0, length}};
+  if (half) planes.push_back({{"sym_z"}, 2, 0.0});
+  tag_boundary_edges(mesh, planes);
   return mesh;
 }
 

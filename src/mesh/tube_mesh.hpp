@@ -1,5 +1,6 @@
 #pragma once
-/// Structured tetrahedral mesh of a thin-walled open tube (tube generator: the air beam).
+/// Structured tetrahedral mesh of a thin-walled open tube (tube generator: the air beam), and its
+/// mid-surface as a shell.
 #include "mesh/mesh.hpp"
 
 namespace plisse {
@@ -22,5 +23,15 @@ int tube_divisions_around(double radius, double h, bool half);
 /// x, the mean radius of its two corners and the mean of their directions about the axis.
 Mesh make_tube_mesh(double radius, double length, double thickness, int layers, double h, bool half,
                     int order);
+
+/// The shell mid-surface of the same tube: the cylinder r = `radius` [mm] from x = 0 to x =
+/// `length`, whole or (`half`) z >= 0, on the grid of make_tube_mesh's layer cylinders (the same
+/// divisions along x and about the axis, so its nodes are those of a solid layer of that radius),
+/// each cell cut into two triangles by its diagonal from (x_i, phi_k) to (x_i+1, phi_k+1) and
+/// numbered so that every normal points away from the axis. Nodes lie exactly on the cylinder
+/// (y = r cos phi, z = r sin phi), on x = 0 and x = length, and (half tube) on z = 0.
+/// Surface tags `inner` and `outer` both list every triangle (Mesh::shell_face_side -1 and +1);
+/// edge tags `left` (x = 0), `right` (x = length) and, for the half tube, `sym_z` (z = 0).
+Mesh make_tube_surface(double radius, double length, double h, bool half);
 
 }  // namespace plisse
