@@ -139,18 +139,26 @@ int orient_triangles_outward(Mesh& mesh) {
   return n_flipped;
 }
 
-/// In the reader process: copies what read_gmsh needs out of the model Gmsh just read.
-RawGmshModel extract_model() {
+/// Which elements and groups the reader process copies: a solid's (dimensions 2 and 3) or a
+/// shell surface's (also dimension 1: the line elements of its curves).
+enum class ReadDims { solid, surface };
+
+/// In the reader process: copies what read_gmsh (or read_gmsh_surface) needs out of the model
+/// Gmsh just read.
+RawGmshModel extract_model(ReadDims what) {
   RawGmshModel m;
-  for (int dim : {2, 3}) {
+  const std::vector<int> dims =
+      what == ReadDims::solid ? std::vector<int>{2, 3} : std::vector<int>{1, 2, 3};
+  for (int dim : dims) {
     std::vector<int> types;
     gmsh::model::mesh::getElementTypes(types, dim, -1);
     for (int type : types) m.types.push_back({type, dim, element_type_name(type)});
   }
   std::vector<double> parametric;
   gmsh::model::mesh::getNodes(m.node_tags, m.coordinates, parametric, -1, -1, false, false);
-  const auto is_read = [](int type) {
-    return type == kTet4 || type == kTet10 || type == kTri3 || type == kTri6;
+  const auto is_read = [&](int type) {
+    return type == kTet4 || type == kTet10 || type == kTri3 || type == kTri6 ||
+           (what == ReadDims::surface && type == kLine2);
   };
   for (const auto& t : m.types) {
     if (!is_read(t.type)) continue;
@@ -161,7 +169,7 @@ RawGmshModel extract_model() {
   gmsh::vectorpair groups;
   gmsh::model::getPhysicalGroups(groups, -1);
   for (const auto& [dim, tag] : groups) {
-    if (dim != 2 && dim != 3) continue;
+    if (std::find(dims.begin(), dims.end(), dim) == dims.end()) continue;
     RawPhysicalGroup& g = m.groups.emplace_back();
     g.dim = dim;
     g.tag = tag;
@@ -185,11 +193,11 @@ RawGmshModel extract_model() {
 /// In the reader process: opens `path` with Gmsh and sends the model or the error to the parent.
 /// Gmsh logs its errors (GmshSession) or throws a string, std::bad_alloc (an announced count
 /// beyond the memory limit) or a standard exception.
-void read_in_child(const std::string& path, GmshSession& session, ChildOutput& out) {
+void read_in_child(const std::string& path, ReadDims what, GmshSession& session, ChildOutput& out) {
   try {
     gmsh::open(path);
     session.check_input(path, "cannot read the mesh file");
-    const RawGmshModel model = extract_model();
+    const RawGmshModel model = extract_model(what);
     session.check_input(path, "cannot read the mesh file");
     send_model(model, out);
   } catch (const InputError& e) {
@@ -205,35 +213,10 @@ void read_in_child(const std::string& path, GmshSession& session, ChildOutput& o
   }
 }
 
-/// The Mesh from what the reader process sent (conventions: gmsh_io.hpp).
-Mesh build_mesh(const RawGmshModel& model, const std::string& path, GmshReadInfo& info) {
-  Mesh mesh;
-  // Element types present: refuse what plisse cannot use, naming the type.
-  std::vector<int> types3, types2;
-  for (const auto& t : model.types) (t.dim == 3 ? types3 : types2).push_back(t.type);
-  for (int type : types3)
-    if (type != kTet4 && type != kTet10)
-      throw file_error(
-          path, "unsupported volume element type '" + type_name(model, type) + "' (Gmsh type " +
-                    std::to_string(type) +
-                    "): plisse reads tetrahedra only (4 or 10 nodes); re-mesh the volume with "
-                    "tetrahedra");
-  for (int type : types2)
-    if (type != kTri3 && type != kTri6)
-      throw file_error(path, "unsupported surface element type '" + type_name(model, type) +
-                                 "' (Gmsh type " + std::to_string(type) +
-                                 "): boundary elements must be triangles (3 or 6 nodes)");
-  const bool has4 = std::count(types3.begin(), types3.end(), kTet4) > 0;
-  const bool has10 = std::count(types3.begin(), types3.end(), kTet10) > 0;
-  if (!has4 && !has10) throw file_error(path, "the file contains no tetrahedra");
-  if (has4 && has10)
-    throw file_error(path, "the file mixes 4-node and 10-node tetrahedra; use one order");
-  const bool has_tri6 = std::count(types2.begin(), types2.end(), kTri6) > 0;
-  const bool has_tri3 = std::count(types2.begin(), types2.end(), kTri3) > 0;
-  if (has_tri6 && (has4 || has_tri3))
-    throw file_error(path, "6-node triangles need 10-node tetrahedra and no 3-node triangles");
-
-  // Nodes, renumbered by increasing Gmsh tag.
+/// The nodes of the model into `mesh.nodes`, renumbered by increasing Gmsh tag; returns the map
+/// from Gmsh tag to index. Refuses a tag given to two different points.
+std::unordered_map<std::size_t, int> read_nodes(const RawGmshModel& model, const std::string& path,
+                                                Mesh& mesh) {
   const auto& node_tags = model.node_tags;
   const auto& coords = model.coordinates;
   if (coords.size() != 3 * node_tags.size())
@@ -265,6 +248,38 @@ Mesh build_mesh(const RawGmshModel& model, const std::string& path, GmshReadInfo
                                  "; every node needs its own tag");
     }
   }
+  return node_index;
+}
+
+/// The Mesh from what the reader process sent (conventions: gmsh_io.hpp).
+Mesh build_mesh(const RawGmshModel& model, const std::string& path, GmshReadInfo& info) {
+  Mesh mesh;
+  // Element types present: refuse what plisse cannot use, naming the type.
+  std::vector<int> types3, types2;
+  for (const auto& t : model.types) (t.dim == 3 ? types3 : types2).push_back(t.type);
+  for (int type : types3)
+    if (type != kTet4 && type != kTet10)
+      throw file_error(
+          path, "unsupported volume element type '" + type_name(model, type) + "' (Gmsh type " +
+                    std::to_string(type) +
+                    "): plisse reads tetrahedra only (4 or 10 nodes); re-mesh the volume with "
+                    "tetrahedra");
+  for (int type : types2)
+    if (type != kTri3 && type != kTri6)
+      throw file_error(path, "unsupported surface element type '" + type_name(model, type) +
+                                 "' (Gmsh type " + std::to_string(type) +
+                                 "): boundary elements must be triangles (3 or 6 nodes)");
+  const bool has4 = std::count(types3.begin(), types3.end(), kTet4) > 0;
+  const bool has10 = std::count(types3.begin(), types3.end(), kTet10) > 0;
+  if (!has4 && !has10) throw file_error(path, "the file contains no tetrahedra");
+  if (has4 && has10)
+    throw file_error(path, "the file mixes 4-node and 10-node tetrahedra; use one order");
+  const bool has_tri6 = std::count(types2.begin(), types2.end(), kTri6) > 0;
+  const bool has_tri3 = std::count(types2.begin(), types2.end(), kTri3) > 0;
+  if (has_tri6 && (has4 || has_tri3))
+    throw file_error(path, "6-node triangles need 10-node tetrahedra and no 3-node triangles");
+
+  const std::unordered_map<std::size_t, int> node_index = read_nodes(model, path, mesh);
 
   // Tetrahedra and triangles.
   std::unordered_map<std::size_t, int> tet_of_tag, tri_of_tag;
@@ -349,6 +364,232 @@ Mesh build_mesh(const RawGmshModel& model, const std::string& path, GmshReadInfo
       ++info.n_flipped_tets;
     }
   info.n_flipped_triangles = orient_triangles_outward(mesh);
+  return mesh;
+}
+
+/// "Name (Gmsh type N)" of an element type, for messages.
+std::string type_label(const RawGmshModel& model, int type) {
+  return "'" + type_name(model, type) + "' (Gmsh type " + std::to_string(type) + ")";
+}
+
+/// Refuses the element types a shell surface cannot have (read_gmsh_surface).
+void check_surface_types(const RawGmshModel& model, const std::string& path) {
+  bool has_tri3 = false;
+  for (const auto& t : model.types) {
+    const std::string label = type_label(model, t.type);
+    if (t.dim == 3) {
+      if (t.type == kTet4 || t.type == kTet10) {
+        const RawElementBlock* block = find_block(model, t.type);
+        const std::size_t n = block ? block->element_tags.size() : 0;
+        throw file_error(path, "a shell mesh is a surface: this file has " + std::to_string(n) +
+                                   " tetrahedra (give the mid-surface's triangles alone)");
+      }
+      throw file_error(path, "a shell mesh is a surface: this file has volume elements " + label);
+    }
+    if (t.dim == 2) {
+      if (t.type == kTri3) {
+        has_tri3 = true;
+        continue;
+      }
+      if (t.name.rfind("Triangle", 0) == 0)
+        throw file_error(path, "higher-order triangles " + label +
+                                   ": the shell triangle is linear; mesh with 3-node triangles "
+                                   "(Gmsh: Mesh.ElementOrder = 1)");
+      if (t.name.rfind("Quadrilateral", 0) == 0)
+        throw file_error(path, "quadrilaterals " + label +
+                                   ": a shell mesh is made of triangles; triangulate the surface "
+                                   "(Gmsh: do not recombine)");
+      throw file_error(path, "unsupported surface element type " + label +
+                                 ": a shell mesh is made of 3-node triangles");
+    }
+    if (t.dim == 1 && t.type != kLine2)
+      throw file_error(path,
+                       "higher-order line elements " + label +
+                           ": a shell's edges are 2-node lines (Gmsh: Mesh.ElementOrder = 1)");
+  }
+  if (!has_tri3)
+    throw file_error(path,
+                     "the file contains no triangles: a shell mesh is a surface of 3-node "
+                     "triangles");
+}
+
+/// Makes the triangles of `mesh` (a surface) consistently oriented across every edge, piece by
+/// piece (connected through shared edges), breadth first from the piece's first triangle, whose
+/// orientation is kept; then turns every closed piece (each of its edges shared by two of its
+/// triangles) outward, to a positive enclosed volume. `uses` counts the triangles of each
+/// undirected edge, at most two. Returns the number of triangles turned; refuses a piece that no
+/// orientation makes consistent (a Moebius strip).
+int orient_surface(Mesh& mesh, const std::map<std::pair<int, int>, int>& uses,
+                   const std::vector<std::size_t>& node_tag_of, const std::string& path) {
+  const std::size_t n = mesh.triangles.size();
+  auto key = [](int a, int b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
+  // Undirected edge -> its (at most two) triangles.
+  std::map<std::pair<int, int>, std::array<int, 2>> triangles_of;
+  for (std::size_t t = 0; t < n; ++t)
+    for (std::size_t i = 0; i < 3; ++i) {
+      auto [it, added] = triangles_of.try_emplace(
+          key(mesh.triangles[t][i], mesh.triangles[t][(i + 1) % 3]), std::array<int, 2>{-1, -1});
+      it->second[it->second[0] < 0 ? 0 : 1] = static_cast<int>(t);
+    }
+  // True when triangle t runs from a to b.
+  auto runs = [&](int t, int a, int b) {
+    const auto& tri = mesh.triangles[static_cast<std::size_t>(t)];
+    for (std::size_t i = 0; i < 3; ++i)
+      if (tri[i] == a && tri[(i + 1) % 3] == b) return true;
+    return false;
+  };
+  std::vector<int> piece(n, -1);
+  std::vector<char> turned(n, 0);
+  int n_pieces = 0;
+  for (std::size_t first = 0; first < n; ++first) {
+    if (piece[first] >= 0) continue;
+    const int id = n_pieces++;
+    std::vector<int> members = {static_cast<int>(first)};
+    piece[first] = id;
+    for (std::size_t next = 0; next < members.size(); ++next) {
+      const int t = members[next];
+      const auto tri = mesh.triangles[static_cast<std::size_t>(t)];
+      for (std::size_t i = 0; i < 3; ++i) {
+        const int a = tri[i], b = tri[(i + 1) % 3];
+        const auto& pair = triangles_of.at(key(a, b));
+        const int u = pair[0] == t ? pair[1] : pair[0];
+        if (u < 0) continue;
+        const bool agrees = runs(u, b, a);
+        if (piece[static_cast<std::size_t>(u)] >= 0) {
+          if (!agrees)
+            throw file_error(
+                path,
+                "the surface is not orientable (a Moebius strip?): no orientation of its "
+                "triangles agrees across every edge, e.g. the edge between the nodes with "
+                "Gmsh tags " +
+                    std::to_string(node_tag_of[static_cast<std::size_t>(a)]) + " and " +
+                    std::to_string(node_tag_of[static_cast<std::size_t>(b)]) +
+                    "; a shell needs a surface with two sides");
+          continue;
+        }
+        if (!agrees) {
+          auto& other = mesh.triangles[static_cast<std::size_t>(u)];
+          std::swap(other[1], other[2]);
+          turned[static_cast<std::size_t>(u)] ^= 1;
+        }
+        piece[static_cast<std::size_t>(u)] = id;
+        members.push_back(u);
+      }
+    }
+    // A closed piece: outward, to a positive enclosed volume (sum of the signed volumes of the
+    // cones from one of its nodes, which keeps the round-off of a piece far from the origin small).
+    bool closed = true;
+    for (const int t : members)
+      for (std::size_t i = 0; i < 3 && closed; ++i) {
+        const auto& tri = mesh.triangles[static_cast<std::size_t>(t)];
+        closed = uses.at(key(tri[i], tri[(i + 1) % 3])) == 2;
+      }
+    if (!closed) continue;
+    const Vec3d origin = mesh.nodes[static_cast<std::size_t>(mesh.triangles[first][0])];
+    double six_volume = 0.0;
+    for (const int t : members) {
+      const auto& tri = mesh.triangles[static_cast<std::size_t>(t)];
+      const Vec3d x0 = mesh.nodes[static_cast<std::size_t>(tri[0])] - origin;
+      const Vec3d x1 = mesh.nodes[static_cast<std::size_t>(tri[1])] - origin;
+      const Vec3d x2 = mesh.nodes[static_cast<std::size_t>(tri[2])] - origin;
+      six_volume += x0.dot(x1.cross(x2));
+    }
+    if (six_volume < 0.0)
+      for (const int t : members) {
+        auto& tri = mesh.triangles[static_cast<std::size_t>(t)];
+        std::swap(tri[1], tri[2]);
+        turned[static_cast<std::size_t>(t)] ^= 1;
+      }
+  }
+  return static_cast<int>(std::count(turned.begin(), turned.end(), 1));
+}
+
+/// The shell surface from what the reader process sent (conventions: gmsh_io.hpp,
+/// read_gmsh_surface).
+Mesh build_surface_mesh(const RawGmshModel& model, const std::string& path, GmshReadInfo& info) {
+  check_surface_types(model, path);
+  Mesh mesh;
+  const std::unordered_map<std::size_t, int> node_index = read_nodes(model, path, mesh);
+  std::vector<std::size_t> node_tag_of(mesh.nodes.size());
+  for (const auto& [tag, index] : node_index) node_tag_of[static_cast<std::size_t>(index)] = tag;
+  auto tags_of = [&](int a, int b) {
+    return std::to_string(node_tag_of[static_cast<std::size_t>(a)]) + " and " +
+           std::to_string(node_tag_of[static_cast<std::size_t>(b)]);
+  };
+
+  auto triangles = read_block<3, 3>(model, kTri3, node_index, path);
+  mesh.triangles = std::move(triangles.nodes);
+  info.n_duplicate_elements += triangles.n_duplicates;
+  for (const auto& tri : mesh.triangles)
+    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0])
+      throw file_error(path, "a triangle repeats a node (Gmsh node tags " +
+                                 std::to_string(node_tag_of[static_cast<std::size_t>(tri[0])]) +
+                                 ", " + tags_of(tri[1], tri[2]) + ")");
+  std::map<std::pair<int, int>, int> uses;  // undirected edge -> number of triangles
+  for (const auto& tri : mesh.triangles)
+    for (std::size_t i = 0; i < 3; ++i) {
+      const int a = tri[i], b = tri[(i + 1) % 3];
+      if (++uses[{std::min(a, b), std::max(a, b)}] == 3)
+        throw file_error(path,
+                         "an edge of more than two triangles, between the nodes with Gmsh "
+                         "tags " +
+                             tags_of(a, b) +
+                             ": a shell's surface has at most two triangles on an edge");
+    }
+
+  // Line elements: a shell's edges are those of its physical curves.
+  const auto lines = read_block<2, 2>(model, kLine2, node_index, path);
+  info.n_duplicate_elements += lines.n_duplicates;
+  std::vector<int> edge_of_line(lines.nodes.size(), -1);
+  for (const auto& group : model.groups) {
+    if (group.dim != 1 || group.name == kUntaggedGroupName) continue;
+    for (const auto& elements : group.elements) {
+      if (elements.type != kLine2) continue;
+      for (std::size_t t : elements.element_tags) {
+        const auto it = lines.index_of_tag.find(t);
+        if (it == lines.index_of_tag.end()) continue;
+        const auto& line = lines.nodes[static_cast<std::size_t>(it->second)];
+        const std::string name = group.name.empty() ? "1:" + std::to_string(group.tag) : group.name;
+        if (!uses.count({std::min(line[0], line[1]), std::max(line[0], line[1])}))
+          throw file_error(path, "line element " + std::to_string(t) + " of the physical curve '" +
+                                     name + "', between the nodes with Gmsh tags " +
+                                     tags_of(line[0], line[1]) +
+                                     ", is not a side of a triangle: a shell's edges lie on its "
+                                     "surface");
+        edge_of_line[static_cast<std::size_t>(it->second)] = 0;
+      }
+    }
+  }
+  for (std::size_t l = 0; l < lines.nodes.size(); ++l) {
+    if (edge_of_line[l] < 0) continue;
+    edge_of_line[l] = static_cast<int>(mesh.edges.size());
+    mesh.edges.push_back(lines.nodes[l]);
+  }
+
+  // Physical groups -> tags (dimension 0 ignored; 3 cannot have elements here).
+  for (const auto& group : model.groups) {
+    if (group.dim != 1 && group.dim != 2) continue;
+    std::string name = group.name;
+    if (name == kUntaggedGroupName) continue;
+    if (name.empty()) name = std::to_string(group.dim) + ":" + std::to_string(group.tag);
+    auto& indices = group.dim == 2 ? mesh.surface_tags[name] : mesh.edge_tags[name];
+    for (const auto& elements : group.elements) {
+      if (elements.type != (group.dim == 2 ? kTri3 : kLine2)) continue;
+      for (std::size_t t : elements.element_tags) {
+        if (group.dim == 2) {
+          const auto it = triangles.index_of_tag.find(t);
+          if (it != triangles.index_of_tag.end()) indices.push_back(it->second);
+        } else {
+          const auto it = lines.index_of_tag.find(t);
+          if (it != lines.index_of_tag.end())
+            indices.push_back(edge_of_line[static_cast<std::size_t>(it->second)]);
+        }
+      }
+    }
+    sort_unique(indices);
+  }
+
+  info.n_flipped_triangles = orient_surface(mesh, uses, node_tag_of, path);
   return mesh;
 }
 
@@ -451,7 +692,11 @@ ChildLimits gmsh_reader_limits(std::uintmax_t file_bytes) {
   return limits;
 }
 
-Mesh read_gmsh(const std::string& path, GmshReadInfo& info) {
+namespace {
+
+/// The reader process's limits for the file at `path` (gmsh_reader_limits); refuses a file too
+/// large for this machine's memory before a reader starts.
+ChildLimits reader_limits_for(const std::string& path) {
   std::error_code ec;
   const std::uintmax_t file_bytes = std::filesystem::file_size(path, ec);
   // The reader needs 5-6 bytes of memory per byte of file (gmsh_reader_limits): a file that
@@ -461,11 +706,12 @@ Mesh read_gmsh(const std::string& path, GmshReadInfo& info) {
                                " bytes; reading it needs about 6 bytes of memory per byte, "
                                "more than this machine's " +
                                std::to_string(physical_memory_bytes() >> 20) + " MiB");
-  return read_gmsh(path, info, gmsh_reader_limits(ec ? 0 : file_bytes));
+  return gmsh_reader_limits(ec ? 0 : file_bytes);
 }
 
-Mesh read_gmsh(const std::string& path, GmshReadInfo& info, const ChildLimits& limits) {
-  info = GmshReadInfo{};
+/// Checks the file at `path` (name, header) and reads it with Gmsh in the isolated reader process
+/// (gmsh_io.hpp); returns what the reader sent, or throws InputError naming the file.
+RawGmshModel read_raw_model(const std::string& path, ReadDims what, const ChildLimits& limits) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw file_error(path, "mesh file not found");
   if (!std::filesystem::is_regular_file(path, ec)) throw file_error(path, "not a regular file");
@@ -487,7 +733,8 @@ Mesh read_gmsh(const std::string& path, GmshReadInfo& info, const ChildLimits& l
     // Initialised Gmsh with an empty model and its error log started, inherited by the child;
     // the session also serialises readers within this process.
     GmshSession session;
-    child = run_isolated([&](ChildOutput& out) { read_in_child(path, session, out); }, limits);
+    child =
+        run_isolated([&](ChildOutput& out) { read_in_child(path, what, session, out); }, limits);
   }
   if (child.end == ChildResult::End::wall_time_exceeded)
     throw file_error(path, malformed + "reading it took longer than the time limit of " +
@@ -521,11 +768,43 @@ Mesh read_gmsh(const std::string& path, GmshReadInfo& info, const ChildLimits& l
     case GmshReaderReply::Kind::model:
       break;
   }
+  return std::move(reply.model);
+}
+
+}  // namespace
+
+Mesh read_gmsh(const std::string& path, GmshReadInfo& info) {
+  return read_gmsh(path, info, reader_limits_for(path));
+}
+
+Mesh read_gmsh(const std::string& path, GmshReadInfo& info, const ChildLimits& limits) {
+  info = GmshReadInfo{};
+  const RawGmshModel model = read_raw_model(path, ReadDims::solid, limits);
   try {
-    return build_mesh(reply.model, path, info);
+    return build_mesh(model, path, info);
   } catch (const std::bad_alloc&) {
     throw file_error(path, "cannot read the mesh file: not enough memory for its " +
-                               std::to_string(reply.model.node_tags.size()) + " nodes");
+                               std::to_string(model.node_tags.size()) + " nodes");
+  }
+}
+
+Mesh read_gmsh_surface(const std::string& path) {
+  GmshReadInfo info;
+  return read_gmsh_surface(path, info);
+}
+
+Mesh read_gmsh_surface(const std::string& path, GmshReadInfo& info) {
+  return read_gmsh_surface(path, info, reader_limits_for(path));
+}
+
+Mesh read_gmsh_surface(const std::string& path, GmshReadInfo& info, const ChildLimits& limits) {
+  info = GmshReadInfo{};
+  const RawGmshModel model = read_raw_model(path, ReadDims::surface, limits);
+  try {
+    return build_surface_mesh(model, path, info);
+  } catch (const std::bad_alloc&) {
+    throw file_error(path, "cannot read the mesh file: not enough memory for its " +
+                               std::to_string(model.node_tags.size()) + " nodes");
   }
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-/// Reading and writing Gmsh `.msh` files through the Gmsh SDK (v2 and v4, ASCII and binary).
+/// Reading and writing Gmsh `.msh` files through the Gmsh SDK (v2 and v4, ASCII and binary):
+/// tetrahedral meshes and the triangulated mid-surfaces of shells.
 ///
 /// Conventions of the Mesh produced by `read_gmsh` (docs/meshes.md, "Your own mesh"):
 /// - nodes are all nodes of the file, renumbered 0..n-1 in increasing Gmsh node tag; nodes that no
@@ -14,6 +15,7 @@
 ///   that is not a boundary face of the tetrahedra keeps the file's orientation);
 /// - physical groups of dimension 0 and 1, and the group "plisse:untagged" that `write_gmsh`
 ///   adds to v2 files, are ignored.
+/// `read_gmsh_surface` reads the triangulated mid-surface of a shell instead (below).
 #include <cstdint>
 #include <string>
 
@@ -52,6 +54,31 @@ Mesh read_gmsh(const std::string& path, GmshReadInfo& info);
 /// tighter ones, so that an input on which Gmsh loops costs seconds, not minutes).
 Mesh read_gmsh(const std::string& path, GmshReadInfo& info, const ChildLimits& limits);
 
+/// Reads the mid-surface of a shell (docs/meshes.md, "Shell meshes"): a mesh of 3-node
+/// triangles and no tetrahedra, whose triangles are the shell's elements. Nodes, duplicates and
+/// the reader process as read_gmsh. Physical groups of dimension 2 become surface tags (indices
+/// into `triangles`), of dimension 1 edge tags: the 2-node line elements of the physical curves
+/// become Mesh::edges, once each, in increasing element tag, and the tags list indices into
+/// them; line elements in no physical curve are ignored, as are groups of dimension 0 and the
+/// group "plisse:untagged". Unnamed groups are called "<dim>:<tag>".
+/// Orientation: the triangles are made consistent across every edge, piece by piece (pieces
+/// connected through shared edges), breadth first from the piece's first triangle in the file,
+/// whose orientation an open piece keeps; a closed piece (every edge shared by two of its
+/// triangles) is then turned outward (positive enclosed volume). `info.n_flipped_triangles`
+/// counts the triangles turned.
+/// InputError naming the file and the rule, besides read_gmsh's: tetrahedra ("a shell mesh is a
+/// surface: this file has N tetrahedra") or other volume elements, higher-order triangles or
+/// lines, quadrilaterals (triangulate), no triangles, a triangle that repeats a node, an edge of
+/// more than two triangles, a line element of a physical curve that is not a side of a triangle,
+/// a surface that cannot be oriented (a Moebius strip).
+/// Does not call make_shell_surface (mesh/shell_surface.hpp): the caller knows the thickness.
+/// Nodes that no triangle uses are kept, as read_gmsh keeps them.
+Mesh read_gmsh_surface(const std::string& path);
+/// Same, and reports what was normalised in `info`.
+Mesh read_gmsh_surface(const std::string& path, GmshReadInfo& info);
+/// Same with other limits for the reader process than `gmsh_reader_limits`.
+Mesh read_gmsh_surface(const std::string& path, GmshReadInfo& info, const ChildLimits& limits);
+
 /// Resource limits of the reader process for a file of `file_bytes` bytes: memory 1 GiB + 64 bytes
 /// per file byte (beyond what plisse had mapped), CPU time 10 s + 4 s per MiB, wall time twice the
 /// CPU time + 10 s. Gmsh needs far less on a well-formed file: 5-6 bytes per byte of file and
@@ -63,6 +90,12 @@ ChildLimits gmsh_reader_limits(std::uintmax_t file_bytes);
 /// Round trip through `read_gmsh`: nodes, tetrahedra, triangles and non-empty tags come back
 /// identical, coordinates bit for bit in binary files and to Gmsh's 16 significant digits in
 /// ASCII files. Empty tags are not written (Gmsh stores no empty physical group).
+/// A shell's mid-surface (triangles and no tetrahedra) is written as its triangles, with
+/// `surface_tags` as physical groups of dimension 2, and its `edges` as 2-node line elements,
+/// with `edge_tags` as physical groups of dimension 1; `read_gmsh_surface` reads it back with
+/// the same nodes, triangles (consistently oriented, a closed piece outward, as the reader
+/// makes them), tags and, when every edge is in an edge tag, edges. The thickness and the
+/// other shell data (mesh/shell_surface.hpp) are not written.
 void write_gmsh(const Mesh& mesh, const std::string& path, double version = 4.1,
                 bool binary = false);
 

@@ -28,11 +28,11 @@ namespace plisse {
 
 // Gmsh element type numbers (Gmsh reference manual, "MSH file format", element types), which the
 // reader and the writer share.
-constexpr int kTri3 = 2, kTet4 = 4, kTri6 = 9, kTet10 = 11, kPoint = 15;
+constexpr int kLine2 = 1, kTri3 = 2, kTet4 = 4, kTri6 = 9, kTet10 = 11, kPoint = 15;
 
 class ChildOutput;
 
-/// An element type found in the model (dimensions 2 and 3 only).
+/// An element type found in the model (dimensions 2 and 3; also 1 for a shell's surface).
 struct RawElementType {
   int type = 0;  ///< Gmsh element type number
   int dim = 0;
@@ -52,7 +52,7 @@ struct RawGroupElements {
   std::vector<std::size_t> element_tags;
 };
 
-/// A physical group of dimension 2 or 3.
+/// A physical group of dimension 2 or 3 (also 1 for a shell's surface).
 struct RawPhysicalGroup {
   int dim = 0;
   int tag = 0;

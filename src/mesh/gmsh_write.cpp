@@ -1,5 +1,6 @@
 // Writing a Mesh as a Gmsh MSH file (v2.2 or v4.1, ASCII or binary) through the Gmsh API: the
-// tags become physical groups of discrete entities (gmsh_io.hpp).
+// tags become physical groups of discrete entities (gmsh_io.hpp); a shell's edges become line
+// elements.
 #include <gmsh.h>
 
 #include <algorithm>
@@ -110,7 +111,10 @@ void write_gmsh(const Mesh& mesh, const std::string& path, double version, bool 
   const bool v2 = version == 2.2;
   PLISSE_CHECK(v2 || version == 4.1,
                "write_gmsh: version must be 2.2 or 4.1 (got " << version << ")");
-  PLISSE_CHECK(!mesh.tets.empty(), "write_gmsh: the mesh has no tetrahedra");
+  // A shell's mid-surface has triangles and no tetrahedra (gmsh_io.hpp).
+  const bool surface = mesh.tets.empty();
+  PLISSE_CHECK(!surface || !mesh.triangles.empty(),
+               "write_gmsh: the mesh has neither tetrahedra nor triangles");
   const bool second = mesh.order() == 2;
   PLISSE_CHECK(!second || mesh.tet_edge_nodes.size() == mesh.tets.size(),
                "write_gmsh: tet_edge_nodes size");
@@ -131,27 +135,35 @@ void write_gmsh(const Mesh& mesh, const std::string& path, double version, bool 
     for (int n : t) use(n);
   for (const auto& t : mesh.triangle_edge_nodes)
     for (int n : t) use(n);
+  for (const auto& e : mesh.edges)
+    for (int n : e) use(n);
 
   const Signatures tet_sig = compute_signatures(mesh.volume_tags, mesh.tets.size(), "tetrahedron");
   const Signatures tri_sig =
       compute_signatures(mesh.surface_tags, mesh.triangles.size(), "triangle");
+  const Signatures edge_sig = compute_signatures(mesh.edge_tags, mesh.edges.size(), "edge");
 
   GmshSession session;
   try {
     gmsh::model::add("plisse");
     const auto tet_runs = make_runs(3, tet_sig);
     const auto tri_runs = make_runs(2, tri_sig);
+    const auto edge_runs = make_runs(1, edge_sig);
 
-    // All nodes live on the first volume entity; tags are index + 1.
+    // All nodes live on the first volume entity (a surface's: the first surface entity); tags are
+    // index + 1.
     std::vector<std::size_t> node_tags(n_nodes);
     std::vector<double> coords(3 * n_nodes);
     for (std::size_t i = 0; i < n_nodes; ++i) {
       node_tags[i] = i + 1;
       for (int c = 0; c < 3; ++c) coords[3 * i + static_cast<std::size_t>(c)] = mesh.nodes[i][c];
     }
-    gmsh::model::mesh::addNodes(3, tet_runs.front().entity, node_tags, coords);
+    gmsh::model::mesh::addNodes(surface ? 2 : 3,
+                                surface ? tri_runs.front().entity : tet_runs.front().entity,
+                                node_tags, coords);
 
-    // Element tags: tetrahedra 1..n_tets, then triangles, then (v2) points, in mesh order.
+    // Element tags: tetrahedra 1..n_tets, then triangles, then edges, then (v2) points, in mesh
+    // order.
     std::size_t next_tag = 1;
     for (const auto& run : tet_runs) {
       std::vector<std::size_t> tags, nodes;
@@ -174,8 +186,17 @@ void write_gmsh(const Mesh& mesh, const std::string& path, double version, bool 
       }
       gmsh::model::mesh::addElementsByType(run.entity, second ? kTri6 : kTri3, tags, nodes);
     }
+    for (const auto& run : edge_runs) {
+      std::vector<std::size_t> tags, nodes;
+      for (std::size_t e = run.begin; e < run.end; ++e) {
+        tags.push_back(next_tag++);
+        for (int n : mesh.edges[e]) nodes.push_back(static_cast<std::size_t>(n) + 1);
+      }
+      gmsh::model::mesh::addElementsByType(run.entity, kLine2, tags, nodes);
+    }
     add_groups(3, tet_sig, tet_runs, v2);
     add_groups(2, tri_sig, tri_runs, v2);
+    add_groups(1, edge_sig, edge_runs, v2);
     if (v2) {
       // Gmsh's v2 writer only writes nodes of written elements: keep unused nodes as points.
       std::vector<std::size_t> tags, nodes;
