@@ -12,6 +12,7 @@
 #include <set>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "mesh/generate.hpp"
@@ -121,12 +122,76 @@ TEST(MeshCommand, WritesSecondOrderShellThatReadsBackIdentically) {
   EXPECT_NE(r.output.find("'--order': must be in [1, 2] (got 3)"), std::string::npos) << r.output;
 }
 
+TEST(MeshCommand, WritesAShellMidSurfaceThatReadsBack) {
+  MeshGenerationSpec spec;
+  spec.kind = "spherical-shell";
+  spec.inner_radius = 10.0;
+  spec.thickness = 1.0;
+  spec.element_size = 2.5;
+  spec.symmetry = Symmetry::octant;
+  const Mesh expected = generate_shell_surface(spec);
+  const std::string path = (test::scratch_dir("command_shell") / "mid.msh").string();
+  const Result r = run_plisse(
+      "mesh spherical-shell --inner-radius 10 --thickness 1 --element-size 2.5 --symmetry octant "
+      "--element shell -o " +
+      path);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto n = [](std::size_t k) { return std::to_string(k); };
+  const std::size_t n_tri = expected.triangles.size();
+  const std::string line =
+      "wrote " + path + " (Gmsh 4.1 ASCII): " + n(expected.nodes.size()) + " nodes, " + n(n_tri) +
+      " triangles (shell mid-surface); tags: inner (" + n(n_tri) + " triangles), outer (" +
+      n(n_tri) + " triangles); edge tags: sym_x (" + n(expected.edge_tags.at("sym_x").size()) +
+      " edges), sym_y (" + n(expected.edge_tags.at("sym_y").size()) + " edges), sym_z (" +
+      n(expected.edge_tags.at("sym_z").size()) + " edges)\n";
+  EXPECT_EQ(r.output, line);
+  const Mesh mesh = read_gmsh_surface(path);
+  EXPECT_EQ(mesh.triangles, expected.triangles);
+  EXPECT_EQ(mesh.surface_tags, expected.surface_tags);
+  EXPECT_EQ(mesh.edges, expected.edges);
+  EXPECT_EQ(mesh.edge_tags, expected.edge_tags);
+  ASSERT_EQ(mesh.n_nodes(), expected.n_nodes());
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
+    EXPECT_LT((mesh.nodes[i] - expected.nodes[i]).cwiseAbs().maxCoeff(), 1e-14);
+  // 3-node triangles (Gmsh type 2) and 2-node lines (type 1) only.
+  EXPECT_EQ(element_types_v4_ascii(path), (std::set<int>{1, 2}));
+}
+
+TEST(MeshCommand, ElementChoosesTheOrderOrTheShell) {
+  const auto dir = test::scratch_dir("command_element");
+  const std::string path = (dir / "e.msh").string();
+  Result r = run_plisse("mesh cube --divisions 2 --element mini -o " + path);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(read_gmsh(path).order(), 1);
+  r = run_plisse("mesh cube --divisions 2 --element taylor-hood -o " + path);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(read_gmsh(path).order(), 2);
+  // A shell ignores layers (0 is out of the solid's range).
+  r = run_plisse("mesh sheet --length 4 --width 2 --layers 0 --element shell -o " + path);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(read_gmsh_surface(path).triangles.size(), 16u);
+  const std::vector<std::pair<std::string, std::string>> refused = {
+      {"mesh cube --element taylor-hood --order 1",
+       "'--order': --element taylor-hood needs order 2 (got 1)"},
+      {"mesh tube --element shell --order 2",
+       "'--order': a shell mesh is a mid-surface of linear (3-node) triangles: order must be 1 "
+       "(got 2)"},
+      {"mesh cube --element shell", "'--element': the cube is a solid and has no mid-surface"},
+      {"mesh sheet --element beam",
+       "'--element': must be one of mini, taylor-hood, shell (got 'beam')"}};
+  for (const auto& [command, message] : refused) {
+    r = run_plisse(command + " -o " + path);
+    EXPECT_EQ(r.status, 2) << command << "\n" << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << command << "\n" << r.output;
+  }
+}
+
 TEST(MeshCommand, HelpListsOptionsWithUnitsAndDefaults) {
   const Result r = run_plisse("mesh airbag --help");
   EXPECT_EQ(r.status, 0) << r.output;
   for (const char* text :
        {"--radius FLOAT=50", "--height FLOAT=20", "--thickness", "[mm]", "--layers INT=3",
-        "--symmetry TEXT=full", "--order INT=2", "--format INT=4", "--binary"})
+        "--symmetry TEXT=full", "--order INT=2", "--element TEXT", "--format INT=4", "--binary"})
     EXPECT_NE(r.output.find(text), std::string::npos) << text << "\n" << r.output;
 }
 
