@@ -81,6 +81,17 @@ std::set<int> triangle_nodes(const Mesh& mesh, const std::vector<int>& triangles
   return nodes_of(mesh, triangles, mesh.triangles, mesh.triangle_edge_nodes, "triangle");
 }
 
+std::set<int> edge_nodes(const Mesh& mesh, const std::vector<int>& edges) {
+  std::set<int> out;
+  for (const int k : edges) {
+    PLISSE_CHECK(k >= 0 && k < static_cast<int>(mesh.edges.size()),
+                 "edge " << k << " of " << mesh.edges.size());
+    out.insert(mesh.edges[static_cast<std::size_t>(k)].begin(),
+               mesh.edges[static_cast<std::size_t>(k)].end());
+  }
+  return out;
+}
+
 std::set<int> tet_nodes(const Mesh& mesh, const std::vector<int>& tets) {
   return nodes_of(mesh, tets, mesh.tets, mesh.tet_edge_nodes, "tetrahedron");
 }
@@ -109,6 +120,12 @@ double longest_edge_at(const Mesh& mesh, int v) {
     for (int a = 0; a < 4; ++a)
       for (int b = a + 1; b < 4; ++b)
         longest = std::max(longest, (mesh.nodes[tet[a]] - mesh.nodes[tet[b]]).norm());
+  }
+  if (!mesh.is_shell()) return longest;
+  for (const auto& tri : mesh.triangles) {
+    if (std::find(tri.begin(), tri.end(), v) == tri.end()) continue;
+    for (int a = 0; a < 3; ++a)
+      longest = std::max(longest, (mesh.nodes[tri[a]] - mesh.nodes[tri[(a + 1) % 3]]).norm());
   }
   return longest;
 }

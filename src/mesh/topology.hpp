@@ -44,6 +44,9 @@ void flip_tet(Mesh& mesh, int t);
 /// second-order mesh has no edge nodes.
 std::set<int> triangle_nodes(const Mesh& mesh, const std::vector<int>& triangles);
 
+/// The nodes of the shell edges `edges` (indices into mesh.edges).
+std::set<int> edge_nodes(const Mesh& mesh, const std::vector<int>& edges);
+
 /// The nodes of the tetrahedra `tets` (indices into mesh.tets): their corners and, on a
 /// second-order mesh, their edge nodes.
 std::set<int> tet_nodes(const Mesh& mesh, const std::vector<int>& tets);
@@ -62,7 +65,8 @@ inline std::uint64_t geometry_hash(const Mesh& mesh) {
 }
 
 /// The longest edge [mm] of the tetrahedra that have node `v` as a corner or an edge node (the
-/// corner edges: a curved 10-node edge counts by its chord). 0 for a node of no tetrahedron.
+/// corner edges: a curved 10-node edge counts by its chord), on a shell mesh of the triangles
+/// that have it as a corner. 0 for a node of no element.
 double longest_edge_at(const Mesh& mesh, int v);
 
 /// A face of the tetrahedral mesh that belongs to exactly one tetrahedron.

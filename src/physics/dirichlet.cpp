@@ -1,12 +1,14 @@
 #include "physics/dirichlet.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
 #include <string>
 #include <utility>
 
+#include "mesh/shell_surface.hpp"
 #include "mesh/topology.hpp"
 
 namespace plisse {
@@ -14,6 +16,16 @@ namespace plisse {
 int mirror_planes(const std::vector<std::string>& symmetry_surfaces, const Mesh& mesh, double tol) {
   int planes = 0;
   for (const std::string& surface : symmetry_surfaces) {
+    if (const std::vector<int>* edges = shell_edge_tag(mesh, surface)) {
+      const int axis = edges->empty() ? -1 : shell_edge_plane_axis(mesh, *edges, tol);
+      if (axis < 0) continue;
+      const std::set<int> nodes = edge_nodes(mesh, *edges);
+      double extent = 0.0;
+      for (int v : nodes) extent = std::max(extent, mesh.nodes[v].cwiseAbs().maxCoeff());
+      if (std::abs(mesh.nodes[*nodes.begin()][axis]) <= tol * std::max(extent, 1.0))
+        planes |= 1 << axis;
+      continue;
+    }
     const auto tag = mesh.surface_tags.find(surface);
     if (tag == mesh.surface_tags.end() || tag->second.empty()) continue;
     const int axis = coordinate_plane_axis(mesh, tag->second, tol);
@@ -29,17 +41,49 @@ int mirror_planes(const std::vector<std::string>& symmetry_surfaces, const Mesh&
 }
 
 int planes_reached(const Mesh& mesh, const std::vector<int>& triangles, int mirrors, double tol) {
+  std::set<int> corners;
+  for (int t : triangles) corners.insert(mesh.triangles[t].begin(), mesh.triangles[t].end());
+  return planes_reached(mesh, corners, mirrors, tol);
+}
+
+int planes_reached(const Mesh& mesh, const std::set<int>& nodes, int mirrors, double tol) {
   double extent = 0.0;
-  for (int t : triangles)
-    for (int v : mesh.triangles[t]) extent = std::max(extent, mesh.nodes[v].cwiseAbs().maxCoeff());
+  for (int v : nodes) extent = std::max(extent, mesh.nodes[v].cwiseAbs().maxCoeff());
   int reached = 0;
   for (int k = 0; k < 3; ++k) {
     if (!(mirrors & (1 << k))) continue;
-    for (int t : triangles)
-      for (int v : mesh.triangles[t])
-        if (std::abs(mesh.nodes[v][k]) <= tol * std::max(extent, 1.0)) reached |= 1 << k;
+    for (int v : nodes)
+      if (std::abs(mesh.nodes[v][k]) <= tol * std::max(extent, 1.0)) reached |= 1 << k;
   }
   return reached;
+}
+
+int shell_edge_plane_axis(const Mesh& mesh, const std::vector<int>& edges, double tol) {
+  const std::set<int> nodes = edge_nodes(mesh, edges);
+  if (nodes.empty()) return -1;
+  double extent = 0.0;
+  for (int v : nodes) extent = std::max(extent, mesh.nodes[v].cwiseAbs().maxCoeff());
+  // The unit normals of the triangles with a side on the edges.
+  std::vector<Vec3d> normals;
+  for (const auto& side : sides_on_edges(mesh, edges))
+    for (const auto& tri : mesh.triangles)
+      for (int i = 0; i < 3; ++i)
+        if (tri[(i + 1) % 3] == side.first && tri[(i + 2) % 3] == side.second) {
+          const Vec3d& x0 = mesh.nodes[tri[0]];
+          normals.push_back((mesh.nodes[tri[1]] - x0).cross(mesh.nodes[tri[2]] - x0).normalized());
+        }
+  for (int k = 0; k < 3; ++k) {
+    const double level = mesh.nodes[*nodes.begin()][k];
+    const bool in_plane = std::all_of(nodes.begin(), nodes.end(), [&](int v) {
+      return std::abs(mesh.nodes[v][k] - level) <= tol * std::max(extent, 1.0);
+    });
+    // Across the plane, not along it: the facets beside a cut tilt from a right angle by about
+    // h/R, while a shell lying in the plane (a sheet's edge is also in z = t/2) has |n_k| = 1.
+    const bool across = std::all_of(normals.begin(), normals.end(),
+                                    [&](const Vec3d& n) { return std::abs(n[k]) <= 0.5; });
+    if (in_plane && across) return k;
+  }
+  return -1;
 }
 
 Vec3d whole_body_force(Vec3d f, int cut) {
@@ -103,10 +147,20 @@ std::vector<ConstrainedComponent> ConstraintSet::components() const {
   return out;
 }
 
+const std::vector<int>* shell_edge_tag(const Mesh& mesh, const std::string& name) {
+  if (!mesh.is_shell()) return nullptr;
+  const auto tag = mesh.edge_tags.find(name);
+  return tag == mesh.edge_tags.end() ? nullptr : &tag->second;
+}
+
 std::set<int> condition_nodes(const Mesh& mesh, const SurfaceRef& surface) {
+  if (const std::vector<int>* edges = shell_edge_tag(mesh, surface.name))
+    return edge_nodes(mesh, *edges);
   const auto tag = mesh.surface_tags.find(surface.name);
   if (tag == mesh.surface_tags.end())
-    throw InputError(surface.place, "no surface tag '" + surface.name + "' in the mesh");
+    throw InputError(surface.place,
+                     std::string(mesh.is_shell() ? "no edge or surface" : "no surface") + " tag '" +
+                         surface.name + "' in the mesh");
   return triangle_nodes(mesh, tag->second);
 }
 
@@ -117,6 +171,15 @@ void fix_surface(const Mesh& mesh, const SurfaceRef& surface, ConstraintSet& set
 
 void hold_in_plane(const Mesh& mesh, const SurfaceRef& surface, ConstraintSet& set) {
   const std::set<int> nodes = condition_nodes(mesh, surface);
+  if (const std::vector<int>* edges = shell_edge_tag(mesh, surface.name)) {
+    const int axis = shell_edge_plane_axis(mesh, *edges);
+    if (axis < 0)
+      throw InputError(surface.place, "symmetry edge '" + surface.name +
+                                          "' must lie in a plane x, y or z = const that meets "
+                                          "the shell at a right angle");
+    for (int v : nodes) set.add(v, axis, 0.0, Ramp{});
+    return;
+  }
   const int axis = coordinate_plane_axis(mesh, mesh.surface_tags.at(surface.name));
   if (axis < 0)
     throw InputError(surface.place,

@@ -43,6 +43,15 @@ int mirror_planes(const std::vector<std::string>& symmetry_surfaces, const Mesh&
 /// mirror image is a separate surface.
 int planes_reached(const Mesh& mesh, const std::vector<int>& triangles, int mirrors,
                    double tol = 1e-8);
+/// planes_reached for the nodes `nodes` (a condition's, condition_nodes).
+int planes_reached(const Mesh& mesh, const std::set<int>& nodes, int mirrors, double tol = 1e-8);
+
+/// The axis k (0, 1, 2) of the plane x_k = const that holds every node of the shell edges `edges`
+/// (indices into mesh.edges, within `tol` of the extent) and crosses the shell (the normals of
+/// the triangles along it make at most 60 degrees with the plane; a faceted shell meeting it at a
+/// right angle tilts by about h/R): the plane a symmetry edge of a shell mirrors through
+/// (docs/theory/shell.md, KL8a). -1 when there is none. Precondition: mesh.is_shell().
+int shell_edge_plane_axis(const Mesh& mesh, const std::vector<int>& edges, double tol = 1e-8);
 
 /// The whole body's force from the modelled part's force `f` on something that each mirror plane
 /// of `cut` maps onto itself (a condition's surface that reaches the plane, a die centred on it):
@@ -74,15 +83,21 @@ class ConstraintSet {
 };
 
 /// The nodes a condition on `surface` holds: the corners of its tagged triangles and, on a
-/// second-order mesh, their edge nodes. InputError at the surface's place when the mesh has no
-/// such tag.
+/// second-order mesh, their edge nodes; on a shell mesh the nodes of the edge tag of that name
+/// (Mesh::edge_tags), else of the surface tag. InputError at the surface's place when the mesh has
+/// no such tag.
 std::set<int> condition_nodes(const Mesh& mesh, const SurfaceRef& surface);
+
+/// The edge tag a condition on a shell names (Mesh::edge_tags), or nullptr: on a solid mesh, and
+/// for a surface tag of a shell.
+const std::vector<int>* shell_edge_tag(const Mesh& mesh, const std::string& name);
 
 /// `fixed`: every displacement component of the surface's nodes is zero.
 void fix_surface(const Mesh& mesh, const SurfaceRef& surface, ConstraintSet& set);
 
 /// `symmetry`: the displacement normal to the surface's plane is zero. The surface must be a
-/// coordinate plane (x, y or z = const): else an InputError at its place.
+/// coordinate plane (x, y or z = const), on a shell an edge in such a plane that meets the shell
+/// at a right angle (shell_edge_plane_axis): else an InputError at its place.
 void hold_in_plane(const Mesh& mesh, const SurfaceRef& surface, ConstraintSet& set);
 
 /// `displacement`: the given components of `value` [mm], times `ramp`; an empty one stays free.

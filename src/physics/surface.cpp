@@ -13,6 +13,18 @@ namespace plisse {
 std::vector<SurfaceFace> outward_faces(const Mesh& mesh, const std::string& name) {
   const auto tag = mesh.surface_tags.find(name);
   PLISSE_CHECK(tag != mesh.surface_tags.end(), "no surface tag '" << name << "'");
+  if (mesh.is_shell()) {
+    // A shell's tag names one of its two faces (Mesh::shell_face_side): the outward normal of the
+    // +1 face is the triangles' own, of the -1 face the opposite one.
+    const auto side = mesh.shell_face_side.find(name);
+    const bool turn = side == mesh.shell_face_side.end() || side->second < 0;
+    std::vector<SurfaceFace> out(tag->second.size());
+    for (std::size_t k = 0; k < tag->second.size(); ++k) {
+      const auto& tri = mesh.triangles[static_cast<std::size_t>(tag->second[k])];
+      out[k].nodes = {tri[0], turn ? tri[2] : tri[1], turn ? tri[1] : tri[2], -1, -1, -1};
+    }
+    return out;
+  }
   const bool second_order = mesh.order() == 2;
   PLISSE_CHECK(!second_order || mesh.triangle_edge_nodes.size() == mesh.triangles.size(),
                "surface '" << name << "': the second-order mesh has "

@@ -27,7 +27,9 @@ struct SurfaceFace {
 
 /// The faces of tag `name`, each ordered so that (x1 - x0) x (x2 - x0) of its corners points out
 /// of the body (away from the fourth corner of the tetrahedron the face belongs to), with the edge
-/// nodes of a second-order mesh (mesh.triangle_edge_nodes) permuted with the corners. Throws
+/// nodes of a second-order mesh (mesh.triangle_edge_nodes) permuted with the corners. On a shell
+/// mesh the tag names a face of the shell (Mesh::shell_face_side) and its outward normal is the
+/// triangles' own on the +1 face, the opposite on the -1 face. Throws
 /// plisse::Error when a triangle is not a face of any tetrahedron, or a second-order mesh lacks
 /// the edge nodes of its triangles.
 std::vector<SurfaceFace> outward_faces(const Mesh& mesh, const std::string& name);

@@ -99,6 +99,7 @@ TermKind cavity_kind() {
        "the whole cavity's volume: `volume:<cavity>` times 2 for each mirror plane (`symmetry` "
        "condition) that closes it"},
   };
+  d.shell = true;
   return make_term_kind(std::move(d));
 }
 

@@ -32,12 +32,13 @@ TermKind displacement_condition_kind() {
         })
       .required();
   ramp_key(s, &S::ramp, "time ramp of `value`");
-  d.check_mesh = [](const S& bc, const TermMeshCheck& check) { check.surface(bc.surface); };
+  d.check_mesh = [](const S& bc, const TermMeshCheck& check) { check.condition(bc.surface); };
   d.constrain = [](const S& bc, const Mesh& mesh, ConstraintSet& set) {
     prescribe_surface(mesh, bc.surface, bc.value, bc.ramp, set);
   };
   d.surface = [](const S& bc) { return bc.surface; };
   d.history = reaction_outputs(true);
+  d.shell = true;
   return make_term_kind(std::move(d));
 }
 

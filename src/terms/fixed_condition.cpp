@@ -1,5 +1,5 @@
 // `boundary:` of type fixed: every displacement component of a surface's nodes is zero
-// (physics/dirichlet.hpp).
+// (physics/dirichlet.hpp); on a shell's edge the edge turns freely about itself, as `hinged`.
 #include "physics/boundary_condition.hpp"
 #include "physics/dirichlet.hpp"
 #include "terms/keys.hpp"
@@ -17,12 +17,13 @@ TermKind fixed_condition_kind() {
   Schema<S>& s = d.keys;
   s.place(&S::place, false);
   condition_keys(s, &S::name, &S::surface);
-  d.check_mesh = [](const S& bc, const TermMeshCheck& check) { check.surface(bc.surface); };
+  d.check_mesh = [](const S& bc, const TermMeshCheck& check) { check.condition(bc.surface); };
   d.constrain = [](const S& bc, const Mesh& mesh, ConstraintSet& set) {
     fix_surface(mesh, bc.surface, set);
   };
   d.surface = [](const S& bc) { return bc.surface; };
   d.history = reaction_outputs(true);
+  d.shell = true;
   return make_term_kind(std::move(d));
 }
 

@@ -55,6 +55,7 @@ TermKind follower_traction_kind() {
   };
   d.ramps = load_ramps<S>;
   d.history = load_force_outputs();
+  d.shell = true;
   return make_term_kind(std::move(d));
 }
 

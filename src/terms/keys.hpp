@@ -119,7 +119,10 @@ void condition_keys(Schema<S>& schema, std::type_identity_t<std::string S::*> na
   name_key(schema, name,
            "when given, the reaction force on the surface is reported as `force_x:<name>`, "
            "`force_y:<name>`, `force_z:<name>`");
-  surface_key(schema, "surface", surface, "where the condition acts").required();
+  surface_key(schema, "surface", surface,
+              "where the condition acts; with `element: shell` an edge tag of the mid-surface, or "
+              "a surface tag (all its nodes)")
+      .required();
 }
 
 /// The history columns of a named condition's reaction; `whole`: also the whole body's, for a

@@ -84,6 +84,7 @@ TermKind point_force_kind() {
     return std::vector<std::string>{line};
   };
   d.history = load_force_outputs();
+  d.shell = true;
   return make_term_kind(std::move(d));
 }
 

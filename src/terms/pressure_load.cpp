@@ -41,6 +41,7 @@ TermKind pressure_load_kind() {
        "the whole body's: `volume:<load>` times 2 for each mirror plane (`symmetry` condition) "
        "that closes it"},
   };
+  d.shell = true;
   return make_term_kind(std::move(d));
 }
 

@@ -6,6 +6,8 @@ namespace plisse {
 TermKind fixed_condition_kind();
 TermKind symmetry_condition_kind();
 TermKind displacement_condition_kind();
+TermKind clamped_condition_kind();
+TermKind hinged_condition_kind();
 TermKind pressure_load_kind();
 TermKind gravity_load_kind();
 TermKind traction_load_kind();
@@ -33,6 +35,8 @@ const std::vector<TermKind>& term_kinds() {
       fixed_condition_kind(),
       symmetry_condition_kind(),
       displacement_condition_kind(),
+      clamped_condition_kind(),
+      hinged_condition_kind(),
       pressure_load_kind(),
       gravity_load_kind(),
       traction_load_kind(),

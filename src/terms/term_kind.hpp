@@ -65,6 +65,9 @@ struct TermMeshCheck {
   /// The surface tag exists in the mesh and is not empty; else an InputError at its place that
   /// lists the tags there are.
   std::function<void(const SurfaceRef&)> surface;
+  /// A condition's tag: as `surface` on a solid mesh; on a shell an edge tag (Mesh::edge_tags) or
+  /// a surface tag.
+  std::function<void(const SurfaceRef&)> condition;
 };
 
 /// What make() gets besides its settings: the mesh and what the case's other sections decide.
@@ -117,6 +120,13 @@ class TermKind {
   /// (`symmetry`). Its reaction is internal to the whole body; the default contact surface of a
   /// die leaves its faces out; an imperfection keeps its nodes in the plane.
   bool mirror = false;
+  /// A condition that holds the slope across a shell's edge (clamped, symmetry): marks the sides
+  /// of its edge in Mesh::side_mirrors (docs/theory/shell.md, KL8a). Empty for the others.
+  std::function<void(const TermEntry&, Mesh&)> hold_slope;
+  /// Which meshes the kind works on: a solid's tetrahedra, a shell's mid-surface (element:
+  /// shell). Anything else is refused by the mesh checks, naming the kind and the element.
+  bool solid = true;
+  bool shell = false;
   std::function<std::vector<RampUse>(const TermEntry&)> ramps;  ///< for the end-time warnings
   /// Lines for the run's log (e.g. the node a point force acts on).
   std::function<std::vector<std::string>(const TermEntry&, const Mesh&)> notes;
@@ -137,6 +147,9 @@ struct TermDefinition {
   std::function<void(const S&, const Mesh&, ConstraintSet&)> constrain;
   std::function<SurfaceRef(const S&)> surface;
   bool mirror = false;
+  std::function<void(const S&, Mesh&)> hold_slope;
+  bool solid = true;
+  bool shell = false;
   std::function<std::vector<RampUse>(const S&)> ramps;                   ///< empty: none
   std::function<std::vector<std::string>(const S&, const Mesh&)> notes;  ///< empty: none
   std::vector<OutputEntry> history;
@@ -185,6 +198,11 @@ TermKind make_term_kind(TermDefinition<S> definition) {
       return surface(entry.as<S>());
     };
   kind.mirror = definition.mirror;
+  if (definition.hold_slope)
+    kind.hold_slope = [hold = std::move(definition.hold_slope)](
+                          const TermEntry& entry, Mesh& mesh) { hold(entry.as<S>(), mesh); };
+  kind.solid = definition.solid;
+  kind.shell = definition.shell;
   kind.ramps = [ramps = std::move(definition.ramps)](const TermEntry& entry) {
     return ramps ? ramps(entry.as<S>()) : std::vector<RampUse>{};
   };

@@ -57,6 +57,7 @@ TermKind traction_load_kind() {
   };
   d.ramps = load_ramps<S>;
   d.history = load_force_outputs();
+  d.shell = true;
   return make_term_kind(std::move(d));
 }
 

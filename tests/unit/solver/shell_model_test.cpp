@@ -7,6 +7,7 @@
 #include <petscvec.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -128,8 +129,11 @@ void deform(MixedModel& model, unsigned seed) {
   }
 }
 
-TEST(ShellModel, ResidualIsTheEnergysGradientAndTangentTheResidualsDerivative) {
-  const Mesh mesh = perturbed_cap();
+/// The assembled residual of `mesh` against central differences of the assembled energy, and the
+/// tangent against central differences of the residual, at the deformed state of deform(model, 3),
+/// for the neo-Hookean and a Mooney-Rivlin model; the tangent's symmetry and its independence of
+/// the thread count.
+void check_derivatives(const Mesh& mesh) {
   for (const AnyMaterial& material :
        {neo_hookean(), make_material("mooney-rivlin", {{"c1", 0.35}, {"c2", 0.15}})}) {
     MixedModel model(mesh, material, 0.0, {}, {}, ElementFamily::shell);
@@ -170,6 +174,33 @@ TEST(ShellModel, ResidualIsTheEnergysGradientAndTangentTheResidualsDerivative) {
     model.set_assembly_threads(2);
     EXPECT_EQ(residual_by_dof(model), r);
   }
+}
+
+TEST(ShellModel, ResidualIsTheEnergysGradientAndTangentTheResidualsDerivative) {
+  check_derivatives(perturbed_cap());
+}
+
+TEST(ShellModel, MirroredSidesKeepTheResidualTheEnergysGradient) {
+  // The cap's edge sides on x = 0 clamped (the half turn about each triangle's normal), those on
+  // y = 0 and z = 0 mirrored through their planes (shell.md, KL8a): the slot of each such side is
+  // R u_i, and the element's rows and columns of it are turned back onto node i.
+  Mesh mesh = test::octahedral_sphere(10.0, 2.0, 4, true);
+  std::array<std::vector<int>, 3> on_plane;
+  for (const auto& tri : mesh.triangles)
+    for (int i = 0; i < 3; ++i) {
+      const int a = tri[(i + 1) % 3], b = tri[(i + 2) % 3];
+      for (int k = 0; k < 3; ++k)
+        if (mesh.nodes[a][k] == 0.0 && mesh.nodes[b][k] == 0.0) {
+          on_plane[k].push_back(static_cast<int>(mesh.edges.size()));
+          mesh.edges.push_back({a, b});
+        }
+    }
+  test::jitter_nodes(mesh, 0.3, 7);
+  clamp_sides(mesh, on_plane[0]);
+  mirror_sides(mesh, on_plane[1], 1, 0.0);
+  mirror_sides(mesh, on_plane[2], 2, 0.0);
+  ASSERT_EQ(mesh.side_mirrors.size(), on_plane[0].size() + on_plane[1].size() + on_plane[2].size());
+  check_derivatives(mesh);
 }
 
 TEST(ShellModel, RigidMotionsStoreNoEnergyAndLeaveNoResidual) {
