@@ -2,6 +2,7 @@
 // solving (docs/architecture.md, "Interface contract") and prints a short summary. Problems are
 // thrown as InputError, which main() reports with file, line, column and key and exit status 2.
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -96,24 +97,40 @@ void check_case(const CheckOptions& options) {
           << number(r.displacement[1]) << ", " << number(r.displacement[2]) << ") mm";
     out << '\n';
   }
-  out << "  element   " << to_string(c.element)
-      << (c.element == ElementFamily::mini ? " (P1+/P1, linear tetrahedra)"
-                                           : " (P2/P1, 10-node tetrahedra)")
-      << '\n';
+  const char* family = c.element == ElementFamily::mini ? " (P1+/P1, linear tetrahedra)"
+                       : c.element == ElementFamily::taylor_hood
+                           ? " (P2/P1, 10-node tetrahedra)"
+                           : " (rotation-free Kirchhoff-Love triangles on the mid-surface)";
+  out << "  element   " << to_string(c.element) << family << '\n';
+  const auto tag_line = [&out](const char* what,
+                               const std::map<std::string, std::vector<int>>& tags,
+                               const char* items) {
+    out << "            " << what << " tags:";
+    bool first = true;
+    for (const auto& [name, members] : tags) {
+      out << (first ? " " : ", ") << name << " (" << members.size() << " " << items << ")";
+      first = false;
+    }
+    out << (tags.empty() ? " none\n" : "\n");
+  };
   out << "  mesh      "
       << (c.mesh.file ? "file " + *c.mesh.file : "generated " + c.mesh.generate->kind) << ": "
-      << mesh.n_nodes() << " nodes, " << mesh.n_tets() << " tetrahedra"
-      << (mesh.order() == 2 ? " (second order)" : "") << '\n';
-  out << "            surface tags:";
-  bool first = true;
-  for (const auto& [name, triangles] : mesh.surface_tags) {
-    out << (first ? " " : ", ") << name << " (" << triangles.size() << " triangles)";
-    first = false;
+      << mesh.n_nodes() << " nodes, ";
+  if (mesh.is_shell()) {
+    out << mesh.triangles.size() << " triangles, thickness " << number(mesh.shell_thickness.front())
+        << " mm\n";
+    tag_line("edge", mesh.edge_tags, "edges");
+    tag_line("surface", mesh.surface_tags, "triangles");
+    out << "            quality: smallest angle " << number(report.min_angle_deg)
+        << " degrees, largest turn between neighbours " << number(report.max_turn_deg)
+        << " degrees, " << count(report.warnings.size(), "warning") << '\n';
+  } else {
+    out << mesh.n_tets() << " tetrahedra" << (mesh.order() == 2 ? " (second order)" : "") << '\n';
+    tag_line("surface", mesh.surface_tags, "triangles");
+    out << "            quality: smallest volume " << number(report.min_volume)
+        << " mm^3, largest aspect ratio " << number(report.max_aspect_ratio) << ", "
+        << count(report.warnings.size(), "warning") << '\n';
   }
-  out << (mesh.surface_tags.empty() ? " none\n" : "\n");
-  out << "            quality: smallest volume " << number(report.min_volume)
-      << " mm^3, largest aspect ratio " << number(report.max_aspect_ratio) << ", "
-      << count(report.warnings.size(), "warning") << '\n';
   for (std::size_t i = 0; i < report.warnings.size() && i < 5; ++i)
     out << "            warning: " << report.warnings[i] << '\n';
   for (const InputError& e : unsupported_features(c, mesh))

@@ -90,17 +90,18 @@ void HistoryColumns::add_reactions(const Case& c, const Mesh& mesh) {
   const int mirrors = mirror_planes(mirror_surfaces(c.terms), mesh);
   for (const TermEntry& entry : c.terms) {
     if (!entry.kind->constrain || entry.name.empty()) continue;
-    const std::vector<int>* triangles = &mesh.surface_tags.at(entry.kind->surface(entry).name);
+    const auto nodes =
+        std::make_shared<const std::set<int>>(condition_nodes(mesh, entry.kind->surface(entry)));
     // Reaching a mirror plane, the condition continues across it: the whole body's reaction sums
     // the images (a symmetry condition's reaction is internal to the whole body).
-    const int cut = entry.kind->mirror ? 0 : planes_reached(mesh, *triangles, mirrors);
+    const int cut = entry.kind->mirror ? 0 : planes_reached(mesh, *nodes, mirrors);
     std::vector<std::string> names = xyz_columns("force_", entry.name);
     if (cut != 0) {
       const std::vector<std::string> whole = xyz_columns("full_force_", entry.name);
       names.insert(names.end(), whole.begin(), whole.end());
     }
-    add(names, [triangles, cut](const StepRecord& r, std::vector<double>& row) {
-      const Vec3d f = r.model.reaction(*triangles);
+    add(names, [nodes, cut](const StepRecord& r, std::vector<double>& row) {
+      const Vec3d f = r.model.node_reaction(*nodes);
       for (int k = 0; k < 3; ++k) row.push_back(f[k]);
       if (cut == 0) return;
       const Vec3d whole = whole_body_force(f, cut);

@@ -218,15 +218,28 @@ void check_rigid_pieces(const Case& c, const Mesh& mesh,
     while (parent[v] != v) v = parent[v] = parent[parent[v]];
     return v;
   };
-  for (const auto& t : mesh.tets)
-    for (int k = 1; k < 4; ++k) parent[root(t[k])] = root(t[0]);
+  // The elements: the tetrahedra, or a shell's triangles.
+  const bool shell = mesh.is_shell();
+  std::vector<int> element_nodes;
+  const int width = shell ? 3 : 4;
+  if (shell)
+    for (const auto& t : mesh.triangles)
+      element_nodes.insert(element_nodes.end(), t.begin(), t.end());
+  else
+    for (const auto& t : mesh.tets) element_nodes.insert(element_nodes.end(), t.begin(), t.end());
+  const std::size_t n_elements = element_nodes.size() / static_cast<std::size_t>(width);
+  const auto node_of = [&](std::size_t e, int k) {
+    return element_nodes[e * static_cast<std::size_t>(width) + static_cast<std::size_t>(k)];
+  };
+  for (std::size_t e = 0; e < n_elements; ++e)
+    for (int k = 1; k < width; ++k) parent[root(node_of(e, k))] = root(node_of(e, 0));
   std::vector<char> held(mesh.n_nodes(), 0);
   for (const ConstrainedComponent& cc : constraints) held[root(cc.node)] = 1;
-  std::vector<int> tets_of(mesh.n_nodes(), 0);
-  for (const auto& t : mesh.tets) ++tets_of[root(t[0])];
+  std::vector<int> elements_of(mesh.n_nodes(), 0);
+  for (std::size_t e = 0; e < n_elements; ++e) ++elements_of[root(node_of(e, 0))];
   int pieces = 0, free_piece = -1;
   for (int v = 0; v < mesh.n_nodes(); ++v) {
-    if (root(v) != v || tets_of[v] == 0) continue;
+    if (root(v) != v || elements_of[v] == 0) continue;
     ++pieces;
     if (!held[v] && free_piece < 0) free_piece = v;
   }
@@ -241,11 +254,11 @@ void check_rigid_pieces(const Case& c, const Mesh& mesh,
   centre /= std::max(n, 1);
   char text[320];
   std::snprintf(text, sizeof text,
-                "%s of %d tetrahedra (centred near [%.4g, %.4g, %.4g]) is held by no boundary "
+                "%s of %d %s (centred near [%.4g, %.4g, %.4g]) is held by no boundary "
                 "condition: it can move as a rigid body, so the tangent is singular; fix or "
                 "prescribe some of its displacements, or add solver.viscosity",
-                pieces > 1 ? "a piece of the mesh" : "the body", tets_of[free_piece], centre.x(),
-                centre.y(), centre.z());
+                pieces > 1 ? "a piece of the mesh" : "the body", elements_of[free_piece],
+                shell ? "triangles" : "tetrahedra", centre.x(), centre.y(), centre.z());
   throw InputError({c.path, 0, 0, "boundary"}, text);
 }
 

@@ -114,11 +114,16 @@ void snap_to_symmetry_planes(const Case& c, Mesh& mesh) {
   }
   const double rounding = 1e-9 * std::max((high - low).maxCoeff(), 1e-300);
   for (const std::string& surface : mirror_surfaces(c.terms)) {
-    const auto tag = mesh.surface_tags.find(surface);
-    if (tag == mesh.surface_tags.end()) continue;
-    const int axis = coordinate_plane_axis(mesh, tag->second);
+    int axis = -1;
+    std::set<int> nodes;
+    if (const std::vector<int>* edges = shell_edge_tag(mesh, surface)) {
+      axis = shell_edge_plane_axis(mesh, *edges, 1e-6);
+      nodes = edge_nodes(mesh, *edges);
+    } else if (const auto tag = mesh.surface_tags.find(surface); tag != mesh.surface_tags.end()) {
+      axis = coordinate_plane_axis(mesh, tag->second);
+      nodes = triangle_nodes(mesh, tag->second);
+    }
     if (axis < 0) continue;
-    const std::set<int> nodes = triangle_nodes(mesh, tag->second);
     std::vector<double> values;
     for (const int v : nodes) values.push_back(mesh.nodes[v][axis]);
     std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
@@ -128,6 +133,14 @@ void snap_to_symmetry_planes(const Case& c, Mesh& mesh) {
   }
 }
 
+/// The sides of a shell's clamped and symmetry edges (Mesh::side_mirrors), from the reference
+/// positions the model starts from.
+void hold_shell_slopes(const Case& c, Mesh& mesh) {
+  if (!mesh.is_shell()) return;
+  for (const TermEntry& entry : c.terms)
+    if (entry.kind->hold_slope) entry.kind->hold_slope(entry, mesh);
+}
+
 }  // namespace
 
 Mesh load_perturbed_mesh(const Case& c) {
@@ -135,7 +148,10 @@ Mesh load_perturbed_mesh(const Case& c) {
   check_case_against_mesh(c, mesh);
   snap_to_symmetry_planes(c, mesh);
   const StabilitySettings& st = c.solver.stability;
-  if (st.imperfection <= 0.0) return mesh;
+  if (st.imperfection <= 0.0) {
+    hold_shell_slopes(c, mesh);
+    return mesh;
+  }
   const double amplitude = st.imperfection * *c.mesh.wall_thickness();
   std::vector<Vec3d> field;
   try {
@@ -158,6 +174,7 @@ Mesh load_perturbed_mesh(const Case& c) {
   } catch (const Error& e) {
     throw InputError(imperfection_place(c), e.what());
   }
+  hold_shell_slopes(c, mesh);
   return mesh;
 }
 

@@ -29,7 +29,8 @@ using schema::ReadContext;
 using schema::Schema;
 
 const Choices<ElementFamily> kElementFamilies{{"mini", ElementFamily::mini},
-                                              {"taylor-hood", ElementFamily::taylor_hood}};
+                                              {"taylor-hood", ElementFamily::taylor_hood},
+                                              {"shell", ElementFamily::shell}};
 
 /// A list of entries, each a map read by `entry`.
 template <class S, class E>
@@ -67,7 +68,9 @@ Schema<Case> case_schema() {
   s.choice<ElementFamily>(
       "element", &Case::element, kElementFamilies,
       "mini: linear tetrahedra (P1+/P1); taylor-hood: 10-node tetrahedra (P2/P1), which bend right "
-      "with one or two elements through a wall; generated meshes are then made second-order");
+      "with one or two elements through a wall; generated meshes are then made second-order; "
+      "shell: the rotation-free Kirchhoff-Love triangle on the wall's mid-surface (three unknowns "
+      "a node), meshed from a Gmsh surface mesh or generated as the mid-surface of the kind");
   s.add({"mesh", "map", "", "", "", {}, "the mesh, read from a file or generated"},
         [](const Field& f, Case& c, ReadContext& context) { c.mesh = read_mesh(f, context); })
       .required()

@@ -11,6 +11,7 @@
 #include "case/case.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "mesh/quality.hpp"
+#include "mesh/shell_surface.hpp"
 #include "mesh/topology.hpp"
 #include "schema/field.hpp"
 
@@ -33,6 +34,7 @@ struct TagKind {
 };
 constexpr TagKind kSurfaceTags{&Mesh::surface_tags, "surface", "triangles", 2};
 constexpr TagKind kVolumeTags{&Mesh::volume_tags, "volume", "tetrahedra", 3};
+constexpr TagKind kEdgeTags{&Mesh::edge_tags, "edge", "edges", 1};
 
 /// "available surface tags: a (12 triangles), ...".
 std::string tag_list(const Mesh& mesh, const TagKind& kind) {
@@ -73,9 +75,61 @@ void check_surface(const Case& c, const Mesh& mesh, const SurfaceRef& ref) {
   check_tag(c, mesh, kSurfaceTags, ref.name, ref.place);
 }
 
+/// A condition's tag: a surface tag, or on a shell an edge tag or a surface tag (the message
+/// lists both kinds).
+void check_condition(const Case& c, const Mesh& mesh, const SurfaceRef& ref) {
+  if (!mesh.is_shell()) return check_surface(c, mesh, ref);
+  if (mesh.edge_tags.count(ref.name)) return check_tag(c, mesh, kEdgeTags, ref.name, ref.place);
+  if (mesh.surface_tags.count(ref.name))
+    return check_tag(c, mesh, kSurfaceTags, ref.name, ref.place);
+  std::vector<std::string> names;
+  for (const auto& [known, members] : mesh.edge_tags) names.push_back(known);
+  for (const auto& [known, members] : mesh.surface_tags) names.push_back(known);
+  std::string rule = "no edge or surface tag '" + ref.name + "' in " + mesh_name(c);
+  if (const auto guess = schema::closest_match(ref.name, names))
+    rule += " (did you mean '" + *guess + "'?)";
+  throw InputError(ref.place,
+                   rule + "; " + tag_list(mesh, kEdgeTags) + "; " + tag_list(mesh, kSurfaceTags));
+}
+
+/// What `element: shell` does not run yet, and the kinds of the other family: each refused at
+/// its own key, naming it (docs/case-file.md, "Shells").
+void check_element_family(const Case& c, const Mesh& mesh) {
+  const bool shell = mesh.is_shell();
+  for (const TermEntry& entry : c.terms) {
+    const TermKind& kind = *entry.kind;
+    const std::string what =
+        kind.word.empty() ? "`" + kind.section + "` item" : "`type: " + kind.word + "`";
+    if (shell && !kind.shell)
+      throw InputError(entry.place, what + " is not built for `element: shell` yet");
+    if (!shell && !kind.solid)
+      throw InputError(entry.place,
+                       what + " acts on the edge of a shell: it needs `element: shell`");
+  }
+  if (!shell) return;
+  const auto refuse = [](const InputPlace& place, const std::string& what) {
+    throw InputError(place, what + " is not built for `element: shell` yet");
+  };
+  if (!c.regions.empty()) refuse(c.regions.front().place, "`regions`");
+  if (!c.probes.empty()) refuse(c.probes.front().place, "`probes`");
+  const MaterialSection& m = c.material;
+  if (!m.exact_incompressibility)
+    refuse(m.place, "`incompressibility: nearly` (the plane-stress iteration, shell.md KL12)");
+  if (!m.inelastic().elastic())
+    refuse(m.place, "a viscoelastic or Mullins material (history at the thickness points)");
+  if (m.shell_fibre_frame) refuse(m.fibre_frame_place, "`fibre_frame: shell`");
+  const StabilitySettings& st = c.solver.stability;
+  if (st.imperfection > 0.0) refuse(st.place, "`solver.stability.imperfection`");
+  if (st.branch_switch) refuse(st.place, "`solver.stability.branch_switch`");
+  if (c.solver.viscosity > 0.0)
+    refuse(InputPlace{c.path, 0, 0, "solver.viscosity"}, "`solver.viscosity`");
+  if (c.output.wrinkles.enabled()) refuse(c.output.wrinkles.place, "`output.wrinkles`");
+}
+
 /// Every region names a non-empty volume tag or a box holding tetrahedra, no tetrahedron is in
 /// two regions, and something is left to deform.
 void check_regions(const Case& c, const Mesh& mesh) {
+  if (c.regions.empty()) return;
   std::vector<int> region_of(mesh.tets.size(), -1);
   for (std::size_t k = 0; k < c.regions.size(); ++k) {
     const Region& r = c.regions[k];
@@ -188,7 +242,21 @@ Mesh load_case_mesh(const Case& c) {
     if (fs::is_directory(path, ec))
       throw InputError(c.mesh.file_place, "'" + path + "' is a directory, not a mesh file");
     try {
-      return read_gmsh(path);
+      if (c.element != ElementFamily::shell) return read_gmsh(path);
+      if (!c.mesh.file_thickness)
+        throw InputError(c.mesh.file_place,
+                         "element: shell needs the wall thickness of the mid-surface this file "
+                         "holds: give it as 'mesh.thickness' [mm]");
+      Mesh mesh = read_gmsh_surface(path);
+      try {
+        make_shell_surface(mesh, *c.mesh.file_thickness);
+      } catch (const InputError&) {
+        throw;
+      } catch (const Error& e) {
+        throw InputError(InputPlace{path, 0, 0, c.mesh.file_place.key},
+                         std::string("the mesh is not the mid-surface of a shell: ") + e.what());
+      }
+      return mesh;
     } catch (const InputError& e) {
       // The reader names the mesh file (the error is in it, not in the YAML); add the case key
       // that chose it.
@@ -203,6 +271,7 @@ Mesh load_case_mesh(const Case& c) {
     // The element chooses the order of a generated mesh unless `mesh.order` says otherwise (a
     // mismatch is then reported by the model builder, naming both keys' meaning).
     MeshGenerationSpec spec = *c.mesh.generate;
+    if (c.element == ElementFamily::shell) return generate_shell_surface(spec);
     if (!c.mesh.option_places.count("order")) spec.order = mesh_order_of(c.element);
     return generate_mesh(spec);
   } catch (const InputError& e) {
@@ -229,8 +298,10 @@ Mesh load_case_mesh(const Case& c) {
 }
 
 void check_case_against_mesh(const Case& c, const Mesh& mesh) {
+  check_element_family(c, mesh);
   check_regions(c, mesh);
-  const TermMeshCheck terms{mesh, [&](const SurfaceRef& ref) { check_surface(c, mesh, ref); }};
+  const TermMeshCheck terms{mesh, [&](const SurfaceRef& ref) { check_surface(c, mesh, ref); },
+                            [&](const SurfaceRef& ref) { check_condition(c, mesh, ref); }};
   for (const TermSection& section : term_sections())
     for (const TermEntry* entry : c.terms_in(section.key)) entry->kind->check_mesh(*entry, terms);
   for (const Probe& probe : c.probes) check_probe(c, mesh, probe);

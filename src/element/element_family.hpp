@@ -12,7 +12,7 @@ enum class ElementFamily {
   taylor_hood,  ///< Taylor-Hood (P2/P1): 10-node tetrahedra, linear pressure on the corners
   shell,        ///< rotation-free Kirchhoff-Love triangle (EBST, docs/theory/shell.md) on the
                 ///< mid-surface (mesh/shell_surface.hpp): displacements only, exactly
-                ///< incompressible plane stress; not yet a case-file word
+                ///< incompressible plane stress
 };
 
 /// The element of a case file without the key `element`, and the order `plisse mesh` writes by
@@ -32,11 +32,11 @@ inline std::string to_string(ElementFamily family) {
   }
   return "taylor-hood";
 }
-/// The family named `name` ("mini", "taylor-hood"), or nullopt. The shell is not a word of the
-/// case file yet.
+/// The family named `name` ("mini", "taylor-hood", "shell"), or nullopt.
 inline std::optional<ElementFamily> parse_element_family(std::string_view name) {
   if (name == "mini") return ElementFamily::mini;
   if (name == "taylor-hood") return ElementFamily::taylor_hood;
+  if (name == "shell") return ElementFamily::shell;
   return std::nullopt;
 }
 /// The mesh order a family needs: 1 (4-node tetrahedra) for MINI, 2 (10-node) for Taylor-Hood,

@@ -319,10 +319,82 @@ void check_boundary_manifold(const std::vector<BoundaryFace>& boundary, MeshRepo
 
 }  // namespace
 
+/// The triangles of a shell mesh: none degenerate; the smallest angle and the largest turn
+/// between neighbours, with warnings (kShellAngleWarning, kShellTurnWarning); nodes of no
+/// triangle; tags within range.
+void check_shell_surface(const Mesh& mesh, MeshReport& report) {
+  MessageList degenerate(report.errors, "degenerate triangles");
+  const double kDegree = 180.0 / std::acos(-1.0);
+  std::vector<Vec3d> normals(mesh.triangles.size(), Vec3d::Zero());
+  report.min_angle_deg = 180.0;
+  int n_sharp = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    const Vec3d n =
+        (mesh.nodes[tri[1]] - mesh.nodes[tri[0]]).cross(mesh.nodes[tri[2]] - mesh.nodes[tri[0]]);
+    double longest = 0.0;
+    for (int a = 0; a < 3; ++a) {
+      const Vec3d u = mesh.nodes[tri[(a + 1) % 3]] - mesh.nodes[tri[a]];
+      const Vec3d v = mesh.nodes[tri[(a + 2) % 3]] - mesh.nodes[tri[a]];
+      longest = std::max(longest, u.norm());
+      const double angle = std::atan2(u.cross(v).norm(), u.dot(v)) * kDegree;
+      report.min_angle_deg = std::min(report.min_angle_deg, angle);
+      if (angle < kShellAngleWarning) ++n_sharp;
+    }
+    if (n.norm() <= 2e-12 * longest * longest) {
+      degenerate.add("triangle " + std::to_string(t) + " has zero area");
+      continue;
+    }
+    normals[t] = n.normalized();
+  }
+  if (mesh.triangles.empty()) report.min_angle_deg = 0.0;
+  int n_turned = 0;
+  for (std::size_t t = 0; t < mesh.triangle_neighbours.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const int across = mesh.triangle_neighbours[t][i];
+      if (across < 0) continue;
+      // The neighbour is the triangle with the node `across` and this side's two nodes.
+      const int a = mesh.triangles[t][(i + 1) % 3], b = mesh.triangles[t][(i + 2) % 3];
+      const Vec3d& xa = mesh.nodes[a];
+      const Vec3d other = (mesh.nodes[b] - xa).cross(mesh.nodes[across] - xa);
+      if (other.norm() == 0.0 || normals[t].norm() == 0.0) continue;
+      // The neighbour runs through the side from b to a: its normal is (x_b - x_a) x (x_c - x_a)
+      // turned, i.e. -(other) when it is oriented like this triangle.
+      const double turn =
+          std::acos(std::clamp(normals[t].dot(-other.normalized()), -1.0, 1.0)) * kDegree;
+      report.max_turn_deg = std::max(report.max_turn_deg, turn);
+      if (turn > kShellTurnWarning) ++n_turned;
+    }
+  if (n_sharp > 0)
+    report.warnings.push_back(std::to_string(n_sharp) + " triangle angles are below " +
+                              number(kShellAngleWarning) + " degrees (smallest " +
+                              number(report.min_angle_deg) + ")");
+  if (n_turned > 0)
+    report.warnings.push_back(
+        std::to_string(n_turned / 2) + " sides turn the surface by more than " +
+        number(kShellTurnWarning) + " degrees (largest " + number(report.max_turn_deg) +
+        "): the shell triangle reads its curvature from its neighbours and smooths such a crease; "
+        "refine there");
+  std::vector<char> used(mesh.nodes.size(), 0);
+  for (const auto& tri : mesh.triangles)
+    for (int v : tri) used[static_cast<std::size_t>(v)] = 1;
+  report.n_unused_nodes = static_cast<int>(std::count(used.begin(), used.end(), 0));
+  if (report.n_unused_nodes > 0)
+    report.warnings.push_back(std::to_string(report.n_unused_nodes) +
+                              " nodes are used by no triangle; they carry no stiffness");
+  MessageList tags(report.errors, "tag problems");
+  check_tag_indices(mesh.surface_tags, mesh.triangles.size(), "triangle", tags);
+  check_tag_indices(mesh.edge_tags, mesh.edges.size(), "edge", tags);
+}
+
 MeshReport check_mesh(const Mesh& mesh, const std::vector<std::string>& required_tags) {
   MeshReport report;
   // The checks after these two index nodes and compute with coordinates.
   if (!check_node_indices(mesh, report) || !check_finite_coordinates(mesh, report)) return report;
+  if (mesh.is_shell()) {
+    check_shell_surface(mesh, report);
+    return report;
+  }
   if (mesh.tets.empty()) report.errors.push_back("the mesh has no tetrahedra");
   check_volumes(mesh, report);
   check_folds(mesh, report);

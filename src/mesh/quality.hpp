@@ -14,12 +14,25 @@ struct MeshReport {
   double max_aspect_ratio = 0.0;  ///< largest (longest edge / inradius) / (2 sqrt 6); 1 if regular
   int n_unused_nodes = 0;         ///< nodes used by no tetrahedron (corner or edge node)
   int n_boundary_faces = 0;       ///< faces of exactly one tetrahedron
+  /// Shell meshes: the smallest angle of a triangle and the largest turn between the normals of
+  /// two triangles sharing a side [degrees].
+  double min_angle_deg = 0.0;
+  double max_turn_deg = 0.0;
   bool ok() const { return errors.empty(); }
 };
 
 /// Aspect ratio above which check_mesh warns (a regular tetrahedron has 1; thin-wall meshes with
 /// a few layers through the thickness typically stay below 20).
 inline constexpr double kAspectRatioWarning = 100.0;
+
+/// Shell meshes: a triangle angle below this warns [degrees] (the side gradients of the shell
+/// triangle lose accuracy as the triangle flattens).
+inline constexpr double kShellAngleWarning = 10.0;
+/// Shell meshes: a turn between neighbouring triangles above this warns [degrees]. The shell
+/// triangle reads the curvature from the nodes across its sides (docs/theory/shell.md, KL6),
+/// which is accurate while a side's turn h/R is small; at 45 degrees the element is as long as
+/// the radius of curvature, and a sharper turn is a crease the element smooths over.
+inline constexpr double kShellTurnWarning = 45.0;
 
 /// Checks, in this order (each problem is one message naming the element, node, edge or tag;
 /// at most 10 messages per kind, then a count):
@@ -31,6 +44,11 @@ inline constexpr double kAspectRatioWarning = 100.0;
 ///   other than two boundary faces, e.g. two tetrahedra touching along one edge only);
 /// - warnings: nodes used by no tetrahedron; triangles that are interior faces (between two
 ///   tetrahedra); aspect ratio above kAspectRatioWarning.
+///
+/// A shell mesh (mesh.is_shell()) is checked as a surface: errors for node indices out of range,
+/// non-finite coordinates, degenerate triangles (area <= 1e-12 (longest side)^2) and tags listing
+/// triangles or edges that do not exist; warnings for nodes of no triangle, triangle angles below
+/// kShellAngleWarning and turns between neighbours above kShellTurnWarning.
 MeshReport check_mesh(const Mesh& mesh, const std::vector<std::string>& required_tags = {});
 
 }  // namespace plisse

@@ -209,9 +209,9 @@ TEST(CaseErrors, BadEnumerationsListTheAllowedValues) {
                                 "incompressibility: total}\n"),
                      "case.yaml", 2, 58, "material.incompressibility",
                      "must be one of: exact, nearly (got 'total')");
-  EXPECT_INPUT_ERROR(case_error(kMinimalCase + "boundary: [{type: clamped, surface: top}]\n"),
+  EXPECT_INPUT_ERROR(case_error(kMinimalCase + "boundary: [{type: pinned, surface: top}]\n"),
                      "case.yaml", 3, 19, "boundary[0].type",
-                     "must be one of: fixed, symmetry, displacement");
+                     "must be one of: fixed, symmetry, displacement, clamped, hinged");
   EXPECT_INPUT_ERROR(
       case_error(kMinimalCase + "cavities: [{name: c, surface: inner, control: pressure}]\n"),
       "case.yaml", 3, 47, "cavities[0].control", "must be one of: volume, gas");
