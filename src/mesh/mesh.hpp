@@ -56,9 +56,11 @@ struct Mesh {
   /// (`inner`, `bottom`). A tag not listed (a Gmsh physical surface) names the -1 face: a
   /// pressure on it pushes along the normals.
   std::map<std::string, int> shell_face_side;
-  /// Shell meshes only: the sides without a neighbour, by (triangle, side), whose missing node
-  /// is a mirror image (clamped and symmetry edges, KL8a); every other such side is free or
-  /// hinged (KL8). Set from the case's conditions before the model is made.
+  /// Shell meshes only: the sides without a neighbour whose missing node is a mirror image
+  /// (clamped and symmetry edges, KL8a), by the side's directed pair of nodes (corner i + 1,
+  /// corner i + 2 of its triangle: unique, as a side without a neighbour belongs to one
+  /// triangle); every other such side is free or hinged (KL8). Set from the case's conditions
+  /// before the model is made.
   std::map<std::pair<int, int>, SideMirror> side_mirrors;
 
   int n_nodes() const { return static_cast<int>(nodes.size()); }
