@@ -1,5 +1,7 @@
 #include "output/checkpoint.hpp"
 
+#include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -22,9 +24,20 @@ constexpr char kTrailer[8] = {'E', 'N', 'D', 'C', 'K', 'P', 'T', '1'};
 // 4: the fingerprint's parts (case text, --set values, mesh file) and a checksum before the
 // trailer; 5: the geometry hash of the mesh solved on, after the mesh file's
 constexpr std::uint32_t kVersion = 5;
+// The element family's code: 0 MINI, 1 Taylor-Hood (since version 3), 2 the shell triangle (a
+// code added within version 5: earlier files hold 0 or 1 and read the same).
+constexpr std::array<ElementFamily, 3> kElementOfCode = {
+    ElementFamily::mini, ElementFamily::taylor_hood, ElementFamily::shell};
 constexpr std::uint64_t kMaxStrings = 100000;          // --set values in a fingerprint
 constexpr std::uint64_t kMaxStringBytes = 1ull << 20;  // one --set value or path
 constexpr std::int64_t kMaxSteps = 1000000000;
+
+/// The code of `family` in kElementOfCode.
+std::uint32_t element_code(ElementFamily family) {
+  const auto it = std::find(kElementOfCode.begin(), kElementOfCode.end(), family);
+  PLISSE_CHECK(it != kElementOfCode.end(), "checkpoint: element family without a code");
+  return static_cast<std::uint32_t>(it - kElementOfCode.begin());
+}
 
 /// FNV-1a of a file's bytes, read in chunks (a mesh file may be large).
 std::uint64_t hash_file(const std::filesystem::path& path) {
@@ -182,7 +195,7 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& c) {
   w.text(c.fingerprint.mesh_file);
   w.value(c.fingerprint.mesh_bytes);
   w.value(c.fingerprint.geometry);
-  w.value<std::uint32_t>(c.element == ElementFamily::mini ? 0 : 1);
+  w.value<std::uint32_t>(element_code(c.element));
   w.value<std::int64_t>(c.steps);
   w.value(c.time);
   w.value(c.dt);
@@ -225,8 +238,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
   c.fingerprint.mesh_bytes = r.value<std::uint64_t>();
   c.fingerprint.geometry = r.value<std::uint64_t>();
   const auto element = r.value<std::uint32_t>();
-  if (element > 1) r.fail("unknown element family");
-  c.element = element == 0 ? ElementFamily::mini : ElementFamily::taylor_hood;
+  if (element >= kElementOfCode.size()) r.fail("unknown element family");
+  c.element = kElementOfCode[element];
   const auto steps = r.value<std::int64_t>();
   if (steps < 0 || steps > kMaxSteps)
     r.fail("step count " + std::to_string(steps) + " out of range");

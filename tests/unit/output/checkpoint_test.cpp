@@ -5,10 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <limits>
+#include <utility>
 
 #include "core/error.hpp"
+#include "core/fnv1a.hpp"
 #include "output/atomic_file.hpp"
 #include "output_test_support.hpp"
 
@@ -114,6 +118,43 @@ TEST(Checkpoint, ValuesOutOfTheirRangeAreRefusedByName) {
   const std::string old_version("PLISSECK\x03\0\0\0rest-of-an-old-file", 31);
   EXPECT_NE(refusal(dir, old_version).find("another version"), std::string::npos);
   EXPECT_NE(refusal(dir, "not a checkpoint at all").find("wrong file type"), std::string::npos);
+}
+
+/// Where the element family's code lies in a checkpoint of `c`: after the magic, the version and
+/// the fingerprint (case text, --set values, mesh file, mesh bytes, geometry).
+std::size_t element_code_offset(const Checkpoint& c) {
+  std::size_t offset = 8 + 4 + 8 + 8;  // magic, version, case text, count of --set values
+  for (const std::string& o : c.fingerprint.overrides) offset += 8 + o.size();
+  return offset + 8 + c.fingerprint.mesh_file.size() + 8 + 8;
+}
+
+TEST(Checkpoint, ElementFamilyCodesReadBackAndOldCodesReadTheSame) {
+  // The codes 0 (MINI) and 1 (Taylor-Hood) are those of every earlier file of this version, so
+  // an old checkpoint reads the same; the shell triangle has a code of its own, 2, not 1.
+  const ScratchDir dir;
+  const std::pair<ElementFamily, std::uint32_t> codes[] = {
+      {ElementFamily::mini, 0}, {ElementFamily::taylor_hood, 1}, {ElementFamily::shell, 2}};
+  for (const auto& [family, code] : codes) {
+    Checkpoint c = sample();
+    c.element = family;
+    write_checkpoint(dir / "checkpoint.bin", c);
+    const std::string bytes = test::contents(dir / "checkpoint.bin");
+    std::uint32_t written = 0;
+    std::memcpy(&written, bytes.data() + element_code_offset(c), sizeof written);
+    EXPECT_EQ(written, code) << to_string(family);
+    EXPECT_EQ(read_checkpoint(dir / "checkpoint.bin").element, family) << to_string(family);
+  }
+  // A code past the known ones, with the checksum made to match: refused by name.
+  write_checkpoint(dir / "good.bin", sample());
+  std::string bad = test::contents(dir / "good.bin");
+  const std::uint32_t unknown = 3;
+  std::memcpy(bad.data() + element_code_offset(sample()), &unknown, sizeof unknown);
+  const std::size_t content = bad.size() - 8 - 8;  // before the checksum and the trailer
+  Fnv1a checksum;
+  checksum.add(bad.data(), content);
+  const std::uint64_t sum = checksum.value();
+  std::memcpy(bad.data() + content, &sum, sizeof sum);
+  EXPECT_NE(refusal(dir, bad).find("unknown element family"), std::string::npos);
 }
 
 TEST(Checkpoint, MissingOrNotARegularFileIsRefused) {
