@@ -50,4 +50,40 @@ Mat3d plane_stress_cauchy(const Mat2d& C2, const Mat2d& S2, const Mat3d& current
   return Q * tau * Q.transpose();
 }
 
+ShellOutputs zero_shell_outputs() {
+  ShellOutputs zero;
+  zero.thickness = 0.0;
+  zero.membrane_force.setZero();
+  zero.bending_moment.setZero();
+  zero.curvature_change.setZero();
+  for (int f = 0; f < kShellFaces; ++f) {
+    zero.face_cauchy[f].setZero();
+    zero.face_stretches[f].setZero();
+  }
+  return zero;
+}
+
+double current_distance(const ShellSection& section, const StrainVec& strains, double zeta) {
+  // The rule's points z_g t/2 on [-t/2, t/2] mapped onto [0, ζ]: s = ζ (1/2 + ζ_g / t), weights
+  // w_g / t summing to 1.
+  double mean_stretch = 0.0;
+  for (int g = 0; g < section.n_points; ++g) {
+    const double s = zeta * (0.5 + section.zeta[g] / section.thickness);
+    const double det = in_plane_C(strains, s).determinant();
+    if (!(det > 0.0) || !std::isfinite(det)) {
+      throw InadmissibleDeformation("shell: C2 is not positive definite inside the thickness");
+    }
+    mean_stretch += section.weight[g] / section.thickness / std::sqrt(det);
+  }
+  return zeta * mean_stretch;
+}
+
+int nearest_section_point(const ShellSection& section, double zeta) {
+  int nearest = 0;
+  for (int g = 1; g < section.n_points; ++g) {
+    if (std::abs(section.zeta[g] - zeta) < std::abs(section.zeta[nearest] - zeta)) nearest = g;
+  }
+  return nearest;
+}
+
 }  // namespace plisse::shell

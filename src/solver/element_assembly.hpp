@@ -140,11 +140,28 @@ class ElementAssembly {
     });
   }
 
-  /// Output fields of every element at `state` (zeros on elements of other ranks before the
-  /// sum): each rank evaluates its owned elements, in parallel. Collective.
+  /// Output fields of every element at `state` (Element::fields): per_element. Collective.
   std::vector<Fields> fields(const Distribution& distribution, std::span<const double> state,
                              int threads) const {
-    std::vector<Fields> out(n_elements(), Element::zero_fields());
+    return per_element(
+        distribution, state, threads, Element::zero_fields(),
+        [](const auto& geometry, const auto& x, const auto& material, const auto& internal) {
+          return Element::fields(geometry, x, material, internal);
+        });
+  }
+
+  /// evaluate(geometry, x, material, internal) of every element at `state`, for output: each rank
+  /// evaluates its owned elements, in parallel, and the ranks' arrays (`zero` on the elements of
+  /// other ranks) are summed, so every rank gets every element's value. R holds doubles only (it
+  /// is summed as a flat array). A rigid element is evaluated with model 0 at zero pressure (it
+  /// moves rigidly and carries no stress); a model with history gives the response of its last
+  /// converged history. Collective.
+  template <class R, class Evaluate>
+  std::vector<R> per_element(const Distribution& distribution, std::span<const double> state,
+                             int threads, const R& zero, Evaluate&& evaluate) const {
+    static_assert(sizeof(R) % sizeof(double) == 0 && alignof(R) == alignof(double),
+                  "per_element sums R over the ranks as an array of doubles");
+    std::vector<R> out(n_elements(), zero);
     const std::vector<int>& owned = distribution.owned_elements();
     const int n = static_cast<int>(owned.size());
     std::exception_ptr error;
@@ -156,25 +173,24 @@ class ElementAssembly {
         typename Element::Vector x = gather(full, state);
         int m = materials_.of(e);
         if (m == ElementMaterials::kRigid) {
-          // A rigid element moves rigidly and carries no stress: any model at zero pressure
-          // gives F, J = 1 and zero stresses.
+          // Any model at zero pressure gives F, J = 1 and zero stresses.
           for (int i = 0; i < Element::kDof; ++i)
             if (full[i] % DofMap::kPerNode == 3) x[i] = 0.0;
           m = 0;
         }
-        // With history: the stress of the last converged history (dt = 0, nothing written).
-        out[e] = with_material(e, m, {}, 0.0, [&](const auto& material) {
-          return Element::fields(geometry_[e], x, material, internal_[e]);
+        // With history: the response of the last converged history (dt = 0, nothing written).
+        out[e] = with_material(e, m, {}, 0.0, [&](const auto& material) -> R {
+          return evaluate(geometry_[e], x, material, internal_[e]);
         });
       } catch (...) {
-#pragma omp critical(plisse_element_fields_error)
+#pragma omp critical(plisse_element_output_error)
         if (!error) error = std::current_exception();
       }
     }
     if (error) std::rethrow_exception(error);
-    // Every element is owned by one rank: the sum of the ranks' arrays is every element's fields.
+    // Every element is owned by one rank: the sum of the ranks' arrays is every element's value.
     distribution.sum_over_ranks(reinterpret_cast<double*>(out.data()),
-                                out.size() * (sizeof(Fields) / sizeof(double)));
+                                out.size() * (sizeof(R) / sizeof(double)));
     return out;
   }
 

@@ -403,6 +403,16 @@ double MixedModel::strain_energy() const {
   return visit_elements([&](const auto& e) { return e.strain_energy(*distribution_, state_); });
 }
 
+std::vector<shell::ShellOutputs> MixedModel::shell_outputs() const {
+  const auto* shells = std::get_if<std::unique_ptr<ElementAssembly<ShellElement>>>(&elements_);
+  if (shells == nullptr) return {};
+  return (*shells)->per_element(
+      *distribution_, state_, assembly_threads(), shell::zero_shell_outputs(),
+      [](const auto& geometry, const auto& x, const auto& material, const auto& /*internal*/) {
+        return ShellElement::outputs(geometry, x, material);
+      });
+}
+
 BodyAverages MixedModel::averages() const { return averages(element_fields()); }
 
 BodyAverages MixedModel::averages(const std::vector<ElementFields>& fields) const {

@@ -20,9 +20,9 @@
 /// of its nodes, evaluates the elements that touch them (and every term), and fills only its own
 /// rows of the residual and the tangent, so that no element contribution crosses ranks. After each
 /// Newton update the free values are gathered to every rank (set_free). The members that return
-/// whole-model results (element_fields, strain_energy, reaction, snapshot, the assembly status)
-/// are collective and give every rank the same answer. On one rank the matrices and vectors are
-/// sequential and everything is as in a serial program.
+/// whole-model results (element_fields, shell_outputs, strain_energy, reaction, snapshot, the
+/// assembly status) are collective and give every rank the same answer. On one rank the matrices
+/// and vectors are sequential and everything is as in a serial program.
 #include <mpi.h>
 #include <petscmat.h>
 #include <petscvec.h>
@@ -229,6 +229,11 @@ class MixedModel {
   /// Per-element Cauchy stress, J and von Mises at the current state (of a shell, thickness
   /// averages: element/shell_output.hpp).
   std::vector<ElementFields> element_fields() const;
+  /// Per-element outputs of a shell at the current state (its thickness, the resultants N and M,
+  /// the change of curvature, and the faces' stresses and stretches: element/shell_output.hpp,
+  /// docs/theory/shell.md KL22-KL25), in the order of the mesh's triangles; empty for a model
+  /// of solid elements. Collective.
+  std::vector<shell::ShellOutputs> shell_outputs() const;
   BodyAverages averages() const;
   /// The same from element_fields() of the current state, when the caller already has them.
   BodyAverages averages(const std::vector<ElementFields>& fields) const;

@@ -145,6 +145,14 @@ struct ShellElement {
     return shell::compute_shell_fields(g.patch, g.section, mirrored(g, x), material);
   }
 
+  /// shell::compute_shell_outputs: the thickness, the resultants N and M, the change of
+  /// curvature, and the faces' stresses and stretches (KL22-KL25). Not part of the policy
+  /// contract: MixedModel::shell_outputs asks for it.
+  template <class Material>
+  static shell::ShellOutputs outputs(const Geometry& g, const Vector& x, const Material& material) {
+    return shell::compute_shell_outputs(g.patch, g.section, mirrored(g, x), material);
+  }
+
   /// Π_e (KL14) [mJ].
   static double strain_energy(const Geometry& g, const Vector& x, const AnyMaterial& material,
                               double /*inverse_bulk_modulus*/, const Internal& /*internal*/) {

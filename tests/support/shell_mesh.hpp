@@ -47,6 +47,30 @@ inline Mesh octahedral_sphere(double R, double t, int n, bool octant) {
   return mesh;
 }
 
+/// A flat square of side n mm centred at the origin in the plane through it with normal Q e3, in
+/// 2 n² triangles (diagonals alternating), thickness t [mm]; node (i, j), at Q (i - n/2, j - n/2,
+/// 0), is node j (n + 1) + i. Surface tag "all": every triangle.
+inline Mesh flat_square(const Mat3d& Q, int n, double t) {
+  Mesh mesh;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) mesh.nodes.push_back(Q * Vec3d(i - 0.5 * n, j - 0.5 * n, 0.0));
+  const auto node = [&](int i, int j) { return j * (n + 1) + i; };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      if ((i + j) % 2 == 0) {
+        mesh.triangles.push_back({node(i, j), node(i + 1, j), node(i + 1, j + 1)});
+        mesh.triangles.push_back({node(i, j), node(i + 1, j + 1), node(i, j + 1)});
+      } else {
+        mesh.triangles.push_back({node(i, j), node(i + 1, j), node(i, j + 1)});
+        mesh.triangles.push_back({node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)});
+      }
+    }
+  std::vector<int>& all = mesh.surface_tags["all"];
+  for (int k = 0; k < static_cast<int>(mesh.triangles.size()); ++k) all.push_back(k);
+  make_shell_surface(mesh, t);
+  return mesh;
+}
+
 /// Moves every node of `mesh` by up to `amount` [mm] in each direction (reproducible from
 /// `seed`).
 inline void jitter_nodes(Mesh& mesh, double amount, unsigned seed) {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "material/registry.hpp"
+#include "mesh/box_mesh.hpp"
 #include "mesh/shell_surface.hpp"
 #include "solver/mixed_model.hpp"
 #include "support/shell_mesh.hpp"
@@ -226,28 +227,6 @@ TEST(ShellModel, RigidMotionsStoreNoEnergyAndLeaveNoResidual) {
   EXPECT_LT(rigid_energy, 1e-10 * stretch_energy);
 }
 
-/// A flat square of side 4 mm in the plane through the origin with normal Q e3, in 2 × 4 × 4
-/// triangles (diagonals alternating), thickness 0.2 mm.
-Mesh tilted_square(const Mat3d& Q) {
-  Mesh mesh;
-  const int n = 4;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) mesh.nodes.push_back(Q * Vec3d(i - 2.0, j - 2.0, 0.0));
-  const auto node = [&](int i, int j) { return j * (n + 1) + i; };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      if ((i + j) % 2 == 0) {
-        mesh.triangles.push_back({node(i, j), node(i + 1, j), node(i + 1, j + 1)});
-        mesh.triangles.push_back({node(i, j), node(i + 1, j + 1), node(i, j + 1)});
-      } else {
-        mesh.triangles.push_back({node(i, j), node(i + 1, j), node(i, j + 1)});
-        mesh.triangles.push_back({node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)});
-      }
-    }
-  make_shell_surface(mesh, 0.2);
-  return mesh;
-}
-
 TEST(ShellModel, BiaxialStretchOutputsFollowTheClosedForm) {
   // x = Q D Qᵀ X with D = diag(a, b, ·) stretches the sheet in its plane homogeneously:
   // F = Q diag(a, b, 1/(a b)) Qᵀ, and incompressible plane stress of the neo-Hookean model,
@@ -255,7 +234,7 @@ TEST(ShellModel, BiaxialStretchOutputsFollowTheClosedForm) {
   // σ_22 = 2 c1 (b² - 1/(a b)²), σ_33 = 0 (in the sheet's axes), J = 1, and the energy
   // W t A of the whole sheet (area A = 16 mm²).
   const Mat3d Q = Eigen::AngleAxisd(0.5, Vec3d(0.3, 1.0, -0.4).normalized()).toRotationMatrix();
-  const Mesh mesh = tilted_square(Q);
+  const Mesh mesh = test::flat_square(Q, 4, 0.2);
   MixedModel model(mesh, neo_hookean(), 0.0, {}, {}, ElementFamily::shell);
   const double a = 1.3, b = 0.9, c = 1.0 / (a * b);
   const Mat3d D = Vec3d(a, b, 1.0).asDiagonal();
@@ -280,10 +259,25 @@ TEST(ShellModel, BiaxialStretchOutputsFollowTheClosedForm) {
     EXPECT_NEAR(fields[e].von_mises, von_mises_stress(sigma), 1e-12 * sigma.norm());
     EXPECT_LT((gradients[e] - F).norm(), 1e-12) << "element " << e;
   }
+  // The shell's own outputs (KL22-KL25) through the model: thickness t c, N = t c σ, M = 0.
+  const std::vector<shell::ShellOutputs> outputs = model.shell_outputs();
+  ASSERT_EQ(outputs.size(), mesh.triangles.size());
+  for (std::size_t e = 0; e < outputs.size(); ++e) {
+    EXPECT_NEAR(outputs[e].thickness, 0.2 * c, 1e-14) << "element " << e;
+    EXPECT_LT((outputs[e].membrane_force - 0.2 * c * sigma).norm(), 1e-12 * 0.2 * sigma.norm());
+    EXPECT_LT(outputs[e].bending_moment.norm(), 1e-12 * 0.2 * 0.2 * sigma.norm());
+    EXPECT_LT((outputs[e].face_cauchy[shell::kTopFace] - sigma).norm(), 1e-12 * sigma.norm());
+  }
   const BodyAverages averages = model.averages(fields);
   EXPECT_LT((averages.F - F).norm(), 1e-12);
   EXPECT_LT((averages.cauchy - sigma).norm(), 1e-12 * sigma.norm());
   EXPECT_NEAR(averages.volume, 0.2 * 16.0, 1e-12);
+}
+
+TEST(ShellModel, ShellOutputsAreEmptyForSolidElements) {
+  const Mesh mesh = make_box_mesh(Vec3d(1.0, 1.0, 1.0), {1, 1, 1});
+  const MixedModel model(mesh, neo_hookean(), 0.0, {});
+  EXPECT_TRUE(model.shell_outputs().empty());
 }
 
 }  // namespace
