@@ -24,25 +24,18 @@ struct EigenObjects {
   }
 };
 
-/// The lumped "mass" of (eigenmodes.md, E2): M_ii = Σ_{e ∋ node(i)} V_e / 4 on the free
-/// displacement dofs, 0 on the free pressure dofs and global unknowns. Every row stores its
-/// diagonal (explicit zeros included), so the pattern of M is a subset of the tangent's and
-/// K - σ M can be formed in place.
+/// The lumped "mass" of (eigenmodes.md, E2): lumped_nodal_volumes on the free displacement
+/// dofs, 0 on the free pressure dofs and global unknowns. Every row stores its diagonal (explicit
+/// zeros included), so the pattern of M is a subset of the tangent's and K - σ M can be formed in
+/// place.
 Mat create_lumped_volume(const MixedModel& model) {
-  const Mesh& mesh = model.mesh();
   const DofMap& dofs = model.dofs();
-  // Summed over the whole mesh on every rank; each rank sets its owned rows.
+  const std::vector<double> volumes = lumped_nodal_volumes(model.mesh());
+  // Over the whole mesh on every rank; each rank sets its owned rows.
   std::vector<double> diagonal(dofs.n_free(), 0.0);
-  for (const auto& tet : mesh.tets) {
-    const Vec3d X0 = mesh.nodes[tet[0]];
-    Mat3d dX;
-    for (int a = 1; a < 4; ++a) dX.col(a - 1) = mesh.nodes[tet[a]] - X0;
-    const double quarter_volume = dX.determinant() / 24.0;  // V_e / 4 [mm^3]
-    for (int node : tet)
-      for (int k = 0; k < 3; ++k)
-        if (const int eq = dofs.equation(DofMap::dof(node, k)); eq >= 0)
-          diagonal[eq] += quarter_volume;
-  }
+  for (int node = 0; node < dofs.n_nodes(); ++node)
+    for (int k = 0; k < 3; ++k)
+      if (const int eq = dofs.equation(DofMap::dof(node, k)); eq >= 0) diagonal[eq] = volumes[node];
   Mat M = nullptr;
   PLISSE_PETSC(MatCreateAIJ(model.comm(), model.n_owned(), model.n_owned(), dofs.n_free(),
                             dofs.n_free(), 1, nullptr, 0, nullptr, &M));
@@ -86,6 +79,27 @@ std::vector<double> to_normalised_state(const MixedModel& model, Vec x) {
 }
 
 }  // namespace
+
+std::vector<double> lumped_nodal_volumes(const Mesh& mesh) {
+  std::vector<double> volume(mesh.nodes.size(), 0.0);
+  if (mesh.is_shell()) {
+    for (const auto& triangle : mesh.triangles) {
+      const Vec3d X0 = mesh.nodes[triangle[0]];
+      const double area =
+          0.5 * (mesh.nodes[triangle[1]] - X0).cross(mesh.nodes[triangle[2]] - X0).norm();
+      double thickness = 0.0;
+      for (int node : triangle) thickness += mesh.shell_thickness[node] / 3.0;
+      for (int node : triangle) volume[node] += area * thickness / 3.0;  // V_e / 3 [mm^3]
+    }
+  }
+  for (const auto& tet : mesh.tets) {
+    const Vec3d X0 = mesh.nodes[tet[0]];
+    Mat3d dX;
+    for (int a = 1; a < 4; ++a) dX.col(a - 1) = mesh.nodes[tet[a]] - X0;
+    for (int node : tet) volume[node] += dX.determinant() / 24.0;  // V_e / 4 [mm^3]
+  }
+  return volume;
+}
 
 std::vector<Eigenmode> lowest_eigenmodes(MixedModel& model, const EigenSettings& options) {
   PLISSE_CHECK(options.count >= 1,

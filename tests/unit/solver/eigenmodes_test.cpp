@@ -32,6 +32,7 @@
 #include "physics/pressure_load.hpp"
 #include "solver/newton_solver.hpp"
 #include "solver/petsc_session.hpp"
+#include "support/shell_mesh.hpp"
 
 namespace plisse {
 namespace {
@@ -324,6 +325,88 @@ TEST(Eigenmodes, NonConvergenceIsASolverError) {
   PetscOptionsClearValue(nullptr, "-eps_max_it");
   std::cout << message << "\n";
   EXPECT_NE(message.find("of 4 eigenpairs"), std::string::npos) << message;
+}
+
+TEST(Eigenmodes, ShellLumpedVolumesSumToAreaTimesThickness) {
+  // A third of A_e t_e to each corner (eigenmodes.md, E2), t_e the mean of the corners': the sum
+  // is Σ A_e t_e, the shell's volume, A t for a uniform thickness. The octant of a sphere of
+  // radius 2 mm, 0.1 mm thick, then with a thickness that varies from node to node.
+  Mesh mesh = test::octahedral_sphere(2.0, 0.1, 4, true);
+  const auto sum_of = [](const std::vector<double>& v) {
+    double s = 0.0;
+    for (double x : v) s += x;
+    return s;
+  };
+  double area = 0.0, volume = 0.0;
+  for (int v = 0; v < mesh.n_nodes(); ++v) mesh.shell_thickness[v] = 0.1 + 0.01 * (v % 3);
+  for (const auto& tri : mesh.triangles) {
+    const Vec3d X0 = mesh.nodes[tri[0]];
+    const double a = 0.5 * (mesh.nodes[tri[1]] - X0).cross(mesh.nodes[tri[2]] - X0).norm();
+    area += a;
+    volume += a *
+              (mesh.shell_thickness[tri[0]] + mesh.shell_thickness[tri[1]] +
+               mesh.shell_thickness[tri[2]]) /
+              3.0;
+  }
+  std::cout << "relative error of the sum: " << sum_of(lumped_nodal_volumes(mesh)) / volume - 1.0
+            << "\n";
+  EXPECT_NEAR(sum_of(lumped_nodal_volumes(mesh)), volume, 1e-14 * volume);
+  for (double& t : mesh.shell_thickness) t = 0.1;
+  const std::vector<double> uniform = lumped_nodal_volumes(mesh);
+  ASSERT_EQ(uniform.size(), mesh.nodes.size());
+  std::cout << "uniform: " << sum_of(uniform) / (area * 0.1) - 1.0 << "\n";
+  EXPECT_NEAR(sum_of(uniform), area * 0.1, 1e-14 * area * 0.1);
+  EXPECT_GT(*std::min_element(uniform.begin(), uniform.end()), 0.0);
+}
+
+TEST(Eigenmodes, StretchedShellSheetMatchesDenseProblem) {
+  // A flat sheet of 4 × 4 mm, 0.2 mm thick, in 32 shell triangles, its edge nodes held at a
+  // biaxial stretch (1.1, 1.05) and its inner nodes at the homogeneous state, which is the
+  // equilibrium: the pencil K φ = λ M φ has no pressure block (the shell has no pressure
+  // unknowns), M the lumped A_e t / 3 of each triangle's corners, recomputed here. SLEPc's
+  // eigenvalues against Eigen's dense generalized solver.
+  const Mat3d Q = Eigen::AngleAxisd(0.4, Vec3d(1.0, 0.5, -0.3).normalized()).toRotationMatrix();
+  const Mesh mesh = test::flat_square(Q, 4, 0.2);
+  const Mat3d stretch = Q * Vec3d(1.1, 1.05, 1.0).asDiagonal() * Q.transpose();
+  std::vector<ConstrainedComponent> held;
+  for (int v = 0; v < mesh.n_nodes(); ++v) {
+    const Vec3d local = Q.transpose() * mesh.nodes[v];
+    if (std::abs(std::abs(local.x()) - 2.0) > 1e-12 && std::abs(std::abs(local.y()) - 2.0) > 1e-12)
+      continue;
+    const Vec3d u = (stretch - Mat3d::Identity()) * mesh.nodes[v];
+    for (int k = 0; k < 3; ++k) held.push_back({v, k, u[k], Ramp{0.0, 1.0}});
+  }
+  MixedModel model(mesh, make_material("neo-hookean", {{"c1", 0.5}}), 0.0, held, {},
+                   ElementFamily::shell);
+  model.set_time(1.0);
+  for (int v = 0; v < mesh.n_nodes(); ++v) {
+    const Vec3d u = (stretch - Mat3d::Identity()) * mesh.nodes[v];
+    for (int k = 0; k < 3; ++k) model.state()[DofMap::dof(v, k)] = u[k];
+  }
+  model.save_converged();
+  const Eigen::MatrixXd K = dense_tangent(model);
+  ASSERT_EQ(model.dofs().n_free_pressure(), 0);
+  Eigen::VectorXd m = Eigen::VectorXd::Zero(model.n_free());
+  for (const auto& tri : mesh.triangles) {
+    const Vec3d X0 = mesh.nodes[tri[0]];
+    const double third =
+        0.5 * (mesh.nodes[tri[1]] - X0).cross(mesh.nodes[tri[2]] - X0).norm() * 0.2 / 3.0;
+    for (int v : tri)
+      for (int k = 0; k < 3; ++k)
+        if (const int eq = model.dofs().equation(DofMap::dof(v, k)); eq >= 0) m[eq] += third;
+  }
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(
+      0.5 * (K + K.transpose()), Eigen::MatrixXd(m.asDiagonal()));
+  ASSERT_EQ(dense.info(), Eigen::Success);
+  const std::vector<Eigenmode> modes = lowest_eigenmodes(model, EigenSettings{4, 0.0, 1e-12});
+  ASSERT_EQ(modes.size(), 4u);
+  for (int i = 0; i < 4; ++i) {
+    const double reference = dense.eigenvalues()[i];
+    std::cout << "  lambda_" << i << " = " << modes[i].eigenvalue << ", relative difference to "
+              << "dense " << (modes[i].eigenvalue - reference) / reference << "\n";
+    EXPECT_GT(reference, 0.0);
+    EXPECT_NEAR(modes[i].eigenvalue, reference, 1e-8 * std::abs(reference)) << "mode " << i;
+  }
 }
 
 TEST(Eigenmodes, RefusesMoreModesThanDofs) {
