@@ -109,8 +109,11 @@ void write_vtu_piece(const std::filesystem::path& path, const Mesh& mesh,
                      const std::vector<VtuField>& point_fields,
                      const std::vector<VtuField>& cell_fields, VtuCompression compression) {
   const auto n_nodes = static_cast<std::size_t>(mesh.n_nodes());
+  // The elements: the tetrahedra, or the triangles of a shell's mid-surface (write_vtu's cells).
+  const bool shell = mesh.is_shell();
+  const auto n_cells = static_cast<std::size_t>(n_mesh_cells(mesh));
+  const bool quadratic = !shell && mesh.order() == 2;
   const auto n_tets = static_cast<std::size_t>(mesh.n_tets());
-  const bool quadratic = mesh.order() == 2;
   PLISSE_CHECK(points.size() == n_nodes, "VTU piece '" << path.string() << "': " << points.size()
                                                        << " points given for a mesh of " << n_nodes
                                                        << " nodes");
@@ -132,19 +135,19 @@ void write_vtu_piece(const std::filesystem::path& path, const Mesh& mesh,
     }
   };
   check_full(point_fields, n_nodes, "point");
-  check_full(cell_fields, n_tets, "cell");
+  check_full(cell_fields, n_cells, "cell");
   for (const VtuField& f : point_fields)
     PLISSE_CHECK(f.name != kGlobalNodeField,
                  "VTU piece '" << path.string() << "': the point field name '" << kGlobalNodeField
                                << "' is reserved (added to every piece)");
 
   // Nodes used by the piece, and their local numbers in increasing global order.
-  std::vector<char> element_seen(n_tets, 0);
+  std::vector<char> element_seen(n_cells, 0);
   std::vector<int> local_of(n_nodes, -1);
   for (const int e : elements) {
     PLISSE_CHECK(
-        e >= 0 && static_cast<std::size_t>(e) < n_tets,
-        "VTU piece '" << path.string() << "': element " << e << " outside [0, " << n_tets << ")");
+        e >= 0 && static_cast<std::size_t>(e) < n_cells,
+        "VTU piece '" << path.string() << "': element " << e << " outside [0, " << n_cells << ")");
     PLISSE_CHECK(!element_seen[e],
                  "VTU piece '" << path.string() << "': element " << e << " listed twice");
     element_seen[e] = 1;
@@ -154,7 +157,10 @@ void write_vtu_piece(const std::filesystem::path& path, const Mesh& mesh,
                                  << node << ", outside [0, " << n_nodes << ")");
       local_of[node] = 0;
     };
-    for (const int node : mesh.tets[e]) mark(node);
+    if (shell)
+      for (const int node : mesh.triangles[e]) mark(node);
+    else
+      for (const int node : mesh.tets[e]) mark(node);
     if (quadratic)
       for (const int node : mesh.tet_edge_nodes[e]) mark(node);
   }
@@ -168,15 +174,24 @@ void write_vtu_piece(const std::filesystem::path& path, const Mesh& mesh,
   Mesh piece;
   piece.nodes.reserve(global_of.size());
   for (const int g : global_of) piece.nodes.push_back(points[g]);
-  piece.tets.reserve(elements.size());
-  for (const int e : elements) {
-    std::array<int, 4> corners{};
-    for (int k = 0; k < 4; ++k) corners[k] = local_of[mesh.tets[e][k]];
-    piece.tets.push_back(corners);
-    if (quadratic) {
-      std::array<int, 6> edges{};
-      for (int k = 0; k < 6; ++k) edges[k] = local_of[mesh.tet_edge_nodes[e][k]];
-      piece.tet_edge_nodes.push_back(edges);
+  if (shell) {
+    piece.triangles.reserve(elements.size());
+    for (const int e : elements) {
+      std::array<int, 3> corners{};
+      for (int k = 0; k < 3; ++k) corners[k] = local_of[mesh.triangles[e][k]];
+      piece.triangles.push_back(corners);
+    }
+  } else {
+    piece.tets.reserve(elements.size());
+    for (const int e : elements) {
+      std::array<int, 4> corners{};
+      for (int k = 0; k < 4; ++k) corners[k] = local_of[mesh.tets[e][k]];
+      piece.tets.push_back(corners);
+      if (quadratic) {
+        std::array<int, 6> edges{};
+        for (int k = 0; k < 6; ++k) edges[k] = local_of[mesh.tet_edge_nodes[e][k]];
+        piece.tet_edge_nodes.push_back(edges);
+      }
     }
   }
   // An empty quadratic piece has no edge-node lists and is written as a (linear) empty piece.
@@ -209,6 +224,11 @@ void write_vtu_piece(const std::filesystem::path& path, const Mesh& mesh,
                           f.values.begin() + static_cast<std::ptrdiff_t>(first + nc));
     }
     piece_cell_fields.push_back(std::move(local));
+  }
+  if (shell) {
+    write_vtu(path, piece.nodes, std::span<const std::array<int, 3>>(piece.triangles),
+              piece_point_fields, piece_cell_fields, compression);
+    return;
   }
   write_vtu(path, piece, piece.nodes, piece_point_fields, piece_cell_fields, compression);
 }

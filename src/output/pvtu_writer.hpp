@@ -81,15 +81,16 @@ void write_pvtu(const std::filesystem::path& path, const std::vector<std::string
                 const std::vector<VtuArrayInfo>& point_fields,
                 const std::vector<VtuArrayInfo>& cell_fields);
 
-/// Writes the VTU piece `path` holding the tetrahedra `elements` (indices into mesh.tets, each
-/// once, any order; written in the given order) of `mesh`, linear or quadratic as write_vtu does.
+/// Writes the VTU piece `path` holding the elements `elements` (indices into mesh.tets, or into
+/// mesh.triangles for the mid-surface of a shell; each once, any order; written in the given
+/// order) of `mesh`, linear or quadratic tetrahedra or triangles as write_vtu does.
 /// The piece's points are the nodes those elements use (corners and, for a quadratic mesh, edge
 /// nodes) in increasing global order; their coordinates come from `points` (mesh.n_nodes()
 /// entries [mm], e.g. deformed positions). `point_fields` hold one value set per mesh node and
-/// `cell_fields` one per mesh element (VtuField's layout); the piece gets their restrictions, then
-/// the point field global_node. An empty `elements` gives an empty piece (a rank without
-/// elements). Throws plisse::Error naming `path` on any size, index or name violation (no file is
-/// written then) and when the file cannot be written. `compression` as write_vtu's.
+/// `cell_fields` one per mesh element (n_mesh_cells; VtuField's layout); the piece gets their
+/// restrictions, then the point field global_node. An empty `elements` gives an empty piece (a rank
+/// without elements). Throws plisse::Error naming `path` on any size, index or name violation (no
+/// file is written then) and when the file cannot be written. `compression` as write_vtu's.
 void write_vtu_piece(const std::filesystem::path& path, const Mesh& mesh,
                      std::span<const Vec3d> points, std::span<const int> elements,
                      const std::vector<VtuField>& point_fields,

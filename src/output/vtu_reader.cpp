@@ -316,13 +316,14 @@ const ArrayDecl* find_array(const ParsedVtu& parsed, Section section, std::strin
   return it == parsed.arrays.end() ? nullptr : &*it;
 }
 
-/// The values of one Float64 array whose block parse() checked to fit the file: the allocation is
-/// bounded by the file size.
-std::vector<double> read_values(VtuFile& file, const ParsedVtu& parsed, const ArrayDecl& a) {
-  std::vector<double> values(static_cast<std::size_t>(a.n_bytes / sizeof(double)));
+/// The values of one array of T (Float64: double, UInt8: std::uint8_t) whose block parse() checked
+/// to fit the file: the allocation is bounded by the file size.
+template <class T = double>
+std::vector<T> read_values(VtuFile& file, const ParsedVtu& parsed, const ArrayDecl& a) {
+  std::vector<T> values(static_cast<std::size_t>(a.n_bytes / sizeof(T)));
   if (!parsed.zlib) {
     file.read_at(parsed.data_start + a.offset + sizeof(std::uint64_t), values.data(),
-                 values.size() * sizeof(double));
+                 values.size() * sizeof(T));
     return values;
   }
   // Each block inflates to block_bytes (the last to what is left), exactly.
@@ -656,6 +657,16 @@ VtuField read_vtu_cell_field(const std::filesystem::path& path, const std::strin
   VtuFile file(path);
   const ParsedVtu parsed = parse(file);
   return read_field(file, parsed, Section::cell_data, name);
+}
+
+std::vector<std::uint8_t> read_vtu_cell_types(const std::filesystem::path& path) {
+  if (is_pvtu(path))
+    throw Error("PVTU '" + path.string() +
+                "': cell types are read from one piece (.vtu), not from a .pvtu");
+  VtuFile file(path);
+  const ParsedVtu parsed = parse(file);
+  // parse() found the array and checked it: UInt8, one byte per cell.
+  return read_values<std::uint8_t>(file, parsed, *find_array(parsed, Section::cells, "types"));
 }
 
 }  // namespace plisse

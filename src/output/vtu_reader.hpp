@@ -73,4 +73,9 @@ VtuField read_vtu_point_field(const std::filesystem::path& path, const std::stri
 /// read_vtu_summary, and when there is no cell field of that name (the message lists them).
 VtuField read_vtu_cell_field(const std::filesystem::path& path, const std::string& name);
 
+/// The VTK cell type id of every cell of the VTU `path`, in cell order (VtkCellType's values for
+/// the files plisse writes: 10 tetrahedra, 24 quadratic tetrahedra, 5 the triangles of a shell).
+/// Serial files only, as read_vtu_cell_field. Throws plisse::Error as read_vtu_summary.
+std::vector<std::uint8_t> read_vtu_cell_types(const std::filesystem::path& path);
+
 }  // namespace plisse

@@ -318,6 +318,10 @@ int n_cell_nodes(VtkCellType type) {
   throw Error("unknown VTK cell type " + std::to_string(static_cast<int>(type)));
 }
 
+int n_mesh_cells(const Mesh& mesh) {
+  return mesh.is_shell() ? static_cast<int>(mesh.triangles.size()) : mesh.n_tets();
+}
+
 void write_vtu(const std::filesystem::path& path, std::span<const Vec3d> points, VtkCellType type,
                std::span<const int> connectivity, const std::vector<VtuField>& point_fields,
                const std::vector<VtuField>& cell_fields, VtuCompression compression) {
@@ -355,6 +359,11 @@ void write_vtu(const std::filesystem::path& path, const Mesh& mesh, std::span<co
   PLISSE_CHECK(points.size() == mesh.nodes.size(),
                "VTU '" << path.string() << "': " << points.size() << " points given for a mesh of "
                        << mesh.nodes.size() << " nodes");
+  if (mesh.is_shell()) {
+    write_vtu(path, points, std::span<const std::array<int, 3>>(mesh.triangles), point_fields,
+              cell_fields, compression);
+    return;
+  }
   if (mesh.order() == 1) {
     write_vtu(path, points, std::span<const std::array<int, 4>>(mesh.tets), point_fields,
               cell_fields, compression);

@@ -53,6 +53,10 @@ enum class VtkCellType : std::uint8_t {
 /// Number of nodes of one cell of `type`.
 int n_cell_nodes(VtkCellType type);
 
+/// The cells write_vtu(path, mesh, ...) writes for `mesh`: its triangles for the mid-surface of a
+/// shell (Mesh::is_shell), else its tetrahedra.
+int n_mesh_cells(const Mesh& mesh);
+
 /// `text` with the XML special characters & < > " ' replaced by entities, for attribute values
 /// (field names here, file names in output/pvd_writer).
 std::string escape_xml(std::string_view text);
@@ -100,9 +104,11 @@ void write_vtu(const std::filesystem::path& path, std::span<const Vec3d> points,
                const std::vector<VtuField>& point_fields, const std::vector<VtuField>& cell_fields,
                VtuCompression compression = VtuCompression::none);
 
-/// The tetrahedra of `mesh`: VTK_TETRA for a linear mesh, VTK_QUADRATIC_TETRA for a 10-node mesh
-/// (edge nodes reordered from Gmsh's 01, 12, 20, 30, 32, 31 to VTK's 01, 12, 20, 03, 13, 23).
-/// `points` replaces mesh.nodes (e.g. deformed positions) and must have mesh.n_nodes() entries.
+/// The elements of `mesh`: its tetrahedra, VTK_TETRA for a linear mesh, VTK_QUADRATIC_TETRA for a
+/// 10-node mesh (edge nodes reordered from Gmsh's 01, 12, 20, 30, 32, 31 to VTK's 01, 12, 20, 03,
+/// 13, 23); or, for the mid-surface of a shell (Mesh::is_shell), its triangles, VTK_TRIANGLE.
+/// `points` replaces mesh.nodes (e.g. deformed positions) and must have mesh.n_nodes() entries;
+/// cell fields hold one value set per element (n_mesh_cells).
 void write_vtu(const std::filesystem::path& path, const Mesh& mesh, std::span<const Vec3d> points,
                const std::vector<VtuField>& point_fields, const std::vector<VtuField>& cell_fields,
                VtuCompression compression = VtuCompression::none);
