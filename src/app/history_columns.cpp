@@ -56,8 +56,10 @@ HistoryColumns::HistoryColumns(const Case& c, const MixedModel& model, const Wri
       });
   const Mesh& mesh = model.mesh();
   add_reactions(c, mesh);
-  // A wall: a shell or sheet (a cube's top and bottom are not one).
-  if (const auto faces = c.mesh.wall_thickness() ? wall_faces(mesh) : std::nullopt)
+  // A wall: a shell or sheet (a cube's top and bottom are not one). A shell's mid-surface carries
+  // its faces' tags on the same triangles: its thickness is the elements' own.
+  if (const auto faces =
+          c.mesh.wall_thickness() && !mesh.is_shell() ? wall_faces(mesh) : std::nullopt)
     wall_ = std::make_shared<const WallThickness>(mesh, *faces);
   add_probes(c.probes, mesh);
   add({"volume", "min_J", "strain_energy"}, [](const StepRecord& r, std::vector<double>& row) {
@@ -69,6 +71,14 @@ HistoryColumns::HistoryColumns(const Case& c, const MixedModel& model, const Wri
     add({"min_thickness"}, [wall = wall_](const StepRecord& r, std::vector<double>& row) {
       const std::vector<double> t = (*wall)(nodal_displacements(r.model));
       row.push_back(*std::min_element(t.begin(), t.end()));
+    });
+  }
+  if (mesh.is_shell()) {
+    add({"min_thickness"}, [](const StepRecord& r, std::vector<double>& row) {
+      PLISSE_CHECK(r.shell, "history: min_thickness of a shell needs the step's shell outputs");
+      double smallest = std::numeric_limits<double>::infinity();
+      for (const shell::ShellOutputs& s : *r.shell) smallest = std::min(smallest, s.thickness);
+      row.push_back(smallest);
     });
   }
   if (c.solver.stability.check)

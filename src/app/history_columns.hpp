@@ -23,6 +23,8 @@ struct StepRecord {
   const std::vector<ElementFields>& fields;  ///< model.element_fields() of the state
   const BodyAverages& averages;              ///< model.averages(fields)
   const WrinkleMeter::Result* wrinkles;      ///< null without output.wrinkles
+  /// model.shell_outputs() of the state for a shell (Mesh::is_shell), else null.
+  const std::vector<shell::ShellOutputs>* shell = nullptr;
 };
 
 class HistoryColumns {
@@ -31,8 +33,9 @@ class HistoryColumns {
   /// the order of the contract: the standard ones (HistoryWriter::standard_columns), each term's
   /// columns, stretch, the averaged stretches and Cauchy stresses, reactions of named boundary
   /// conditions, the probes' fields (add_probes), volume, min_J, strain_energy, min_thickness (a
-  /// mesh with a wall: wall_faces), the stability columns (solver.stability.check) and the wrinkle
-  /// columns (output.wrinkles, measured by `meter`, borrowed; required then).
+  /// mesh with a wall: wall_faces; a shell: its elements' thickness, StepRecord::shell), the
+  /// stability columns (solver.stability.check) and the wrinkle columns (output.wrinkles,
+  /// measured by `meter`, borrowed; required then).
   HistoryColumns(const Case& c, const MixedModel& model, const WrinkleMeter* meter);
 
   /// All column names, in row order.
@@ -40,7 +43,8 @@ class HistoryColumns {
   /// The names after the standard columns (what HistoryWriter's constructor takes).
   std::vector<std::string> extra_names() const;
   /// The wall's thickness measure (analysis/wall_thickness.hpp), or null when the case has no
-  /// wall (a cube, a file mesh without `thickness`) or its mesh no wall_faces.
+  /// wall (a cube, a file mesh without `thickness`) or its mesh no wall_faces, and for a shell,
+  /// whose faces are one mid-surface (its thickness is ShellOutputs::thickness).
   const WallThickness* wall_thickness() const { return wall_.get(); }
   /// The values of one row, in the order of names(). Throws plisse::Error when a group gives
   /// another count of values than it has names (a programming error, never a user's).

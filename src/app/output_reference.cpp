@@ -96,8 +96,10 @@ const std::vector<OutputEntry> kHistoryAfter = {
      "discretisation; below 1 a nearly incompressible one is compressed"},
     {"strain_energy", "mJ", "always",
      "energy stored in the body, of the modelled part (N mm = mJ)"},
-    {"min_thickness", "mm", "a shell or sheet (the mesh has a wall thickness and wall faces)",
-     "the smallest current wall thickness over the nodes (VTU field `thickness`)"},
+    {"min_thickness", "mm",
+     "a shell or sheet (the mesh has a wall thickness and wall faces), or a shell mesh",
+     "the smallest current wall thickness over the nodes (VTU point field `thickness`); of a "
+     "shell mesh, over its triangles (VTU cell field `thickness`)"},
     {"negative_pivots", "–", "`solver.stability.check`",
      "negative pivots of the tangent's LDLᵀ factorisation at the converged state"},
     {"expected_negative_pivots", "–", "`solver.stability.check`",
@@ -134,8 +136,8 @@ const std::vector<OutputEntry> kSummary = {
     {"interrupted", "–", "always", "true when a signal (Ctrl-C, SIGTERM) stopped the run"},
     {"failure", "–", "the run did not complete", "why the run stopped early"},
     {"nodes", "–", "always", "mesh nodes (corner and edge nodes)"},
-    {"elements", "–", "always", "tetrahedra"},
-    {"element", "–", "always", "the element family: `mini` or `taylor-hood`"},
+    {"elements", "–", "always", "tetrahedra, or the triangles of a shell mesh"},
+    {"element", "–", "always", "the element family: `mini`, `taylor-hood` or `shell`"},
     {"dofs", "–", "always", "all unknowns, constrained ones included"},
     {"free_dofs", "–", "always", "the unknowns solved for (the size of the linear systems)"},
     {"pressure_dofs", "–", "always", "free pressure unknowns"},
@@ -281,7 +283,8 @@ const std::vector<OutputEntry> kVtuPoint = {
      "units of the load parameter t, so not a physical speed)"},
     {"pressure", "MPa", "always",
      "the pressure unknown p, positive in compression (σ = −p I + the isochoric part); on a "
-     "Taylor-Hood mesh's edge nodes the mean of the edge's corners"},
+     "Taylor-Hood mesh's edge nodes the mean of the edge's corners; 0 on a shell, which has no "
+     "pressure unknown (its cell field `pressure`)"},
     {"reaction", "N", "always",
      "the force the constraints exert on the body at each node (3 components): zero on the free "
      "components, the nodal reaction on the prescribed ones; summed over a surface it is "
@@ -297,12 +300,15 @@ const std::vector<OutputEntry> kVtuPoint = {
 const std::vector<OutputEntry> kVtuCell = {
     {"cauchy_stress", "MPa", "always",
      "the element's volume average of the Cauchy stress σ, 6 components xx, yy, zz, xy, yz, xz, "
-     "tension positive"},
+     "tension positive; of a shell, its average through the thickness"},
     {"von_mises", "MPa", "always", "√(3/2 dev σ̄ : dev σ̄) of that average"},
-    {"J", "–", "always", "the element's volume average of det F"},
+    {"J", "–", "always",
+     "the element's volume average of det F (1 on a shell: exactly "
+     "incompressible)"},
     {"principal_stretches", "–", "always",
      "λ1 ≥ λ2 ≥ λ3, the square roots of the eigenvalues of C = Fᵀ F of the element's average F "
-     "(3 components); on a membrane the smallest is usually the through-thickness stretch"},
+     "(3 components); on a membrane the smallest is usually the through-thickness stretch; of a "
+     "shell, the F of its mid-surface"},
     {"principal_stresses", "MPa", "always",
      "σ1 ≥ σ2 ≥ σ3, the eigenvalues of the element's average Cauchy stress (3 components), "
      "tension positive"},
@@ -312,6 +318,39 @@ const std::vector<OutputEntry> kVtuCell = {
     {"wrinkle_state", "–", "`output.wrinkles.rings_deg`",
      "the tension-field state of the element's through-thickness column: 0 taut, 1 wrinkled, "
      "2 slack"},
+    {"pressure", "MPa", "a shell mesh",
+     "−tr σ̄ / 3 of the stress averaged through the thickness, positive in compression: the "
+     "pressure that the exactly incompressible plane stress eliminated (a solid element's "
+     "pressure field for the isotropic models)"},
+    {"thickness", "mm", "a shell mesh",
+     "the current thickness t λ3 of the mid-surface, λ3 = 1/(λ1 λ2) its thickness stretch"},
+    {"membrane_force", "N/mm", "a shell mesh",
+     "the membrane force per unit current length N = ∫ σ dz over the current thickness, a "
+     "symmetric tensor tangent to the deformed mid-surface in the global axes (6 components as "
+     "`cauchy_stress`), tension positive: N · m is the force per length on a cut of unit "
+     "normal m in the surface; t λ3 σ on a flat sheet in a homogeneous stretch"},
+    {"bending_moment", "N", "a shell mesh",
+     "the bending moment per unit current length M = ∫ σ z dz, z the current distance from the "
+     "mid-surface towards the top face (6 components as `cauchy_stress`; N mm/mm): positive where "
+     "the top face is in tension; (μ t³/6)(κ + tr κ I) with κ = `curvature_change` when an "
+     "incompressible sheet bends a little, of size D/R across a cylinder of radius R, D = μ t³/3"},
+    {"curvature_change", "1/mm", "a shell mesh",
+     "κ = B − b, the reference curvature minus the current one (docs/theory/shell.md, KL7), as "
+     "a symmetric tensor in the global axes of the reference triangle's plane (6 components as "
+     "`cauchy_stress`); its nonzero eigenvalues are the principal changes of curvature, "
+     "negative where the surface curves further towards the top face"},
+    {"cauchy_stress_bottom", "MPa", "a shell mesh",
+     "the Cauchy stress at the bottom face of the shell (6 components as `cauchy_stress`): the "
+     "face the triangles' normals point away from (a generated shell's `inner` or `bottom`)"},
+    {"cauchy_stress_middle", "MPa", "a shell mesh", "the Cauchy stress at the mid-surface"},
+    {"cauchy_stress_top", "MPa", "a shell mesh",
+     "the Cauchy stress at the top face, the one the triangles' normals point out of (`outer`, "
+     "`top`)"},
+    {"principal_stretches_bottom", "–", "a shell mesh",
+     "λ1 ≥ λ2 ≥ λ3 at the bottom face (3 components), λ3 the thickness stretch there"},
+    {"principal_stretches_middle", "–", "a shell mesh",
+     "the principal stretches at the mid-surface"},
+    {"principal_stretches_top", "–", "a shell mesh", "the principal stretches at the top face"},
 };
 
 /// The literal characters of a pattern (its length without the `<...>` parts).

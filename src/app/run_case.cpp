@@ -161,9 +161,10 @@ void log_input(RunLog& log, const RunContext& run, const RunOutput& out, const R
   for (const auto& o : run.options.overrides) log.info("  --set " + o);
   char line[256];
   std::snprintf(line, sizeof line,
-                "mesh: %d nodes, %d tetrahedra (%s); unknowns: %d (%d pressure), %zu constrained",
-                mesh.n_nodes(), mesh.n_tets(), to_string(model.element_family()).c_str(),
-                model.n_free(), model.dofs().n_free_pressure(), solver.n_constrained);
+                "mesh: %d nodes, %d %s (%s); unknowns: %d (%d pressure), %zu constrained",
+                mesh.n_nodes(), model.n_elements(), mesh.is_shell() ? "triangles" : "tetrahedra",
+                to_string(model.element_family()).c_str(), model.n_free(),
+                model.dofs().n_free_pressure(), solver.n_constrained);
   log.info(line);
   log.info("threads: " + run.session.threads());
   log.info(
@@ -186,7 +187,7 @@ void log_input(RunLog& log, const RunContext& run, const RunOutput& out, const R
 void log_distribution(RunLog& log, const MixedModel& model) {
   if (model.n_ranks() == 1) return;
   // Each rank evaluates the elements touching its nodes: the cut elements twice.
-  const int owned = model.n_owned(), n_tets = model.mesh().n_tets();
+  const int owned = model.n_owned(), n_elements = model.n_elements();
   int most = owned, fewest = owned, evaluated = static_cast<int>(model.local_elements().size());
   PLISSE_PETSC(MPI_Allreduce(MPI_IN_PLACE, &most, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD));
   PLISSE_PETSC(MPI_Allreduce(MPI_IN_PLACE, &fewest, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD));
@@ -195,8 +196,8 @@ void log_distribution(RunLog& log, const MixedModel& model) {
   std::snprintf(line, sizeof line,
                 "distributed over %d ranks: %d to %d unknowns per rank; %d element "
                 "evaluations per assembly for %d elements (+%.1f %%)",
-                model.n_ranks(), fewest, most, evaluated, n_tets,
-                100.0 * (evaluated - n_tets) / std::max(1, n_tets));
+                model.n_ranks(), fewest, most, evaluated, n_elements,
+                100.0 * (evaluated - n_elements) / std::max(1, n_elements));
   log.info(line);
 }
 

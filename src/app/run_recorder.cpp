@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "app/output_reference.hpp"
+#include "app/shell_fields.hpp"
 #include "core/wall_clock.hpp"
 #include "element/element_fields.hpp"
 #include "output/json_file.hpp"
@@ -44,9 +45,11 @@ VtuField mode_field(const Mesh& mesh, const Eigenmode& mode, int k) {
   return f;
 }
 
-/// Point and cell fields of the contract for one converged state (`fields`: its element fields).
+/// Point and cell fields of the contract for one converged state (`fields`: its element fields;
+/// `shell`: a shell's outputs, empty for solid elements, whose cell fields it adds).
 void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model,
-                    const std::vector<ElementFields>& fields, const WallThickness* wall,
+                    const std::vector<ElementFields>& fields,
+                    const std::vector<shell::ShellOutputs>& shell, const WallThickness* wall,
                     const std::vector<double>& previous_state, double dt,
                     const std::vector<VtuField>& extra_point_fields,
                     const std::vector<VtuField>& extra_cell_fields) {
@@ -65,7 +68,7 @@ void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model
       if (c.output.deformed) points[v][k] += u;
     }
   }
-  const int n_cells = mesh.n_tets();
+  const int n_cells = n_mesh_cells(mesh);
   std::vector<Mat3d> cauchy(n_cells);
   std::vector<double> von_mises(n_cells), jacobian(n_cells);
   VtuField stretches{"principal_stretches", 3, std::vector<double>(3 * n_cells)};
@@ -88,6 +91,10 @@ void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model
   std::vector<VtuField> cell_fields = {make_symmetric_tensor_field("cauchy_stress", cauchy),
                                        make_scalar_field("von_mises", von_mises),
                                        make_scalar_field("J", jacobian), stretches, stresses};
+  if (mesh.is_shell()) {
+    const std::vector<VtuField> shell_fields = shell_cell_fields(fields, shell);
+    cell_fields.insert(cell_fields.end(), shell_fields.begin(), shell_fields.end());
+  }
   cell_fields.insert(cell_fields.end(), extra_cell_fields.begin(), extra_cell_fields.end());
   for (const VtuField& f : point_fields) require_output_entry(OutputTable::vtu_point, f.name);
   for (const VtuField& f : cell_fields) require_output_entry(OutputTable::vtu_cell, f.name);
@@ -149,7 +156,7 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
   }
   if (!c.regions.empty()) {
     // 0 the case's material, k the k-th region with a material, -1 a rigid region.
-    material_field_.assign(static_cast<std::size_t>(model.mesh().n_tets()), 0.0);
+    material_field_.assign(static_cast<std::size_t>(n_mesh_cells(model.mesh())), 0.0);
     int k = 0;
     for (const Region& r : c.regions) {
       const double value = r.rigid ? -1.0 : double(++k);
@@ -187,6 +194,7 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
 
 void RunRecorder::record_initial_state() {
   fields_ = model_.element_fields();
+  shell_outputs_ = model_.shell_outputs();
   if (meter_) last_wrinkles_ = meter_->evaluate(model_, fields_);
   StepInfo initial;
   initial.time = model_.time();
@@ -198,10 +206,12 @@ void RunRecorder::record_initial_state() {
 void RunRecorder::record(const StepInfo& info) {
   const auto t_out = WallClock::now();
   fields_ = model_.element_fields();
+  shell_outputs_ = model_.shell_outputs();
   const BodyAverages averages = model_.averages(fields_);
   if (meter_) last_wrinkles_ = meter_->evaluate(model_, fields_);
   const std::vector<double> row =
-      columns_.row({info, model_, fields_, averages, last_wrinkles_ ? &*last_wrinkles_ : nullptr});
+      columns_.row({info, model_, fields_, averages, last_wrinkles_ ? &*last_wrinkles_ : nullptr,
+                    model_.mesh().is_shell() ? &shell_outputs_ : nullptr});
   on_every_rank_alike([&] {
     if (history_) history_->add_row(row);
   });
@@ -276,8 +286,8 @@ void RunRecorder::write_step_files(const StepInfo& info, const std::vector<doubl
   }
   if (!material_field_.empty())
     cell_fields.push_back(make_scalar_field("material", material_field_));
-  write_step_vtu(directory_.directory() / name, case_, model_, fields_, columns_.wall_thickness(),
-                 step_start, info.dt, point_fields, cell_fields);
+  write_step_vtu(directory_.directory() / name, case_, model_, fields_, shell_outputs_,
+                 columns_.wall_thickness(), step_start, info.dt, point_fields, cell_fields);
   on_every_rank_alike([&] {
     if (pvd_) pvd_->add(info.time, name);
     if (spectrum_ && last_wrinkles_ && info.step > 0)
@@ -347,7 +357,7 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
   summary["interrupted"] = result.interrupted;
   if (!result.completed) summary["failure"] = result.failure;
   summary["nodes"] = mesh.n_nodes();
-  summary["elements"] = mesh.n_tets();
+  summary["elements"] = model_.n_elements();
   summary["element"] = to_string(model_.element_family());
   summary["dofs"] = model_.dofs().n_dofs();
   summary["free_dofs"] = model_.n_free();

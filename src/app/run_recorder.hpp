@@ -118,6 +118,9 @@ class RunRecorder {
   /// Element fields (stress, J) of the last recorded step: computed once per step for the
   /// history, the wrinkle metrics and the VTU file.
   std::vector<ElementFields> fields_;
+  /// A shell's outputs of the last recorded step (thickness, resultants, faces), for the history
+  /// and the VTU file; empty for solid elements.
+  std::vector<shell::ShellOutputs> shell_outputs_;
   std::vector<double> previous_state_;   ///< state at the end of the last recorded step
   std::vector<double> last_step_start_;  ///< state at the start of the last recorded step
   std::optional<WrinkleMeter::Result> last_wrinkles_;
