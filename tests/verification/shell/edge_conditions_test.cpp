@@ -18,18 +18,27 @@
 //
 // The meshes cut every cell along the same diagonal. On cells cut along alternating diagonals,
 // with or without distortion, the element's bending does not converge to these values yet
-// (docs/theory/shell.md, section 8, has the measurements); the edge conditions are what this
-// test checks, on meshes where the element's interior is right.
+// (docs/theory/shell.md, section 8): the strip comes out about 1.56 times too soft, and the tests
+// below measure that, and its cause, so that it cannot change unnoticed. A curvature that is
+// linear in the nodal positions converges on a mesh when it passes two patch tests on it: it is
+// exact for every quadratic (the quadratic fit of KL3a is, on any patch), and a constant moment
+// does no work on a node inside the mesh, which holds when the two elements of a side use the
+// same gradient on it (KL3 and the BST's mean of the two triangles' gradients do, KL3a does not).
+// On a 6-node patch only KL3a is exact, so on alternating or distorted cells no 6-node curvature
+// passes both; the mean of the two elements' fits of a side, on a 12-node stencil, does.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "element/shell_geometry.hpp"
 #include "material/registry.hpp"
 #include "mesh/shell_surface.hpp"
 #include "physics/dirichlet.hpp"
@@ -46,20 +55,50 @@ constexpr double kWidth = 10.0;     // W [mm]
 constexpr double kThickness = 1.0;  // t [mm]
 constexpr double kRigidity = 2.0 * kC1 * kThickness * kThickness * kThickness / 3.0;  // D [N mm]
 
-/// The strip [0, length] x [0, W] in z = 0, nx x ny cells each cut into two triangles along the
-/// diagonal from (x, y) to (x + h, y + h), normals +z. Edge tags `left` (x = 0), `right` (x =
-/// length), `front` (y = 0), `back` (y = W); surface tag `bottom` (the -1 face: a pressure on it
-/// pushes along +z).
-Mesh strip(double length, int nx, int ny) {
+/// How the strip's cells are cut: all along the diagonal from (x, y) to (x + h, y + h); along
+/// alternating diagonals (cell (i, j) along the other one when i + j is odd); or alternating with
+/// every node off the strip's edges moved in the plane by up to 15 % of the cell's sides (the
+/// nodes at mid-span only across the strip, so that the deflection there is read at x = L/2).
+enum class Cells { same_diagonal, alternating, distorted };
+
+/// A number in [-1, 1] that depends only on (i, j): the distortion is the same on every platform
+/// (std:: distributions are not).
+double pseudo_random(int i, int j, int which) {
+  std::uint64_t z = 0x9E3779B97F4A7C15ULL *
+                    static_cast<std::uint64_t>(i * 7919 + j * 104729 + which * 15485863 + 1);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  z ^= z >> 31;
+  return 2.0 * static_cast<double>(z >> 11) / static_cast<double>(1ULL << 53) - 1.0;
+}
+
+/// The strip [0, length] x [0, W] in z = 0, nx x ny cells each cut into two triangles as `cells`
+/// says, normals +z. Edge tags `left` (x = 0), `right` (x = length), `front` (y = 0), `back`
+/// (y = W); surface tag `bottom` (the -1 face: a pressure on it pushes along +z).
+Mesh strip(double length, int nx, int ny, Cells cells) {
   Mesh mesh;
   const auto node = [&](int i, int j) { return i * (ny + 1) + j; };
+  const double hx = length / nx, hy = kWidth / ny;
   for (int i = 0; i <= nx; ++i)
-    for (int j = 0; j <= ny; ++j) mesh.nodes.emplace_back(length * i / nx, kWidth * j / ny, 0.0);
+    for (int j = 0; j <= ny; ++j) {
+      Vec3d X(hx * i, hy * j, 0.0);
+      const bool inner = i > 0 && i < nx && j > 0 && j < ny;
+      if (cells == Cells::distorted && inner) {
+        if (std::abs(X.x() - kLength / 2.0) > 1e-9) X.x() += 0.15 * hx * pseudo_random(i, j, 0);
+        X.y() += 0.15 * hy * pseudo_random(i, j, 1);
+      }
+      mesh.nodes.push_back(X);
+    }
   for (int i = 0; i < nx; ++i)
     for (int j = 0; j < ny; ++j) {
       const int a = node(i, j), b = node(i + 1, j), c = node(i + 1, j + 1), d = node(i, j + 1);
-      mesh.triangles.push_back({a, b, c});
-      mesh.triangles.push_back({a, c, d});
+      if (cells == Cells::same_diagonal || (i + j) % 2 == 0) {
+        mesh.triangles.push_back({a, b, c});
+        mesh.triangles.push_back({a, c, d});
+      } else {
+        mesh.triangles.push_back({a, b, d});
+        mesh.triangles.push_back({b, c, d});
+      }
     }
   for (int k = 0; k < static_cast<int>(mesh.triangles.size()); ++k)
     mesh.surface_tags["bottom"].push_back(k);
@@ -79,6 +118,145 @@ Mesh strip(double length, int nx, int ny) {
   return mesh;
 }
 
+/// Triangle e of a shell mesh as the element sees it (KL1): its six nodes, a missing neighbour
+/// repeating the opposite corner, its reference geometry, and whether it has all three neighbours.
+struct Patch {
+  std::array<int, 6> nodes;
+  shell::ShellGeometry geometry;
+  bool inner = false;
+};
+
+Patch patch_of(const Mesh& mesh, std::size_t e) {
+  Patch patch;
+  shell::PatchPositions X;
+  shell::NeighbourFlags has_neighbour;
+  for (int i = 0; i < 3; ++i) {
+    patch.nodes[i] = mesh.triangles[e][i];
+    const int across = mesh.triangle_neighbours[e][i];
+    has_neighbour[i] = across >= 0;
+    patch.nodes[3 + i] = has_neighbour[i] ? across : patch.nodes[i];
+  }
+  for (int a = 0; a < 6; ++a) X[a] = mesh.nodes[patch.nodes[a]];
+  patch.geometry = shell::compute_shell_geometry(X, has_neighbour);
+  patch.inner = has_neighbour[0] && has_neighbour[1] && has_neighbour[2];
+  return patch;
+}
+
+/// The two conditions that a curvature linear in the nodal positions must meet for the bending
+/// of a flat mesh to converge (shell.md, section 8), measured on the inner elements of a strip:
+/// - `exactness`: the largest error of an element's curvature (KL6) of the quadratic
+///   w = (x² + 0.6 x y - 0.4 y²)/2 [1/mm] lifted along z, against its Hessian, relative to it;
+/// - `continuity`: the constant-moment patch test, Σ_e A_e ∂b^e/∂w_n = 0 for every node n whose
+///   elements all have their three neighbours (the discrete divergence theorem: a constant moment
+///   does no work on a node inside the mesh), the largest |Σ| relative to one element's A_e
+///   |∂b/∂w_n|.
+struct PatchTestErrors {
+  double exactness = 0.0;
+  double continuity = 0.0;
+};
+
+PatchTestErrors patch_test_errors(const Mesh& mesh) {
+  const int n_nodes = mesh.n_nodes();
+  std::vector<Vec3d> sum(static_cast<std::size_t>(n_nodes), Vec3d::Zero());
+  std::vector<bool> outer(static_cast<std::size_t>(n_nodes), false);
+  double scale = 0.0;
+  PatchTestErrors errors;
+  const Mat3d H = (Mat3d() << 1.0, 0.3, 0.0, 0.3, -0.4, 0.0, 0.0, 0.0, 0.0).finished();
+  for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
+    const Patch patch = patch_of(mesh, e);
+    const std::array<int, 6>& nodes = patch.nodes;
+    const shell::ShellGeometry& g = patch.geometry;
+    const bool inner = patch.inner;
+    const Vec3d e1 = g.frame.col(0), e2 = g.frame.col(1);
+    for (int a = 0; a < 6; ++a) {
+      // ∂b/∂w_a in the element's frame (e1, e2), turned into the mesh's (x, y).
+      const Mat3d K = g.curvature[0](a) * e1 * e1.transpose() +
+                      g.curvature[1](a) * e2 * e2.transpose() +
+                      g.curvature[2](a) * (e1 * e2.transpose() + e2 * e1.transpose());
+      const Vec3d k(K(0, 0), K(1, 1), K(0, 1));
+      sum[nodes[a]] += g.area * k;
+      if (!inner) outer[nodes[a]] = true;
+      scale = std::max(scale, g.area * k.norm());
+    }
+    if (!inner) continue;
+    Vec3d b = Vec3d::Zero();
+    for (int a = 0; a < 6; ++a) {
+      const Vec3d& p = mesh.nodes[nodes[a]];
+      b += Vec3d(g.curvature[0](a), g.curvature[1](a), g.curvature[2](a)) * 0.5 * p.dot(H * p);
+    }
+    const Vec3d exact(e1.dot(H * e1), e2.dot(H * e2), e1.dot(H * e2));
+    errors.exactness = std::max(errors.exactness, (b - exact).norm() / H.norm());
+  }
+  for (int n = 0; n < n_nodes; ++n)
+    if (!outer[n]) errors.continuity = std::max(errors.continuity, sum[n].norm() / scale);
+  return errors;
+}
+
+/// The same two errors for side gradients that are the mean of the quadratic fits (KL3a) of the
+/// two elements that share the side: a stencil of up to 12 nodes (the triangle, the three across
+/// its sides and the six across theirs). Each side's gradient is then the same for both of its
+/// elements and exact for every quadratic.
+PatchTestErrors averaged_fit_patch_test_errors(const Mesh& mesh) {
+  const int n_nodes = mesh.n_nodes();
+  const int n_triangles = static_cast<int>(mesh.triangles.size());
+  std::vector<Patch> patches;
+  std::map<std::pair<int, int>, std::pair<int, int>> side_of;  // directed side -> (triangle, i)
+  for (int e = 0; e < n_triangles; ++e) {
+    patches.push_back(patch_of(mesh, static_cast<std::size_t>(e)));
+    const std::array<int, 6>& nodes = patches.back().nodes;
+    for (int i = 0; i < 3; ++i) side_of[{nodes[(i + 1) % 3], nodes[(i + 2) % 3]}] = {e, i};
+  }
+  std::vector<Vec3d> sum(static_cast<std::size_t>(n_nodes), Vec3d::Zero());
+  std::vector<bool> outer(static_cast<std::size_t>(n_nodes), false);
+  double scale = 0.0;
+  PatchTestErrors errors;
+  const Mat3d H = (Mat3d() << 1.0, 0.3, 0.0, 0.3, -0.4, 0.0, 0.0, 0.0, 0.0).finished();
+  for (int e = 0; e < n_triangles; ++e) {
+    const std::array<int, 6>& nodes = patches[e].nodes;
+    bool usable = patches[e].inner;
+    std::map<int, Mat3d> K;  // node -> ∂b/∂w_n as a tensor in (x, y)
+    const shell::ShellGeometry& g = patches[e].geometry;
+    for (int i = 0; i < 3 && usable; ++i) {
+      const int j = nodes[(i + 1) % 3], k = nodes[(i + 2) % 3];
+      const auto other = side_of.find({k, j});
+      if (other == side_of.end() || !patches[other->second.first].inner) {
+        usable = false;
+        break;
+      }
+      const Vec3d grad_L = g.frame.col(2).cross(mesh.nodes[k] - mesh.nodes[j]) / (2.0 * g.area);
+      for (const auto& [t, side] : {std::pair<int, int>{e, i}, other->second}) {
+        const shell::ShellGeometry& h = patches[t].geometry;
+        for (int a = 0; a < 6; ++a) {
+          const Vec3d c =
+              0.5 * (h.side[side](a, 0) * h.frame.col(0) + h.side[side](a, 1) * h.frame.col(1));
+          Mat3d& Ka = K.try_emplace(patches[t].nodes[a], Mat3d::Zero()).first->second;
+          Ka -= grad_L * c.transpose() + c * grad_L.transpose();
+        }
+      }
+    }
+    if (!usable) {
+      for (int a = 0; a < 6; ++a) outer[nodes[a]] = true;
+      for (int i = 0; i < 3; ++i) {
+        const auto other = side_of.find({nodes[(i + 2) % 3], nodes[(i + 1) % 3]});
+        if (other == side_of.end()) continue;
+        for (const int n : patches[other->second.first].nodes) outer[n] = true;
+      }
+      continue;
+    }
+    Mat3d b = Mat3d::Zero();
+    for (const auto& [n, Kn] : K) {
+      const Vec3d& p = mesh.nodes[n];
+      b += Kn * 0.5 * p.dot(H * p);
+      sum[n] += g.area * Vec3d(Kn(0, 0), Kn(1, 1), Kn(0, 1));
+      scale = std::max(scale, g.area * Kn.norm());
+    }
+    errors.exactness = std::max(errors.exactness, (b - H).norm() / H.norm());
+  }
+  for (int n = 0; n < n_nodes; ++n)
+    if (!outer[n]) errors.continuity = std::max(errors.continuity, sum[n].norm() / scale);
+  return errors;
+}
+
 /// clamped_and_symmetric: the half strip, clamped at x = 0 and symmetric at x = L/2 (u_x = 0 and
 /// the mirrored side of KL8a); clamped_and_plane_held: the same with u_x = 0 only, the side at
 /// x = L/2 left free to turn (KL8): what the half strip gives without the mirror.
@@ -88,9 +266,9 @@ enum class Ends { clamped, hinged, clamped_and_symmetric, clamped_and_plane_held
 /// along L (nx / 5 across, at least 2: cells of 2:1) with the given ends under the pressure q
 /// [MPa]; for clamped_and_symmetric the half strip of nx / 2 cells, clamped at x = 0, symmetric at
 /// x = L/2.
-double mid_span_deflection(Ends ends, int nx, double q) {
+double mid_span_deflection(Ends ends, int nx, double q, Cells cells = Cells::same_diagonal) {
   const bool half = ends == Ends::clamped_and_symmetric || ends == Ends::clamped_and_plane_held;
-  Mesh mesh = strip(half ? kLength / 2.0 : kLength, half ? nx / 2 : nx, std::max(2, nx / 5));
+  Mesh mesh = strip(half ? kLength / 2.0 : kLength, half ? nx / 2 : nx, std::max(2, nx / 5), cells);
   ConstraintSet set;
   const SurfaceRef left{"left", {}}, right{"right", {}}, front{"front", {}}, back{"back", {}};
   hold_in_plane(mesh, front, set);
@@ -135,13 +313,14 @@ double mid_span_deflection(Ends ends, int nx, double q) {
 
 /// The relative errors of the mid-span deflection against `exact` [mm] on nx = 10, 20, 40, 80,
 /// printed with the observed orders.
-std::vector<double> errors_under_refinement(Ends ends, const char* what, double q, double exact) {
+std::vector<double> errors_under_refinement(Ends ends, const char* what, double q, double exact,
+                                            Cells cells = Cells::same_diagonal) {
   std::vector<double> errors;
   for (const int nx : {10, 20, 40, 80}) {
-    const double w = mid_span_deflection(ends, nx, q);
+    const double w = mid_span_deflection(ends, nx, q, cells);
     errors.push_back(std::abs(w - exact) / exact);
-    std::printf("%s, nx = %2d: w = %.6e mm, exact %.6e mm, relative error %.2e", what, nx, w, exact,
-                errors.back());
+    std::printf("%s, nx = %2d: w = %.6e mm, exact %.6e mm, w/exact %.4f, relative error %.2e", what,
+                nx, w, exact, w / exact, errors.back());
     if (errors.size() > 1)
       std::printf(", order %.2f", std::log2(errors[errors.size() - 2] / errors.back()));
     std::printf("\n");
@@ -186,6 +365,80 @@ TEST(ShellEdgeConditions, HalfStripWithASymmetryEdgeConvergesToTheClampedStrip) 
   std::printf("half strip with the plane's side free to turn: w = %.6e mm (%.4f of the clamped)\n",
               free_side, free_side / exact);
   EXPECT_NEAR(free_side / exact, 3.0, 0.05);
+}
+
+TEST(ShellEdgeConditions, TheFitIsExactOnEveryMeshButItsSideGradientsAreSharedOnlyOnOneDiagonal) {
+  for (const Cells cells : {Cells::same_diagonal, Cells::alternating, Cells::distorted}) {
+    const PatchTestErrors e = patch_test_errors(strip(kLength, 40, 8, cells));
+    std::printf("cells %d: exactness %.2e, continuity %.2e\n", static_cast<int>(cells), e.exactness,
+                e.continuity);
+    // Round-off of the 6 x 6 fit: measured 1.9e-12 to 2.7e-12.
+    EXPECT_LT(e.exactness, 1e-10);
+    if (cells == Cells::same_diagonal) {
+      EXPECT_LT(e.continuity, 1e-13);  // measured 4.7e-16: every patch is mirrored, KL3a = KL3
+    } else {
+      // The defect of section 8, measured 3.9 (alternating) and 3.2 (distorted): the two fits of
+      // a side disagree about a field that alternates from node to node.
+      EXPECT_GT(e.continuity, 1.0);
+    }
+  }
+}
+
+TEST(ShellEdgeConditions, TheMeanOfTheTwoFitsOfASidePassesBothPatchTestsOnEveryMesh) {
+  for (const Cells cells : {Cells::same_diagonal, Cells::alternating, Cells::distorted}) {
+    const PatchTestErrors e = averaged_fit_patch_test_errors(strip(kLength, 40, 8, cells));
+    std::printf("cells %d, mean of the two fits: exactness %.2e, continuity %.2e\n",
+                static_cast<int>(cells), e.exactness, e.continuity);
+    EXPECT_LT(e.exactness, 1e-10);   // measured 1.1e-12 to 4.3e-12
+    EXPECT_LT(e.continuity, 1e-13);  // measured 1.0e-16 to 4.5e-16
+  }
+}
+
+/// The strip on alternating or distorted cells: the hinged strip about 1.56 times too soft at
+/// every nx, the clamped one between 1.41 and 1.53 times and moving away (section 8). These bounds
+/// record the defect; a side gradient that passes both patch tests turns them into the convergence
+/// of the test below.
+void expect_the_known_softening(Cells cells, const char* what) {
+  const double q = kClampedLoad / 5.0;
+  const std::string hinged = std::string(what) + ", hinged";
+  const std::string clamped = std::string(what) + ", clamped";
+  for (const double e :
+       errors_under_refinement(Ends::hinged, hinged.c_str(), q,
+                               5.0 * q * std::pow(kLength, 4) / (384.0 * kRigidity), cells)) {
+    EXPECT_GT(e, 0.55);  // measured 0.559 to 0.572
+    EXPECT_LT(e, 0.58);
+  }
+  for (const double e :
+       errors_under_refinement(Ends::clamped, clamped.c_str(), kClampedLoad,
+                               kClampedLoad * std::pow(kLength, 4) / (384.0 * kRigidity), cells)) {
+    EXPECT_GT(e, 0.40);  // measured 0.411 to 0.531
+    EXPECT_LT(e, 0.55);
+  }
+}
+
+TEST(ShellEdgeConditions, StripOnAlternatingCellsIsTooSoftByTheKnownFactor) {
+  expect_the_known_softening(Cells::alternating, "alternating");
+}
+
+TEST(ShellEdgeConditions, StripOnDistortedCellsIsTooSoftByTheKnownFactor) {
+  expect_the_known_softening(Cells::distorted, "distorted");
+}
+
+// The target of section 8, disabled until it holds (--gtest_also_run_disabled_tests runs it):
+// on alternating and distorted cells the hinged and clamped strips converge as on one diagonal.
+TEST(ShellEdgeConditions, DISABLED_StripConvergesOnAlternatingAndDistortedCells) {
+  const double q = kClampedLoad / 5.0;
+  for (const Cells cells : {Cells::alternating, Cells::distorted}) {
+    const std::vector<double> h = errors_under_refinement(
+        Ends::hinged, "hinged", q, 5.0 * q * std::pow(kLength, 4) / (384.0 * kRigidity), cells);
+    EXPECT_LT(h.back(), 1e-3);
+    EXPECT_GT(std::log2(h[2] / h[3]), 1.5);
+    const std::vector<double> c =
+        errors_under_refinement(Ends::clamped, "clamped", kClampedLoad,
+                                kClampedLoad * std::pow(kLength, 4) / (384.0 * kRigidity), cells);
+    EXPECT_LT(c.back(), 2e-3);
+    EXPECT_GT(std::log2(c[2] / c[3]), 1.5);
+  }
 }
 
 }  // namespace
