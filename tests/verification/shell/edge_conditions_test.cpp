@@ -18,9 +18,9 @@
 //
 // The meshes cut every cell along the same diagonal. On cells cut along alternating diagonals,
 // with or without distortion, the element's bending does not converge to these values yet
-// (docs/theory/shell.md, section 8): the strip comes out about 1.56 times too soft, and the tests
-// below measure that, and its cause, so that it cannot change unnoticed. A curvature that is
-// linear in the nodal positions converges on a mesh when it passes two patch tests on it: it is
+// (docs/theory/shell.md, KL6a and section 8): the strip comes out about 1.56 times too soft, and
+// the tests below measure that, and its cause, so that it cannot change unnoticed. A curvature that
+// is linear in the nodal positions converges on a mesh when it passes two patch tests on it: it is
 // exact for every quadratic (the quadratic fit of KL3a is, on any patch), and a constant moment
 // does no work on a node inside the mesh, which holds when the two elements of a side use the
 // same gradient on it (KL3 and the BST's mean of the two triangles' gradients do, KL3a does not).
@@ -143,7 +143,7 @@ Patch patch_of(const Mesh& mesh, std::size_t e) {
 }
 
 /// The two conditions that a curvature linear in the nodal positions must meet for the bending
-/// of a flat mesh to converge (shell.md, section 8), measured on the inner elements of a strip:
+/// of a flat mesh to converge (shell.md, KL6a), measured on the inner elements of a strip:
 /// - `exactness`: the largest error of an element's curvature (KL6) of the quadratic
 ///   w = (x² + 0.6 x y - 0.4 y²)/2 [1/mm] lifted along z, against its Hessian, relative to it;
 /// - `continuity`: the constant-moment patch test, Σ_e A_e ∂b^e/∂w_n = 0 for every node n whose
