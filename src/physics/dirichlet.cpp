@@ -64,14 +64,15 @@ int shell_edge_plane_axis(const Mesh& mesh, const std::vector<int>& edges, doubl
   double extent = 0.0;
   for (int v : nodes) extent = std::max(extent, mesh.nodes[v].cwiseAbs().maxCoeff());
   // The unit normals of the triangles with a side on the edges.
+  const std::vector<std::pair<int, int>> on_edges = sides_on_edges(mesh, edges);
+  const std::set<std::pair<int, int>> sides(on_edges.begin(), on_edges.end());
   std::vector<Vec3d> normals;
-  for (const auto& side : sides_on_edges(mesh, edges))
-    for (const auto& tri : mesh.triangles)
-      for (int i = 0; i < 3; ++i)
-        if (tri[(i + 1) % 3] == side.first && tri[(i + 2) % 3] == side.second) {
-          const Vec3d& x0 = mesh.nodes[tri[0]];
-          normals.push_back((mesh.nodes[tri[1]] - x0).cross(mesh.nodes[tri[2]] - x0).normalized());
-        }
+  for (const auto& tri : mesh.triangles)
+    for (int i = 0; i < 3; ++i)
+      if (sides.count({tri[(i + 1) % 3], tri[(i + 2) % 3]})) {
+        const Vec3d& x0 = mesh.nodes[tri[0]];
+        normals.push_back((mesh.nodes[tri[1]] - x0).cross(mesh.nodes[tri[2]] - x0).normalized());
+      }
   for (int k = 0; k < 3; ++k) {
     const double level = mesh.nodes[*nodes.begin()][k];
     const bool in_plane = std::all_of(nodes.begin(), nodes.end(), [&](int v) {
