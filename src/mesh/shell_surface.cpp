@@ -50,43 +50,38 @@ void make_shell_surface(Mesh& mesh, double thickness) {
   mesh.shell_thickness.assign(mesh.nodes.size(), thickness);
 }
 
-std::vector<std::pair<int, int>> sides_on_edges(const Mesh& mesh, const std::vector<int>& edges) {
+std::vector<EdgeSide> sides_on_edges(const Mesh& mesh, const std::vector<int>& edges) {
   std::set<std::pair<int, int>> wanted;  // undirected: the smaller node first
   for (const int k : edges) {
     const auto& edge = mesh.edges[static_cast<std::size_t>(k)];
     wanted.emplace(std::min(edge[0], edge[1]), std::max(edge[0], edge[1]));
   }
-  std::vector<std::pair<int, int>> out;
+  std::vector<EdgeSide> out;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (int i = 0; i < 3; ++i) {
       if (mesh.triangle_neighbours[t][i] >= 0) continue;
       const int a = mesh.triangles[t][(i + 1) % 3], b = mesh.triangles[t][(i + 2) % 3];
-      if (wanted.count({std::min(a, b), std::max(a, b)})) out.emplace_back(a, b);
+      if (wanted.count({std::min(a, b), std::max(a, b)}))
+        out.push_back({static_cast<int>(t), {a, b}});
     }
   return out;
 }
 
 void clamp_sides(Mesh& mesh, const std::vector<int>& edges) {
-  // The side's triangle: the one that runs from a to b.
-  std::map<std::pair<int, int>, int> triangle_of;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (int i = 0; i < 3; ++i)
-      triangle_of[{mesh.triangles[t][(i + 1) % 3], mesh.triangles[t][(i + 2) % 3]}] =
-          static_cast<int>(t);
-  for (const auto& side : sides_on_edges(mesh, edges)) {
-    const auto& tri = mesh.triangles[static_cast<std::size_t>(triangle_of.at(side))];
+  for (const EdgeSide& side : sides_on_edges(mesh, edges)) {
+    const auto& tri = mesh.triangles[static_cast<std::size_t>(side.triangle)];
     const Vec3d& x0 = mesh.nodes[tri[0]];
     const Vec3d n = (mesh.nodes[tri[1]] - x0).cross(mesh.nodes[tri[2]] - x0).normalized();
-    SideMirror& m = mesh.side_mirrors[side];
-    m.point = 0.5 * (mesh.nodes[side.first] + mesh.nodes[side.second]);
+    SideMirror& m = mesh.side_mirrors[side.nodes];
+    m.point = 0.5 * (mesh.nodes[side.nodes.first] + mesh.nodes[side.nodes.second]);
     m.map = 2.0 * n * n.transpose() - Mat3d::Identity();
   }
 }
 
 void mirror_sides(Mesh& mesh, const std::vector<int>& edges, int axis, double value) {
   PLISSE_CHECK(axis >= 0 && axis < 3, "mirror plane axis " << axis);
-  for (const auto& side : sides_on_edges(mesh, edges)) {
-    SideMirror& m = mesh.side_mirrors[side];
+  for (const EdgeSide& side : sides_on_edges(mesh, edges)) {
+    SideMirror& m = mesh.side_mirrors[side.nodes];
     m.point = Vec3d::Zero();
     m.point[axis] = value;
     m.map = Mat3d::Identity();

@@ -18,10 +18,16 @@ namespace plisse {
 /// in the same direction: their normals, and a follower pressure on them, would disagree).
 void make_shell_surface(Mesh& mesh, double thickness);
 
+/// A side of a shell triangle on the surface's edge: its triangle and its directed pair of nodes
+/// (corner i + 1, corner i + 2 of the triangle, the key of Mesh::side_mirrors).
+struct EdgeSide {
+  int triangle = 0;
+  std::pair<int, int> nodes;
+};
+
 /// The sides of the shell's triangles that lie on the tagged edges `edges` (indices into
-/// mesh.edges) and have no neighbour, each as its directed pair of nodes (corner i + 1, corner
-/// i + 2 of its triangle, the key of Mesh::side_mirrors). Precondition: mesh.is_shell().
-std::vector<std::pair<int, int>> sides_on_edges(const Mesh& mesh, const std::vector<int>& edges);
+/// mesh.edges) and have no neighbour. Precondition: mesh.is_shell().
+std::vector<EdgeSide> sides_on_edges(const Mesh& mesh, const std::vector<int>& edges);
 
 /// A clamped edge (docs/theory/shell.md, KL8a): every side of `edges` without a neighbour sees
 /// its missing node as the half turn of the opposite corner about the triangle's reference

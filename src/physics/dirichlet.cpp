@@ -17,13 +17,9 @@ int mirror_planes(const std::vector<std::string>& symmetry_surfaces, const Mesh&
   int planes = 0;
   for (const std::string& surface : symmetry_surfaces) {
     if (const std::vector<int>* edges = shell_edge_tag(mesh, surface)) {
+      // The edge lies in its plane: the plane is a mirror plane when the edge reaches x_k = 0.
       const int axis = edges->empty() ? -1 : shell_edge_plane_axis(mesh, *edges, tol);
-      if (axis < 0) continue;
-      const std::set<int> nodes = edge_nodes(mesh, *edges);
-      double extent = 0.0;
-      for (int v : nodes) extent = std::max(extent, mesh.nodes[v].cwiseAbs().maxCoeff());
-      if (std::abs(mesh.nodes[*nodes.begin()][axis]) <= tol * std::max(extent, 1.0))
-        planes |= 1 << axis;
+      if (axis >= 0) planes |= planes_reached(mesh, edge_nodes(mesh, *edges), 1 << axis, tol);
       continue;
     }
     const auto tag = mesh.surface_tags.find(surface);
@@ -64,15 +60,12 @@ int shell_edge_plane_axis(const Mesh& mesh, const std::vector<int>& edges, doubl
   double extent = 0.0;
   for (int v : nodes) extent = std::max(extent, mesh.nodes[v].cwiseAbs().maxCoeff());
   // The unit normals of the triangles with a side on the edges.
-  const std::vector<std::pair<int, int>> on_edges = sides_on_edges(mesh, edges);
-  const std::set<std::pair<int, int>> sides(on_edges.begin(), on_edges.end());
   std::vector<Vec3d> normals;
-  for (const auto& tri : mesh.triangles)
-    for (int i = 0; i < 3; ++i)
-      if (sides.count({tri[(i + 1) % 3], tri[(i + 2) % 3]})) {
-        const Vec3d& x0 = mesh.nodes[tri[0]];
-        normals.push_back((mesh.nodes[tri[1]] - x0).cross(mesh.nodes[tri[2]] - x0).normalized());
-      }
+  for (const EdgeSide& side : sides_on_edges(mesh, edges)) {
+    const auto& tri = mesh.triangles[static_cast<std::size_t>(side.triangle)];
+    const Vec3d& x0 = mesh.nodes[tri[0]];
+    normals.push_back((mesh.nodes[tri[1]] - x0).cross(mesh.nodes[tri[2]] - x0).normalized());
+  }
   for (int k = 0; k < 3; ++k) {
     const double level = mesh.nodes[*nodes.begin()][k];
     const bool in_plane = std::all_of(nodes.begin(), nodes.end(), [&](int v) {
