@@ -13,9 +13,9 @@ namespace {
 constexpr double kMinFitConditioning = 1e-6;
 
 /// Derivatives (∂/∂ξ, ∂/∂η) of the six patch functions of (KL2) at (ξ, η), one row per node.
-SideCoefficients natural_derivatives(double xi, double eta) {
+Eigen::Matrix<double, 6, 2> natural_derivatives(double xi, double eta) {
   const double s = xi + eta;
-  SideCoefficients d;
+  Eigen::Matrix<double, 6, 2> d;
   d.row(0) << -(1.0 - eta), -(1.0 - xi);
   d.row(1) << 1.0 - eta, 1.0 - xi - 2.0 * eta;
   d.row(2) << 1.0 - 2.0 * xi - eta, 1.0 - xi;
@@ -45,27 +45,74 @@ Mat3d triangle_frame(const PatchPositions& X, double& area) {
   return frame;
 }
 
-/// 2-D coordinates of the six nodes in the triangle's plane; a missing neighbour is the mirror
-/// image of the opposite node through its side's midpoint (KL8).
+/// The six points of a quadratic fit (KL3a) and the gradients of that fit at its own three side
+/// midpoints, one 6 × 2 block of coefficients per side.
+using FitPoints = std::array<Vec2d, 6>;
+using FitCoefficients = Eigen::Matrix<double, 6, 2>;
+
+/// X_ghost = X_a + X_b - X_source: the node a missing slot stands for, the mirror image of
+/// `source` through the midpoint of the side (a, b) it lies across (KL8).
+struct Ghost {
+  int a, b, source;
+};
+
+/// The ghost of missing slot n >= 3 (KL8, KL1b): slot 3 + i is the image of corner i through side
+/// i; slot 6 + 2i + w the image of corner i + 1 + w through the side of neighbour i opposite it.
+Ghost ghost_of(int n) {
+  if (n < 6) {
+    const int i = n - 3;
+    return {(i + 1) % 3, (i + 2) % 3, i};
+  }
+  const int i = (n - 6) / 2, w = (n - 6) % 2;
+  const int across = 3 + i, source = (i + 1 + w) % 3, other = (i + 2 - w) % 3;
+  return {across, other, source};
+}
+
+/// The slots of neighbour i's own patch (KL1) in its order: its corners across (3 + i), corner
+/// i + 2, corner i + 1 (counter-clockwise), then the nodes across its sides, so that its side 0
+/// is side i of the triangle.
+std::array<int, 6> neighbour_patch(int i) {
+  const int j = (i + 1) % 3, k = (i + 2) % 3;
+  return {3 + i, k, j, i, outer_slot(i, 1), outer_slot(i, 0)};
+}
+
+/// Whether side i's gradient is the mean of the two elements' fits (KL3b): a node or a mirror
+/// image across it.
+bool has_neighbour_fit(const SlotKinds& slots, int i) { return slots[3 + i] != Slot::missing; }
+
+/// Whether slot n enters the element: the triangle, a node or image across its sides, and the
+/// nodes or images beyond a side that has a neighbour fit.
+bool used_slot(const SlotKinds& slots, int n) {
+  if (n < kTriangleNodes) return true;
+  if (slots[n] == Slot::missing) return false;
+  return n < 6 || has_neighbour_fit(slots, (n - 6) / 2);
+}
+
+/// 2-D coordinates of the 12 slots in the triangle's plane; a missing slot is its ghost (KL8),
+/// an unused one left at zero.
 std::array<Vec2d, kPatchNodes> plane_coordinates(const PatchPositions& X, const Mat3d& frame,
-                                                 const NeighbourFlags& has_neighbour) {
+                                                 const SlotKinds& slots) {
   std::array<Vec2d, kPatchNodes> p;
   for (int n = 0; n < kPatchNodes; ++n) {
-    p[n] = frame.leftCols<2>().transpose() * (X[n] - X[0]);
+    p[n] = used_slot(slots, n) ? Vec2d(frame.leftCols<2>().transpose() * (X[n] - X[0]))
+                               : Vec2d::Zero();
   }
-  for (int i = 0; i < 3; ++i) {
-    if (!has_neighbour[i]) p[3 + i] = p[(i + 1) % 3] + p[(i + 2) % 3] - p[i];
+  // Slots 3 to 5 first: the ghosts beyond a side refer to the node across it.
+  for (int n = kTriangleNodes; n < kPatchNodes; ++n) {
+    if (slots[n] != Slot::missing || (n >= 6 && !has_neighbour_fit(slots, (n - 6) / 2))) continue;
+    const Ghost h = ghost_of(n);
+    p[n] = p[h.a] + p[h.b] - p[h.source];
   }
   return p;
 }
 
-/// The gradient on side i of the isoparametric quadratic patch (KL2): c^i = ∇_ξN (m_i) 𝐉_i⁻¹.
-/// Throws for a singular or folded map.
-SideCoefficients isoparametric_side_coefficients(const std::array<Vec2d, kPatchNodes>& p, int i) {
+/// The gradient on side i of the isoparametric quadratic patch (KL2) of six points in the order
+/// of (KL1): c^i = ∇_ξN (m_i) 𝐉_i⁻¹. Throws for a singular or folded map.
+FitCoefficients isoparametric_side_coefficients(const FitPoints& p, int i) {
   const Vec2d m = side_midpoint(i);
-  const SideCoefficients dN = natural_derivatives(m.x(), m.y());
+  const FitCoefficients dN = natural_derivatives(m.x(), m.y());
   Mat2d J = Mat2d::Zero();  // J(a, b) = ∂X̃_a/∂ξ_b
-  for (int n = 0; n < kPatchNodes; ++n) J += p[n] * dN.row(n);
+  for (int n = 0; n < 6; ++n) J += p[n] * dN.row(n);
   const double det = J.determinant();
   PLISSE_CHECK(std::isfinite(det) && det > 1e-8 * J.squaredNorm(),
                "shell patch: the quadratic map of side " << i << " is singular or folded (det "
@@ -76,39 +123,54 @@ SideCoefficients isoparametric_side_coefficients(const std::array<Vec2d, kPatchN
 /// The gradients on the three sides of the quadratic polynomial in the plane coordinates that
 /// takes the six nodal values (KL3a): exact for every quadratic field on any patch. False when
 /// the six points lie (nearly) on a conic, where that polynomial is not unique.
-bool fitted_side_coefficients(const std::array<Vec2d, kPatchNodes>& p,
-                              std::array<SideCoefficients, 3>& c) {
+bool fitted_side_coefficients(const FitPoints& p, std::array<FitCoefficients, 3>& c) {
   const Vec2d centre = (p[0] + p[1] + p[2]) / 3.0;
   const double scale = (p[1] - p[0]).norm();
   auto scaled = [&](const Vec2d& q) { return Vec2d((q - centre) / scale); };
-  Eigen::Matrix<double, kPatchNodes, kPatchNodes> V;  // row n: (1, x, y, x², xy, y²) at node n
-  for (int n = 0; n < kPatchNodes; ++n) {
+  Eigen::Matrix<double, 6, 6> V;  // row n: (1, x, y, x², xy, y²) at node n
+  for (int n = 0; n < 6; ++n) {
     const Vec2d q = scaled(p[n]);
     V.row(n) << 1.0, q.x(), q.y(), q.x() * q.x(), q.x() * q.y(), q.y() * q.y();
   }
   // The ratio of the extreme singular values, not an LU estimate: the estimate can miss an
   // exactly singular V.
-  const Eigen::Vector<double, kPatchNodes> sv =
-      Eigen::JacobiSVD<Eigen::Matrix<double, kPatchNodes, kPatchNodes>>(V).singularValues();
-  if (!(sv(kPatchNodes - 1) > kMinFitConditioning * sv(0))) return false;
-  const Eigen::Matrix<double, kPatchNodes, kPatchNodes> V_inverse_T =
-      V.partialPivLu().inverse().transpose();
+  const Eigen::Vector<double, 6> sv =
+      Eigen::JacobiSVD<Eigen::Matrix<double, 6, 6>>(V).singularValues();
+  if (!(sv(5) > kMinFitConditioning * sv(0))) return false;
+  const Eigen::Matrix<double, 6, 6> V_inverse_T = V.partialPivLu().inverse().transpose();
   for (int i = 0; i < 3; ++i) {
     const Vec2d m = scaled(0.5 * (p[(i + 1) % 3] + p[(i + 2) % 3]));
-    SideCoefficients dP;  // ∂(1, x, y, x², xy, y²)/∂X_α at the side's midpoint
+    FitCoefficients dP;  // ∂(1, x, y, x², xy, y²)/∂X_α at the side's midpoint
     dP << 0, 0, 1, 0, 0, 1, 2 * m.x(), 0, m.y(), m.x(), 0, 2 * m.y();
     c[i] = V_inverse_T * dP / scale;
   }
   return true;
 }
 
-/// A missing neighbour's coefficients moved onto the nodes its mirror image is made of (KL8).
-void fold_mirror_node(SideCoefficients& c, int missing_side) {
-  const int ghost = 3 + missing_side;
-  c.row((missing_side + 1) % 3) += c.row(ghost);
-  c.row((missing_side + 2) % 3) += c.row(ghost);
-  c.row(missing_side) -= c.row(ghost);
-  c.row(ghost).setZero();
+/// The side gradients of the quadratic through the patch slots `at` (KL3a), or of the
+/// isoparametric map (KL3) when they lie on a conic, scattered onto the 12 slots. Returns
+/// whether the fit was used.
+bool patch_side_coefficients(const std::array<Vec2d, kPatchNodes>& p, const std::array<int, 6>& at,
+                             std::array<SideCoefficients, 3>& c) {
+  FitPoints q;
+  for (int n = 0; n < 6; ++n) q[n] = p[at[n]];
+  std::array<FitCoefficients, 3> fit;
+  const bool fitted = fitted_side_coefficients(q, fit);
+  for (int i = 0; i < 3; ++i) {
+    if (!fitted) fit[i] = isoparametric_side_coefficients(q, i);
+    c[i].setZero();
+    for (int n = 0; n < 6; ++n) c[i].row(at[n]) += fit[i].row(n);
+  }
+  return fitted;
+}
+
+/// A missing slot's coefficients moved onto the slots its ghost is made of (KL8).
+void fold_ghost(SideCoefficients& c, int slot) {
+  const Ghost h = ghost_of(slot);
+  c.row(h.a) += c.row(slot);
+  c.row(h.b) += c.row(slot);
+  c.row(h.source) -= c.row(slot);
+  c.row(slot).setZero();
 }
 
 /// Gradients of the linear shape functions of the triangle, one row per node (KL6).
@@ -139,8 +201,9 @@ std::array<NodeWeights, 3> curvature_weights(const std::array<SideCoefficients, 
 
 }  // namespace
 
-ShellGeometry compute_shell_geometry(const PatchPositions& X_global,
-                                     const NeighbourFlags& has_neighbour) {
+ShellGeometry compute_shell_geometry(const PatchPositions& X_global, const SlotKinds& slots) {
+  for (int n = 0; n < kTriangleNodes; ++n)
+    PLISSE_CHECK(slots[n] == Slot::node, "shell patch: corner " << n << " is not a node");
   // Positions relative to the triangle's centroid: the element depends on differences only, and
   // the sums of the side gradients (KL3) then cancel terms of the element's size, not of its
   // distance from the origin (a patch 100 mm out in elements of 5 mm had strain round-off of
@@ -149,24 +212,32 @@ ShellGeometry compute_shell_geometry(const PatchPositions& X_global,
   PatchPositions X;
   for (int n = 0; n < kPatchNodes; ++n) X[n] = X_global[n] - origin;
   ShellGeometry g;
-  g.has_neighbour = has_neighbour;
+  g.slots = slots;
   g.frame = triangle_frame(X, g.area);
-  const std::array<Vec2d, kPatchNodes> p = plane_coordinates(X, g.frame, has_neighbour);
+  const std::array<Vec2d, kPatchNodes> p = plane_coordinates(X, g.frame, slots);
   const Eigen::Matrix<double, 3, 2> L = linear_gradients(p);
-  g.fitted = fitted_side_coefficients(p, g.side);
-  if (!g.fitted) {
-    for (int i = 0; i < 3; ++i) g.side[i] = isoparametric_side_coefficients(p, i);
+  g.fitted = patch_side_coefficients(p, {0, 1, 2, 3, 4, 5}, g.side);
+  for (int i = 0; i < 3; ++i) {
+    if (!has_neighbour_fit(slots, i)) continue;
+    // The mean of this triangle's fit and its neighbour's on the side they share (KL3b).
+    std::array<SideCoefficients, 3> across;
+    patch_side_coefficients(p, neighbour_patch(i), across);
+    g.side[i] = 0.5 * (g.side[i] + across[0]);
+  }
+  // Ghosts beyond a side first: they are made of the node across it, which a ghost of slots 3 to
+  // 5 never is.
+  for (int n = kPatchNodes - 1; n >= kTriangleNodes; --n) {
+    if (slots[n] != Slot::missing) continue;
+    for (SideCoefficients& c : g.side) fold_ghost(c, n);
   }
   for (int i = 0; i < 3; ++i) {
-    if (has_neighbour[i]) continue;
-    for (SideCoefficients& c : g.side) fold_mirror_node(c, i);
+    if (slots[3 + i] != Slot::missing) continue;
     g.side[i].setZero();  // the triangle's own constant gradient on a free side (KL8)
     g.side[i].topRows<3>() = L;
   }
   g.curvature = curvature_weights(g.side, L);
   for (int n = 0; n < kPatchNodes; ++n) {
-    const bool used = n < kTriangleNodes || has_neighbour[n - kTriangleNodes];
-    g.X.segment<3>(3 * n) = used ? X[n] : Vec3d::Zero();
+    g.X.segment<3>(3 * n) = used_slot(slots, n) ? X[n] : Vec3d::Zero();
   }
   g.reference_metric = mean_metric(g, g.X);
   const std::array<Vec3d, 3> V = curvature_vectors(g, g.X);

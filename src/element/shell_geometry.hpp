@@ -1,20 +1,22 @@
 #pragma once
 /// Reference geometry of one patch of the rotation-free shell triangle (EBST,
-/// docs/theory/shell.md): the triangle, the three nodes opposite its sides, and the coefficients
-/// that turn nodal positions into the gradients on the sides (KL3), the membrane strain (KL4) and
-/// the curvature (KL6). Computed once per element from the reference positions; the kernels
-/// (element/shell.hpp) only read it.
+/// docs/theory/shell.md): the triangle, the nodes across its sides and across its neighbours'
+/// sides, and the coefficients that turn nodal positions into the gradients on the sides (KL3b),
+/// the membrane strain (KL4) and the curvature (KL6). Computed once per element from the
+/// reference positions; the kernels (element/shell.hpp) only read it.
 ///
-/// Node order (KL1): 0, 1, 2 the triangle, counter-clockwise about its normal; 3 + i the node of
-/// the neighbour across side i, the side opposite node i (side 0 joins 1-2, side 1 joins 2-0,
-/// side 2 joins 0-1). Unknowns: node n's three translations at 3n, 3n + 1, 3n + 2.
+/// Slot order (KL1, KL1b): 0, 1, 2 the triangle, counter-clockwise about its normal; 3 + i the
+/// node of the neighbour across side i, the side opposite node i (side 0 joins 1-2, side 1 joins
+/// 2-0, side 2 joins 0-1); 6 + 2i and 7 + 2i the nodes across that neighbour's sides opposite
+/// corner i + 1 and corner i + 2 of the triangle. Unknowns: slot n's three translations at 3n,
+/// 3n + 1, 3n + 2.
 #include <array>
 
 #include "core/types.hpp"
 
 namespace plisse::shell {
 
-inline constexpr int kPatchNodes = 6;
+inline constexpr int kPatchNodes = 12;
 inline constexpr int kTriangleNodes = 3;
 inline constexpr int kPatchDofs = 3 * kPatchNodes;
 /// Generalized strains s = (ε11, ε22, ε12, κ11, κ22, κ12) (KL15).
@@ -33,30 +35,56 @@ using SideCoefficients = Eigen::Matrix<double, kPatchNodes, 2>;
 /// For each node, the coefficient of one component of v (KL6): v = Σ_n k(n) x_n.
 using NodeWeights = Eigen::Matrix<double, kPatchNodes, 1>;
 
-/// Which sides have a neighbour; a missing one is a free or hinged edge (KL8).
-using NeighbourFlags = std::array<bool, 3>;
+/// What a slot of the patch holds (KL1b).
+enum class Slot : unsigned char {
+  node,     ///< a node of the mesh
+  image,    ///< the image of a node under a side's mirror map (a clamped or symmetry edge, KL8a);
+            ///< its reference position is given
+  missing,  ///< no node: across a free or hinged edge (KL8), or beyond a side without neighbour
+};
+using SlotKinds = std::array<Slot, kPatchNodes>;
+
+/// Slot 6 + 2i + w, w = 0, 1: across the side of neighbour i opposite corner i + 1 + w (KL1b).
+constexpr int outer_slot(int side, int w) { return 6 + 2 * side + w; }
+
+/// Every slot a node (an element inside the mesh).
+inline SlotKinds all_nodes() {
+  SlotKinds k;
+  k.fill(Slot::node);
+  return k;
+}
+
+/// Every slot a node but side `side`'s neighbour and the two nodes beyond it (an element on a
+/// free edge).
+inline SlotKinds without_side(int side) {
+  SlotKinds k = all_nodes();
+  k[3 + side] = k[outer_slot(side, 0)] = k[outer_slot(side, 1)] = Slot::missing;
+  return k;
+}
 
 /// The reference geometry of a patch. Plain data; thread-safe to share between kernels.
 struct ShellGeometry {
-  PatchVec X;                      ///< reference positions of the 6 nodes relative to the
-                                   ///< triangle's centroid [mm] (a missing neighbour's entries
-                                   ///< are ignored); the element depends on differences only
-  Mat3d frame;                     ///< columns e1, e2, e3 of the triangle (KL3)
-  double area = 0.0;               ///< A0 [mm²]
-  NeighbourFlags has_neighbour{};  ///< false: the side is an edge of the mesh (KL8)
-  bool fitted = true;  ///< side gradients from the quadratic fit (KL3a), else isoparametric (KL3)
-  std::array<SideCoefficients, 3> side;  ///< c^i [1/mm] (KL3), a missing neighbour folded in
+  PatchVec X;          ///< reference positions of the 12 slots relative to the triangle's
+                       ///< centroid [mm] (zero for a slot the element does not use); the element
+                       ///< depends on differences only
+  Mat3d frame;         ///< columns e1, e2, e3 of the triangle (KL3)
+  double area = 0.0;   ///< A0 [mm²]
+  SlotKinds slots{};   ///< what each slot holds (KL1b)
+  bool fitted = true;  ///< the triangle's own side gradients from the quadratic fit (KL3a), else
+                       ///< isoparametric (KL3)
+  std::array<SideCoefficients, 3> side;  ///< c^i [1/mm] (KL3b), the missing slots folded in
   std::array<NodeWeights, 3> curvature;  ///< k^{αβ} for (11, 22, 12) [1/mm²] (KL6)
   Vec3d reference_metric;                ///< Ā as (11, 22, 12) [-] (KL4)
   Vec3d reference_curvature;             ///< B as (11, 22, 12) [1/mm] (KL6)
 };
 
-/// The geometry of the patch with reference positions X (entries 3 + i ignored when side i has
-/// no neighbour). Throws plisse::Error for a degenerate triangle or a side whose quadratic map is
-/// singular (a neighbour on the side's line, or folded over onto the triangle).
-ShellGeometry compute_shell_geometry(const PatchPositions& X, const NeighbourFlags& has_neighbour);
+/// The geometry of the patch with reference positions X, slot n holding what slots[n] says (the
+/// entries of a missing slot are ignored; slots 0-2 must be nodes). Throws plisse::Error for a
+/// degenerate triangle or a side whose quadratic map is singular (a neighbour on the side's line,
+/// or folded over onto the triangle).
+ShellGeometry compute_shell_geometry(const PatchPositions& X, const SlotKinds& slots);
 
-/// The gradient on side i (3 × 2, columns φ'_1, φ'_2) of the patch at positions x (KL3).
+/// The gradient on side i (3 × 2, columns φ'_1, φ'_2) of the patch at positions x (KL3b).
 inline Mat32d side_gradient(const ShellGeometry& g, const PatchVec& x, int i) {
   Mat32d d = Mat32d::Zero();
   for (int n = 0; n < kPatchNodes; ++n) {

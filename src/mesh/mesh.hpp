@@ -46,6 +46,10 @@ struct Mesh {
   /// corner of the neighbouring triangle across that side that is not on it (shell.md, KL1),
   /// -1 where the side is an edge of the surface. Else empty.
   std::vector<std::array<int, 3>> triangle_neighbours;
+  /// Shell meshes only: for each triangle and each side i, the index of the triangle across it,
+  /// -1 where the side is an edge of the surface; with triangle_neighbours it gives the nodes
+  /// across the neighbours' sides, the rest of the 12-node patch (shell.md, KL1b). Else empty.
+  std::vector<std::array<int, 3>> triangle_adjacent;
   /// Shell meshes only: the tagged curves of the mid-surface (Gmsh physical groups of dimension
   /// 1, or a generator's named edges) as node pairs, and their tags: name -> indices into `edges`.
   /// A shell's boundary conditions name these (docs/meshes.md, "Shell meshes").

@@ -40,12 +40,14 @@ void make_shell_surface(Mesh& mesh, double thickness) {
     }
   }
   mesh.triangle_neighbours.assign(mesh.triangles.size(), {-1, -1, -1});
+  mesh.triangle_adjacent.assign(mesh.triangles.size(), {-1, -1, -1});
   for (const auto& [edge, here] : sides) {
     const auto across = sides.find({edge.second, edge.first});
     if (across == sides.end()) continue;  // an edge of the surface
     const Side there = across->second;
     mesh.triangle_neighbours[static_cast<std::size_t>(here.triangle)][here.side] =
         mesh.triangles[static_cast<std::size_t>(there.triangle)][there.side];
+    mesh.triangle_adjacent[static_cast<std::size_t>(here.triangle)][here.side] = there.triangle;
   }
   mesh.shell_thickness.assign(mesh.nodes.size(), thickness);
 }

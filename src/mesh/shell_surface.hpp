@@ -1,8 +1,8 @@
 #pragma once
 /// The mid-surface of a shell (docs/theory/shell.md): a mesh of triangles and no tetrahedra,
-/// with the thickness of every node and, for every triangle, the nodes across its three sides,
-/// the 6-node patch of the rotation-free shell triangle (KL1). The neighbours are found once,
-/// here, so that the assembly reads an element's patch in O(1).
+/// with the thickness of every node and, for every triangle, the nodes and triangles across its
+/// three sides, from which the assembly reads the 12-node patch of the rotation-free shell
+/// triangle (KL1b) in O(1). The neighbours are found once, here.
 #include <utility>
 #include <vector>
 
@@ -11,7 +11,8 @@
 namespace plisse {
 
 /// Makes `mesh` (triangles, no tetrahedra) the mid-surface of a shell of uniform reference
-/// thickness `thickness` [mm]: fills mesh.shell_thickness and mesh.triangle_neighbours. Throws
+/// thickness `thickness` [mm]: fills mesh.shell_thickness, mesh.triangle_neighbours and
+/// mesh.triangle_adjacent. Throws
 /// plisse::Error when the mesh has tetrahedra or no triangles, the thickness is not positive, a
 /// triangle repeats a node or names one out of range, an edge is shared by more than two
 /// triangles, or two triangles sharing an edge are oriented inconsistently (both run through it

@@ -1,18 +1,18 @@
 #pragma once
 /// The rotation-free Kirchhoff-Love shell triangle (EBST, docs/theory/shell.md) as an element
 /// policy of the assembly (solver/element_policy.hpp states the contract), on the mid-surface
-/// of a shell mesh (mesh/shell_surface.hpp): 6 nodes, the triangle and the three nodes across
-/// its sides (KL1), 18 unknowns [u0x, u0y, u0z, ..., u5z], no pressure unknowns and no internal
-/// state.
+/// of a shell mesh (mesh/shell_surface.hpp): 12 nodes, the triangle, the three nodes across its
+/// sides and the six across its neighbours' other sides (KL1b), 36 unknowns [u0x, u0y, u0z, ...,
+/// u11z], no pressure unknowns and no internal state.
 ///
-/// A side without a neighbour (an edge of the surface) repeats the triangle's corner opposite
-/// it in the node list (node 3 + i = node i): the node list keeps its fixed width. On a free or
-/// hinged side the geometry reads the repetition as the missing neighbour (KL8), and the kernel's
-/// rows and columns of that slot are zero, so its scatter onto the corner adds nothing. On a
-/// clamped or symmetry side (Mesh::side_mirrors) the slot is the mirror image of node i (KL8a):
-/// its displacement R u_i, R the mirror's linear part, so the policy evaluates the kernel at that
-/// displacement and turns the slot's rows and columns back by R (R = Rᵀ = R⁻¹) before they are
-/// scattered onto node i.
+/// A missing node (across an edge of the surface) repeats a node in the node list, which keeps
+/// its fixed width (shell_patch_nodes). On a free or hinged side the geometry reads the
+/// repetition as a missing slot (KL8), and the kernel's rows and columns of that slot are zero,
+/// so its scatter onto the repeated node adds nothing. Across and beyond a clamped or symmetry
+/// side (Mesh::side_mirrors) the slot is the mirror image of the node it repeats (KL8a): its
+/// displacement M u, M the mirror's linear part (a product of two where a slot is the image of
+/// an image), so the policy evaluates the kernel at that displacement and turns the slot's rows
+/// and columns back, Mᵀ r and Mᵀ K M, before they are scattered onto the node.
 ///
 /// The shell has no pressure unknown: the plane-stress condition eliminates the pressure inside
 /// the kernel (KL9). The state keeps four values per node (solver/dof_map.hpp); the model
@@ -28,6 +28,7 @@
 #include "mesh/mesh.hpp"
 #include "solver/dof_map.hpp"
 #include "solver/element_policy.hpp"
+#include "solver/shell_patch.hpp"
 
 namespace plisse {
 
@@ -42,14 +43,18 @@ struct ShellElement {
   using Matrix = shell::PatchMat;
   using Fields = ElementFields;
   /// The patch's reference geometry and its cross-section (thickness and thickness points), and
-  /// the mirrored sides: side i of a clamped or symmetry edge reads its missing node as the image
-  /// of node i under the map of Mesh::side_mirrors (shell.md, KL8a), whose linear part is
-  /// `mirror[i]` (the identity for every other side).
+  /// the mirrored slots: a slot across a side of a clamped or symmetry edge reads its missing
+  /// node as the image of its corner under the map of Mesh::side_mirrors (shell.md, KL8a), whose
+  /// linear part is `mirror[a]` (the identity for every other slot).
   struct Geometry {
     shell::ShellGeometry patch;
     shell::ShellSection section;
-    std::array<bool, 3> mirrored{};
-    std::array<Mat3d, 3> mirror{Mat3d::Identity(), Mat3d::Identity(), Mat3d::Identity()};
+    std::array<bool, kNodes> mirrored{};
+    std::array<Mat3d, kNodes> mirror = [] {
+      std::array<Mat3d, kNodes> m;
+      m.fill(Mat3d::Identity());
+      return m;
+    }();
   };
   /// ok: the element could be evaluated; min_J: 1, every point is incompressible (KL9).
   struct Status {
@@ -62,26 +67,18 @@ struct ShellElement {
     const double* data() const { return nullptr; }
   };
 
-  /// Local node (0..5) of unknown i: the components node by node.
+  /// Local node (0..11) of unknown i: the components node by node.
   static constexpr std::array<int, kDof> kLocalNode = [] {
     std::array<int, kDof> node{};
     for (int i = 0; i < kDof; ++i) node[i] = i / 3;
     return node;
   }();
 
-  /// The triangles of the shell mesh, each with the nodes across its sides
-  /// (mesh.triangle_neighbours), a missing one replaced by the opposite corner. Precondition:
-  /// mesh.is_shell().
+  /// The triangles of the shell mesh, each with its 12-node patch (shell_patch_nodes, KL1b).
+  /// Precondition: mesh.is_shell().
   static int n_elements(const Mesh& mesh) { return static_cast<int>(mesh.triangles.size()); }
   static std::array<int, kNodes> nodes(const Mesh& mesh, int e) {
-    const auto& corners = mesh.triangles[static_cast<std::size_t>(e)];
-    const auto& across = mesh.triangle_neighbours[static_cast<std::size_t>(e)];
-    std::array<int, kNodes> n;
-    for (int i = 0; i < 3; ++i) {
-      n[i] = corners[i];
-      n[3 + i] = across[i] >= 0 ? across[i] : corners[i];
-    }
-    return n;
+    return shell_patch_nodes(mesh, e);
   }
 
   /// Full-state index of every element unknown: node a's (ux, uy, uz) at 3a..3a+2.
@@ -92,27 +89,18 @@ struct ShellElement {
     return full;
   }
 
-  /// shell::compute_shell_geometry of the patch, a repeated corner read as a missing neighbour or,
-  /// on a side of Mesh::side_mirrors, replaced by its mirror image, and the section of the
-  /// element's thickness (the mean of its corners', mesh.shell_thickness) with the default points
-  /// (KL13). Throws plisse::Error for a degenerate patch.
+  /// shell::compute_shell_geometry of the patch's slots (shell_patch_slots: missing slots and
+  /// mirror images, KL8, KL8a), and the section of the element's thickness (the mean of its
+  /// corners', mesh.shell_thickness) with the default points (KL13). Throws plisse::Error for a
+  /// degenerate patch.
   static Geometry geometry(const Mesh& mesh, std::span<const int, kNodes> nodes) {
+    const ShellPatchSlots slots = shell_patch_slots(mesh, nodes);
     Geometry g;
-    shell::PatchPositions X;
-    shell::NeighbourFlags has_neighbour;
-    for (int a = 0; a < kNodes; ++a) X[a] = mesh.nodes[nodes[a]];
-    for (int i = 0; i < 3; ++i) {
-      has_neighbour[i] = nodes[3 + i] != nodes[i];
-      if (has_neighbour[i] || mesh.side_mirrors.empty()) continue;
-      const auto m = mesh.side_mirrors.find({nodes[(i + 1) % 3], nodes[(i + 2) % 3]});
-      if (m == mesh.side_mirrors.end()) continue;
-      g.mirrored[i] = has_neighbour[i] = true;
-      g.mirror[i] = m->second.map;
-      X[3 + i] = m->second.point + m->second.map * (X[i] - m->second.point);
-    }
+    g.mirrored = slots.image;
+    g.mirror = slots.map;
     double thickness = 0.0;
     for (int i = 0; i < 3; ++i) thickness += mesh.shell_thickness[nodes[i]] / 3.0;
-    g.patch = shell::compute_shell_geometry(X, has_neighbour);
+    g.patch = shell::compute_shell_geometry(slots.X, slots.kinds);
     g.section = shell::make_shell_section(thickness);
     return g;
   }
@@ -127,13 +115,14 @@ struct ShellElement {
                          double /*inverse_bulk_modulus*/, Internal& /*internal*/, Vector& r,
                          Matrix* K) {
     const bool ok = shell::assemble_shell(g.patch, g.section, mirrored(g, x), material, r, K).ok;
-    for (int i = 0; i < 3; ++i) {
-      if (!g.mirrored[i]) continue;
-      const int s = 3 * (3 + i);
-      r.segment<3>(s) = g.mirror[i] * r.segment<3>(s);
+    for (int a = 0; a < kNodes; ++a) {
+      if (!g.mirrored[a]) continue;
+      const int s = 3 * a;
+      const Mat3d M = g.mirror[a];
+      r.segment<3>(s) = M.transpose() * r.segment<3>(s);
       if (K == nullptr) continue;
-      K->middleRows<3>(s) = g.mirror[i] * K->middleRows<3>(s);
-      K->middleCols<3>(s) = K->middleCols<3>(s) * g.mirror[i];
+      K->middleRows<3>(s) = M.transpose() * K->middleRows<3>(s);
+      K->middleCols<3>(s) = K->middleCols<3>(s) * M;
     }
     return {ok, 1.0};
   }
@@ -169,12 +158,12 @@ struct ShellElement {
 
   static Fields zero_fields() { return zero_element_fields(); }
 
-  /// The element's displacements with each mirrored side's slot, gathered as node i's u_i, made
-  /// the mirror image's R u_i (KL8a).
+  /// The element's displacements with each mirrored slot, gathered as its source corner's u,
+  /// made the mirror image's R u (KL8a).
   static Vector mirrored(const Geometry& g, const Vector& x) {
     Vector y = x;
-    for (int i = 0; i < 3; ++i)
-      if (g.mirrored[i]) y.segment<3>(3 * (3 + i)) = g.mirror[i] * x.segment<3>(3 * i);
+    for (int a = 0; a < kNodes; ++a)
+      if (g.mirrored[a]) y.segment<3>(3 * a) = g.mirror[a] * x.segment<3>(3 * a);
     return y;
   }
 };

@@ -42,9 +42,8 @@ TEST(ShellOutputs, HomogeneousBiaxialStretchOfAFlatSheet) {
   const NeoHookean nh{kC1};
   const ShellSection section = make_shell_section(t);
   for (unsigned seed : {1u, 2u}) {
-    for (const NeighbourFlags& neighbours :
-         {NeighbourFlags{true, true, true}, NeighbourFlags{true, false, false}}) {
-      const std::array<Vec2d, 6> p = plane_patch(1.0, 0.3, seed);
+    for (const SlotKinds& neighbours : {all_nodes(), free_sides({1, 2})}) {
+      const auto p = plane_patch(1.0, 0.3, seed);
       const ShellGeometry g = compute_shell_geometry(
           map_patch(p, [&](const Vec2d& q) { return Vec3d(Q * flat(q)); }), neighbours);
       const PatchPositions x = map_patch(
@@ -89,8 +88,8 @@ BendingErrors bending_errors(double t, double R, double h) {
   const double mu = 2.0 * kC1;
   const double D = mu * t * t * t / 3.0;
   const NeoHookean nh{kC1};
-  const std::array<Vec2d, 6> p = plane_patch(h, 0.0, 4);
-  const ShellGeometry g = compute_shell_geometry(map_patch(p, flat), {true, true, true});
+  const auto p = plane_patch(h, 0.0, 4);
+  const ShellGeometry g = compute_shell_geometry(map_patch(p, flat), all_nodes());
   const PatchPositions x = map_patch(p, [&](const Vec2d& q) { return on_cylinder(q, R); });
   const ShellOutputs out = compute_shell_outputs(g, make_shell_section(t), to_vector(x) - g.X, nh);
   // The current axes: a along the cylinder's axis, d across it in the triangle's current plane.
