@@ -49,6 +49,14 @@ Mat3d triangle_frame(const PatchPositions& X, double& area) {
 /// midpoints, one 6 × 2 block of coefficients per side.
 using FitPoints = std::array<Vec2d, 6>;
 using FitCoefficients = Eigen::Matrix<double, 6, 2>;
+using FitValues = Eigen::Matrix<double, 6, 1>;
+
+/// The gradient (6 x 2) and the value (6) of a fit at the midpoint of each of its sides, as
+/// coefficients of the six nodal positions.
+struct FitAtSides {
+  std::array<FitCoefficients, 3> gradient;
+  std::array<FitValues, 3> value;
+};
 
 /// X_ghost = X_a + X_b - X_source: the node a missing slot stands for, the mirror image of
 /// `source` through the midpoint of the side (a, b) it lies across (KL8).
@@ -123,7 +131,7 @@ FitCoefficients isoparametric_side_coefficients(const FitPoints& p, int i) {
 /// The gradients on the three sides of the quadratic polynomial in the plane coordinates that
 /// takes the six nodal values (KL3a): exact for every quadratic field on any patch. False when
 /// the six points lie (nearly) on a conic, where that polynomial is not unique.
-bool fitted_side_coefficients(const FitPoints& p, std::array<FitCoefficients, 3>& c) {
+bool fitted_side_coefficients(const FitPoints& p, FitAtSides& c) {
   const Vec2d centre = (p[0] + p[1] + p[2]) / 3.0;
   const double scale = (p[1] - p[0]).norm();
   auto scaled = [&](const Vec2d& q) { return Vec2d((q - centre) / scale); };
@@ -142,30 +150,45 @@ bool fitted_side_coefficients(const FitPoints& p, std::array<FitCoefficients, 3>
     const Vec2d m = scaled(0.5 * (p[(i + 1) % 3] + p[(i + 2) % 3]));
     FitCoefficients dP;  // ∂(1, x, y, x², xy, y²)/∂X_α at the side's midpoint
     dP << 0, 0, 1, 0, 0, 1, 2 * m.x(), 0, m.y(), m.x(), 0, 2 * m.y();
-    c[i] = V_inverse_T * dP / scale;
+    FitValues P;  // (1, x, y, x², xy, y²) there
+    P << 1.0, m.x(), m.y(), m.x() * m.x(), m.x() * m.y(), m.y() * m.y();
+    c.gradient[i] = V_inverse_T * dP / scale;
+    c.value[i] = V_inverse_T * P;
   }
   return true;
 }
 
-/// The side gradients of the quadratic through the patch slots `at` (KL3a), or of the
-/// isoparametric map (KL3) when they lie on a conic, scattered onto the 12 slots. Returns
-/// whether the fit was used.
+/// The gradient and the value at each side's midpoint of the quadratic through the patch slots
+/// `at` (KL3a), or of the isoparametric map (KL3) when they lie on a conic, scattered onto the 12
+/// slots. Returns whether the fit was used.
 bool patch_side_coefficients(const std::array<Vec2d, kPatchNodes>& p, const std::array<int, 6>& at,
-                             std::array<SideCoefficients, 3>& c) {
+                             std::array<SideCoefficients, 3>& gradient,
+                             std::array<NodeWeights, 3>& value) {
   FitPoints q;
   for (int n = 0; n < 6; ++n) q[n] = p[at[n]];
-  std::array<FitCoefficients, 3> fit;
+  FitAtSides fit;
   const bool fitted = fitted_side_coefficients(q, fit);
   for (int i = 0; i < 3; ++i) {
-    if (!fitted) fit[i] = isoparametric_side_coefficients(q, i);
-    c[i].setZero();
-    for (int n = 0; n < 6; ++n) c[i].row(at[n]) += fit[i].row(n);
+    if (!fitted) {
+      // The isoparametric map takes the natural midpoint of a side elsewhere than the side's
+      // midpoint on a distorted patch: the value there is the side's linear one (KL4a).
+      fit.gradient[i] = isoparametric_side_coefficients(q, i);
+      fit.value[i].setZero();
+      fit.value[i]((i + 1) % 3) = fit.value[i]((i + 2) % 3) = 0.5;
+    }
+    gradient[i].setZero();
+    value[i].setZero();
+    for (int n = 0; n < 6; ++n) {
+      gradient[i].row(at[n]) += fit.gradient[i].row(n);
+      value[i](at[n]) += fit.value[i](n);
+    }
   }
   return fitted;
 }
 
 /// A missing slot's coefficients moved onto the slots its ghost is made of (KL8).
-void fold_ghost(SideCoefficients& c, int slot) {
+template <class Coefficients>
+void fold_ghost(Coefficients& c, int slot) {
   const Ghost h = ghost_of(slot);
   c.row(h.a) += c.row(slot);
   c.row(h.b) += c.row(slot);
@@ -184,6 +207,20 @@ Eigen::Matrix<double, 3, 2> linear_gradients(const std::array<Vec2d, kPatchNodes
     L.row(i) << (pj.y() - pk.y()) / two_area, (pk.x() - pj.x()) / two_area;
   }
   return L;
+}
+
+/// The coefficients of the triangle's mean gradient (KL4a): with ℓ_i ν^i = -2 A ∇L_i and
+/// Simpson's rule along each side, F̄ = (1/A) Σ_i ℓ_i ν^i ⊗ [(x_j + x_k)/6 + (2/3) φ(m_i)].
+SideCoefficients membrane_weights(const std::array<NodeWeights, 3>& value,
+                                  const Eigen::Matrix<double, 3, 2>& L) {
+  SideCoefficients m = SideCoefficients::Zero();
+  for (int i = 0; i < 3; ++i) {
+    NodeWeights along = (2.0 / 3.0) * value[i];
+    along((i + 1) % 3) += 1.0 / 6.0;
+    along((i + 2) % 3) += 1.0 / 6.0;
+    m -= 2.0 * along * L.row(i);
+  }
+  return m;
 }
 
 /// k^{αβ} of (KL6) for (11, 22, 12).
@@ -216,25 +253,32 @@ ShellGeometry compute_shell_geometry(const PatchPositions& X_global, const SlotK
   g.frame = triangle_frame(X, g.area);
   const std::array<Vec2d, kPatchNodes> p = plane_coordinates(X, g.frame, slots);
   const Eigen::Matrix<double, 3, 2> L = linear_gradients(p);
-  g.fitted = patch_side_coefficients(p, {0, 1, 2, 3, 4, 5}, g.side);
+  std::array<NodeWeights, 3> value;  // φ at each side's midpoint (KL4a)
+  g.fitted = patch_side_coefficients(p, {0, 1, 2, 3, 4, 5}, g.side, value);
   for (int i = 0; i < 3; ++i) {
     if (!has_neighbour_fit(slots, i)) continue;
     // The mean of this triangle's fit and its neighbour's on the side they share (KL3b).
     std::array<SideCoefficients, 3> across;
-    patch_side_coefficients(p, neighbour_patch(i), across);
+    std::array<NodeWeights, 3> across_value;
+    patch_side_coefficients(p, neighbour_patch(i), across, across_value);
     g.side[i] = 0.5 * (g.side[i] + across[0]);
+    value[i] = 0.5 * (value[i] + across_value[0]);
   }
   // Ghosts beyond a side first: they are made of the node across it, which a ghost of slots 3 to
   // 5 never is.
   for (int n = kPatchNodes - 1; n >= kTriangleNodes; --n) {
     if (slots[n] != Slot::missing) continue;
     for (SideCoefficients& c : g.side) fold_ghost(c, n);
+    for (NodeWeights& c : value) fold_ghost(c, n);
   }
   for (int i = 0; i < 3; ++i) {
     if (slots[3 + i] != Slot::missing) continue;
     g.side[i].setZero();  // the triangle's own constant gradient on a free side (KL8)
     g.side[i].topRows<3>() = L;
+    value[i].setZero();  // and the side's own midpoint
+    value[i]((i + 1) % 3) = value[i]((i + 2) % 3) = 0.5;
   }
+  g.membrane = membrane_weights(value, L);
   g.curvature = curvature_weights(g.side, L);
   for (int n = 0; n < kPatchNodes; ++n) {
     g.X.segment<3>(3 * n) = used_slot(slots, n) ? X[n] : Vec3d::Zero();

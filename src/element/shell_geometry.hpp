@@ -73,6 +73,7 @@ struct ShellGeometry {
   bool fitted = true;  ///< the triangle's own side gradients from the quadratic fit (KL3a), else
                        ///< isoparametric (KL3)
   std::array<SideCoefficients, 3> side;  ///< c^i [1/mm] (KL3b), the missing slots folded in
+  SideCoefficients membrane;  ///< m [1/mm]: the triangle's mean gradient F̄ = Σ_n x_n m_n (KL4a)
   std::array<NodeWeights, 3> curvature;  ///< k^{αβ} for (11, 22, 12) [1/mm²] (KL6)
   Vec3d reference_metric;                ///< Ā as (11, 22, 12) [-] (KL4)
   Vec3d reference_curvature;             ///< B as (11, 22, 12) [1/mm] (KL6)
@@ -93,14 +94,17 @@ inline Mat32d side_gradient(const ShellGeometry& g, const PatchVec& x, int i) {
   return d;
 }
 
-/// ā of (KL4) as (11, 22, 12): the mean of the three side metrics at positions x.
+/// F̄ of (KL4a) (3 × 2, columns along e_1, e_2): the triangle's mean gradient at positions x.
+inline Mat32d mean_gradient(const ShellGeometry& g, const PatchVec& x) {
+  Mat32d d = Mat32d::Zero();
+  for (int n = 0; n < kPatchNodes; ++n) d += x.segment<3>(3 * n) * g.membrane.row(n);
+  return d;
+}
+
+/// ā of (KL4) as (11, 22, 12): the metric F̄ᵀF̄ of the mean gradient at positions x.
 inline Vec3d mean_metric(const ShellGeometry& g, const PatchVec& x) {
-  Vec3d a = Vec3d::Zero();
-  for (int i = 0; i < 3; ++i) {
-    const Mat32d d = side_gradient(g, x, i);
-    a += Vec3d(d.col(0).squaredNorm(), d.col(1).squaredNorm(), d.col(0).dot(d.col(1))) / 3.0;
-  }
-  return a;
+  const Mat32d d = mean_gradient(g, x);
+  return Vec3d(d.col(0).squaredNorm(), d.col(1).squaredNorm(), d.col(0).dot(d.col(1)));
 }
 
 /// v_αβ of (KL6) for (11, 22, 12) at positions x: b_αβ = t3 · v_αβ.

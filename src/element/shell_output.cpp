@@ -6,23 +6,21 @@ namespace plisse::shell {
 
 namespace {
 
-/// [φ̄'_1 φ̄'_2 n]: the mean side gradients of the patch at positions x and a third column n.
-Mat3d mean_gradient(const ShellGeometry& g, const PatchVec& x, const Vec3d& n) {
-  Mat32d d = Mat32d::Zero();
-  for (int i = 0; i < 3; ++i) d += side_gradient(g, x, i) / 3.0;
+/// [F̄ n]: the mean gradient of the triangle at positions x (KL4a) and a third column n.
+Mat3d gradient_with_normal(const ShellGeometry& g, const PatchVec& x, const Vec3d& n) {
   Mat3d M;
-  M << d, n;
+  M << mean_gradient(g, x), n;
   return M;
 }
 
 }  // namespace
 
 Mat3d mid_surface_deformation(const ShellGeometry& g, const PatchVec& u) {
-  const Mat3d reference = mean_gradient(g, g.X, g.frame.col(2));
+  const Mat3d reference = gradient_with_normal(g, g.X, g.frame.col(2));
   const PatchVec x = g.X + u;
   const Vec3d normal = triangle_normal(x);
   const double length = normal.norm();
-  Mat3d current = mean_gradient(g, x, normal / length);
+  Mat3d current = gradient_with_normal(g, x, normal / length);
   const double in_plane = current.determinant();  // (φ̄'_1 × φ̄'_2) · t3
   if (!(length > 0.0) || !(in_plane > 0.0) || !std::isfinite(in_plane)) {
     throw InadmissibleDeformation("shell: the triangle has collapsed or turned over");

@@ -14,7 +14,7 @@
 namespace plisse::shell {
 
 /// The mid-surface's deformation gradient, F = [φ̄'_1 φ̄'_2 s t3] [Φ̄'_1 Φ̄'_2 e3]⁻¹ (KL19):
-/// φ̄' the mean of the three side gradients (KL3) at the current positions, Φ̄' at the reference
+/// φ̄' the triangle's mean gradient (KL4a) at the current positions, Φ̄' at the reference
 /// ones, t3 and e3 the current and reference normals (KL5), and s the thickness stretch that
 /// makes det F = 1 (incompressible, KL9). F = I in the reference, F = Q under a rotation Q, and
 /// F = F₀ ⊕ λ3 on a flat patch in a homogeneous in-plane F₀. `u`: nodal displacements [mm].

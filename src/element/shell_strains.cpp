@@ -38,18 +38,13 @@ Mat3d normal_hessian_block(const ShellKinematics& k, const Vec3d& V, int n, int 
   return block / l;
 }
 
-/// Σ_i of the scalar coefficients of ∂²(Σ_c w_c ε_c)/∂x_n∂x_m (KL17); the block is that times I.
+/// The scalar coefficients of ∂²(Σ_c w_c ε_c)/∂x_n∂x_m (KL17); the block is that times I.
 Eigen::Matrix<double, kPatchNodes, kPatchNodes> membrane_hessian(const ShellGeometry& g,
                                                                  const StrainVec& w) {
-  Eigen::Matrix<double, kPatchNodes, kPatchNodes> h =
-      Eigen::Matrix<double, kPatchNodes, kPatchNodes>::Zero();
-  for (int i = 0; i < 3; ++i) {
-    const NodeWeights c1 = g.side[i].col(0);
-    const NodeWeights c2 = g.side[i].col(1);
-    h += w(0) / 3.0 * c1 * c1.transpose() + w(1) / 3.0 * c2 * c2.transpose() +
-         w(2) / 6.0 * (c1 * c2.transpose() + c2 * c1.transpose());
-  }
-  return h;
+  const NodeWeights c1 = g.membrane.col(0);
+  const NodeWeights c2 = g.membrane.col(1);
+  return w(0) * c1 * c1.transpose() + w(1) * c2 * c2.transpose() +
+         0.5 * w(2) * (c1 * c2.transpose() + c2 * c1.transpose());
 }
 
 }  // namespace
@@ -57,12 +52,10 @@ Eigen::Matrix<double, kPatchNodes, kPatchNodes> membrane_hessian(const ShellGeom
 ShellKinematics compute_shell_kinematics(const ShellGeometry& g, const PatchVec& x) {
   ShellKinematics k;
   k.x = x;
-  Vec3d metric = Vec3d::Zero();  // ā (KL4)
-  for (int i = 0; i < 3; ++i) {
-    k.side[i] = side_gradient(g, x, i);
-    const Mat32d& d = k.side[i];
-    metric += Vec3d(d.col(0).squaredNorm(), d.col(1).squaredNorm(), d.col(0).dot(d.col(1))) / 3.0;
-  }
+  k.mean_gradient = mean_gradient(g, x);
+  const Mat32d& d = k.mean_gradient;
+  const Vec3d metric(d.col(0).squaredNorm(), d.col(1).squaredNorm(),
+                     d.col(0).dot(d.col(1)));  // ā (KL4)
   k.v = curvature_vectors(g, x);
   const Vec3d normal = triangle_normal(x);
   k.normal_length = normal.norm();
@@ -84,15 +77,13 @@ ShellKinematics compute_shell_kinematics(const ShellGeometry& g, const PatchVec&
 StrainGradient compute_strain_gradient(const ShellGeometry& g, const ShellKinematics& k) {
   StrainGradient D = StrainGradient::Zero();
   for (int n = 0; n < kPatchNodes; ++n) {
-    for (int i = 0; i < 3; ++i) {
-      const double c1 = g.side[i](n, 0);
-      const double c2 = g.side[i](n, 1);
-      const Vec3d& d1 = k.side[i].col(0);
-      const Vec3d& d2 = k.side[i].col(1);
-      D.block<1, 3>(0, 3 * n) += c1 / 3.0 * d1.transpose();
-      D.block<1, 3>(1, 3 * n) += c2 / 3.0 * d2.transpose();
-      D.block<1, 3>(2, 3 * n) += (c1 * d2 + c2 * d1).transpose() / 6.0;
-    }
+    const double c1 = g.membrane(n, 0);
+    const double c2 = g.membrane(n, 1);
+    const Vec3d& d1 = k.mean_gradient.col(0);
+    const Vec3d& d2 = k.mean_gradient.col(1);
+    D.block<1, 3>(0, 3 * n) = c1 * d1.transpose();
+    D.block<1, 3>(1, 3 * n) = c2 * d2.transpose();
+    D.block<1, 3>(2, 3 * n) = 0.5 * (c1 * d2 + c2 * d1).transpose();
     for (int c = 0; c < 3; ++c) {
       Vec3d db = g.curvature[c](n) * k.normal;
       if (n < kTriangleNodes) db += k.d_normal[n].transpose() * k.v[c];

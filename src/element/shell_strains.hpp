@@ -13,7 +13,7 @@ using StrainGradient = Eigen::Matrix<double, kStrains, kPatchDofs>;
 /// Everything the derivatives need at one state of the patch, computed once.
 struct ShellKinematics {
   PatchVec x;                     ///< current positions [mm]
-  std::array<Mat32d, 3> side;     ///< φ'^i (KL3)
+  Mat32d mean_gradient;           ///< F̄ (KL4a)
   std::array<Vec3d, 3> v;         ///< v_αβ for (11, 22, 12) (KL6) [1/mm]
   Vec3d normal;                   ///< t3 (KL5)
   double normal_length = 0.0;     ///< |g| = |(x1 - x0) × (x2 - x0)| [mm²]

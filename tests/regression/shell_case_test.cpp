@@ -45,8 +45,8 @@ HistoryTable run_case(const fs::path& case_file, const std::string& name,
 // examples/shell-balloon.yaml: the cavity's volume is prescribed, V = V0 (1 + t (4.096 - 1)), so
 // λ = (V/V0)^(1/3) at every step, and the cavity pressure against the thin-shell closed form
 // p(λ) = 4 c1 (t/R)(1/λ - 1/λ⁷) (c1 = 0.1 MPa, t = 0.1 mm, R = 100 mm). Measured on the example
-// (element_size 2.5 mm): |p - p(λ)| / p(λ) at most 6.2e-4, at the first step (λ = 1.011), and
-// 5.4e-4 beyond λ = 1.1; with `--set mesh.element_size=5`, 9.5e-4 and 6.1e-4.
+// (element_size 2.5 mm): |p - p(λ)| / p(λ) at most 1.01e-4, also beyond λ = 1.1; with
+// `--set mesh.element_size=5`, 5.1e-4 and 3.9e-4: second order in the element size.
 TEST(ShellCase, BalloonExampleFollowsTheThinShellPressureThroughItsMaximum) {
   const HistoryTable h = run_case(kSource / "examples" / "shell-balloon.yaml", "shell-balloon");
   const std::vector<double> t = column(h, "time"), p = column(h, "pressure:balloon");
@@ -66,8 +66,8 @@ TEST(ShellCase, BalloonExampleFollowsTheThinShellPressureThroughItsMaximum) {
       "largest |p - p(λ)| / p(λ): %.2e, beyond λ = 1.1: %.2e; highest pressure %.6e MPa, "
       "closed-form maximum %.6e MPa\n",
       error, error_beyond, peak, exact_peak);
-  EXPECT_LT(error, 1e-3);
-  EXPECT_LT(error_beyond, 8e-4);
+  EXPECT_LT(error, 2e-4);
+  EXPECT_LT(error_beyond, 2e-4);
   // The steps sample the curve near its maximum: the highest sampled pressure is at most the
   // maximum, and within the curve's flatness there.
   EXPECT_LE(peak, exact_peak);
@@ -99,7 +99,7 @@ fs::path strip_case(const std::string& ends, double q) {
          "  - {type: pressure, name: q, surface: bottom, value: "
       << q
       << "}\n"
-         "solver: {steps: 1, newton: {rtol: 1.0e-10, atol: 1.0e-14}}\n";
+         "solver: {steps: 1, newton: {rtol: 1.0e-10, atol: 1.0e-13}}\n";
   return file;
 }
 

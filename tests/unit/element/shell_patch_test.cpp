@@ -159,23 +159,30 @@ double bent_energy_density(const AnyMaterial& material, double t, double R, doub
 TEST(ShellPatch, BendingEnergyOfCylinderIsDKappaSquaredOverTwo) {
   // A flat patch wrapped onto a cylinder without stretching: Ψ = D κ² / 2 with D = μ t³ / 3
   // (E = 3μ, ν = 1/2) in the small-strain limit. Two errors remain: the finite-strain terms,
-  // relative O((κ t)²) = 1e-4 here, and the membrane strain of the discrete metric of a bent
-  // patch, O((h/R)²), whose energy relative to the bending energy is O((h/R)⁴ (R/t)²) = 2e-4
-  // times a small constant here. Measured at t = R/100, h = R/80: 9.2e-5 (4.6e-3 at h = R/20,
-  // 3.9e-4 at h = R/40); asserted: < 2e-4 at h = R/80, and the error falls with h.
+  // relative O((κ t)²), and the membrane strain that the discrete metric (KL4) of a bent patch
+  // carries, O((h/R)²), whose energy relative to the bending energy is O((h/R)⁴ (R/t)²).
+  // Measured: at t = R/100, 2.6e-5 to 3.9e-5 (the finite-strain part); at t = R/1000, 4.7e-2,
+  // 2.9e-3, 1.6e-4 at h = R/20, R/40, R/80 (the membrane part, order 4). Asserted: below 1e-4 at
+  // t = R/100; at t = R/1000 below 2e-4 at h = R/80 and each halving of h more than 12-fold.
   const double mu = 1.0;
   const AnyMaterial nh = NeoHookean{0.5 * mu};
   const double R = 1.0;
-  const double t = 0.01 * R;
-  const double D = mu * t * t * t / 3.0;  // E t³ / (12 (1 - ν²)), E = 3μ, ν = 1/2
-  std::vector<double> errors;
-  for (double h : {R / 20, R / 40, R / 80}) {
-    errors.push_back(std::abs(bent_energy_density(nh, t, R, h, 5) / (0.5 * D / (R * R)) - 1.0));
-    std::printf("bent onto a cylinder, h = R/%.0f: energy error %.2e\n", R / h, errors.back());
+  for (const double t : {0.01 * R, 0.001 * R}) {
+    const double D = mu * t * t * t / 3.0;  // E t³ / (12 (1 - ν²)), E = 3μ, ν = 1/2
+    std::vector<double> errors;
+    for (double h : {R / 20, R / 40, R / 80}) {
+      errors.push_back(std::abs(bent_energy_density(nh, t, R, h, 5) / (0.5 * D / (R * R)) - 1.0));
+      std::printf("bent onto a cylinder, t = R/%.0f, h = R/%.0f: energy error %.2e\n", R / t, R / h,
+                  errors.back());
+    }
+    if (t > 0.005 * R) {
+      for (const double e : errors) EXPECT_LT(e, 1e-4);
+    } else {
+      EXPECT_LT(errors[2], 2e-4);
+      EXPECT_GT(errors[0] / errors[1], 12.0);
+      EXPECT_GT(errors[1] / errors[2], 12.0);
+    }
   }
-  EXPECT_LT(errors[2], 2e-4);
-  EXPECT_LT(errors[1], errors[0]);
-  EXPECT_LT(errors[2], errors[1]);
 }
 
 TEST(ShellPatch, ThicknessIntegrationOfStronglyBentPatchConverges) {

@@ -17,7 +17,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <numbers>
@@ -31,6 +30,7 @@
 #include "physics/pressure_load.hpp"
 #include "solver/load_stepper.hpp"
 #include "solver/mixed_model.hpp"
+#include "strip_mesh.hpp"
 
 namespace plisse {
 namespace {
@@ -41,13 +41,7 @@ constexpr double kThickness = 1.0;  // t [mm]
 constexpr double kRigidity = 2.0 * kC1 * kThickness * kThickness * kThickness / 3.0;  // D [N mm]
 
 /// A number in [-1, 1] that depends only on (i, j): the mesh is the same on every platform.
-double pseudo_random(int i, int j) {
-  std::uint64_t z = 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(i * 7919 + j * 104729 + 1);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-  z ^= z >> 31;
-  return 2.0 * static_cast<double>(z >> 11) / static_cast<double>(1ULL << 53) - 1.0;
-}
+double pseudo_random(int i, int j) { return shell_test::pseudo_random(i, j, 0); }
 
 /// The disc of `rings` rings described above, normals +z; edge tag `rim`, surface tag `bottom`
 /// (the -1 face: a pressure on it pushes along +z).

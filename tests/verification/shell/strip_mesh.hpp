@@ -1,0 +1,79 @@
+#pragma once
+/// Flat shell meshes for the shell's verification tests: the strip of edge_conditions_test.cpp
+/// and euler_strip_test.cpp, cut three ways, and the pseudo-random numbers that distort meshes
+/// the same way on every platform.
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include "mesh/mesh.hpp"
+#include "mesh/shell_surface.hpp"
+
+namespace plisse::shell_test {
+
+/// A number in [-1, 1] that depends only on (i, j, which): a distortion is the same on every
+/// platform (std:: distributions are not).
+inline double pseudo_random(int i, int j, int which) {
+  std::uint64_t z = 0x9E3779B97F4A7C15ULL *
+                    static_cast<std::uint64_t>(i * 7919 + j * 104729 + which * 15485863 + 1);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  z ^= z >> 31;
+  return 2.0 * static_cast<double>(z >> 11) / static_cast<double>(1ULL << 53) - 1.0;
+}
+
+/// How the strip's cells are cut: all along the diagonal from (x, y) to (x + h, y + h); along
+/// alternating diagonals (cell (i, j) along the other one when i + j is odd); or alternating with
+/// every node off the strip's edges moved in the plane by up to 15 % of the cell's sides (the
+/// nodes at x = keep_x only across the strip, so that a deflection can be read there).
+enum class Cells { same_diagonal, alternating, distorted };
+
+/// The strip [0, length] x [0, width] in z = 0 of reference thickness `thickness`, nx x ny cells
+/// each cut into two triangles as `cells` says, normals +z. Edge tags `left` (x = 0), `right`
+/// (x = length), `front` (y = 0), `back` (y = width); surface tag `bottom` (the -1 face: a
+/// pressure on it pushes along +z).
+inline Mesh strip_mesh(double length, double width, double thickness, int nx, int ny, Cells cells,
+                       double keep_x) {
+  Mesh mesh;
+  const auto node = [&](int i, int j) { return i * (ny + 1) + j; };
+  const double hx = length / nx, hy = width / ny;
+  for (int i = 0; i <= nx; ++i)
+    for (int j = 0; j <= ny; ++j) {
+      Vec3d X(hx * i, hy * j, 0.0);
+      const bool inner = i > 0 && i < nx && j > 0 && j < ny;
+      if (cells == Cells::distorted && inner) {
+        if (std::abs(X.x() - keep_x) > 1e-9) X.x() += 0.15 * hx * pseudo_random(i, j, 0);
+        X.y() += 0.15 * hy * pseudo_random(i, j, 1);
+      }
+      mesh.nodes.push_back(X);
+    }
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j) {
+      const int a = node(i, j), b = node(i + 1, j), c = node(i + 1, j + 1), d = node(i, j + 1);
+      if (cells == Cells::same_diagonal || (i + j) % 2 == 0) {
+        mesh.triangles.push_back({a, b, c});
+        mesh.triangles.push_back({a, c, d});
+      } else {
+        mesh.triangles.push_back({a, b, d});
+        mesh.triangles.push_back({b, c, d});
+      }
+    }
+  for (int k = 0; k < static_cast<int>(mesh.triangles.size()); ++k)
+    mesh.surface_tags["bottom"].push_back(k);
+  const auto add_edge = [&](const std::string& tag, int a, int b) {
+    mesh.edge_tags[tag].push_back(static_cast<int>(mesh.edges.size()));
+    mesh.edges.push_back({a, b});
+  };
+  for (int j = 0; j < ny; ++j) {
+    add_edge("left", node(0, j), node(0, j + 1));
+    add_edge("right", node(nx, j), node(nx, j + 1));
+  }
+  for (int i = 0; i < nx; ++i) {
+    add_edge("front", node(i, 0), node(i + 1, 0));
+    add_edge("back", node(i, ny), node(i + 1, ny));
+  }
+  make_shell_surface(mesh, thickness);
+  return mesh;
+}
+
+}  // namespace plisse::shell_test
