@@ -170,7 +170,8 @@ double seeded_unit_value(std::uint64_t engine_output) {
 std::vector<Vec3d> compute_random_imperfection(const Mesh& mesh,
                                                std::span<const std::array<int, 3>> outer_triangles,
                                                double amplitude, std::uint64_t seed,
-                                               const std::vector<std::string>& planar_tags) {
+                                               const std::vector<std::string>& planar_tags,
+                                               const std::vector<HeldPlane>& held_planes) {
   PLISSE_CHECK(std::isfinite(amplitude) && amplitude > 0.0,
                "imperfection: amplitude must be finite and > 0 (got " << amplitude << " mm)");
   PLISSE_CHECK(!outer_triangles.empty(), "imperfection: the outer surface has no triangles");
@@ -184,9 +185,26 @@ std::vector<Vec3d> compute_random_imperfection(const Mesh& mesh,
   }
   const double diameter = (hi - lo).norm();
 
-  // Outer nodes (increasing index: the order of the draws) and their area-weighted normals.
-  const std::vector<BoundaryFace> faces = compute_boundary_faces(mesh);
-  const auto oriented = orient_outward(mesh, faces, outer_triangles, "outer surface");
+  // Outer nodes (increasing index: the order of the draws) and their area-weighted normals. A
+  // shell's mid-surface triangles are oriented consistently already (make_shell_surface) and
+  // are no tetrahedron's faces (I1s).
+  const bool shell = mesh.is_shell();
+  PLISSE_CHECK(!shell || planar_tags.empty(),
+               "imperfection: a shell's surface tags name its faces, not planes (give the "
+               "nodes held in a symmetry plane as held planes)");
+  const std::vector<BoundaryFace> faces =
+      shell ? std::vector<BoundaryFace>{} : compute_boundary_faces(mesh);
+  std::vector<std::array<int, 3>> oriented;
+  if (shell) {
+    for (std::size_t t = 0; t < outer_triangles.size(); ++t)
+      for (int n : outer_triangles[t])
+        PLISSE_CHECK(n >= 0 && n < mesh.n_nodes(), "imperfection: outer surface triangle "
+                                                       << t << " refers to node " << n
+                                                       << ", which does not exist");
+    oriented.assign(outer_triangles.begin(), outer_triangles.end());
+  } else {
+    oriented = orient_outward(mesh, faces, outer_triangles, "outer surface");
+  }
   std::vector<Vec3d> normal_of_node(n_nodes, Vec3d::Zero());
   for (const auto& t : oriented) {
     const Vec3d n = area_normal(mesh, t);  // |n| = 2 area: the weights of (I1)
@@ -207,11 +225,17 @@ std::vector<Vec3d> compute_random_imperfection(const Mesh& mesh,
                           normal_of_node[static_cast<std::size_t>(v)].normalized());
   }
 
-  // Every node takes the shift of its nearest outer node (columns move rigidly).
-  const PointGrid grid(outer_points, lo, hi);
-  std::vector<Vec3d> d(n_nodes);
-  for (std::size_t j = 0; j < n_nodes; ++j)
-    d[j] = outer_shift[static_cast<std::size_t>(grid.nearest(mesh.nodes[j]))];
+  // Every node takes the shift of its nearest outer node (columns move rigidly). On a shell
+  // there is no wall to carry along: the outer nodes take their own shift, the others none.
+  std::vector<Vec3d> d(n_nodes, Vec3d::Zero());
+  if (shell) {
+    for (std::size_t k = 0; k < outer_nodes.size(); ++k)
+      d[static_cast<std::size_t>(outer_nodes[k])] = outer_shift[k];
+  } else {
+    const PointGrid grid(outer_points, lo, hi);
+    for (std::size_t j = 0; j < n_nodes; ++j)
+      d[j] = outer_shift[static_cast<std::size_t>(grid.nearest(mesh.nodes[j]))];
+  }
 
   // Nodes on a symmetry plane stay in it (Π_j of I1).
   for (const std::string& tag : planar_tags) {
@@ -222,6 +246,16 @@ std::vector<Vec3d> compute_random_imperfection(const Mesh& mesh,
         on_plane[static_cast<std::size_t>(v)] = 1;
     for (std::size_t j = 0; j < n_nodes; ++j)
       if (on_plane[j] != 0) d[j] -= n.dot(d[j]) * n;
+  }
+  for (const HeldPlane& plane : held_planes) {
+    PLISSE_CHECK(plane.normal.allFinite() && plane.normal.norm() > 0.0,
+                 "imperfection: a held plane has no normal");
+    const Vec3d n = plane.normal.normalized();
+    for (int v : plane.nodes) {
+      PLISSE_CHECK(v >= 0 && v < mesh.n_nodes(),
+                   "imperfection: a held plane lists node " << v << ", which does not exist");
+      d[static_cast<std::size_t>(v)] -= n.dot(d[static_cast<std::size_t>(v)]) * n;
+    }
   }
 
   // A second-order mesh: the field is that of the corners, interpolated linearly along each edge

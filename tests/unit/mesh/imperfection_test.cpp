@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
+#include <set>
 
 #include "core/error.hpp"
 #include "mesh/generate.hpp"
@@ -246,6 +248,128 @@ TEST(RandomImperfection, WorksOnAFlatSheetAndItsEdges) {
     EXPECT_EQ(d[j].x(), 0.0);
     EXPECT_EQ(d[j].y(), 0.0);
   }
+}
+
+/// The mid-surface of the quarter shell above (radius 10.5 mm, element: shell), whose symmetry
+/// edges sym_x and sym_z lie in the planes x = 0 and z = 0.
+const Mesh& quarter_mid_surface() {
+  static const Mesh mesh = generate_shell_surface(quarter_shell_spec());
+  return mesh;
+}
+
+/// The nodes of the edge tag `tag` held in the plane normal to axis `axis` (what the model
+/// builder gives for a symmetry edge: its nodes and the axis shell_edge_plane_axis decides).
+HeldPlane edge_plane(const Mesh& mesh, const std::string& tag, int axis) {
+  const std::set<int> nodes = edge_nodes(mesh, mesh.edge_tags.at(tag));
+  return {std::vector<int>(nodes.begin(), nodes.end()), Vec3d::Unit(axis)};
+}
+
+std::vector<Vec3d> shell_field(double amplitude, std::uint64_t seed) {
+  const Mesh& mesh = quarter_mid_surface();
+  return compute_random_imperfection(mesh, tagged(mesh, "outer"), amplitude, seed, {},
+                                     {edge_plane(mesh, "sym_x", 0), edge_plane(mesh, "sym_z", 2)});
+}
+
+// (I1s): on a shell the field is ξ_k n_k at every node of the surface, n_k the area-weighted
+// normal of its triangles (computed here again from the triangles), scaled so its largest norm is
+// the amplitude; on a symmetry edge the component normal to the plane is removed.
+TEST(ShellRandomImperfection, IsAlongTheNodeNormalsWithTheAmplitudeAndKeepsTheSymmetryPlanes) {
+  const Mesh& mesh = quarter_mid_surface();
+  ASSERT_TRUE(mesh.is_shell());
+  ASSERT_TRUE(mesh.tets.empty());
+  std::vector<Vec3d> normal(mesh.nodes.size(), Vec3d::Zero());
+  for (const auto& t : mesh.triangles) {
+    const Vec3d n =
+        (mesh.nodes[t[1]] - mesh.nodes[t[0]]).cross(mesh.nodes[t[2]] - mesh.nodes[t[0]]);
+    for (int v : t) normal[v] += n;
+  }
+  const std::set<int> on_x = edge_nodes(mesh, mesh.edge_tags.at("sym_x"));
+  const std::set<int> on_z = edge_nodes(mesh, mesh.edge_tags.at("sym_z"));
+  ASSERT_FALSE(on_x.empty());
+  ASSERT_FALSE(on_z.empty());
+  for (double a : {1e-4, 0.05}) {
+    const auto d = shell_field(a, 7);
+    EXPECT_NEAR(max_norm(d), a, 1e-15 * a);
+    double tangent = 0.0, tangent_edge = 0.0;
+    int moved = 0;
+    for (std::size_t j = 0; j < d.size(); ++j) {
+      Vec3d n = normal[j].normalized();
+      const bool x_plane = on_x.count(static_cast<int>(j)) != 0;
+      const bool z_plane = on_z.count(static_cast<int>(j)) != 0;
+      if (x_plane) {
+        EXPECT_EQ(d[j].x(), 0.0) << "node " << j;
+      }
+      if (z_plane) {
+        EXPECT_EQ(d[j].z(), 0.0) << "node " << j;
+      }
+      // On an edge the direction is the normal without its component across the plane.
+      if (x_plane) n.x() = 0.0;
+      if (z_plane) n.z() = 0.0;
+      n.normalize();
+      const double off = (d[j] - n.dot(d[j]) * n).norm();
+      double& largest = x_plane || z_plane ? tangent_edge : tangent;
+      largest = std::max(largest, off);
+      if (d[j].norm() > 1e-3 * a) ++moved;
+    }
+    std::printf("amplitude %g mm: largest tangent component %.2e mm (edges %.2e mm)\n", a, tangent,
+                tangent_edge);
+    EXPECT_LT(tangent, 1e-14 * a);  // round-off of a normalised vector times a
+    EXPECT_LT(tangent_edge, 1e-14 * a);
+    EXPECT_GT(moved, static_cast<int>(d.size()) / 2);  // ξ is uniform in [-1, 1)
+  }
+}
+
+TEST(ShellRandomImperfection, SameSeedGivesTheSameFieldExactlyAndAnotherSeedAnother) {
+  const auto a = shell_field(0.05, 42), b = shell_field(0.05, 42), c = shell_field(0.05, 43);
+  ASSERT_EQ(a.size(), b.size());
+  double difference = 0.0;
+  for (std::size_t j = 0; j < a.size(); ++j) {
+    EXPECT_EQ(a[j].x(), b[j].x());
+    EXPECT_EQ(a[j].y(), b[j].y());
+    EXPECT_EQ(a[j].z(), b[j].z());
+    difference = std::max(difference, (a[j] - c[j]).norm());
+  }
+  EXPECT_GT(difference, 0.01);
+}
+
+TEST(ShellRandomImperfection, TheInnerFaceGivesTheSameFieldAndTheMeshStaysAShell) {
+  // Both faces' tags list every triangle in the same orientation: the same field.
+  const Mesh& mesh = quarter_mid_surface();
+  const auto outer = shell_field(0.05, 3);
+  const auto inner =
+      compute_random_imperfection(mesh, tagged(mesh, "inner"), 0.05, 3, {},
+                                  {edge_plane(mesh, "sym_x", 0), edge_plane(mesh, "sym_z", 2)});
+  for (std::size_t j = 0; j < outer.size(); ++j) EXPECT_EQ(outer[j], inner[j]);
+  Mesh perturbed = mesh;
+  apply_imperfection(perturbed, outer);
+  EXPECT_TRUE(check_mesh(perturbed).ok());
+  for (int v : edge_nodes(mesh, mesh.edge_tags.at("sym_x"))) EXPECT_EQ(perturbed.nodes[v].x(), 0.0);
+  for (int v : edge_nodes(mesh, mesh.edge_tags.at("sym_z"))) EXPECT_EQ(perturbed.nodes[v].z(), 0.0);
+}
+
+TEST(ShellRandomImperfection, NodesOffTheTaggedTrianglesStayAndSurfaceTagsAreNoPlanes) {
+  const Mesh& mesh = quarter_mid_surface();
+  // Half of the triangles: the nodes of none of them keep d = 0.
+  std::vector<std::array<int, 3>> half(mesh.triangles.begin(),
+                                       mesh.triangles.begin() + mesh.triangles.size() / 2);
+  std::set<int> nodes;
+  for (const auto& t : half) nodes.insert(t.begin(), t.end());
+  const auto d = compute_random_imperfection(mesh, half, 0.05, 3);
+  int held = 0;
+  for (std::size_t j = 0; j < d.size(); ++j)
+    if (!nodes.count(static_cast<int>(j))) {
+      EXPECT_EQ(d[j], Vec3d::Zero()) << "node " << j;
+      ++held;
+    }
+  EXPECT_GT(held, 0);
+  EXPECT_NEAR(max_norm(d), 0.05, 1e-15 * 0.05);
+  EXPECT_THROW(compute_random_imperfection(mesh, tagged(mesh, "outer"), 0.05, 3, {"outer"}), Error);
+  EXPECT_THROW(compute_random_imperfection(mesh, tagged(mesh, "outer"), 0.05, 3, {},
+                                           {HeldPlane{{mesh.n_nodes()}, Vec3d::UnitX()}}),
+               Error);
+  EXPECT_THROW(compute_random_imperfection(mesh, tagged(mesh, "outer"), 0.05, 3, {},
+                                           {HeldPlane{{0}, Vec3d::Zero()}}),
+               Error);
 }
 
 TEST(ModeImperfection, ScalesTheLargestNodalVectorToTheAmplitude) {
