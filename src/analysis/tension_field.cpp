@@ -32,6 +32,21 @@ std::array<double, 2> in_plane_principal(const Mat3d& sigma, const Vec3d& x0, co
   return {mean + radius, mean - radius};
 }
 
+/// Checks the tolerance options (T4).
+void check_options(const TensionFieldSettings& options) {
+  PLISSE_CHECK(
+      !options.tolerance || (std::isfinite(*options.tolerance) && *options.tolerance >= 0.0),
+      "tension field: tolerance must be >= 0");
+  PLISSE_CHECK(std::isfinite(options.relative_tolerance) && options.relative_tolerance >= 0.0,
+               "tension field: relative_tolerance must be >= 0");
+}
+
+/// The state of principal values (s1, s2) under tolerance tau (T4).
+MembraneState classify(const std::array<double, 2>& principal, double tau) {
+  const auto [s1, s2] = principal;
+  return s2 > tau ? MembraneState::taut : s1 > tau ? MembraneState::wrinkled : MembraneState::slack;
+}
+
 }  // namespace
 
 const char* to_string(MembraneState state) {
@@ -143,11 +158,70 @@ TensionField compute_tension_field(
   return out;
 }
 
+TensionField compute_shell_tension_field(const std::vector<Vec3d>& nodes,
+                                         const std::vector<std::array<int, 3>>& elements,
+                                         const std::vector<int>& surface,
+                                         const std::vector<Vec3d>& displacement,
+                                         const std::vector<Mat3d>& cauchy_stress,
+                                         const TensionFieldSettings& options) {
+  const std::size_t n_elements = elements.size();
+  const int n_nodes = static_cast<int>(nodes.size());
+  PLISSE_CHECK(displacement.size() == nodes.size(), "tension field: " << displacement.size()
+                                                                      << " displacements for "
+                                                                      << nodes.size() << " nodes");
+  PLISSE_CHECK(cauchy_stress.size() == n_elements, "tension field: " << cauchy_stress.size()
+                                                                     << " stresses for "
+                                                                     << n_elements << " triangles");
+  check_options(options);
+  for (const auto& t : elements)
+    for (int a : t)
+      PLISSE_CHECK(a >= 0 && a < n_nodes, "tension field: triangle node " << a << " out of range");
+  for (int e : surface)
+    PLISSE_CHECK(e >= 0 && e < static_cast<int>(n_elements),
+                 "tension field: surface triangle " << e << " out of range");
+  const auto x = [&](int a) {
+    const auto i = static_cast<std::size_t>(a);
+    return Vec3d(nodes[i] + displacement[i]);
+  };
+
+  // Each triangle is its own column (T1s): its principal values in its deformed plane (T2-T3).
+  std::vector<std::array<double, 2>> principal(n_elements);
+  double largest = 0.0;
+  for (std::size_t e = 0; e < n_elements; ++e) {
+    const auto& t = elements[e];
+    principal[e] = in_plane_principal(cauchy_stress[e], x(t[0]), x(t[1]), x(t[2]));
+    largest = std::max(largest, std::abs(principal[e][0]));
+  }
+  TensionField out;
+  out.tolerance = options.tolerance.value_or(options.relative_tolerance * largest);  // T4
+  out.element_state.resize(n_elements);
+  for (std::size_t e = 0; e < n_elements; ++e) {
+    out.element_state[e] = classify(principal[e], out.tolerance);
+    ++out.n_elements[static_cast<std::size_t>(out.element_state[e])];
+  }
+  out.triangle_state.reserve(surface.size());
+  out.principal_stress.reserve(surface.size());
+  for (int e : surface) {
+    const MembraneState s = out.element_state[static_cast<std::size_t>(e)];
+    out.triangle_state.push_back(s);
+    out.principal_stress.push_back(principal[static_cast<std::size_t>(e)]);
+    ++out.n_triangles[static_cast<std::size_t>(s)];
+  }
+  return out;
+}
+
 TensionField compute_tension_field(const Mesh& mesh, const std::vector<Vec3d>& displacement,
                                    const std::vector<Mat3d>& cauchy_stress,
                                    const std::vector<double>& J,
                                    const TensionFieldSettings& options,
                                    const std::string& outer_tag) {
+  if (mesh.is_shell()) {
+    const auto tag = mesh.surface_tags.find(outer_tag);
+    PLISSE_CHECK(tag != mesh.surface_tags.end(),
+                 "the mesh has no surface tag '" << outer_tag << "'");
+    return compute_shell_tension_field(mesh.nodes, mesh.triangles, tag->second, displacement,
+                                       cauchy_stress, options);
+  }
   const auto triangles = tagged_triangles(mesh, outer_tag);
   const auto column = assign_columns(mesh.nodes, mesh.tets, triangles);
   return compute_tension_field(mesh.nodes, mesh.tets, triangles, column, displacement,

@@ -58,8 +58,29 @@ TensionField compute_tension_field(
     const std::vector<Vec3d>& displacement, const std::vector<Mat3d>& cauchy_stress,
     const std::vector<double>& J, const TensionFieldSettings& options = {});
 
+/// Tension-field state of a shell (element: shell; wrinkles.md, T1s): its elements are the
+/// mid-surface triangles, each its own column, whose stress is the element's Cauchy stress
+/// averaged through the thickness.
+///  - `nodes`: reference positions; `elements`: the shell's triangles (mesh.triangles), whose
+///    order the stresses follow;
+///  - `surface`: the measured surface's triangles (a face tag of the shell, which lists every
+///    triangle for the generated shells) as indices into `elements`; triangle_state and
+///    principal_stress are theirs, in this order;
+///  - `displacement`: per node [mm] (the tangent planes are those of the deformed triangles);
+///  - `cauchy_stress`: per element, its thickness-averaged Cauchy stress [MPa].
+/// Every element is classified (element_state, n_elements) with its own in-plane principal
+/// values; the default tolerance is relative_tolerance times the largest |sigma_1| over the
+/// elements (T4). Throws Error on inconsistent sizes or indices.
+TensionField compute_shell_tension_field(const std::vector<Vec3d>& nodes,
+                                         const std::vector<std::array<int, 3>>& elements,
+                                         const std::vector<int>& surface,
+                                         const std::vector<Vec3d>& displacement,
+                                         const std::vector<Mat3d>& cauchy_stress,
+                                         const TensionFieldSettings& options = {});
+
 /// Same on `mesh` with the triangles tagged `outer_tag` (columns computed here; when calling
-/// every step, compute them once with assign_columns and use the overload above).
+/// every step, compute them once with assign_columns and use the overload above). On a shell
+/// mesh, compute_shell_tension_field with the tag's triangles (`J` is not used).
 TensionField compute_tension_field(const Mesh& mesh, const std::vector<Vec3d>& displacement,
                                    const std::vector<Mat3d>& cauchy_stress,
                                    const std::vector<double>& J,

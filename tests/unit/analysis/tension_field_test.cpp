@@ -210,3 +210,106 @@ TEST(TensionField, InconsistentInputIsAnError) {
 
 }  // namespace
 }  // namespace plisse
+
+namespace plisse {
+namespace {
+
+// The tension field of a shell (element: shell; wrinkles.md, T1s): each mid-surface triangle is
+// its own column. A flat sheet (20 x 10 mm, triangles of 1 mm), turned out of the coordinate
+// planes by Q, in a homogeneous in-plane stretch (λ1, λ2) along axes turned by β in its plane:
+// incompressible plane stress of a neo-Hookean membrane, σ_α = 2 c1 (λ_α² − λ3²),
+// λ3 = 1/(λ1 λ2) (docs/theory/shell.md, section 9: the closed form the shell element meets to
+// round-off). Uniaxial tension with the lateral contraction free, λ2 = λ3 = λ1^(-1/2), has σ2 = 0
+// exactly: wrinkled.
+struct FlatState {
+  double lambda1, lambda2;
+  MembraneState state;
+};
+
+TEST(ShellTensionField, HomogeneousStatesOfATiltedSheetAreClassifiedFromTheirPrincipalStresses) {
+  MeshGenerationSpec spec;
+  spec.kind = "sheet";
+  spec.length = 20.0;
+  spec.width = 10.0;
+  spec.thickness = 0.5;
+  spec.element_size = 1.0;
+  Mesh mesh = generate_shell_surface(spec);
+  ASSERT_TRUE(mesh.is_shell());
+  const Mat3d Q = (Eigen::AngleAxisd(0.4, Vec3d(1.0, 2.0, 0.5).normalized())).toRotationMatrix();
+  for (Vec3d& X : mesh.nodes) X = Q * X;
+  const double c1 = 0.2, beta = 0.3;
+  // The in-plane axes of the stretch: e1, e2 turned by β about the sheet's normal Q e_z.
+  const Vec3d a1 = Q * Vec3d(std::cos(beta), std::sin(beta), 0.0);
+  const Vec3d a2 = Q * Vec3d(-std::sin(beta), std::cos(beta), 0.0);
+  const Vec3d a3 = Q * Vec3d::UnitZ();
+  const std::vector<int> all = mesh.surface_tags.at("top");
+  ASSERT_EQ(all.size(), mesh.triangles.size());
+  for (const FlatState& f :
+       {FlatState{1.2, 1.1, MembraneState::taut},
+        FlatState{1.3, 1.0 / std::sqrt(1.3), MembraneState::wrinkled},
+        FlatState{1.3, 0.8, MembraneState::wrinkled}, FlatState{0.9, 0.95, MembraneState::slack}}) {
+    SCOPED_TRACE("λ1 = " + std::to_string(f.lambda1) + ", λ2 = " + std::to_string(f.lambda2));
+    const double lambda3 = 1.0 / (f.lambda1 * f.lambda2);
+    const double s1 = 2 * c1 * (f.lambda1 * f.lambda1 - lambda3 * lambda3);
+    const double s2 = 2 * c1 * (f.lambda2 * f.lambda2 - lambda3 * lambda3);
+    const Mat3d F = f.lambda1 * a1 * a1.transpose() + f.lambda2 * a2 * a2.transpose() +
+                    lambda3 * a3 * a3.transpose();
+    const Mat3d sigma = s1 * a1 * a1.transpose() + s2 * a2 * a2.transpose();
+    std::vector<Vec3d> u;
+    for (const Vec3d& X : mesh.nodes) u.push_back((F - Mat3d::Identity()) * X);
+    const std::vector<Mat3d> stress(mesh.triangles.size(), sigma);
+    const TensionField tf = compute_shell_tension_field(mesh.nodes, mesh.triangles, all, u, stress);
+    ASSERT_EQ(tf.element_state.size(), mesh.triangles.size());
+    ASSERT_EQ(tf.triangle_state.size(), all.size());
+    const double larger = std::max(s1, s2), smaller = std::min(s1, s2);
+    EXPECT_NEAR(tf.tolerance, 1e-6 * std::abs(larger), 1e-15);
+    for (std::size_t e = 0; e < all.size(); ++e) {
+      EXPECT_EQ(tf.element_state[e], f.state) << "triangle " << e;
+      EXPECT_EQ(tf.triangle_state[e], f.state) << "triangle " << e;
+      EXPECT_NEAR(tf.principal_stress[e][0], larger, 1e-13 * std::abs(larger));
+      EXPECT_NEAR(tf.principal_stress[e][1], smaller, 1e-13 * std::abs(larger));
+    }
+    EXPECT_EQ(tf.n_elements[static_cast<int>(f.state)], static_cast<int>(mesh.triangles.size()));
+    EXPECT_EQ(tf.n_triangles[static_cast<int>(f.state)], static_cast<int>(all.size()));
+    // The same through the mesh overload, which takes the shell path for a shell mesh.
+    const TensionField again = compute_tension_field(mesh, u, stress, {}, {}, "bottom");
+    EXPECT_EQ(again.element_state, tf.element_state);
+  }
+}
+
+TEST(ShellTensionField, EachTriangleIsItsOwnColumnAndTheSurfaceListsItsOwn) {
+  // The left half of the sheet in biaxial tension, the right half compressed: the counts split
+  // exactly by the triangles' centroids, and a surface of some triangles reports those.
+  MeshGenerationSpec spec;
+  spec.kind = "sheet";
+  spec.length = 20.0;
+  spec.width = 10.0;
+  spec.thickness = 0.5;
+  spec.element_size = 2.0;
+  const Mesh mesh = generate_shell_surface(spec);
+  std::vector<Mat3d> stress;
+  int left = 0;
+  std::vector<int> surface;
+  for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
+    const auto& t = mesh.triangles[e];
+    const double x = (mesh.nodes[t[0]].x() + mesh.nodes[t[1]].x() + mesh.nodes[t[2]].x()) / 3.0;
+    const bool tension = x < 10.0;
+    left += tension;
+    stress.push_back(tension ? Mat3d(Vec3d(1.0, 0.5, 0.0).asDiagonal())
+                             : Mat3d(Vec3d(-1.0, -0.5, 0.0).asDiagonal()));
+    if (e % 3 == 0) surface.push_back(static_cast<int>(e));
+  }
+  const std::vector<Vec3d> u(mesh.nodes.size(), Vec3d::Zero());
+  const TensionField tf =
+      compute_shell_tension_field(mesh.nodes, mesh.triangles, surface, u, stress);
+  EXPECT_EQ(tf.n_elements[0], left);
+  EXPECT_EQ(tf.n_elements[2], static_cast<int>(mesh.triangles.size()) - left);
+  ASSERT_EQ(tf.triangle_state.size(), surface.size());
+  for (std::size_t k = 0; k < surface.size(); ++k)
+    EXPECT_EQ(tf.triangle_state[k], tf.element_state[static_cast<std::size_t>(surface[k])]);
+  EXPECT_THROW(compute_shell_tension_field(mesh.nodes, mesh.triangles, {-1}, u, stress), Error);
+  EXPECT_THROW(compute_shell_tension_field(mesh.nodes, mesh.triangles, surface, u, {}), Error);
+}
+
+}  // namespace
+}  // namespace plisse

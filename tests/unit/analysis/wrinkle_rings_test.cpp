@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -668,6 +669,82 @@ TEST(WrinkleRings, AirbagEquatorRing) {
   EXPECT_NEAR(r.amplitude, 2 * A, kAmplitudeTolerance * 2 * A);
   EXPECT_NEAR(r.mean_radius, 12.25, 5e-3 * 12.25);
   EXPECT_NEAR(r.wavelength, 2 * kPi * r.mean_radius / m, 1e-12);
+}
+
+// Shells (element: shell): the rings lie on the mid-surface triangles of the tag, every one of
+// them (`outer` and `inner` name the two faces of the same triangles). The generated mid-surface
+// of the shell above has radius 10.5 mm and the same element size, 0.5 mm, so the amplitude
+// bound of kAmplitudeTolerance holds as on the solid's outer surface; the rings' mean radius is
+// that of the mid-surface, R cos(phi0) within the chord sag.
+TEST(WrinkleRings, ShellMidSurfaceCountsAndAmplitudes) {
+  constexpr double kMid = kInner + kThickness / 2;
+  const CylindricalFrame frame(1, Vec3d::Zero());
+  const double A = 0.02;
+  for (Symmetry symmetry : {Symmetry::full, Symmetry::octant}) {
+    MeshGenerationSpec spec;
+    spec.kind = "spherical-shell";
+    spec.inner_radius = kInner;
+    spec.thickness = kThickness;
+    spec.element_size = kSize;
+    spec.symmetry = symmetry;
+    const Mesh mesh = generate_shell_surface(spec);
+    ASSERT_TRUE(mesh.is_shell());
+    const double sector = symmetry == Symmetry::full ? 360.0 : 90.0;
+    for (int m : {4, 8})
+      for (double lat : {0.0, 30.0})
+        for (const char* tag : {"outer", "inner"}) {
+          SCOPED_TRACE(std::string(tag) + (symmetry == Symmetry::full ? ", full" : ", octant"));
+          const auto u = displacement(mesh, radial_wrinkles(frame, A, m, 0.0, lat * kDeg));
+          const WrinkleReport r = evaluate_wrinkles(mesh, u, options_for({lat}), tag);
+          ASSERT_EQ(r.rings.size(), 1u);
+          const RingMetrics& ring = r.rings[0];
+          EXPECT_EQ(ring.count, m);
+          EXPECT_EQ(ring.sector_deg, sector);
+          EXPECT_EQ(ring.decision, RingDecision::below_threshold);  // 0.04 mm < 0.1 t
+          EXPECT_NEAR(ring.amplitude, 2 * A, kAmplitudeTolerance * 2 * A);
+          EXPECT_NEAR(ring.mean_radius, kMid * std::cos(lat * kDeg),
+                      5e-3 * kMid * std::cos(lat * kDeg));
+          if (lat == 0.0 && m == 8 && symmetry == Symmetry::full)
+            std::printf(
+                "shell mid-surface, m = 8 at the equator (%s): amplitude %.5f mm "
+                "(2A = %.5f mm), radius %.4f mm\n",
+                tag, ring.amplitude, 2 * A, ring.mean_radius);
+        }
+  }
+}
+
+TEST(WrinkleRings, ShellTubeRingsAboutItsAxis) {
+  // A tube (mid-surface radius 10 mm, length 40 mm, axis x) with u = A cos(m theta) e_rho: the
+  // rings about x through its middle; latitude phi0 meets the tube at x = 20 + R tan(phi0).
+  MeshGenerationSpec spec;
+  spec.kind = "tube";
+  spec.radius = 10.0;
+  spec.length = 40.0;
+  spec.thickness = 0.5;
+  spec.element_size = 0.5;
+  const Mesh mesh = generate_shell_surface(spec);
+  const CylindricalFrame frame(0, Vec3d(20.0, 0.0, 0.0));
+  const double A = 0.05;
+  for (int m : {5, 12}) {
+    const auto u = displacement(mesh, [&](const Vec3d& X) {
+      const CylindricalCoordinates c = frame.coordinates(X);
+      return Vec3d(A * std::cos(m * c.theta) * frame.radial(c.theta));
+    });
+    WrinkleMeasureSettings o = options_for({0.0, 30.0});
+    o.rings.axis = 0;
+    o.rings.center = Vec3d(20.0, 0.0, 0.0);
+    o.thickness = 0.5;
+    const WrinkleReport r = evaluate_wrinkles(mesh, u, o, "outer");
+    ASSERT_EQ(r.rings.size(), 2u);
+    for (const RingMetrics& ring : r.rings) {
+      SCOPED_TRACE("m = " + std::to_string(m) + ", latitude " + std::to_string(ring.latitude_deg));
+      EXPECT_EQ(ring.count, m);
+      EXPECT_EQ(ring.sector_deg, 360.0);
+      EXPECT_EQ(ring.decision, RingDecision::wrinkled);  // 2A = 0.1 mm > 0.1 t = 0.05 mm
+      EXPECT_NEAR(ring.amplitude, 2 * A, kAmplitudeTolerance * 2 * A);
+      EXPECT_NEAR(ring.mean_radius, 10.0, 5e-3 * 10.0);
+    }
+  }
 }
 
 TEST(WrinkleRings, InvalidOptionsAreErrors) {
