@@ -65,12 +65,13 @@ MeasuredState measure_step_file(const fs::path& dir, int step, const Mesh& mesh,
     const VtuField cauchy = read_vtu_cell_field(dir / e.file, "cauchy_stress");
     const VtuField J = read_vtu_cell_field(dir / e.file, "J");
     const auto n_nodes = static_cast<std::size_t>(mesh.n_nodes());
-    const auto n_cells = static_cast<std::size_t>(mesh.n_tets());
+    const auto n_cells = static_cast<std::size_t>(n_mesh_cells(mesh));
     if (u.values.size() != 3 * n_nodes || cauchy.values.size() != 6 * n_cells ||
         J.values.size() != n_cells)
       throw InputError({(dir / e.file).string(), 0, 0, "--step"},
                        "the step file does not fit the case's mesh (" + std::to_string(n_nodes) +
-                           " nodes, " + std::to_string(n_cells) + " tetrahedra)");
+                           " nodes, " + std::to_string(n_cells) +
+                           (mesh.is_shell() ? " triangles)" : " tetrahedra)"));
     std::vector<Vec3d> displacement(n_nodes);
     for (std::size_t v = 0; v < n_nodes; ++v)
       displacement[v] = Vec3d(u.values[3 * v], u.values[3 * v + 1], u.values[3 * v + 2]);

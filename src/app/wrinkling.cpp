@@ -133,6 +133,28 @@ void snap_to_symmetry_planes(const Case& c, Mesh& mesh) {
   }
 }
 
+/// The nodes a shell's symmetry conditions hold in their planes, with the planes' normals: the
+/// nodes of each symmetry edge and the axis its condition holds (shell_edge_plane_axis, as
+/// hold_in_plane decides it), or of a symmetry surface tag in a coordinate plane. A condition
+/// whose plane cannot be decided is left out here; the model builder refuses it at its key.
+std::vector<HeldPlane> shell_symmetry_planes(const Case& c, const Mesh& mesh) {
+  std::vector<HeldPlane> planes;
+  for (const std::string& surface : mirror_surfaces(c.terms)) {
+    int axis = -1;
+    std::set<int> nodes;
+    if (const std::vector<int>* edges = shell_edge_tag(mesh, surface)) {
+      axis = shell_edge_plane_axis(mesh, *edges);
+      nodes = edge_nodes(mesh, *edges);
+    } else if (const auto tag = mesh.surface_tags.find(surface); tag != mesh.surface_tags.end()) {
+      axis = coordinate_plane_axis(mesh, tag->second);
+      nodes = triangle_nodes(mesh, tag->second);
+    }
+    if (axis < 0) continue;
+    planes.push_back({std::vector<int>(nodes.begin(), nodes.end()), Vec3d::Unit(axis)});
+  }
+  return planes;
+}
+
 /// The sides of a shell's clamped and symmetry edges (Mesh::side_mirrors), from the reference
 /// positions the model starts from.
 void hold_shell_slopes(const Case& c, Mesh& mesh) {
@@ -163,9 +185,14 @@ Mesh load_perturbed_mesh(const Case& c) {
         throw InputError(imperfection_place(c),
                          "a random imperfection moves the wall along the normals of the surface '" +
                              tag + "' (output.wrinkles.surface), which the mesh does not have");
-      field = compute_random_imperfection(mesh, tagged_triangles(mesh, tag), amplitude,
-                                          static_cast<std::uint64_t>(st.seed),
-                                          mirror_surfaces(c.terms));
+      if (mesh.is_shell())
+        field = compute_random_imperfection(mesh, tagged_triangles(mesh, tag), amplitude,
+                                            static_cast<std::uint64_t>(st.seed), {},
+                                            shell_symmetry_planes(c, mesh));
+      else
+        field = compute_random_imperfection(mesh, tagged_triangles(mesh, tag), amplitude,
+                                            static_cast<std::uint64_t>(st.seed),
+                                            mirror_surfaces(c.terms));
     }
     apply_imperfection(mesh, field);
     snap_to_symmetry_planes(c, mesh);  // the imperfection keeps plane nodes in their plane
@@ -199,7 +226,11 @@ WrinkleMeter::WrinkleMeter(const Case& c, const Mesh& mesh) : surface_(c.output.
   options_.threshold_fraction = w.threshold;
   triangles_ = tagged_triangles(mesh, surface_);
   ring_triangles_ = sampling_triangles(mesh, surface_);
-  columns_ = assign_columns(mesh.nodes, mesh.tets, triangles_);
+  // A shell's triangles are its elements and each is its own column (wrinkles.md, T1s).
+  if (mesh.is_shell())
+    shell_surface_ = mesh.surface_tags.at(surface_);
+  else
+    columns_ = assign_columns(mesh.nodes, mesh.tets, triangles_);
   triangle_area_.reserve(triangles_.size());
   for (const auto& t : triangles_) triangle_area_.push_back(triangle_area(mesh, t));
 }
@@ -220,7 +251,10 @@ WrinkleMeter::Result WrinkleMeter::evaluate(const Mesh& mesh, const std::vector<
                                             const std::vector<double>& J) const {
   Result r;
   r.rings = evaluate_wrinkles(mesh.nodes, ring_triangles_, u, options_);
-  r.tension = compute_tension_field(mesh.nodes, mesh.tets, triangles_, columns_, u, sigma, J);
+  if (mesh.is_shell())
+    r.tension = compute_shell_tension_field(mesh.nodes, mesh.triangles, shell_surface_, u, sigma);
+  else
+    r.tension = compute_tension_field(mesh.nodes, mesh.tets, triangles_, columns_, u, sigma, J);
   return r;
 }
 

@@ -31,7 +31,8 @@ Mesh load_perturbed_mesh(const Case& c);
 StabilityCheckSettings stability_check_settings(const Case& c);
 
 /// Wrinkle metrics of converged states of one model (output.wrinkles). Holds the outer
-/// triangles and the through-thickness columns, computed once.
+/// triangles and the through-thickness columns, computed once; on a shell mesh the rings lie on
+/// the mid-surface triangles of the surface tag and each triangle is its own column.
 class WrinkleMeter {
  public:
   /// Requires c.output.wrinkles.enabled() and a wall thickness (checked with the case).
@@ -44,7 +45,8 @@ class WrinkleMeter {
   /// Metrics of the model's current state, whose element_fields() are `fields`.
   Result evaluate(const MixedModel& model, const std::vector<ElementFields>& fields) const;
   /// The same from a state given by its nodal displacements `u` and per-element Cauchy stress
-  /// and J (a step file's fields) on `mesh`, the mesh this meter was made for.
+  /// and J (a step file's fields) on `mesh`, the mesh this meter was made for (on a shell, one
+  /// stress per triangle, its thickness average; J is not used).
   Result evaluate(const Mesh& mesh, const std::vector<Vec3d>& u, const std::vector<Mat3d>& sigma,
                   const std::vector<double>& J) const;
 
@@ -59,7 +61,8 @@ class WrinkleMeter {
   std::string surface_;
   std::vector<std::array<int, 3>> triangles_;       ///< the surface's corner triangles
   std::vector<std::array<int, 3>> ring_triangles_;  ///< sampling_triangles of the surface
-  std::vector<int> columns_;
+  std::vector<int> columns_;        ///< solid meshes: the triangle of each tetrahedron's column
+  std::vector<int> shell_surface_;  ///< shell meshes: the surface's triangles (= elements)
   std::vector<double> triangle_area_;
 };
 

@@ -1,6 +1,7 @@
 // element: shell through the command line: the example balloon against the thin-shell closed form,
-// and strips with clamped and hinged edges against beam theory, read, checked, built and run as
-// case files.
+// strips with clamped and hinged edges against beam theory, an inflated octant with a random
+// imperfection and the wrinkle metrics, and a strip buckled through a mode imperfection taken
+// from an earlier run's eigenmode, read, checked, built and run as case files.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +12,8 @@
 #include <string>
 
 #include "output/history_writer.hpp"
+#include "output/json_file.hpp"
+#include "output/vtu_reader.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {
@@ -121,6 +124,153 @@ TEST(ShellCase, ClampedAndHingedStripsStoreTheBeamEnergy) {
     EXPECT_NEAR(energy, exact, 1e-2 * exact);
     EXPECT_NEAR(reaction, -q * L * W / 2.0, 1e-6 * q * L * W);
   }
+}
+
+/// Writes `text` to a fresh case file `name`.yaml and returns its path.
+fs::path write_case(const std::string& name, const std::string& text) {
+  const fs::path dir = test::scratch_directory(name + "-case");
+  fs::create_directories(dir);
+  const fs::path file = dir / (name + ".yaml");
+  std::ofstream(file) << text;
+  return file;
+}
+
+/// The largest |value| of component `k` of the point field `name` of `vtu`.
+double largest_component(const fs::path& vtu, const std::string& name, int k) {
+  const VtuField f = read_vtu_point_field(vtu, name);
+  double largest = 0.0;
+  for (std::size_t i = static_cast<std::size_t>(k); i < f.values.size(); i += 3)
+    largest = std::max(largest, std::abs(f.values[i]));
+  return largest;
+}
+
+// An inflated octant (mid-surface radius 10 mm, t = 0.2 mm, c1 = 0.5 MPa) with a random
+// imperfection of 0.05 t and the wrinkle metrics: `plisse check` and `plisse run` accept it, the
+// history has the wrinkle columns, every triangle is taut (an inflated sphere is in equibiaxial
+// tension), the step files carry wrinkle_state per triangle, and `plisse wrinkles DIR` measures
+// the same table again in another process, from the checkpoint and from a step file.
+TEST(ShellCase, InflatedOctantWithARandomImperfectionMeasuresItsWrinkles) {
+  const fs::path file = write_case("shell-wrinkles",
+                                   "element: shell\n"
+                                   "mesh: {generate: spherical-shell, inner_radius: 9.9, "
+                                   "thickness: 0.2, element_size: 1.5, symmetry: octant}\n"
+                                   "material: {model: neo-hookean, c1: 0.5}\n"
+                                   "boundary:\n"
+                                   "  - {type: symmetry, surface: sym_x}\n"
+                                   "  - {type: symmetry, surface: sym_y}\n"
+                                   "  - {type: symmetry, surface: sym_z}\n"
+                                   "loads:\n"
+                                   "  - {type: pressure, name: p, surface: inner, value: 0.005}\n"
+                                   "solver: {steps: 4, stability: {check: true, imperfection: "
+                                   "0.05, seed: 3}}\n"
+                                   "output: {wrinkles: {axis: y, rings_deg: [15, 45, 75]}}\n");
+  auto r = test::run_plisse_captured("check '" + file.string() + "'");
+  EXPECT_EQ(r.status, 0) << r.output;
+  const fs::path dir = test::scratch_directory("shell-wrinkles");
+  fs::remove_all(dir);
+  r = test::run_plisse_captured("run '" + file.string() + "' -o '" + dir.string() + "'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const HistoryTable h = read_history(dir / "history.csv");
+  ASSERT_FALSE(h.rows.empty());
+  for (const char* name :
+       {"wrinkle_amplitude", "wrinkle_count", "wrinkled_fraction", "slack_fraction"}) {
+    const std::vector<double> values = column(h, name);
+    ASSERT_EQ(values.size(), h.rows.size()) << name;
+    for (double v : values) EXPECT_TRUE(std::isfinite(v)) << name;
+  }
+  for (double f : column(h, "wrinkled_fraction")) EXPECT_EQ(f, 0.0);
+  for (double f : column(h, "slack_fraction")) EXPECT_EQ(f, 0.0);
+  for (double s : column(h, "stable")) EXPECT_EQ(s, 1.0);
+  const nlohmann::json run = read_json_file(dir / "summary.json");
+  const auto& w = run["wrinkles"];
+  const int triangles = run["elements"].get<int>();
+  EXPECT_EQ(w["tension_field"]["taut"].get<int>(), triangles);
+  EXPECT_EQ(w["tension_field"]["wrinkled"].get<int>() + w["tension_field"]["slack"].get<int>(), 0);
+  ASSERT_EQ(w["rings"].size(), 3u);
+  for (const auto& ring : w["rings"]) {
+    EXPECT_GE(ring["points"].get<int>(), 4);
+    EXPECT_EQ(ring["sector_deg"].get<double>(), 90.0);
+  }
+  const std::string last_step = std::to_string(h.rows.size());
+  const fs::path last =
+      dir / ("step_" + std::string(4 - last_step.size(), '0') + last_step + ".vtu");
+  const VtuField state = read_vtu_cell_field(last, "wrinkle_state");
+  ASSERT_EQ(state.values.size(), static_cast<std::size_t>(triangles));
+  for (double v : state.values) EXPECT_EQ(v, 0.0);  // taut
+
+  r = test::run_plisse_captured("wrinkles '" + dir.string() + "'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(read_json_file(dir / "wrinkles.json")["wrinkles"], w);
+  r = test::run_plisse_captured("wrinkles '" + dir.string() + "' --step " + last_step);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(read_json_file(dir / "wrinkles.json")["wrinkles"], w);
+}
+
+// A strip (L = 20 mm, W = 2 mm, t = 0.5 mm, neo-Hookean c1 = 0.5 MPa) clamped at x = 0, its end
+// x = L moved by -0.1 mm (its slope free): a column clamped at one end and pinned at the other,
+// Euler strain π² t² / (12 (0.699 L)²) = 1.05e-3 (E = 6 c1, I / A = t² / 12), 0.021 mm of
+// shortening. The stability check finds the instability and writes the modes; the perfect strip
+// stays flat. A second run seeded with 0.01 t of its mode_1 (imperfection_kind: mode) has no
+// bifurcation and ends on the buckled branch, far out of the plane.
+TEST(ShellCase, ModeImperfectionFromAShellRunLeadsOntoTheBuckledBranch) {
+  const fs::path file = write_case("shell-strip-buckling",
+                                   "element: shell\n"
+                                   "mesh: {generate: sheet, length: 20.0, width: 2.0, thickness: "
+                                   "0.5, element_size: 0.5}\n"
+                                   "material: {model: neo-hookean, c1: 0.5}\n"
+                                   "boundary:\n"
+                                   "  - {type: clamped, surface: left}\n"
+                                   "  - {type: displacement, surface: right, value: [-0.1, 0, 0]}\n"
+                                   "solver:\n"
+                                   "  steps: 20\n"
+                                   "  max_step: 0.05\n"
+                                   "  growth: 1.0\n"
+                                   "  stability: {check: true, modes: 2}\n"
+                                   "output: {every: 5}\n");
+  const fs::path perfect = test::scratch_directory("shell-strip-perfect");
+  fs::remove_all(perfect);
+  auto r = test::run_plisse_captured("run '" + file.string() + "' -o '" + perfect.string() + "'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const nlohmann::json s = read_json_file(perfect / "summary.json");
+  const auto& instabilities = s["stability"]["instabilities"];
+  ASSERT_GE(instabilities.size(), 1u) << s.dump(1);
+  const auto& first = instabilities[0];
+  EXPECT_EQ(first["expected_negative_pivots"].get<int>(), 0);  // a shell has no pressure unknowns
+  EXPECT_EQ(first["negative_pivots"].get<int>(), 1);
+  // Found at the first step past the Euler strain: steps of 0.05 of 0.1 mm, 5e-3 in strain.
+  const double eps_cr = M_PI * M_PI * 0.25 / (12.0 * std::pow(0.699 * 20.0, 2));
+  const double eps = first["time"].get<double>() * 0.1 / 20.0;
+  std::printf("instability at end strain %.3e; clamped-pinned Euler strain %.3e\n", eps, eps_cr);
+  EXPECT_GE(eps, eps_cr);
+  EXPECT_LE(eps, eps_cr + 0.05 * 0.1 / 20.0 * 1.5);
+  const fs::path modes = perfect / first["file"].get<std::string>();
+  EXPECT_GT(largest_component(modes, "mode_1", 2), 0.0);
+  const HistoryTable h = read_history(perfect / "history.csv");
+  const std::string n_perfect = std::to_string(h.rows.size());
+  const double w_perfect = largest_component(
+      perfect / ("step_" + std::string(4 - n_perfect.size(), '0') + n_perfect + ".vtu"),
+      "displacement", 2);
+
+  const fs::path imperfect = test::scratch_directory("shell-strip-imperfect");
+  fs::remove_all(imperfect);
+  r = test::run_plisse_captured("run '" + file.string() + "' -o '" + imperfect.string() +
+                                "' --set solver.stability.imperfection=0.01"
+                                " --set solver.stability.imperfection_kind=mode"
+                                " --set solver.stability.imperfection_from='" +
+                                perfect.string() + "'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const nlohmann::json si = read_json_file(imperfect / "summary.json");
+  EXPECT_EQ(si["stability"]["instabilities"].size(), 0u) << si.dump(1);
+  EXPECT_TRUE(si["stability"]["stable_at_end"].get<bool>());
+  const HistoryTable hi = read_history(imperfect / "history.csv");
+  const std::string n = std::to_string(hi.rows.size());
+  const double w_imperfect = largest_component(
+      imperfect / ("step_" + std::string(4 - n.size(), '0') + n + ".vtu"), "displacement", 2);
+  std::printf(
+      "largest out-of-plane displacement: perfect %.3e mm, imperfect %.3e mm (seed %.3e mm)\n",
+      w_perfect, w_imperfect, 0.01 * 0.5);
+  EXPECT_LT(w_perfect, 1e-6);
+  EXPECT_GT(w_imperfect, 100 * 0.01 * 0.5);
 }
 
 }  // namespace
