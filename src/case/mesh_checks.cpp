@@ -118,8 +118,6 @@ void check_element_family(const Case& c, const Mesh& mesh) {
   if (!m.inelastic().elastic())
     refuse(m.place, "a viscoelastic or Mullins material (history at the thickness points)");
   if (m.shell_fibre_frame) refuse(m.fibre_frame_place, "`fibre_frame: shell`");
-  const StabilitySettings& st = c.solver.stability;
-  if (st.branch_switch) refuse(st.place, "`solver.stability.branch_switch`");
   if (c.solver.viscosity > 0.0)
     refuse(InputPlace{c.path, 0, 0, "solver.viscosity"}, "`solver.viscosity`");
 }

@@ -211,8 +211,9 @@ TEST(ShellCase, InflatedOctantWithARandomImperfectionMeasuresItsWrinkles) {
 // Euler strain π² t² / (12 (0.699 L)²) = 1.05e-3 (E = 6 c1, I / A = t² / 12), 0.021 mm of
 // shortening. The stability check finds the instability and writes the modes; the perfect strip
 // stays flat. A second run seeded with 0.01 t of its mode_1 (imperfection_kind: mode) has no
-// bifurcation and ends on the buckled branch, far out of the plane.
-TEST(ShellCase, ModeImperfectionFromAShellRunLeadsOntoTheBuckledBranch) {
+// bifurcation and ends on the buckled branch, far out of the plane; a third switches branches at
+// the instability and ends there too.
+TEST(ShellCase, ModeImperfectionAndBranchSwitchingLeadOntoTheBuckledBranch) {
   const fs::path file = write_case("shell-strip-buckling",
                                    "element: shell\n"
                                    "mesh: {generate: sheet, length: 20.0, width: 2.0, thickness: "
@@ -271,6 +272,29 @@ TEST(ShellCase, ModeImperfectionFromAShellRunLeadsOntoTheBuckledBranch) {
       w_perfect, w_imperfect, 0.01 * 0.5);
   EXPECT_LT(w_perfect, 1e-6);
   EXPECT_GT(w_imperfect, 100 * 0.01 * 0.5);
+
+  // Branch switching at the instability (branch_switch: the state pushed along mode_1 by
+  // branch_amplitude t) reaches the same buckled branch: switched once, stable to the end, and
+  // out of the plane as far as the imperfect strip (its seed of 0.01 t shifts the post-buckling
+  // curve a little).
+  const fs::path switched = test::scratch_directory("shell-strip-switched");
+  fs::remove_all(switched);
+  r = test::run_plisse_captured("run '" + file.string() + "' -o '" + switched.string() +
+                                "' --set solver.stability.branch_switch=true");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const nlohmann::json ss = read_json_file(switched / "summary.json");
+  ASSERT_EQ(ss["stability"]["instabilities"].size(), 1u) << ss.dump(1);
+  EXPECT_TRUE(ss["stability"]["instabilities"][0]["branch_switched"].get<bool>());
+  EXPECT_TRUE(ss["stability"]["stable_at_end"].get<bool>());
+  const HistoryTable hs = read_history(switched / "history.csv");
+  const std::string ns = std::to_string(hs.rows.size());
+  const double w_switched = largest_component(
+      switched / ("step_" + std::string(4 - ns.size(), '0') + ns + ".vtu"), "displacement", 2);
+  std::printf(
+      "branch switched: largest out-of-plane displacement %.3e mm (%.2e off the "
+      "imperfect strip's)\n",
+      w_switched, std::abs(w_switched - w_imperfect) / w_imperfect);
+  EXPECT_NEAR(w_switched, w_imperfect, 0.02 * w_imperfect);  // measured 5.5e-3
 }
 
 }  // namespace
