@@ -255,11 +255,11 @@ const std::vector<OutputEntry> kSummary = {
     {"wrinkles.rings[].spectrum", "mm", "`output.wrinkles.rings_deg`",
      "rows [m, A_m, E_m]: each harmonic's amplitude and the global shape's envelope there"},
     {"wrinkles.tension_field.taut", "–", "`output.wrinkles.rings_deg`",
-     "through-thickness columns in tension both ways"},
+     "through-thickness columns (of a shell, triangles) in tension both ways"},
     {"wrinkles.tension_field.wrinkled", "–", "`output.wrinkles.rings_deg`",
-     "columns with one compressive principal membrane stress"},
+     "columns (triangles) with one compressive principal membrane stress"},
     {"wrinkles.tension_field.slack", "–", "`output.wrinkles.rings_deg`",
-     "columns with two compressive principal membrane stresses"},
+     "columns (triangles) with two compressive principal membrane stresses"},
     {"probes[].name", "–", "`probes[]`", "the probe's name"},
     {"probes[].point", "mm", "`probes[]`", "the point as given, [x, y, z]"},
     {"probes[].position", "mm", "`probes[]`",
@@ -317,7 +317,8 @@ const std::vector<OutputEntry> kVtuCell = {
      "the order of `regions`), −1 a rigid region"},
     {"wrinkle_state", "–", "`output.wrinkles.rings_deg`",
      "the tension-field state of the element's through-thickness column: 0 taut, 1 wrinkled, "
-     "2 slack"},
+     "2 slack; of a shell, of the triangle itself, from its stress averaged through the "
+     "thickness"},
     {"pressure", "MPa", "a shell mesh",
      "−tr σ̄ / 3 of the stress averaged through the thickness, positive in compression: the "
      "pressure that the exactly incompressible plane stress eliminated (a solid element's "
