@@ -199,3 +199,72 @@ TEST(ModelBuilder, AirbagFibresInTheShellFrameFollowItsMeridiansAndHoops) {
 
 }  // namespace
 }  // namespace plisse::app
+
+namespace plisse::app {
+namespace {
+
+// A shell's random imperfection through the case (load_perturbed_mesh; imperfections.md, I1s):
+// the octant mid-surface of radius 10 mm, t = 0.2 mm, 0.05 t. Each node moves along the normal of
+// the generated mid-surface (the area-weighted normal of its triangles), on a symmetry edge along
+// that normal without its component across the edge's plane, and that coordinate stays exactly 0;
+// the largest move is 0.05 t.
+TEST(ModelBuilder, ShellRandomImperfectionKeepsTheSymmetryEdgesInTheirPlanes) {
+  const std::string text =
+      "element: shell\n"
+      "mesh: {generate: spherical-shell, inner_radius: 9.9, thickness: 0.2, element_size: 1.5,"
+      " symmetry: octant}\n"
+      "material: {model: neo-hookean, c1: 0.5}\n"
+      "boundary:\n  - {type: symmetry, surface: sym_x}\n  - {type: symmetry, surface: sym_y}\n"
+      "  - {type: symmetry, surface: sym_z}\n"
+      "loads: [{name: p, type: pressure, surface: inner, value: 0.005}]\n"
+      "solver: {stability: {imperfection: 0.05, seed: 3}}\n"
+      "output: {wrinkles: {axis: y, rings_deg: [45]}}\n";
+  const Case c = parse_case_string(text, "c.yaml");
+  const Mesh generated = load_case_mesh(c);
+  const Mesh perturbed = load_perturbed_mesh(c);
+  ASSERT_TRUE(perturbed.is_shell());
+  ASSERT_EQ(perturbed.nodes.size(), generated.nodes.size());
+  std::vector<Vec3d> normal(generated.nodes.size(), Vec3d::Zero());
+  for (const auto& t : generated.triangles) {
+    const Vec3d n = (generated.nodes[t[1]] - generated.nodes[t[0]])
+                        .cross(generated.nodes[t[2]] - generated.nodes[t[0]]);
+    for (int v : t) normal[v] += n;
+  }
+  std::vector<std::array<bool, 3>> held(generated.nodes.size(), {false, false, false});
+  for (int axis = 0; axis < 3; ++axis)
+    for (int e : generated.edge_tags.at(std::string("sym_") + "xyz"[axis]))
+      for (int v : generated.edges[e]) held[v][axis] = true;
+  const double a = 0.05 * 0.2;
+  double largest = 0.0, tangent = 0.0;
+  int on_edges = 0;
+  for (std::size_t j = 0; j < generated.nodes.size(); ++j) {
+    const Vec3d d = perturbed.nodes[j] - generated.nodes[j];
+    largest = std::max(largest, d.norm());
+    Vec3d n = normal[j];
+    for (int axis = 0; axis < 3; ++axis)
+      if (held[j][axis]) {
+        EXPECT_EQ(generated.nodes[j][axis], 0.0);
+        EXPECT_EQ(perturbed.nodes[j][axis], 0.0) << "node " << j << ", axis " << axis;
+        n[axis] = 0.0;
+        ++on_edges;
+      }
+    n.normalize();
+    tangent = std::max(tangent, (d - n.dot(d) * n).norm());
+  }
+  EXPECT_GT(on_edges, 20);
+  // The difference of two positions of size 10 mm: round-off of 10 mm, not of a.
+  EXPECT_NEAR(largest, a, 1e-13);
+  EXPECT_LT(tangent, 1e-13);
+  // The model builds on it, and the wrinkle meter measures its reference state as flat and slack.
+  EXPECT_NO_THROW(build_model_parts(c, perturbed));
+  const WrinkleMeter meter(c, perturbed);
+  const WrinkleMeter::Result r =
+      meter.evaluate(perturbed, std::vector<Vec3d>(perturbed.nodes.size(), Vec3d::Zero()),
+                     std::vector<Mat3d>(perturbed.triangles.size(), Mat3d::Zero()), {});
+  EXPECT_EQ(r.tension.n_elements[static_cast<int>(MembraneState::slack)],
+            static_cast<int>(perturbed.triangles.size()));
+  EXPECT_EQ(r.rings.max_amplitude, 0.0);
+}
+
+}  // namespace
+}  // namespace plisse::app
