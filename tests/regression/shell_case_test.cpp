@@ -206,6 +206,41 @@ TEST(ShellCase, InflatedOctantWithARandomImperfectionMeasuresItsWrinkles) {
   EXPECT_EQ(read_json_file(dir / "wrinkles.json")["wrinkles"], w);
 }
 
+// A sheet (20 x 10 x 0.5 mm, c1 = 0.5 MPa) stretched along x to λ = 1.2 with its sides free to
+// contract (ux, uz held at both ends, uy at front): uniaxial tension of incompressible plane
+// stress, σ_xx = 2 c1 (λ² − 1/λ) = 0.60667 MPa, σ_yy = 0, so every triangle is wrinkled in the
+// tension-field sense (wrinkles.md, T1s, T4) at every step.
+TEST(ShellCase, UniaxialTensionOfASheetIsWrinkledEverywhere) {
+  const fs::path file = write_case("shell-pull",
+                                   "element: shell\n"
+                                   "mesh: {generate: sheet, length: 20.0, width: 10.0, thickness: "
+                                   "0.5, element_size: 2.0}\n"
+                                   "material: {model: neo-hookean, c1: 0.5}\n"
+                                   "boundary:\n"
+                                   "  - {type: displacement, surface: left, value: [0, null, 0]}\n"
+                                   "  - {type: displacement, surface: right, value: [4.0, null, "
+                                   "0]}\n"
+                                   "  - {type: symmetry, surface: front}\n"
+                                   "solver: {steps: 2}\n"
+                                   "output: {wrinkles: {axis: x, center: [10, 5, 0.25], "
+                                   "rings_deg: [0], surface: top}}\n");
+  const fs::path dir = test::scratch_directory("shell-pull");
+  fs::remove_all(dir);
+  const auto r = test::run_plisse_captured("run '" + file.string() + "' -o '" + dir.string() + "'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const HistoryTable h = read_history(dir / "history.csv");
+  for (double f : column(h, "wrinkled_fraction")) EXPECT_EQ(f, 1.0);
+  for (double f : column(h, "slack_fraction")) EXPECT_EQ(f, 0.0);
+  const double lambda = 1.2, exact = 2 * 0.5 * (lambda * lambda - 1 / lambda);
+  const double sxx = column(h, "cauchy_xx").back(), syy = column(h, "cauchy_yy").back();
+  std::printf("uniaxial sheet: σ_xx %.12f MPa (closed form %.12f), σ_yy %.2e MPa\n", sxx, exact,
+              syy);
+  EXPECT_NEAR(sxx, exact, 1e-10 * exact);
+  EXPECT_LT(std::abs(syy), 1e-10 * exact);
+  const nlohmann::json run = read_json_file(dir / "summary.json");
+  EXPECT_EQ(run["wrinkles"]["tension_field"]["wrinkled"].get<int>(), run["elements"].get<int>());
+}
+
 // A strip (L = 20 mm, W = 2 mm, t = 0.5 mm, neo-Hookean c1 = 0.5 MPa) clamped at x = 0, its end
 // x = L moved by -0.1 mm (its slope free): a column clamped at one end and pinned at the other,
 // Euler strain π² t² / (12 (0.699 L)²) = 1.05e-3 (E = 6 c1, I / A = t² / 12), 0.021 mm of
