@@ -18,19 +18,13 @@
 
 #include <cmath>
 #include <cstdio>
-#include <memory>
 #include <numbers>
 #include <string>
-#include <utility>
 #include <vector>
 
-#include "material/registry.hpp"
 #include "mesh/shell_surface.hpp"
 #include "physics/dirichlet.hpp"
-#include "physics/pressure_load.hpp"
-#include "solver/load_stepper.hpp"
-#include "solver/mixed_model.hpp"
-#include "strip_mesh.hpp"
+#include "shell_fixtures.hpp"
 
 namespace plisse {
 namespace {
@@ -107,21 +101,7 @@ double centre_deflection(int rings, double q) {
   ConstraintSet set;
   fix_surface(mesh, SurfaceRef{"rim", {}}, set);
   clamp_sides(mesh, mesh.edge_tags.at("rim"));
-  const std::vector<ConstrainedComponent> constraints = set.components();
-  std::vector<std::unique_ptr<ModelTerm>> terms;
-  terms.push_back(std::make_unique<PressureLoad>(mesh, "q", "bottom", q, Ramp{}, constraints, 0));
-  MixedModel model(mesh, make_material("neo-hookean", {{"c1", kC1}}), 0.0, constraints,
-                   std::move(terms), ElementFamily::shell);
-  SteppingSettings settings;
-  settings.steps = 1;
-  settings.max_step = 1.0;
-  // The load's nodal forces are 1e-8 to 1e-6 N; the residual's round-off about 1e-14 N.
-  settings.newton.rtol = 1e-8;
-  settings.newton.atol = 1e-13;
-  LoadStepper stepper(model, settings);
-  const SteppingResult result = stepper.run([](const StepInfo&) {}, [](const std::string&) {});
-  EXPECT_TRUE(result.completed) << result.failure;
-  return model.state()[DofMap::dof(0, 2)];
+  return shell_test::solve_under_pressure(mesh, set.components(), kC1, q)[DofMap::dof(0, 2)];
 }
 
 TEST(ShellCircularPlate, ClampedPlateOnAnUnstructuredMeshConvergesToKirchhoffsDeflection) {

@@ -28,20 +28,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <memory>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "element/shell_geometry.hpp"
 #include "material/registry.hpp"
 #include "mesh/shell_surface.hpp"
 #include "physics/dirichlet.hpp"
-#include "physics/pressure_load.hpp"
-#include "solver/load_stepper.hpp"
+#include "shell_fixtures.hpp"
 #include "solver/mixed_model.hpp"
 #include "solver/shell_element.hpp"
-#include "strip_mesh.hpp"
 
 namespace plisse {
 namespace {
@@ -54,7 +50,7 @@ constexpr double kRigidity = 2.0 * kC1 * kThickness * kThickness * kThickness / 
 
 using shell_test::Cells;
 
-/// The strip [0, length] x [0, W] with the constants above (strip_mesh.hpp); distorted cells
+/// The strip [0, length] x [0, W] with the constants above (shell_fixtures.hpp); distorted cells
 /// keep the nodes at mid-span at x = L/2.
 Mesh strip(double length, int nx, int ny, Cells cells) {
   return shell_test::strip_mesh(length, kWidth, kThickness, nx, ny, cells, kLength / 2.0);
@@ -155,26 +151,13 @@ double mid_span_deflection(Ends ends, int nx, double q, Cells cells = Cells::sam
     fix_surface(mesh, right, set);
     if (ends == Ends::clamped) clamp_sides(mesh, mesh.edge_tags.at("right"));
   }
-  const std::vector<ConstrainedComponent> constraints = set.components();
-  std::vector<std::unique_ptr<ModelTerm>> terms;
-  terms.push_back(std::make_unique<PressureLoad>(mesh, "q", "bottom", q, Ramp{}, constraints, 0));
-  MixedModel model(mesh, make_material("neo-hookean", {{"c1", kC1}}), 0.0, constraints,
-                   std::move(terms), ElementFamily::shell);
-  SteppingSettings settings;
-  settings.steps = 1;
-  settings.max_step = 1.0;
-  // The residual falls from about 5e-8 N to its round-off under the load, 1e-14 to 3e-14 N
-  // (SNES's monitor), in two iterations; 1e-13 N is 2e-6 of the load's forces.
-  settings.newton.rtol = 1e-8;
-  settings.newton.atol = 1e-13;
-  LoadStepper stepper(model, settings);
-  const SteppingResult result = stepper.run([](const StepInfo&) {}, [](const std::string&) {});
-  EXPECT_TRUE(result.completed) << result.failure;
+  const std::vector<double> state =
+      shell_test::solve_under_pressure(mesh, set.components(), kC1, q);
   double sum = 0.0;
   int count = 0;
   for (int v = 0; v < mesh.n_nodes(); ++v)
     if (std::abs(mesh.nodes[v].x() - kLength / 2.0) < 1e-9) {
-      sum += model.state()[DofMap::dof(v, 2)];
+      sum += state[DofMap::dof(v, 2)];
       ++count;
     }
   EXPECT_GT(count, 0);

@@ -27,10 +27,10 @@
 
 #include "material/registry.hpp"
 #include "physics/dirichlet.hpp"
+#include "shell_fixtures.hpp"
 #include "solver/eigenmodes.hpp"
 #include "solver/mixed_model.hpp"
 #include "solver/newton_solver.hpp"
-#include "strip_mesh.hpp"
 
 namespace plisse {
 namespace {
