@@ -253,33 +253,34 @@ ShellGeometry compute_shell_geometry(const PatchPositions& X_global, const SlotK
   g.frame = triangle_frame(X, g.area);
   const std::array<Vec2d, kPatchNodes> p = plane_coordinates(X, g.frame, slots);
   const Eigen::Matrix<double, 3, 2> L = linear_gradients(p);
-  std::array<NodeWeights, 3> value;  // φ at each side's midpoint (KL4a)
-  g.fitted = patch_side_coefficients(p, {0, 1, 2, 3, 4, 5}, g.side, value);
+  std::array<SideCoefficients, 3> side;  // c^i [1/mm] (KL3b)
+  std::array<NodeWeights, 3> value;      // φ at each side's midpoint (KL4a)
+  g.fitted = patch_side_coefficients(p, {0, 1, 2, 3, 4, 5}, side, value);
   for (int i = 0; i < 3; ++i) {
     if (!has_neighbour_fit(slots, i)) continue;
     // The mean of this triangle's fit and its neighbour's on the side they share (KL3b).
     std::array<SideCoefficients, 3> across;
     std::array<NodeWeights, 3> across_value;
     patch_side_coefficients(p, neighbour_patch(i), across, across_value);
-    g.side[i] = 0.5 * (g.side[i] + across[0]);
+    side[i] = 0.5 * (side[i] + across[0]);
     value[i] = 0.5 * (value[i] + across_value[0]);
   }
   // Ghosts beyond a side first: they are made of the node across it, which a ghost of slots 3 to
   // 5 never is.
   for (int n = kPatchNodes - 1; n >= kTriangleNodes; --n) {
     if (slots[n] != Slot::missing) continue;
-    for (SideCoefficients& c : g.side) fold_ghost(c, n);
+    for (SideCoefficients& c : side) fold_ghost(c, n);
     for (NodeWeights& c : value) fold_ghost(c, n);
   }
   for (int i = 0; i < 3; ++i) {
     if (slots[3 + i] != Slot::missing) continue;
-    g.side[i].setZero();  // the triangle's own constant gradient on a free side (KL8)
-    g.side[i].topRows<3>() = L;
+    side[i].setZero();  // the triangle's own constant gradient on a free side (KL8)
+    side[i].topRows<3>() = L;
     value[i].setZero();  // and the side's own midpoint
     value[i]((i + 1) % 3) = value[i]((i + 2) % 3) = 0.5;
   }
   g.membrane = membrane_weights(value, L);
-  g.curvature = curvature_weights(g.side, L);
+  g.curvature = curvature_weights(side, L);
   for (int n = 0; n < kPatchNodes; ++n) {
     g.X.segment<3>(3 * n) = used_slot(slots, n) ? X[n] : Vec3d::Zero();
   }

@@ -1,9 +1,9 @@
 #pragma once
 /// Reference geometry of one patch of the rotation-free shell triangle (EBST,
 /// docs/theory/shell.md): the triangle, the nodes across its sides and across its neighbours'
-/// sides, and the coefficients that turn nodal positions into the gradients on the sides (KL3b),
-/// the membrane strain (KL4) and the curvature (KL6). Computed once per element from the
-/// reference positions; the kernels (element/shell.hpp) only read it.
+/// sides, and the coefficients that turn nodal positions into the mean gradient of the membrane
+/// (KL4a) and the curvature (KL6), both built from the gradients on the sides (KL3b). Computed
+/// once per element from the reference positions; the kernels (element/shell.hpp) only read it.
 ///
 /// Slot order (KL1, KL1b): 0, 1, 2 the triangle, counter-clockwise about its normal; 3 + i the
 /// node of the neighbour across side i, the side opposite node i (side 0 joins 1-2, side 1 joins
@@ -72,7 +72,6 @@ struct ShellGeometry {
   SlotKinds slots{};   ///< what each slot holds (KL1b)
   bool fitted = true;  ///< the triangle's own side gradients from the quadratic fit (KL3a), else
                        ///< isoparametric (KL3)
-  std::array<SideCoefficients, 3> side;  ///< c^i [1/mm] (KL3b), the missing slots folded in
   SideCoefficients membrane;  ///< m [1/mm]: the triangle's mean gradient F̄ = Σ_n x_n m_n (KL4a)
   std::array<NodeWeights, 3> curvature;  ///< k^{αβ} for (11, 22, 12) [1/mm²] (KL6)
   Vec3d reference_metric;                ///< Ā as (11, 22, 12) [-] (KL4)
@@ -84,15 +83,6 @@ struct ShellGeometry {
 /// degenerate triangle or a side whose quadratic map is singular (a neighbour on the side's line,
 /// or folded over onto the triangle).
 ShellGeometry compute_shell_geometry(const PatchPositions& X, const SlotKinds& slots);
-
-/// The gradient on side i (3 × 2, columns φ'_1, φ'_2) of the patch at positions x (KL3b).
-inline Mat32d side_gradient(const ShellGeometry& g, const PatchVec& x, int i) {
-  Mat32d d = Mat32d::Zero();
-  for (int n = 0; n < kPatchNodes; ++n) {
-    d += x.segment<3>(3 * n) * g.side[i].row(n);
-  }
-  return d;
-}
 
 /// F̄ of (KL4a) (3 × 2, columns along e_1, e_2): the triangle's mean gradient at positions x.
 inline Mat32d mean_gradient(const ShellGeometry& g, const PatchVec& x) {
