@@ -113,8 +113,6 @@ void check_element_family(const Case& c, const Mesh& mesh) {
   if (!c.regions.empty()) refuse(c.regions.front().place, "`regions`");
   if (!c.probes.empty()) refuse(c.probes.front().place, "`probes`");
   const MaterialSection& m = c.material;
-  if (!m.exact_incompressibility)
-    refuse(m.place, "`incompressibility: nearly` (the plane-stress iteration, shell.md KL12)");
   if (!m.inelastic().elastic())
     refuse(m.place, "a viscoelastic or Mullins material (history at the thickness points)");
   if (m.shell_fibre_frame) refuse(m.fibre_frame_place, "`fibre_frame: shell`");

@@ -1,7 +1,8 @@
 #pragma once
 /// The rotation-free Kirchhoff-Love shell triangle (EBST, docs/theory/shell.md): strain energy,
 /// residual and tangent of one patch (the triangle and the three nodes opposite its sides, 18
-/// translational unknowns), total Lagrangian, exactly incompressible plane stress.
+/// translational unknowns), total Lagrangian, plane stress: exactly incompressible (1/κ = 0, KL9)
+/// or nearly, with the bulk modulus κ of the mixed element's pressure term (KL12).
 ///
 ///   Π_e = A0 ∫ W₂(I + 2ε + 2ζκ) dζ                                          (KL13, KL14)
 ///
@@ -9,6 +10,8 @@
 /// F) const`, or `evaluate_at(q, F)` for a model whose points carry history (q is then the
 /// through-thickness point). No heap allocation; inputs are const, outputs owned by the caller:
 /// thread-safe. Units: positions [mm], energy [mJ = N mm], residual [N], tangent [N/mm].
+#include <algorithm>
+
 #include "element/shell_geometry.hpp"
 #include "element/shell_plane_stress.hpp"
 #include "element/shell_section.hpp"
@@ -23,6 +26,7 @@ struct SectionResponse {
   double energy = 0.0;
   StrainVec gradient = StrainVec::Zero();
   StrainMat hessian = StrainMat::Zero();
+  double min_J = 1.0;  ///< the smallest det F at the points through the thickness
 };
 
 /// Whether the element could be evaluated, and its energy.
@@ -30,6 +34,8 @@ struct ShellStatus {
   bool ok = true;       ///< false: a point's C₂ is not positive definite, the triangle has
                         ///< collapsed, or the model rejected F; outputs are then zero
   double energy = 0.0;  ///< Π_e [mJ]
+  double min_J = 1.0;   ///< the smallest det F at the points through the thickness (1 when
+                        ///< exactly incompressible)
 };
 
 /// C₂(ζ) = I + 2 (ε + ζ κ) in the element's frame (KL7).
@@ -40,16 +46,20 @@ inline Mat2d in_plane_C(const StrainVec& s, double zeta) {
   return C;
 }
 
-/// Ψ and its derivatives at the generalized strains s (KL13, KL15, KL16). Throws
-/// InadmissibleDeformation where the model or C₂ is inadmissible.
+/// Ψ and its derivatives at the generalized strains s (KL13, KL15, KL16); inverse_bulk_modulus
+/// 1/κ [1/MPa], 0 for exact incompressibility (KL9, KL12). Throws InadmissibleDeformation where
+/// the model or C₂ is inadmissible.
 template <class Material>
 SectionResponse integrate_section(const ShellSection& section, const Mat3d& frame,
-                                  const StrainVec& s, const Material& material) {
+                                  const StrainVec& s, const Material& material,
+                                  double inverse_bulk_modulus) {
   SectionResponse r;
   for (int q = 0; q < section.n_points; ++q) {
     const double zeta = section.zeta[q];
     const double w = section.weight[q];
-    const PlaneStressResponse p = evaluate_plane_stress(material, q, in_plane_C(s, zeta), frame);
+    const PlaneStressResponse p =
+        evaluate_plane_stress(material, q, in_plane_C(s, zeta), frame, inverse_bulk_modulus);
+    r.min_J = std::min(r.min_J, p.J);
     r.energy += w * p.W;
     r.gradient.head<3>() += 2.0 * w * p.dW;  // ∂c/∂ε = 2, ∂c/∂κ = 2ζ (KL15)
     r.gradient.tail<3>() += 2.0 * w * zeta * p.dW;
@@ -61,29 +71,34 @@ SectionResponse integrate_section(const ShellSection& section, const Mat3d& fram
   return r;
 }
 
-/// Π_e (KL14) at nodal displacements u [mm]. Throws InadmissibleDeformation where the state is
-/// inadmissible.
+/// Π_e (KL14) at nodal displacements u [mm]; inverse_bulk_modulus 1/κ [1/MPa] (KL12). Throws
+/// InadmissibleDeformation where the state is inadmissible.
 template <class Material>
 double compute_shell_energy(const ShellGeometry& g, const ShellSection& section, const PatchVec& u,
-                            const Material& material) {
+                            const Material& material, double inverse_bulk_modulus) {
   const ShellKinematics k = compute_shell_kinematics(g, g.X + u);
-  return g.area * integrate_section(section, g.frame, k.strains, material).energy;
+  return g.area *
+         integrate_section(section, g.frame, k.strains, material, inverse_bulk_modulus).energy;
 }
 
 /// Energy, residual r = ∂Π_e/∂u (KL15) and, when K is given, tangent K = ∂²Π_e/∂u∂u (KL16) of one
-/// patch at nodal displacements u [mm]. r and K are overwritten. Rows and columns of a missing
-/// neighbour are zero (KL8).
+/// patch at nodal displacements u [mm]; inverse_bulk_modulus 1/κ [1/MPa], 0 for exact
+/// incompressibility (KL12). r and K are overwritten. Rows and columns of a missing neighbour are
+/// zero (KL8).
 template <class Material>
 ShellStatus assemble_shell(const ShellGeometry& g, const ShellSection& section, const PatchVec& u,
-                           const Material& material, PatchVec& r, PatchMat* K) {
+                           const Material& material, double inverse_bulk_modulus, PatchVec& r,
+                           PatchMat* K) {
   ShellStatus status;
   r.setZero();
   if (K != nullptr) K->setZero();
   try {
     const ShellKinematics k = compute_shell_kinematics(g, g.X + u);
-    const SectionResponse psi = integrate_section(section, g.frame, k.strains, material);
+    const SectionResponse psi =
+        integrate_section(section, g.frame, k.strains, material, inverse_bulk_modulus);
     const StrainGradient D = compute_strain_gradient(g, k);
     status.energy = g.area * psi.energy;
+    status.min_J = psi.min_J;
     r.noalias() = g.area * D.transpose() * psi.gradient;
     if (K != nullptr) {
       K->noalias() = g.area * D.transpose() * psi.hessian * D;
@@ -100,10 +115,11 @@ ShellStatus assemble_shell(const ShellGeometry& g, const ShellSection& section, 
 
 /// assemble_shell for the model held by `material` (one std::visit per element).
 ShellStatus assemble_shell(const ShellGeometry& g, const ShellSection& section, const PatchVec& u,
-                           const AnyMaterial& material, PatchVec& r, PatchMat* K);
+                           const AnyMaterial& material, double inverse_bulk_modulus, PatchVec& r,
+                           PatchMat* K);
 
 /// compute_shell_energy for the model held by `material`.
 double compute_shell_energy(const ShellGeometry& g, const ShellSection& section, const PatchVec& u,
-                            const AnyMaterial& material);
+                            const AnyMaterial& material, double inverse_bulk_modulus);
 
 }  // namespace plisse::shell

@@ -15,7 +15,7 @@ Mat3d gradient_with_normal(const ShellGeometry& g, const PatchVec& x, const Vec3
 
 }  // namespace
 
-Mat3d mid_surface_deformation(const ShellGeometry& g, const PatchVec& u) {
+Mat3d mid_surface_deformation(const ShellGeometry& g, const PatchVec& u, double J) {
   const Mat3d reference = gradient_with_normal(g, g.X, g.frame.col(2));
   const PatchVec x = g.X + u;
   const Vec3d normal = triangle_normal(x);
@@ -25,7 +25,7 @@ Mat3d mid_surface_deformation(const ShellGeometry& g, const PatchVec& u) {
   if (!(length > 0.0) || !(in_plane > 0.0) || !std::isfinite(in_plane)) {
     throw InadmissibleDeformation("shell: the triangle has collapsed or turned over");
   }
-  current.col(2) *= reference.determinant() / in_plane;  // det F = 1 (KL19)
+  current.col(2) *= J * reference.determinant() / in_plane;  // det F = J (KL19)
   return current * reference.inverse();
 }
 
@@ -38,14 +38,14 @@ Mat3d current_frame(const Mat3d& F, const ShellGeometry& g, const Vec3d& t3) {
   return Q;
 }
 
-Mat3d plane_stress_cauchy(const Mat2d& C2, const Mat2d& S2, const Mat3d& current_frame) {
+Mat3d plane_stress_cauchy(const Mat2d& C2, const Mat2d& S2, const Mat3d& current_frame, double J) {
   Mat2d U = Mat2d::Zero();  // upper Cholesky factor, UᵀU = C₂
   U(0, 0) = std::sqrt(C2(0, 0));
   U(0, 1) = C2(0, 1) / U(0, 0);
   U(1, 1) = std::sqrt(C2.determinant()) / U(0, 0);
-  const Mat2d tau = U * S2 * U.transpose();  // Kirchhoff = Cauchy stress, J = 1
+  const Mat2d tau = U * S2 * U.transpose();  // Kirchhoff stress, J σ
   const Eigen::Matrix<double, 3, 2> Q = current_frame.leftCols<2>();
-  return Q * tau * Q.transpose();
+  return Q * tau * Q.transpose() / J;
 }
 
 ShellOutputs zero_shell_outputs() {
@@ -59,21 +59,6 @@ ShellOutputs zero_shell_outputs() {
     zero.face_stretches[f].setZero();
   }
   return zero;
-}
-
-double current_distance(const ShellSection& section, const StrainVec& strains, double zeta) {
-  // The rule's points z_g t/2 on [-t/2, t/2] mapped onto [0, ζ]: s = ζ (1/2 + ζ_g / t), weights
-  // w_g / t summing to 1.
-  double mean_stretch = 0.0;
-  for (int g = 0; g < section.n_points; ++g) {
-    const double s = zeta * (0.5 + section.zeta[g] / section.thickness);
-    const double det = in_plane_C(strains, s).determinant();
-    if (!(det > 0.0) || !std::isfinite(det)) {
-      throw InadmissibleDeformation("shell: C2 is not positive definite inside the thickness");
-    }
-    mean_stretch += section.weight[g] / section.thickness / std::sqrt(det);
-  }
-  return zeta * mean_stretch;
 }
 
 int nearest_section_point(const ShellSection& section, double zeta) {

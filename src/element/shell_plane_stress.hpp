@@ -1,9 +1,14 @@
 #pragma once
-/// Incompressible plane stress for any model of the registry (docs/theory/shell.md, KL9-KL11):
-/// the energy W₂(C₂) = Ŵ(C₂ ⊕ 1/det C₂) of a point of the shell and its first and second
-/// derivatives with respect to the three independent components (C11, C22, C12) of the in-plane
-/// right Cauchy-Green tensor C₂, from the model's own W, P = ∂W/∂F and A = ∂P/∂F. No heap;
+/// Plane stress for any model of the registry (docs/theory/shell.md, KL9-KL12): the energy
+/// W₂(C₂) = Ŵ(C₂ ⊕ C33) of a point of the shell, with the thickness stretch squared C33 that makes
+/// the normal stress zero, and its first and second derivatives with respect to the three
+/// independent components (C11, C22, C12) of the in-plane right Cauchy-Green tensor C₂, from the
+/// model's own W, P = ∂W/∂F and A = ∂P/∂F. Exactly incompressible (1/κ = 0), C33 = 1/det C₂
+/// (KL9); nearly incompressible (1/κ > 0), Ŵ gains the volumetric energy κ/2 (J - 1)² of the
+/// mixed element's pressure term and C33 is found by Newton's method (KL12). No heap;
 /// thread-safe.
+#include <cmath>
+
 #include "core/types.hpp"
 #include "element/shell_geometry.hpp"
 #include "material/inadmissible_deformation.hpp"
@@ -16,26 +21,94 @@ struct PlaneStressResponse {
   double W = 0.0;             ///< [MPa]
   Vec3d dW = Vec3d::Zero();   ///< ∂W₂/∂c [MPa]
   Mat3d d2W = Mat3d::Zero();  ///< ∂²W₂/∂c∂c [MPa], symmetric
+  double C33 = 1.0;           ///< λ3², the thickness stretch squared at the point [-]
+  double J = 1.0;             ///< det F = √(det C₂ C33) [-]
 };
 
-/// The 3-D deformation gradient of (KL9): F = diag(U, λ3) frameᵀ with U the Cholesky factor of
-/// C₂ (UᵀU = C₂) and λ3 = 1/det U, so that det F = 1 and FᵀF = frame (C₂ ⊕ 1/det C₂) frameᵀ.
-/// frame: the element's reference frame (columns e1, e2, e3). Throws InadmissibleDeformation when
-/// C₂ is not positive definite.
+/// The 3-D energy Ŵ(C₂ ⊕ C33) + κ/2 (J - 1)² of a point and its derivatives with respect to the
+/// four components (C11, C22, C12, C33), at a given C33 (KL12).
+struct ThickPointResponse {
+  double W = 0.0;                                 ///< [MPa]
+  Eigen::Vector4d dW = Eigen::Vector4d::Zero();   ///< [MPa]
+  Eigen::Matrix4d d2W = Eigen::Matrix4d::Zero();  ///< [MPa], symmetric
+  double J = 1.0;                                 ///< √(det C₂ C33) [-]
+};
+
+/// Newton's method for C33 stops once its step is below this fraction of C33; the response is
+/// then corrected to first order in the step (KL12). What is left is of the order of the step's
+/// square in W₂ and its gradient, and of the step times κ/μ in the Hessian (whose volumetric part
+/// grows with κ): the tolerance is tight so that the tangent stays consistent at large κ.
+/// Newton's convergence is quadratic, so this costs at most one step more than a loose one.
+inline constexpr double kThicknessStepTolerance = 1e-12;
+/// At most this many Newton steps for C33 before the point is reported inadmissible.
+inline constexpr int kMaxThicknessIterations = 40;
+
+/// The 3-D deformation gradient of a plane-stress point: F = diag(U, √C33) frameᵀ with U the
+/// upper Cholesky factor of C₂ (UᵀU = C₂), so that FᵀF = frame (C₂ ⊕ C33) frameᵀ. frame: the
+/// element's reference frame (columns e1, e2, e3). Throws InadmissibleDeformation when C₂ is not
+/// positive definite or C33 is not positive.
+Mat3d plane_stress_deformation(const Mat2d& C2, const Mat3d& frame, double C33);
+
+/// The same with C33 = 1/det C₂ (KL9): det F = 1.
 Mat3d plane_stress_deformation(const Mat2d& C2, const Mat3d& frame);
 
 /// (KL10)-(KL11) from the model's response m at F = plane_stress_deformation(C2, frame).
 PlaneStressResponse condense_plane_stress(const Mat2d& C2, const Mat3d& frame, const Mat3d& F,
                                           const PointResponse& m);
 
+/// Ŵ + κ/2 (J - 1)² and its derivatives in (C11, C22, C12, C33) (KL12) from the model's response m
+/// at F = plane_stress_deformation(C2, frame, C33); bulk_modulus κ [MPa] > 0.
+ThickPointResponse thick_point_response(const Mat2d& C2, const Mat3d& frame, double C33,
+                                        const Mat3d& F, const PointResponse& m,
+                                        double bulk_modulus);
+
+/// The response of W₂ at the C33 of (KL12) from the 3-D response at the last iterate, whose
+/// Newton step for C33 is `step`: the static condensation of C33 (the Schur complement of
+/// ∂²Ŵ/∂C33²), to first order in the step.
+PlaneStressResponse condense_thickness(const ThickPointResponse& w, double C33, double step);
+
+/// The next iterate for C33 from C33 and its Newton step, kept within [C33/4, 4 C33].
+double next_thickness_iterate(double C33, double step);
+
 /// W₂ and its derivatives at C₂ for the model `material` at through-thickness point q (the point
-/// index matters only to models with history, material/point_response.hpp). Throws
-/// InadmissibleDeformation when C₂ is not positive definite or the model rejects F.
+/// index matters only to models with history, material/point_response.hpp), exactly
+/// incompressible when inverse_bulk_modulus = 0 (KL9-KL11), else with the bulk modulus
+/// κ = 1/inverse_bulk_modulus [MPa] (KL12). Throws InadmissibleDeformation when C₂ is not
+/// positive definite, the model rejects F, or no positive C33 makes the normal stress zero.
 template <class Material>
 PlaneStressResponse evaluate_plane_stress(const Material& material, int q, const Mat2d& C2,
-                                          const Mat3d& frame) {
-  const Mat3d F = plane_stress_deformation(C2, frame);
-  return condense_plane_stress(C2, frame, F, evaluate_at_point(material, q, F));
+                                          const Mat3d& frame, double inverse_bulk_modulus = 0.0) {
+  if (inverse_bulk_modulus == 0.0) {
+    const Mat3d F = plane_stress_deformation(C2, frame);
+    return condense_plane_stress(C2, frame, F, evaluate_at_point(material, q, F));
+  }
+  const double bulk_modulus = 1.0 / inverse_bulk_modulus;
+  double C33 = 1.0 / C2.determinant();  // the incompressible value: close when κ >> μ
+  for (int iteration = 0; iteration < kMaxThicknessIterations; ++iteration) {
+    const Mat3d F = plane_stress_deformation(C2, frame, C33);
+    const ThickPointResponse w =
+        thick_point_response(C2, frame, C33, F, evaluate_at_point(material, q, F), bulk_modulus);
+    const double step = -w.dW(3) / w.d2W(3, 3);
+    if (!(w.d2W(3, 3) > 0.0) || !std::isfinite(step)) break;
+    if (std::abs(step) <= kThicknessStepTolerance * C33) return condense_thickness(w, C33, step);
+    C33 = next_thickness_iterate(C33, step);
+  }
+  throw InadmissibleDeformation("shell: no thickness stretch makes the normal stress zero");
+}
+
+/// λ3 = √C33 at C₂ (KL9, KL12): 1/√det C₂ when inverse_bulk_modulus = 0, else the root of KL12.
+/// Throws as evaluate_plane_stress.
+template <class Material>
+double thickness_stretch(const Material& material, int q, const Mat2d& C2, const Mat3d& frame,
+                         double inverse_bulk_modulus) {
+  if (inverse_bulk_modulus == 0.0) {
+    const double det = C2.determinant();
+    if (!(det > 0.0) || !std::isfinite(det)) {
+      throw InadmissibleDeformation("shell: C2 is not positive definite inside the thickness");
+    }
+    return 1.0 / std::sqrt(det);
+  }
+  return std::sqrt(evaluate_plane_stress(material, q, C2, frame, inverse_bulk_modulus).C33);
 }
 
 }  // namespace plisse::shell

@@ -143,19 +143,20 @@ class ElementAssembly {
   /// Output fields of every element at `state` (Element::fields): per_element. Collective.
   std::vector<Fields> fields(const Distribution& distribution, std::span<const double> state,
                              int threads) const {
-    return per_element(
-        distribution, state, threads, Element::zero_fields(),
-        [](const auto& geometry, const auto& x, const auto& material, const auto& internal) {
-          return Element::fields(geometry, x, material, internal);
-        });
+    return per_element(distribution, state, threads, Element::zero_fields(),
+                       [](const auto& geometry, const auto& x, const auto& material,
+                          double inverse_bulk_modulus, const auto& internal) {
+                         return Element::fields(geometry, x, material, inverse_bulk_modulus,
+                                                internal);
+                       });
   }
 
-  /// evaluate(geometry, x, material, internal) of every element at `state`, for output: each rank
-  /// evaluates its owned elements, in parallel, and the ranks' arrays (`zero` on the elements of
-  /// other ranks) are summed, so every rank gets every element's value. R holds doubles only (it
-  /// is summed as a flat array). A rigid element is evaluated with model 0 at zero pressure (it
-  /// moves rigidly and carries no stress); a model with history gives the response of its last
-  /// converged history. Collective.
+  /// evaluate(geometry, x, material, 1/κ, internal) of every element at `state`, for output: each
+  /// rank evaluates its owned elements, in parallel, and the ranks' arrays (`zero` on the elements
+  /// of other ranks) are summed, so every rank gets every element's value. R holds doubles only
+  /// (it is summed as a flat array). A rigid element is evaluated with model 0, exactly
+  /// incompressible, at zero pressure (it moves rigidly and carries no stress); a model with
+  /// history gives the response of its last converged history. Collective.
   template <class R, class Evaluate>
   std::vector<R> per_element(const Distribution& distribution, std::span<const double> state,
                              int threads, const R& zero, Evaluate&& evaluate) const {
@@ -172,15 +173,18 @@ class ElementAssembly {
         const std::array<int, Element::kDof> full = dofs(e);
         typename Element::Vector x = gather(full, state);
         int m = materials_.of(e);
+        double inverse_bulk_modulus = 0.0;
         if (m == ElementMaterials::kRigid) {
           // Any model at zero pressure gives F, J = 1 and zero stresses.
           for (int i = 0; i < Element::kDof; ++i)
             if (full[i] % DofMap::kPerNode == 3) x[i] = 0.0;
           m = 0;
+        } else {
+          inverse_bulk_modulus = materials_.inverse_bulk_moduli[m];
         }
         // With history: the response of the last converged history (dt = 0, nothing written).
         out[e] = with_material(e, m, {}, 0.0, [&](const auto& material) -> R {
-          return evaluate(geometry_[e], x, material, internal_[e]);
+          return evaluate(geometry_[e], x, material, inverse_bulk_modulus, internal_[e]);
         });
       } catch (...) {
 #pragma omp critical(plisse_element_output_error)
@@ -217,11 +221,14 @@ class ElementAssembly {
   void for_each_deformation(const Mesh& mesh, std::span<const double> state, Visit&& visit) const {
     for (int e = 0; e < n_elements(); ++e) {
       double volume = 0.0;
+      const int m = materials_.of(e);
+      const bool rigid = m == ElementMaterials::kRigid;  // moves rigidly: model 0, J = 1
       const Mat3d integral = Element::deformation_integral(
           mesh,
           std::span<const int, Element::kNodes>(
               nodes_.data() + static_cast<std::size_t>(e) * Element::kNodes, Element::kNodes),
-          geometry_[e], gather(dofs(e), state), volume);
+          geometry_[e], gather(dofs(e), state), materials_.materials[rigid ? 0 : m],
+          rigid ? 0.0 : materials_.inverse_bulk_moduli[m], volume);
       visit(e, volume, integral);
     }
   }

@@ -37,9 +37,11 @@
 ///   evaluate(g, x, material, 1/κ, internal, r, K)
 ///       residual r (and the tangent K = dr/dx when K is not null; both overwritten) at element
 ///       unknowns x; updates `internal` (left unchanged when the status is not ok).
-///   fields(g, x, material, internal)         output averages at (x, internal).
+///   fields(g, x, material, 1/κ, internal)    output averages at (x, internal).
 ///   strain_energy(g, x, material, 1/κ, internal)  stored energy [mJ] at (x, internal).
-///   deformation_integral(mesh, nodes, g, x, V0)  ∫ F dV over the element at x; V0 receives its
+///   deformation_integral(mesh, nodes, g, x, material, 1/κ, V0)  ∫ F dV over the element at x
+///                                            (the material and 1/κ matter to a shell, whose
+///                                            thickness stretch they decide); V0 receives its
 ///                                            reference volume.
 ///   zero_fields()                            Fields of zeros.
 #include <array>
@@ -72,10 +74,10 @@ concept ElementPolicy = requires(const Mesh& mesh, std::span<const int, E::kNode
   { E::initial_internal() } -> std::same_as<typename E::Internal>;
   { internal.data() } -> std::same_as<double*>;
   { E::evaluate(g, x, material, 0.0, internal, r, K) } -> std::same_as<typename E::Status>;
-  { E::fields(g, x, material, internal) } -> std::same_as<typename E::Fields>;
+  { E::fields(g, x, material, 0.0, internal) } -> std::same_as<typename E::Fields>;
   { E::strain_energy(g, x, any_material, 0.0, internal) } -> std::same_as<double>;
   { E::zero_fields() } -> std::same_as<typename E::Fields>;
-  { E::deformation_integral(mesh, nodes, g, x, volume) } -> std::same_as<Mat3d>;
+  { E::deformation_integral(mesh, nodes, g, x, any_material, 0.0, volume) } -> std::same_as<Mat3d>;
 }
 &&sizeof(typename E::Fields) % sizeof(double) == 0;
 

@@ -69,7 +69,7 @@ struct MiniElement {
   /// mini::compute_element_fields: volume averages of σ, J, von Mises and p.
   template <class Material>
   static Fields fields(const Geometry& g, const Vector& x, const Material& material,
-                       const Internal& bubble) {
+                       double /*inverse_bulk_modulus*/, const Internal& bubble) {
     return mini::compute_element_fields(g, x, material, bubble.b);
   }
 
@@ -83,7 +83,9 @@ struct MiniElement {
   /// boundary, so the mean of F is that of its linear part: ∫ F dV = V0 dx dX⁻¹ (divergence
   /// theorem), with dX, dx the edge vectors X_a - X_0 and x_a - x_0 (a = 1..3).
   static Mat3d deformation_integral(const Mesh& mesh, std::span<const int, kNodes> nodes,
-                                    const Geometry& /*g*/, const Vector& x, double& volume) {
+                                    const Geometry& /*g*/, const Vector& x,
+                                    const AnyMaterial& /*material*/,
+                                    double /*inverse_bulk_modulus*/, double& volume) {
     const Vec3d X0 = mesh.nodes[nodes[0]];
     Mat3d dX, dx;
     for (int a = 1; a < 4; ++a) {

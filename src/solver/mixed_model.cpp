@@ -120,10 +120,6 @@ MixedModel::MixedModel(const Mesh& mesh, ElementMaterials materials,
                      mesh.triangle_neighbours.size() == mesh.triangles.size() &&
                      mesh.triangle_adjacent.size() == mesh.triangles.size(),
                  "the shell element needs the mid-surface of a shell (make_shell_surface)");
-    for (double inverse_bulk_modulus : materials.inverse_bulk_moduli)
-      PLISSE_CHECK(inverse_bulk_modulus == 0.0,
-                   "the shell element is exactly incompressible: 1/kappa must be 0, got "
-                       << inverse_bulk_modulus << " 1/MPa (docs/theory/shell.md, KL12)");
     elements_ = std::make_unique<ElementAssembly<ShellElement>>(mesh, std::move(materials));
     // Plane stress eliminates the pressure inside the element (shell.md, KL9): no node has a
     // pressure unknown. The state keeps its four values per node, so that the terms, the
@@ -409,8 +405,9 @@ std::vector<shell::ShellOutputs> MixedModel::shell_outputs() const {
   if (shells == nullptr) return {};
   return (*shells)->per_element(
       *distribution_, state_, assembly_threads(), shell::zero_shell_outputs(),
-      [](const auto& geometry, const auto& x, const auto& material, const auto& /*internal*/) {
-        return ShellElement::outputs(geometry, x, material);
+      [](const auto& geometry, const auto& x, const auto& material, double inverse_bulk_modulus,
+         const auto& /*internal*/) {
+        return ShellElement::outputs(geometry, x, material, inverse_bulk_modulus);
       });
 }
 

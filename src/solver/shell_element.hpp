@@ -20,6 +20,7 @@
 /// no equation is left without stiffness.
 #include <array>
 #include <span>
+#include <variant>
 
 #include "element/element_fields.hpp"
 #include "element/shell.hpp"
@@ -56,7 +57,8 @@ struct ShellElement {
       return m;
     }();
   };
-  /// ok: the element could be evaluated; min_J: 1, every point is incompressible (KL9).
+  /// ok: the element could be evaluated; min_J: the smallest det F through the thickness (1 when
+  /// exactly incompressible, KL9; KL12).
   struct Status {
     bool ok = true;
     double min_J = 1.0;
@@ -107,14 +109,14 @@ struct ShellElement {
 
   static Internal initial_internal() { return {}; }
 
-  /// shell::assemble_shell: residual and consistent tangent (KL15, KL16), with the mirrored
-  /// sides' slots turned (KL8a). The kernel is exactly incompressible: the model refuses
-  /// 1/κ > 0 for a shell (KL12 is not implemented).
+  /// shell::assemble_shell: residual and consistent tangent (KL15, KL16), exactly (1/κ = 0, KL9)
+  /// or nearly incompressible (KL12), with the mirrored sides' slots turned (KL8a).
   template <class Material>
   static Status evaluate(const Geometry& g, const Vector& x, const Material& material,
-                         double /*inverse_bulk_modulus*/, Internal& /*internal*/, Vector& r,
+                         double inverse_bulk_modulus, Internal& /*internal*/, Vector& r,
                          Matrix* K) {
-    const bool ok = shell::assemble_shell(g.patch, g.section, mirrored(g, x), material, r, K).ok;
+    const shell::ShellStatus status = shell::assemble_shell(g.patch, g.section, mirrored(g, x),
+                                                            material, inverse_bulk_modulus, r, K);
     for (int a = 0; a < kNodes; ++a) {
       if (!g.mirrored[a]) continue;
       const int s = 3 * a;
@@ -124,36 +126,55 @@ struct ShellElement {
       K->middleRows<3>(s) = M.transpose() * K->middleRows<3>(s);
       K->middleCols<3>(s) = K->middleCols<3>(s) * M;
     }
-    return {ok, 1.0};
+    return {status.ok, status.min_J};
   }
 
-  /// shell::compute_shell_fields: thickness averages of σ, J = 1, von Mises, -tr σ / 3 (KL21).
+  /// shell::compute_shell_fields: thickness averages of σ and J, von Mises, -tr σ / 3 (KL21).
   template <class Material>
   static Fields fields(const Geometry& g, const Vector& x, const Material& material,
-                       const Internal& /*internal*/) {
-    return shell::compute_shell_fields(g.patch, g.section, mirrored(g, x), material);
+                       double inverse_bulk_modulus, const Internal& /*internal*/) {
+    return shell::compute_shell_fields(g.patch, g.section, mirrored(g, x), material,
+                                       inverse_bulk_modulus);
   }
 
   /// shell::compute_shell_outputs: the thickness, the resultants N and M, the change of
   /// curvature, and the faces' stresses and stretches (KL22-KL25). Not part of the policy
   /// contract: MixedModel::shell_outputs asks for it.
   template <class Material>
-  static shell::ShellOutputs outputs(const Geometry& g, const Vector& x, const Material& material) {
-    return shell::compute_shell_outputs(g.patch, g.section, mirrored(g, x), material);
+  static shell::ShellOutputs outputs(const Geometry& g, const Vector& x, const Material& material,
+                                     double inverse_bulk_modulus) {
+    return shell::compute_shell_outputs(g.patch, g.section, mirrored(g, x), material,
+                                        inverse_bulk_modulus);
   }
 
   /// Π_e (KL14) [mJ].
   static double strain_energy(const Geometry& g, const Vector& x, const AnyMaterial& material,
-                              double /*inverse_bulk_modulus*/, const Internal& /*internal*/) {
-    return shell::compute_shell_energy(g.patch, g.section, mirrored(g, x), material);
+                              double inverse_bulk_modulus, const Internal& /*internal*/) {
+    return shell::compute_shell_energy(g.patch, g.section, mirrored(g, x), material,
+                                       inverse_bulk_modulus);
   }
 
   /// ∫ F dV over the element, V0 F with F the mid-surface's deformation gradient (KL19), constant
-  /// through the thickness of a thin shell, and its reference volume V0 = A0 t.
+  /// through the thickness of a thin shell, det F the mid-surface's volume ratio (1 when exactly
+  /// incompressible, KL12 otherwise), and its reference volume V0 = A0 t.
   static Mat3d deformation_integral(const Mesh& /*mesh*/, std::span<const int, kNodes> /*nodes*/,
-                                    const Geometry& g, const Vector& x, double& volume) {
+                                    const Geometry& g, const Vector& x, const AnyMaterial& material,
+                                    double inverse_bulk_modulus, double& volume) {
     volume = g.patch.area * g.section.thickness;
-    return volume * shell::mid_surface_deformation(g.patch, mirrored(g, x));
+    const Vector y = mirrored(g, x);
+    double J = 1.0;
+    if (inverse_bulk_modulus > 0.0) {
+      const shell::ShellKinematics k = shell::compute_shell_kinematics(g.patch, g.patch.X + y);
+      J = std::visit(
+          [&](const auto& model) {
+            return shell::evaluate_plane_stress(model, shell::nearest_section_point(g.section, 0.0),
+                                                shell::in_plane_C(k.strains, 0.0), g.patch.frame,
+                                                inverse_bulk_modulus)
+                .J;
+          },
+          material);
+    }
+    return volume * shell::mid_surface_deformation(g.patch, y, J);
   }
 
   static Fields zero_fields() { return zero_element_fields(); }

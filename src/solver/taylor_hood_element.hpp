@@ -81,7 +81,7 @@ struct TaylorHoodElement {
   /// taylor_hood::compute_element_fields: volume averages of σ, J, von Mises and p.
   template <class Material>
   static Fields fields(const Geometry& g, const Vector& x, const Material& material,
-                       const Internal& /*internal*/) {
+                       double /*inverse_bulk_modulus*/, const Internal& /*internal*/) {
     return taylor_hood::compute_element_fields(g, x, material);
   }
 
@@ -97,7 +97,9 @@ struct TaylorHoodElement {
 
   /// ∫ F dV over the element (by its quadrature) and its reference volume.
   static Mat3d deformation_integral(const Mesh& /*mesh*/, std::span<const int, kNodes> /*nodes*/,
-                                    const Geometry& g, const Vector& x, double& volume) {
+                                    const Geometry& g, const Vector& x,
+                                    const AnyMaterial& /*material*/,
+                                    double /*inverse_bulk_modulus*/, double& volume) {
     volume = g.volume;
     return taylor_hood::deformation_integral(g, x);
   }

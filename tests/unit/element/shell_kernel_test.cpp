@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "shell_test_support.hpp"
@@ -49,30 +51,115 @@ Mat2d from_components(const Vec3d& c) {
   return C;
 }
 
+/// 1/κ [1/MPa] for the plane-stress tests: exact incompressibility, and bulk moduli 1000, 10 and
+/// 0.8 MPa against shear moduli near 1 MPa (Poisson's ratios near 0.4995, 0.45 and 0.06, KL12).
+constexpr std::array<double, 4> kInverseBulkModuli = {0.0, 1e-3, 0.1, 1.25};
+
 TEST(ShellPlaneStress, DerivativesMatchFiniteDifferencesForEveryModel) {
   std::mt19937 rng(3);
   const Mat3d frame = Eigen::AngleAxisd(0.7, Vec3d(1, -1, 2).normalized()).toRotationMatrix();
-  for (const AnyMaterial& material : every_material()) {
-    const Vec3d c = components(random_C2(rng)) + Vec3d(0.2, 0.2, 0.0);  // fibres stretched
-    auto response = [&](const Vec3d& cc) {
-      return std::visit(
-          [&](const auto& m) { return evaluate_plane_stress(m, 0, from_components(cc), frame); },
-          material);
-    };
-    const PlaneStressResponse r = response(c);
-    // Central differences with h = 1e-6: truncation ~ h² |W'''| ~ 1e-12, round-off
-    // ~ 1e-16 |W| / h ~ 1e-10; the derivatives are O(1) MPa, so 1e-7 leaves a margin of 1000.
-    const double h = 1e-6;
-    for (int a = 0; a < 3; ++a) {
-      const Vec3d e = h * Vec3d::Unit(a);
-      const PlaneStressResponse plus = response(c + e);
-      const PlaneStressResponse minus = response(c - e);
-      EXPECT_NEAR(r.dW(a), (plus.W - minus.W) / (2 * h), 1e-7) << material_name(material);
-      const Vec3d column = (plus.dW - minus.dW) / (2 * h);
-      for (int b = 0; b < 3; ++b) {
-        EXPECT_NEAR(r.d2W(b, a), column(b), 1e-7) << material_name(material) << " " << a << b;
+  for (double inverse_bulk_modulus : kInverseBulkModuli) {
+    for (const AnyMaterial& material : every_material()) {
+      const Vec3d c = components(random_C2(rng)) + Vec3d(0.2, 0.2, 0.0);  // fibres stretched
+      auto response = [&](const Vec3d& cc) {
+        return std::visit(
+            [&](const auto& m) {
+              return evaluate_plane_stress(m, 0, from_components(cc), frame, inverse_bulk_modulus);
+            },
+            material);
+      };
+      const PlaneStressResponse r = response(c);
+      // Central differences with h = 1e-6: truncation ~ h² |W'''| ~ 1e-12, round-off
+      // ~ 1e-16 |W| / h ~ 1e-10; the derivatives are O(1) MPa, so 1e-7 leaves a margin of 1000.
+      // With 1/κ > 0 the condensed C33 is converged to second order in a step below 1e-8 C33
+      // (KL12): its error in W₂ is below 1e-16 MPa, far under the differences' own.
+      const double h = 1e-6;
+      for (int a = 0; a < 3; ++a) {
+        const Vec3d e = h * Vec3d::Unit(a);
+        const PlaneStressResponse plus = response(c + e);
+        const PlaneStressResponse minus = response(c - e);
+        const std::string what =
+            material_name(material) + ", 1/kappa " + std::to_string(inverse_bulk_modulus);
+        EXPECT_NEAR(r.dW(a), (plus.W - minus.W) / (2 * h), 1e-7) << what;
+        const Vec3d column = (plus.dW - minus.dW) / (2 * h);
+        for (int b = 0; b < 3; ++b) EXPECT_NEAR(r.d2W(b, a), column(b), 1e-7) << what << a << b;
       }
     }
+  }
+}
+
+TEST(ShellPlaneStress, NearlyIncompressibleNeoHookeanAgainstTheZeroNormalStress) {
+  // A principal in-plane stretch (λ1, λ2): λ3 from ∂W/∂λ3 = 0 by bisection (independent of
+  // KL12's Newton's method), then W₂ = W(λ1, λ2, λ3) and, by the envelope theorem,
+  // ∂W₂/∂λ1 = ∂W/∂λ1 at that λ3. The kernel gives ∂W₂/∂c, and dC11/dλ1 = 2 λ1. Round-off only:
+  // 1e-12.
+  for (double kappa : {1000.0, 10.0, 0.8}) {
+    const PrincipalNeoHookean closed{0.5, kappa};
+    const NeoHookean nh{0.5};
+    for (const Vec2d& stretch : {Vec2d(1.3, 0.9), Vec2d(1.2, 1.2), Vec2d(0.8, 1.5)}) {
+      const double l3 = closed.plane_stress_thickness(stretch.x(), stretch.y());
+      const Vec3d l(stretch.x(), stretch.y(), l3);
+      const Mat2d C = Vec2d(l(0) * l(0), l(1) * l(1)).asDiagonal();
+      const PlaneStressResponse r = evaluate_plane_stress(nh, 0, C, Mat3d::Identity(), 1.0 / kappa);
+      EXPECT_NEAR(std::sqrt(r.C33), l3, 1e-12) << kappa;
+      EXPECT_NEAR(r.J, l.prod(), 1e-12) << kappa;
+      EXPECT_NEAR(r.W, closed.energy(l), 1e-12) << kappa;
+      EXPECT_NEAR(2.0 * l(0) * r.dW(0), closed.derivative(l, 0), 1e-12) << kappa;
+      EXPECT_NEAR(2.0 * l(1) * r.dW(1), closed.derivative(l, 1), 1e-12) << kappa;
+      EXPECT_NEAR(r.dW(2), 0.0, 1e-13) << kappa;  // no shear in the principal axes
+    }
+  }
+}
+
+TEST(ShellPlaneStress, SmallStrainIsLinearPlaneStressWithThePoissonRatioOfTheBulkModulus) {
+  // At a small in-plane strain ε, S₂ = E/(1 - ν²) ((1 - ν) ε + ν tr ε I) with E = 9 κ μ /(3 κ + μ)
+  // and ν = (3 κ - 2 μ) / (2 (3 κ + μ)): the isochoric model with κ/2 (J - 1)² is linear
+  // isotropic elasticity there. ε ~ 1e-6, so the nonlinear terms are 1e-6 of the stress.
+  const NeoHookean nh{0.5};  // μ = 1 MPa
+  const double mu = 1.0;
+  Mat2d eps;
+  eps << 1.0e-6, 0.4e-6, 0.4e-6, -0.7e-6;
+  for (double kappa : {2.0 / 3.0, 2.0, 1000.0}) {  // ν = 0, 0.29, 0.4995
+    const double E = 9.0 * kappa * mu / (3.0 * kappa + mu);
+    const double nu = (3.0 * kappa - 2.0 * mu) / (2.0 * (3.0 * kappa + mu));
+    const Mat2d S = E / (1.0 - nu * nu) * ((1.0 - nu) * eps + nu * eps.trace() * Mat2d::Identity());
+    const PlaneStressResponse r =
+        evaluate_plane_stress(nh, 0, Mat2d::Identity() + 2.0 * eps, Mat3d::Identity(), 1.0 / kappa);
+    const Vec3d expected(0.5 * S(0, 0), 0.5 * S(1, 1), S(0, 1));  // ∂W₂/∂c = (S11/2, S22/2, S12)
+    EXPECT_LT((r.dW - expected).norm(), 1e-5 * expected.norm()) << "kappa " << kappa;
+    // The thickness strain: ε33 = -ν/(1 - ν) tr ε.
+    EXPECT_NEAR(0.5 * (r.C33 - 1.0), -nu / (1.0 - nu) * eps.trace(), 1e-5 * eps.norm())
+        << "kappa " << kappa;
+  }
+}
+
+TEST(ShellPlaneStress, LargeBulkModulusApproachesExactIncompressibility) {
+  // The response with 1/κ > 0 tends to that of KL9 like 1/κ (the volume change it allows is of
+  // the order of the stress over κ): at κ = 1e4 and 1e6 MPa against μ ~ 1 MPa, the stress and
+  // the Hessian differ by about 1e-4 and 1e-6 of their size.
+  std::mt19937 rng(11);
+  for (const AnyMaterial& material : every_material()) {
+    const Mat2d C = random_C2(rng) + 0.2 * Mat2d::Identity();
+    auto at = [&](double inverse_bulk_modulus) {
+      return std::visit(
+          [&](const auto& m) {
+            return evaluate_plane_stress(m, 0, C, Mat3d::Identity(), inverse_bulk_modulus);
+          },
+          material);
+    };
+    const PlaneStressResponse exact = at(0.0);
+    std::array<double, 2> difference{};
+    for (int k = 0; k < 2; ++k) {
+      const PlaneStressResponse nearly = at(k == 0 ? 1e-4 : 1e-6);
+      difference[k] = std::max((nearly.dW - exact.dW).norm() / exact.dW.norm(),
+                               (nearly.d2W - exact.d2W).norm() / exact.d2W.norm());
+    }
+    std::printf(
+        "%s: relative difference from exact incompressibility %.1e (kappa 1e4), %.1e "
+        "(1e6)\n",
+        material_name(material).c_str(), difference[0], difference[1]);
+    EXPECT_LT(difference[0], 1e-2) << material_name(material);
+    EXPECT_GT(difference[0] / difference[1], 50.0) << material_name(material);  // about 100
   }
 }
 
@@ -118,10 +205,11 @@ struct FiniteDifferenceErrors {
 
 FiniteDifferenceErrors compare_with_finite_differences(const PatchState& s,
                                                        const ShellSection& section,
-                                                       const AnyMaterial& material, double h) {
+                                                       const AnyMaterial& material,
+                                                       double inverse_bulk_modulus, double h) {
   PatchVec r;
   PatchMat K;
-  EXPECT_TRUE(assemble_shell(s.geometry, section, s.u, material, r, &K).ok);
+  EXPECT_TRUE(assemble_shell(s.geometry, section, s.u, material, inverse_bulk_modulus, r, &K).ok);
   PatchVec r_fd;
   PatchMat K_fd;
   for (int j = 0; j < kPatchDofs; ++j) {
@@ -131,8 +219,10 @@ FiniteDifferenceErrors compare_with_finite_differences(const PatchState& s,
     um(j) -= h;
     PatchVec rp;
     PatchVec rm;
-    const double Ep = assemble_shell(s.geometry, section, up, material, rp, nullptr).energy;
-    const double Em = assemble_shell(s.geometry, section, um, material, rm, nullptr).energy;
+    const double Ep =
+        assemble_shell(s.geometry, section, up, material, inverse_bulk_modulus, rp, nullptr).energy;
+    const double Em =
+        assemble_shell(s.geometry, section, um, material, inverse_bulk_modulus, rm, nullptr).energy;
     r_fd(j) = (Ep - Em) / (2 * h);
     K_fd.col(j) = (rp - rm) / (2 * h);
   }
@@ -145,18 +235,24 @@ TEST(ShellKernel, ResidualAndTangentMatchFiniteDifferencesForEveryModel) {
   const std::vector<SlotKinds> cases = {all_nodes(), free_sides({1})};
   for (const SlotKinds& neighbours : cases) {
     const PatchState s = deformed_curved_patch(7, neighbours);
-    for (const AnyMaterial& material : every_material()) {
-      // h = 1e-6 mm on a patch of 1 mm: truncation ~ h² ~ 1e-12 and round-off ~ 1e-16 / h
-      // ~ 1e-10 relative to the entries; 1e-7 relative leaves a margin of 1000 and is far below
-      // any wrong term (a missing term of KL16 or KL18 shows at 1e-2 or more).
-      const FiniteDifferenceErrors e = compare_with_finite_differences(s, section, material, 1e-6);
-      std::printf("%s, side 1 %s: residual error %.1e, tangent error %.1e\n",
-                  material_name(material).c_str(),
-                  neighbours[4] == Slot::missing ? "free" : "inner", e.residual, e.tangent);
-      EXPECT_LT(e.residual, 1e-7) << material_name(material)
-                                  << ", side 1 free: " << (neighbours[4] == Slot::missing);
-      EXPECT_LT(e.tangent, 1e-7) << material_name(material)
-                                 << ", side 1 free: " << (neighbours[4] == Slot::missing);
+    const char* side = neighbours[4] == Slot::missing ? "free" : "inner";
+    // Exactly incompressible (KL9), and with a bulk modulus of 2 MPa against shear moduli near
+    // 1 MPa (Poisson's ratio near 0.29, KL12).
+    for (double inverse_bulk_modulus : {0.0, 0.5}) {
+      for (const AnyMaterial& material : every_material()) {
+        // h = 1e-6 mm on a patch of 1 mm: truncation ~ h² ~ 1e-12 and round-off ~ 1e-16 / h
+        // ~ 1e-10 relative to the entries; 1e-7 relative leaves a margin of 1000 and is far below
+        // any wrong term (a missing term of KL16 or KL18 shows at 1e-2 or more).
+        const FiniteDifferenceErrors e =
+            compare_with_finite_differences(s, section, material, inverse_bulk_modulus, 1e-6);
+        std::printf("%s, 1/kappa %g, side 1 %s: residual error %.1e, tangent error %.1e\n",
+                    material_name(material).c_str(), inverse_bulk_modulus, side, e.residual,
+                    e.tangent);
+        EXPECT_LT(e.residual, 1e-7) << material_name(material) << ", 1/kappa "
+                                    << inverse_bulk_modulus << ", side 1 " << side;
+        EXPECT_LT(e.tangent, 1e-7) << material_name(material) << ", 1/kappa "
+                                   << inverse_bulk_modulus << ", side 1 " << side;
+      }
     }
   }
 }
@@ -165,7 +261,8 @@ TEST(ShellKernel, TangentIsSymmetricAndMissingNeighbourIsUncoupled) {
   const PatchState s = deformed_curved_patch(11, free_sides({2}));
   PatchVec r;
   PatchMat K;
-  ASSERT_TRUE(assemble_shell(s.geometry, make_shell_section(0.1), s.u, NeoHookean{0.5}, r, &K).ok);
+  ASSERT_TRUE(
+      assemble_shell(s.geometry, make_shell_section(0.1), s.u, NeoHookean{0.5}, 0.0, r, &K).ok);
   // A Hessian: symmetric to round-off (1e-12 of its largest entry).
   EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-12 * K.cwiseAbs().maxCoeff());
   // Slot 5 (across side 2) and slots 10, 11 (beyond it) are missing: exactly zero rows and
@@ -198,7 +295,7 @@ TEST(ShellKernel, RigidMotionsChangeNothing) {
   // From the reference: zero energy and residual. Scale: the energy of a 10 % strain is about
   // μ (0.1)² t A ~ 5e-4 mJ and its forces ~ 5e-3 N; round-off leaves 1e-13 of that.
   const PatchVec rigid = moved_rigidly(s.geometry, PatchVec::Zero(), Q, c);
-  const ShellStatus at_rest = assemble_shell(s.geometry, section, rigid, nh, r, &K);
+  const ShellStatus at_rest = assemble_shell(s.geometry, section, rigid, nh, 0.0, r, &K);
   std::printf("rigid motion from the reference: energy %.1e mJ, residual %.1e N\n", at_rest.energy,
               r.cwiseAbs().maxCoeff());
   EXPECT_NEAR(at_rest.energy, 0.0, 1e-15);
@@ -215,9 +312,9 @@ TEST(ShellKernel, RigidMotionsChangeNothing) {
   EXPECT_LT(rigid_tangent, 1e-12);
   // From a deformed state: the same energy, the residual turned with the patch (relative 1e-12).
   PatchVec r0;
-  const double E0 = assemble_shell(s.geometry, section, s.u, nh, r0, nullptr).energy;
-  const ShellStatus moved =
-      assemble_shell(s.geometry, section, moved_rigidly(s.geometry, s.u, Q, c), nh, r, nullptr);
+  const double E0 = assemble_shell(s.geometry, section, s.u, nh, 0.0, r0, nullptr).energy;
+  const ShellStatus moved = assemble_shell(
+      s.geometry, section, moved_rigidly(s.geometry, s.u, Q, c), nh, 0.0, r, nullptr);
   double turned = 0.0;
   for (int n = 0; n < kPatchNodes; ++n)
     turned = std::max(turned, (r.segment<3>(3 * n) - Q * r0.segment<3>(3 * n)).norm() / r0.norm());
@@ -235,7 +332,7 @@ TEST(ShellKernel, InadmissibleStateIsReportedNotThrown) {
   PatchVec r;
   PatchMat K;
   const ShellStatus status =
-      assemble_shell(s.geometry, make_shell_section(0.1), u, NeoHookean{0.5}, r, &K);
+      assemble_shell(s.geometry, make_shell_section(0.1), u, NeoHookean{0.5}, 0.0, r, &K);
   EXPECT_FALSE(status.ok);
   EXPECT_EQ(r.cwiseAbs().maxCoeff(), 0.0);
 }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "shell_test_support.hpp"
@@ -24,18 +25,19 @@ Vec3d flat(const Vec2d& p) { return Vec3d(p.x(), p.y(), 0.0); }
 /// The largest entry of |A| (a scale for tolerances).
 double largest(const Mat3d& A) { return A.cwiseAbs().maxCoeff(); }
 
-TEST(ShellOutputs, HomogeneousBiaxialStretchOfAFlatSheet) {
-  // x = Q D Qᵀ X + c on the flat patch in the plane with normal Q e3, D = diag(a, b, ·): the
-  // incompressible neo-Hookean plane stress σ = Q diag(2 c1 (a² - λ3²), 2 c1 (b² - λ3²), 0) Qᵀ,
-  // λ3 = 1/(a b), the same at every ζ: N = t λ3 σ, M = 0, σ on both faces, thickness t λ3, the
-  // principal stretches (a, b, λ3) sorted at every face, and no change of curvature.
+/// The outputs of a flat sheet in x = Q diag(a, b, ·) Qᵀ X + c on the flat patch in the plane
+/// with normal Q e3, against its plane-stress thickness stretch λ3 and principal Cauchy stresses
+/// σ1, σ2: the same at every ζ, so N = t λ3 σ, M = 0, σ on both faces and the mid-surface,
+/// thickness t λ3, the principal stretches (a, b, λ3) sorted at every face, J = a b λ3, and no
+/// change of curvature; round-off only (the patch reproduces a homogeneous deformation exactly,
+/// KL3).
+void expect_homogeneous_stretch(double a, double b, double l3, const Vec2d& principal_stress,
+                                double inverse_bulk_modulus) {
   const double t = 0.2;
-  const double a = 1.3, b = 0.9, l3 = 1.0 / (a * b);
   const Mat3d Q = Eigen::AngleAxisd(0.7, Vec3d(0.2, -1.0, 0.6).normalized()).toRotationMatrix();
   const Vec3d c(0.3, -0.2, 1.1);
   const Mat3d sigma =
-      Q * Vec3d(2 * kC1 * (a * a - l3 * l3), 2 * kC1 * (b * b - l3 * l3), 0.0).asDiagonal() *
-      Q.transpose();
+      Q * Vec3d(principal_stress.x(), principal_stress.y(), 0.0).asDiagonal() * Q.transpose();
   const Mat3d N = t * l3 * sigma;
   std::vector<double> stretches = {a, b, l3};
   std::sort(stretches.rbegin(), stretches.rend());
@@ -48,18 +50,46 @@ TEST(ShellOutputs, HomogeneousBiaxialStretchOfAFlatSheet) {
           map_patch(p, [&](const Vec2d& q) { return Vec3d(Q * flat(q)); }), neighbours);
       const PatchPositions x = map_patch(
           p, [&](const Vec2d& q) { return Vec3d(Q * Vec3d(a * q.x(), b * q.y(), 0.0) + c); });
-      const ShellOutputs out = compute_shell_outputs(g, section, to_vector(x) - g.X, nh);
-      // Round-off: the patch reproduces a homogeneous deformation exactly (KL3).
-      EXPECT_NEAR(out.thickness, t * l3, 1e-14) << "seed " << seed;
-      EXPECT_LT(largest(out.membrane_force - N), 1e-13 * largest(N)) << "seed " << seed;
-      EXPECT_LT(largest(out.bending_moment), 1e-13 * largest(N) * t) << "seed " << seed;
-      EXPECT_LT(largest(out.curvature_change), 1e-12) << "seed " << seed;
+      const PatchVec u = to_vector(x) - g.X;
+      const ShellOutputs out = compute_shell_outputs(g, section, u, nh, inverse_bulk_modulus);
+      const std::string what =
+          "seed " + std::to_string(seed) + ", 1/kappa " + std::to_string(inverse_bulk_modulus);
+      EXPECT_NEAR(out.thickness, t * l3, 1e-14) << what;
+      EXPECT_LT(largest(out.membrane_force - N), 1e-13 * largest(N)) << what;
+      EXPECT_LT(largest(out.bending_moment), 1e-13 * largest(N) * t) << what;
+      EXPECT_LT(largest(out.curvature_change), 1e-12) << what;
       for (int f = 0; f < kShellFaces; ++f) {
         EXPECT_LT(largest(out.face_cauchy[f] - sigma), 1e-13 * largest(sigma)) << "face " << f;
         for (int k = 0; k < 3; ++k)
           EXPECT_NEAR(out.face_stretches[f][k], stretches[k], 1e-13) << "face " << f;
       }
+      const ElementFields fields = compute_shell_fields(g, section, u, nh, inverse_bulk_modulus);
+      EXPECT_NEAR(fields.J, a * b * l3, 1e-14) << what;
+      EXPECT_LT(largest(fields.cauchy - sigma), 1e-13 * largest(sigma)) << what;
     }
+  }
+}
+
+TEST(ShellOutputs, HomogeneousBiaxialStretchOfAFlatSheet) {
+  // Exactly incompressible neo-Hookean plane stress: λ3 = 1/(a b),
+  // σ = diag(2 c1 (a² - λ3²), 2 c1 (b² - λ3²), 0).
+  const double a = 1.3, b = 0.9, l3 = 1.0 / (a * b);
+  expect_homogeneous_stretch(a, b, l3,
+                             Vec2d(2 * kC1 * (a * a - l3 * l3), 2 * kC1 * (b * b - l3 * l3)), 0.0);
+}
+
+TEST(ShellOutputs, HomogeneousBiaxialStretchOfANearlyIncompressibleSheet) {
+  // With a bulk modulus (KL12): λ3 the root of ∂W/∂λ3 = 0 by bisection and the principal Cauchy
+  // stresses σ_α = λ_α ∂W/∂λ_α / J of the neo-Hookean energy written in principal stretches
+  // (shell_test_support.hpp), at bulk moduli 10 and 0.8 MPa (ν near 0.45 and 0.06).
+  const double a = 1.3, b = 0.9;
+  for (double kappa : {10.0, 0.8}) {
+    const PrincipalNeoHookean closed{kC1, kappa};
+    const double l3 = closed.plane_stress_thickness(a, b);
+    const Vec3d l(a, b, l3);
+    const Vec2d stress(a * closed.derivative(l, 0) / l.prod(),
+                       b * closed.derivative(l, 1) / l.prod());
+    expect_homogeneous_stretch(a, b, l3, stress, 1.0 / kappa);
   }
 }
 
@@ -91,7 +121,8 @@ BendingErrors bending_errors(double t, double R, double h) {
   const auto p = plane_patch(h, 0.0, 4);
   const ShellGeometry g = compute_shell_geometry(map_patch(p, flat), all_nodes());
   const PatchPositions x = map_patch(p, [&](const Vec2d& q) { return on_cylinder(q, R); });
-  const ShellOutputs out = compute_shell_outputs(g, make_shell_section(t), to_vector(x) - g.X, nh);
+  const ShellOutputs out =
+      compute_shell_outputs(g, make_shell_section(t), to_vector(x) - g.X, nh, 0.0);
   // The current axes: a along the cylinder's axis, d across it in the triangle's current plane.
   const Vec3d a = flat(Vec2d(std::cos(0.3), std::sin(0.3)));
   const PatchVec xv = to_vector(x);

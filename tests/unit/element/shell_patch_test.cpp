@@ -59,7 +59,7 @@ TEST(ShellPatch, HomogeneousInPlaneStretchGivesThePlaneStressClosedForm) {
       const ShellGeometry g = compute_shell_geometry(map_patch(p, flat), neighbours);
       const PatchPositions x =
           map_patch(p, [&](const Vec2d& q) { return Vec3d(Q * flat(F2 * q) + c); });
-      const double energy = compute_shell_energy(g, section, displacement(g, x), nh);
+      const double energy = compute_shell_energy(g, section, displacement(g, x), nh, 0.0);
       // The isoparametric patch reproduces a homogeneous deformation exactly (KL3) on a
       // distorted patch with or without neighbours: round-off only, 1e-12 relative.
       EXPECT_NEAR(energy, W * g.area * t, 1e-12 * W * g.area * t) << "seed " << seed;
@@ -143,7 +143,7 @@ TEST(ShellPatch, SixNodesOnAConicFallBackToTheIsoparametricPatch) {
   const PatchPositions x =
       map_patch(p, [](const Vec2d& q) { return Vec3d(1.2 * q.x(), q.y(), 0); });
   const double W = 0.5 * (1.44 + 1.0 + 1.0 / 1.44 - 3.0);
-  EXPECT_NEAR(compute_shell_energy(g, make_shell_section(t), displacement(g, x), nh),
+  EXPECT_NEAR(compute_shell_energy(g, make_shell_section(t), displacement(g, x), nh, 0.0),
               W * g.area * t, 1e-12 * W * g.area * t);
 }
 
@@ -152,7 +152,7 @@ double bent_energy_density(const AnyMaterial& material, double t, double R, doub
   const auto p = plane_patch(h, 0.0, 6);
   const ShellGeometry g = compute_shell_geometry(map_patch(p, flat), all_nodes());
   const PatchPositions x = map_patch(p, [&](const Vec2d& q) { return on_cylinder(q, R, 0.3); });
-  return compute_shell_energy(g, make_shell_section(t, points), displacement(g, x), material) /
+  return compute_shell_energy(g, make_shell_section(t, points), displacement(g, x), material, 0.0) /
          g.area;
 }
 

@@ -16,6 +16,7 @@
 #include "element/shell.hpp"
 #include "element_test_support.hpp"
 #include "material/registry.hpp"
+#include "support/principal_neo_hookean.hpp"
 
 namespace plisse::test {
 
