@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/types.hpp"
 #include "mesh/surface_ref.hpp"
 #include "physics/ramp.hpp"
 
@@ -17,6 +18,16 @@ struct SurfaceConditionSettings {
   std::string name;  ///< optional, unique; the reaction force on the surface is reported in the
                      ///< history as `force_x:<name>`, `force_y:<name>`, `force_z:<name>`
   SurfaceRef surface;
+  InputPlace place;
+};
+
+/// A `clamped` or `hinged` condition on an edge of a shell: its nodes moved together by `value`
+/// (a grip; zero holds the edge), the slope across the edge held (clamped) or free (hinged).
+struct ShellEdgeConditionSettings {
+  std::string name;  ///< as SurfaceConditionSettings::name
+  SurfaceRef surface;
+  Vec3d value = Vec3d::Zero();  ///< displacement of the edge at the end of the ramp [mm]
+  Ramp ramp;
   InputPlace place;
 };
 

@@ -9,10 +9,11 @@
 /// its fixed width (shell_patch_nodes). On a free or hinged side the geometry reads the
 /// repetition as a missing slot (KL8), and the kernel's rows and columns of that slot are zero,
 /// so its scatter onto the repeated node adds nothing. Across and beyond a clamped or symmetry
-/// side (Mesh::side_mirrors) the slot is the mirror image of the node it repeats (KL8a): its
-/// displacement M u, M the mirror's linear part (a product of two where a slot is the image of
-/// an image), so the policy evaluates the kernel at that displacement and turns the slot's rows
-/// and columns back, Mᵀ r and Mᵀ K M, before they are scattered onto the node.
+/// side (Mesh::side_mirrors) the slot is the mirror image of a slot about the side's current
+/// midpoint (KL8a): its displacement a linear form in the slots that hold nodes, y = T x
+/// (shell_patch_slots), so the policy evaluates the kernel at y and turns its residual and
+/// tangent back, Tᵀ r and Tᵀ K T, before they are scattered; the image slot's own rows and
+/// columns are then zero.
 ///
 /// The shell has no pressure unknown: the plane-stress condition eliminates the pressure inside
 /// the kernel (KL9). The state keeps four values per node (solver/dof_map.hpp); the model
@@ -21,6 +22,7 @@
 #include <array>
 #include <span>
 #include <variant>
+#include <vector>
 
 #include "element/element_fields.hpp"
 #include "element/shell.hpp"
@@ -44,18 +46,13 @@ struct ShellElement {
   using Matrix = shell::PatchMat;
   using Fields = ElementFields;
   /// The patch's reference geometry and its cross-section (thickness and thickness points), and
-  /// the mirrored slots: a slot across a side of a clamped or symmetry edge reads its missing
-  /// node as the image of its corner under the map of Mesh::side_mirrors (shell.md, KL8a), whose
-  /// linear part is `mirror[a]` (the identity for every other slot).
+  /// the image slots: a slot across or beyond a side of a clamped or symmetry edge is the image of
+  /// a slot under the side's map about its current midpoint (shell.md, KL8a), its displacement
+  /// the sum of `image_terms` (empty for an element without mirrored sides).
   struct Geometry {
     shell::ShellGeometry patch;
     shell::ShellSection section;
-    std::array<bool, kNodes> mirrored{};
-    std::array<Mat3d, kNodes> mirror = [] {
-      std::array<Mat3d, kNodes> m;
-      m.fill(Mat3d::Identity());
-      return m;
-    }();
+    std::vector<SlotTerm> image_terms;
   };
   /// ok: the element could be evaluated; min_J: the smallest det F through the thickness (1 when
   /// exactly incompressible, KL9; KL12).
@@ -98,8 +95,7 @@ struct ShellElement {
   static Geometry geometry(const Mesh& mesh, std::span<const int, kNodes> nodes) {
     const ShellPatchSlots slots = shell_patch_slots(mesh, nodes);
     Geometry g;
-    g.mirrored = slots.image;
-    g.mirror = slots.map;
+    g.image_terms = slots.image_terms;
     double thickness = 0.0;
     for (int i = 0; i < 3; ++i) thickness += mesh.shell_thickness[nodes[i]] / 3.0;
     g.patch = shell::compute_shell_geometry(slots.X, slots.kinds);
@@ -117,15 +113,7 @@ struct ShellElement {
                          Matrix* K) {
     const shell::ShellStatus status = shell::assemble_shell(g.patch, g.section, mirrored(g, x),
                                                             material, inverse_bulk_modulus, r, K);
-    for (int a = 0; a < kNodes; ++a) {
-      if (!g.mirrored[a]) continue;
-      const int s = 3 * a;
-      const Mat3d M = g.mirror[a];
-      r.segment<3>(s) = M.transpose() * r.segment<3>(s);
-      if (K == nullptr) continue;
-      K->middleRows<3>(s) = M.transpose() * K->middleRows<3>(s);
-      K->middleCols<3>(s) = K->middleCols<3>(s) * M;
-    }
+    if (!g.image_terms.empty()) turn_back(g, r, K);
     return {status.ok, status.min_J};
   }
 
@@ -179,13 +167,32 @@ struct ShellElement {
 
   static Fields zero_fields() { return zero_element_fields(); }
 
-  /// The element's displacements with each mirrored slot, gathered as its source corner's u,
-  /// made the mirror image's R u (KL8a).
+  /// The patch displacements y = T x of the gathered ones x: each image slot's made the sum of
+  /// its terms (KL8a), the others unchanged.
   static Vector mirrored(const Geometry& g, const Vector& x) {
     Vector y = x;
-    for (int a = 0; a < kNodes; ++a)
-      if (g.mirrored[a]) y.segment<3>(3 * a) = g.mirror[a] * x.segment<3>(3 * a);
+    for (const SlotTerm& t : g.image_terms) y.segment<3>(3 * t.target).setZero();
+    for (const SlotTerm& t : g.image_terms)
+      y.segment<3>(3 * t.target) += t.map * x.segment<3>(3 * t.source);
     return y;
+  }
+
+  /// r ← Tᵀ r and K ← Tᵀ K T for y = T x of `mirrored` (the chain rule): the image slots' rows
+  /// and columns move onto their sources and are then zero.
+  static void turn_back(const Geometry& g, Vector& r, Matrix* K) {
+    const Vector r_patch = r;
+    for (const SlotTerm& t : g.image_terms) r.segment<3>(3 * t.target).setZero();
+    for (const SlotTerm& t : g.image_terms)
+      r.segment<3>(3 * t.source) += t.map.transpose() * r_patch.segment<3>(3 * t.target);
+    if (K == nullptr) return;
+    const Matrix K_patch = *K;  // K T: columns first
+    for (const SlotTerm& t : g.image_terms) K->middleCols<3>(3 * t.target).setZero();
+    for (const SlotTerm& t : g.image_terms)
+      K->middleCols<3>(3 * t.source) += K_patch.middleCols<3>(3 * t.target) * t.map;
+    const Matrix KT = *K;  // then Tᵀ (K T)
+    for (const SlotTerm& t : g.image_terms) K->middleRows<3>(3 * t.target).setZero();
+    for (const SlotTerm& t : g.image_terms)
+      K->middleRows<3>(3 * t.source) += t.map.transpose() * KT.middleRows<3>(3 * t.target);
   }
 };
 

@@ -68,22 +68,34 @@ std::array<int, kPatchNodes> shell_patch_nodes(const Mesh& mesh, int e) {
 ShellPatchSlots shell_patch_slots(const Mesh& mesh, std::span<const int, kPatchNodes> nodes) {
   ShellPatchSlots s;
   const std::array<int, 3> corners = {nodes[0], nodes[1], nodes[2]};
+  // Each slot's displacement as a linear form in the slots: form[a][b] multiplies u_b.
+  std::array<std::array<Mat3d, kPatchNodes>, kPatchNodes> form;
   for (int a = 0; a < kPatchNodes; ++a) {
     s.X[a] = mesh.nodes[nodes[a]];
     s.kinds[a] = Slot::node;
-    s.map[a] = Mat3d::Identity();
+    for (int b = 0; b < kPatchNodes; ++b)
+      form[a][b] = a == b ? Mat3d::Identity().eval() : Mat3d::Zero().eval();
   }
-  const auto make_image = [&](int a, const SideMirror& m, int from) {
+  // Slot a becomes the image of slot `from` under the map R of the side with corners p and q
+  // about the side's midpoint, which moves with the side (KL8a): X = c + R (X_from - c) in the
+  // reference, and u = R u_from + (I - R)(u_p + u_q)/2.
+  const auto make_image = [&](int a, const SideMirror& m, int from, int p, int q) {
     s.kinds[a] = Slot::image;
-    s.image[a] = true;
-    s.X[a] = image_of(m, s.X[from]);
-    s.map[a] = m.map * s.map[from];
+    const Vec3d c = 0.5 * (s.X[p] + s.X[q]);
+    s.X[a] = c + m.map * (s.X[from] - c);
+    const Mat3d half_rest = 0.5 * (Mat3d::Identity() - m.map);
+    std::array<Mat3d, kPatchNodes> image;
+    for (int b = 0; b < kPatchNodes; ++b) image[b] = m.map * form[from][b];
+    image[p] += half_rest;
+    image[q] += half_rest;
+    form[a] = image;
   };
   // Across the sides first: the slots beyond a mirrored side are images of these.
   for (int i = 0; i < 3; ++i) {
     if (nodes[3 + i] != nodes[i]) continue;
     s.kinds[3 + i] = Slot::missing;
-    if (const SideMirror* m = mirror_of_side(mesh, corners, i)) make_image(3 + i, *m, i);
+    if (const SideMirror* m = mirror_of_side(mesh, corners, i))
+      make_image(3 + i, *m, i, (i + 1) % 3, (i + 2) % 3);
   }
   for (int i = 0; i < 3; ++i) {
     for (int w = 0; w < 2; ++w) {
@@ -96,19 +108,27 @@ ShellPatchSlots shell_patch_slots(const Mesh& mesh, std::span<const int, kPatchN
         const int o = nodes[3 + i], j = nodes[(i + 1) % 3], k = nodes[(i + 2) % 3];
         const std::pair<int, int> key = w == 0 ? std::pair{o, k} : std::pair{j, o};
         const auto m = mesh.side_mirrors.find(key);
-        if (m != mesh.side_mirrors.end()) make_image(a, m->second, source);
+        if (m != mesh.side_mirrors.end()) {
+          make_image(a, m->second, source, w == 0 ? 3 + i : (i + 1) % 3,
+                     w == 0 ? (i + 2) % 3 : 3 + i);
+        }
       } else if (s.kinds[3 + i] == Slot::image) {
         const SideMirror& m = *mirror_of_side(mesh, corners, i);
         const int from = imaged_slot(mesh, m, corners, i, w);
         if (s.kinds[from] == Slot::missing) {
           s.kinds[a] = Slot::missing;  // the image of a ghost is the ghost of the image (KL8)
         } else {
-          make_image(a, m, from);
+          make_image(a, m, from, (i + 1) % 3, (i + 2) % 3);
         }
       } else {
         s.kinds[a] = Slot::missing;  // beyond a free side: unused
       }
     }
+  }
+  for (int a = 0; a < kPatchNodes; ++a) {
+    if (s.kinds[a] != Slot::image) continue;
+    for (int b = 0; b < kPatchNodes; ++b)
+      if (!form[a][b].isZero(0.0)) s.image_terms.push_back({a, b, form[a][b]});
   }
   return s;
 }

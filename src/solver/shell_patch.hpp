@@ -5,6 +5,7 @@
 /// element when the model is made.
 #include <array>
 #include <span>
+#include <vector>
 
 #include "element/shell_geometry.hpp"
 #include "mesh/mesh.hpp"
@@ -19,14 +20,23 @@ namespace plisse {
 /// Precondition: mesh.is_shell().
 std::array<int, shell::kPatchNodes> shell_patch_nodes(const Mesh& mesh, int e);
 
-/// The reference positions and kinds of the slots of a patch, with the linear part M of the map
-/// that gives an image slot's displacement from its node's, u_slot = M u_node (the identity for
-/// the other slots).
+/// One term of an image slot's displacement: u_target += map u_source, the source a slot that
+/// holds a node of the mesh (KL8a).
+struct SlotTerm {
+  int target = 0;
+  int source = 0;
+  Mat3d map = Mat3d::Identity();
+};
+
+/// The reference positions and kinds of the slots of a patch, and the displacement of every image
+/// slot as a linear form in the slots that hold nodes, u_target = Σ map u_source: the image of its
+/// source under its side's map about the side's current midpoint, u = R u_source +
+/// (I - R)(u_p + u_q)/2 with p, q the side's corners, composed where a slot is the image of an
+/// image (KL8a). Empty without mirrored sides.
 struct ShellPatchSlots {
   shell::PatchPositions X;
   shell::SlotKinds kinds;
-  std::array<bool, shell::kPatchNodes> image{};
-  std::array<Mat3d, shell::kPatchNodes> map;
+  std::vector<SlotTerm> image_terms;
 };
 
 /// The slots of the patch with nodes `nodes` (shell_patch_nodes): a repeated node read as a

@@ -229,6 +229,76 @@ TEST(ShellEdgeConditions, HalfStripWithASymmetryEdgeConvergesToTheClampedStrip) 
   EXPECT_NEAR(free_side / exact, 3.0, 0.05);
 }
 
+/// The strip with its long edges symmetric, clamped at x = 0 and clamped at x = L with that end
+/// moved by `move` [mm] (a grip; prescribe_surface with every component), no load; its state.
+std::vector<double> strip_with_a_moved_clamp(const Mesh& mesh, const Vec3d& move) {
+  Mesh clamped = mesh;
+  ConstraintSet set;
+  const SurfaceRef left{"left", {}}, right{"right", {}}, front{"front", {}}, back{"back", {}};
+  hold_in_plane(clamped, front, set);
+  hold_in_plane(clamped, back, set);
+  mirror_sides(clamped, clamped.edge_tags.at("front"), 1, 0.0);
+  mirror_sides(clamped, clamped.edge_tags.at("back"), 1, kWidth);
+  fix_surface(clamped, left, set);
+  clamp_sides(clamped, clamped.edge_tags.at("left"));
+  prescribe_surface(clamped, right, {move.x(), move.y(), move.z()}, Ramp{}, set);
+  clamp_sides(clamped, clamped.edge_tags.at("right"));
+  return shell_test::solve_under_pressure(clamped, set.components(), kC1, 0.0, 1e-12);
+}
+
+TEST(ShellEdgeConditions, AClampMovedAcrossTheStripBendsItAsABeamWithASettledSupport) {
+  // The end x = L moved by Δ along z, its slope held (KL8a: the image node follows the side's
+  // midpoint): with no load the beam's d⁴w/dx⁴ = 0, and w = dw/dx = 0 at x = 0, w = Δ and
+  // dw/dx = 0 at x = L give w(x) = Δ (3 ξ² - 2 ξ³), ξ = x/L, so w(L/5) = 13 Δ/125 (a node of
+  // every mesh). A hinged end would give the straight line, Δ/5; an image node left at its
+  // reference place, a kink at the
+  // moved end. Δ = 2e-3 t: linear (the membrane force of the held ends is O((Δ/t)²)).
+  const double settle = 2e-3 * kThickness;
+  std::vector<double> errors;
+  for (const int nx : {10, 20, 40, 80}) {
+    const Mesh mesh = strip(kLength, nx, std::max(2, nx / 5), Cells::same_diagonal);
+    const std::vector<double> state = strip_with_a_moved_clamp(mesh, Vec3d(0, 0, settle));
+    double sum = 0.0;
+    int count = 0;
+    for (int v = 0; v < mesh.n_nodes(); ++v)
+      if (std::abs(mesh.nodes[v].x() - kLength / 5.0) < 1e-9) {
+        sum += state[DofMap::dof(v, 2)];
+        ++count;
+      }
+    ASSERT_GT(count, 0);
+    const double exact = 13.0 / 125.0 * settle;
+    errors.push_back(std::abs(sum / count - exact) / exact);
+    std::printf(
+        "clamp moved by %.0e mm across, nx = %2d: w(L/5)/Δ = %.6f, exact %.6f, relative "
+        "error %.2e\n",
+        settle, nx, sum / count / settle, exact / settle, errors.back());
+  }
+  EXPECT_LT(errors.back(), 1e-3);
+  EXPECT_GT(errors[1] / errors[2], 3.5);
+  EXPECT_GT(errors[2] / errors[3], 3.5);
+}
+
+TEST(ShellEdgeConditions, ClampsPulledApartStretchTheStripHomogeneously) {
+  // The end x = L moved by Δ = 0.2 L along x, both ends clamped, the long edges symmetric: the
+  // exact state is the homogeneous stretch u = (Δ x / L, 0, 0) (plane strain in y), which the
+  // element reproduces (KL3, KL4a) when the image nodes beyond the moved end move with it (KL8a).
+  // Newton to 1e-12 of the first residual; a moved end whose images stayed put would bend and
+  // shear the end cells by O(Δ/h).
+  for (const Cells cells : {Cells::same_diagonal, Cells::distorted}) {
+    const Mesh mesh = strip(kLength, 20, 4, cells);
+    const double pull = 0.2 * kLength;
+    const std::vector<double> state = strip_with_a_moved_clamp(mesh, Vec3d(pull, 0, 0));
+    double error = 0.0;
+    for (int v = 0; v < mesh.n_nodes(); ++v) {
+      const Vec3d u(state[DofMap::dof(v, 0)], state[DofMap::dof(v, 1)], state[DofMap::dof(v, 2)]);
+      error = std::max(error, (u - Vec3d(pull * mesh.nodes[v].x() / kLength, 0, 0)).norm());
+    }
+    std::printf("clamps pulled apart by %.0f mm, cells %d: largest |u - u_exact| / Δ = %.1e\n",
+                pull, static_cast<int>(cells), error / pull);
+    EXPECT_LT(error, 1e-9 * pull) << "cells " << static_cast<int>(cells);
+  }
+}
+
 TEST(ShellEdgeConditions, TheCurvaturePassesBothPatchTestsOnEveryMesh) {
   for (const Cells cells : {Cells::same_diagonal, Cells::alternating, Cells::distorted}) {
     const PatchTestErrors e = patch_test_errors(strip(kLength, 40, 8, cells));
