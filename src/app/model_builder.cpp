@@ -56,9 +56,11 @@ void check_free_displacements(const Case& c, const Mesh& mesh,
                      "solve");
 }
 
-/// The density of every tetrahedron [tonne/mm^3]: its material's; 0 in a rigid region (its weight
-/// rests on whatever moves it).
+/// The density of every element [tonne/mm^3], as consistent_nodal_volumes weighs them: of each
+/// tetrahedron, its material's, 0 in a rigid region (its weight rests on whatever moves it); of
+/// each triangle of a shell, the case's material's (a shell has no regions).
 std::vector<double> element_densities(const Case& c, const Mesh& mesh) {
+  if (mesh.is_shell()) return std::vector<double>(mesh.triangles.size(), c.material.density);
   std::vector<double> density(mesh.tets.size(), c.material.density);
   for (const Region& r : c.regions)
     for (int t : region_tets(r, mesh))

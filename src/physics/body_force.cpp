@@ -7,12 +7,26 @@ namespace plisse {
 
 std::vector<double> consistent_nodal_volumes(const Mesh& mesh,
                                              const std::vector<double>& element_weight) {
-  PLISSE_CHECK(element_weight.empty() || element_weight.size() == mesh.tets.size(),
-               element_weight.size() << " element weights for " << mesh.tets.size() << " elements");
+  const std::size_t n_elements = mesh.is_shell() ? mesh.triangles.size() : mesh.tets.size();
+  PLISSE_CHECK(element_weight.empty() || element_weight.size() == n_elements,
+               element_weight.size() << " element weights for " << n_elements << " elements");
   const auto weight = [&](std::size_t t) {
     return element_weight.empty() ? 1.0 : element_weight[t];
   };
   std::vector<double> volume(mesh.n_nodes(), 0.0);
+  if (mesh.is_shell()) {
+    for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
+      const auto& triangle = mesh.triangles[e];
+      const Vec3d X0 = mesh.nodes[triangle[0]];
+      const double area =
+          0.5 * (mesh.nodes[triangle[1]] - X0).cross(mesh.nodes[triangle[2]] - X0).norm();
+      double thickness = 0.0;  // the element's: the mean of its corners' (shell.md, section 7)
+      for (int node : triangle) thickness += mesh.shell_thickness[node] / 3.0;
+      const double third = weight(e) * area * thickness / 3.0;
+      for (int node : triangle) volume[node] += third;  // (loads.md, L6s)
+    }
+    return volume;
+  }
   if (mesh.order() == 1) {
     for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
       const auto& tet = mesh.tets[t];

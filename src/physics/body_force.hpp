@@ -20,12 +20,15 @@ struct GravityLoadSettings {
 };
 
 /// The consistent nodal volumes ∫ N_a dV [mm^3] of every node (docs/theory/loads.md): V_e / 4 per
-/// corner of a linear tetrahedron (L6; the MINI bubble's share is not applied), and for a 10-node
+/// corner of a linear tetrahedron (L6; the MINI bubble's share is not applied), for a 10-node
 /// tetrahedron the integrals of its quadratic shape functions with the isoparametric Jacobian
-/// (L10: -V_e / 20 per corner and V_e / 5 per edge node of a straight one). Indexed by node; the
-/// sum is the volume of the mesh. Throws plisse::Error for an invalid 10-node tetrahedron.
-/// With `element_weight` (one per tetrahedron) each element's integrals are multiplied by its
-/// weight: Σ_e w_e ∫_e N_a dV (a density per element gives the nodal masses).
+/// (L10: -V_e / 20 per corner and V_e / 5 per edge node of a straight one), and on the
+/// mid-surface of a shell (Mesh::is_shell) A_e t_e / 3 per corner of each triangle, A_e its
+/// reference area and t_e the mean of its corners' Mesh::shell_thickness (L6s). Indexed by node;
+/// the sum is the volume of the mesh. Throws plisse::Error for an invalid 10-node tetrahedron.
+/// With `element_weight` (one per element: per tetrahedron, or per triangle of a shell) each
+/// element's integrals are multiplied by its weight: Σ_e w_e ∫_e N_a dV (a density per element
+/// gives the nodal masses).
 std::vector<double> consistent_nodal_volumes(const Mesh& mesh,
                                              const std::vector<double>& element_weight = {});
 
@@ -34,8 +37,9 @@ class BodyForce : public ModelTerm {
   /// `force_density` = rho g [N/mm^3] at the end of `ramp`. The nodal forces are
   /// f_a = ∫ rho g N_a dV = rho g V_a with the consistent nodal volumes V_a
   /// (consistent_nodal_volumes), on linear and on second-order meshes.
-  /// With `element_scale` (one factor per tetrahedron, e.g. its density when `force_density` is
-  /// the acceleration g) element e's force density is element_scale[e] * force_density.
+  /// With `element_scale` (one factor per element, tetrahedron or shell triangle, e.g. its
+  /// density when `force_density` is the acceleration g) element e's force density is
+  /// element_scale[e] * force_density.
   BodyForce(const Mesh& mesh, std::string name, const Vec3d& force_density, Ramp ramp,
             const std::vector<double>& element_scale = {});
   void assemble(double t, std::span<const double> x, std::span<double> residual,

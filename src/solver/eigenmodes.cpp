@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "physics/body_force.hpp"
 #include "solver/petsc_call.hpp"
 
 namespace plisse {
@@ -81,17 +82,11 @@ std::vector<double> to_normalised_state(const MixedModel& model, Vec x) {
 }  // namespace
 
 std::vector<double> lumped_nodal_volumes(const Mesh& mesh) {
+  // On a shell and on linear tetrahedra the lumped volumes are the consistent ones: A_e t_e / 3
+  // and V_e / 4 per corner (loads.md, L6s and L6). A 10-node tetrahedron's consistent corner
+  // volumes are negative (L10), so its edge nodes get none and its corners V_e / 4.
+  if (mesh.is_shell() || mesh.order() == 1) return consistent_nodal_volumes(mesh);
   std::vector<double> volume(mesh.nodes.size(), 0.0);
-  if (mesh.is_shell()) {
-    for (const auto& triangle : mesh.triangles) {
-      const Vec3d X0 = mesh.nodes[triangle[0]];
-      const double area =
-          0.5 * (mesh.nodes[triangle[1]] - X0).cross(mesh.nodes[triangle[2]] - X0).norm();
-      double thickness = 0.0;
-      for (int node : triangle) thickness += mesh.shell_thickness[node] / 3.0;
-      for (int node : triangle) volume[node] += area * thickness / 3.0;  // V_e / 3 [mm^3]
-    }
-  }
   for (const auto& tet : mesh.tets) {
     const Vec3d X0 = mesh.nodes[tet[0]];
     Mat3d dX;

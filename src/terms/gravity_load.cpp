@@ -32,6 +32,8 @@ TermKind gravity_load_kind() {
   };
   d.ramps = load_ramps<S>;
   // A body force writes no history column of its own (its total is the weight of the body).
+  // On a shell, the weight of the mid-surface's triangles (loads.md, L6s).
+  d.shell = true;
   return make_term_kind(std::move(d));
 }
 

@@ -78,7 +78,8 @@ struct TermContext {
   int mirrors = 0;  ///< mirror planes of the case's symmetry conditions (dirichlet.hpp)
   /// The small-strain shear modulus of the case's `material` [MPa]: the contact penalties' scale.
   std::function<double()> shear_modulus;
-  /// The density of every tetrahedron [tonne/mm^3] (its material's; 0 in a rigid region).
+  /// The density of every element [tonne/mm^3]: of each tetrahedron (its material's; 0 in a
+  /// rigid region), or of each triangle of a shell.
   std::function<std::vector<double>()> element_densities;
   /// The faces a die touches when it names no `surface`: the boundary without the symmetry
   /// planes' faces (docs/theory/contact.md, D5).

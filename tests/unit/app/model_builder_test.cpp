@@ -95,6 +95,35 @@ TEST(ModelBuilder, RampsBeyondTheEndTimeAreWarnedAboutAtTheirKeys) {
   EXPECT_TRUE(setup_warnings(whole).empty());
 }
 
+// Gravity on a shell (loads.md, L6s), where `element: shell` refused it before: the generated sheet
+// of 20 × 10 mm, 0.5 mm thick, clamped at one end, passes the case's checks against its mesh, and
+// the load's resultant is the sheet's weight ρ g A t = 1e-9 × 9810 × 200 × 0.5 = 9.81e-4 N along
+// −z (in the residual, where a load enters with its sign turned), nothing across.
+TEST(ModelBuilder, GravityOnAShellIsItsWeight) {
+  const std::string text =
+      "element: shell\n"
+      "mesh: {generate: sheet, length: 20.0, width: 10.0, thickness: 0.5, element_size: 2.0}\n"
+      "material: {model: neo-hookean, c1: 0.2, density: 1.0e-9}\n"
+      "boundary:\n  - {type: clamped, surface: left}\n"
+      "loads:\n  - {type: gravity, name: g, acceleration: [0, 0, -9810]}\n";
+  const Case c = parse_case_string(text, "c.yaml");
+  const Mesh mesh = load_perturbed_mesh(c);
+  ASSERT_TRUE(mesh.is_shell());
+  EXPECT_TRUE(unsupported_features(c, mesh).empty());
+  const ModelParts parts = build_model_parts(c, mesh);
+  ASSERT_EQ(parts.terms.size(), 1u);
+  std::vector<double> x(static_cast<std::size_t>(kValuesPerNode * mesh.n_nodes()), 0.0);
+  std::vector<double> residual(x.size(), 0.0);
+  parts.terms[0]->assemble(1.0, x, residual, nullptr);
+  Vec3d total = Vec3d::Zero();
+  for (int v = 0; v < mesh.n_nodes(); ++v)
+    for (int i = 0; i < 3; ++i) total[i] += residual[static_cast<std::size_t>(node_dof(v, i))];
+  const double weight = 1e-9 * 9810.0 * 200.0 * 0.5;
+  EXPECT_NEAR(total.z(), weight, 1e-13 * weight);  // round-off of a sum over 66 nodes
+  EXPECT_EQ(total.x(), 0.0);
+  EXPECT_EQ(total.y(), 0.0);
+}
+
 TEST(ModelBuilder, NodesWithinRoundingOfASymmetryPlaneArePutOnIt) {
   // An octant shell whose file has one node of the plane x = 0, on the edge of the pressurised
   // inner surface, at x = 1e-16 (a CAD export's rounding). The follower pressure's tangent is

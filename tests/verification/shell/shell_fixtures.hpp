@@ -85,6 +85,21 @@ inline Mesh strip_mesh(double length, double width, double thickness, int nx, in
   return mesh;
 }
 
+/// Solves `model` (its loads ramped over [0, 1]) in one load step, Newton stopping at the
+/// residual `atol` [N] or `rtol` of the first. Fails the calling test when the step does not
+/// converge; returns whether it did.
+inline bool solve_in_one_step(MixedModel& model, double atol, double rtol = 1e-8) {
+  SteppingSettings settings;
+  settings.steps = 1;
+  settings.max_step = 1.0;
+  settings.newton.rtol = rtol;
+  settings.newton.atol = atol;
+  LoadStepper stepper(model, settings);
+  const SteppingResult result = stepper.run([](const StepInfo&) {}, [](const std::string&) {});
+  EXPECT_TRUE(result.completed) << result.failure;
+  return result.completed;
+}
+
 /// The state of the neo-Hookean shell `mesh` (c1 [MPa]) held by `constraints` under the pressure
 /// q [MPa] on its `bottom` face, in one load step. Newton stops at 1e-13 N: under these loads
 /// (nodal forces 1e-9 to 1e-6 N) the residual falls to its round-off, 1e-14 to 3e-14 N (SNES's
@@ -97,14 +112,7 @@ inline std::vector<double> solve_under_pressure(
   terms.push_back(std::make_unique<PressureLoad>(mesh, "q", "bottom", q, Ramp{}, constraints, 0));
   MixedModel model(mesh, make_material("neo-hookean", {{"c1", c1}}), 0.0, constraints,
                    std::move(terms), ElementFamily::shell);
-  SteppingSettings settings;
-  settings.steps = 1;
-  settings.max_step = 1.0;
-  settings.newton.rtol = rtol;
-  settings.newton.atol = 1e-13;
-  LoadStepper stepper(model, settings);
-  const SteppingResult result = stepper.run([](const StepInfo&) {}, [](const std::string&) {});
-  EXPECT_TRUE(result.completed) << result.failure;
+  solve_in_one_step(model, 1e-13, rtol);
   return model.state();
 }
 
