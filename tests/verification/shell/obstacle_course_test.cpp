@@ -22,7 +22,8 @@
 //
 // Meshes. Each part is a structured grid of n x n cells on its parameters (axial position and
 // angle), each cell cut along the diagonal from (i, j) to (i + 1, j + 1), as the strips of
-// edge_conditions_test.cpp; the nodes lie on the exact surface.
+// edge_conditions_test.cpp; the nodes lie on the exact surface. The pinched cylinder is also
+// meshed with cells graded towards its point load.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -66,14 +67,18 @@ struct Elastic {
 
 /// The grid of n_s x n_r cells on the parameters (s, r) in [0, 1]², mapped onto the surface by
 /// `map`, each cell cut along its diagonal from (s_i, r_j) to (s_i+1, r_j+1), normals along
-/// X_s × X_r; thickness t. Edge tags `s0`, `s1` (s = 0, 1: the sides along r) and `r0`, `r1`.
+/// X_s × X_r; thickness t. The grid lines are s_i = (i/n_s)^grading and r_j = (j/n_r)^grading:
+/// uniform at 1, finer towards s = 0 and r = 0 above 1. Edge tags `s0`, `s1` (s = 0, 1: the sides
+/// along r) and `r0`, `r1`.
 Mesh mapped_surface(int n_s, int n_r, const std::function<Vec3d(double, double)>& map,
-                    double thickness) {
+                    double thickness, double grading = 1.0) {
   Mesh mesh;
   const auto node = [&](int i, int j) { return i * (n_r + 1) + j; };
+  const auto line = [grading](int i, int n) {
+    return std::pow(static_cast<double>(i) / n, grading);
+  };
   for (int i = 0; i <= n_s; ++i)
-    for (int j = 0; j <= n_r; ++j)
-      mesh.nodes.push_back(map(static_cast<double>(i) / n_s, static_cast<double>(j) / n_r));
+    for (int j = 0; j <= n_r; ++j) mesh.nodes.push_back(map(line(i, n_s), line(j, n_r)));
   for (int i = 0; i < n_s; ++i)
     for (int j = 0; j < n_r; ++j) {
       const int a = node(i, j), b = node(i + 1, j), c = node(i + 1, j + 1), d = node(i, j + 1);
@@ -199,8 +204,11 @@ constexpr double kCylinderRadius = 300.0, kCylinderLength = 600.0, kCylinderThic
 constexpr double kCylinderLoad = 1.0;
 constexpr double kCylinderReference = 1.8248e-5;
 const Elastic kCylinderMaterial{3e6, 0.3};
+/// The grading of the cylinder's cells towards the load (mapped_surface).
+constexpr double kCylinderGrading = 1.5;
 
-Mesh cylinder_mesh(int n) {
+/// The octant on n x n cells; `grading` > 1 makes them finer towards the loaded corner (s = r = 0).
+Mesh cylinder_mesh(int n, double grading = 1.0) {
   return mapped_surface(
       n, n,
       [](double s, double r) {
@@ -208,13 +216,13 @@ Mesh cylinder_mesh(int n) {
         return Vec3d(s * kCylinderLength / 2.0, kCylinderRadius * std::sin(theta),
                      kCylinderRadius * std::cos(theta));
       },
-      kCylinderThickness);
+      kCylinderThickness, grading);
 }
 
 /// The cylinder's octant on n x n cells: the inward radial displacement under the load.
-Answer pinched_cylinder(int n, const Elastic& material = kCylinderMaterial) {
+Answer pinched_cylinder(int n, double grading = 1.0, const Elastic& material = kCylinderMaterial) {
   const auto start = std::chrono::steady_clock::now();
-  Mesh mesh = cylinder_mesh(n);
+  Mesh mesh = cylinder_mesh(n, grading);
   ConstraintSet set;
   symmetry(mesh, "s0", set);      // x = 0
   diaphragm(mesh, "s1", 0, set);  // x = L/2
@@ -340,7 +348,14 @@ TEST(ShellObstacleCourse, ThePartsAreMeshedOnTheirSurfacesWithTheirEdgesInTheirP
        roof_area,
        {{"s0", 0, 0.0, false}, {"s1", 0, kRoofLength / 2.0, true}, {"r0", 1, 0.0, true}}},
       {"cylinder",
-       cylinder_mesh,
+       [](int n) { return cylinder_mesh(n); },
+       cylinder_area,
+       {{"s0", 0, 0.0, true},
+        {"s1", 0, kCylinderLength / 2.0, false},
+        {"r0", 1, 0.0, true},
+        {"r1", 2, 0.0, true}}},
+      {"graded cylinder",
+       [](int n) { return cylinder_mesh(n, kCylinderGrading); },
        cylinder_area,
        {{"s0", 0, 0.0, true},
         {"s1", 0, kCylinderLength / 2.0, false},
@@ -374,15 +389,16 @@ TEST(ShellObstacleCourse, ThePartsAreMeshedOnTheirSurfacesWithTheirEdgesInTheirP
                                           kRoofRadius * std::cos(kRoofAngle))),
               0);
     EXPECT_GE(node_at(cylinder_mesh(n), Vec3d(0.0, 0.0, kCylinderRadius)), 0);
+    EXPECT_GE(node_at(cylinder_mesh(n, kCylinderGrading), Vec3d(0.0, 0.0, kCylinderRadius)), 0);
     EXPECT_GE(node_at(hemisphere_mesh(n), Vec3d(kSphereRadius, 0.0, 0.0)), 0);
     EXPECT_GE(node_at(hemisphere_mesh(n), Vec3d(0.0, kSphereRadius, 0.0)), 0);
   }
 }
 
-// The conditions and loads make solvable models: with exact incompressibility (ν = 1/2, the
-// kernel of today, shell.md KL9) Newton converges on every mesh of the three parts, and the
-// hemisphere's two load points, images of each other under a quarter turn, move alike. The
-// references are for ν = 0 and 0.3, so the numbers (printed) are not compared with them. Measured
+// The conditions and loads make solvable models: with exact incompressibility (ν = 1/2, shell.md
+// KL9) Newton converges on every mesh of the three parts, and the hemisphere's two load points,
+// images of each other under a quarter turn, move alike. The references are for ν = 0 and 0.3, so
+// the numbers (printed) are not compared with them. Measured
 // at ν = 1/2: roof 0.2839, 0.2913, 0.2954, 0.2996 (4 to 32 cells); cylinder 1.391e-5, 1.948e-5,
 // 1.774e-5, 1.672e-5 (8 to 64 cells); hemisphere 0.0447, 0.0948, 0.1019, 0.1043 (8 to 64 cells).
 TEST(ShellObstacleCourse, EveryPartSolvesWhenExactlyIncompressible) {
@@ -394,7 +410,7 @@ TEST(ShellObstacleCourse, EveryPartSolvesWhenExactlyIncompressible) {
   const std::vector<int> cylinder_cells = {8, 16, 32, 64};
   std::vector<Answer> cylinder;
   for (const int n : cylinder_cells)
-    cylinder.push_back(pinched_cylinder(n, Elastic{kCylinderMaterial.E, 0.5}));
+    cylinder.push_back(pinched_cylinder(n, 1.0, Elastic{kCylinderMaterial.E, 0.5}));
   errors_of("cylinder, nu = 1/2", cylinder_cells, cylinder, kCylinderReference);
   const std::vector<int> sphere_cells = {8, 16, 32, 64};
   std::vector<Answer> sphere;
@@ -415,35 +431,96 @@ TEST(ShellObstacleCourse, EveryPartSolvesWhenExactlyIncompressible) {
   EXPECT_LT(asymmetry[2], asymmetry[1]);
 }
 
-// The references, with the materials they were computed for. They need a finite bulk modulus on
-// the shell (ν < 1/2: shell.md, KL12), which MixedModel refuses until that kernel exists; the tests
-// are disabled until then. Each asserts its finest mesh within 1 % of the reference and the error
-// falling at every refinement.
-void expect_converged(const std::vector<double>& errors, const char* what) {
-  EXPECT_LT(errors.back(), 1e-2) << what;
+// The references, with the materials they were computed for (ν = 0 and 0.3 through the bulk
+// modulus of shell.md, KL12). Each test asserts the error against the reference on its finest
+// mesh and its fall at every refinement, and prints Aitken's estimate of the limit of the last
+// three meshes.
+void expect_falling(const std::vector<double>& errors, const char* what) {
   for (std::size_t k = 1; k < errors.size(); ++k)
     EXPECT_LT(errors[k], errors[k - 1]) << what << ", refinement " << k;
 }
 
-TEST(ShellObstacleCourse, DISABLED_ScordelisLoRoofConvergesToTheReference) {
-  const std::vector<int> cells = {4, 8, 16, 32};
+/// Aitken's Δ² estimate of the limit of `answers` from their last three (exact when the increments
+/// fall by a constant factor per halving), printed with the increments and the distance from the
+/// reference.
+double aitken_limit(const char* what, const std::vector<Answer>& answers, double reference) {
+  const std::size_t k = answers.size() - 1;
+  const double d1 = answers[k - 1].displacement - answers[k - 2].displacement;
+  const double d2 = answers[k].displacement - answers[k - 1].displacement;
+  const double limit = answers[k].displacement - d2 * d2 / (d2 - d1);
+  std::printf(
+      "%s: last increments %.3e, %.3e (ratio %.2f, order %.2f); Aitken's limit %.5e, %+.2e "
+      "from the reference\n",
+      what, d1, d2, d1 / d2, std::log2(d1 / d2), limit, limit / reference - 1.0);
+  return limit;
+}
+
+// The roof at ν = 0 on 4² … 128² cells (8 s). Measured: errors 3.06e-2, 2.20e-2, 2.07e-2,
+// 1.54e-2, 1.13e-2, 8.80e-3, from below, order 0.1 … 0.5: below 1 % only on 128². The increments
+// fall by 1.66 per halving (order 0.73), and Aitken's limit is 0.3009, 5.0e-3 below the reference:
+// the sequence converges slowly to a value half a percent under it (shell.md, section 9). The
+// test holds the limit within 7e-3 of the reference, so that it fails if the rate or the limit
+// drifts.
+TEST(ShellObstacleCourse, ScordelisLoRoofConvergesToTheReference) {
+  const std::vector<int> cells = {4, 8, 16, 32, 64, 128};
   std::vector<Answer> answers;
   for (const int n : cells) answers.push_back(scordelis_lo_roof(n));
-  expect_converged(errors_of("Scordelis-Lo roof", cells, answers, kRoofReference), "roof");
+  const std::vector<double> errors = errors_of("Scordelis-Lo roof", cells, answers, kRoofReference);
+  EXPECT_LT(errors.back(), 1e-2);
+  expect_falling(errors, "roof");
+  const double limit = aitken_limit("Scordelis-Lo roof", answers, kRoofReference);
+  EXPECT_LT(std::abs(limit / kRoofReference - 1.0), 7e-3);
 }
 
-TEST(ShellObstacleCourse, DISABLED_PinchedCylinderConvergesToTheReference) {
-  const std::vector<int> cells = {8, 16, 32, 64};
+// The pinched cylinder at ν = 0.3. On uniform cells, 8² … 128² (8 s), the error falls at order
+// 1.0 … 1.5 from above (the point load's displacement converges more slowly than a smooth
+// field's) and reaches 1.004e-2 on 128²: the test holds it under 1.05e-2 and the order of the
+// last two halvings above 1.3 (measured 1.54, 1.52), and Aitken's limit of 32², 64², 128² within
+// 1e-3 (measured +2.9e-4). On cells graded towards the load (grid lines at
+// (i/n)^1.5, the first cell n^(-1/2) of a uniform one), 16² … 64² (3 s), it falls to 4.9e-3.
+// Finer graded meshes leave the Newton tolerance below the residual's round-off: 128² graded, and
+// a grading of 2 from 32², end in line-search failures (measured).
+
+TEST(ShellObstacleCourse, PinchedCylinderConvergesToTheReference) {
+  const std::vector<int> cells = {8, 16, 32, 64, 128};
   std::vector<Answer> answers;
   for (const int n : cells) answers.push_back(pinched_cylinder(n));
-  expect_converged(errors_of("pinched cylinder", cells, answers, kCylinderReference), "cylinder");
+  const std::vector<double> errors =
+      errors_of("pinched cylinder, uniform", cells, answers, kCylinderReference);
+  EXPECT_LT(errors.back(), 1.05e-2);
+  expect_falling(errors, "cylinder, uniform");
+  for (std::size_t k = errors.size() - 2; k < errors.size(); ++k)
+    EXPECT_GT(std::log2(errors[k - 1] / errors[k]), 1.3) << "uniform, refinement " << k;
+  const double limit = aitken_limit("pinched cylinder, uniform", answers, kCylinderReference);
+  EXPECT_LT(std::abs(limit / kCylinderReference - 1.0), 1e-3);
+
+  const std::vector<int> graded_cells = {16, 32, 64};
+  std::vector<Answer> graded;
+  for (const int n : graded_cells) graded.push_back(pinched_cylinder(n, kCylinderGrading));
+  const std::vector<double> graded_errors =
+      errors_of("pinched cylinder, graded", graded_cells, graded, kCylinderReference);
+  EXPECT_LT(graded_errors.back(), 1e-2);
+  expect_falling(graded_errors, "cylinder, graded");
 }
 
-TEST(ShellObstacleCourse, DISABLED_PinchedHemisphereConvergesToTheReference) {
-  const std::vector<int> cells = {8, 16, 32, 64};
+// The pinched hemisphere at ν = 0.3 on 8² … 128² cells (8 s). Measured: errors 5.1e-1 (8²: the
+// flat facets lock), 7.0e-2, 2.1e-2, 4.8e-3 from below, then 3.4e-3 from above on 128²: the
+// sequence crosses the reference between 64² and 128², and Aitken's limit of the last three is
+// 1.2 % above it, towards MacNeal & Harder's 0.094. The test asserts the finest mesh within 1 %,
+// the error falling, at order above 1.5 from 8² to 64² (measured 2.87, 1.75, 2.10), and the limit
+// within 1.5 %.
+TEST(ShellObstacleCourse, PinchedHemisphereConvergesToTheReference) {
+  const std::vector<int> cells = {8, 16, 32, 64, 128};
   std::vector<Answer> answers;
   for (const int n : cells) answers.push_back(pinched_hemisphere(n).first);
-  expect_converged(errors_of("pinched hemisphere", cells, answers, kSphereReference), "hemisphere");
+  const std::vector<double> errors =
+      errors_of("pinched hemisphere", cells, answers, kSphereReference);
+  EXPECT_LT(errors.back(), 1e-2);
+  expect_falling(errors, "hemisphere");
+  for (std::size_t k = 1; k + 1 < errors.size(); ++k)
+    EXPECT_GT(std::log2(errors[k - 1] / errors[k]), 1.5) << "refinement " << k;
+  const double limit = aitken_limit("pinched hemisphere", answers, kSphereReference);
+  EXPECT_LT(std::abs(limit / kSphereReference - 1.0), 1.5e-2);
 }
 
 }  // namespace
