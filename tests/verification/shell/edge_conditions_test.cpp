@@ -42,11 +42,7 @@
 namespace plisse {
 namespace {
 
-constexpr double kC1 = 0.5;         // [MPa]: μ = 1 MPa
-constexpr double kLength = 100.0;   // L [mm]
-constexpr double kWidth = 10.0;     // W [mm]
-constexpr double kThickness = 1.0;  // t [mm]
-constexpr double kRigidity = 2.0 * kC1 * kThickness * kThickness * kThickness / 3.0;  // D [N mm]
+using namespace shell_test::strip_constants;  // c1, L, W, t and D of the strip
 
 using shell_test::Cells;
 

@@ -37,10 +37,7 @@ namespace {
 
 using shell_test::Cells;
 
-constexpr double kC1 = 0.5;         // [MPa]
-constexpr double kLength = 100.0;   // L [mm]
-constexpr double kWidth = 10.0;     // W [mm]
-constexpr double kThickness = 1.0;  // t [mm]
+using namespace shell_test::strip_constants;  // c1, L, W and t of the strip
 
 struct Buckling {
   double strain = 0.0;            ///< δ_cr / L, λ_1 interpolated linearly to zero

@@ -31,11 +31,8 @@
 namespace plisse {
 namespace {
 
-constexpr double kC1 = 0.5;         // [MPa]: μ = 1 MPa
-constexpr double kLength = 100.0;   // L [mm]
-constexpr double kWidth = 10.0;     // W [mm]
-constexpr double kThickness = 1.0;  // t [mm]
-constexpr double kRigidity = 2.0 * kC1 * kThickness * kThickness * kThickness / 3.0;  // D [N mm]
+using namespace shell_test::strip_constants;  // c1, L, W, t and D of the strip
+
 constexpr double kDensity = 2.5e-13;  // ρ [tonne/mm³]: w = 9.2e-2 mm with g below
 constexpr double kGravity = 9810.0;   // g [mm/s²], along -z
 

@@ -31,6 +31,17 @@ inline double pseudo_random(int i, int j, int which) {
   return 2.0 * static_cast<double>(z >> 11) / static_cast<double>(1ULL << 53) - 1.0;
 }
 
+/// The strip of edge_conditions_test.cpp, euler_strip_test.cpp and gravity_test.cpp: L x W x t,
+/// an incompressible neo-Hookean sheet (W = c1 (I1 - 3), μ = 2 c1) that bends in plane strain with
+/// the rigidity D = μ t³/3 per unit width (E = 3 μ, ν = 1/2; docs/theory/shell.md, KL13).
+namespace strip_constants {
+constexpr double kC1 = 0.5;         // [MPa]: μ = 1 MPa
+constexpr double kLength = 100.0;   // L [mm]
+constexpr double kWidth = 10.0;     // W [mm]
+constexpr double kThickness = 1.0;  // t [mm]
+constexpr double kRigidity = 2.0 * kC1 * kThickness * kThickness * kThickness / 3.0;  // D [N mm]
+}  // namespace strip_constants
+
 /// How the strip's cells are cut: all along the diagonal from (x, y) to (x + h, y + h); along
 /// alternating diagonals (cell (i, j) along the other one when i + j is odd); or alternating with
 /// every node off the strip's edges moved in the plane by up to 15 % of the cell's sides (the
