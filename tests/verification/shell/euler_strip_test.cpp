@@ -11,7 +11,9 @@
 //   ε_cr = N / (E' t) = π² t² / (12 L²)
 // whatever the modulus (Timoshenko & Gere 1961, §2.2), and the mode is w = sin(π x / L). At
 // L/t = 100 the critical strain is 8.2·10⁻⁵: the finite-strain terms change it by a part of that
-// order, far below the tolerance.
+// order, far below the tolerance. With both ends clamped (the end x = L a grip that moves by -δ
+// and keeps its slope, KL8a) the buckle is w = 1 - cos(2π x / L) at four times that strain,
+// ε_cr = 4 π² t² / (12 L²) (Timoshenko & Gere 1961, §2.3: the effective length L/2).
 //
 // On distorted cells this test found the membrane strain of EBST1, the mean of the three side
 // metrics, out of equilibrium under a homogeneous stress (shell.md, KL4): the critical strain
@@ -58,10 +60,11 @@ double correlation(const std::vector<double>& w, const std::vector<double>& f) {
   return wf / std::sqrt(ww * ff);
 }
 
-/// The critical strain of the strip of nx cells along L (nx / 5 across) cut as `cells`: steps at
-/// 0.5 and 1 ε_cr, then at the zero of the line through the last two λ_1 with 2 % overshoot,
-/// until λ_1 < 0; the zero interpolated between the last two steps.
-Buckling critical_strain(int nx, Cells cells, double exact) {
+/// The critical strain of the strip of nx cells along L (nx / 5 across) cut as `cells`, its ends
+/// hinged or clamped: steps at 0.5 and 1 ε_cr, then at the zero of the line through the last two
+/// λ_1 with 2 % overshoot, until λ_1 < 0; the zero interpolated between the last two steps. The
+/// mode is compared with sin(π x / L) (hinged) or 1 - cos(2π x / L) (clamped).
+Buckling critical_strain(int nx, Cells cells, double exact, bool clamped = false) {
   Mesh mesh = shell_test::strip_mesh(kLength, kWidth, kThickness, nx, nx / 5, cells, kLength);
   const double strain_max = 3.0 * exact;
   ConstraintSet set;
@@ -70,6 +73,10 @@ Buckling critical_strain(int nx, Cells cells, double exact) {
   hold_in_plane(mesh, SurfaceRef{"back", {}}, set);
   mirror_sides(mesh, mesh.edge_tags.at("front"), 1, 0.0);
   mirror_sides(mesh, mesh.edge_tags.at("back"), 1, kWidth);
+  if (clamped) {
+    clamp_sides(mesh, mesh.edge_tags.at("left"));
+    clamp_sides(mesh, mesh.edge_tags.at("right"));
+  }
   for (int k : mesh.edge_tags.at("right"))
     for (int v : mesh.edges[static_cast<std::size_t>(k)]) {
       set.add(v, 0, -strain_max * kLength, Ramp{0.0, 1.0});
@@ -125,7 +132,9 @@ Buckling critical_strain(int nx, Cells cells, double exact) {
   std::vector<double> w, f;
   for (const auto& [i, section] : sections) {
     w.push_back(section.first / section.second);
-    f.push_back(std::sin(std::numbers::pi * static_cast<double>(i) * hx / kLength));
+    const double x = static_cast<double>(i) * hx / kLength;
+    f.push_back(clamped ? 1.0 - std::cos(2.0 * std::numbers::pi * x)
+                        : std::sin(std::numbers::pi * x));
   }
   b.mode_correlation = std::abs(correlation(w, f));
   return b;
@@ -149,6 +158,24 @@ TEST(ShellEulerStrip, HingedStripBucklesAtTheEulerStrainOnEveryMesh) {
     EXPECT_LT(errors.back(), 3e-4) << "cells " << static_cast<int>(cells);
     EXPECT_GT(errors[0] / errors[2], 8.0) << "cells " << static_cast<int>(cells);
   }
+}
+
+TEST(ShellEulerStrip, ClampedStripBucklesAtFourTimesTheEulerStrain) {
+  // Both ends clamped, the end x = L a grip moved along the strip (KL8a): ε_cr = 4 π² t²/(12 L²).
+  const double pi = std::numbers::pi;
+  const double exact = 4.0 * pi * pi * kThickness * kThickness / (12.0 * kLength * kLength);
+  std::vector<double> errors;
+  for (const int nx : {20, 40, 80}) {
+    const Buckling b = critical_strain(nx, Cells::alternating, exact, true);
+    errors.push_back(std::abs(b.strain / exact - 1.0));
+    std::printf(
+        "clamped, nx = %2d: eps_cr = %.6e, clamped Euler %.6e, relative error %.2e, mode "
+        "correlation with 1 - cos(2 pi x / L) %.6f\n",
+        nx, b.strain, exact, errors.back(), b.mode_correlation);
+    EXPECT_GT(b.mode_correlation, 0.999) << "nx " << nx;
+  }
+  EXPECT_LT(errors.back(), 2e-3);
+  EXPECT_GT(errors[0] / errors[2], 8.0);
 }
 
 }  // namespace

@@ -181,15 +181,18 @@ struct InflationPoint {
 
 /// Inflates the octahedral sphere (or its octant) of n × n triangles per face, under volume
 /// control to the volume ratio `value` or under a pressure ramp to `value` [MPa], in `steps`
-/// equal steps; exactly incompressible, or with 1/κ = inverse_bulk_modulus [1/MPa] (KL12).
+/// equal steps; exactly incompressible, or with 1/κ = inverse_bulk_modulus [1/MPa] (KL12); the
+/// neo-Hookean c1 = kC1 unless `material` is given.
 std::vector<InflationPoint> inflate(int n, bool octant, bool volume_control, double value,
-                                    int steps, double inverse_bulk_modulus = 0.0) {
+                                    int steps, double inverse_bulk_modulus = 0.0,
+                                    const AnyMaterial& material = make_material("neo-hookean",
+                                                                                {{"c1", kC1}})) {
   const Mesh mesh = test::octahedral_sphere(kRadius, kThickness, n, octant);
   std::vector<ConstrainedComponent> constraints = supports(mesh, octant);
   std::vector<std::unique_ptr<ModelTerm>> terms;
   terms.push_back(std::make_unique<Inflation>(mesh, volume_control, value, constraints));
-  MixedModel model(mesh, make_material("neo-hookean", {{"c1", kC1}}), inverse_bulk_modulus,
-                   constraints, std::move(terms), ElementFamily::shell);
+  MixedModel model(mesh, material, inverse_bulk_modulus, constraints, std::move(terms),
+                   ElementFamily::shell);
   const auto& inflation = dynamic_cast<const Inflation&>(*model.terms().front());
   EXPECT_TRUE(model.symmetric());
   SteppingSettings settings;
@@ -310,6 +313,60 @@ TEST(ShellSphereInflation, NearlyIncompressibleSphereConvergesToItsClosedForm) {
   // Second order in h, as the incompressible sphere.
   EXPECT_GT(errors[0] / errors[1], 3.5);
   EXPECT_LT(errors.back(), 1e-3);
+}
+
+TEST(ShellSphereInflation, MooneyRivlinAndOgdenSpheresConvergeToTheirClosedForms) {
+  // The sphere's energy per reference area is t0 W(λ, λ, 1/λ²), W the model's incompressible
+  // energy in principal stretches, and the work of the pressure on V = 4π R0³ λ³/3 gives
+  // p(λ) = t0 W'(λ) / (R0 λ²), with W' = dW(λ, λ, 1/λ²)/dλ written out for each model:
+  //   Mooney-Rivlin, W = c1 (I1 - 3) + c2 (I2 - 3): W' = 4 c1 (λ - λ⁻⁵) + 4 c2 (λ³ - λ⁻³);
+  //   Ogden, W = Σ μ_p/α_p (λ1^α_p + λ2^α_p + λ3^α_p - 3): W' = 2 Σ μ_p (λ^(α_p - 1) - λ^(-2α_p -
+  //   1))
+  // (Ogden 1972's three-term fit of Treloar's rubber: μ_p = 0.63, 0.0012, -0.01 MPa,
+  // α_p = 1.3, 5, -2). Volume control to λ = 1.6, through both pressure maxima, in 16 steps;
+  // octants of 16² and 32² triangles, as the neo-Hookean sphere above.
+  struct Model {
+    const char* name;
+    AnyMaterial material;
+    std::function<double(double)> derivative;  // W'(λ) [MPa]
+  };
+  const double c1 = 0.4, c2 = 0.04;
+  const std::array<double, 3> mu = {0.63, 0.0012, -0.01}, alpha = {1.3, 5.0, -2.0};
+  const std::vector<Model> models = {
+      {"mooney-rivlin", make_material("mooney-rivlin", {{"c1", c1}, {"c2", c2}}),
+       [&](double l) {
+         return 4.0 * c1 * (l - std::pow(l, -5.0)) + 4.0 * c2 * (l * l * l - std::pow(l, -3.0));
+       }},
+      {"ogden",
+       make_material("ogden", {{"mu1", mu[0]},
+                               {"alpha1", alpha[0]},
+                               {"mu2", mu[1]},
+                               {"alpha2", alpha[1]},
+                               {"mu3", mu[2]},
+                               {"alpha3", alpha[2]}}),
+       [&](double l) {
+         double d = 0.0;
+         for (int p = 0; p < 3; ++p)
+           d += 2.0 * mu[p] * (std::pow(l, alpha[p] - 1.0) - std::pow(l, -2.0 * alpha[p] - 1.0));
+         return d;
+       }}};
+  for (const Model& m : models) {
+    const auto pressure = [&](double l) {
+      return kThickness * m.derivative(l) / (kRadius * l * l);
+    };
+    std::vector<double> errors;
+    for (const int n : {16, 32}) {
+      const std::vector<InflationPoint> points =
+          inflate(n, true, true, std::pow(1.6, 3.0), 16, 0.0, m.material);
+      ASSERT_GE(points.size(), 16u) << m.name;
+      errors.push_back(largest_error(points, pressure));
+      std::printf("%s, octant n = %2d: largest |p - p(λ)| / p(λ) = %.2e\n", m.name, n,
+                  errors.back());
+      EXPECT_NEAR(points.back().lambda, 1.6, 1e-9) << m.name;
+    }
+    EXPECT_GT(errors[0] / errors[1], 3.5) << m.name;  // second order in h
+    EXPECT_LT(errors.back(), 1e-3) << m.name;
+  }
 }
 
 }  // namespace
