@@ -303,8 +303,8 @@ const std::vector<OutputEntry> kVtuCell = {
      "tension positive; of a shell, its average through the thickness"},
     {"von_mises", "MPa", "always", "√(3/2 dev σ̄ : dev σ̄) of that average"},
     {"J", "–", "always",
-     "the element's volume average of det F (1 on a shell: exactly "
-     "incompressible)"},
+     "the element's volume average of det F (of a shell, its average through the thickness: 1 "
+     "when exactly incompressible)"},
     {"principal_stretches", "–", "always",
      "λ1 ≥ λ2 ≥ λ3, the square roots of the eigenvalues of C = Fᵀ F of the element's average F "
      "(3 components); on a membrane the smallest is usually the through-thickness stretch; of a "
@@ -321,10 +321,11 @@ const std::vector<OutputEntry> kVtuCell = {
      "thickness"},
     {"pressure", "MPa", "a shell mesh",
      "−tr σ̄ / 3 of the stress averaged through the thickness, positive in compression: the "
-     "pressure that the exactly incompressible plane stress eliminated (a solid element's "
-     "pressure field for the isotropic models)"},
+     "pressure that plane stress eliminated (a solid element's pressure field for the isotropic "
+     "models)"},
     {"thickness", "mm", "a shell mesh",
-     "the current thickness t λ3 of the mid-surface, λ3 = 1/(λ1 λ2) its thickness stretch"},
+     "the current thickness t λ3 of the mid-surface, λ3 its thickness stretch (1/(λ1 λ2) when "
+     "exactly incompressible)"},
     {"membrane_force", "N/mm", "a shell mesh",
      "the membrane force per unit current length N = ∫ σ dz over the current thickness, a "
      "symmetric tensor tangent to the deformed mid-surface in the global axes (6 components as "
