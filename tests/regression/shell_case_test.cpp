@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "output/history_writer.hpp"
@@ -79,33 +80,41 @@ TEST(ShellCase, BalloonExampleFollowsTheThinShellPressureThroughItsMaximum) {
   EXPECT_NEAR(peak, exact_peak, 2e-3 * exact_peak);
 }
 
-/// A strip case: the sheet L = 100 mm, W = 10 mm, t = 1 mm as a shell in cells of 2.5 mm, its long
-/// edges `front` and `back` symmetric (plane strain), its ends `left` and `right` of kind `ends`,
-/// under a pressure q on its bottom face.
-fs::path strip_case(const std::string& ends, double q) {
-  const fs::path dir = test::scratch_directory("shell-strip-case-" + ends);
+/// Writes `text` to a fresh case file `name`.yaml and returns its path.
+fs::path write_case(const std::string& name, const std::string& text) {
+  const fs::path dir = test::scratch_directory(name + "-case");
   fs::create_directories(dir);
-  const fs::path file = dir / "strip.yaml";
-  std::ofstream out(file);
-  out << "element: shell\n"
-         "mesh: {generate: sheet, length: 100.0, width: 10.0, thickness: 1.0, "
-         "element_size: 2.5}\n"
-         "material: {model: neo-hookean, c1: 0.5}\n"
-         "boundary:\n"
-         "  - {type: symmetry, surface: front}\n"
-         "  - {type: symmetry, surface: back}\n"
-         "  - {type: "
-      << ends
-      << ", surface: left, name: left}\n"
-         "  - {type: "
-      << ends
-      << ", surface: right}\n"
-         "loads:\n"
-         "  - {type: pressure, name: q, surface: bottom, value: "
-      << q
-      << "}\n"
-         "solver: {steps: 1, newton: {rtol: 1.0e-10, atol: 1.0e-13}}\n";
+  const fs::path file = dir / (name + ".yaml");
+  std::ofstream(file) << text;
   return file;
+}
+
+/// A strip case written as `name`.yaml: the sheet L = 100 mm, W = 10 mm, t = 1 mm as a shell in
+/// cells of 2.5 mm, its long edges `front` and `back` symmetric (plane strain), then the
+/// `boundary:` items `ends` (YAML lines, for the ends `left` and `right`) and the sections `rest`.
+fs::path strip_case_file(const std::string& name, const std::string& ends,
+                         const std::string& rest) {
+  return write_case(name,
+                    "element: shell\n"
+                    "mesh: {generate: sheet, length: 100.0, width: 10.0, thickness: 1.0, "
+                    "element_size: 2.5}\n"
+                    "material: {model: neo-hookean, c1: 0.5}\n"
+                    "boundary:\n"
+                    "  - {type: symmetry, surface: front}\n"
+                    "  - {type: symmetry, surface: back}\n" +
+                        ends + rest);
+}
+
+/// The strip with its ends `left` and `right` of kind `ends` under a pressure q on its bottom
+/// face.
+fs::path strip_case(const std::string& ends, double q) {
+  std::ostringstream rest;
+  rest << "loads:\n  - {type: pressure, name: q, surface: bottom, value: " << q
+       << "}\nsolver: {steps: 1, newton: {rtol: 1.0e-10, atol: 1.0e-13}}\n";
+  return strip_case_file("shell-strip-" + ends,
+                         "  - {type: " + ends + ", surface: left, name: left}\n  - {type: " + ends +
+                             ", surface: right}\n",
+                         rest.str());
 }
 
 // The strip in cylindrical bending (D = μ t³/3, μ = 1 MPa; docs/theory/shell.md): the strain
@@ -136,18 +145,11 @@ TEST(ShellCase, ClampedAndHingedStripsStoreTheBeamEnergy) {
 // KL4a) when the images beyond the moved clamp move with it: round-off.
 TEST(ShellCase, ClampedGripsPullAStripApartHomogeneously) {
   const double c1 = 0.5, W = 10.0, t = 1.0, lambda = 1.1;
-  const fs::path file = test::scratch_directory("shell-grips-case") / "grips.yaml";
-  fs::create_directories(file.parent_path());
-  std::ofstream(file) << "element: shell\n"
-                         "mesh: {generate: sheet, length: 100.0, width: 10.0, thickness: 1.0, "
-                         "element_size: 2.5}\n"
-                         "material: {model: neo-hookean, c1: 0.5}\n"
-                         "boundary:\n"
-                         "  - {type: symmetry, surface: front}\n"
-                         "  - {type: symmetry, surface: back}\n"
-                         "  - {type: clamped, surface: left, name: left}\n"
-                         "  - {type: clamped, surface: right, name: right, value: [10.0, 0, 0]}\n"
-                         "solver: {steps: 2, newton: {rtol: 1.0e-12}}\n";
+  const fs::path file =
+      strip_case_file("shell-grips",
+                      "  - {type: clamped, surface: left, name: left}\n"
+                      "  - {type: clamped, surface: right, name: right, value: [10.0, 0, 0]}\n",
+                      "solver: {steps: 2, newton: {rtol: 1.0e-12}}\n");
   const HistoryTable h = run_case(file, "shell-grips");
   const double sigma = 2.0 * c1 * (lambda * lambda - 1.0 / (lambda * lambda));
   const double force = sigma * W * t / lambda;
@@ -156,15 +158,6 @@ TEST(ShellCase, ClampedGripsPullAStripApartHomogeneously) {
   EXPECT_NEAR(column(h, "force_x:right").back(), force, 1e-9 * force);
   EXPECT_NEAR(column(h, "force_x:left").back(), -force, 1e-9 * force);
   EXPECT_NEAR(column(h, "stretch_x").back(), lambda, 1e-12);
-}
-
-/// Writes `text` to a fresh case file `name`.yaml and returns its path.
-fs::path write_case(const std::string& name, const std::string& text) {
-  const fs::path dir = test::scratch_directory(name + "-case");
-  fs::create_directories(dir);
-  const fs::path file = dir / (name + ".yaml");
-  std::ofstream(file) << text;
-  return file;
 }
 
 /// The largest |value| of component `k` of the point field `name` of `vtu`.

@@ -132,11 +132,8 @@ double mid_span_deflection(Ends ends, int nx, double q, Cells cells = Cells::sam
   const bool half = ends == Ends::clamped_and_symmetric || ends == Ends::clamped_and_plane_held;
   Mesh mesh = strip(half ? kLength / 2.0 : kLength, half ? nx / 2 : nx, std::max(2, nx / 5), cells);
   ConstraintSet set;
-  const SurfaceRef left{"left", {}}, right{"right", {}}, front{"front", {}}, back{"back", {}};
-  hold_in_plane(mesh, front, set);
-  hold_in_plane(mesh, back, set);
-  mirror_sides(mesh, mesh.edge_tags.at("front"), 1, 0.0);
-  mirror_sides(mesh, mesh.edge_tags.at("back"), 1, kWidth);
+  const SurfaceRef left{"left", {}}, right{"right", {}};
+  shell_test::symmetric_long_edges(mesh, kWidth, set);
   fix_surface(mesh, left, set);
   if (ends != Ends::hinged) clamp_sides(mesh, mesh.edge_tags.at("left"));
   if (half) {
@@ -230,11 +227,8 @@ TEST(ShellEdgeConditions, HalfStripWithASymmetryEdgeConvergesToTheClampedStrip) 
 std::vector<double> strip_with_a_moved_clamp(const Mesh& mesh, const Vec3d& move) {
   Mesh clamped = mesh;
   ConstraintSet set;
-  const SurfaceRef left{"left", {}}, right{"right", {}}, front{"front", {}}, back{"back", {}};
-  hold_in_plane(clamped, front, set);
-  hold_in_plane(clamped, back, set);
-  mirror_sides(clamped, clamped.edge_tags.at("front"), 1, 0.0);
-  mirror_sides(clamped, clamped.edge_tags.at("back"), 1, kWidth);
+  const SurfaceRef left{"left", {}}, right{"right", {}};
+  shell_test::symmetric_long_edges(clamped, kWidth, set);
   fix_surface(clamped, left, set);
   clamp_sides(clamped, clamped.edge_tags.at("left"));
   prescribe_surface(clamped, right, {move.x(), move.y(), move.z()}, Ramp{}, set);

@@ -69,10 +69,7 @@ Buckling critical_strain(int nx, Cells cells, double exact, bool clamped = false
   const double strain_max = 3.0 * exact;
   ConstraintSet set;
   fix_surface(mesh, SurfaceRef{"left", {}}, set);
-  hold_in_plane(mesh, SurfaceRef{"front", {}}, set);
-  hold_in_plane(mesh, SurfaceRef{"back", {}}, set);
-  mirror_sides(mesh, mesh.edge_tags.at("front"), 1, 0.0);
-  mirror_sides(mesh, mesh.edge_tags.at("back"), 1, kWidth);
+  shell_test::symmetric_long_edges(mesh, kWidth, set);
   if (clamped) {
     clamp_sides(mesh, mesh.edge_tags.at("left"));
     clamp_sides(mesh, mesh.edge_tags.at("right"));

@@ -46,11 +46,8 @@ Cantilever cantilever_under_its_weight(int nx) {
   Mesh mesh = shell_test::strip_mesh(kLength, kWidth, kThickness, nx, std::max(2, nx / 5),
                                      shell_test::Cells::same_diagonal, kLength);
   ConstraintSet set;
-  const SurfaceRef left{"left", {}}, front{"front", {}}, back{"back", {}};
-  hold_in_plane(mesh, front, set);
-  hold_in_plane(mesh, back, set);
-  mirror_sides(mesh, mesh.edge_tags.at("front"), 1, 0.0);
-  mirror_sides(mesh, mesh.edge_tags.at("back"), 1, kWidth);
+  const SurfaceRef left{"left", {}};
+  shell_test::symmetric_long_edges(mesh, kWidth, set);
   fix_surface(mesh, left, set);
   clamp_sides(mesh, mesh.edge_tags.at("left"));
   const std::vector<ConstrainedComponent> constraints = set.components();

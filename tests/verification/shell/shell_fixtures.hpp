@@ -14,6 +14,7 @@
 #include "material/registry.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/shell_surface.hpp"
+#include "physics/dirichlet.hpp"
 #include "physics/pressure_load.hpp"
 #include "solver/load_stepper.hpp"
 #include "solver/mixed_model.hpp"
@@ -94,6 +95,15 @@ inline Mesh strip_mesh(double length, double width, double thickness, int nx, in
   }
   make_shell_surface(mesh, thickness);
   return mesh;
+}
+
+/// The strip's long edges `front` (y = 0) and `back` (y = width) as symmetry edges: v = 0 and
+/// their sides mirrored (KL8a), plane strain in y.
+inline void symmetric_long_edges(Mesh& mesh, double width, ConstraintSet& set) {
+  hold_in_plane(mesh, SurfaceRef{"front", {}}, set);
+  hold_in_plane(mesh, SurfaceRef{"back", {}}, set);
+  mirror_sides(mesh, mesh.edge_tags.at("front"), 1, 0.0);
+  mirror_sides(mesh, mesh.edge_tags.at("back"), 1, width);
 }
 
 /// Solves `model` (its loads ramped over [0, 1]) in one load step, Newton stopping at the
