@@ -13,8 +13,13 @@
 namespace plisse {
 namespace {
 
-/// The element's nodes: 4 corners, then on a second-order mesh its 6 edge nodes.
+/// The element's nodes: 4 corners, then on a second-order mesh its 6 edge nodes; a shell's
+/// triangle, its 3 corners.
 std::vector<int> element_nodes(const Mesh& mesh, int e) {
+  if (mesh.is_shell()) {
+    const auto& tri = mesh.triangles[static_cast<std::size_t>(e)];
+    return {tri.begin(), tri.end()};
+  }
   const auto& t = mesh.tets[static_cast<std::size_t>(e)];
   std::vector<int> nodes(t.begin(), t.end());
   if (mesh.order() == 2) {
@@ -24,8 +29,10 @@ std::vector<int> element_nodes(const Mesh& mesh, int e) {
   return nodes;
 }
 
-/// The shape functions of element nodes at L (4 linear or 10 quadratic).
+/// The shape functions of element nodes at L (4 linear or 10 quadratic; a shell's triangle, 3
+/// linear).
 std::vector<double> shape_values(const Mesh& mesh, const std::array<double, 4>& L) {
+  if (mesh.is_shell()) return {L[0], L[1], L[2]};
   if (mesh.order() == 1) return {L.begin(), L.end()};
   const auto N = taylor_hood::shape_values(L);
   return {N.begin(), N.end()};
@@ -78,9 +85,35 @@ std::array<double, 4> curved_coordinates(const Mesh& mesh, int e, const Vec3d& p
 
 double smallest(const std::array<double, 4>& L) { return *std::min_element(L.begin(), L.end()); }
 
+/// The nearest point of a shell's mid-surface (its flat triangles) to `point`: the first triangle
+/// at the smallest distance, with the point's barycentric coordinates in it.
+MeshPoint locate_on_shell(const Mesh& mesh, const Vec3d& point) {
+  MeshPoint best;
+  best.distance = std::numeric_limits<double>::infinity();
+  double size = 0.0;
+  for (int e = 0; e < static_cast<int>(mesh.triangles.size()); ++e) {
+    const auto& tri = mesh.triangles[static_cast<std::size_t>(e)];
+    const auto x = [&](int k) { return mesh.nodes[static_cast<std::size_t>(tri[k])]; };
+    const Vec3d w = closest_point_weights(point, x(0), x(1), x(2));
+    const Vec3d at = w[0] * x(0) + w[1] * x(1) + w[2] * x(2);
+    if (!((point - at).norm() < best.distance)) continue;
+    best.element = e;
+    best.L = {w[0], w[1], w[2], 0.0};
+    best.position = at;
+    best.distance = (point - at).norm();
+    size = std::max({(x(1) - x(0)).norm(), (x(2) - x(1)).norm(), (x(0) - x(2)).norm()});
+  }
+  best.inside = best.distance <= 1e-10 * size;  // on the mid-surface, to rounding
+  return best;
+}
+
 }  // namespace
 
 MeshPoint locate_point(const Mesh& mesh, const Vec3d& point) {
+  if (mesh.is_shell()) {
+    PLISSE_CHECK(!mesh.triangles.empty(), "locate_point: the shell has no triangles");
+    return locate_on_shell(mesh, point);
+  }
   PLISSE_CHECK(mesh.n_tets() > 0, "locate_point: the mesh has no tetrahedra");
   // A point on a face shared by two elements is inside both, to rounding: accept a coordinate
   // this far below zero as inside.
@@ -126,7 +159,8 @@ MeshPoint locate_point(const Mesh& mesh, const Vec3d& point) {
 }
 
 std::vector<std::pair<int, double>> interpolation_weights(const Mesh& mesh, const MeshPoint& p) {
-  PLISSE_CHECK(p.element >= 0 && p.element < mesh.n_tets(),
+  const int n_elements = mesh.is_shell() ? static_cast<int>(mesh.triangles.size()) : mesh.n_tets();
+  PLISSE_CHECK(p.element >= 0 && p.element < n_elements,
                "interpolation_weights: element " << p.element << " is not in the mesh");
   const std::vector<int> nodes = element_nodes(mesh, p.element);
   const std::vector<double> N = shape_values(mesh, p.L);

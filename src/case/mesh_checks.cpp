@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include <vector>
 
 #include "analysis/point_location.hpp"
 #include "analysis/wall_thickness.hpp"
@@ -111,7 +112,6 @@ void check_element_family(const Case& c, const Mesh& mesh) {
     throw InputError(place, what + " is not built for `element: shell` yet");
   };
   if (!c.regions.empty()) refuse(c.regions.front().place, "`regions`");
-  if (!c.probes.empty()) refuse(c.probes.front().place, "`probes`");
   const MaterialSection& m = c.material;
   if (!m.inelastic().elastic())
     refuse(m.place, "a viscoelastic or Mullins material (history at the thickness points)");
@@ -152,16 +152,23 @@ void check_regions(const Case& c, const Mesh& mesh) {
 
 /// A probe reports at a material point of the body: one farther from the mesh than the longest
 /// edge of the element nearest to it lies off the body (a wrong coordinate or unit). A probe of
-/// the thickness needs a wall.
+/// the thickness needs a wall (a shell has one); a shell has no pressure field to probe.
 void check_probe(const Case& c, const Mesh& mesh, const Probe& probe) {
   const std::string what = "probe '" + probe.name + "'";
   const MeshPoint at = locate_point(mesh, probe.point);
-  const auto& t = mesh.tets[static_cast<std::size_t>(at.element)];
+  std::vector<int> corners;
+  if (mesh.is_shell()) {
+    const auto& tri = mesh.triangles[static_cast<std::size_t>(at.element)];
+    corners.assign(tri.begin(), tri.end());
+  } else {
+    const auto& t = mesh.tets[static_cast<std::size_t>(at.element)];
+    corners.assign(t.begin(), t.end());
+  }
   double longest = 0.0;
-  for (int a = 0; a < 4; ++a)
-    for (int b = a + 1; b < 4; ++b)
-      longest = std::max(longest, (mesh.nodes[static_cast<std::size_t>(t[a])] -
-                                   mesh.nodes[static_cast<std::size_t>(t[b])])
+  for (std::size_t a = 0; a < corners.size(); ++a)
+    for (std::size_t b = a + 1; b < corners.size(); ++b)
+      longest = std::max(longest, (mesh.nodes[static_cast<std::size_t>(corners[a])] -
+                                   mesh.nodes[static_cast<std::size_t>(corners[b])])
                                       .norm());
   if (at.distance > longest)
     throw InputError(probe.point_place,
@@ -170,9 +177,19 @@ void check_probe(const Case& c, const Mesh& mesh, const Probe& probe) {
                          schema::format_vector(at.position) +
                          "), farther than the longest edge of the " + "element there (" +
                          format_number(longest) + " mm): give a point on the body");
-  const bool thickness = std::find(probe.fields.begin(), probe.fields.end(),
-                                   ProbeField::thickness) != probe.fields.end();
-  if (thickness && !(c.mesh.wall_thickness() && wall_faces(mesh)))
+  const auto asks = [&](ProbeField f) {
+    return std::find(probe.fields.begin(), probe.fields.end(), f) != probe.fields.end();
+  };
+  if (mesh.is_shell()) {
+    if (asks(ProbeField::pressure))
+      throw InputError(probe.fields_place.line > 0 ? probe.fields_place : probe.place,
+                       what +
+                           ": a shell has no pressure unknown (plane stress eliminates it, "
+                           "docs/theory/shell.md KL9): probe `cauchy` instead, or read the "
+                           "step files' cell field `pressure`");
+    return;  // the thickness of a shell is its own (its triangles' current thickness)
+  }
+  if (asks(ProbeField::thickness) && !(c.mesh.wall_thickness() && wall_faces(mesh)))
     throw InputError(
         probe.fields_place.line > 0 ? probe.fields_place : probe.place,
         what + ": the thickness is measured across a wall: " +

@@ -142,14 +142,17 @@ TEST(ShellCase, ClampedAndHingedStripsStoreTheBeamEnergy) {
 // state is the homogeneous plane-strain stretch λ = 1.1 (λ2 = 1, λ3 = 1/λ), whose Cauchy stress
 // σ = 2 c1 (λ² - 1/λ²) on the current section W t/λ gives the grips' force F = σ W t / λ
 // (incompressible neo-Hookean). The element reproduces a homogeneous state (shell.md, KL3,
-// KL4a) when the images beyond the moved clamp move with it: round-off.
+// KL4a) when the images beyond the moved clamp move with it: round-off. A probe on the
+// mid-surface at mid-length reads u = (Δ/2, 0, 0), the thickness t/λ, J = 1 and σ_xx.
 TEST(ShellCase, ClampedGripsPullAStripApartHomogeneously) {
   const double c1 = 0.5, W = 10.0, t = 1.0, lambda = 1.1;
-  const fs::path file =
-      strip_case_file("shell-grips",
-                      "  - {type: clamped, surface: left, name: left}\n"
-                      "  - {type: clamped, surface: right, name: right, value: [10.0, 0, 0]}\n",
-                      "solver: {steps: 2, newton: {rtol: 1.0e-12}}\n");
+  const fs::path file = strip_case_file(
+      "shell-grips",
+      "  - {type: clamped, surface: left, name: left}\n"
+      "  - {type: clamped, surface: right, name: right, value: [10.0, 0, 0]}\n",
+      "probes:\n"
+      "  - {name: mid, point: [50.0, 5.0, 0.5], fields: [displacement, thickness, J, cauchy]}\n"
+      "solver: {steps: 2, newton: {rtol: 1.0e-12}}\n");
   const HistoryTable h = run_case(file, "shell-grips");
   const double sigma = 2.0 * c1 * (lambda * lambda - 1.0 / (lambda * lambda));
   const double force = sigma * W * t / lambda;
@@ -158,6 +161,15 @@ TEST(ShellCase, ClampedGripsPullAStripApartHomogeneously) {
   EXPECT_NEAR(column(h, "force_x:right").back(), force, 1e-9 * force);
   EXPECT_NEAR(column(h, "force_x:left").back(), -force, 1e-9 * force);
   EXPECT_NEAR(column(h, "stretch_x").back(), lambda, 1e-12);
+  std::printf("probe mid: ux %.12f, thickness %.12f, J %.12f, cauchy_xx %.12f MPa\n",
+              column(h, "ux:mid").back(), column(h, "thickness:mid").back(),
+              column(h, "J:mid").back(), column(h, "cauchy_xx:mid").back());
+  EXPECT_NEAR(column(h, "ux:mid").back(), 5.0, 1e-10);
+  EXPECT_NEAR(column(h, "uy:mid").back(), 0.0, 1e-10);
+  EXPECT_NEAR(column(h, "uz:mid").back(), 0.0, 1e-10);
+  EXPECT_NEAR(column(h, "thickness:mid").back(), t / lambda, 1e-12);
+  EXPECT_NEAR(column(h, "J:mid").back(), 1.0, 1e-12);
+  EXPECT_NEAR(column(h, "cauchy_xx:mid").back(), sigma, 1e-9 * sigma);
 }
 
 /// The largest |value| of component `k` of the point field `name` of `vtu`.

@@ -1,7 +1,8 @@
 // Probes' point location (analysis/point_location.hpp): a point inside the body is found in its
 // element with coordinates that map back to it, fields of the element's degree are interpolated
-// exactly, a point off the body goes to the nearest point of its surface, and on a curved
-// second-order shell the element's own map is inverted.
+// exactly, a point off the body goes to the nearest point of its surface, on a curved
+// second-order shell the element's own map is inverted, and on a shell's mid-surface a point goes
+// to the nearest point of its triangles.
 #include "analysis/point_location.hpp"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 
 #include "fixtures/shells.hpp"
 #include "mesh/box_mesh.hpp"
+#include "support/shell_mesh.hpp"
 
 namespace plisse {
 namespace {
@@ -104,6 +106,34 @@ TEST(PointLocation, OnACurvedShellTheQuadraticElementsHoldPointsTheirChordsMiss)
     } else {
       EXPECT_LT(p.distance, 0.1 * linear_miss);
       EXPECT_NEAR(p.position.norm(), outer, 0.1 * linear_miss);
+    }
+  }
+}
+
+TEST(PointLocation, OnAShellsMidSurfaceAPointGoesToTheNearestPointOfItsTriangles) {
+  // The octant of a sphere of radius 10 mm as a shell's mid-surface (8² triangles). A
+  // point inside a triangle's plane lies in it with its own barycentric coordinates, and a linear
+  // field interpolates exactly there; the same point moved 0.3 mm along the triangle's normal (a
+  // point on a face of a 0.6 mm wall) comes back to it, 0.3 mm away.
+  const Mesh mesh = test::octahedral_sphere(10.0, 0.6, 8, true);
+  ASSERT_TRUE(mesh.is_shell());
+  const std::vector<double> f = nodal(mesh, linear);
+  for (int e : {0, 7, 21, 40}) {
+    const auto& tri = mesh.triangles[static_cast<std::size_t>(e)];
+    const Vec3d x0 = mesh.nodes[tri[0]], x1 = mesh.nodes[tri[1]], x2 = mesh.nodes[tri[2]];
+    const Vec3d L(0.2, 0.5, 0.3);
+    const Vec3d X = L[0] * x0 + L[1] * x1 + L[2] * x2;
+    const Vec3d n = (x1 - x0).cross(x2 - x0).normalized();
+    for (double off : {0.0, 0.3}) {
+      const MeshPoint at = locate_point(mesh, X + off * n);
+      EXPECT_EQ(at.element, e) << "off " << off;
+      EXPECT_NEAR(at.distance, off, 1e-12);
+      EXPECT_EQ(at.inside, off == 0.0);
+      EXPECT_LT((at.position - X).norm(), 1e-12);
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(at.L[static_cast<std::size_t>(k)], L[k], 1e-12);
+      const auto weights = interpolation_weights(mesh, at);
+      ASSERT_EQ(weights.size(), 3u);
+      EXPECT_NEAR(interpolate(weights, f), linear(X), 1e-12);
     }
   }
 }
