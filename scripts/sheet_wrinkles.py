@@ -4,10 +4,14 @@ Usage:
   scripts/sheet-wrinkles RUN [RUN ...]             one table per run (every written step)
   scripts/sheet-wrinkles --figures DIR RUN [...]   also the study's figures, into DIR
   scripts/sheet-wrinkles --summary RUN [...]       onset, vanishing, wavelength at fixed strains
+  scripts/sheet-wrinkles --costs RUN [...]         element, unknowns, steps, iterations, wall
+                                                   time and peak memory, from summary.json
 
 The model is the quarter [0, L/2] x [0, W/2] of the sheet (x = 0 the moved clamp, x = L/2 and
 y = 0 mirror planes). Per written step, on the top surface along the mirror line x = L/2 (the
-middle of the sheet), with the profile mirrored about y = 0 to the full width:
+middle of the sheet), with the profile mirrored about y = 0 to the full width; a run of
+validation/sheet-tension-wrinkling-shell.yaml (element: shell, step files of triangles only) has
+only the mid-surface's nodes, and is measured there, with the thickness of its step 0:
 
   strain      nominal strain of the sheet, -u_x(clamp) / (L/2)
   amplitude   largest |u_z| on the line [mm] (the centre's out-of-plane deflection)
@@ -16,7 +20,11 @@ middle of the sheet), with the profile mirrored about y = 0 to the full width:
   wavelength  twice the mean distance between the zero crossings of u_z that separate the counted
               crests (linear interpolation between nodes) [mm]; 0 with fewer than two crests
 
-A step is wrinkled when it has at least 5 crests (two waves). --summary gives per run the onset
+A profile lower than 1e-4 t is flat, with no crests: a shell that has flattened again is flat to
+round-off (1e-16 t) and to what is left of the mode it followed (1e-7 t and falling), whose
+undulations would otherwise count as crests of 10 % of nothing; a solid's flat sheet keeps a
+bulge of 0.07 to 0.2 t with one crest, far above. A step is wrinkled when it has at least 5
+crests (two waves). --summary gives per run the onset
 bracket (the step where log.txt reports a new instability and the step before it), the
 vanishing bracket (the last wrinkled written step and the next), the largest wrinkled amplitude
 over t, the wavelength at fixed strains (interpolated between wrinkled steps) and its ratio to
@@ -37,13 +45,15 @@ from plisse_study.figures import plt, save
 
 CREST_FRACTION = 0.1  # crests below this fraction of the amplitude are not counted
 WRINKLED_CRESTS = 5  # a profile with at least this many crests (two waves) is wrinkled
+FLAT_FRACTION = 1e-4  # a profile lower than this fraction of the thickness is flat: no crests
 SUMMARY_STRAINS = (0.05, 0.10, 0.15, 0.20, 0.25)
 
 
-def crests(y, w):
-    """Alternating extrema of w(y) with |w| >= CREST_FRACTION * max|w|: list of (y, w)."""
+def crests(y, w, flat=0.0):
+    """Alternating extrema of w(y) with |w| >= CREST_FRACTION * max|w|: list of (y, w); none when
+    max|w| <= `flat` [mm]."""
     amplitude = np.abs(w).max()
-    if amplitude == 0.0:
+    if amplitude <= flat:
         return []
     found = []
     for k in range(len(w)):
@@ -72,16 +82,29 @@ def wavelength(y, w, found):
     return 2.0 * (zeros[-1] - zeros[0]) / (len(zeros) - 1) if len(zeros) >= 2 else 0.0
 
 
+def is_shell(state):
+    """True for a step file of a shell run (runs.State): triangles, no tetrahedra."""
+    return state.cells is None and "triangle" in state.mesh.cells_dict
+
+
+def measured_nodes(state):
+    """Mask of the nodes measured: the top surface's (z above the middle of the sheet) of a solid
+    run, every node (the mid-surface) of a shell run."""
+    z = state.points[:, 2]
+    if is_shell(state):
+        return np.ones(len(z), dtype=bool)
+    return z > 0.5 * (z.max() + z.min())
+
+
 def profile(state):
-    """(strain, y, w) of one written step (runs.State): the mirrored top-surface profile along
-    x = L/2."""
+    """(strain, y, w) of one written step (runs.State): the mirrored profile of the top surface
+    (the mid-surface of a shell) along x = L/2."""
     X = state.points
     u = state.displacement
     half_length = X[:, 0].max()
     clamp = X[:, 0] < 1e-9 * half_length
     strain = -u[clamp, 0].mean() / half_length
-    top = X[:, 2] > 0.5 * (X[:, 2].max() + X[:, 2].min())
-    line = top & (np.abs(X[:, 0] - half_length) < 1e-6 * half_length)
+    line = measured_nodes(state) & (np.abs(X[:, 0] - half_length) < 1e-6 * half_length)
     y = X[line, 1]
     w = u[line, 2]
     order = np.argsort(y)
@@ -95,9 +118,10 @@ def profile(state):
 def measure(run):
     """Rows (step, strain, amplitude, crests, wavelength) and the last profile of a run."""
     rows, profiles = [], {}
+    flat = FLAT_FRACTION * run_geometry(run)[1]
     for step, path in runs.written_steps(run):  # not step 0, the sheet before the first step
         strain, y, w = profile(runs.read_state(path))
-        c = crests(y, w)
+        c = crests(y, w, flat)
         rows.append((step, strain, np.abs(w).max(), len(c), wavelength(y, w, c)))
         profiles[step] = (y, w)
     return rows, profiles
@@ -118,9 +142,14 @@ def cerda_mahadevan(strain, length, thickness, poisson=0.5):
 
 @functools.lru_cache(maxsize=None)
 def run_geometry(run):
-    """(full length L, thickness t) of a run, from the clamp's nodes in its first VTU (an
-    imperfection leaves the clamped edge where it was)."""
-    X = runs.read_state(runs.step_files(run)[0]).points
+    """(full length L, thickness t) of a run, from its first VTU: the clamp's nodes of a solid
+    (an imperfection leaves the clamped edge where it was), the reference `thickness` of a shell's
+    triangles."""
+    state = runs.read_state(runs.step_files(run)[0])
+    X = state.points
+    if is_shell(state):
+        thickness = state.mesh.cell_data_dict["thickness"]["triangle"]
+        return 2.0 * X[:, 0].max(), float(np.max(thickness))
     clamp = X[:, 0] < 1e-9 * X[:, 0].max()
     return 2.0 * X[:, 0].max(), X[clamp, 2].max() - X[clamp, 2].min()
 
@@ -131,7 +160,7 @@ def surface_figure(run, rows, path, title):
     step = max(rows, key=lambda r: r[2])[0]
     state = runs.read_state(dict(runs.written_steps(run))[step])
     X, u = state.points, state.displacement
-    top = X[:, 2] > 0.5 * (X[:, 2].max() + X[:, 2].min())
+    top = measured_nodes(state)
     half_length = X[:, 0].max()
     x, y, w = X[top, 0] + u[top, 0], X[top, 1] + u[top, 1], u[top, 2]
     fig, ax = plt.subplots(figsize=(7, 3.2))
@@ -151,11 +180,14 @@ def surface_figure(run, rows, path, title):
 
 
 def run_label(run, profiles):
-    """"t = 0.02, h = 0.5" for a run: thickness, and the in-plane element size from the node
-    spacing along the middle line (two nodes per quadratic element edge)."""
+    """"t = 0.02, h = 0.5" for a run ("..., shell" for a shell): thickness, and the in-plane
+    element size from the node spacing along the middle line (two nodes per quadratic element
+    edge, one per shell triangle's)."""
     _, t = run_geometry(run)
     y, _ = next(iter(profiles.values()))
-    return f"t = {t:.2g} mm, h = {2.0 * np.median(np.diff(y)):.2g} mm"
+    shell = is_shell(runs.read_state(runs.step_files(run)[0]))
+    h = (1.0 if shell else 2.0) * np.median(np.diff(y))
+    return f"t = {t:.2g} mm, h = {h:.2g} mm" + (", shell" if shell else "")
 
 
 def finish(fig, ax, path, xlabel, ylabel):
@@ -257,6 +289,23 @@ def summary(results):
             print(f"# strain {e:g}: wavelength ~ t^{slope:.3f} over {len(pts)} runs")
 
 
+def costs(run_dirs):
+    """Per run, from its summary.json: element family, unknowns solved for, converged steps and
+    the strain reached, Newton iterations and Krylov steps (Newton steps without a new
+    factorisation), wall time and peak memory."""
+    print("run,element,unknowns,steps,final_strain,newton_iterations,krylov_steps,wall_time_s,"
+          "peak_memory_mib,completed")
+    for run in run_dirs:
+        s = runs.read_summary(run)
+        if not s:
+            print(f"{runs.run_name(run)},no summary.json")
+            continue
+        rows, _ = measure(run)
+        print(f"{runs.run_name(run)},{s['element']},{s['free_dofs']},{s['steps']},"
+              f"{rows[-1][1]:.4f},{s['newton_iterations']},{s.get('krylov_steps', 0)},"
+              f"{s['wall_time']['total']:.1f},{s['peak_memory_mib']:.0f},{s['completed']}")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("runs", nargs="+", help="run directories")
@@ -264,7 +313,12 @@ def main():
     parser.add_argument("--prefix", default="", help="prefix of the amplitude and wavelength figures")
     parser.add_argument("--summary", action="store_true",
                         help="print onset, vanishing and wavelength at fixed strains per run")
+    parser.add_argument("--costs", action="store_true",
+                        help="print unknowns, steps, iterations, wall time and memory per run")
     args = parser.parse_args()
+    if args.costs:
+        costs(args.runs)
+        return
     results = {}
     for run in args.runs:
         if not runs.step_files(run):

@@ -2,9 +2,11 @@
 /// The wrinkles across the middle of a stretched sheet (validation/sheet-tension-wrinkling.yaml),
 /// measured as scripts/sheet_wrinkles.py measures them for the study
 /// (docs/studies/sheet-tension.md): the top-surface profile w(y) = u_z along the mirror line x =
-/// L/2 of the quarter model, mirrored about y = 0 to the full width; its amplitude max |w|; its
-/// crests (alternating extrema of at least 10 % of the amplitude); and the wavelength, twice the
-/// mean spacing of the zero crossings between consecutive crests.
+/// L/2 of the quarter model (of a shell's mesh, all of whose nodes lie in one plane, the
+/// mid-surface's), mirrored about y = 0 to the full width; its amplitude max |w|; its crests
+/// (alternating extrema of at least 10 % of the amplitude; none on a profile no higher than
+/// `flat`); and the wavelength, twice the mean spacing of the zero crossings between consecutive
+/// crests.
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -21,9 +23,11 @@ struct SheetProfile {
   double wavelength = 0.0;  ///< [mm]; 0 with fewer than two crests
 };
 
-/// The profile of one state: `reference` and `displacement` per node of the quarter model.
+/// The profile of one state: `reference` and `displacement` per node of the quarter model; a
+/// profile whose amplitude is at most `flat` [mm] has no crests (the script's 1e-4 t: a shell
+/// that has flattened again is flat to round-off, whose undulations are not crests).
 inline SheetProfile measure_sheet(const std::vector<Vec3d>& reference,
-                                  const std::vector<Vec3d>& displacement) {
+                                  const std::vector<Vec3d>& displacement, double flat = 0.0) {
   double half_length = 0.0, z_min = 1e300, z_max = -1e300;
   for (const Vec3d& x : reference) {
     half_length = std::max(half_length, x.x());
@@ -33,6 +37,7 @@ inline SheetProfile measure_sheet(const std::vector<Vec3d>& reference,
   SheetProfile p;
   double clamp_sum = 0.0;
   int clamp_nodes = 0;
+  const bool mid_surface = z_max == z_min;      // a shell's nodes: all of them are measured
   std::vector<std::pair<double, double>> line;  // (y, w)
   for (std::size_t i = 0; i < reference.size(); ++i) {
     const Vec3d& x = reference[i];
@@ -40,7 +45,8 @@ inline SheetProfile measure_sheet(const std::vector<Vec3d>& reference,
       clamp_sum += displacement[i].x();
       ++clamp_nodes;
     }
-    if (x.z() > 0.5 * (z_min + z_max) && std::abs(x.x() - half_length) < 1e-6 * half_length)
+    if ((mid_surface || x.z() > 0.5 * (z_min + z_max)) &&
+        std::abs(x.x() - half_length) < 1e-6 * half_length)
       line.emplace_back(x.y(), displacement[i].z());
   }
   p.strain = -clamp_sum / clamp_nodes / half_length;
@@ -50,7 +56,7 @@ inline SheetProfile measure_sheet(const std::vector<Vec3d>& reference,
     if (it->first > 1e-9) y.push_back(-it->first), w.push_back(it->second);
   for (const auto& [yi, wi] : line) y.push_back(yi), w.push_back(wi);
   for (double wi : w) p.amplitude = std::max(p.amplitude, std::abs(wi));
-  if (p.amplitude == 0.0) return p;
+  if (p.amplitude <= flat) return p;
 
   // Alternating extrema of at least 10 % of the amplitude (of two of one sign, the larger).
   std::vector<std::size_t> crest;
