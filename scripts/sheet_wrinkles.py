@@ -187,7 +187,7 @@ def run_label(run, profiles):
     y, _ = next(iter(profiles.values()))
     shell = is_shell(runs.read_state(runs.step_files(run)[0]))
     h = (1.0 if shell else 2.0) * np.median(np.diff(y))
-    return f"t = {t:.2g} mm, h = {h:.2g} mm" + (", shell" if shell else "")
+    return f"t = {t:.2g} mm, h = {h:.3g} mm" + (", shell" if shell else "")
 
 
 def finish(fig, ax, path, xlabel, ylabel):
