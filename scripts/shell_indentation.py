@@ -102,14 +102,15 @@ def sweep_points(args):
     inflated outer pole (its radius is 1 mm), the shell and its probes."""
     points = []
     r, t = args.radius, args.thickness
+    shell = sphere.is_shell_case(args.case or CASE)
     for tau in (float(x) for x in args.taus.split(",")):
         p = pressure_of(tau, args.c1, r, t)
-        pole = sphere.outer_pole(sphere.inflated_stretch(p, args.c1, r, t), r, t)
+        pole = sphere.outer_pole(sphere.inflated_stretch(p, args.c1, r, t), r, t, shell)
+        inner = [] if shell else [f"probes[1].point=[0,{r - 0.5 * t:g},0]"]
         points.append((f"tau-{tau:g}", [
             f"loads[0].value={p:.6e}", f"dies[0].point=[0,{pole + 0.05 + 1.0:.6f},0]",
             f"material.c1={args.c1:g}", f"mesh.inner_radius={r - 0.5 * t:g}",
-            f"mesh.thickness={t:g}", f"probes[0].point=[0,{r:g},0]",
-            f"probes[1].point=[0,{r - 0.5 * t:g},0]"] + (args.set or [])))
+            f"mesh.thickness={t:g}", f"probes[0].point=[0,{r:g},0]"] + inner + (args.set or [])))
     return points
 
 
@@ -246,7 +247,7 @@ def main():
     parser = sphere.indentation_parser(__doc__, "0,1,2,4,8", 200.0, "mesh.element_size=5")
     args = parser.parse_args()
     if args.sweep:
-        sweep.sweep(CASE, args.sweep, sweep_points(args), check=True)
+        sweep.sweep(args.case or CASE, args.sweep, sweep_points(args), check=True)
         return
     if not args.runs:
         parser.error("no run directories")

@@ -27,10 +27,12 @@ def inflated_stretch(pressure, c1, radius, thickness):
     return 0.5 * (lo + hi)
 
 
-def outer_pole(stretch, radius, thickness):
+def outer_pole(stretch, radius, thickness, shell=False):
     """Distance of the inflated sphere's outer pole from the centre: lambda R + t / (2 lambda^2)
-    (the mid-surface stretched by lambda, the wall thinned to t / lambda^2, its volume kept)."""
-    return stretch * radius + 0.5 * thickness / stretch**2
+    (the mid-surface stretched by lambda, the wall thinned to t / lambda^2, its volume kept). A
+    shell (`element: shell`) meets a die with its face at half the reference thickness from the
+    mid-surface (docs/theory/contact.md, D23): lambda R + t / 2."""
+    return stretch * radius + 0.5 * thickness / (1.0 if shell else stretch**2)
 
 
 def tau_of(pressure, c1, radius, thickness):
@@ -45,9 +47,21 @@ def pressure_of(tau, c1, radius, thickness):
 
 def mid_surface(step_file):
     """(mid-surface radius, wall thickness) of a spherical shell centred at the origin, from the
-    distances of the nodes of a step file (the undeformed one: step 0)."""
-    norm = np.linalg.norm(runs.read_state(step_file).points, axis=1)
+    distances of the nodes of a step file (the undeformed one: step 0); of a shell's mid-surface
+    (triangles), their mean and the cells' mean `thickness`."""
+    state = runs.read_state(step_file)
+    norm = np.linalg.norm(state.points, axis=1)
+    if state.cells is None and "thickness" in state.mesh.cell_data:
+        return float(norm.mean()), float(np.mean(state.mesh.cell_data["thickness"][0]))
     return 0.5 * (norm.max() + norm.min()), norm.max() - norm.min()
+
+
+def is_shell_case(path):
+    """Whether the case file at `path` says `element: shell`."""
+    import yaml
+
+    with open(path, encoding="utf-8") as f:
+        return (yaml.safe_load(f) or {}).get("element") == "shell"
 
 
 def before_contact(h, contact):
@@ -117,4 +131,6 @@ def indentation_parser(doc, taus, radius, set_example):
     parser.add_argument("--c1", type=float, default=1.0)
     parser.add_argument("--radius", type=float, default=radius, help="mid-surface radius [mm]")
     parser.add_argument("--thickness", type=float, default=1.0)
+    parser.add_argument("--case", help="the case file --sweep runs (default: the study's solid "
+                        "case; a case with `element: shell` has the one probe `mid`)")
     return parser

@@ -28,6 +28,8 @@ namespace {
 /// case's symmetry planes, which are cuts through the body whose area would inflate the tributary
 /// area of the nodes on the cut (docs/theory/contact.md, D5).
 std::vector<std::array<int, 3>> default_die_candidates(const Case& c, const Mesh& mesh) {
+  // A shell's symmetry sides are edges, which cut no triangle: every triangle is a candidate.
+  if (mesh.is_shell()) return mesh.triangles;
   std::set<std::array<int, 3>> cut;
   for (const std::string& surface : mirror_surfaces(c.terms)) {
     for (int t : mesh.surface_tags.at(surface)) {

@@ -1,8 +1,10 @@
 // `dies:`: rigid analytic dies with prescribed motion, frictionless, sticking or with Coulomb
 // friction (physics/die_contact.hpp, docs/theory/contact.md).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <string>
 
 #include "physics/die_contact.hpp"
 #include "physics/die_surface.hpp"
@@ -85,8 +87,41 @@ void check_die_start(const DieSettings& die, const DieGeometry& geometry, const 
                                     " is taken as touching); place the die against the region");
 }
 
+/// Half the reference thickness of a shell's `candidates` [mm]: how far the shell's faces lie from
+/// the mid-surface nodes that carry its contact (contact.md, D23). InputError at the die when the
+/// thickness varies over them, which the offset die does not represent.
+double half_shell_thickness(const DieSettings& die, const Mesh& mesh,
+                            const std::vector<std::array<int, 3>>& candidates) {
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  for (const auto& t : candidates)
+    for (const int v : t) {
+      lo = std::min(lo, mesh.shell_thickness[static_cast<std::size_t>(v)]);
+      hi = std::max(hi, mesh.shell_thickness[static_cast<std::size_t>(v)]);
+    }
+  if (hi - lo > 1e-12 * hi)
+    throw InputError(die.place,
+                     "the shell's thickness varies over the die's contact surface (from " +
+                         std::to_string(lo) + " to " + std::to_string(hi) +
+                         " mm): a die on a shell needs a uniform thickness there");
+  return 0.5 * hi;
+}
+
+/// The die that a shell's mid-surface nodes meet: `die` moved out by `offset` towards the body, so
+/// that the gap of a mid-surface node is that of the shell's face (contact.md, D23). A plane's
+/// point moves along its normal; a sphere's or cylinder's radius grows.
+DieGeometry offset_die(const DieSettings& die, double offset) {
+  Vec3d point = die.point;
+  double radius = die.radius;
+  if (die.shape == DieShape::plane)
+    point += offset * die.normal;
+  else
+    radius += offset;
+  return DieGeometry(die.shape, point, die.normal, die.axis, radius, die.displacement, die.ramp);
+}
+
 /// The contact term of `die`: candidates are the nodes of `die.surface`, or the context's default
 /// faces; the penalty defaults to contact.md (D11) with the material's small-strain shear modulus.
+/// On a shell the die meets the shell's faces, half the thickness from its nodes (D23).
 /// Throws InputError (at the die) when the surface is empty.
 std::unique_ptr<ModelTerm> make_die_term(const DieSettings& die, const TermContext& c) {
   const Mesh& mesh = c.mesh;
@@ -103,8 +138,8 @@ std::unique_ptr<ModelTerm> make_die_term(const DieSettings& die, const TermConte
   settings.friction = die.friction;
   settings.touch_slack = 1e-9 * h;
   settings.penalty = die.penalty > 0.0 ? die.penalty : default_die_penalty(c.shear_modulus(), h);
-  const DieGeometry geometry(die.shape, die.point, die.normal, die.axis, die.radius,
-                             die.displacement, die.ramp);
+  const DieGeometry geometry =
+      offset_die(die, mesh.is_shell() ? half_shell_thickness(die, mesh, candidates) : 0.0);
   check_die_start(die, geometry, mesh, candidates, region, h);
   return std::make_unique<DieContact>(mesh, geometry, settings, candidates, region, c.mirrors);
 }
@@ -179,6 +214,7 @@ TermKind die_kind() {
     if (die.surface) check.surface(*die.surface);
   };
   d.make = make_die_term;
+  d.shell = true;
   d.ramps = [](const DieSettings& die) {
     std::vector<RampUse> out;
     if (die.displacement != Vec3d::Zero())

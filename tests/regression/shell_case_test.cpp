@@ -1,7 +1,8 @@
 // element: shell through the command line: the example balloon against the thin-shell closed form,
 // strips with clamped and hinged edges against beam theory, an inflated octant with a random
-// imperfection and the wrinkle metrics, and a strip buckled through a mode imperfection taken
-// from an earlier run's eigenmode, read, checked, built and run as case files.
+// imperfection and the wrinkle metrics, a sheet pressed onto a plane die, and a strip buckled
+// through a mode imperfection taken from an earlier run's eigenmode, read, checked, built and run
+// as case files.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 #include "output/history_writer.hpp"
 #include "output/json_file.hpp"
@@ -179,6 +181,59 @@ double largest_component(const fs::path& vtu, const std::string& name, int k) {
   for (std::size_t i = static_cast<std::size_t>(k); i < f.values.size(); i += 3)
     largest = std::max(largest, std::abs(f.values[i]));
   return largest;
+}
+
+// A flat sheet (L = 20 mm, W = 10 mm, t = 1 mm, its mid-surface at z = t/2) pressed by a pressure
+// p onto a plane die that touches one of its faces at t = 0: the die below z = 0 with the pressure
+// on `top`, and the die above z = t with the pressure on `bottom`. The die meets the face half the
+// thickness from the nodes (docs/theory/contact.md, D23), so the sheet rests where it starts:
+// every node's gap is 0 at t = 0 and its displacement is the penetration, below the die's
+// tolerance (1e-9 mm; without the offset the nodes would move t/2 = 0.5 mm). Equilibrium: the
+// body's force on the die is p L W along the pressure (the quarter of a sheet mirrored about
+// x = 0 and y = 0: 4 p L W in full_force), and the contact pressure is p at every node, since the
+// contact's tributary areas (D5) are the pressure's nodal weights on flat triangles (loads.md).
+TEST(ShellCase, SheetPressedOntoAPlaneDieRestsOnItsFace) {
+  const double p = 1e-3, L = 20.0, W = 10.0;
+  for (const auto& [face, plane_z, normal_z] :
+       {std::tuple<std::string, double, double>{"top", 0.0, 1.0},
+        std::tuple<std::string, double, double>{"bottom", 1.0, -1.0}}) {
+    std::ostringstream text;
+    text << "element: shell\n"
+            "mesh: {generate: sheet, length: 20.0, width: 10.0, thickness: 1.0, element_size: "
+            "2.0}\n"
+            "material: {model: neo-hookean, c1: 0.5}\n"
+            "boundary:\n  - {type: symmetry, surface: left}\n"
+            "  - {type: symmetry, surface: front}\n"
+         << "loads:\n  - {type: pressure, name: p, surface: " << face << ", value: " << p
+         << "}\ndies:\n  - {name: plate, shape: plane, point: [0, 0, " << plane_z
+         << "], normal: [0, 0, " << normal_z << "], tolerance: 1.0e-9}\n"
+         << "solver: {steps: 2, newton: {rtol: 1.0e-12}}\n";
+    const std::string name = "shell-plate-" + face;
+    const fs::path file = write_case(name, text.str());
+    const fs::path dir = test::scratch_directory(name);
+    const auto r =
+        test::run_plisse_captured("run '" + file.string() + "' -o '" + dir.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const HistoryTable h = read_history(dir / "history.csv");
+    const double force = column(h, "force_z:plate").back(),
+                 full = column(h, "full_force_z:plate").back();
+    const VtuField gap0 = read_vtu_point_field(dir / "step_0000.vtu", "gap_plate");
+    const VtuField pressure = read_vtu_point_field(dir / "step_0002.vtu", "contact_pressure_plate");
+    double largest_gap0 = 0.0, pressure_error = 0.0;
+    for (double g : gap0.values) largest_gap0 = std::max(largest_gap0, std::abs(g));
+    for (double q : pressure.values) pressure_error = std::max(pressure_error, std::abs(q - p));
+    const double uz = largest_component(dir / "step_0002.vtu", "displacement", 2);
+    std::printf(
+        "sheet on a plane die (%s): force_z %.15f N (p L W = %.15f), full %.15f; gap at "
+        "t = 0 %.2e mm, |uz| %.2e mm, contact pressure - p %.2e MPa\n",
+        face.c_str(), force, p * L * W, full, largest_gap0, uz, pressure_error);
+    EXPECT_NEAR(force, -normal_z * p * L * W, 1e-12 * p * L * W);
+    EXPECT_NEAR(full, -normal_z * 4.0 * p * L * W, 1e-12 * p * L * W);
+    EXPECT_LT(largest_gap0, 1e-14);
+    EXPECT_LT(uz, 1e-9);
+    EXPECT_LT(pressure_error, 1e-10 * p);
+    EXPECT_EQ(column(h, "contact_nodes:plate").back(), 66.0);  // the 11 x 6 nodes
+  }
 }
 
 // An inflated octant (mid-surface radius 10 mm, t = 0.2 mm, c1 = 0.5 MPa) with a random
