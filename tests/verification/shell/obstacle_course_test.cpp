@@ -57,67 +57,7 @@ constexpr double kDegree = kPi / 180.0;
 /// divided by it.
 constexpr double kLoadScale = 1e-4;
 
-/// Linear isotropic elasticity as plisse's neo-Hookean with a bulk modulus (see above).
-struct Elastic {
-  double E = 0.0;   ///< Young's modulus
-  double nu = 0.0;  ///< Poisson's ratio, < 1/2 (1/2: exactly incompressible)
-  double c1() const { return E / (4.0 * (1.0 + nu)); }
-  double inverse_bulk_modulus() const { return 3.0 * (1.0 - 2.0 * nu) / E; }
-};
-
-/// The grid of n_s x n_r cells on the parameters (s, r) in [0, 1]², mapped onto the surface by
-/// `map`, each cell cut along its diagonal from (s_i, r_j) to (s_i+1, r_j+1), normals along
-/// X_s × X_r; thickness t. The grid lines are s_i = (i/n_s)^grading and r_j = (j/n_r)^grading:
-/// uniform at 1, finer towards s = 0 and r = 0 above 1. Edge tags `s0`, `s1` (s = 0, 1: the sides
-/// along r) and `r0`, `r1`.
-Mesh mapped_surface(int n_s, int n_r, const std::function<Vec3d(double, double)>& map,
-                    double thickness, double grading = 1.0) {
-  Mesh mesh;
-  const auto node = [&](int i, int j) { return i * (n_r + 1) + j; };
-  const auto line = [grading](int i, int n) {
-    return std::pow(static_cast<double>(i) / n, grading);
-  };
-  for (int i = 0; i <= n_s; ++i)
-    for (int j = 0; j <= n_r; ++j) mesh.nodes.push_back(map(line(i, n_s), line(j, n_r)));
-  for (int i = 0; i < n_s; ++i)
-    for (int j = 0; j < n_r; ++j) {
-      const int a = node(i, j), b = node(i + 1, j), c = node(i + 1, j + 1), d = node(i, j + 1);
-      mesh.triangles.push_back({a, b, c});
-      mesh.triangles.push_back({a, c, d});
-    }
-  const auto add_edge = [&](const std::string& tag, int a, int b) {
-    mesh.edge_tags[tag].push_back(static_cast<int>(mesh.edges.size()));
-    mesh.edges.push_back({a, b});
-  };
-  for (int j = 0; j < n_r; ++j) {
-    add_edge("s0", node(0, j), node(0, j + 1));
-    add_edge("s1", node(n_s, j), node(n_s, j + 1));
-  }
-  for (int i = 0; i < n_s; ++i) {
-    add_edge("r0", node(i, 0), node(i + 1, 0));
-    add_edge("r1", node(i, n_r), node(i + 1, n_r));
-  }
-  make_shell_surface(mesh, thickness);
-  return mesh;
-}
-
-/// The node of `mesh` at X (within 1e-9 of its size), or -1.
-int node_at(const Mesh& mesh, const Vec3d& X) {
-  for (int v = 0; v < mesh.n_nodes(); ++v)
-    if ((mesh.nodes[v] - X).norm() < 1e-9 * (1.0 + X.norm())) return v;
-  return -1;
-}
-
-/// `symmetry` on the edge tag: no displacement across its plane, the sides mirrored (KL8a).
-void symmetry(Mesh& mesh, const std::string& tag, ConstraintSet& set) {
-  const SurfaceRef ref{tag, {}};
-  hold_in_plane(mesh, ref, set);
-  const std::vector<int>& edges = mesh.edge_tags.at(tag);
-  const int axis = shell_edge_plane_axis(mesh, edges);
-  ASSERT_GE(axis, 0) << tag;
-  mirror_sides(mesh, edges, axis,
-               mesh.nodes[static_cast<std::size_t>(mesh.edges[edges[0]][0])][axis]);
-}
+using namespace shell_test;
 
 /// A rigid diaphragm on the edge tag in the plane x_axis = const: the two displacement components
 /// in its plane held, the one along `axis` free, the side free to turn (KL8).
@@ -249,23 +189,10 @@ Answer pinched_cylinder(int n, double grading = 1.0, const Elastic& material = k
 // displacement at a load point in the direction of its load, 0.0924 (Belytschko et al. 1985;
 // MacNeal & Harder quote 0.094). By the symmetry of the loads (a quarter turn about z and a change
 // of sign), both load points move by the same amount, outward at x and inward at y.
-constexpr double kSphereRadius = 10.0, kSphereThickness = 0.04, kHole = 18.0 * kDegree;
+constexpr double kSphereRadius = hemisphere::kRadius, kHole = hemisphere::kHole;
 constexpr double kSphereLoad = 2.0;
 constexpr double kSphereReference = 0.0924;
-const Elastic kSphereMaterial{6.825e7, 0.3};
-
-Mesh hemisphere_mesh(int n) {
-  // s: the azimuth φ from the x axis, 0 to 90°; r: the polar angle from the hole to the equator.
-  return mapped_surface(
-      n, n,
-      [](double s, double r) {
-        const double phi = s * kPi / 2.0, polar = kHole + r * (kPi / 2.0 - kHole);
-        return Vec3d(kSphereRadius * std::sin(polar) * std::cos(phi),
-                     kSphereRadius * std::sin(polar) * std::sin(phi),
-                     kSphereRadius * std::cos(polar));
-      },
-      kSphereThickness);
-}
+const Elastic kSphereMaterial = hemisphere::kMaterial;
 
 /// The hemisphere's quarter on n x n cells: the displacements of the two load points along their
 /// loads (x outward, y inward), the first in Answer::displacement.

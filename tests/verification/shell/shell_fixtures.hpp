@@ -1,12 +1,16 @@
 #pragma once
 /// What the shell's verification tests share: the strip of edge_conditions_test.cpp and
 /// euler_strip_test.cpp, cut three ways; the pseudo-random numbers that distort meshes the same
-/// way on every platform; and the solve of a flat shell under a small pressure.
+/// way on every platform; the solve of a flat shell under a small pressure; the meshes on mapped
+/// parameters, the elastic materials and the symmetry edges of obstacle_course_test.cpp and
+/// sze_benchmarks_test.cpp, and their hemisphere with an 18° hole.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
@@ -104,6 +108,94 @@ inline void symmetric_long_edges(Mesh& mesh, double width, ConstraintSet& set) {
   hold_in_plane(mesh, SurfaceRef{"back", {}}, set);
   mirror_sides(mesh, mesh.edge_tags.at("front"), 1, 0.0);
   mirror_sides(mesh, mesh.edge_tags.at("back"), 1, width);
+}
+
+/// Linear isotropic elasticity (E, ν) as plisse's neo-Hookean W = c1 (Ī1 - 3) with a bulk
+/// modulus κ (docs/theory/shell.md, KL12): μ = E / (2 (1 + ν)), c1 = μ / 2, κ = E / (3 (1 - 2 ν)),
+/// linear elasticity with E and ν at small strain, whose plane-stress shell is the Kirchhoff–Love
+/// shell with the membrane rigidity E t / (1 - ν²) and the bending rigidity E t³ / (12 (1 - ν²)).
+struct Elastic {
+  double E = 0.0;   ///< Young's modulus
+  double nu = 0.0;  ///< Poisson's ratio, < 1/2 (1/2: exactly incompressible)
+  double c1() const { return E / (4.0 * (1.0 + nu)); }
+  double inverse_bulk_modulus() const { return 3.0 * (1.0 - 2.0 * nu) / E; }
+};
+
+/// The grid of n_s x n_r cells on the parameters (s, r) in [0, 1]², mapped onto the surface by
+/// `map`, each cell cut along its diagonal from (s_i, r_j) to (s_i+1, r_j+1), normals along
+/// X_s × X_r; thickness t. The grid lines are s_i = (i/n_s)^grading and r_j = (j/n_r)^grading:
+/// uniform at 1, finer towards s = 0 and r = 0 above 1. Edge tags `s0`, `s1` (s = 0, 1: the sides
+/// along r) and `r0`, `r1`.
+inline Mesh mapped_surface(int n_s, int n_r, const std::function<Vec3d(double, double)>& map,
+                           double thickness, double grading = 1.0) {
+  Mesh mesh;
+  const auto node = [&](int i, int j) { return i * (n_r + 1) + j; };
+  const auto line = [grading](int i, int n) {
+    return std::pow(static_cast<double>(i) / n, grading);
+  };
+  for (int i = 0; i <= n_s; ++i)
+    for (int j = 0; j <= n_r; ++j) mesh.nodes.push_back(map(line(i, n_s), line(j, n_r)));
+  for (int i = 0; i < n_s; ++i)
+    for (int j = 0; j < n_r; ++j) {
+      const int a = node(i, j), b = node(i + 1, j), c = node(i + 1, j + 1), d = node(i, j + 1);
+      mesh.triangles.push_back({a, b, c});
+      mesh.triangles.push_back({a, c, d});
+    }
+  const auto add_edge = [&](const std::string& tag, int a, int b) {
+    mesh.edge_tags[tag].push_back(static_cast<int>(mesh.edges.size()));
+    mesh.edges.push_back({a, b});
+  };
+  for (int j = 0; j < n_r; ++j) {
+    add_edge("s0", node(0, j), node(0, j + 1));
+    add_edge("s1", node(n_s, j), node(n_s, j + 1));
+  }
+  for (int i = 0; i < n_s; ++i) {
+    add_edge("r0", node(i, 0), node(i + 1, 0));
+    add_edge("r1", node(i, n_r), node(i + 1, n_r));
+  }
+  make_shell_surface(mesh, thickness);
+  return mesh;
+}
+
+/// The node of `mesh` at X (within 1e-9 of its size), or -1.
+inline int node_at(const Mesh& mesh, const Vec3d& X) {
+  for (int v = 0; v < mesh.n_nodes(); ++v)
+    if ((mesh.nodes[v] - X).norm() < 1e-9 * (1.0 + X.norm())) return v;
+  return -1;
+}
+
+/// `symmetry` on the edge tag: no displacement across its plane, the sides mirrored (KL8a).
+inline void symmetry(Mesh& mesh, const std::string& tag, ConstraintSet& set) {
+  const SurfaceRef ref{tag, {}};
+  hold_in_plane(mesh, ref, set);
+  const std::vector<int>& edges = mesh.edge_tags.at(tag);
+  const int axis = shell_edge_plane_axis(mesh, edges);
+  ASSERT_GE(axis, 0) << tag;
+  mirror_sides(mesh, edges, axis,
+               mesh.nodes[static_cast<std::size_t>(mesh.edges[edges[0]][0])][axis]);
+}
+
+/// The hemisphere of radius 10, t = 0.04, E = 6.825e7, ν = 0.3, open at its pole by a hole of 18°
+/// about the z axis (MacNeal & Harder 1985, figure 9; Sze, Liu & Lo 2004, section 3.4): its
+/// quarter x, y >= 0 on n x n cells, s the azimuth φ from the x axis (0 to 90°: edge `s0` on
+/// y = 0, `s1` on x = 0), r the polar angle from the hole (`r0`) to the equator (`r1`, z = 0).
+namespace hemisphere {
+constexpr double kRadius = 10.0, kThickness = 0.04;
+constexpr double kHole = 18.0 * std::numbers::pi / 180.0;  // [rad]
+inline const Elastic kMaterial{6.825e7, 0.3};
+}  // namespace hemisphere
+
+inline Mesh hemisphere_mesh(int n) {
+  using namespace hemisphere;
+  constexpr double kPi = std::numbers::pi;
+  return mapped_surface(
+      n, n,
+      [](double s, double r) {
+        const double phi = s * kPi / 2.0, polar = kHole + r * (kPi / 2.0 - kHole);
+        return Vec3d(kRadius * std::sin(polar) * std::cos(phi),
+                     kRadius * std::sin(polar) * std::sin(phi), kRadius * std::cos(polar));
+      },
+      kThickness);
 }
 
 /// Solves `model` (its loads ramped over [0, 1]) in one load step, Newton stopping at the
