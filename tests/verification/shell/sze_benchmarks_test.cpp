@@ -10,18 +10,17 @@
 // the plate and 24 x 36 on the cylinder's octant, as the transcriptions below say). The values
 // here are those of P/Pmax = 0.1, 0.2, ... 1, copied from two public transcriptions of the tables,
 // each named at its array:
-//   - the plate and the cylinder: MBDyn's test suite, tests/plates/sze2004/sze33/sze33_ref.dat and
-//     sze35/sze35_ref.dat ("results from [Sze et al. 2004]"), whose model files also give the
+//   - the plate and the cylinder: the reference data of the MBDyn project's test suite for
+//     sections 3.3 and 3.5 ("results from [Sze et al. 2004]"), whose models also give the
 //     points (A on the inner and B on the outer radius of the loaded side of the slit; A under the
 //     cylinder's load, B at mid-length and C at the free edge, 90° from A);
-//   - the hemisphere: Elmer's test suite, fem/tests/Shell_OpenHemisphere_High_Order/runhemisphere.m
-//     (`refres`, "Reference results from the paper Sze KY, Liu XH, Lo SH ..."), columns P/Pmax
-//     and two displacements
-//     without labels. The larger one is the point the load pushes in and the smaller the point it
-//     pulls out: a ring pulled apart at two points straightens and stiffens, pushed in it folds.
-//     The runs agree: on 64 x 64 cells the pulled point moves within 1 % of the smaller column
-//     and the pushed one within 2.1 % of the larger at every level, while the two columns differ
-//     by up to a factor 2.
+//   - the hemisphere: the reference results of the Elmer project's open-hemisphere shell test
+//     ("Reference results from the paper Sze KY, Liu XH, Lo SH ..."), columns P/Pmax and two
+//     displacements without labels. The larger one is the point the load pushes in and the smaller
+//     the point it pulls out: a ring pulled apart at two points straightens and stiffens, pushed in
+//     it folds. The runs agree: on 64 x 64 cells the pulled point moves within 1 % of the smaller
+//     column and the pushed one within 2.1 % of the larger at every level, while the two columns
+//     differ by up to a factor 2.
 //
 // Material. Sze et al.'s shells are linear elastic (E, ν). plisse's neo-Hookean with c1 = μ/2 and
 // the bulk modulus κ = E / (3 (1 - 2ν)) (shell_fixtures.hpp, `Elastic`) is linear elasticity with E
@@ -160,8 +159,8 @@ Curve follow_path(const Mesh& mesh, AnyMaterial material, double inverse_bulk_mo
 constexpr double kPlateInner = 6.0, kPlateOuter = 10.0, kPlateThickness = 0.03;
 constexpr double kPlateLineForce = 0.8;
 const Elastic kPlateMaterial{2.1e7, 0.0};
-// Sze et al. 2004, table of section 3.3 (their S4R, 10 x 80 elements), as transcribed in MBDyn's
-// tests/plates/sze2004/sze33/sze33_ref.dat: P/Pmax, w_A, w_B.
+// Sze et al. 2004, table of section 3.3 (their S4R, 10 x 80 elements), as MBDyn's test suite
+// transcribes it: P/Pmax, w_A, w_B.
 const Table kPlateTable = {{0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0},
                            {{4.277, 5.876},
                             {6.725, 9.160},
@@ -211,9 +210,8 @@ Curve slit_annular_plate(int n_r, int n_theta, Model model, double max_step) {
 // along -y, and z is held at the hole's node on y = 0 (its reaction is zero: the loads balance).
 // Read: the outward displacement of the pulled point and the inward one of the pushed point.
 constexpr double kSphereLoad = 400.0;
-// Sze et al. 2004, table of section 3.4, as transcribed in Elmer's
-// fem/tests/Shell_OpenHemisphere_High_Order/runhemisphere.m (`refres`): P/Pmax, then the smaller
-// and the larger displacement (see the top of this file).
+// Sze et al. 2004, table of section 3.4, as Elmer's open-hemisphere shell test transcribes it:
+// P/Pmax, then the smaller and the larger displacement (see the top of this file).
 const Table kSphereTable = {{0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0},
                             {{1.499, 1.840},
                              {2.321, 3.261},
@@ -257,8 +255,8 @@ Curve pinched_hemisphere(int n, Model model, double max_step) {
 constexpr double kPullRadius = 4.953, kPullLength = 10.35, kPullThickness = 0.094;
 constexpr double kPullLoad = 40000.0;
 const Elastic kPullMaterial{1.05e7, 0.3125};
-// Sze et al. 2004, table of section 3.5 (their S4R, 24 x 36 elements on the octant), as
-// transcribed in MBDyn's tests/plates/sze2004/sze35/sze35_ref.dat: P/Pmax, w_A, -u_B, -u_C.
+// Sze et al. 2004, table of section 3.5 (their S4R, 24 x 36 elements on the octant), as MBDyn's
+// test suite transcribes it: P/Pmax, w_A, -u_B, -u_C.
 const Table kPullTable = {{0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0},
                           {{1.707, 2.217, 2.293},
                            {2.079, 2.904, 3.106},
