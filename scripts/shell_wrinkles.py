@@ -152,10 +152,11 @@ def sweep_points(args):
     cap, the rings, and steps as fine at a larger tau's longer travel."""
     points = []
     r, t, c1 = args.radius, args.thickness, args.c1
+    shell = sphere.is_shell_case(args.case or CASE)
     for tau in (float(x) for x in args.taus.split(",")):
         p = sphere.pressure_of(tau, c1, r, t)
         _, lp, unit = units(p, c1, r, t)
-        pole = sphere.outer_pole(sphere.inflated_stretch(p, c1, r, t), r, t)
+        pole = sphere.outer_pole(sphere.inflated_stretch(p, c1, r, t), r, t, shell)
         a = INDENTER * lp
         rings = ",".join(f"{math.degrees(math.acos(f * lp / r)):.4f}" for f in RING_RADII)
         # The case's steps move the indenter by 1.35 mm; as fine at a larger tau's longer travel.
@@ -261,7 +262,7 @@ def main():
                         help="indenter travel in units of p R^2 / Y (--sweep)")
     args = parser.parse_args()
     if args.sweep:
-        sweep.sweep(CASE, args.sweep, sweep_points(args), check=True)
+        sweep.sweep(args.case or CASE, args.sweep, sweep_points(args), check=True)
         return
     if not args.runs:
         parser.error("no run directories")
