@@ -1,5 +1,8 @@
 #include "physics/rigid_cap.hpp"
 
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <cstdio>
 #include <set>
 
 #include "core/error.hpp"
@@ -12,7 +15,8 @@ namespace plisse {
 RigidCap::RigidCap(const Cap& cap, const Mesh& mesh,
                    const std::vector<ConstrainedComponent>& constraints)
     : mesh_(mesh), settings_(cap) {
-  const std::set<int> nodes = triangle_nodes(mesh, mesh.surface_tags.at(cap.surface.name));
+  // A solid's surface tag; on a shell an edge tag (its rim) or a face tag (caps.md, G8).
+  const std::set<int> nodes = condition_nodes(mesh, cap.surface);
   if (cap.point) {
     point_ = *cap.point;
   } else {
@@ -39,6 +43,35 @@ RigidCap::RigidCap(const Cap& cap, const Mesh& mesh,
     const auto& given = m < 3 ? settings_.displacement[m] : settings_.rotation[m - 3];
     free_index_[m] = given ? -1 : n_free_++;
   }
+  if (mesh.is_shell()) refuse_free_turn_about_a_line(nodes);
+}
+
+void RigidCap::refuse_free_turn_about_a_line(const std::set<int>& nodes) const {
+  // The nodes' principal direction: the largest eigenvector of their scatter. They lie on a line
+  // when the other two spreads are round-off against it.
+  Vec3d mean = Vec3d::Zero();
+  for (int v : nodes) mean += mesh_.nodes[v];
+  mean /= static_cast<double>(nodes.size());
+  Mat3d scatter = Mat3d::Zero();
+  for (int v : nodes) {
+    const Vec3d r = mesh_.nodes[v] - mean;
+    scatter += r * r.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Mat3d> eigen(scatter);
+  const double largest = eigen.eigenvalues()(2);
+  if (largest > 0.0 && eigen.eigenvalues()(1) > 1e-16 * largest) return;  // not on one line
+  const Vec3d d = eigen.eigenvectors().col(2);
+  // The turn about d is held when a prescribed rotation component has a share of d.
+  for (int k = 0; k < 3; ++k)
+    if (settings_.rotation[k] && std::abs(d[k]) > 1e-9) return;
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "cap '%s' holds the nodes of a shell's edge, not the wall's slope (a hinge, "
+                "docs/theory/caps.md, G8), and its %zu nodes lie on one line along [%.4g, %.4g, "
+                "%.4g]: nothing holds the cap's turn about that line, so the tangent is singular; "
+                "prescribe that rotation (`rotation`), or clamp the edge instead of capping it",
+                settings_.name.c_str(), nodes.size(), d.x(), d.y(), d.z());
+  throw InputError(settings_.place, text);
 }
 
 int RigidCap::n_global_unknowns() const { return n_ties() + n_free_; }

@@ -5,6 +5,7 @@
 /// either prescribed, ramped, or free under an applied force or moment.
 #include <array>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -17,9 +18,11 @@ namespace plisse {
 
 class RigidCap : public ModelTerm {
  public:
-  /// Ties every node of `cap.surface` (corners and edge nodes) to the cap, except the components
-  /// that `constraints` already prescribe (the boundary condition wins there). Borrows `mesh`.
-  /// Throws InputError at `cap.place` when nothing is left to tie.
+  /// Ties every node of `cap.surface` (corners and edge nodes; on a shell the nodes of the edge
+  /// or face tag of that name) to the cap, except the components that `constraints` already
+  /// prescribe (the boundary condition wins there). Borrows `mesh`. Throws InputError at
+  /// `cap.place` when nothing is left to tie, or when a shell's tied nodes lie on one line about
+  /// which the cap is free to turn.
   RigidCap(const Cap& cap, const Mesh& mesh, const std::vector<ConstrainedComponent>& constraints);
 
   /// One multiplier per tie, then one unknown per free motion of the cap.
@@ -44,6 +47,9 @@ class RigidCap : public ModelTerm {
   struct Tie {
     int node, component;
   };
+  /// On a shell: InputError at the cap when `nodes` lie on one line and the cap's turn about it
+  /// is free, which nothing would hold (the cap holds the edge's nodes, not its slope: G8).
+  void refuse_free_turn_about_a_line(const std::set<int>& nodes) const;
   /// Full-state index of the multiplier of tie k, and of free motion m (0..5; -1 if prescribed).
   int multiplier_dof(int k) const { return first_dof_ + k; }
   int motion_dof(int m) const {

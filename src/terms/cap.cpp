@@ -22,7 +22,10 @@ TermKind cap_kind() {
            "`ux:<name>` ... (the reference point's displacement) and `rx:<name>` ... (the "
            "rotation vector, rad)")
       .required();
-  surface_key(s, "surface", &Cap::surface, "the nodes tied to the cap").required();
+  surface_key(s, "surface", &Cap::surface,
+              "the nodes tied to the cap; on a shell an edge tag (the rim the cap closes) or a "
+              "face tag")
+      .required();
   s.add({"point",
          "vector",
          "mm",
@@ -78,7 +81,9 @@ TermKind cap_kind() {
                                         "`rotation`, or no moment");
            }
          });
-  d.check_mesh = [](const Cap& cap, const TermMeshCheck& check) { check.surface(cap.surface); };
+  // On a shell the cap holds an edge tag's nodes (its rim) or a face tag's (caps.md, G8).
+  d.check_mesh = [](const Cap& cap, const TermMeshCheck& check) { check.condition(cap.surface); };
+  d.shell = true;
   d.make = [](const Cap& cap, const TermContext& c) -> std::unique_ptr<ModelTerm> {
     return std::make_unique<RigidCap>(cap, c.mesh, c.constraints);
   };
