@@ -10,6 +10,7 @@
 
 #include "case/keys.hpp"
 #include "case/overrides.hpp"
+#include "case/petsc_option_text.hpp"
 #include "case/sections.hpp"
 #include "case/solver_section.hpp"
 #include "case/yaml_text.hpp"
@@ -161,11 +162,13 @@ Case parse_case_file(const std::string& path, const std::vector<std::string>& ov
 std::vector<std::string> case_key_sections() {
   std::vector<std::string> out = the_case_schema().keys();
   out.insert(std::find(out.begin(), out.end(), "mesh") + 1, "mesh-options");
+  out.insert(std::find(out.begin(), out.end(), "solver") + 1, "petsc-options");
   return out;
 }
 
 std::string case_keys_markdown(const std::string& section) {
   if (section == "mesh-options") return mesh_options_markdown();
+  if (section == "petsc-options") return petsc_options_markdown();
   for (const auto& row : the_case_schema().rows()) {
     if (row.doc.key != section) continue;
     if (row.nested) return schema::render_markdown(*row.nested);

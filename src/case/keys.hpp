@@ -7,13 +7,15 @@
 namespace plisse {
 
 /// The sections of a case file in the order the allowed top-level keys are listed, with the mesh
-/// generators' options after `mesh`: "title", "mesh", "mesh-options", "material", "boundary",
-/// "loads", "cavities", "dies", "probes", "solver", "output".
+/// generators' options after `mesh` and the accepted PETSc options after `solver`: "title",
+/// "mesh", "mesh-options", "material", "boundary", "loads", "cavities", "dies", "probes",
+/// "solver", "petsc-options", "output".
 std::vector<std::string> case_key_sections();
 
 /// The markdown table of the keys of `section` (key, type, unit, default, range, the variants a
 /// key applies to, meaning), followed by the rules between its keys; for "mesh-options" the table
-/// of every generator's options (kind, option, type, unit, range, default, meaning). Throws Error
+/// of every generator's options (kind, option, type, unit, range, default, meaning), for
+/// "petsc-options" the PETSc options a case may give (option, value, meaning). Throws Error
 /// for an unknown section.
 std::string case_keys_markdown(const std::string& section);
 

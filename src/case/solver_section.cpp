@@ -178,9 +178,10 @@ Schema<SolverSettings> solver_schema() {
          "",
          "empty",
          {},
-         "extra PETSc options, e.g. `-ksp_type preonly -pc_type lu`; views and monitors print "
-         "text to the log (`-ksp_view ::ascii_info`): options that name a file "
-         "(`-log_view :f.txt`, `-options_file`), open a window or start a debugger are refused"},
+         "extra PETSc options, e.g. `-ksp_type preonly -pc_type lu`: the solver options of the "
+         "table \"PETSc options\" below, each with a value of its type; views and monitors "
+         "print text to the log (`-ksp_view ::ascii_info`); every other option (one that names "
+         "a file, writes a binary view, reads options, opens a window) is refused"},
         [](const Field& f, S& solver, ReadContext&) {
           solver.petsc_options = f.text();
           solver.petsc_options_place = f.place();

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 
 #include "support/run_plisse.hpp"
 
@@ -46,6 +47,12 @@ Outcome plisse(const std::string& args) {
 }
 
 const std::string kCube = test::example("cube-tension-neo-hookean.yaml");
+
+/// `plisse ARGS` under kLimits after the shell command `before` (e.g. "cd DIR && ").
+Outcome plisse_in(const std::string& before, const std::string& args) {
+  const test::PlisseResult r = test::run_plisse_captured(args, before + kLimits);
+  return {r.status, r.output, 0.0};
+}
 
 void expect_refused(const Outcome& r, const std::string& message) {
   EXPECT_EQ(r.status, 2) << r.output;  // 124 would be the timeout: a hang
@@ -120,12 +127,45 @@ TEST(UntrustedFiles, PetscOptionsThatNameFilesAreRefusedBeforePetscReadsThem) {
   const fs::path timings = dir / "timings.txt";
   expect_refused(plisse("run " + kCube + " -o " + (dir / "out").string() +
                         " --petsc \"-log_view :" + timings.string() + "\""),
-                 "its value names the file '" + timings.string() + "'");
+                 "'-log_view :" + timings.string() + "' is refused: -log_view is not among");
   EXPECT_FALSE(fs::exists(timings));
   // Text to the log is what PETSc's views are for here.
   const Outcome fine = plisse("run " + kCube + " --set solver.steps=1 -o " + (dir / "ok").string() +
                               " --petsc \"-ksp_view ::ascii_info\"");
   EXPECT_EQ(fine.status, 0) << fine.output;
+}
+
+TEST(UntrustedFiles, PetscViewsInBinaryWriteNoFileUnderCheckOrRun) {
+  // PETSc's binary viewer writes `binaryoutput` (and .info) into the working directory, and
+  // -prefix_push viewer_binary_ -filename F points it at any file F: check and run refuse both
+  // the same way, and nothing is created or truncated.
+  const fs::path dir = test::scratch_directory("untrusted-petsc-binary");
+  fs::create_directories(dir / "work");
+  const fs::path victim = dir / "victim.txt";
+  std::ofstream(victim) << "kept\n";
+  const std::string in_work = "cd " + (dir / "work").string() + " && ";
+  const std::string push = "-prefix_push viewer_binary_ -filename " + victim.string() +
+                           " -prefix_pop -ksp_view_mat binary";
+  for (const auto& [options, refused] :
+       {std::pair<std::string, std::string>{"-ksp_view_mat binary", "'-ksp_view_mat binary'"},
+        {push, "'-prefix_push viewer_binary_'"}}) {
+    const std::string set = " --set 'solver.petsc_options=" + options + "'";
+    const Outcome check = plisse_in(in_work, "check " + kCube + set);
+    expect_refused(check, refused + " is refused");
+    const Outcome run = plisse_in(in_work, "run " + kCube + set + " -o " + (dir / "out").string());
+    expect_refused(run, refused + " is refused");
+    EXPECT_EQ(check.output, run.output);  // the same verdict, in the same words
+  }
+  expect_refused(
+      plisse_in(in_work, "run " + kCube + " --petsc '" + push + "' -o " + (dir / "out").string()),
+      "command line: key '--petsc': '-prefix_push viewer_binary_' is refused");
+  EXPECT_TRUE(fs::is_empty(dir / "work"));
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  std::ifstream in(victim);
+  std::string kept;
+  std::getline(in, kept);
+  EXPECT_EQ(kept, "kept");
+  EXPECT_FALSE(fs::exists(dir / "victim.txt.info"));
 }
 
 TEST(UntrustedFiles, ALongSetKeyPathIsRefusedNotWalked) {

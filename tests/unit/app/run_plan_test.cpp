@@ -87,9 +87,10 @@ TEST(RunPlan, APetscOptionThatNamesAFileIsRefused) {
   RunOptions options = options_for("cube.yaml");
   options.petsc_options = {"-snes_monitor", "-options_file more.txt"};
   EXPECT_EQ(refusal(options),
-            "command line: key '--petsc': '-options_file more.txt' is refused: it reads or writes "
-            "a file by name; a run writes its output into its run directory (PETSc's views and "
-            "monitors go to the log as text)");
+            "command line: key '--petsc': '-options_file more.txt' is refused: -options_file is "
+            "not among the solver options plisse accepts (docs/case-file.md, \"PETSc options\"); "
+            "every option that names a file, writes a view or monitor other than text to the log, "
+            "reads options (-options_file, -prefix_push) or starts another program is refused");
 }
 
 TEST(RunPlan, ResumeWithOverwriteIsRefused) {
