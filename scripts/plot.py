@@ -26,6 +26,9 @@ from matplotlib.ticker import MaxNLocator
 import numpy as np
 
 
+FIGURES = ("forces.png", "pressure_volume.png", "newton.png", "wrinkles.png", "wrinkle_map.png")
+
+
 def fail(message, status=2):
     print(f"plisse plot: {message}", file=sys.stderr)
     sys.exit(status)
@@ -205,13 +208,23 @@ def main():
     if not h:
         fail(f"{os.path.join(run, 'history.csv')}: no converged step to plot")
     summary = runs.read_summary(run)
-    os.makedirs(out, exist_ok=True)
+    try:
+        figures.refuse_link(out)
+        os.makedirs(out, exist_ok=True)
+        for name in sorted(os.listdir(out)):
+            if name.endswith(".png") and (name in FIGURES or name.startswith("wrinkle_map_step_")):
+                figures.refuse_link(os.path.join(out, name))
+    except figures.LinkRefused as e:
+        fail(str(e))
     units = reference_units(plisse)
-    forces_figure(h, units, out)
-    pressure_volume_figure(h, units, out)
-    newton_figure(h, out)
-    wrinkles_figure(h, out)
-    wrinkle_maps(run, summary, out)
+    try:
+        forces_figure(h, units, out)
+        pressure_volume_figure(h, units, out)
+        newton_figure(h, out)
+        wrinkles_figure(h, out)
+        wrinkle_maps(run, summary, out)
+    except figures.LinkRefused as e:
+        fail(str(e))
 
 
 if __name__ == "__main__":

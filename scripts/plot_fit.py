@@ -8,7 +8,7 @@ import csv
 import sys
 from pathlib import Path
 
-from plisse_study.figures import plt, save
+from plisse_study.figures import LinkRefused, plt, save
 
 
 def read(path):
@@ -41,4 +41,8 @@ def main(directory, title):
 if __name__ == "__main__":
     if len(sys.argv) != 3:
         sys.exit("usage: plot_fit.py DIR TITLE")
-    main(sys.argv[1], sys.argv[2])
+    try:
+        main(sys.argv[1], sys.argv[2])
+    except LinkRefused as e:
+        print(f"plisse fit: {e}", file=sys.stderr)
+        sys.exit(2)

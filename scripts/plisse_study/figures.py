@@ -3,6 +3,9 @@ from the axisymmetric mean shape, and a quarter model's disc mirrored to the ful
 
 Importing this module selects matplotlib's file-only backend (Agg). Lengths in the run's units.
 """
+import os
+import tempfile
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -12,11 +15,41 @@ import numpy as np  # noqa: E402
 from . import runs  # noqa: E402
 
 
+class LinkRefused(Exception):
+    """A figure's path, or its folder, is a symbolic link: plisse writes no file through one."""
+
+
+def refuse_link(path):
+    """Raises LinkRefused when `path` is a symbolic link."""
+    if os.path.islink(path):
+        raise LinkRefused(f"{path}: is a symbolic link; plisse writes no file through a link "
+                          "(its target could be any file the user may write): remove the link")
+
+
 def save(fig, path, dpi=130):
-    """Lays out `fig`, writes it to `path` as PNG at `dpi` and closes it."""
-    fig.tight_layout()
-    fig.savefig(path, dpi=dpi)
-    plt.close(fig)
+    """Lays out `fig`, writes it to `path` as PNG at `dpi` and closes it. The PNG is written to a
+    temporary beside `path`, then renamed over it, so a reader never sees half a file and a link
+    is never written through: a `path` or folder that is a symbolic link raises LinkRefused."""
+    path = os.fspath(path)
+    folder = os.path.dirname(path) or "."
+    try:
+        refuse_link(folder)
+        refuse_link(path)
+        fig.tight_layout()
+        fd, temporary = tempfile.mkstemp(prefix=f".{os.path.basename(path)}.tmp.{os.getpid()}.",
+                                         dir=folder)
+        try:
+            with os.fdopen(fd, "wb") as f:
+                fig.savefig(f, dpi=dpi, format="png")
+                umask = os.umask(0)
+                os.umask(umask)
+                os.fchmod(f.fileno(), 0o666 & ~umask)  # as a new file would be, not mkstemp's 0600
+            os.replace(temporary, path)
+        except BaseException:
+            os.unlink(temporary)
+            raise
+    finally:
+        plt.close(fig)
 
 
 def outer_surface(points, tets, center):

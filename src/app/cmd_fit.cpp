@@ -16,6 +16,7 @@
 #include "case/test_data_reader.hpp"
 #include "core/error.hpp"
 #include "material/material_fit.hpp"
+#include "output/append_file.hpp"
 #include "output/atomic_file.hpp"
 #include "output/json_file.hpp"
 
@@ -94,10 +95,17 @@ std::string report(const FitCommandOptions& o, const std::vector<TestPoint>& dat
 void write_files(const FitCommandOptions& o, const std::vector<TestPoint>& data,
                  const FitResult& fit) {
   const fs::path dir = o.output;
+  const InputPlace place{dir.string(), 0, 0, "-o"};
   std::error_code ec;
+  // Nothing is written through a symbolic link (docs/architecture.md, "Interface contract"):
+  // the folder and each file are checked before the first is written.
+  if (fs::is_symlink(dir, ec)) throw InputError(place, std::string(kSymbolicLinkRefusal));
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir))
-    throw InputError({dir.string(), 0, 0, "-o"}, "cannot create the folder: " + ec.message());
+    throw InputError(place, "cannot create the folder: " + ec.message());
+  for (const char* name : {"fit.png", "fit.csv", "curves.csv", "material.yaml", "fit.json"})
+    if (fs::is_symlink(dir / name, ec))
+      throw InputError({(dir / name).string(), 0, 0, "-o"}, std::string(kSymbolicLinkRefusal));
   const AnyMaterial m = make_material_unchecked(fit.model, fit.values);
   std::ostringstream points, curves;
   points.precision(10);
@@ -144,6 +152,7 @@ void write_files(const FitCommandOptions& o, const std::vector<TestPoint>& data,
   write_json_file(dir / "fit.json", j);
   const std::string title = fit.model + " fit to " + fs::path(o.data).filename().string();
   const int status = run_python_script("plisse fit", "plot_fit.py", {dir.string(), title});
+  if (status == 2) throw InputError(place, "plot_fit.py refused to write fit.png (see above)");
   if (status != 0) throw Error("plisse fit: drawing fit.png failed (see the messages above)");
 }
 

@@ -30,7 +30,8 @@ void plot(const PlotOptions& o) {
   const std::string out = o.output.empty() ? (dir / "plots").string() : o.output;
   const int status =
       run_python_script("plisse plot", "plot.py", {dir.string(), out, own_executable()});
-  if (status == 2) throw InputError(place, "is not a run directory plot.py can read (see above)");
+  if (status == 2)
+    throw InputError(place, "plot.py refused the run directory or the figures' folder (see above)");
   if (status != 0) throw Error("plisse plot: drawing the figures failed (see the messages above)");
 }
 

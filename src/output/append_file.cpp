@@ -21,8 +21,12 @@ namespace {
 }  // namespace
 
 AppendFile::AppendFile(std::filesystem::path path, bool replace) : path_(std::move(path)) {
-  const int flags = O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC | (replace ? O_TRUNC : 0);
+  // O_NOFOLLOW: a symbolic link planted at the name is refused, never written through.
+  const int flags =
+      O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC | O_NOFOLLOW | (replace ? O_TRUNC : 0);
   fd_ = ::open(path_.c_str(), flags, 0666);
+  if (fd_ < 0 && errno == ELOOP)
+    throw InputError({path_.string(), 0, 0, ""}, std::string(kSymbolicLinkRefusal));
   if (fd_ < 0) fail("write", path_, errno);
 }
 

@@ -12,11 +12,18 @@
 
 namespace plisse {
 
+/// Why a symbolic link where plisse writes a file is refused (docs/architecture.md, "Interface
+/// contract"): the message of the InputError that names it.
+inline constexpr std::string_view kSymbolicLinkRefusal =
+    "is a symbolic link; plisse writes no file through a link (its target could be any file the "
+    "user may write): remove the link";
+
 class AppendFile {
  public:
   /// Opens `path` for appending. `replace`: creates it empty, discarding any earlier content;
-  /// otherwise creates it if missing and keeps what it holds. Throws plisse::Error (path,
-  /// strerror) if it cannot be opened.
+  /// otherwise creates it if missing and keeps what it holds. A symbolic link at `path` is not
+  /// followed: InputError (file = path, kSymbolicLinkRefusal). Throws plisse::Error (path,
+  /// strerror) if it cannot be opened otherwise.
   AppendFile(std::filesystem::path path, bool replace);
   ~AppendFile();
   AppendFile(AppendFile&& other) noexcept;

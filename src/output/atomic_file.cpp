@@ -61,7 +61,7 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
   PLISSE_CHECK(!target_.empty() && target_.has_filename(),
                "cannot write '" << target_.string() << "': not a file name");
   temporary_ = temporary_name(target_);
-  fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
   if (fd_ < 0) {
     const int error_number = errno;
     temporary_.clear();

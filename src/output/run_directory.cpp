@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "output/append_file.hpp"
 #include "output/atomic_file.hpp"
 
 namespace plisse {
@@ -82,19 +83,33 @@ std::string system_reason(int error_number) {
   return std::generic_category().message(error_number);
 }
 
-}  // namespace
-
-std::vector<std::filesystem::path> run_files(const std::filesystem::path& directory) {
+bool is_run_file_name(std::string_view name) {
   static const std::set<std::string, std::less<>> kNames = {
       "history.csv",    "summary.json",         "solution.pvd", "log.txt",
       "checkpoint.bin", "wrinkle_spectrum.csv", "wrinkles.json"};
+  return kNames.count(name) > 0 || is_step_file(name);
+}
+
+/// The name of the first symbolic link in `directory` at a name a run or `plisse wrinkles`
+/// writes, or empty.
+std::string linked_run_file(const std::filesystem::path& directory) {
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_symlink(error) && is_run_file_name(name)) return name;
+  }
+  return {};
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> run_files(const std::filesystem::path& directory) {
   std::vector<std::filesystem::path> files;
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
     // A directory is the user's, whatever its name: never reported, never removed.
     if (entry.is_directory(error)) continue;
-    const std::string name = entry.path().filename().string();
-    if (kNames.count(name) > 0 || is_step_file(name)) files.push_back(entry.path());
+    if (is_run_file_name(entry.path().filename().string())) files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
   return files;
@@ -117,7 +132,10 @@ DirectoryLock::DirectoryLock(const std::filesystem::path& directory, const Input
   // would lock a file no longer in the directory. Such a lock is dropped and taken again on the
   // file the path names now.
   for (int attempt = 0; attempt < 100; ++attempt) {
-    fd_ = ::open(file_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    fd_ = ::open(file_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (fd_ < 0 && errno == ELOOP)
+      throw InputError(place, "holds " + std::string(kFileName) + ", which " +
+                                  std::string(kSymbolicLinkRefusal));
     if (fd_ < 0)
       throw InputError(
           place, "cannot create the lock file " + file_.string() + ": " + system_reason(errno));
@@ -149,6 +167,11 @@ DirectoryLock::DirectoryLock(const std::filesystem::path& directory, const Input
           ::ftruncate(fd_, 0) == 0 &&
           ::pwrite(fd_, holder.data(), holder.size(), 0) == static_cast<ssize_t>(holder.size());
       (void)named_holder;
+      if (const std::string link = linked_run_file(directory); !link.empty()) {
+        ::unlink(file_.c_str());
+        ::close(std::exchange(fd_, -1));
+        throw InputError(place, "holds " + link + ", which " + std::string(kSymbolicLinkRefusal));
+      }
       return;
     }
     ::close(std::exchange(fd_, -1));

@@ -60,7 +60,9 @@ class DirectoryLock {
 
   /// Takes the lock of `directory` (which must exist) without waiting. Throws InputError at
   /// `place` when another process holds it ("is in use by another plisse process (pid N on
-  /// host H) ...") or when the lock file cannot be created or locked (the system's reason).
+  /// host H) ..."), when the lock file cannot be created or locked (the system's reason), and
+  /// when the lock file or a name of run_files is a symbolic link (kSymbolicLinkRefusal): the
+  /// holder writes no file through a link.
   DirectoryLock(const std::filesystem::path& directory, const InputPlace& place);
   /// Removes the lock file, then releases the lock.
   ~DirectoryLock();
