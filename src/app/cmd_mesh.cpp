@@ -150,7 +150,11 @@ void run(const MeshKind& kind, MeshCommand& cmd) {
   try {
     write_gmsh(mesh, file.temporary().string(), version, cmd.binary);
   } catch (const InputError& e) {
-    throw InputError({cmd.output, 0, 0, "-o"}, e.rule());
+    std::error_code ec;
+    throw InputError({cmd.output, 0, 0, "-o"},
+                     e.rule() + (std::filesystem::exists(target, ec)
+                                     ? "; the earlier " + target.filename().string() + " is kept"
+                                     : std::string()));
   }
   file.commit();
 

@@ -5,6 +5,7 @@
 /// converged state written) or an internal error; 2 bad input (message names file, line, column,
 /// key and rule).
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
@@ -35,6 +36,9 @@ std::ostream& error_stream() {
 
 int main(int argc, char** argv) {
   plisse::app::command_line() = {argc, argv};
+  // Past a file size limit (ulimit -f) a write fails with EFBIG, which the writers report naming
+  // the file, instead of the signal SIGXFSZ ending the process with the file half written.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{
       "plisse: wrinkling and buckling of thin incompressible hyperelastic membranes\n"
       "(3-D mixed P1+/P1 tetrahedra; units mm, MPa, s, tonne/mm^3)"};

@@ -86,7 +86,9 @@ Mesh read_gmsh_surface(const std::string& path, GmshReadInfo& info, const ChildL
 ChildLimits gmsh_reader_limits(std::uintmax_t file_bytes);
 
 /// Writes `mesh` with its tags as physical groups. `version` is 2.2 or 4.1. The file name must end
-/// in ".msh" (InputError otherwise; also when the file cannot be written).
+/// in ".msh" (InputError otherwise; also when the file cannot be written, or was not written
+/// whole: a full disk or a file size limit, which Gmsh does not report, shows as a file that ends
+/// before its last section's end line).
 /// Round trip through `read_gmsh`: nodes, tetrahedra, triangles and non-empty tags come back
 /// identical, coordinates bit for bit in binary files and to Gmsh's 16 significant digits in
 /// ASCII files. Empty tags are not written (Gmsh stores no empty physical group).

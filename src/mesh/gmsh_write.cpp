@@ -1,11 +1,17 @@
 // Writing a Mesh as a Gmsh MSH file (v2.2 or v4.1, ASCII or binary) through the Gmsh API: the
 // tags become physical groups of discrete entities (gmsh_io.hpp); a shell's edges become line
 // elements.
+#include <fcntl.h>
 #include <gmsh.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <map>
 #include <numeric>
+#include <string_view>
 #include <vector>
 
 #include "core/error.hpp"
@@ -100,6 +106,34 @@ void add_groups(int dim, const Signatures& s, const std::vector<Run>& runs, bool
   if (untagged.empty()) return;
   const int group = gmsh::model::addPhysicalGroup(dim, untagged);
   gmsh::model::setPhysicalName(dim, group, kUntaggedGroupName);
+}
+
+/// Gmsh does not report a failed write (a full disk, a file size limit): its file then ends early.
+/// Every MSH file it writes ends with its elements' section, so a file that does not end in
+/// "$EndElements\n", or whose data the system cannot put on the disk (fsync, close), was not
+/// written whole. Throws InputError naming `path`.
+void check_written_whole(const std::string& path) {
+  static constexpr std::string_view kEnd = "$EndElements\n";
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+  if (fd < 0)
+    throw file_error(path, std::string("cannot write the mesh file: ") + std::strerror(errno));
+  struct stat info {};
+  char tail[kEnd.size()] = {};
+  const bool ended =
+      ::fstat(fd, &info) == 0 && info.st_size >= static_cast<off_t>(kEnd.size()) &&
+      ::pread(fd, tail, kEnd.size(), info.st_size - static_cast<off_t>(kEnd.size())) ==
+          static_cast<ssize_t>(kEnd.size()) &&
+      std::string_view(tail, kEnd.size()) == kEnd;
+  const int synced = ::fsync(fd) == 0 ? 0 : errno;
+  const int closed = ::close(fd) == 0 ? 0 : errno;
+  if (const int error_number = synced ? synced : closed; error_number != 0)
+    throw file_error(path,
+                     std::string("cannot write the mesh file: ") + std::strerror(error_number));
+  if (!ended)
+    throw file_error(path, "cannot write the mesh file: it ends after " +
+                               std::to_string(static_cast<long long>(info.st_size)) +
+                               " bytes, before its $EndElements line (the disk is full, or a "
+                               "file size limit was reached)");
 }
 
 }  // namespace
@@ -221,6 +255,7 @@ void write_gmsh(const Mesh& mesh, const std::string& path, double version, bool 
     gmsh::option::setNumber("Mesh.SaveParametric", 0);
     gmsh::write(path);
     session.check_input(path, "cannot write the mesh file");
+    check_written_whole(path);
   } catch (const Error&) {
     throw;
   } catch (const std::string& message) {
