@@ -117,6 +117,7 @@ class RunOutput {
       try {
         lock_.emplace(directory_.directory(), place);
         if (plan.refuse_earlier_run) refusal = earlier_run_refusal(directory_.directory());
+        if (refusal.empty()) refusal = resumed_checkpoint_refusal(plan);
       } catch (const InputError& e) {
         refusal = e.rule();
       }

@@ -1,5 +1,7 @@
 #include "app/run_plan.hpp"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 
 #include "case/petsc_option_text.hpp"
@@ -78,6 +80,16 @@ Checkpoint read_resume_checkpoint(const fs::path& directory, const Case& c) {
   return checkpoint;
 }
 
+/// "device:inode:size:mtime" of `file`, or empty when it cannot be read. A checkpoint is replaced
+/// by rename, so a new one has a new inode.
+std::string file_identity(const fs::path& file) {
+  struct stat s {};
+  if (::stat(file.c_str(), &s) != 0) return {};
+  return std::to_string(s.st_dev) + ':' + std::to_string(s.st_ino) + ':' +
+         std::to_string(s.st_size) + ':' + std::to_string(s.st_mtim.tv_sec) + '.' +
+         std::to_string(s.st_mtim.tv_nsec);
+}
+
 InputPlace resume_place(const RunPlan& plan) {
   return {(plan.directory / "checkpoint.bin").string(), 0, 0, "--resume"};
 }
@@ -100,7 +112,11 @@ RunPlan plan_run(const RunOptions& options, const Case& c) {
     plan.from = read_from_state(options, c);
     plan.from_directory = options.from_directory;
   }
-  if (resume) plan.resume = read_resume_checkpoint(plan.directory, c);
+  if (resume) {
+    // Taken before the read: a file replaced in between then differs when the lock is held.
+    plan.resume_identity = file_identity(plan.directory / "checkpoint.bin");
+    plan.resume = read_resume_checkpoint(plan.directory, c);
+  }
   return plan;
 }
 
@@ -129,6 +145,14 @@ void check_from_internal_values(const RunPlan& plan, std::size_t n_internal_valu
                        std::to_string(n_internal_values) +
                        ": a second step keeps the materials' viscoelasticity and Mullins "
                        "softening, or their absence");
+}
+
+std::string resumed_checkpoint_refusal(const RunPlan& plan) {
+  if (!plan.resume || file_identity(plan.directory / "checkpoint.bin") == plan.resume_identity)
+    return {};
+  return "its checkpoint.bin was replaced after this run read it, by a plisse process that held "
+         "the directory then and has ended; resuming the older state would undo that run's "
+         "steps: resume again to continue from the checkpoint it wrote";
 }
 
 std::string earlier_run_refusal(const fs::path& directory) {

@@ -43,6 +43,9 @@ struct RunPlan {
   bool refuse_earlier_run = true;
   /// --resume: the checkpoint read from `directory`/checkpoint.bin; its element is the case's.
   std::optional<Checkpoint> resume;
+  /// --resume: the identity of that checkpoint.bin (device, inode, size, modification time) as it
+  /// was before it was read, for resumed_checkpoint_refusal.
+  std::string resume_identity;
   /// --from: the last state of the run in from_directory, read from its checkpoint.bin; its
   /// element is the case's.
   std::optional<Checkpoint> from;
@@ -64,6 +67,12 @@ void check_plan_against_mesh(const RunPlan& plan, const RunFingerprint& fingerpr
 /// InputError (key --from) when the --from run holds another number of them than the model
 /// (`n_internal_values`). No-op without --from.
 void check_from_internal_values(const RunPlan& plan, std::size_t n_internal_values);
+
+/// Why a resumed run may not go on once it holds the directory's lock (empty: it may): the
+/// checkpoint.bin it read was replaced meanwhile, by a run that held the lock then and has ended
+/// (a second --resume started while the first was ending would otherwise restore the older
+/// state and undo the finished run). No-op without --resume. Call with the lock held.
+std::string resumed_checkpoint_refusal(const RunPlan& plan);
 
 /// Why a new run may not write into `directory` (empty: it may): the files of an earlier run,
 /// the first three named.

@@ -7,7 +7,9 @@
 #include "output/run_directory.hpp"
 
 #include <gtest/gtest.h>
+#include <poll.h>
 #include <signal.h>
+#include <sys/inotify.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -216,6 +218,78 @@ TEST(RunDirectory, AKilledRunLeavesWholeLinesAndItsResumeTakesTheDirectoryBack) 
     EXPECT_EQ(name.find(".tmp"), std::string::npos) << name;
     EXPECT_NE(name, DirectoryLock::kFileName);
   }
+}
+
+/// Waits (at most a minute) until a process closes dir/checkpoint.bin after reading it; false if
+/// none does. `watch` is an inotify descriptor watching `dir` for IN_CLOSE_NOWRITE.
+bool wait_for_checkpoint_read(int watch) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+  alignas(inotify_event) char buffer[4096];
+  while (std::chrono::steady_clock::now() < deadline) {
+    pollfd p{watch, POLLIN, 0};
+    if (poll(&p, 1, 1000) <= 0) continue;
+    const ssize_t n = read(watch, buffer, sizeof buffer);
+    for (ssize_t at = 0; at < n;) {
+      const auto* event = reinterpret_cast<const inotify_event*>(buffer + at);
+      if (event->len > 0 && std::string(event->name) == "checkpoint.bin") return true;
+      at += static_cast<ssize_t>(sizeof(inotify_event) + event->len);
+    }
+  }
+  return false;
+}
+
+TEST(RunDirectory, ASecondResumeThatReadTheCheckpointBeforeTheFirstEndedUndoesNothing) {
+  const fs::path dir = test::scratch_directory("rundir-two-resumes");
+  const std::vector<std::string> sets = {"--set", "solver.steps=120", "--set", "output.every=1000"};
+  std::vector<std::string> args = {"run", kCase, "-o", dir.string()};
+  args.insert(args.end(), sets.begin(), sets.end());
+  // An interrupted run: SIGTERM stops it at a converged step with its checkpoint.
+  const pid_t interrupted = start(args, dir.string() + ".log");
+  ASSERT_TRUE(wait_for_rows(dir, 10)) << contents(dir.string() + ".log");
+  kill(interrupted, SIGTERM);
+  int status = 0;
+  waitpid(interrupted, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << contents(dir.string() + ".log");
+  const std::size_t stopped_at = test::history_rows(dir);
+
+  std::vector<std::string> resume = {"run", kCase, "--resume", dir.string()};
+  resume.insert(resume.end(), sets.begin(), sets.end());
+  // The first resume runs, holding the directory, and is held still (SIGSTOP) meanwhile.
+  const pid_t first = start(resume, dir.string() + ".first.log");
+  ASSERT_TRUE(wait_for_rows(dir, stopped_at + 3)) << contents(dir.string() + ".first.log");
+  kill(first, SIGSTOP);
+  // The second reads the same checkpoint, and is held still before it gets to the lock.
+  const int watch = inotify_init1(IN_CLOEXEC);
+  ASSERT_GE(watch, 0);
+  ASSERT_GE(inotify_add_watch(watch, dir.c_str(), IN_CLOSE_NOWRITE), 0);
+  const pid_t second = start(resume, dir.string() + ".second.log");
+  const bool read_it = wait_for_checkpoint_read(watch);
+  kill(second, SIGSTOP);
+  close(watch);
+  ASSERT_TRUE(read_it) << contents(dir.string() + ".second.log");
+  // The first ends, with its last checkpoint, and lets the directory go.
+  kill(first, SIGCONT);
+  waitpid(first, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0)
+      << contents(dir.string() + ".first.log");
+  const auto finished = snapshot(dir);
+  // The second then holds the lock, but its checkpoint is no longer the directory's.
+  kill(second, SIGCONT);
+  waitpid(second, &status, 0);
+  const std::string second_log = contents(dir.string() + ".second.log");
+  ASSERT_TRUE(WIFEXITED(status)) << second_log;
+  EXPECT_EQ(WEXITSTATUS(status), 2) << second_log;
+  EXPECT_NE(second_log.find("key '--resume': its checkpoint.bin was replaced after this run read "
+                            "it"),
+            std::string::npos)
+      << second_log;
+  const auto after = snapshot(dir);
+  for (const auto& [name, bytes] : finished) {
+    ASSERT_TRUE(after.count(name)) << name;
+    EXPECT_TRUE(after.at(name) == bytes) << name << " changed";  // not printed: binary files
+  }
+  EXPECT_EQ(after.size(), finished.size());
+  EXPECT_EQ(read_history(dir / "history.csv").rows.size(), 120u);
 }
 
 }  // namespace
