@@ -13,7 +13,10 @@ Reads RUN_DIR/history.csv, summary.json and the step files, and writes PNG files
                        the axisymmetric mean shape, with the rings drawn (runs with rings), and
                        wrinkle_map_step_NNNN.png at every step where stability was lost
 Axis labels take their units from the output reference (`plisse outputs history`).
-Exit status: 0 done, 2 RUN_DIR is not a run directory, 1 a figure could not be drawn.
+Exit status: 0 done; 2 RUN_DIR is not a run directory, its files are malformed or larger than a
+run writes (history.csv at most 256 MiB, summary.json 64 MiB, a step file's arrays no larger than
+its mesh: checked before they are read), or a figure's path is a symbolic link; 1 a figure could
+not be written.
 """
 import os
 import re
@@ -25,6 +28,11 @@ from plisse_study.figures import plt
 from matplotlib.ticker import MaxNLocator
 import numpy as np
 
+
+MAX_HISTORY_BYTES = 256 << 20  # about ten million rows of a few columns
+MAX_SUMMARY_BYTES = 64 << 20
+MALFORMED = (ValueError, KeyError, TypeError, IndexError, AttributeError, UnicodeDecodeError,
+             MemoryError, OverflowError)
 
 FIGURES = ("forces.png", "pressure_volume.png", "newton.png", "wrinkles.png", "wrinkle_map.png")
 
@@ -194,8 +202,30 @@ def wrinkle_maps(run, summary, out):
             files.append((vtu, os.path.join(out, f"wrinkle_map_step_{event['step']:04d}.png"),
                           f"step {event['step']} (stability lost): normal deviation, rings"))
     for vtu, path, title in files:
+        check_step_header(vtu, summary)
         if figures.surface_figure(vtu, settings, path, title):
             print(path)
+
+
+def check_size(path, limit):
+    if os.path.isfile(path) and os.path.getsize(path) > limit:
+        fail(f"{path}: {os.path.getsize(path)} bytes, more than the {limit} a run writes; "
+             "not read")
+
+
+def check_step_header(vtu, summary):
+    """Refuses a step file whose header declares more than the run's mesh: a compressed array
+    that would inflate to gigabytes is not read. plisse writes at most 9 components per array."""
+    with open(vtu, "rb") as f:
+        head = f.read(1 << 20).split(b"<AppendedData")[0].decode("utf-8", "replace")
+    points = re.search(r'NumberOfPoints="(\d+)"', head)
+    cells = re.search(r'NumberOfCells="(\d+)"', head)
+    components = [int(n) for n in re.findall(r'NumberOfComponents="(\d+)"', head)]
+    nodes = summary.get("nodes")
+    if (not points or not cells or (isinstance(nodes, int) and int(points.group(1)) != nodes)
+            or any(n > 9 for n in components)):
+        raise ValueError(f"{vtu}: its header does not fit the run's mesh ({nodes} nodes); "
+                         "not read")
 
 
 def main():
@@ -204,10 +234,20 @@ def main():
     run, out, plisse = sys.argv[1:]
     if not os.path.isfile(os.path.join(run, "history.csv")):
         fail(f"{run}: not a run directory (no history.csv)")
-    h = runs.read_history(run)
+    check_size(os.path.join(run, "history.csv"), MAX_HISTORY_BYTES)
+    check_size(os.path.join(run, "summary.json"), MAX_SUMMARY_BYTES)
+    try:
+        h = runs.read_history(run)
+    except MALFORMED as e:
+        fail(f"{os.path.join(run, 'history.csv')}: not a history plisse writes: {e}")
     if not h:
         fail(f"{os.path.join(run, 'history.csv')}: no converged step to plot")
-    summary = runs.read_summary(run)
+    try:
+        summary = runs.read_summary(run)
+        if not isinstance(summary, dict):
+            raise ValueError("not a JSON object")
+    except MALFORMED as e:
+        fail(f"{os.path.join(run, 'summary.json')}: not a summary plisse writes: {e}")
     try:
         figures.refuse_link(out)
         os.makedirs(out, exist_ok=True)
@@ -225,6 +265,8 @@ def main():
         wrinkle_maps(run, summary, out)
     except figures.LinkRefused as e:
         fail(str(e))
+    except MALFORMED as e:
+        fail(f"{run}: its files are malformed: {type(e).__name__}: {e}")
 
 
 if __name__ == "__main__":

@@ -61,17 +61,40 @@ MeasuredState measure_step_file(const fs::path& dir, int step, const Mesh& mesh,
       if (written.size() < 200) written += (written.empty() ? "" : ", ") + e.file;
       continue;
     }
+    const auto n_nodes = static_cast<std::size_t>(mesh.n_nodes());
+    const auto n_cells = static_cast<std::size_t>(n_mesh_cells(mesh));
+    const auto misfit = [&] {
+      return InputError({(dir / e.file).string(), 0, 0, "--step"},
+                        "the step file does not fit the case's mesh (" + std::to_string(n_nodes) +
+                            " nodes, " + std::to_string(n_cells) +
+                            (mesh.is_shell() ? " triangles)" : " tetrahedra)"));
+    };
+    // The sizes its header declares first: a step file of this run holds the case's mesh, and
+    // anything larger (a compressed array that would inflate to gigabytes) is refused unread.
+    VtuSummary declared;
+    try {
+      declared = read_vtu_summary(dir / e.file);
+    } catch (const InputError&) {
+      throw;
+    } catch (const Error& error) {  // a file no run of plisse writes: bad input
+      throw InputError({(dir / e.file).string(), 0, 0, "--step"}, error.what());
+    }
+    const auto components = [](const auto& fields, const std::string& name) {
+      for (const auto& f : fields)
+        if (f.name == name) return f.n_components;
+      return 0;
+    };
+    if (declared.n_points != n_nodes || declared.n_cells != n_cells ||
+        components(declared.point_fields, "displacement") != 3 ||
+        components(declared.cell_fields, "cauchy_stress") != 6 ||
+        components(declared.cell_fields, "J") != 1)
+      throw misfit();
     const VtuField u = read_vtu_point_field(dir / e.file, "displacement");
     const VtuField cauchy = read_vtu_cell_field(dir / e.file, "cauchy_stress");
     const VtuField J = read_vtu_cell_field(dir / e.file, "J");
-    const auto n_nodes = static_cast<std::size_t>(mesh.n_nodes());
-    const auto n_cells = static_cast<std::size_t>(n_mesh_cells(mesh));
     if (u.values.size() != 3 * n_nodes || cauchy.values.size() != 6 * n_cells ||
         J.values.size() != n_cells)
-      throw InputError({(dir / e.file).string(), 0, 0, "--step"},
-                       "the step file does not fit the case's mesh (" + std::to_string(n_nodes) +
-                           " nodes, " + std::to_string(n_cells) +
-                           (mesh.is_shell() ? " triangles)" : " tetrahedra)"));
+      throw misfit();
     std::vector<Vec3d> displacement(n_nodes);
     for (std::size_t v = 0; v < n_nodes; ++v)
       displacement[v] = Vec3d(u.values[3 * v], u.values[3 * v + 1], u.values[3 * v + 2]);
@@ -103,6 +126,8 @@ RunRecord read_run_record(const fs::path& summary_path, const WrinklesOptions& o
   RunRecord run;
   try {
     run.summary = read_json_file(summary_path);
+  } catch (const InputError& e) {
+    throw InputError({summary_path.string(), e.place().line, e.place().column, ""}, e.rule());
   } catch (const Error& e) {
     throw InputError({summary_path.string(), 0, 0, ""}, e.what());
   }

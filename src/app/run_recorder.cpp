@@ -168,7 +168,9 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
   on_every_rank_alike([&] {
     std::vector<PvdEntry> pvd_entries;
     if (resume) {
-      history_.emplace(HistoryWriter::reopen(directory.history_csv()));
+      // A row per converged step: more than the case's max_steps cannot be this run's.
+      history_.emplace(HistoryWriter::reopen(directory.history_csv(),
+                                             static_cast<std::size_t>(c.solver.max_steps)));
       if (history_->columns() != columns_.names() ||
           history_->rows().size() < std::size_t(resume->steps))
         throw InputError({directory.history_csv().string(), 0, 0, "--resume"},

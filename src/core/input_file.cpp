@@ -1,9 +1,11 @@
 #include "core/input_file.hpp"
 
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <system_error>
 
@@ -57,8 +59,14 @@ void check_input_file(const std::filesystem::path& path, std::uintmax_t max_byte
 
 std::uint64_t physical_memory_bytes() {
   const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
-  if (pages <= 0 || page <= 0) return std::uint64_t{1} << 40;
-  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page);
+  std::uint64_t bytes = pages <= 0 || page <= 0
+                            ? std::uint64_t{1} << 40
+                            : static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page);
+  // A process under an address-space limit (ulimit -v) can use no more than that.
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+    bytes = std::min<std::uint64_t>(bytes, limit.rlim_cur);
+  return bytes;
 }
 
 }  // namespace plisse

@@ -15,7 +15,8 @@ namespace plisse {
 void check_input_file(const std::filesystem::path& path, std::uintmax_t max_bytes,
                       const std::string& what);
 
-/// The machine's physical memory [bytes] (sysconf), or 2^40 when it cannot be told.
+/// The memory this process may use [bytes]: the machine's physical memory (sysconf), or 2^40 when
+/// it cannot be told, and at most the address-space limit (RLIMIT_AS, ulimit -v).
 std::uint64_t physical_memory_bytes();
 
 }  // namespace plisse

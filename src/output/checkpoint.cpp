@@ -219,8 +219,25 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
     throw InputError({path.string(), 0, 0, "--resume"}, "no checkpoint.bin in the run directory");
   std::string bytes;
   try {
-    // A checkpoint larger than the machine's memory cannot be a state this machine wrote.
-    bytes = read_file(path, physical_memory_bytes());
+    // The file type and version first, from the first bytes: a large file of another kind is
+    // refused unread.
+    // (A file that is not regular, or too short, is left to read_file's and the reader's checks.)
+    std::array<char, sizeof kMagic + sizeof kVersion> first{};
+    std::ifstream head;
+    if (std::filesystem::is_regular_file(path, error)) head.open(path, std::ios::binary);
+    if (head.is_open() && head.read(first.data(), first.size())) {
+      std::uint32_t version = 0;
+      std::memcpy(&version, first.data() + sizeof kMagic, sizeof version);
+      if (std::memcmp(first.data(), kMagic, sizeof kMagic) != 0)
+        throw InputError({path.string(), 0, 0, ""},
+                         "not a usable plisse checkpoint: wrong file type");
+      if (version != kVersion)
+        throw InputError({path.string(), 0, 0, ""},
+                         "not a usable plisse checkpoint: written by another version of plisse");
+    }
+    // Reading holds the file and then its arrays: a checkpoint larger than a third of the memory
+    // this process may use cannot be a state it could have written and continue.
+    bytes = read_file(path, physical_memory_bytes() / 3);
   } catch (const InputError& e) {
     throw InputError({path.string(), 0, 0, "--resume"}, e.rule());
   }

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "output/atomic_file.hpp"
 
 namespace plisse {
@@ -70,10 +71,10 @@ HistoryWriter::HistoryWriter(std::filesystem::path path,
   rewrite();
 }
 
-HistoryWriter HistoryWriter::reopen(std::filesystem::path path) {
+HistoryWriter HistoryWriter::reopen(std::filesystem::path path, std::size_t max_rows) {
   // A run killed inside a row's write leaves that row unterminated: it is dropped.
   const std::string text = read_file(path);
-  HistoryTable table = parse_history(complete_lines(text), path);
+  HistoryTable table = parse_history(complete_lines(text), path, max_rows);
   const std::vector<std::string>& standard = standard_columns();
   const bool starts_with_standard =
       table.columns.size() >= standard.size() &&
@@ -127,7 +128,27 @@ HistoryTable read_history(const std::filesystem::path& path) {
   return parse_history(read_file(path), path);
 }
 
-HistoryTable parse_history(std::string_view text, const std::filesystem::path& path) {
+HistoryTable parse_history(std::string_view text, const std::filesystem::path& path,
+                           std::size_t max_rows) {
+  // The size of the table, from the text alone, before anything is allocated for it: a row per
+  // line, the header's columns in each.
+  const auto n_lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+  const std::string_view header = text.substr(0, text.find('\n'));
+  const auto n_columns =
+      static_cast<std::size_t>(std::count(header.begin(), header.end(), ',')) + 1;
+  if (n_lines > max_rows + 1)
+    throw InputError({path.string(), 0, 0, ""}, "holds " + std::to_string(n_lines - 1) +
+                                                    " rows; a run of this case writes at "
+                                                    "most " +
+                                                    std::to_string(max_rows) +
+                                                    " (one per converged step, solver.max_steps)");
+  // Each row is a vector: its values and about 48 bytes of bookkeeping.
+  const std::uint64_t table_bytes = std::uint64_t{n_lines} * (8 * n_columns + 48);
+  if (table_bytes > physical_memory_bytes() / 4)
+    throw InputError({path.string(), 0, 0, ""},
+                     "its " + std::to_string(n_lines) + " lines of " + std::to_string(n_columns) +
+                         " columns need about " + std::to_string(table_bytes >> 20) +
+                         " MiB to read, more than a quarter of the memory this process may use");
   HistoryTable table;
   int line_number = 0;
   for (std::size_t begin = 0; begin < text.size();) {

@@ -39,8 +39,16 @@ struct HistoryTable {
 /// allowed). Throws plisse::InputError with the file, line, column number and column name of the
 /// first malformed entry.
 HistoryTable read_history(const std::filesystem::path& path);
+
+/// Most rows a history is read with unless told otherwise: the steps of the longest run.
+inline constexpr std::size_t kMaxHistoryRows = 100000000;
+
 /// The same, from the file's text; `path` names it in errors.
-HistoryTable parse_history(std::string_view text, const std::filesystem::path& path);
+/// A text of more than `max_rows` rows, or whose table would need more than a quarter of the
+/// memory this process may use (physical_memory_bytes), is refused before it is parsed
+/// (InputError naming `path`).
+HistoryTable parse_history(std::string_view text, const std::filesystem::path& path,
+                           std::size_t max_rows = kMaxHistoryRows);
 
 class HistoryWriter {
  public:
@@ -55,8 +63,9 @@ class HistoryWriter {
 
   /// Continues an existing history (restart): reads its columns and rows as read_history() does,
   /// without an unterminated last line (a row the interrupted run was killed writing). Throws
-  /// plisse::InputError if it is malformed or does not start with standard_columns().
-  static HistoryWriter reopen(std::filesystem::path path);
+  /// plisse::InputError if it is malformed, does not start with standard_columns() or holds more
+  /// than `max_rows` rows (parse_history: what a run of the case can have written).
+  static HistoryWriter reopen(std::filesystem::path path, std::size_t max_rows = kMaxHistoryRows);
 
   /// Appends one row to the file. values.size() must equal n_columns(), in the order
   /// of columns() (plisse::Error otherwise, and nothing is written).

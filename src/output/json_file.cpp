@@ -19,7 +19,9 @@ void write_json_file(const std::filesystem::path& path, const nlohmann::json& va
 }
 
 nlohmann::json read_json_file(const std::filesystem::path& path) {
-  const std::string text = read_file(path);
+  // Parsed, JSON takes ten to twenty times its text: plisse's own files (a summary, wrinkles.json)
+  // are kilobytes to a few megabytes, and a larger one is refused unread.
+  const std::string text = read_file(path, kMaxJsonBytes);
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {

@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -166,6 +167,89 @@ TEST(UntrustedFiles, PetscViewsInBinaryWriteNoFileUnderCheckOrRun) {
   std::getline(in, kept);
   EXPECT_EQ(kept, "kept");
   EXPECT_FALSE(fs::exists(dir / "victim.txt.info"));
+}
+
+/// A small shell with a wrinkle ring: its runs write every file plisse wrinkles and plot read.
+const std::string kShell =
+    "mesh: {generate: spherical-shell, inner_radius: 10.0, thickness: 1.0, layers: 1,\n"
+    "       element_size: 4.0, symmetry: octant}\n"
+    "element: mini\n"
+    "material: {model: neo-hookean, c1: 0.5}\n"
+    "boundary:\n"
+    "  - {type: symmetry, surface: sym_x}\n"
+    "  - {type: symmetry, surface: sym_y}\n"
+    "  - {type: symmetry, surface: sym_z}\n"
+    "loads:\n"
+    "  - {type: pressure, name: p, surface: inner, value: 0.02}\n"
+    "solver: {steps: 2, max_steps: 4}\n"
+    "output: {wrinkles: {axis: y, rings_deg: [45]}}\n";
+
+std::string bytes_of(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
+TEST(UntrustedFiles, FilesLargerThanARunOfTheCaseWritesAreRefusedBeforeTheyAreRead) {
+  const fs::path dir = test::scratch_directory("untrusted-bounds");
+  fs::create_directories(dir);
+  const fs::path case_file = dir / "shell.yaml", run = dir / "run";
+  std::ofstream(case_file) << kShell;
+  ASSERT_EQ(plisse("run " + case_file.string() + " -o " + run.string()).status, 0);
+  const std::string resume = "run " + case_file.string() + " --resume " + run.string();
+  const auto keep = [&](const std::string& name) { return bytes_of(run / name); };
+  const auto put = [&](const std::string& name, const std::string& bytes) {
+    fs::remove(run / name);
+    std::ofstream(run / name, std::ios::binary) << bytes;
+  };
+  const auto sparse = [&](const std::string& name, const std::string& head) {
+    put(name, head);
+    ASSERT_EQ(truncate((run / name).c_str(), std::int64_t{2} << 30), 0);  // 2 GiB, no blocks
+  };
+
+  // A 2 GiB checkpoint: its type is read first; a right one is larger than the memory allows.
+  const std::string checkpoint = keep("checkpoint.bin");
+  sparse("checkpoint.bin", "NOTPLISSE");
+  expect_refused(plisse(resume),
+                 "checkpoint.bin: key '--resume': not a usable plisse checkpoint: "
+                 "wrong file type");
+  sparse("checkpoint.bin", checkpoint.substr(0, 12));
+  expect_refused(plisse(resume),
+                 "checkpoint.bin: key '--resume': cannot read: the file is "
+                 "2147483648 bytes, more than the");
+  put("checkpoint.bin", checkpoint);
+
+  // A 200 MiB summary.json, parsed, would take gigabytes.
+  const std::string summary = keep("summary.json");
+  put("summary.json", "{\"a\": \"");
+  ASSERT_EQ(truncate((run / "summary.json").c_str(), std::int64_t{200} << 20), 0);
+  expect_refused(plisse("wrinkles " + run.string()),
+                 "summary.json: cannot read: the file is 209715200 bytes, more than the "
+                 "67108864 its reader accepts");
+  expect_refused(plisse("plot " + run.string()), "summary.json: 209715200 bytes, more than the");
+  put("summary.json", summary);
+
+  // More history rows than the case's max_steps (4) lets a run write.
+  const std::string history = keep("history.csv");
+  const std::string rows = history.substr(history.find('\n') + 1);
+  put("history.csv", history + rows + rows + rows);
+  expect_refused(plisse(resume), "history.csv: holds 8 rows; a run of this case writes at most 4");
+  put("history.csv", "step,time,load_factor,newton_iterations,residual_norm\n1,0.5,x,1,1\n");
+  expect_refused(plisse("plot " + run.string()), "history.csv: not a history plisse writes");
+  put("history.csv", history);
+
+  // A step file of 2^28 points whose zlib blocks would inflate to 12 GiB (23 MB on disk).
+  const std::string step = keep("step_0002.vtu");
+  const std::string bomb = (run / "step_0002.vtu").string();
+  fs::remove(bomb);
+  ASSERT_EQ(std::system(("/usr/bin/python3 " + std::string(PLISSE_SOURCE_DIR) +
+                         "/tests/data/bombs/vtu_zlib_bomb.py " + bomb)
+                            .c_str()),
+            0);
+  expect_refused(plisse("wrinkles " + run.string() + " --step 2"), "step_0002.vtu: key '--step': ");
+  expect_refused(plisse("plot " + run.string()),
+                 "step_0002.vtu: its header does not fit the run's mesh");
+  put("step_0002.vtu", step);
+  EXPECT_EQ(plisse("wrinkles " + run.string() + " --step 2").status, 0);
 }
 
 TEST(UntrustedFiles, ALongSetKeyPathIsRefusedNotWalked) {
