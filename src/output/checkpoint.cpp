@@ -151,8 +151,10 @@ RunFingerprint run_fingerprint(const std::filesystem::path& case_file,
   RunFingerprint f;
   f.case_text = hash_file(case_file);
   f.overrides = overrides;
-  f.mesh_file = mesh_file;
-  if (!mesh_file.empty()) f.mesh_bytes = hash_file(mesh_file);
+  if (!mesh_file.empty()) {
+    f.mesh_file = std::filesystem::absolute(mesh_file).lexically_normal().string();
+    f.mesh_bytes = hash_file(mesh_file);
+  }
   f.geometry = geometry_hash(mesh);
   return f;
 }
@@ -169,13 +171,18 @@ std::string fingerprint_changes(const RunFingerprint& saved, const RunFingerprin
   if (saved.overrides != now.overrides)
     changes.push_back("the --set values differ (checkpoint: " + list(saved.overrides) +
                       "; now: " + list(now.overrides) + ")");
-  if (saved.mesh_file != now.mesh_file)
+  // The mesh file is judged by its bytes, not by how its path is spelled: the same file named
+  // relative to another working directory, by its absolute path or through `..` is the same mesh.
+  if (saved.mesh_file.empty() != now.mesh_file.empty())
     changes.push_back("the mesh differs (checkpoint: " +
                       (saved.mesh_file.empty() ? "generated" : saved.mesh_file) +
                       "; now: " + (now.mesh_file.empty() ? "generated" : now.mesh_file) + ")");
   else if (saved.mesh_bytes != now.mesh_bytes)
-    changes.push_back("the mesh file " + now.mesh_file +
-                      " changed since the checkpoint was written");
+    changes.push_back(saved.mesh_file == now.mesh_file
+                          ? "the mesh file " + now.mesh_file +
+                                " changed since the checkpoint was written"
+                          : "the mesh file's content differs from the checkpoint's (checkpoint: " +
+                                saved.mesh_file + "; now: " + now.mesh_file + ")");
   else if (saved.geometry != now.geometry)
     changes.push_back(
         "the mesh's nodes or tetrahedra differ from the checkpoint's (a changed imperfection, its "

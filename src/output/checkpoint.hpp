@@ -17,8 +17,10 @@ namespace plisse {
 struct RunFingerprint {
   std::uint64_t case_text = 0;         ///< FNV-1a (64 bit) of the case file's bytes
   std::vector<std::string> overrides;  ///< the --set values, in order
-  std::string mesh_file;               ///< `mesh.file` as resolved; empty for a generated mesh
-  std::uint64_t mesh_bytes = 0;        ///< FNV-1a of the mesh file's bytes (0: generated mesh)
+  /// `mesh.file` as an absolute path, for messages only (the same file may be named otherwise from
+  /// another working directory); empty for a generated mesh
+  std::string mesh_file;
+  std::uint64_t mesh_bytes = 0;  ///< FNV-1a of the mesh file's bytes (0: generated mesh)
   /// geometry_hash of the mesh the run solves on: after an imperfection and the snapping to
   /// symmetry planes, so a changed mode file or generator is seen too.
   std::uint64_t geometry = 0;
@@ -35,7 +37,8 @@ RunFingerprint run_fingerprint(const std::filesystem::path& case_file,
 /// Empty when `now` is the run `saved` belongs to; otherwise what differs, in words: "the case
 /// file changed since the checkpoint was written", "the --set values differ (checkpoint: a, b;
 /// now: a, c)", "the mesh file M changed ...", "the mesh's nodes or tetrahedra differ ...",
-/// joined by "; ".
+/// joined by "; ". A mesh file is compared by its content (mesh_bytes), never by the spelling of
+/// its path.
 std::string fingerprint_changes(const RunFingerprint& saved, const RunFingerprint& now);
 
 struct Checkpoint {

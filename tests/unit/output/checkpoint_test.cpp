@@ -187,6 +187,17 @@ TEST(Checkpoint, FingerprintSaysWhatChanged) {
             "the case file changed since the checkpoint was written; the mesh file " +
                 (dir / "m.msh").string() + " changed since the checkpoint was written");
   EXPECT_THROW(now({}, (dir / "missing.msh").string()), InputError);
+  // The same file named otherwise (relative, through `..`) is the same mesh; another file with
+  // other content is not, whatever its name.
+  const RunFingerprint by_path = now({"a=1"}, (dir / "m.msh").string());
+  EXPECT_EQ(
+      fingerprint_changes(
+          by_path, now({"a=1"}, (dir.path() / ".." / dir.path().filename() / "m.msh").string())),
+      "");
+  write_file_atomically(dir / "n.msh", "mesh three");
+  EXPECT_EQ(fingerprint_changes(by_path, now({"a=1"}, (dir / "n.msh").string())),
+            "the mesh file's content differs from the checkpoint's (checkpoint: " +
+                (dir / "m.msh").string() + "; now: " + (dir / "n.msh").string() + ")");
   // The same files, but a node moved (a changed imperfection or its mode file): seen too.
   const RunFingerprint before = now({"a=1"}, (dir / "m.msh").string());
   tet.nodes[3].z() += 1e-12;
