@@ -236,7 +236,7 @@ void set_start(const RunContext& run, RunSolver& solver, RunRecorder& recorder, 
   if (const std::optional<Checkpoint>& from = run.plan.from) {
     // A second load step: the nodal values and the elements' internal state carry over; the
     // terms (loads, cavities, dies, contacts, caps) and the clock start afresh from this case.
-    check_from_internal_values(run.plan, solver.model->n_internal_values());
+    // (Their number was checked before the run directory was taken.)
     solver.model->continue_from(from->state, from->bubbles);
     log.info("starting from the last state of " + run.plan.from_directory + " (step " +
              std::to_string(from->steps) + " at t = " + std::to_string(from->time) +
@@ -350,6 +350,8 @@ void run_case(const RunOptions& options) {
     const auto t0 = WallClock::now();
     RunSolver solver(c, mesh.mesh, std::move(parts));
     const StartTimes times{start, mesh.seconds, seconds_since(t0)};
+    // A --from state must fit the model before an --overwrite removes the earlier run.
+    check_from_internal_values(plan, solver.model->n_internal_values());
     // 6. Take the run directory (lock, earlier run, temporaries) and open the log.
     RunOutput out(plan);
     log_header(run, out, solver);

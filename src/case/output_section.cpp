@@ -1,4 +1,5 @@
 // The `output:` section and its `wrinkles` table.
+#include "analysis/wrinkle_rings.hpp"
 #include "case/sections.hpp"
 #include "schema/field.hpp"
 #include "schema/table.hpp"
@@ -31,9 +32,11 @@ Schema<WrinkleSettings> wrinkle_schema() {
         [](const Field& f, WrinkleSettings& w, ReadContext&) { w.rings_deg = f.reals(kLatitude); });
   s.real("threshold", &WrinkleSettings::threshold, Range::positive(), "–",
          "a ring is wrinkled when its amplitude exceeds threshold × wall thickness");
-  s.integer("min_count", &WrinkleSettings::min_count, Range::at_least(1),
+  // The rings' spectra reach the full-circle count max_count: a larger min_count leaves nothing
+  // to measure.
+  s.integer("min_count", &WrinkleSettings::min_count, Range::closed(1, RingSettings{}.max_count),
             "smaller full-circle wave counts (a shift, an ovalisation) are global shape changes, "
-            "not wrinkles");
+            "not wrinkles; at most the largest count the rings' spectra reach");
   s.real("peak_ratio", &WrinkleSettings::peak_ratio, Range::at_least(1.0), "–",
          "a harmonic m ≥ min_count is a wrinkle only if its amplitude exceeds peak_ratio × the "
          "envelope of the global shape there (docs/theory/wrinkles.md, W15–W16); larger is "

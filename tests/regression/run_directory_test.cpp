@@ -118,6 +118,44 @@ TEST(RunDirectory, OverwriteRemovesTheEarlierRunsFilesAndKeepsTheUsersOwn) {
   EXPECT_EQ(log.find("plisse run"), log.rfind("plisse run")) << log;
 }
 
+TEST(RunDirectory, AnOverwriteRefusedByALateCheckLeavesTheEarlierRun) {
+  const fs::path dir = test::scratch_directory("rundir-late-refusal");
+  const fs::path earlier = dir / "earlier", first = dir / "first";
+  ASSERT_EQ(run("run " + kCase + " --set solver.steps=2 -o " + earlier.string()).status, 0);
+  ASSERT_EQ(run("run " + kCase + " --set solver.steps=2 -o " + first.string()).status, 0);
+  const auto before = snapshot(earlier);
+  // A second step whose material keeps a history the first run did not have: the --from state
+  // does not fit the model, which is known only once the model is made.
+  auto r = run("run " + kCase + " --set solver.steps=2 --set material.viscoelastic.beta1=0.5" +
+               " --set material.viscoelastic.tau1=1.0 --from " + first.string() +
+               " --overwrite -o " + earlier.string());
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("internal values"), std::string::npos) << r.output;
+  EXPECT_EQ(snapshot(earlier), before);
+  // Wrinkle rings asked to count from beyond the largest count their spectra reach.
+  const fs::path shell = dir / "shell.yaml";
+  std::ofstream(shell)
+      << "mesh: {generate: spherical-shell, inner_radius: 10.0, thickness: 1.0, layers: 1,\n"
+         "       element_size: 4.0, symmetry: octant, order: 1}\n"
+         "element: mini\n"
+         "material: {model: neo-hookean, c1: 0.5}\n"
+         "boundary:\n"
+         "  - {type: symmetry, surface: sym_x}\n"
+         "  - {type: symmetry, surface: sym_y}\n"
+         "  - {type: symmetry, surface: sym_z}\n"
+         "loads: [{type: pressure, name: p, surface: inner, value: 0.02}]\n"
+         "solver: {steps: 1}\n"
+         "output: {wrinkles: {axis: y, rings_deg: [45], min_count: 201}}\n";
+  for (const std::string& args :
+       {"check " + shell.string(),
+        "run " + shell.string() + " --overwrite -o " + earlier.string()}) {
+    r = run(args);
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.output;
+    EXPECT_NE(r.output.find("key 'output.wrinkles.min_count'"), std::string::npos) << r.output;
+  }
+  EXPECT_EQ(snapshot(earlier), before);
+}
+
 TEST(RunDirectory, ADirectoryInUseRefusesRunsResumesAndWrinkleMeasurements) {
   const fs::path dir = test::scratch_directory("rundir-locked");
   ASSERT_EQ(run("run " + kCase + " -o " + dir.string()).status, 0);
