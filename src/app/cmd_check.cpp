@@ -10,11 +10,13 @@
 
 #include "app/commands.hpp"
 #include "app/model_builder.hpp"
+#include "app/pre_step_checks.hpp"
 #include "app/run_session.hpp"
 #include "app/wrinkling.hpp"
 #include "case/case.hpp"
 #include "material/registry.hpp"
 #include "mesh/quality.hpp"
+#include "output/run_directory.hpp"
 #include "solver/petsc_session.hpp"
 
 namespace plisse::app {
@@ -23,6 +25,7 @@ namespace {
 struct CheckOptions {
   std::string case_file;
   std::vector<std::string> overrides;
+  std::string output_directory;  ///< -o DIR; empty: runs/<case file stem>, as `plisse run`
 };
 
 std::string number(double v) {
@@ -70,11 +73,21 @@ std::string material_line(const MaterialSection& m) {
 
 void check_case(const CheckOptions& options) {
   const Case c = parse_case_file(options.case_file, options.overrides);
+  // The run directory `plisse run` would write (nothing is created here).
+  const std::filesystem::path directory =
+      options.output_directory.empty()
+          ? std::filesystem::path("runs") / std::filesystem::path(options.case_file).stem()
+          : std::filesystem::path(options.output_directory);
+  if (const std::string problem = output_path_problem(directory); !problem.empty())
+    throw InputError({directory.string(), 0, 0, "-o"}, problem);
   const Mesh mesh = load_perturbed_mesh(c);  // with the imperfection, as `plisse run` builds it
-  // The same rules `plisse run` applies before solving (symmetry planes, conflicting conditions).
-  // Material, conditions and terms: loads, cavities and dies validate their surfaces here.
+  // The same rules `plisse run` applies before solving, from the same table (app/pre_step_checks):
+  // the element and the mesh's order, curved elements, symmetry planes, conflicting conditions,
+  // pieces held by nothing. Material, conditions and terms: loads, cavities and dies validate
+  // their surfaces here.
+  run_pre_step_checks(PreStepStage::mesh, c, mesh);
   const ModelParts parts = build_model_parts(c, mesh);
-  check_rigid_pieces(c, mesh, parts.constraints);
+  run_pre_step_checks(PreStepStage::parts, c, mesh, &parts);
   {
     PetscSession petsc({"-no_signal_handler", c.solver.petsc_options});
     check_solver_options(c, {});
@@ -133,8 +146,6 @@ void check_case(const CheckOptions& options) {
   }
   for (std::size_t i = 0; i < report.warnings.size() && i < 5; ++i)
     out << "            warning: " << report.warnings[i] << '\n';
-  for (const InputError& e : unsupported_features(c, mesh))
-    std::cerr << "plisse check: warning: " << e.what() << " (plisse run refuses this case)\n";
   for (const InputError& e : setup_warnings(c))
     std::cerr << "plisse check: warning: " << e.what() << '\n';
   out << "  case      " << count(c.terms_in("boundary").size(), "boundary condition") << ", "
@@ -163,6 +174,10 @@ void add_check_command(CLI::App& app) {
                   "--set loads[0].value=1e-3 (repeatable)")
       ->take_all()
       ->allow_extra_args(false);
+  cmd->add_option("-o,--output", options->output_directory,
+                  "The run directory to judge as `plisse run -o DIR` would write it (default "
+                  "runs/<case name>): a file on its path or a directory under a run file's name "
+                  "is refused");
   cmd->callback([options] { check_case(*options); });
 }
 

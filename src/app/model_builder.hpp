@@ -47,8 +47,8 @@ void check_rigid_pieces(const Case& c, const Mesh& mesh,
 std::unique_ptr<MixedModel> make_model(const Mesh& mesh, ModelParts parts);
 
 /// What the case file allows but this build cannot solve (a mesh whose order does not fit the
-/// element, the incremental scheme), each as an InputError naming the key. `plisse run` refuses the
-/// first; `plisse check` lists them as warnings.
+/// element, the incremental scheme), each as an InputError naming the key. `plisse run` and
+/// `plisse check` refuse the first (app/pre_step_checks).
 std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh);
 
 /// Set-up choices that are legal but usually a mistake, each an InputError naming the key (not

@@ -8,6 +8,7 @@
 
 #include "analysis/point_location.hpp"
 #include "app/model_builder.hpp"
+#include "app/pre_step_checks.hpp"
 #include "app/progress_line.hpp"
 #include "app/run_plan.hpp"
 #include "app/run_recorder.hpp"
@@ -44,8 +45,7 @@ struct RunMesh {
 RunMesh load_run_mesh(const Case& c, const RunOptions& options) {
   const auto t0 = WallClock::now();
   RunMesh run_mesh{load_perturbed_mesh(c), 0.0, {}};
-  if (const auto unsupported = unsupported_features(c, run_mesh.mesh); !unsupported.empty())
-    throw unsupported.front();
+  run_pre_step_checks(PreStepStage::mesh, c, run_mesh.mesh);
   run_mesh.seconds = seconds_since(t0);
   // After the mesh file has passed its reader's checks (type, size): it is hashed whole.
   run_mesh.fingerprint = run_fingerprint(options.case_file, options.overrides,
@@ -339,7 +339,7 @@ void run_case(const RunOptions& options) {
   // 3. Build the parts of the model (materials, constraints, terms): everything that can be
   //    refused is refused before the run directory is touched.
   ModelParts parts = build_model_parts(c, mesh.mesh);
-  check_rigid_pieces(c, mesh.mesh, parts.constraints);
+  run_pre_step_checks(PreStepStage::parts, c, mesh.mesh, &parts);
   // 4. Start PETSc with the run's options, the threads and the signal handlers; the ranks of a
   //    distributed run must have built the same mesh.
   const RunSession session(c, options.petsc_options);

@@ -108,6 +108,11 @@ RunPlan plan_run(const RunOptions& options, const Case& c) {
   plan.directory_key = resume ? "--resume" : "-o";
   plan.overwrite = options.overwrite;
   plan.refuse_earlier_run = !resume && !options.overwrite;
+  // Before any work: a path the run could not write (a file on the way, a directory under the
+  // name of one of its files) would fail it after the solve, or after --overwrite removed the
+  // earlier run.
+  if (const std::string problem = output_path_problem(plan.directory); !problem.empty())
+    throw InputError({plan.directory.string(), 0, 0, plan.directory_key}, problem);
   if (!options.from_directory.empty()) {
     plan.from = read_from_state(options, c);
     plan.from_directory = options.from_directory;

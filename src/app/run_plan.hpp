@@ -53,7 +53,9 @@ struct RunPlan {
 };
 
 /// Decides the plan of `options` for the parsed case `c`, checking, in this order: each --petsc
-/// option's text; --resume with --overwrite; --resume with another -o; --from with --resume; the
+/// option's text; --resume with --overwrite; --resume with another -o; the run directory's path
+/// (output_path_problem: a file on the way, a directory under a run file's name); --from with
+/// --resume; the
 /// --from run's checkpoint (readable, same element) and -o naming the --from directory; the
 /// --resume checkpoint (readable, same element). Throws the InputError of the first rule broken.
 RunPlan plan_run(const RunOptions& options, const Case& c);

@@ -101,17 +101,36 @@ bool check_node_indices(const Mesh& mesh, MeshReport& report) {
 }
 
 /// Every coordinate is a finite number: NaN or infinite coordinates (e.g. "nan" in a .msh file)
-/// make every volume test false, so such a mesh would pass them. False otherwise.
+/// make every volume test false, so such a mesh would pass them. And none beyond
+/// kMaxCoordinate: volumes (cubes of lengths) and the tangent's products of them overflow to
+/// infinity long before a coordinate does. False otherwise.
 bool check_finite_coordinates(const Mesh& mesh, MeshReport& report) {
   const int n_nodes = mesh.n_nodes();
-  MessageList errors(report.errors, "nodes with non-finite coordinates");
-  for (int i = 0; i < n_nodes; ++i)
-    if (!mesh.nodes[static_cast<std::size_t>(i)].allFinite()) {
-      const Vec3d& x = mesh.nodes[static_cast<std::size_t>(i)];
-      errors.add("node " + std::to_string(i) + " has a coordinate that is not a finite number (" +
-                 number(x.x()) + ", " + number(x.y()) + ", " + number(x.z()) + ")");
-    }
-  return report.errors.empty();
+  {
+    MessageList errors(report.errors, "nodes with non-finite coordinates");
+    for (int i = 0; i < n_nodes; ++i)
+      if (!mesh.nodes[static_cast<std::size_t>(i)].allFinite()) {
+        const Vec3d& x = mesh.nodes[static_cast<std::size_t>(i)];
+        errors.add("node " + std::to_string(i) + " has a coordinate that is not a finite number (" +
+                   number(x.x()) + ", " + number(x.y()) + ", " + number(x.z()) + ")");
+      }
+  }
+  if (!report.errors.empty()) return false;
+  MessageList errors(report.errors, "nodes beyond the coordinate range");
+  bool inside = true;
+  for (int i = 0; i < n_nodes; ++i) {
+    const Vec3d& x = mesh.nodes[static_cast<std::size_t>(i)];
+    if (x.cwiseAbs().maxCoeff() <= kMaxCoordinate) continue;
+    // The reason once, with the first node.
+    errors.add("node " + std::to_string(i + 1) + " (1-based) lies at (" + number(x.x()) + ", " +
+               number(x.y()) + ", " + number(x.z()) + "), beyond ±" + number(kMaxCoordinate) +
+               " mm" +
+               (inside ? ": volumes and stiffnesses of such a body overflow double precision (a "
+                         "mesh in other units must be rescaled)"
+                       : ""));
+    inside = false;
+  }
+  return inside;
 }
 
 /// The volume of every tetrahedron: none degenerate or inverted; its smallest volume and largest

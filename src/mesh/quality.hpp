@@ -34,9 +34,14 @@ inline constexpr double kShellAngleWarning = 10.0;
 /// the radius of curvature, and a sharper turn is a crease the element smooths over.
 inline constexpr double kShellTurnWarning = 45.0;
 
+/// The largest coordinate a mesh may have [mm]: the volume of a body of that size (1e90 mm^3)
+/// and the products of the tangent stay far from the overflow of double precision (1.8e308).
+inline constexpr double kMaxCoordinate = 1e30;
+
 /// Checks, in this order (each problem is one message naming the element, node, edge or tag;
 /// at most 10 messages per kind, then a count):
-/// - errors: node indices out of range; inverted tetrahedra (volume < 0) and degenerate ones
+/// - errors: node indices out of range; coordinates that are not finite or beyond
+///   kMaxCoordinate; inverted tetrahedra (volume < 0) and degenerate ones
 ///   (|volume| <= 1e-12 (longest edge)^3), with index and volume; second-order edge nodes that
 ///   differ between tetrahedra sharing an edge; tags listing indices out of range;
 ///   `required_tags` missing or empty (surface or volume tags); triangles that are no face of
@@ -46,9 +51,10 @@ inline constexpr double kShellTurnWarning = 45.0;
 ///   tetrahedra); aspect ratio above kAspectRatioWarning.
 ///
 /// A shell mesh (mesh.is_shell()) is checked as a surface: errors for node indices out of range,
-/// non-finite coordinates, degenerate triangles (area <= 1e-12 (longest side)^2) and tags listing
-/// triangles or edges that do not exist; warnings for nodes of no triangle, triangle angles below
-/// kShellAngleWarning and turns between neighbours above kShellTurnWarning.
+/// non-finite coordinates or beyond kMaxCoordinate, degenerate triangles (area <= 1e-12 (longest
+/// side)^2) and tags listing triangles or edges that do not exist; warnings for nodes of no
+/// triangle, triangle angles below kShellAngleWarning and turns between neighbours above
+/// kShellTurnWarning.
 MeshReport check_mesh(const Mesh& mesh, const std::vector<std::string>& required_tags = {});
 
 }  // namespace plisse

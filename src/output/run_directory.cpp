@@ -99,11 +99,45 @@ std::string linked_run_file(const std::filesystem::path& directory) {
     if (entry.is_symlink(error) && is_run_file_name(name)) return name;
   }
   return {};
+/// The names of a run's files other than its step files.
+const std::set<std::string, std::less<>>& run_file_names() {
+  static const std::set<std::string, std::less<>> names = {
+      "history.csv",    "summary.json",         "solution.pvd", "log.txt",
+      "checkpoint.bin", "wrinkle_spectrum.csv", "wrinkles.json"};
+  return names;
 }
 
 }  // namespace
 
 std::vector<std::filesystem::path> run_files(const std::filesystem::path& directory) {
+std::string output_path_problem(const std::filesystem::path& directory) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path normal = directory.lexically_normal();
+  for (fs::path p = normal; !p.empty(); p = p.parent_path()) {
+    if (fs::exists(p, error) && !fs::is_directory(p, error))
+      return "cannot create the output directory: '" + p.string() +
+             "' exists and is not a directory";
+    if (p == p.parent_path()) break;
+  }
+  if (!fs::is_directory(normal, error)) return {};
+  std::vector<std::string> taken;
+  for (const auto& entry : fs::directory_iterator(normal, error)) {
+    const std::string name = entry.path().filename().string();
+    if (!entry.is_directory(error)) continue;
+    if (run_file_names().count(name) > 0 || is_step_file(name) || name == DirectoryLock::kFileName)
+      taken.push_back(name);
+  }
+  if (taken.empty()) return {};
+  std::sort(taken.begin(), taken.end());
+  std::string names;
+  for (const std::string& n : taken) names += (names.empty() ? "" : ", ") + n;
+  return "holds a directory where the run writes a file (" + names +
+         "): move it away or choose another -o";
+}
+
+std::vector<std::filesystem::path> run_files(const std::filesystem::path& directory) {
+  const auto& kNames = run_file_names();
   std::vector<std::filesystem::path> files;
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {

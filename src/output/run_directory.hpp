@@ -44,6 +44,12 @@ class RunDirectory {
 /// a run's, nor is a directory of one of these names.
 std::vector<std::filesystem::path> run_files(const std::filesystem::path& directory);
 
+/// Why a run could not write its files into `directory`, as far as can be seen without writing
+/// (empty: nothing in the way): a component of the path that exists and is not a directory
+/// ("cannot create the output directory: ..."), or a directory in it under the name of one of a
+/// run's files (run_files, the lock file), which the run could neither write nor remove.
+std::string output_path_problem(const std::filesystem::path& directory);
+
 /// Removes run_files(directory) and the temporaries dead writers left there
 /// (remove_stale_temporaries); other files are kept. Returns how many files were removed. Throws
 /// plisse::Error naming the first file that cannot be removed.

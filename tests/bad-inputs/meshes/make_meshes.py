@@ -112,3 +112,15 @@ open('two-pieces.msh','w').write(v2(unit + second,
                                     [(2, 2, t) for t in bottom] + [(4, 1, t) for t in kuhn] +
                                     [(4, 1, tuple(v + 8 for v in t)) for t in kuhn],
                                     [(3, 1, 'body'), (2, 2, 'fixed')]))
+# the unit cube scaled by 1e299: coordinates near 1e300, whose volumes overflow
+huge = [tuple(repr(c * 1e299) for c in x) for x in unit]
+open('huge-coordinates.msh','w').write(v2(huge, [(4, 1, t) for t in kuhn], [(3, 1, 'body')]))
+# one 10-node tetrahedron (Gmsh type 11: corners, then edges 01, 12, 20, 30, 32, 31) whose edge
+# node on 01 sits at 0.9 instead of 0.5: the element is turned inside out near corner 1
+# (det(dX/dξ) < 0 there), as on a thin curved wall meshed with -order 2 without optimisation;
+# its bottom face (z = 0) is a 6-node triangle (type 9) tagged `bottom`
+curved_nodes = [(0,0,0),(1,0,0),(0,1,0),(0,0,1),(0.9,0,0),(0.5,0.5,0),(0,0.5,0),(0,0,0.5),
+                (0,0.5,0.5),(0.5,0,0.5)]
+open('curved-tet10.msh','w').write(v2(curved_nodes, [(9, 2, (1,3,2,7,6,5)),
+                                                     (11, 1, (1,2,3,4,5,6,7,8,9,10))],
+                                      [(3, 1, 'body'), (2, 2, 'bottom')]))

@@ -82,6 +82,30 @@ TEST(RunDirectory, RunFilesAreTheContractsNamesOnly) {
                              "step_0003_p1.pvtu", "mesh.msh", "history.csv.bak", "step_0004.vtu"}));
 }
 
+TEST(RunDirectory, OutputPathProblemsAreSeenWithoutWriting) {
+  const test::ScratchDir dir;
+  // Nothing there yet, or an empty directory: nothing in the way, and nothing created.
+  EXPECT_EQ(output_path_problem(dir / "new" / "run"), "");
+  EXPECT_FALSE(std::filesystem::exists(dir / "new"));
+  EXPECT_EQ(output_path_problem(dir.path()), "");
+  // A regular file on the way.
+  write_file_atomically(dir / "file", "x");
+  EXPECT_NE(output_path_problem(dir / "file" / "run")
+                .find("cannot create the output directory: '" + (dir / "file").string() +
+                      "' exists and is not a directory"),
+            std::string::npos);
+  // Directories under the names of a run's files; the user's own directories are no problem.
+  std::filesystem::create_directories(dir / "run" / "history.csv");
+  std::filesystem::create_directories(dir / "run" / "step_0003.vtu");
+  std::filesystem::create_directories(dir / "run" / "figures");
+  EXPECT_EQ(output_path_problem(dir / "run"),
+            "holds a directory where the run writes a file (history.csv, step_0003.vtu): move it "
+            "away or choose another -o");
+  std::filesystem::remove(dir / "run" / "history.csv");
+  std::filesystem::remove(dir / "run" / "step_0003.vtu");
+  EXPECT_EQ(output_path_problem(dir / "run"), "");
+}
+
 TEST(DirectoryLock, OneHolderAtATimeNamedInTheRefusalAndTheFileGoesWithIt) {
   const ScratchDir scratch;
   const InputPlace place{scratch.path().string(), 0, 0, "-o"};

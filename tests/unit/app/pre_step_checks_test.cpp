@@ -1,0 +1,86 @@
+// Requirement: `plisse check` makes every check `plisse run` makes before its first step. The
+// table of run's pre-step checks (app/pre_step_checks) is listed here by name, and for each one
+// a case that only it refuses is given to `plisse check` and to `plisse run`: both refuse it with
+// exit status 2 and the check's message, and the run writes nothing. A check added to the table
+// without a case here fails the test.
+#include "app/pre_step_checks.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "support/run_plisse.hpp"
+
+namespace plisse::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kMeshes = std::string(PLISSE_SOURCE_DIR) + "/tests/bad-inputs/meshes/";
+
+/// A case refused by one check alone, and a fragment of its message.
+struct RefusedCase {
+  std::string text;
+  std::string message;
+};
+
+const std::map<std::string, RefusedCase>& refused_cases() {
+  static const std::map<std::string, RefusedCase> cases = {
+      {"element and scheme",
+       {"mesh: {generate: cube, edge: 2.0, divisions: 1, order: 1}\n"
+        "element: taylor-hood\n"
+        "material: {model: neo-hookean, c1: 0.2}\n"
+        "boundary: [{type: fixed, surface: bottom}]\n",
+        "the Taylor-Hood element needs second-order (10-node) ones"}},
+      {"curved elements",
+       {"mesh: {file: " + kMeshes + "curved-tet10.msh}\n" +
+            "element: taylor-hood\n"
+            "material: {model: neo-hookean, c1: 0.2}\n"
+            "boundary: [{type: fixed, surface: bottom}]\n",
+        "second-order tetrahedron 1 (1-based"}},
+      {"rigid pieces",
+       {"mesh: {file: " + kMeshes + "two-pieces.msh}\n" +
+            "element: mini\n"
+            "material: {model: neo-hookean, c1: 0.2}\n"
+            "boundary: [{type: fixed, surface: fixed}]\n",
+        "is held by no boundary condition"}},
+  };
+  return cases;
+}
+
+TEST(PreStepChecks, RunsChecksAreListed) {
+  std::vector<std::string> names;
+  for (const PreStepCheck& check : pre_step_checks()) names.push_back(check.name);
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"element and scheme", "curved elements", "rigid pieces"}));
+}
+
+TEST(PreStepChecks, CheckMakesEveryCheckRunMakes) {
+  const fs::path dir = test::scratch_directory("pre-step-checks");
+  fs::create_directories(dir);
+  int k = 0;
+  for (const PreStepCheck& check : pre_step_checks()) {
+    SCOPED_TRACE(check.name);
+    const auto found = refused_cases().find(check.name);
+    ASSERT_NE(found, refused_cases().end()) << "no case refused by '" << check.name << "' here";
+    const fs::path file = dir / ("case-" + std::to_string(k++) + ".yaml");
+    std::ofstream(file) << found->second.text;
+    const fs::path out = dir / (file.stem().string() + "-run");
+    for (const std::string& args : {"check '" + file.string() + "'",
+                                    "run '" + file.string() + "' -o '" + out.string() + "'"}) {
+      const test::PlisseResult r =
+          test::run_plisse_captured(args, "ulimit -v 4000000; timeout 60 ");
+      EXPECT_EQ(r.status, 2) << args << "\n" << r.output;
+      EXPECT_NE(r.output.find(found->second.message), std::string::npos) << args << "\n"
+                                                                         << r.output;
+    }
+    EXPECT_FALSE(fs::exists(out)) << "the refused run wrote " << out;
+  }
+}
+
+}  // namespace
+}  // namespace plisse::app
