@@ -26,6 +26,9 @@ void add_run_command(CLI::App& app) {
                   "Start from the last converged state of the run in DIR (its checkpoint.bin) "
                   "under this case's loads, in a new run directory: a second load step, e.g. "
                   "unloading, on the same mesh and element");
+  cmd->add_flag("--from-unfinished", options->from_unfinished,
+                "With --from: accept a run that did not complete (killed, interrupted or failed) "
+                "and start from its last checkpoint, which the log then says");
   cmd->add_flag("--overwrite", options->overwrite,
                 "Replace the earlier run in the output directory (its files are removed once the "
                 "case has passed every check); without it, such a directory is refused");

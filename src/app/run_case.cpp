@@ -241,6 +241,11 @@ void set_start(const RunContext& run, RunSolver& solver, RunRecorder& recorder, 
     log.info("starting from the last state of " + run.plan.from_directory + " (step " +
              std::to_string(from->steps) + " at t = " + std::to_string(from->time) +
              "); this case's time starts at 0");
+    if (!run.plan.from_unfinished.empty())
+      log.warn("--from-unfinished: the run in " + run.plan.from_directory + " " +
+               run.plan.from_unfinished +
+               "; this run starts from its last checkpoint, not from "
+               "the end of its loading");
   }
   if (const std::optional<Checkpoint>& resume = run.plan.resume)
     log.info("resuming after step " + std::to_string(resume->steps) +

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "case/petsc_option_text.hpp"
+#include "output/json_file.hpp"
 #include "output/run_directory.hpp"
 
 namespace plisse::app {
@@ -40,6 +41,37 @@ void check_option_rules(const RunOptions& options) {
                      "a resumed run writes into its own directory; -o must be omitted or the same");
 }
 
+/// Why the run in `directory`, whose checkpoint is `from`, did not complete (empty: it did): no
+/// summary.json (killed, or still running), one that says it was interrupted or failed, or one
+/// whose final time is not the checkpoint's (a later attempt wrote the checkpoint).
+std::string unfinished_run(const fs::path& directory, const Checkpoint& from) {
+  const fs::path file = directory / "summary.json";
+  std::error_code error;
+  if (!fs::exists(file, error)) return "has no summary.json (it was killed, or is still running)";
+  nlohmann::json summary;
+  try {
+    summary = read_json_file(file);
+  } catch (const Error& e) {
+    return std::string("has a summary.json that cannot be read (") + e.what() + ")";
+  }
+  if (!summary.is_object() || !summary.contains("completed") || !summary["completed"].is_boolean())
+    return "has a summary.json without `completed`";
+  if (!summary["completed"].get<bool>()) {
+    if (summary.contains("interrupted") && summary["interrupted"].is_boolean() &&
+        summary["interrupted"].get<bool>())
+      return "was interrupted before its end time";
+    return "stopped before its end time" +
+           (summary.contains("failure") && summary["failure"].is_string()
+                ? " (" + summary["failure"].get<std::string>() + ")"
+                : std::string());
+  }
+  if (!summary.contains("final_time") || !summary["final_time"].is_number() ||
+      summary["final_time"].get<double>() != from.time)
+    return "has a checkpoint.bin that is not of its last step (t = " + std::to_string(from.time) +
+           ")";
+  return {};
+}
+
 /// --from DIR: the finished run's last state, which must be of the case's element, in another
 /// directory than the new run's.
 Checkpoint read_from_state(const RunOptions& options, const Case& c) {
@@ -60,6 +92,15 @@ Checkpoint read_from_state(const RunOptions& options, const Case& c) {
                          " used `element: " + to_string(from.element) +
                          "`, this case has `element: " + to_string(c.element) +
                          "`; a second step keeps the element family");
+  if (const std::string why = unfinished_run(options.from_directory, from); !why.empty()) {
+    if (!options.from_unfinished)
+      throw InputError({file.string(), 0, 0, "--from"},
+                       "the run in " + options.from_directory + " " + why +
+                           ": a second step starts from a completed run; give --from-unfinished "
+                           "to start from its last checkpoint (step " +
+                           std::to_string(from.steps) + " at t = " + std::to_string(from.time) +
+                           ") all the same");
+  }
   if (!options.output_directory.empty() && fs::weakly_canonical(options.from_directory) ==
                                                fs::weakly_canonical(options.output_directory))
     throw InputError(command_line_option("--from"),
@@ -116,6 +157,7 @@ RunPlan plan_run(const RunOptions& options, const Case& c) {
   if (!options.from_directory.empty()) {
     plan.from = read_from_state(options, c);
     plan.from_directory = options.from_directory;
+    plan.from_unfinished = unfinished_run(options.from_directory, *plan.from);
   }
   if (resume) {
     // Taken before the read: a file replaced in between then differs when the lock is held.

@@ -25,6 +25,9 @@ struct RunOptions {
   std::string resume_directory;            ///< --resume DIR: continue from DIR/checkpoint.bin
   /// --from DIR: start from the last state of the run in DIR (a second step with this case's loads)
   std::string from_directory;
+  /// --from-unfinished: --from may name a run that did not complete (killed, interrupted or
+  /// failed); its last checkpoint is then the start
+  bool from_unfinished = false;
   bool overwrite = false;  ///< --overwrite: replace an earlier run in the directory
   int ranks = 0;           ///< -n N: MPI ranks (run under mpiexec); 0: not given
 };
@@ -50,13 +53,17 @@ struct RunPlan {
   /// element is the case's.
   std::optional<Checkpoint> from;
   std::string from_directory;  ///< --from DIR as given; empty without --from
+  /// Why the --from run is not a completed one (--from-unfinished); empty when it completed.
+  std::string from_unfinished;
 };
 
 /// Decides the plan of `options` for the parsed case `c`, checking, in this order: each --petsc
 /// option's text; --resume with --overwrite; --resume with another -o; the run directory's path
 /// (output_path_problem: a file on the way, a directory under a run file's name); --from with
 /// --resume; the
-/// --from run's checkpoint (readable, same element) and -o naming the --from directory; the
+/// --from run's checkpoint (readable, same element), that run's completion (its summary.json says
+/// `completed` at its checkpoint's time, unless --from-unfinished) and -o naming the --from
+/// directory; the
 /// --resume checkpoint (readable, same element). Throws the InputError of the first rule broken.
 RunPlan plan_run(const RunOptions& options, const Case& c);
 

@@ -144,6 +144,32 @@ TEST(SecondStep, ViscoelasticRelaxationContinuesInTheSecondRun) {
       << refused.output;
 }
 
+TEST(SecondStep, FromAnUnfinishedRunIsRefusedUnlessAskedAndThenSaidInTheLog) {
+  const fs::path dir = scratch_directory("second-step-unfinished");
+  const fs::path pull = write_case(dir, "pull.yaml", cube_case("0.5", "[0, 1]", 2));
+  const auto first = run_plisse_captured("run " + pull.string() + " -o " + (dir / "pull").string());
+  ASSERT_EQ(first.status, 0) << first.output;
+  // A run killed before its end leaves its checkpoint but no summary.json.
+  fs::remove(dir / "pull" / "summary.json");
+  const std::string from = " --from " + (dir / "pull").string();
+  auto r = run_plisse_captured("run " + pull.string() + " -o " + (dir / "a").string() + from);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("has no summary.json (it was killed, or is still running): a second "
+                          "step starts from a completed run; give --from-unfinished"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(dir / "a"));
+  r = run_plisse_captured("run " + pull.string() + " -o " + (dir / "b").string() + from +
+                          " --from-unfinished");
+  EXPECT_EQ(r.status, 0) << r.output;
+  std::ifstream in(dir / "b" / "log.txt");
+  const std::string log((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(
+      log.find("--from-unfinished: the run in " + (dir / "pull").string() + " has no summary.json"),
+      std::string::npos)
+      << log;
+}
+
 TEST(SecondStep, AnotherMeshElementOrDirectoryIsRefusedNamingFrom) {
   const fs::path dir = scratch_directory("second-step-refused");
   const fs::path pull = write_case(dir, "pull.yaml", cube_case("0.5", "[0, 1]", 2));

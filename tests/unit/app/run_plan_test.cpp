@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "output/checkpoint.hpp"
+#include "output/json_file.hpp"
 #include "unit/output/output_test_support.hpp"
 
 namespace plisse::app {
@@ -32,7 +33,7 @@ RunOptions options_for(const std::string& case_file) {
 }
 
 /// A run directory `directory` holding a checkpoint of `element` with `fingerprint` and
-/// `n_internal` internal values.
+/// `n_internal` internal values, and the summary.json of a completed run at its time.
 void write_run(const fs::path& directory, ElementFamily element,
                const RunFingerprint& fingerprint = {}, std::size_t n_internal = 0) {
   fs::create_directories(directory);
@@ -47,6 +48,8 @@ void write_run(const fs::path& directory, ElementFamily element,
   c.previous_state = c.state;
   c.bubbles.assign(n_internal, 0.0);
   write_checkpoint(directory / "checkpoint.bin", c);
+  write_json_file(directory / "summary.json",
+                  {{"completed", true}, {"interrupted", false}, {"final_time", 0.375}});
 }
 
 /// The message `plisse run` prints for the plan of `options` (empty when the plan is made).
@@ -189,6 +192,42 @@ TEST(RunPlan, FromStartsANewRunFromTheLastStateOfAnother) {
   ASSERT_TRUE(plan.from);
   EXPECT_EQ(plan.from->steps, 3);
   EXPECT_EQ(plan.from_directory, options.from_directory);
+}
+
+TEST(RunPlan, FromAnUnfinishedRunIsRefusedUnlessAsked) {
+  const ScratchDir dir;
+  write_run(dir.path(), ElementFamily::mini);
+  RunOptions options = options_for("unload.yaml");
+  options.from_directory = dir.path().string();
+  options.output_directory = (dir / "second").string();
+  const std::string start =
+      (dir / "checkpoint.bin").string() + ": key '--from': the run in " + dir.path().string() + " ";
+  const std::string end =
+      ": a second step starts from a completed run; give --from-unfinished to start from its "
+      "last checkpoint (step 3 at t = 0.375000) all the same";
+  EXPECT_EQ(refusal(options), "");
+  // Killed (no summary), interrupted, failed, or a checkpoint of another step than the last.
+  write_json_file(dir / "summary.json",
+                  {{"completed", false}, {"interrupted", true}, {"final_time", 0.375}});
+  EXPECT_EQ(refusal(options), start + "was interrupted before its end time" + end);
+  write_json_file(dir / "summary.json", {{"completed", false},
+                                         {"interrupted", false},
+                                         {"failure", "step size below min_step"},
+                                         {"final_time", 0.375}});
+  EXPECT_EQ(refusal(options),
+            start + "stopped before its end time (step size below min_step)" + end);
+  write_json_file(dir / "summary.json",
+                  {{"completed", true}, {"interrupted", false}, {"final_time", 1.0}});
+  EXPECT_EQ(refusal(options),
+            start + "has a checkpoint.bin that is not of its last step (t = 0.375000)" + end);
+  fs::remove(dir / "summary.json");
+  EXPECT_EQ(refusal(options),
+            start + "has no summary.json (it was killed, or is still running)" + end);
+  // Asked for: the plan says why, for the log.
+  options.from_unfinished = true;
+  const RunPlan plan = plan_run(options, mini_case());
+  ASSERT_TRUE(plan.from);
+  EXPECT_EQ(plan.from_unfinished, "has no summary.json (it was killed, or is still running)");
 }
 
 TEST(RunPlan, FromWithResumeIsRefused) {
