@@ -155,6 +155,12 @@ void check_regions(const Case& c, const Mesh& mesh) {
 /// the thickness needs a wall (a shell has one); a shell has no pressure field to probe.
 void check_probe(const Case& c, const Mesh& mesh, const Probe& probe) {
   const std::string what = "probe '" + probe.name + "'";
+  // Beyond the meshes' coordinate range the location's arithmetic overflows (a point such as
+  // [1e200, 1e200, 1e200] came out "0 mm from its point").
+  if (!(probe.point.cwiseAbs().maxCoeff() <= kMaxCoordinate))
+    throw InputError(probe.point_place, what + ": the point " + schema::format_vector(probe.point) +
+                                            " lies beyond ±" + format_number(kMaxCoordinate) +
+                                            " mm, far off the body: give a point on the body");
   const MeshPoint at = locate_point(mesh, probe.point);
   std::vector<int> corners;
   if (mesh.is_shell()) {
@@ -170,7 +176,7 @@ void check_probe(const Case& c, const Mesh& mesh, const Probe& probe) {
       longest = std::max(longest, (mesh.nodes[static_cast<std::size_t>(corners[a])] -
                                    mesh.nodes[static_cast<std::size_t>(corners[b])])
                                       .norm());
-  if (at.distance > longest)
+  if (!(at.distance <= longest))
     throw InputError(probe.point_place,
                      what + ": the point " + schema::format_vector(probe.point) + " is " +
                          format_number(at.distance) + " mm from the body (its nearest point " +

@@ -1,6 +1,8 @@
 #include "terms/keys.hpp"
 
 #include <cmath>
+#include <set>
+#include <utility>
 
 namespace plisse::term_keys {
 
@@ -9,6 +11,39 @@ using schema::format_number;
 const std::string load_curve_help =
     "; a list of points [[t, factor], ...] is a load curve instead: the factor joins them "
     "linearly and holds the first and last values outside (load, hold, unload, cycles)";
+
+void refuse_load_on_held_nodes(const std::vector<NodalForce>& forces,
+                               const std::vector<ConstrainedComponent>& constraints,
+                               const Mesh& mesh, const InputPlace& place, const std::string& what) {
+  std::set<std::pair<int, int>> held;
+  for (const ConstrainedComponent& c : constraints) held.emplace(c.node, c.component);
+  double largest = 0.0;
+  for (const NodalForce& f : forces) largest = std::max(largest, f.force.cwiseAbs().maxCoeff());
+  if (!(largest > 0.0)) return;
+  const char* const axes = "xyz";
+  std::string first;
+  for (const NodalForce& f : forces)
+    for (int k = 0; k < 3; ++k) {
+      // Round-off of a force along an axis (a tilted face's traction) does not count.
+      if (std::abs(f.force[k]) <= 1e-12 * largest) continue;
+      if (held.count({f.node, k}) == 0) return;
+      if (first.empty()) {
+        std::string components;
+        for (int j = 0; j < 3; ++j)
+          if (std::abs(f.force[j]) > 1e-12 * largest)
+            components += std::string(components.empty() ? "" : ", ") + axes[j];
+        first = "node " + std::to_string(f.node + 1) + " (1-based) at " +
+                schema::format_vector(mesh.nodes[static_cast<std::size_t>(f.node)]) + ", " +
+                components;
+      }
+    }
+  throw InputError(place, what +
+                              ": every component it pushes along is prescribed by the boundary "
+                              "conditions (" +
+                              first + (forces.size() > 1 ? ", and the others alike" : "") +
+                              "): it would do no work and the supports would take it; load "
+                              "a free node or surface, or leave the load out");
+}
 
 SurfaceRef surface_ref(const Field& f) {
   const std::string name = f.text();

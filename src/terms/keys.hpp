@@ -10,7 +10,10 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "mesh/mesh.hpp"
 #include "mesh/surface_ref.hpp"
+#include "physics/dead_load.hpp"
+#include "physics/dirichlet.hpp"
 #include "physics/ramp.hpp"
 #include "schema/field.hpp"
 #include "schema/table.hpp"
@@ -124,6 +127,14 @@ void condition_keys(Schema<S>& schema, std::type_identity_t<std::string S::*> na
               "a surface tag (all its nodes)")
       .required();
 }
+
+/// A dead load whose every non-zero nodal force component acts on a component the boundary
+/// conditions prescribe (`constraints`) does no work: the supports take it, while the history
+/// would report it as applied. Throws InputError at `place`, naming `what` ("point-force 'f'"),
+/// the first node and the held components; a load that moves at least one free component passes.
+void refuse_load_on_held_nodes(const std::vector<NodalForce>& forces,
+                               const std::vector<ConstrainedComponent>& constraints,
+                               const Mesh& mesh, const InputPlace& place, const std::string& what);
 
 /// The history columns of a named condition's reaction; `whole`: also the whole body's, for a
 /// condition that continues across a mirror plane (all but `symmetry`).

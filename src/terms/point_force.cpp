@@ -54,7 +54,8 @@ TermKind point_force_kind() {
          "",
          {},
          "where the force acts: on the mesh node nearest this point of the undeformed body "
-         "(refused when farther from it than the longest edge at that node)"},
+         "(refused when farther from it than the longest edge at that node, or when the boundary "
+         "conditions prescribe every component the force pushes along there)"},
         [](const Field& f, S& load, ReadContext&) {
           load.point = f.vec3();
           load.point_place = f.place();
@@ -69,9 +70,10 @@ TermKind point_force_kind() {
     check_point_on_body(load, check.mesh);
   };
   d.make = [](const S& load, const TermContext& c) -> std::unique_ptr<ModelTerm> {
-    return std::make_unique<DeadLoad>(
-        load.name, std::vector<NodalForce>{{nearest_node(c.mesh, load.point), *load.force}},
-        load.ramp);
+    std::vector<NodalForce> forces{{nearest_node(c.mesh, load.point), *load.force}};
+    refuse_load_on_held_nodes(forces, c.constraints, c.mesh, load.point_place,
+                              "point-force '" + load.name + "'");
+    return std::make_unique<DeadLoad>(load.name, std::move(forces), load.ramp);
   };
   d.ramps = load_ramps<S>;
   d.notes = [](const S& load, const Mesh& mesh) {

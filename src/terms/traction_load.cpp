@@ -50,10 +50,12 @@ TermKind traction_load_kind() {
   d.check_mesh = [](const S& load, const TermMeshCheck& check) { check.surface(load.surface); };
   d.make = [](const S& load, const TermContext& c) -> std::unique_ptr<ModelTerm> {
     const auto faces = outward_faces(c.mesh, load.surface.name);
-    return std::make_unique<DeadLoad>(load.name,
-                                      load.traction ? traction_forces(c.mesh, faces, *load.traction)
-                                                    : total_force(c.mesh, faces, *load.force),
-                                      load.ramp);
+    std::vector<NodalForce> forces = load.traction ? traction_forces(c.mesh, faces, *load.traction)
+                                                   : total_force(c.mesh, faces, *load.force);
+    refuse_load_on_held_nodes(forces, c.constraints, c.mesh,
+                              load.surface.place.line > 0 ? load.surface.place : load.place,
+                              "traction '" + load.name + "' on '" + load.surface.name + "'");
+    return std::make_unique<DeadLoad>(load.name, std::move(forces), load.ramp);
   };
   d.ramps = load_ramps<S>;
   d.history = load_force_outputs();
