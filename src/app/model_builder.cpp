@@ -320,6 +320,10 @@ std::vector<InputError> setup_warnings(const Case& c) {
   for (const TermSection& section : term_sections())
     for (const TermEntry* entry : c.terms_in(section.key))
       for (const RampUse& use : entry->kind->ramps(*entry)) check(use.ramp, entry->place, use.what);
+  // A rigid region that moves has a ramp too.
+  for (const Region& r : c.regions)
+    if (!r.material && !r.displacement.isZero(0.0))
+      check(r.ramp, r.place, "the motion of region " + r.label());
   return out;
 }
 

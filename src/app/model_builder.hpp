@@ -52,7 +52,8 @@ std::unique_ptr<MixedModel> make_model(const Mesh& mesh, ModelParts parts);
 std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh);
 
 /// Set-up choices that are legal but usually a mistake, each an InputError naming the key (not
-/// thrown): a load's or die's ramp that ends after solver.end_time (the load or motion is not
+/// thrown): the ramp of a load, a die, a cap, a displacement condition or shell grip that moves,
+/// or a rigid region that moves, that ends after solver.end_time (the load or motion is not
 /// complete when the run ends) or starts at or after it (never applied). A shorter end_time is
 /// legitimate for running part of a case, so these are warnings: `plisse check` prints them and
 /// `plisse run` writes them to log.txt.

@@ -84,6 +84,16 @@ TermKind cap_kind() {
   // On a shell the cap holds an edge tag's nodes (its rim) or a face tag's (caps.md, G8).
   d.check_mesh = [](const Cap& cap, const TermMeshCheck& check) { check.condition(cap.surface); };
   d.shell = true;
+  d.check_mesh = [](const Cap& cap, const TermMeshCheck& check) { check.surface(cap.surface); };
+  // Its ramp matters once it moves, turns or pushes.
+  d.ramps = [](const Cap& cap) {
+    bool acts = !cap.force.isZero(0.0) || !cap.moment.isZero(0.0);
+    for (int k = 0; k < 3; ++k)
+      acts = acts || (cap.displacement[k] && *cap.displacement[k] != 0.0) ||
+             (cap.rotation[k] && *cap.rotation[k] != 0.0);
+    if (!acts) return std::vector<RampUse>{};
+    return std::vector<RampUse>{{cap.ramp, "cap '" + cap.name + "'"}};
+  };
   d.make = [](const Cap& cap, const TermContext& c) -> std::unique_ptr<ModelTerm> {
     return std::make_unique<RigidCap>(cap, c.mesh, c.constraints);
   };

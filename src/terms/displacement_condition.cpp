@@ -37,6 +37,15 @@ TermKind displacement_condition_kind() {
     prescribe_surface(mesh, bc.surface, bc.value, bc.ramp, set);
   };
   d.surface = [](const S& bc) { return bc.surface; };
+  // Its ramp matters once a component moves (a held component is 0 at every factor).
+  d.ramps = [](const S& bc) {
+    for (const auto& v : bc.value)
+      if (v && *v != 0.0)
+        return std::vector<RampUse>{{bc.ramp, bc.name.empty()
+                                                  ? "the displacement of '" + bc.surface.name + "'"
+                                                  : "displacement '" + bc.name + "'"}};
+    return std::vector<RampUse>{};
+  };
   d.history = reaction_outputs(true);
   d.shell = true;
   return make_term_kind(std::move(d));

@@ -35,6 +35,13 @@ TermKind shell_edge_kind(const std::string& word, const std::string& summary, bo
   d.constrain = [](const S& bc, const Mesh& mesh, ConstraintSet& set) {
     prescribe_surface(mesh, bc.surface, {bc.value.x(), bc.value.y(), bc.value.z()}, bc.ramp, set);
   };
+  // Its ramp matters for a grip that moves.
+  d.ramps = [word](const S& bc) {
+    if (bc.value.isZero(0.0)) return std::vector<RampUse>{};
+    return std::vector<RampUse>{
+        {bc.ramp, "the " + word + " edge " +
+                      (bc.name.empty() ? "'" + bc.surface.name + "'" : "'" + bc.name + "'")}};
+  };
   if (clamped)
     d.hold_slope = [](const S& bc, Mesh& mesh) {
       clamp_sides(mesh, *shell_edge_tag(mesh, bc.surface.name));

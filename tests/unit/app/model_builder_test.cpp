@@ -95,6 +95,40 @@ TEST(ModelBuilder, RampsBeyondTheEndTimeAreWarnedAboutAtTheirKeys) {
   EXPECT_TRUE(setup_warnings(whole).empty());
 }
 
+// The same for what moves the body without being a load: a displacement condition, a cap and a
+// rigid region whose ramps act only after end_time (never applied) or end after it; a held
+// component (value 0) has no ramp to speak of.
+TEST(ModelBuilder, RampsOfMotionsBeyondTheEndTimeAreWarnedAboutToo) {
+  const std::string text =
+      kCube +
+      "boundary:\n"
+      "  - {type: fixed, surface: bottom}\n"
+      "  - {type: displacement, name: pull, surface: top, value: [~, ~, 1], ramp: [3, 4]}\n"
+      "  - {type: displacement, surface: left, value: [0, ~, ~], ramp: [3, 4]}\n"
+      "caps:\n"
+      "  - {name: lid, surface: right, displacement: [0.5, ~, ~], ramp: [0, 4]}\n"
+      "regions:\n"
+      "  - {name: block, box: [[0, 0, 0], [1, 1, 1]], rigid: true, displacement: [0, 0, 1],\n"
+      "     ramp: [2.5, 3]}\n"
+      "solver: {end_time: 2.0}\n";
+  const auto warnings = setup_warnings(parse_case_string(text, "c.yaml"));
+  ASSERT_EQ(warnings.size(), 3u);
+  EXPECT_EQ(warnings[0].place().key, "boundary[1].ramp");
+  EXPECT_NE(warnings[0].rule().find("displacement 'pull' starts at 3 s, not before "
+                                    "solver.end_time (2 s): it is never applied"),
+            std::string::npos)
+      << warnings[0].rule();
+  EXPECT_EQ(warnings[1].place().key, "caps[0].ramp");
+  EXPECT_NE(warnings[1].rule().find("cap 'lid' ends at 4 s, after solver.end_time (2 s): the run "
+                                    "ends at 50 % of it"),
+            std::string::npos)
+      << warnings[1].rule();
+  EXPECT_EQ(warnings[2].place().key, "regions[0].ramp");
+  EXPECT_NE(warnings[2].rule().find("the motion of region block starts at 2.5 s"),
+            std::string::npos)
+      << warnings[2].rule();
+}
+
 // Gravity on a shell (loads.md, L6s), where `element: shell` refused it before: the generated sheet
 // of 20 × 10 mm, 0.5 mm thick, clamped at one end, passes the case's checks against its mesh, and
 // the load's resultant is the sheet's weight ρ g A t = 1e-9 × 9810 × 200 × 0.5 = 9.81e-4 N along
