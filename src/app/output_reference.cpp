@@ -141,10 +141,13 @@ const std::vector<OutputEntry> kSummary = {
     {"dofs", "–", "always", "all unknowns, constrained ones included"},
     {"free_dofs", "–", "always", "the unknowns solved for (the size of the linear systems)"},
     {"pressure_dofs", "–", "always", "free pressure unknowns"},
-    {"steps", "–", "always", "converged steps of this run (since the resume, after --resume)"},
+    {"steps", "–", "always",
+     "converged steps of the whole run, the number of its last step: after --resume the steps "
+     "before the resume are counted too, as in history.csv's rows (the counters below are this "
+     "process's alone)"},
     {"newton_iterations", "–", "always",
-     "Newton iterations of this run, over all attempts: the sum of the history column over its "
-     "steps plus `failed_newton_iterations`"},
+     "Newton iterations of this process (after --resume, since the resume), over all attempts: "
+     "the sum of the history column over its steps plus `failed_newton_iterations`"},
     {"failed_newton_iterations", "–", "always",
      "Newton iterations spent in attempts that failed and were cut back"},
     {"reused_factor_solves", "–", "always",

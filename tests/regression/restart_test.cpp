@@ -102,6 +102,11 @@ fs::path expect_kill_and_resume(const std::string& name, const std::string& set 
   expect_same_history(reference, killed);
   expect_readable(killed);
   EXPECT_TRUE(read_json_file(killed / "summary.json")["completed"].get<bool>());
+  // summary.json's steps are the whole run's, as docs/output.md says: the rows of history.csv.
+  EXPECT_EQ(read_json_file(killed / "summary.json")["steps"].get<std::size_t>(),
+            read_history(killed / "history.csv").rows.size());
+  EXPECT_EQ(read_json_file(killed / "summary.json")["steps"],
+            read_json_file(reference / "summary.json")["steps"]);
   EXPECT_EQ(read_pvd(killed / "solution.pvd").size(), read_pvd(reference / "solution.pvd").size());
   return killed;
 }
