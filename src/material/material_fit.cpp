@@ -172,6 +172,7 @@ FitResult fit_material(const std::vector<TestPoint>& data, const FitSettings& op
   Residuals f{info, &fitted, &data, &evaluations};
   double best = std::numeric_limits<double>::infinity();
   Eigen::VectorXd best_x;
+  std::size_t fewest_non_finite = data.size() + 1;  // of the starts refused for non-finite stress
   for (const std::vector<double>& start :
        starts(info->name, options.ogden_terms, mu, max_I1, max_stretch)) {
     Eigen::VectorXd x =
@@ -185,11 +186,28 @@ FitResult fit_material(const std::vector<TestPoint>& data, const FitSettings& op
     Eigen::VectorXd r(static_cast<Eigen::Index>(data.size()));
     f(x, r);
     const double sum = r.squaredNorm();
-    if (std::isfinite(sum) && x.allFinite() && sum < best) {
-      best = sum;
-      best_x = x;
+    if (!std::isfinite(sum) || !x.allFinite() || !(sum < best)) continue;
+    // A point where the model's stress is not a finite number has only the penalty as its
+    // residual: such parameters do not fit the data, however small the sum.
+    const AnyMaterial m = build(*info, fitted, x);
+    std::size_t n_non_finite = 0;
+    for (const TestPoint& p : data)
+      if (!std::isfinite(nominal_stress_or_nan(m, p.mode, p.stretch))) ++n_non_finite;
+    if (n_non_finite > 0) {
+      fewest_non_finite = std::min(fewest_non_finite, n_non_finite);
+      continue;
     }
+    best = sum;
+    best_x = x;
   }
+  if (!std::isfinite(best) && fewest_non_finite < data.size() + 1)
+    throw InputError({"command line", 0, 0, "model"},
+                     "no fit of '" + info->name +
+                         "' gives a finite stress at every data point (the best leaves " +
+                         std::to_string(fewest_non_finite) + " of " + std::to_string(data.size()) +
+                         " points without one: stresses beyond double precision, or stretches "
+                         "past the model's limit); these data are out of the model's reach, "
+                         "check their units or fit another model");
   if (!std::isfinite(best))
     throw Error("plisse fit: no start of the minimiser reached finite parameters for '" +
                 info->name + "'");

@@ -61,7 +61,9 @@ std::vector<std::string> fitted_parameters(const MaterialModelInfo& info, int og
 double nominal_stress_or_nan(const AnyMaterial& material, TestMode mode, double stretch);
 
 /// Fits `options.model` to `data`. Throws InputError (place: key "model" or "terms") for an unknown
-/// model or a terms count out of range, and Error when no start converges to finite values.
+/// model or a terms count out of range, or when no start ends with a finite model stress at every
+/// data point (the report would print the penalty as the error), and Error when no start
+/// converges to finite values.
 FitResult fit_material(const std::vector<TestPoint>& data, const FitSettings& options);
 
 /// Drucker's condition at the incompressible state with principal stretches λ (normalised here

@@ -45,6 +45,10 @@ TEST(FitCommand, BadInputIsRefusedWithItsPlace) {
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "bad.csv") << "mode,stretch,stress\nuniaxial,1.5,0.2\nshear,2,0.3\n";
   std::ofstream(dir / "few.csv") << "mode,stretch,stress\nuniaxial,1.5,0.2\n";
+  // Stresses near the largest double: the fitted neo-Hookean's equibiaxial stress at 9 overflows
+  // (it printed "100000.00 %" and a block with c1 = 4.7e306).
+  std::ofstream(dir / "huge.csv")
+      << "mode,stretch,stress\nuniaxial,1.5,1e307\nuniaxial,3,1.7e308\nequibiaxial,9,1.7e308\n";
   const struct {
     std::string args, expected;
   } cases[] = {
@@ -56,6 +60,9 @@ TEST(FitCommand, BadInputIsRefusedWithItsPlace) {
       {"fit " + kTreloar + " --model ogden --terms 4", "key 'terms': an Ogden fit has 1 to 3"},
       {"fit " + kTreloar + " --model fibre-reinforced", "'fibre-reinforced' is not isotropic"},
       {"fit " + (dir / "missing.csv").string() + " --model ogden", "missing.csv: cannot read"},
+      {"fit " + (dir / "huge.csv").string() + " --model neo-hookean",
+       "key 'model': no fit of 'neo-hookean' gives a finite stress at every data point (the best "
+       "leaves 1 of 3 points without one"},
   };
   for (const auto& c : cases) {
     const test::PlisseResult r = test::run_plisse_captured(c.args);
