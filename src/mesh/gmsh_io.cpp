@@ -12,6 +12,7 @@
 #include <map>
 #include <new>
 #include <numeric>
+#include <sstream>
 #include <unordered_map>
 #include <vector>
 
@@ -190,11 +191,44 @@ RawGmshModel extract_model(ReadDims what) {
   return m;
 }
 
+/// An ASCII Gmsh 2 file lists every node once in its one $Nodes section; Gmsh keeps the last of
+/// two lines with the same tag, silently moving every element that uses it. Throws InputError
+/// (the rule only) for a tag given to two different points, as read_nodes does for the entities
+/// of a v4 file. Other files (v4, binary) are left to Gmsh and read_nodes.
+void refuse_v2_node_defined_twice(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  if (!std::getline(in, line) || line.rfind("$MeshFormat", 0) != 0) return;
+  if (!std::getline(in, line)) return;
+  std::istringstream format(line);
+  std::string version;
+  int file_type = -1;
+  if (!(format >> version >> file_type) || version.rfind("2", 0) != 0 || file_type != 0) return;
+  while (std::getline(in, line))
+    if (line.rfind("$Nodes", 0) == 0) break;
+  if (!std::getline(in, line)) return;
+  std::unordered_map<long long, std::array<double, 3>> points;
+  while (std::getline(in, line) && line.rfind("$EndNodes", 0) != 0) {
+    std::istringstream fields(line);
+    long long tag = 0;
+    std::array<double, 3> x{};
+    if (!(fields >> tag >> x[0] >> x[1] >> x[2])) return;  // Gmsh reports the broken line
+    const auto [it, added] = points.emplace(tag, x);
+    if (added || it->second == x) continue;
+    char where[200];
+    std::snprintf(where, sizeof where, " at (%.9g, %.9g, %.9g) and at (%.9g, %.9g, %.9g)",
+                  it->second[0], it->second[1], it->second[2], x[0], x[1], x[2]);
+    throw InputError({}, "node " + std::to_string(tag) + " is defined twice in $Nodes" + where +
+                             " (Gmsh would keep the last); every node needs its own tag");
+  }
+}
+
 /// In the reader process: opens `path` with Gmsh and sends the model or the error to the parent.
 /// Gmsh logs its errors (GmshSession) or throws a string, std::bad_alloc (an announced count
 /// beyond the memory limit) or a standard exception.
 void read_in_child(const std::string& path, ReadDims what, GmshSession& session, ChildOutput& out) {
   try {
+    refuse_v2_node_defined_twice(path);
     gmsh::open(path);
     session.check_input(path, "cannot read the mesh file");
     const RawGmshModel model = extract_model(what);

@@ -124,3 +124,7 @@ curved_nodes = [(0,0,0),(1,0,0),(0,1,0),(0,0,1),(0.9,0,0),(0.5,0.5,0),(0,0.5,0),
 open('curved-tet10.msh','w').write(v2(curved_nodes, [(9, 2, (1,3,2,7,6,5)),
                                                      (11, 1, (1,2,3,4,5,6,7,8,9,10))],
                                       [(3, 1, 'body'), (2, 2, 'bottom')]))
+# Gmsh 2.2 ASCII: node 8 listed twice, at (1, 1, 1) and at (1, 1, 1.5) (Gmsh keeps the last)
+twice = v2(unit, [(4, 1, t) for t in kuhn], [(3, 1, 'body')]).replace(
+    '$Nodes\n8\n', '$Nodes\n9\n').replace('8 1 1 1\n', '8 1 1 1\n8 1 1 1.5\n')
+open('duplicate-node-v2.msh', 'w').write(twice)
