@@ -2,7 +2,9 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -14,6 +16,22 @@
 namespace plisse {
 
 int mirror_planes(const std::vector<std::string>& symmetry_surfaces, const Mesh& mesh, double tol) {
+  // The body's extent along each axis, and the levels of the symmetry planes of a solid.
+  Vec3d low = Vec3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (const Vec3d& x : mesh.nodes) {
+    low = low.cwiseMin(x);
+    high = high.cwiseMax(x);
+  }
+  const double size = std::max({low.cwiseAbs().maxCoeff(), high.cwiseAbs().maxCoeff(), 1.0});
+  std::array<std::vector<double>, 3> levels;
+  for (const std::string& surface : symmetry_surfaces) {
+    const auto tag = mesh.surface_tags.find(surface);
+    if (shell_edge_tag(mesh, surface) || tag == mesh.surface_tags.end() || tag->second.empty())
+      continue;
+    const int axis = coordinate_plane_axis(mesh, tag->second, tol);
+    if (axis >= 0) levels[axis].push_back(mesh.nodes[mesh.triangles[tag->second.front()][0]][axis]);
+  }
+  const auto near = [&](double a, double b) { return std::abs(a - b) <= tol * size; };
   int planes = 0;
   for (const std::string& surface : symmetry_surfaces) {
     if (const std::vector<int>* edges = shell_edge_tag(mesh, surface)) {
@@ -31,7 +49,18 @@ int mirror_planes(const std::vector<std::string>& symmetry_surfaces, const Mesh&
       for (int v : mesh.triangles[t])
         extent = std::max(extent, mesh.nodes[v].cwiseAbs().maxCoeff());
     const double level = mesh.nodes[mesh.triangles[tag->second.front()][0]][axis];
-    if (std::abs(level) <= tol * std::max(extent, 1.0)) planes |= 1 << axis;
+    if (std::abs(level) > tol * std::max(extent, 1.0)) continue;
+    // A mirror plane is a cut through the whole body, of which the model is the part on one
+    // side: not a plane with the body on both sides of it.
+    if (low[axis] < -tol * size && high[axis] > tol * size) continue;
+    // Symmetry on the body's far face along the same axis too: the model is a slice between two
+    // symmetry planes (plane strain, or a periodic structure), of a body with no end along that
+    // axis; there is no whole body to sum over, and the plane at 0 mirrors nothing.
+    const double far = high[axis] > tol * size ? high[axis] : low[axis];
+    if (std::any_of(levels[axis].begin(), levels[axis].end(),
+                    [&](double l) { return near(l, far) && !near(far, 0.0); }))
+      continue;
+    planes |= 1 << axis;
   }
   return planes;
 }

@@ -31,9 +31,11 @@ int coordinate_plane_axis(const Mesh& mesh, const std::vector<int>& triangles, d
 
 /// The mirror planes of a model: bit k (1: x = 0, 2: y = 0, 4: z = 0) is set when one of the
 /// `symmetry` conditions' surfaces `symmetry_surfaces` lies in the plane x_k = 0 (within `tol` of
-/// the surface's extent). The planes that double a volume or force for the whole body
-/// (cavity_volume.hpp, full_body_factor); a plane that merely closes a cavity, such as the base
-/// under a bulged sheet, is not one.
+/// the surface's extent), the body lies on one side of that plane, and no symmetry surface of a
+/// solid lies in the body's far face along the same axis (a slice between two symmetry planes,
+/// plane strain or a periodic structure, has no whole body to sum over). The planes that double
+/// a volume or force for the whole body (cavity_volume.hpp, full_body_factor); a plane that
+/// merely closes a cavity, such as the base under a bulged sheet, is not one.
 int mirror_planes(const std::vector<std::string>& symmetry_surfaces, const Mesh& mesh,
                   double tol = 1e-8);
 

@@ -27,6 +27,20 @@ TermKind gravity_load_kind() {
          });
   d.check_mesh = [](const S&, const TermMeshCheck&) {};
   d.make = [](const S& load, const TermContext& c) -> std::unique_ptr<ModelTerm> {
+    // The mirror image of a weight with a component normal to a mirror plane points the other
+    // way: no body weighs so. A body resting on the plane is supported there, not mirrored.
+    for (int k = 0; k < 3; ++k)
+      if ((c.mirrors & (1 << k)) != 0 && load.acceleration[k] != 0.0) {
+        const char axis = "xyz"[k];
+        const std::string roller = k == 0 ? "[0, ~, ~]" : k == 1 ? "[~, 0, ~]" : "[~, ~, 0]";
+        throw InputError(load.place,
+                         "gravity '" + load.name + "' has a component along " + axis +
+                             ", normal to the mirror plane " + axis +
+                             " = 0 (a `symmetry` condition there): the mirrored half would weigh "
+                             "the other way. A body resting on that plane is supported, not "
+                             "mirrored: hold it with `type: displacement, value: " +
+                             roller + "` (a roller), which mirrors nothing");
+      }
     return std::make_unique<BodyForce>(c.mesh, load.name, load.acceleration, load.ramp,
                                        c.element_densities());
   };

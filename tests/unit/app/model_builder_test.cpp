@@ -129,6 +129,37 @@ TEST(ModelBuilder, RampsOfMotionsBeyondTheEndTimeAreWarnedAboutToo) {
       << warnings[2].rule();
 }
 
+// A body resting under its weight on a `symmetry` plane: the plane is a mirror, whose image would
+// weigh the other way; refused with the roller that supports it instead.
+TEST(ModelBuilder, GravityNormalToAMirrorPlaneIsRefusedNamingTheRoller) {
+  const std::string base =
+      "mesh: {generate: cube, edge: 2.0, divisions: 1}\n"
+      "element: mini\n"
+      "material: {model: neo-hookean, c1: 0.2, density: 1.0e-9}\n"
+      "loads: [{type: gravity, name: g, acceleration: [0, 0, -9810]}]\n";
+  const Case mirrored =
+      parse_case_string(base + "boundary: [{type: symmetry, surface: bottom}]\n", "c.yaml");
+  const Mesh mesh = load_case_mesh(mirrored);
+  try {
+    (void)build_model_parts(mirrored, mesh);
+    ADD_FAILURE() << "gravity normal to a mirror plane was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("gravity 'g' has a component along z, normal to the "
+                                         "mirror plane z = 0"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("`type: displacement, value: [~, ~, 0]`"),
+              std::string::npos)
+        << e.what();
+  }
+  const Case roller = parse_case_string(
+      base +
+          "boundary: [{type: displacement, surface: bottom, value: [~, ~, 0]},\n"
+          "           {type: symmetry, surface: left}, {type: symmetry, surface: front}]\n",
+      "c.yaml");
+  EXPECT_NO_THROW((void)build_model_parts(roller, load_case_mesh(roller)));
+}
+
 // Gravity on a shell (loads.md, L6s), where `element: shell` refused it before: the generated sheet
 // of 20 × 10 mm, 0.5 mm thick, clamped at one end, passes the case's checks against its mesh, and
 // the load's resultant is the sheet's weight ρ g A t = 1e-9 × 9810 × 200 × 0.5 = 9.81e-4 N along
