@@ -41,7 +41,8 @@ TEST(CheckCommand, OverridesApply) {
 TEST(CheckCommand, EverySectionParsesButAnOpenCavityWallIsRefused) {
   // complete.yaml uses every key; its cavities sit on open faces of a cube, which the parser
   // accepts and the physics check (the same as `plisse run`) refuses at the cavity's surface key.
-  // (Without the overrides the first refusal is the imperfection: a cube has no wall thickness.)
+  // (Without the overrides the first refusal is the imperfection: a cube has no wall thickness;
+  // then the incremental scheme, which `plisse run` cannot solve and `plisse check` refuses too.)
   Result r = run_plisse("check " + kCases + "complete.yaml");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("complete.yaml:54:3: key 'solver.stability'"), std::string::npos)
@@ -49,6 +50,14 @@ TEST(CheckCommand, EverySectionParsesButAnOpenCavityWallIsRefused) {
   r = run_plisse("check " + kCases +
                  "complete.yaml --set solver.stability.imperfection=0 "
                  "--set solver.stability.branch_switch=false --set 'output.wrinkles.rings_deg=[]'");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("key 'solver.scheme': only the total-lagrangian scheme"),
+            std::string::npos)
+      << r.output;
+  r = run_plisse("check " + kCases +
+                 "complete.yaml --set solver.stability.imperfection=0 "
+                 "--set solver.stability.branch_switch=false --set 'output.wrinkles.rings_deg=[]' "
+                 "--set solver.scheme=total-lagrangian");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("complete.yaml:26:30: key 'cavities[0].surface'"), std::string::npos)
       << r.output;
