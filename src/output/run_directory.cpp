@@ -83,11 +83,16 @@ std::string system_reason(int error_number) {
   return std::generic_category().message(error_number);
 }
 
-bool is_run_file_name(std::string_view name) {
-  static const std::set<std::string, std::less<>> kNames = {
+/// The names of a run's files other than its step files.
+const std::set<std::string, std::less<>>& run_file_names() {
+  static const std::set<std::string, std::less<>> names = {
       "history.csv",    "summary.json",         "solution.pvd", "log.txt",
       "checkpoint.bin", "wrinkle_spectrum.csv", "wrinkles.json"};
-  return kNames.count(name) > 0 || is_step_file(name);
+  return names;
+}
+
+bool is_run_file_name(std::string_view name) {
+  return run_file_names().count(name) > 0 || is_step_file(name);
 }
 
 /// The name of the first symbolic link in `directory` at a name a run or `plisse wrinkles`
@@ -99,17 +104,10 @@ std::string linked_run_file(const std::filesystem::path& directory) {
     if (entry.is_symlink(error) && is_run_file_name(name)) return name;
   }
   return {};
-/// The names of a run's files other than its step files.
-const std::set<std::string, std::less<>>& run_file_names() {
-  static const std::set<std::string, std::less<>> names = {
-      "history.csv",    "summary.json",         "solution.pvd", "log.txt",
-      "checkpoint.bin", "wrinkle_spectrum.csv", "wrinkles.json"};
-  return names;
 }
 
 }  // namespace
 
-std::vector<std::filesystem::path> run_files(const std::filesystem::path& directory) {
 std::string output_path_problem(const std::filesystem::path& directory) {
   namespace fs = std::filesystem;
   std::error_code error;
@@ -125,8 +123,7 @@ std::string output_path_problem(const std::filesystem::path& directory) {
   for (const auto& entry : fs::directory_iterator(normal, error)) {
     const std::string name = entry.path().filename().string();
     if (!entry.is_directory(error)) continue;
-    if (run_file_names().count(name) > 0 || is_step_file(name) || name == DirectoryLock::kFileName)
-      taken.push_back(name);
+    if (is_run_file_name(name) || name == DirectoryLock::kFileName) taken.push_back(name);
   }
   if (taken.empty()) return {};
   std::sort(taken.begin(), taken.end());
@@ -137,7 +134,6 @@ std::string output_path_problem(const std::filesystem::path& directory) {
 }
 
 std::vector<std::filesystem::path> run_files(const std::filesystem::path& directory) {
-  const auto& kNames = run_file_names();
   std::vector<std::filesystem::path> files;
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {

@@ -84,7 +84,6 @@ TermKind cap_kind() {
   // On a shell the cap holds an edge tag's nodes (its rim) or a face tag's (caps.md, G8).
   d.check_mesh = [](const Cap& cap, const TermMeshCheck& check) { check.condition(cap.surface); };
   d.shell = true;
-  d.check_mesh = [](const Cap& cap, const TermMeshCheck& check) { check.surface(cap.surface); };
   // Its ramp matters once it moves, turns or pushes.
   d.ramps = [](const Cap& cap) {
     bool acts = !cap.force.isZero(0.0) || !cap.moment.isZero(0.0);
