@@ -53,6 +53,22 @@ int main(int argc, char** argv) {
   plisse::app::add_plot_command(app);
   plisse::app::add_wrinkles_command(app);
   plisse::app::add_fit_command(app);
+  // A first word that names no command is refused before anything else: CLI11 would answer
+  // `plisse NOSUCH --help` with the general help and exit status 0.
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string word = argv[1];
+    std::string names;
+    bool known = false;
+    for (const CLI::App* command : app.get_subcommands({})) {
+      known = known || command->get_name() == word;
+      names += (names.empty() ? "" : ", ") + command->get_name();
+    }
+    if (!known) {
+      error_stream() << "plisse: error: unknown command " << plisse::quoted_excerpt(word)
+                     << " (commands: " << names << "; plisse --help lists them)\n";
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -18,6 +18,17 @@ class Error : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// `text` in single quotes for a message; a text longer than 80 characters is cut to its first 60
+/// and its length said ("'abc…' (15000000 characters)"), so that a huge value does not flood the
+/// message that names it.
+inline std::string quoted_excerpt(const std::string& text) {
+  constexpr std::size_t kLongest = 80, kShown = 60;
+  if (text.size() <= kLongest) return "'" + text + "'";
+  std::size_t cut = kShown;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // UTF-8
+  return "'" + text.substr(0, cut) + "…' (" + std::to_string(text.size()) + " characters)";
+}
+
 /// Where in the user's input something is. Line and column are 1-based; 0 means unknown.
 struct InputPlace {
   std::string file;  ///< file name as given by the user, or "--set" / "command line"

@@ -42,6 +42,11 @@ std::string generated_blocks(const std::vector<std::string>& names,
 bool update_generated_blocks(const std::string& path,
                              const std::function<std::string(const std::string&)>& markdown) {
   const std::string doc = read_file(path);
+  // A file without a block would be left as it is and reported up to date: the wrong file.
+  if (doc.find("<!-- generated: ") == std::string::npos)
+    throw InputError(InputPlace{path, 0, 0, ""},
+                     "has no generated block (a line '<!-- generated: NAME -->'): it is not the "
+                     "manual this command writes (docs/case-file.md or docs/output.md)");
   const std::string fresh = refresh_generated_blocks(doc, markdown);
   if (fresh == doc) return false;
   write_file_atomically(path, fresh);

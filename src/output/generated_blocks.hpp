@@ -20,7 +20,7 @@ std::string generated_blocks(const std::vector<std::string>& names,
                              const std::function<std::string(const std::string&)>& markdown);
 
 /// Refreshes the blocks of the markdown file `path` in place (atomically, only when they
-/// changed) and returns whether they did.
+/// changed) and returns whether they did. InputError (exit status 2) when the file has no block.
 bool update_generated_blocks(const std::string& path,
                              const std::function<std::string(const std::string&)>& markdown);
 

@@ -157,7 +157,7 @@ std::string Field::describe() const {
   if (is_null()) return "nothing";
   if (value_.IsSequence()) return "a list of " + std::to_string(value_.size()) + " items";
   if (value_.IsMap()) return "a map";
-  return "'" + value_.Scalar() + "'";
+  return quoted_excerpt(value_.Scalar());
 }
 
 std::string Field::scalar_for_number(const char* what) const {
@@ -177,7 +177,7 @@ double Field::real(const Range& range) const {
     fail("the number " + s +
          " is outside the range of double precision (magnitudes from about "
          "2.2e-308 to 1.8e308, or 0)");
-  if (parsed != Parsed::ok) fail("expected a number, got '" + s + "'");
+  if (parsed != Parsed::ok) fail("expected a number, got " + quoted_excerpt(s));
   if (const auto why = range.violation(v)) fail(*why);
   return v;
 }
@@ -187,7 +187,7 @@ int Field::integer(const Range& range) const {
   long long v = 0;
   const Parsed parsed = parse_integer(s, v);
   if (parsed == Parsed::out_of_range) fail("integer out of range (got " + s + ")");
-  if (parsed != Parsed::ok) fail("expected an integer, got '" + s + "'");
+  if (parsed != Parsed::ok) fail("expected an integer, got " + quoted_excerpt(s));
   if (const auto why = range.violation(static_cast<double>(v))) fail(*why);
   if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
     fail("integer out of range (got " + s + ")");
@@ -221,7 +221,7 @@ std::string Field::name() const {
 }
 
 void Field::fail_choice(const std::string& word, const std::vector<std::string>& names) const {
-  std::string rule = "must be one of: " + join(names) + " (got '" + word + "')";
+  std::string rule = "must be one of: " + join(names) + " (got " + quoted_excerpt(word) + ")";
   if (const auto guess = closest_match(word, names)) rule += "; did you mean '" + *guess + "'?";
   fail(rule);
 }
@@ -300,7 +300,7 @@ void FieldMap::check_keys(const std::vector<std::string>& allowed, const std::st
     if (std::find(other_variants.begin(), other_variants.end(), name) != other_variants.end())
       field.fail_at_key("'" + name + "' does not apply to " + variant +
                         "; allowed keys here: " + list);
-    std::string rule = "unknown key '" + name + "'";
+    std::string rule = "unknown key " + quoted_excerpt(name);
     if (!self_.path().empty()) rule += " in '" + self_.path() + "'";
     if (const auto guess = closest_match(name, allowed))
       rule += " (did you mean '" + *guess + "'?)";

@@ -16,7 +16,7 @@ std::string ReadContext::unique_name(const Field& f) {
   const auto [it, inserted] = names.try_emplace(name, entry, f.place());
   if (!inserted) {
     const InputPlace& first = it->second.second;
-    f.fail("name '" + name + "' is already used by " + it->second.first +
+    f.fail("name " + quoted_excerpt(name) + " is already used by " + it->second.first +
            (first.line > 0 ? " (line " + std::to_string(first.line) + ")" : std::string()) +
            "; names of boundary conditions, loads, cavities, dies, caps, contacts and probes must "
            "be unique");

@@ -338,12 +338,15 @@ bool LoadStepper::cut_back(const NewtonResult& newton, const std::string& failur
   std::snprintf(line, sizeof line,
                 "step %d: t = %.6g failed after %d iterations: ", result.steps + 1, t_new,
                 newton.iterations);
+  char steps[160];
+  std::snprintf(steps, sizeof steps, "; the next step %.6g would be below the minimum %.6g", new_dt,
+                min_dt);
   if (new_dt < min_dt) {
-    result.failure = std::string(line) + failure + "; step " + std::to_string(new_dt) +
-                     " below the minimum " + std::to_string(min_dt);
+    result.failure = std::string(line) + failure + steps;
     return false;
   }
-  log("  " + std::string(line) + failure + "; cutting the step to " + std::to_string(new_dt));
+  std::snprintf(steps, sizeof steps, "; cutting the step to %.6g", new_dt);
+  log("  " + std::string(line) + failure + steps);
   current_.dt = new_dt;
   return true;
 }

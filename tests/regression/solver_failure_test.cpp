@@ -28,6 +28,8 @@ TEST(SolverFailure, StopsWithExitStatus1AndNamesStepElementAndReason) {
   EXPECT_NE(text.find("step "), std::string::npos) << text;
   EXPECT_NE(text.find("worst element"), std::string::npos) << text;
   EXPECT_NE(text.find("below the minimum"), std::string::npos) << text;
+  // Step sizes in significant digits, not six decimals (a small minimum read "0.000000").
+  EXPECT_EQ(text.find("0.000000"), std::string::npos) << text;
   const auto summary = read_json_file(dir / "summary.json");
   EXPECT_FALSE(summary["completed"].get<bool>());
   EXPECT_NE(summary["failure"].get<std::string>().find("worst element"), std::string::npos);

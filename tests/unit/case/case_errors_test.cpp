@@ -105,6 +105,29 @@ TEST(CaseErrors, WrongTypes) {
                      "expected a text value");
 }
 
+// A huge value (a generated file, a pasted blob) is named by its first 60 characters and its
+// length, not quoted whole into the message.
+TEST(CaseErrors, HugeValuesAreCutInTheMessage) {
+  const std::string head = "mesh: {generate: cube}\nmaterial:\n  model: neo-hookean\n";
+  const InputError number = case_error(head + "  c1: " + std::string(1000000, 'x') + "\n");
+  EXPECT_NE(number.rule().find("expected a number, got '" + std::string(60, 'x') +
+                               "…' (1000000 characters)"),
+            std::string::npos)
+      << number.rule().substr(0, 200);
+  EXPECT_LT(number.rule().size(), 200u);
+  const InputError key = case_error(head + "  c1: 1\n  " + std::string(5000, 'k') + ": 2\n");
+  EXPECT_NE(key.rule().find("unknown key '" + std::string(60, 'k') + "…' (5000 characters)"),
+            std::string::npos)
+      << key.rule().substr(0, 200);
+  EXPECT_LT(key.rule().size(), 1000u);
+  EXPECT_EQ(quoted_excerpt("short"), "'short'");
+  // A cut never splits a UTF-8 character: 59 letters, then two-byte ones (the 60th byte is the
+  // first half of one, so the cut keeps 59).
+  std::string accents(59, 'a');
+  for (int i = 0; i < 20; ++i) accents += "é";
+  EXPECT_EQ(quoted_excerpt(accents), "'" + std::string(59, 'a') + "…' (99 characters)");
+}
+
 TEST(CaseErrors, IntegersMustBeIntegers) {
   EXPECT_INPUT_ERROR(case_error("mesh: {generate: spherical-shell, layers: 3.5}\nmaterial: {model: "
                                 "neo-hookean, c1: 1}\n"),

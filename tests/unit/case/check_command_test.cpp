@@ -16,6 +16,26 @@ Result run_plisse(const std::string& args) { return plisse::test::run_plisse_cap
 
 const std::string kCases = std::string(PLISSE_SOURCE_DIR) + "/tests/data/cases/";
 
+// A first word that names no command is refused with exit status 2, also with --help (CLI11 alone
+// printed the general help and exited 0); `case-keys --update` on a file that has no generated
+// block is refused instead of reported "up to date".
+TEST(CommandLine, UnknownCommandAndAManualWithoutBlocksExitTwo) {
+  Result r = run_plisse("NOSUCH --help");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("unknown command 'NOSUCH' (commands: run, check"), std::string::npos)
+      << r.output;
+  r = run_plisse("NOSUCH");
+  EXPECT_EQ(r.status, 2) << r.output;
+  r = run_plisse("--version");
+  EXPECT_EQ(r.status, 0) << r.output;
+  const std::string readme = std::string(PLISSE_SOURCE_DIR) + "/README.md";
+  for (const char* command : {"case-keys", "outputs"}) {
+    r = run_plisse(std::string(command) + " --update " + readme);
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("has no generated block"), std::string::npos) << r.output;
+  }
+}
+
 TEST(CheckCommand, ValidCaseExitsZeroWithASummary) {
   const std::string balloon = std::string(PLISSE_SOURCE_DIR) + "/examples/balloon-limit-point.yaml";
   const Result r = run_plisse("check " + balloon);
