@@ -133,6 +133,7 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
       columns_(c, model, meter),
       previous_state_(model.state()),
       last_checkpoint_(WallClock::now()) {
+  if (resume) start_time_ = resume->time;
   // Drucker's condition in principal stretches holds for isotropic models only. The model's
   // materials are the case's `material`, then one per deformable region in the case's order.
   // Past the sections' own models come only per-element copies (fibres in a shell's frame),
@@ -370,7 +371,7 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
   summary["reused_factor_solves"] = result.reused_solves;
   summary["krylov_steps"] = result.krylov_steps;
   summary["cutbacks"] = result.cutbacks;
-  summary["final_time"] = last_step_.time;
+  summary["final_time"] = last_step_.step > 0 ? last_step_.time : start_time_;
   const PhaseTimes phases = stepper_.times();
   summary["factorisations"] = phases.factorisations;
   if (result.newton_iterations > 0) {

@@ -126,6 +126,9 @@ class RunRecorder {
   std::optional<WrinkleMeter::Result> last_wrinkles_;
   nlohmann::json instabilities_ = nlohmann::json::array();
   StepInfo last_step_;
+  /// The time of the resumed checkpoint (0 for a fresh run): a resumed run that has no step
+  /// left records no step, and its summary's final_time is this one.
+  double start_time_ = 0.0;
   std::vector<WatchedMaterial> watched_;
   /// Per material index of the case's sections (the case's `material`, then the deformable
   /// regions'): its entry in watched_, or -1.

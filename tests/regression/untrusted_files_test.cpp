@@ -106,9 +106,10 @@ TEST(UntrustedFiles, SparseFilesThatClaimHundredsOfGigabytesAreRefusedUnread) {
 
   const fs::path run = dir / "run";
   ASSERT_EQ(plisse("run " + kCube + " --set solver.steps=2 -o " + run.string()).status, 0);
+  // Its magic number but no version after it: refused from its first bytes, unread.
   sparse(run / "checkpoint.bin", "PLISSECK");
   expect_refused(plisse("run " + kCube + " --set solver.steps=2 --resume " + run.string()),
-                 "its reader accepts");
+                 "not a usable plisse checkpoint: written by another version");
   sparse(run / "summary.json", "{");
   expect_refused(plisse("wrinkles " + run.string()), "its reader accepts");
   sparse(dir / "big.yaml", "title: x\n");

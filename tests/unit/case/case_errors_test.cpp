@@ -115,8 +115,9 @@ TEST(CaseErrors, HugeValuesAreCutInTheMessage) {
             std::string::npos)
       << number.rule().substr(0, 200);
   EXPECT_LT(number.rule().size(), 200u);
-  const InputError key = case_error(head + "  c1: 1\n  " + std::string(5000, 'k') + ": 2\n");
-  EXPECT_NE(key.rule().find("unknown key '" + std::string(60, 'k') + "…' (5000 characters)"),
+  // yaml-cpp refuses plain keys over 1024 characters itself ("illegal map value").
+  const InputError key = case_error(head + "  c1: 1\n  " + std::string(500, 'k') + ": 2\n");
+  EXPECT_NE(key.rule().find("unknown key '" + std::string(60, 'k') + "…' (500 characters)"),
             std::string::npos)
       << key.rule().substr(0, 200);
   EXPECT_LT(key.rule().size(), 1000u);
