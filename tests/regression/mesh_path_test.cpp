@@ -9,6 +9,7 @@
 #include <fstream>
 #include <string>
 
+#include "support/inflated_octant.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {
@@ -20,18 +21,10 @@ using test::scratch_directory;
 
 /// An octant of an inflated spherical shell read from shell.msh beside the case, two steps, with
 /// one wrinkle ring (so that `plisse wrinkles` has something to measure).
-const char* const kCase =
-    "mesh: {file: shell.msh, thickness: 1.0}\n"
-    "element: mini\n"
-    "material: {model: neo-hookean, c1: 0.5}\n"
-    "boundary:\n"
-    "  - {type: symmetry, surface: sym_x}\n"
-    "  - {type: symmetry, surface: sym_y}\n"
-    "  - {type: symmetry, surface: sym_z}\n"
-    "loads:\n"
-    "  - {type: pressure, name: p, surface: inner, value: 0.02}\n"
-    "solver: {steps: 2}\n"
-    "output: {wrinkles: {axis: y, rings_deg: [45]}}\n";
+const std::string kCase =
+    test::inflated_octant_case("mesh: {file: shell.msh, thickness: 1.0}\n",
+                               "solver: {steps: 2}\n"
+                               "output: {wrinkles: {axis: y, rings_deg: [45]}}\n");
 
 /// `plisse ARGS` run in the working directory `cwd`.
 test::PlisseResult run_in(const fs::path& cwd, const std::string& args) {

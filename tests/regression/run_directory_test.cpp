@@ -28,6 +28,7 @@
 #include "output/json_file.hpp"
 #include "output/pvd_writer.hpp"
 #include "output/vtu_reader.hpp"
+#include "support/inflated_octant.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {
@@ -134,18 +135,10 @@ TEST(RunDirectory, AnOverwriteRefusedByALateCheckLeavesTheEarlierRun) {
   EXPECT_EQ(snapshot(earlier), before);
   // Wrinkle rings asked to count from beyond the largest count their spectra reach.
   const fs::path shell = dir / "shell.yaml";
-  std::ofstream(shell)
-      << "mesh: {generate: spherical-shell, inner_radius: 10.0, thickness: 1.0, layers: 1,\n"
-         "       element_size: 4.0, symmetry: octant, order: 1}\n"
-         "element: mini\n"
-         "material: {model: neo-hookean, c1: 0.5}\n"
-         "boundary:\n"
-         "  - {type: symmetry, surface: sym_x}\n"
-         "  - {type: symmetry, surface: sym_y}\n"
-         "  - {type: symmetry, surface: sym_z}\n"
-         "loads: [{type: pressure, name: p, surface: inner, value: 0.02}]\n"
-         "solver: {steps: 1}\n"
-         "output: {wrinkles: {axis: y, rings_deg: [45], min_count: 201}}\n";
+  std::ofstream(shell) << test::inflated_octant_case(
+      test::kSmallOctantMesh,
+      "solver: {steps: 1}\n"
+      "output: {wrinkles: {axis: y, rings_deg: [45], min_count: 201}}\n");
   for (const std::string& args :
        {"check " + shell.string(),
         "run " + shell.string() + " --overwrite -o " + earlier.string()}) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "support/inflated_octant.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {
@@ -21,18 +22,9 @@ const std::string kLimits = "ulimit -v 4194304; timeout 60 ";
 
 /// A small shell of wrinkle rings: its runs write every file a run directory can hold.
 const std::string kCase =
-    "mesh: {generate: spherical-shell, inner_radius: 10.0, thickness: 1.0, layers: 1,\n"
-    "       element_size: 4.0, symmetry: octant}\n"
-    "element: mini\n"
-    "material: {model: neo-hookean, c1: 0.5}\n"
-    "boundary:\n"
-    "  - {type: symmetry, surface: sym_x}\n"
-    "  - {type: symmetry, surface: sym_y}\n"
-    "  - {type: symmetry, surface: sym_z}\n"
-    "loads:\n"
-    "  - {type: pressure, name: p, surface: inner, value: 0.02}\n"
-    "solver: {steps: 2}\n"
-    "output: {wrinkles: {axis: y, rings_deg: [45]}}\n";
+    test::inflated_octant_case(test::kSmallOctantMesh,
+                               "solver: {steps: 2}\n"
+                               "output: {wrinkles: {axis: y, rings_deg: [45]}}\n");
 
 std::string text_of(const fs::path& file) {
   std::ifstream in(file);

@@ -18,6 +18,7 @@
 #include <string>
 #include <utility>
 
+#include "support/inflated_octant.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {
@@ -172,18 +173,9 @@ TEST(UntrustedFiles, PetscViewsInBinaryWriteNoFileUnderCheckOrRun) {
 
 /// A small shell with a wrinkle ring: its runs write every file plisse wrinkles and plot read.
 const std::string kShell =
-    "mesh: {generate: spherical-shell, inner_radius: 10.0, thickness: 1.0, layers: 1,\n"
-    "       element_size: 4.0, symmetry: octant}\n"
-    "element: mini\n"
-    "material: {model: neo-hookean, c1: 0.5}\n"
-    "boundary:\n"
-    "  - {type: symmetry, surface: sym_x}\n"
-    "  - {type: symmetry, surface: sym_y}\n"
-    "  - {type: symmetry, surface: sym_z}\n"
-    "loads:\n"
-    "  - {type: pressure, name: p, surface: inner, value: 0.02}\n"
-    "solver: {steps: 2, max_steps: 4}\n"
-    "output: {wrinkles: {axis: y, rings_deg: [45]}}\n";
+    test::inflated_octant_case(test::kSmallOctantMesh,
+                               "solver: {steps: 2, max_steps: 4}\n"
+                               "output: {wrinkles: {axis: y, rings_deg: [45]}}\n");
 
 std::string bytes_of(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
