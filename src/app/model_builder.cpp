@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <set>
@@ -17,6 +18,7 @@
 #include "physics/follower_traction.hpp"
 #include "physics/pressure_load.hpp"
 #include "physics/rigid_cap.hpp"
+#include "physics/rigid_motion.hpp"
 #include "physics/surface.hpp"
 #include "physics/surface_contact.hpp"
 #include "physics/viscous_damping.hpp"
@@ -209,61 +211,52 @@ void add_rigid_constraints(const Case& c, const Mesh& mesh, const ElementMateria
 
 }  // namespace
 
-void check_rigid_pieces(const Case& c, const Mesh& mesh,
-                        const std::vector<ConstrainedComponent>& constraints) {
-  // Dies, surface contacts and caps can hold a piece, and viscosity (solver.viscosity) makes a
-  // free one solvable: then the pieces are not judged.
-  if (!c.terms_in("dies").empty() || !c.terms_in("contacts").empty() ||
-      !c.terms_in("caps").empty() || c.solver.viscosity > 0.0)
-    return;
-  std::vector<int> parent(mesh.n_nodes());
-  for (int v = 0; v < mesh.n_nodes(); ++v) parent[v] = v;
-  const auto root = [&](int v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  // The elements: the tetrahedra, or a shell's triangles.
-  const bool shell = mesh.is_shell();
-  std::vector<int> element_nodes;
-  const int width = shell ? 3 : 4;
-  if (shell)
-    for (const auto& t : mesh.triangles)
-      element_nodes.insert(element_nodes.end(), t.begin(), t.end());
-  else
-    for (const auto& t : mesh.tets) element_nodes.insert(element_nodes.end(), t.begin(), t.end());
-  const std::size_t n_elements = element_nodes.size() / static_cast<std::size_t>(width);
-  const auto node_of = [&](std::size_t e, int k) {
-    return element_nodes[e * static_cast<std::size_t>(width) + static_cast<std::size_t>(k)];
-  };
-  for (std::size_t e = 0; e < n_elements; ++e)
-    for (int k = 1; k < width; ++k) parent[root(node_of(e, k))] = root(node_of(e, 0));
-  std::vector<char> held(mesh.n_nodes(), 0);
-  for (const ConstrainedComponent& cc : constraints) held[root(cc.node)] = 1;
-  std::vector<int> elements_of(mesh.n_nodes(), 0);
-  for (std::size_t e = 0; e < n_elements; ++e) ++elements_of[root(node_of(e, 0))];
-  int pieces = 0, free_piece = -1;
-  for (int v = 0; v < mesh.n_nodes(); ++v) {
-    if (root(v) != v || elements_of[v] == 0) continue;
-    ++pieces;
-    if (!held[v] && free_piece < 0) free_piece = v;
+void check_rigid_pieces(const Case& c, const Mesh& mesh, const ModelParts& parts) {
+  // Surface contacts can hold one piece against another, and viscosity (solver.viscosity) makes
+  // a free one solvable: then the pieces are not judged.
+  if (!c.terms_in("contacts").empty() || c.solver.viscosity > 0.0) return;
+  // The supports at the first step's end: the dies that touch the body by then, the caps.
+  const double t1 = c.solver.end_time / c.solver.steps;
+  std::vector<RigidHold> holds;
+  for (const auto& term : parts.terms) {
+    std::vector<RigidHold> more = term->rigid_holds(t1);
+    holds.insert(holds.end(), std::make_move_iterator(more.begin()),
+                 std::make_move_iterator(more.end()));
   }
-  if (free_piece < 0) return;
-  Vec3d centre = Vec3d::Zero();
-  int n = 0;
-  for (int v = 0; v < mesh.n_nodes(); ++v)
-    if (root(v) == free_piece) {
-      centre += mesh.nodes[v];
-      ++n;
-    }
-  centre /= std::max(n, 1);
-  char text[320];
-  std::snprintf(text, sizeof text,
-                "%s of %d %s (centred near [%.4g, %.4g, %.4g]) is held by no boundary "
-                "condition: it can move as a rigid body, so the tangent is singular; fix or "
-                "prescribe some of its displacements, or add solver.viscosity",
-                pieces > 1 ? "a piece of the mesh" : "the body", elements_of[free_piece],
-                shell ? "triangles" : "tetrahedra", centre.x(), centre.y(), centre.z());
-  throw InputError({c.path, 0, 0, "boundary"}, text);
+  const std::vector<FreePiece> free = free_rigid_motions(mesh, parts.constraints, holds);
+  if (free.empty()) return;
+  const FreePiece& piece = free.front();
+  char head[200];
+  std::snprintf(head, sizeof head, "%s of %d %s (centred near [%.4g, %.4g, %.4g])",
+                piece.n_pieces > 1 ? "a piece of the mesh" : "the body", piece.n_elements,
+                mesh.is_shell() ? "triangles" : "tetrahedra", piece.centre.x(), piece.centre.y(),
+                piece.centre.z());
+  if (piece.motions.size() == 6)
+    throw InputError({c.path, 0, 0, "boundary"},
+                     std::string(head) +
+                         " is held by no boundary condition, die or cap: it can move as a rigid "
+                         "body, so the tangent is singular; fix or prescribe some of its "
+                         "displacements, or add solver.viscosity");
+  std::string ways;
+  for (std::size_t k = 0; k < piece.motions.size(); ++k)
+    ways += (k == 0                          ? ""
+             : k + 1 == piece.motions.size() ? " and "
+                                             : ", ") +
+            piece.motions[k].describe();
+  const int node = piece.nodes.front();
+  const Vec3d& x = mesh.nodes[static_cast<std::size_t>(node)];
+  char where[160];
+  std::snprintf(where, sizeof where, "node %d at [%.6g, %.6g, %.6g]", node, x.x(), x.y(), x.z());
+  char when[64];
+  std::snprintf(when, sizeof when, "%g", t1);
+  throw InputError(
+      {c.path, 0, 0, "boundary"},
+      std::string(head) + " can still move as a rigid body by " + ways + " (" + where +
+          " moves so): nothing holds " + (piece.motions.size() > 1 ? "these" : "this") +
+          ", so the tangent is singular. Hold it by a boundary condition (a symmetry plane "
+          "holds only the motion across it), a cap, a sticking die that touches the body at "
+          "t = 0, or a die that presses into it by the first step's end (t = " +
+          when + "); or add solver.viscosity");
 }
 
 ModelParts build_model_parts(const Case& c, const Mesh& mesh) {

@@ -35,13 +35,14 @@ struct ModelParts {
 /// PETSc. Throws InputError at the offending key. Borrows `mesh`.
 ModelParts build_model_parts(const Case& c, const Mesh& mesh);
 
-/// A piece of the mesh (tetrahedra connected through nodes) with no node in `constraints` moves
-/// as a rigid body: the tangent is singular and every step would fail after its cut-backs.
-/// Throws InputError (key `boundary`) naming the piece's size and centre; cases with dies,
-/// contacts, caps or solver.viscosity, which can hold or stabilise a piece, are not judged.
+/// A piece of the mesh (tetrahedra, or a shell's triangles, connected through nodes) that some
+/// rigid motion moves without meeting a constrained component of `parts`, a die that touches it by
+/// the first step's end or a cap's prescribed motion (physics/rigid_motion.hpp): the tangent is
+/// singular and every step would fail after its cut-backs. Throws InputError (key `boundary`)
+/// naming the piece's size and centre, the free motions and a node they move; cases with surface
+/// contacts or solver.viscosity, which can hold or stabilise a piece, are not judged.
 /// `plisse check` and `plisse run` call it after build_model_parts.
-void check_rigid_pieces(const Case& c, const Mesh& mesh,
-                        const std::vector<ConstrainedComponent>& constraints);
+void check_rigid_pieces(const Case& c, const Mesh& mesh, const ModelParts& parts);
 
 /// The model of `parts` on `mesh` (borrowed). Needs a live PetscSession.
 std::unique_ptr<MixedModel> make_model(const Mesh& mesh, ModelParts parts);

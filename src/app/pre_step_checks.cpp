@@ -43,7 +43,7 @@ void check_curved_elements(const Case& c, const Mesh& mesh, const ModelParts*) {
 }
 
 void check_pieces(const Case& c, const Mesh& mesh, const ModelParts* parts) {
-  check_rigid_pieces(c, mesh, parts->constraints);
+  check_rigid_pieces(c, mesh, *parts);
 }
 
 }  // namespace

@@ -349,6 +349,34 @@ std::pair<int, int> DieContact::sticking_and_sliding(double t, std::span<const d
   return count_sticking_and_sliding(t, x, false);
 }
 
+std::vector<RigidHold> DieContact::rigid_holds(double t) const {
+  std::vector<RigidHold> holds;
+  const bool sticks = settings_.contact == ContactKind::coulomb && settings_.friction > 0.0;
+  for (size_t i = 0; i < nodes_.size(); ++i) {
+    const int node = nodes_[i];
+    const Vec3d& X = mesh_.nodes[static_cast<size_t>(node)];
+    bool all_ways = state_[i].glued;
+    if (!all_ways) {
+      if (areas_[i] == 0.0) continue;  // a second-order face's corner: glue only (D16)
+      DieGap gap;
+      bool deep = false;
+      try {
+        gap = die_.gap(X, t);
+      } catch (const Error&) {  // on a sphere's centre or a cylinder's axis: deep inside
+        deep = true;
+      }
+      // The penalty acts on a node only once it penetrates (D6: lambda_hat = -eps g > 0 with no
+      // multiplier yet); one that merely touches gives the first iterate no stiffness.
+      if (!deep && gap.g >= -settings_.touch_slack) continue;
+      all_ways = sticks || deep;
+      if (!all_ways) holds.push_back({{node}, X, gap.n, false});
+    }
+    if (all_ways)
+      for (int k = 0; k < 3; ++k) holds.push_back({{node}, X, Vec3d::Unit(k), false});
+  }
+  return holds;
+}
+
 std::optional<size_t> DieContact::index_of(int node) const {
   const auto it = std::lower_bound(nodes_.begin(), nodes_.end(), node);
   if (it == nodes_.end() || *it != node) return std::nullopt;

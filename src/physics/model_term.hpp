@@ -28,6 +28,18 @@ class TangentSink {
                    std::span<const double> values) = 0;
 };
 
+/// What a support holds of a rigid motion of the body, u(X) = a + w x (X - c): the component along
+/// `direction` of the displacement at `point` (a die touching a node, a cap's prescribed
+/// displacement), or with `rotation` the component of w along `direction` (a cap's prescribed
+/// rotation). `nodes` move with the support: one node for a die, a cap's tied nodes. A zero
+/// `direction` holds nothing but ties `nodes` together (a cap whose six motions are free).
+struct RigidHold {
+  std::vector<int> nodes;
+  Vec3d point = Vec3d::Zero();
+  Vec3d direction = Vec3d::UnitZ();  ///< unit
+  bool rotation = false;
+};
+
 /// One value per mesh node, written as a point field of the step files.
 struct NodeField {
   std::string name;
@@ -79,6 +91,10 @@ class ModelTerm {
   virtual std::vector<double> history_values(double /*t*/, std::span<const double> /*x*/) const {
     return {};
   }
+  /// What the term holds of a rigid motion of the body in its reference configuration, with its
+  /// own motion at time t (the first step's end): a die the nodes it touches then, a cap its
+  /// prescribed motions. Loads and cavities hold nothing.
+  virtual std::vector<RigidHold> rigid_holds(double /*t*/) const { return {}; }
   /// Point fields at (t, x), each with one value per mesh node (`n_nodes` of them).
   virtual std::vector<NodeField> node_fields(double /*t*/, std::span<const double> /*x*/,
                                              int /*n_nodes*/) const {

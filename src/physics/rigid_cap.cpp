@@ -46,6 +46,19 @@ RigidCap::RigidCap(const Cap& cap, const Mesh& mesh,
   if (mesh.is_shell()) refuse_free_turn_about_a_line(nodes);
 }
 
+std::vector<RigidHold> RigidCap::rigid_holds(double /*t*/) const {
+  std::vector<RigidHold> holds;
+  if (n_free_ == 0) {
+    for (const Tie& tie : ties_)
+      holds.push_back({{tie.node}, mesh_.nodes[tie.node], Vec3d::Unit(tie.component), false});
+    return holds;
+  }
+  for (int m = 0; m < 6; ++m)
+    if (free_index_[m] < 0) holds.push_back({nodes_, point_, Vec3d::Unit(m % 3), m >= 3});
+  if (holds.empty()) holds.push_back({nodes_, point_, Vec3d::Zero(), false});
+  return holds;
+}
+
 void RigidCap::refuse_free_turn_about_a_line(const std::set<int>& nodes) const {
   // The nodes' principal direction: the largest eigenvector of their scatter. They lie on a line
   // when the other two spreads are round-off against it.

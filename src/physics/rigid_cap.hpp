@@ -39,6 +39,11 @@ class RigidCap : public ModelTerm {
   std::vector<std::string> history_columns() const override;
   std::vector<double> history_values(double t, std::span<const double> x) const override;
 
+  /// A cap whose six motions are all prescribed holds each tie (its node, along its component);
+  /// otherwise it holds the body's motion along each prescribed one, its tied nodes moving as one
+  /// (exact when it ties every component of its nodes). A cap free in all six holds nothing but
+  /// ties its nodes together (a zero direction).
+  std::vector<RigidHold> rigid_holds(double t) const override;
   /// The cap's six motions (u_c, θ) at (t, x): prescribed ones from the ramp, free ones from x.
   std::array<double, 6> motion(double t, std::span<const double> x) const;
   int n_ties() const { return static_cast<int>(ties_.size()); }

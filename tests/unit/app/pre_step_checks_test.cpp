@@ -11,6 +11,7 @@
 #include <fstream>
 #include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "support/run_plisse.hpp"
@@ -79,6 +80,62 @@ TEST(PreStepChecks, CheckMakesEveryCheckRunMakes) {
                                                                          << r.output;
     }
     EXPECT_FALSE(fs::exists(out)) << "the refused run wrote " << out;
+  }
+}
+
+/// `plisse check` of a unit cube held across the symmetry planes x = 0 and y = 0 (free to slide
+/// along z) and by `support`, under its own weight.
+test::PlisseResult check_held_cube(const fs::path& dir, const std::string& name,
+                                   const std::string& support) {
+  const fs::path file = dir / (name + ".yaml");
+  std::ofstream(file) << "mesh: {generate: cube, edge: 1.0, divisions: 2}\n"
+                         "element: mini\n"
+                         "material: {model: neo-hookean, c1: 0.2, density: 1.0e-9}\n"
+                         "boundary:\n"
+                         "  - {type: symmetry, surface: left}\n"
+                         "  - {type: symmetry, surface: front}\n"
+                         "loads: [{name: weight, type: gravity, acceleration: [0, 0, -9810]}]\n"
+                      << support << "solver: {steps: 4}\n";
+  return test::run_plisse_captured("check '" + file.string() + "'",
+                                   "ulimit -v 4000000; timeout 60 ");
+}
+
+TEST(PreStepChecks, ASlidingBodyIsHeldByADieThatPressesInByTheFirstStepOrByACap) {
+  // The first step ends at t = 0.25. A plate at the face z = 0 that rises 0.4 mm over the run has
+  // pressed 0.1 mm into it by then; one that only touches it, or one that starts 0.5 mm below and
+  // rises 0.5 mm (it reaches the face at t = 1), holds nothing yet. A sticking plate glues the
+  // face from the start. A cap on the top face holds the slide when its z displacement is
+  // prescribed, not when it is free under a force.
+  const fs::path dir = test::scratch_directory("held-cube");
+  fs::create_directories(dir);
+  const std::string presses =
+      "dies: [{name: plate, shape: plane, point: [0, 0, 0], normal: [0, 0, 1], "
+      "contact: frictionless, surface: bottom, move: {displacement: [0, 0, 0.4]}}]\n";
+  const std::string touches =
+      "dies: [{name: plate, shape: plane, point: [0, 0, 0], normal: [0, 0, 1], "
+      "contact: frictionless, surface: bottom}]\n";
+  const std::string glues =
+      "dies: [{name: plate, shape: plane, point: [0, 0, 0], normal: [0, 0, 1], "
+      "contact: sticking, surface: bottom}]\n";
+  const std::string below =
+      "dies: [{name: plate, shape: plane, point: [0, 0, -0.5], normal: [0, 0, 1], "
+      "contact: frictionless, surface: bottom, move: {displacement: [0, 0, 0.5]}}]\n";
+  const std::string held_cap = "caps: [{name: lid, surface: top, displacement: [~, ~, 0]}]\n";
+  const std::string free_cap = "caps: [{name: lid, surface: top, force: [0, 0, 1.0e-3]}]\n";
+  for (const auto& [name, support, refused] :
+       std::vector<std::tuple<std::string, std::string, bool>>{{"presses", presses, false},
+                                                               {"touches", touches, true},
+                                                               {"glues", glues, false},
+                                                               {"below", below, true},
+                                                               {"held-cap", held_cap, false},
+                                                               {"free-cap", free_cap, true}}) {
+    SCOPED_TRACE(name);
+    const test::PlisseResult r = check_held_cube(dir, name, support);
+    EXPECT_EQ(r.status, refused ? 2 : 0) << r.output;
+    EXPECT_EQ(
+        r.output.find("can still move as a rigid body by translation along z") != std::string::npos,
+        refused)
+        << r.output;
   }
 }
 
