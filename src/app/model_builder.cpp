@@ -254,8 +254,8 @@ void check_rigid_pieces(const Case& c, const Mesh& mesh, const ModelParts& parts
       std::string(head) + " can still move as a rigid body by " + ways + " (" + where +
           " moves so): nothing holds " + (piece.motions.size() > 1 ? "these" : "this") +
           ", so the tangent is singular. Hold it by a boundary condition (a symmetry plane "
-          "holds only the motion across it), a cap, a sticking die that touches the body at "
-          "t = 0, or a die that presses into it by the first step's end (t = " +
+          "holds only the motion across it), a cap, or a die that touches the body by the first "
+          "step's end (t = " +
           when + "); or add solver.viscosity");
 }
 

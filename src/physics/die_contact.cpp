@@ -365,9 +365,10 @@ std::vector<RigidHold> DieContact::rigid_holds(double t) const {
       } catch (const Error&) {  // on a sphere's centre or a cylinder's axis: deep inside
         deep = true;
       }
-      // The penalty acts on a node only once it penetrates (D6: lambda_hat = -eps g > 0 with no
-      // multiplier yet); one that merely touches gives the first iterate no stiffness.
-      if (!deep && gap.g >= -settings_.touch_slack) continue;
+      // A node that only touches carries no force yet (D6), but the first iterate pushes it in
+      // wherever a load presses the body onto the die, and the contact holds from there on: it
+      // counts (a sheet pressed onto a plate it rests on solves in two steps).
+      if (!deep && gap.g > settings_.touch_slack) continue;
       all_ways = sticks || deep;
       if (!all_ways) holds.push_back({{node}, X, gap.n, false});
     }

@@ -64,10 +64,9 @@ class DieContact : public ModelTerm {
   std::vector<std::string> history_columns() const override;
   std::vector<double> history_values(double t, std::span<const double> x) const override;
 
-  /// The reference nodes the die has glued, or penetrates at time t (g < -touch_slack: a node
-  /// that only touches carries no force yet, and the first iterate no stiffness): a glued node, or
-  /// a Coulomb one with friction (it starts sticking), along x, y and z; another along the die's
-  /// normal.
+  /// The reference nodes the die has glued, or touches or penetrates at time t (g <=
+  /// touch_slack): a glued node, or a Coulomb one with friction (it starts sticking), along x, y
+  /// and z; another along the die's normal.
   std::vector<RigidHold> rigid_holds(double t) const override;
   /// Force exerted by the body on the die at (t, x) [N] (D15).
   Vec3d force_on_die(double t, std::span<const double> x) const;

@@ -224,12 +224,15 @@ std::vector<FreePiece> free_rigid_motions(const Mesh& mesh,
     piece.n_elements = elements[ri];
     piece.n_pieces = n_pieces;
     piece.centre = centre[ri];
+    piece.size = size[ri];
+    for (int v = 0; v < n_nodes; ++v)
+      if (in_element[static_cast<std::size_t>(v)] && pieces.root(v) == r)
+        piece.members.push_back(v);
     for (const Vec6d& s : chosen) {
       RigidMotion m{s.head<3>(), s.tail<3>() / size[ri], centre[ri]};
       int carrier = -1;
       double farthest = -1.0;
-      for (int v = 0; v < n_nodes; ++v) {
-        if (!in_element[static_cast<std::size_t>(v)] || pieces.root(v) != r) continue;
+      for (int v : piece.members) {
         const double moved = m.at(mesh.nodes[static_cast<std::size_t>(v)]).norm();
         if (moved > farthest * (1.0 + 1e-12)) {
           farthest = moved;

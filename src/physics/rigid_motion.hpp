@@ -31,6 +31,8 @@ struct FreePiece {
   int n_elements = 0;  ///< tetrahedra, or a shell's triangles
   int n_pieces = 0;    ///< pieces in the mesh (1: the body)
   Vec3d centre = Vec3d::Zero();
+  double size = 0.0;         ///< the largest distance of its nodes from the centre [mm]
+  std::vector<int> members;  ///< its nodes, increasing
   /// A basis of the free motions (1 to 6): the coordinate translations and the rotations about
   /// the coordinate axes through the centre where they are free, else combinations.
   std::vector<RigidMotion> motions;

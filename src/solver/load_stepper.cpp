@@ -8,6 +8,7 @@
 
 #include "solver/linear_solver.hpp"
 #include "solver/petsc_call.hpp"
+#include "solver/unresisted_motion.hpp"
 
 namespace plisse {
 namespace {
@@ -381,6 +382,7 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
                                 const Log& log) {
   SteppingResult result;
   const double end = settings_.end_time;
+  const bool resumed = resume_.has_value();
   start();
   StepperState& st = current_;
   result.steps = st.steps;
@@ -415,6 +417,17 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
     if (!failure.empty()) {
       model_.restore_converged();
       if (newton.interrupted || requested()) return stop();
+      // The first try of a run's first step: a tangent that some rigid motion leaves unresisted
+      // is singular at every step size, so cutting back would only take time.
+      if (result.steps == 0 && cutbacks_this_step == 0 && !resumed)
+        if (const std::string free = unresisted_rigid_motion(model_); !free.empty()) {
+          char head[64];
+          std::snprintf(head, sizeof head, "step 1: t = %.6g failed: ", t_new);
+          result.failure = head + free +
+                           ". Hold the motion by a boundary condition, a cap or a die that "
+                           "touches the body, or add solver.viscosity";
+          return result;
+        }
       if (!cut_back(newton, failure, t_new, step, result, log)) return result;
       ++cutbacks_this_step;
       continue;
