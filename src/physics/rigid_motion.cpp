@@ -82,6 +82,19 @@ std::string RigidMotion::describe() const {
          " through " + point_text(point, scale);
 }
 
+int farthest_moved(const RigidMotion& motion, const Mesh& mesh, const std::vector<int>& nodes) {
+  int carrier = nodes.empty() ? -1 : nodes.front();
+  double farthest = -1.0;
+  for (int v : nodes) {
+    const double moved = motion.at(mesh.nodes[static_cast<std::size_t>(v)]).norm();
+    if (moved > farthest * (1.0 + 1e-12)) {  // the first of nodes moved alike
+      farthest = moved;
+      carrier = v;
+    }
+  }
+  return carrier;
+}
+
 std::vector<FreePiece> free_rigid_motions(const Mesh& mesh,
                                           const std::vector<ConstrainedComponent>& constraints,
                                           const std::vector<RigidHold>& holds) {
@@ -230,17 +243,8 @@ std::vector<FreePiece> free_rigid_motions(const Mesh& mesh,
         piece.members.push_back(v);
     for (const Vec6d& s : chosen) {
       RigidMotion m{s.head<3>(), s.tail<3>() / size[ri], centre[ri]};
-      int carrier = -1;
-      double farthest = -1.0;
-      for (int v : piece.members) {
-        const double moved = m.at(mesh.nodes[static_cast<std::size_t>(v)]).norm();
-        if (moved > farthest * (1.0 + 1e-12)) {
-          farthest = moved;
-          carrier = v;
-        }
-      }
       piece.motions.push_back(m);
-      piece.nodes.push_back(carrier);
+      piece.nodes.push_back(farthest_moved(m, mesh, piece.members));
     }
     free.push_back(std::move(piece));
   }

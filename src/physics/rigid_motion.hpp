@@ -40,6 +40,9 @@ struct FreePiece {
   std::vector<int> nodes;
 };
 
+/// The node of `nodes` that `motion` moves farthest (the first of those it moves alike).
+int farthest_moved(const RigidMotion& motion, const Mesh& mesh, const std::vector<int>& nodes);
+
 /// The pieces of `mesh` that can move in some rigid way which neither `constraints` (their
 /// displacement components) nor `holds` hold; the nodes of one hold move together, which joins
 /// their pieces. Nodes of no element form no piece.

@@ -102,15 +102,7 @@ std::string unresisted_rigid_motion(MixedModel& model) {
       if (std::abs(motion.translation[k]) <= 1e-6 * scale) motion.translation[k] = 0.0;
       if (std::abs(motion.rotation[k]) * piece.size <= 1e-6 * scale) motion.rotation[k] = 0.0;
     }
-    int carrier = piece.members.front();
-    double farthest = -1.0;
-    for (int node : piece.members) {
-      const double moved = motion.at(mesh.nodes[static_cast<std::size_t>(node)]).norm();
-      if (moved > farthest * (1.0 + 1e-12)) {
-        farthest = moved;
-        carrier = node;
-      }
-    }
+    const int carrier = farthest_moved(motion, mesh, piece.members);
     const Vec3d& x = mesh.nodes[static_cast<std::size_t>(carrier)];
     char text[400];
     std::snprintf(text, sizeof text,

@@ -83,10 +83,10 @@ TEST(PreStepChecks, CheckMakesEveryCheckRunMakes) {
   }
 }
 
-/// `plisse check` of a unit cube held across the symmetry planes x = 0 and y = 0 (free to slide
-/// along z) and by `support`, under its own weight.
-test::PlisseResult check_held_cube(const fs::path& dir, const std::string& name,
-                                   const std::string& support) {
+/// A unit cube held across the symmetry planes x = 0 and y = 0 (free to slide along z) and by
+/// `support`, under its own weight, written to dir/name.yaml.
+fs::path write_sliding_cube(const fs::path& dir, const std::string& name,
+                            const std::string& support) {
   const fs::path file = dir / (name + ".yaml");
   std::ofstream(file) << "mesh: {generate: cube, edge: 1.0, divisions: 2}\n"
                          "element: mini\n"
@@ -96,8 +96,14 @@ test::PlisseResult check_held_cube(const fs::path& dir, const std::string& name,
                          "  - {type: symmetry, surface: front}\n"
                          "loads: [{name: weight, type: gravity, acceleration: [0, 0, -9810]}]\n"
                       << support << "solver: {steps: 4}\n";
-  return test::run_plisse_captured("check '" + file.string() + "'",
-                                   "ulimit -v 4000000; timeout 60 ");
+  return file;
+}
+
+test::PlisseResult check_held_cube(const fs::path& dir, const std::string& name,
+                                   const std::string& support) {
+  return test::run_plisse_captured(
+      "check '" + write_sliding_cube(dir, name, support).string() + "'",
+      "ulimit -v 4000000; timeout 60 ");
 }
 
 TEST(PreStepChecks, ASlidingBodyIsHeldByADieThatPressesInByTheFirstStepOrByACap) {
@@ -147,16 +153,7 @@ TEST(PreStepChecks, AFreeMotionTheCheckCannotJudgeStopsTheFirstStepAtOnce) {
   // the minimum, the run stops there, naming the motion from the tangent itself.
   const fs::path dir = test::scratch_directory("free-with-contact");
   fs::create_directories(dir);
-  const fs::path file = dir / "case.yaml";
-  std::ofstream(file) << "mesh: {generate: cube, edge: 1.0, divisions: 2}\n"
-                         "element: mini\n"
-                         "material: {model: neo-hookean, c1: 0.2, density: 1.0e-9}\n"
-                         "boundary:\n"
-                         "  - {type: symmetry, surface: left}\n"
-                         "  - {type: symmetry, surface: front}\n"
-                         "loads: [{name: weight, type: gravity, acceleration: [0, 0, -9810]}]\n"
-                         "contacts: [{name: fold, self: top}]\n"
-                         "solver: {steps: 4}\n";
+  const fs::path file = write_sliding_cube(dir, "case", "contacts: [{name: fold, self: top}]\n");
   const test::PlisseResult checked =
       test::run_plisse_captured("check '" + file.string() + "'", "ulimit -v 4000000; timeout 60 ");
   EXPECT_EQ(checked.status, 0) << checked.output;
