@@ -73,6 +73,20 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
     return app.exit(e);
+  } catch (const CLI::ExtrasError& e) {
+    // An option that another command takes (`plisse check -n 4`): say whose it is.
+    for (const CLI::App* used : app.get_subcommands())
+      for (const std::string& extra : used->remaining())
+        for (const CLI::App* other : app.get_subcommands({}))
+          if (other != used && extra.size() > 1 && extra[0] == '-' &&
+              other->get_option_no_throw(extra) != nullptr) {
+            error_stream() << "plisse: error: " << used->get_name() << " takes no " << extra
+                           << ": it is an option of plisse " << other->get_name() << " ("
+                           << e.what() << ")\n";
+            return 2;
+          }
+    app.exit(e);
+    return 2;
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return 2;

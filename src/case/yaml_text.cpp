@@ -2,6 +2,7 @@
 // why: non-text bytes, unclosed quotes, second documents, tab indentation, oversized files.
 #include "case/yaml_text.hpp"
 
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/eventhandler.h>
 
 #include <algorithm>
@@ -228,6 +229,13 @@ YAML::Node load_case_document(const std::string& text, const std::string& name) 
   std::vector<YAML::Node> documents;
   try {
     documents = YAML::LoadAll(text);
+  } catch (const YAML::DeepRecursion& e) {
+    // yaml-cpp stops at 2000 levels with the message "bad file", which names no cause.
+    const bool marked = !e.mark.is_null();
+    throw InputError({name, marked ? e.mark.line + 1 : 0, marked ? e.mark.column + 1 : 0, ""},
+                     "YAML syntax error: lists or maps nested more than " +
+                         std::to_string(e.depth()) +
+                         " levels deep here, the parser's limit (a case file needs a few)");
   } catch (const YAML::Exception& e) {
     const bool marked = !e.mark.is_null();
     std::string rule = "YAML syntax error: " + e.msg;

@@ -26,6 +26,12 @@ TEST(CommandLine, UnknownCommandAndAManualWithoutBlocksExitTwo) {
       << r.output;
   r = run_plisse("NOSUCH");
   EXPECT_EQ(r.status, 2) << r.output;
+  // An option of another command names the command it belongs to.
+  r = run_plisse("check -n 1000 '" + std::string(PLISSE_SOURCE_DIR) +
+                 "/examples/cube-tension-neo-hookean.yaml'");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("check takes no -n: it is an option of plisse run"), std::string::npos)
+      << r.output;
   r = run_plisse("--version");
   EXPECT_EQ(r.status, 0) << r.output;
   const std::string readme = std::string(PLISSE_SOURCE_DIR) + "/README.md";
