@@ -11,6 +11,7 @@
 #include "app/commands.hpp"
 #include "app/model_builder.hpp"
 #include "app/pre_step_checks.hpp"
+#include "app/run_plan.hpp"
 #include "app/run_session.hpp"
 #include "app/wrinkling.hpp"
 #include "case/case.hpp"
@@ -88,6 +89,7 @@ void check_case(const CheckOptions& options) {
   run_pre_step_checks(PreStepStage::mesh, c, mesh);
   const ModelParts parts = build_model_parts(c, mesh);
   run_pre_step_checks(PreStepStage::parts, c, mesh, &parts);
+  check_petsc_environment();
   {
     PetscSession petsc({"-no_signal_handler", c.solver.petsc_options});
     check_solver_options(c, {});

@@ -15,6 +15,8 @@
 
 #include "app/commands.hpp"
 #include "app/model_builder.hpp"
+#include "app/run_plan.hpp"
+#include "app/run_session.hpp"
 #include "app/wrinkling.hpp"
 #include "core/error.hpp"
 #include "output/checkpoint.hpp"
@@ -206,6 +208,12 @@ void print_wrinkles(const fs::path& dir, const WrinklesOptions& options, const R
 void recompute_wrinkles(const WrinklesOptions& options) {
   const fs::path dir = options.run_directory;
   const InputPlace place{dir.string(), 0, 0, "DIR"};
+  // Its copies under mpirun would each take the directory's lock, and all but one be refused.
+  if (const int ranks = launcher_size(); ranks > 1)
+    throw InputError({"command line", 0, 0, "wrinkles"},
+                     "plisse wrinkles runs on one process, not in an MPI job (here of " +
+                         std::to_string(ranks) + " ranks): start it without mpirun or mpiexec");
+  check_petsc_environment();  // it starts PETSc to restore the model
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw InputError(place, "is not a run directory");
   const fs::path summary_path = dir / "summary.json";

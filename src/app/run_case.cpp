@@ -316,6 +316,11 @@ void finish_run(const RunContext& run, const SteppingResult& result, const Start
     out.flush_log();
     // A resume must repeat the --set values (the checkpoint's fingerprint holds them); a
     // distributed run is resumed on as many ranks.
+    if (!fs::exists(directory / "checkpoint.bin"))  // stopped before its first step converged
+      throw SolverError(
+          "interrupted during step 1, before a step converged: there is no "
+          "checkpoint to resume from; start again with: " +
+          rerun_command(run.options, solver.model->n_ranks(), directory));
     throw SolverError("interrupted after step " + std::to_string(last.step) +
                       " at t = " + std::to_string(last.time) + "; continue with: " +
                       resume_command(run.options, solver.model->n_ranks(), directory));

@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cstdlib>
 
 #include "case/petsc_option_text.hpp"
 #include "output/json_file.hpp"
@@ -24,11 +25,29 @@ fs::path run_directory_of(const RunOptions& options) {
   return options.output_directory;
 }
 
+}  // namespace
+
+void check_petsc_environment() {
+  // PETSc reads these at start-up as if given on the command line: the same rules apply. (Its
+  // .petscrc files are not read at all: PetscSession passes -skip_petscrc.)
+  if (const char* text = std::getenv("PETSC_OPTIONS"); text != nullptr && *text != '\0')
+    if (const std::string problem = petsc_option_problem(text); !problem.empty())
+      throw InputError({"environment", 0, 0, "PETSC_OPTIONS"},
+                       problem + " (PETSc reads PETSC_OPTIONS as options of the run)");
+  if (const char* text = std::getenv("PETSC_OPTIONS_YAML"); text != nullptr && *text != '\0')
+    throw InputError({"environment", 0, 0, "PETSC_OPTIONS_YAML"},
+                     "PETSc would read it as options of the run, which plisse checks only as "
+                     "text: unset it and give the options with --petsc or solver.petsc_options");
+}
+
+namespace {
+
 /// Rules between the options alone, before any file is read.
 void check_option_rules(const RunOptions& options) {
   for (const std::string& o : options.petsc_options)
     if (const std::string problem = petsc_option_problem(o); !problem.empty())
       throw InputError(command_line_option("--petsc"), problem);
+  check_petsc_environment();
   const bool resume = !options.resume_directory.empty();
   if (resume && options.overwrite)
     throw InputError(command_line_option("--overwrite"),
@@ -213,15 +232,35 @@ std::string earlier_run_refusal(const fs::path& directory) {
          "); continue it with --resume, replace it with --overwrite, or choose another -o";
 }
 
-std::string resume_command(const RunOptions& options, int n_ranks, const fs::path& directory) {
-  std::string command = "plisse run " + options.case_file;
+std::string shell_word(const std::string& word, bool quote) {
+  const bool plain = !word.empty() && word.find_first_not_of(
+                                          "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                          "0123456789_./-=:,+@%") == std::string::npos;
+  if (plain && !quote) return word;
+  std::string quoted = "'";
+  for (char ch : word) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return quoted + "'";
+}
+
+namespace {
+
+/// plisse run CASE [-n N] [--set ...]: the start of the commands below.
+std::string run_command(const RunOptions& options, int n_ranks) {
+  std::string command = "plisse run " + shell_word(options.case_file);
   if (n_ranks > 1) command += " -n " + std::to_string(n_ranks);
-  for (const std::string& o : options.overrides) {
-    std::string quoted = "'";
-    for (char ch : o) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-    command += " --set " + quoted + "'";
-  }
-  return command + " --resume " + directory.string();
+  // --set values always in quotes: they are what a user edits before pasting the line.
+  for (const std::string& o : options.overrides) command += " --set " + shell_word(o, true);
+  return command;
+}
+
+}  // namespace
+
+std::string resume_command(const RunOptions& options, int n_ranks, const fs::path& directory) {
+  return run_command(options, n_ranks) + " --resume " + shell_word(directory.string());
+}
+
+std::string rerun_command(const RunOptions& options, int n_ranks, const fs::path& directory) {
+  return run_command(options, n_ranks) + " -o " + shell_word(directory.string()) + " --overwrite";
 }
 
 }  // namespace plisse::app

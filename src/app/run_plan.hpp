@@ -83,14 +83,27 @@ void check_from_internal_values(const RunPlan& plan, std::size_t n_internal_valu
 /// state and undo the finished run). No-op without --resume. Call with the lock held.
 std::string resumed_checkpoint_refusal(const RunPlan& plan);
 
+/// PETSC_OPTIONS under the rules of --petsc (case/petsc_option_text.hpp), and no
+/// PETSC_OPTIONS_YAML: PETSc reads both at start-up. InputError at the variable otherwise.
+/// `plisse run` (plan_run) and `plisse check` call it before PETSc starts.
+void check_petsc_environment();
+
 /// Why a new run may not write into `directory` (empty: it may): the files of an earlier run,
 /// the first three named.
 std::string earlier_run_refusal(const std::filesystem::path& directory);
 
+/// `word` as one word of a POSIX shell command: itself when it holds only letters, digits and
+/// _./-=:,+@% and `quote` is false, else in single quotes (a path with spaces, a key such as
+/// loads[0].value).
+std::string shell_word(const std::string& word, bool quote = false);
+
 /// The command that resumes an interrupted run in `directory`: the case file, -n for a run on
-/// more than one rank, and every --set value quoted for a POSIX shell (keys such as
-/// loads[0].value hold brackets).
+/// more than one rank, and every --set value, each a shell word.
 std::string resume_command(const RunOptions& options, int n_ranks,
                            const std::filesystem::path& directory);
+/// The same run started again in `directory` (-o DIR --overwrite): for a run interrupted before
+/// it wrote a checkpoint, which --resume would refuse.
+std::string rerun_command(const RunOptions& options, int n_ranks,
+                          const std::filesystem::path& directory);
 
 }  // namespace plisse::app

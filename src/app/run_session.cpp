@@ -33,14 +33,6 @@ extern "C" void on_interrupt(int) {
   g_interrupt = 1;
 }
 
-/// The number of ranks of the MPI job this process belongs to, from the launcher's environment
-/// (Open MPI, PMIx, MPICH/Hydra), or 0 when it was not started by an MPI launcher.
-int launcher_size() {
-  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_SIZE", "PMI_SIZE"})
-    if (const char* value = std::getenv(name)) return std::atoi(value);
-  return 0;
-}
-
 /// The rank count -n asks for, checked against the job this process is in and the CPUs it may
 /// use. False: there is nothing to start (inside a job, or one rank).
 bool ranks_to_start(int ranks, bool oversubscribe) {
@@ -66,6 +58,12 @@ bool ranks_to_start(int ranks, bool oversubscribe) {
 }
 
 }  // namespace
+
+int launcher_size() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_SIZE", "PMI_SIZE"})
+    if (const char* value = std::getenv(name)) return std::atoi(value);
+  return 0;
+}
 
 void launch_ranks(int ranks, bool oversubscribe, const RunOptions& options) {
   if (!ranks_to_start(ranks, oversubscribe)) return;

@@ -12,6 +12,10 @@
 
 namespace plisse::app {
 
+/// The number of ranks of the MPI job this process belongs to, from the launcher's environment
+/// (Open MPI, PMIx, MPICH/Hydra), or 0 when it was not started by an MPI launcher.
+int launcher_size();
+
 /// `-n N` outside an MPI job: starts the same command line under `mpiexec -n N` in place of this
 /// process (returns only when there is nothing to start). Inside a job (mpirun, mpiexec or srun
 /// started this process) -n may be left out; when given, it must be the job's size. More ranks

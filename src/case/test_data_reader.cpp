@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <sstream>
 #include <string>
+#include <string_view>
 
 #include "core/error.hpp"
 #include "output/atomic_file.hpp"
@@ -44,7 +45,10 @@ std::vector<TestPoint> read_test_data(const std::filesystem::path& path) {
   const std::string text = read_file(path, kMaxTestDataBytes);
   if (text.find('\0') != std::string::npos)
     throw InputError({file, 0, 0, ""}, "is binary (holds a NUL byte), not a CSV text file");
-  std::istringstream in(text);
+  // A spreadsheet's "CSV UTF-8" starts with a byte-order mark, which would glue itself to the
+  // first column's name, unseen in the message: it is skipped.
+  const std::string_view bom = "\xEF\xBB\xBF";
+  std::istringstream in(text.compare(0, bom.size(), bom) == 0 ? text.substr(bom.size()) : text);
   std::string line;
   int number = 0;
   std::array<int, 3> column{-1, -1, -1};  // mode, stretch, stress

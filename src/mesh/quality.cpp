@@ -138,7 +138,8 @@ bool check_finite_coordinates(const Mesh& mesh, MeshReport& report) {
 void check_volumes(const Mesh& mesh, MeshReport& report) {
   report.min_volume = mesh.tets.empty() ? 0.0 : std::numeric_limits<double>::infinity();
   {
-    MessageList inverted(report.errors, "inverted or degenerate tetrahedra");
+    MessageList inverted(report.errors,
+                         "inverted or degenerate tetrahedra (counted from 1 in the mesh's order)");
     int n_stretched = 0;
     for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
       const auto& n = mesh.tets[t];
@@ -152,15 +153,20 @@ void check_volumes(const Mesh& mesh, MeshReport& report) {
         longest = std::max(
             longest,
             (x[static_cast<std::size_t>(e[0])] - x[static_cast<std::size_t>(e[1])]).norm());
-      // Degenerate: volume below 1e-12 of the cube of its longest edge (round-off level).
+      // Degenerate: volume below 1e-12 of the cube of its longest edge (round-off level). Named
+      // by its place among the tetrahedra counted from 1 and by its centre, which a user finds
+      // in a mesh viewer.
+      const auto which = [&] {
+        const Vec3d c = 0.25 * (x[0] + x[1] + x[2] + x[3]);
+        return "tetrahedron " + std::to_string(t + 1) + " (centred at [" + number(c.x()) + ", " +
+               number(c.y()) + ", " + number(c.z()) + "])";
+      };
       if (std::abs(volume) <= 1e-12 * longest * longest * longest) {
-        inverted.add("tetrahedron " + std::to_string(t) + " is degenerate (volume " +
-                     number(volume) + " mm^3)");
+        inverted.add(which() + " is degenerate (volume " + number(volume) + " mm^3)");
         continue;
       }
       if (volume < 0.0) {
-        inverted.add("tetrahedron " + std::to_string(t) + " is inverted (volume " + number(volume) +
-                     " mm^3)");
+        inverted.add(which() + " is inverted (volume " + number(volume) + " mm^3)");
         continue;
       }
       const double ar = aspect_ratio(x, volume);
@@ -342,7 +348,8 @@ void check_boundary_manifold(const std::vector<BoundaryFace>& boundary, MeshRepo
 /// between neighbours, with warnings (kShellAngleWarning, kShellTurnWarning); nodes of no
 /// triangle; tags within range.
 void check_shell_surface(const Mesh& mesh, MeshReport& report) {
-  MessageList degenerate(report.errors, "degenerate triangles");
+  MessageList degenerate(report.errors,
+                         "degenerate triangles (counted from 1 in the mesh's order)");
   const double kDegree = 180.0 / std::acos(-1.0);
   std::vector<Vec3d> normals(mesh.triangles.size(), Vec3d::Zero());
   report.min_angle_deg = 180.0;
@@ -361,7 +368,9 @@ void check_shell_surface(const Mesh& mesh, MeshReport& report) {
       if (angle < kShellAngleWarning) ++n_sharp;
     }
     if (n.norm() <= 2e-12 * longest * longest) {
-      degenerate.add("triangle " + std::to_string(t) + " has zero area");
+      const Vec3d c = (mesh.nodes[tri[0]] + mesh.nodes[tri[1]] + mesh.nodes[tri[2]]) / 3.0;
+      degenerate.add("triangle " + std::to_string(t + 1) + " (centred at [" + number(c.x()) + ", " +
+                     number(c.y()) + ", " + number(c.z()) + "]) has zero area");
       continue;
     }
     normals[t] = n.normalized();

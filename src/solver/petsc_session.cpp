@@ -26,8 +26,14 @@ PetscSession::PetscSession(const std::vector<std::string>& options) {
   PetscBool initialized = PETSC_FALSE;
   PLISSE_PETSC(SlepcInitialized(&initialized));
   if (!initialized) {
-    int argc = 0;
-    char** argv = nullptr;
+    // -skip_petscrc: PETSc would otherwise read options from ~/.petscrc and from .petscrc and
+    // petscrc in the working directory, past the checks of the case's and command line's options
+    // (a file-writing viewer in a directory someone sent you).
+    static char program[] = "plisse";
+    static char skip[] = "-skip_petscrc";
+    static char* words[] = {program, skip, nullptr};
+    int argc = 2;
+    char** argv = words;
     PLISSE_PETSC(SlepcInitialize(&argc, &argv, nullptr, nullptr));
     // PETSc's own error printing would duplicate our messages; errors come back as codes.
     PLISSE_PETSC(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));

@@ -387,6 +387,19 @@ TEST(DistributedRun, RankCountOutsideTheJobIsABadInput) {
   EXPECT_FALSE(fs::exists(dir / "history.csv"));
 }
 
+TEST(DistributedRun, WrinklesIsRefusedInsideAnMpiJob) {
+  // Its copies would each take the run directory's lock and all but one be refused: each says
+  // why instead, before touching the directory.
+  const fs::path dir = scratch_directory("distributed-wrinkles");
+  const auto r = run_plisse_captured("wrinkles '" + dir.string() + "'", kMpiexec2);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("plisse wrinkles runs on one process, not in an MPI job (here of 2 "
+                          "ranks)"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(dir));
+}
+
 TEST(DistributedRun, BadCaseIsRefusedBeforeTheRanksStart) {
   const auto r = run_plisse_captured("run -n 2 '" + example("cube-tension-neo-hookean.yaml") +
                                      "' --set mesh.divisions=0 -o '" +

@@ -171,6 +171,33 @@ TEST(UntrustedFiles, PetscViewsInBinaryWriteNoFileUnderCheckOrRun) {
   EXPECT_FALSE(fs::exists(dir / "victim.txt.info"));
 }
 
+TEST(UntrustedFiles, PetscOptionsFromTheEnvironmentAndPetscrcFilesPassTheSameRules) {
+  // PETSc reads PETSC_OPTIONS and the .petscrc of the working directory at start-up, as if they
+  // were on the command line: a .petscrc in a directory someone sent you is not read at all, and
+  // PETSC_OPTIONS is checked like --petsc. Nothing is written to the working directory.
+  const fs::path dir = test::scratch_directory("untrusted-petscrc");
+  fs::create_directories(dir / "work");
+  std::ofstream(dir / "work" / ".petscrc") << "-ksp_view_mat binary\n";
+  const std::string in_work = "cd " + (dir / "work").string() + " && ";
+  const Outcome run =
+      plisse_in(in_work, "run " + kCube + " --set solver.steps=1 -o " + (dir / "out").string());
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_FALSE(fs::exists(dir / "work" / "binaryoutput"));
+  const std::string env = in_work + "export PETSC_OPTIONS='-ksp_view_mat binary'; ";
+  for (const std::string& command :
+       {"check " + kCube, "run " + kCube + " -o " + (dir / "refused").string()}) {
+    const Outcome refused = plisse_in(env, command);
+    expect_refused(refused, "environment: key 'PETSC_OPTIONS': '-ksp_view_mat binary' is refused");
+  }
+  EXPECT_FALSE(fs::exists(dir / "refused"));
+  EXPECT_FALSE(fs::exists(dir / "work" / "binaryoutput"));
+  // An option the rules allow is taken from the environment as from --petsc.
+  const Outcome allowed =
+      plisse_in(in_work + "export PETSC_OPTIONS='-ksp_view ::ascii_info'; ",
+                "run " + kCube + " --set solver.steps=1 -o " + (dir / "allowed").string());
+  EXPECT_EQ(allowed.status, 0) << allowed.output;
+}
+
 /// A small shell with a wrinkle ring: its runs write every file plisse wrinkles and plot read.
 const std::string kShell =
     test::inflated_octant_case(test::kSmallOctantMesh,

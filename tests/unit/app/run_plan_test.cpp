@@ -338,5 +338,21 @@ TEST(RunPlan, TheResumeCommandQuotesEverySetValueForTheShell) {
             "plisse run cube.yaml -n 2 --resume out");
 }
 
+TEST(RunPlan, PathsWithSpacesAreQuotedAndARunWithoutACheckpointIsStartedAgain) {
+  // Pasted into a shell, each command gives plisse the same words: the paths with a space or a
+  // quote in one word each.
+  RunOptions options = options_for("my cases/cube.yaml");
+  options.overrides = {"mesh.divisions=2"};
+  EXPECT_EQ(resume_command(options, 1, "runs/it's here"),
+            "plisse run 'my cases/cube.yaml' --set 'mesh.divisions=2' --resume 'runs/it'\\''s "
+            "here'");
+  EXPECT_EQ(rerun_command(options, 2, "runs/a b"),
+            "plisse run 'my cases/cube.yaml' -n 2 --set 'mesh.divisions=2' -o 'runs/a b' "
+            "--overwrite");
+  EXPECT_EQ(shell_word(""), "''");
+  EXPECT_EQ(shell_word("a$b"), "'a$b'");
+  EXPECT_EQ(shell_word("runs/cube"), "runs/cube");
+}
+
 }  // namespace
 }  // namespace plisse::app

@@ -160,6 +160,8 @@ TEST(TestDataFile, EveryBrokenRuleIsReportedWithItsLineAndColumn) {
   const std::string header = "# comment\nmode,stretch,stress\n";
   EXPECT_EQ(data_error("ok", header + "uniaxial,1.5,0.2\nplanar , 0.8 , -0.1\n"), "");
   EXPECT_EQ(data_error("ok", header + "uniaxial,1.5,0.2\npure-shear,0.8,-0.1\n"), "");
+  // A spreadsheet's byte-order mark before the header is skipped, not read into "mode".
+  EXPECT_EQ(data_error("bom", "\xEF\xBB\xBFmode,stretch,stress\nuniaxial,1.5,0.2\n"), "");
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"uniaxial,1.5,0.2\n", ":1: key 'uniaxial': unknown column"},
       {"mode,stretch\nuniaxial,1.5\n", ":1: key 'stress': missing from the header"},

@@ -50,14 +50,18 @@ TEST(CheckMesh, FindsInvertedTetrahedronWithIndexAndVolume) {
   std::swap(mesh.tets[0][1], mesh.tets[0][2]);
   const MeshReport r = check_mesh(mesh);
   EXPECT_FALSE(r.ok());
-  EXPECT_TRUE(mentions(r.errors, "tetrahedron 0 is inverted (volume -0.166667 mm^3)"));
+  EXPECT_TRUE(mentions(
+      r.errors,
+      "tetrahedron 1 (centred at [0.25, 0.25, 0.25]) is inverted (volume -0.166667 mm^3)"));
   EXPECT_NEAR(r.min_volume, -1.0 / 6.0, 1e-15);
 }
 
 TEST(CheckMesh, FindsDegenerateTetrahedron) {
   Mesh mesh = one_tet();
   mesh.nodes[3] = Vec3d(0.3, 0.3, 0.0);  // in the plane of the other three
-  EXPECT_TRUE(mentions(check_mesh(mesh).errors, "tetrahedron 0 is degenerate"));
+  // Named by its place among the tetrahedra counted from 1, and by its centre.
+  EXPECT_TRUE(mentions(check_mesh(mesh).errors,
+                       "tetrahedron 1 (centred at [0.325, 0.325, 0]) is degenerate"));
 }
 
 TEST(CheckMesh, WarnsAboutUnusedNode) {
