@@ -191,28 +191,45 @@ RawGmshModel extract_model(ReadDims what) {
   return m;
 }
 
-/// An ASCII Gmsh 2 file lists every node once in its one $Nodes section; Gmsh keeps the last of
-/// two lines with the same tag, silently moving every element that uses it. Throws InputError
-/// (the rule only) for a tag given to two different points, as read_nodes does for the entities
-/// of a v4 file. Other files (v4, binary) are left to Gmsh and read_nodes.
+/// A Gmsh 2 file lists every node once in its one $Nodes section; Gmsh keeps the last of two
+/// records with the same tag, silently moving every element that uses it. Throws InputError (the
+/// rule only) for a tag given to two different points, as read_nodes does for the entities of a
+/// v4 file. ASCII records are lines "tag x y z"; binary ones (file-type 1, native byte order) a
+/// 4-byte tag and three coordinates of the format's data size. v4 files are left to read_nodes.
 void refuse_v2_node_defined_twice(const std::string& path) {
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   std::string line;
   if (!std::getline(in, line) || line.rfind("$MeshFormat", 0) != 0) return;
   if (!std::getline(in, line)) return;
   std::istringstream format(line);
   std::string version;
-  int file_type = -1;
-  if (!(format >> version >> file_type) || version.rfind("2", 0) != 0 || file_type != 0) return;
+  int file_type = -1, data_size = 0;
+  if (!(format >> version >> file_type >> data_size) || version.rfind("2", 0) != 0) return;
+  if (file_type != 0 && !(file_type == 1 && data_size == 8)) return;
   while (std::getline(in, line))
     if (line.rfind("$Nodes", 0) == 0) break;
   if (!std::getline(in, line)) return;
+  long long count = 0;
+  if (!(std::istringstream(line) >> count) || count < 0) return;  // Gmsh reports it
   std::unordered_map<long long, std::array<double, 3>> points;
-  while (std::getline(in, line) && line.rfind("$EndNodes", 0) != 0) {
+  // The next record's tag and point; false at the end of the section or a broken record, which
+  // Gmsh reports.
+  const auto next = [&](long long& tag, std::array<double, 3>& x) {
+    if (file_type == 1) {
+      std::int32_t t = 0;
+      if (count-- <= 0 || !in.read(reinterpret_cast<char*>(&t), sizeof t) ||
+          !in.read(reinterpret_cast<char*>(x.data()), sizeof x))
+        return false;
+      tag = t;
+      return true;
+    }
+    if (!std::getline(in, line) || line.rfind("$EndNodes", 0) == 0) return false;
     std::istringstream fields(line);
-    long long tag = 0;
-    std::array<double, 3> x{};
-    if (!(fields >> tag >> x[0] >> x[1] >> x[2])) return;  // Gmsh reports the broken line
+    return static_cast<bool>(fields >> tag >> x[0] >> x[1] >> x[2]);
+  };
+  long long tag = 0;
+  std::array<double, 3> x{};
+  while (next(tag, x)) {
     const auto [it, added] = points.emplace(tag, x);
     if (added || it->second == x) continue;
     char where[200];

@@ -128,3 +128,20 @@ open('curved-tet10.msh','w').write(v2(curved_nodes, [(9, 2, (1,3,2,7,6,5)),
 twice = v2(unit, [(4, 1, t) for t in kuhn], [(3, 1, 'body')]).replace(
     '$Nodes\n8\n', '$Nodes\n9\n').replace('8 1 1 1\n', '8 1 1 1\n8 1 1 1.5\n')
 open('duplicate-node-v2.msh', 'w').write(twice)
+# The same in a binary Gmsh 2.2 file (file-type 1): node records are a 4-byte tag and three
+# 8-byte coordinates, elements come in blocks of (type, count, tags) headers, native byte order.
+import struct
+def v2_binary(nodes, elements, names):
+    b = b'$MeshFormat\n2.2 1 8\n' + struct.pack('=i', 1) + b'\n$EndMeshFormat\n'
+    b += b'$PhysicalNames\n%d\n' % len(names)
+    for dim, tag, name in names: b += b'%d %d "%s"\n' % (dim, tag, name.encode())
+    b += b'$EndPhysicalNames\n$Nodes\n%d\n' % len(nodes)
+    for tag, x in nodes: b += struct.pack('=iddd', tag, *map(float, x))
+    b += b'\n$EndNodes\n$Elements\n%d\n' % len(elements)
+    for k, (typ, phys, conn) in enumerate(elements):
+        b += struct.pack('=iii', typ, 1, 2) + struct.pack('=i', k + 1) + struct.pack('=ii', phys, phys)
+        b += struct.pack('=%di' % len(conn), *conn)
+    return b + b'\n$EndElements\n'
+open('duplicate-node-v2-binary.msh', 'wb').write(v2_binary(
+    [(k + 1, x) for k, x in enumerate(unit)] + [(8, (1, 1, 1.5))],
+    [(4, 1, t) for t in kuhn], [(3, 1, 'body')]))
