@@ -27,10 +27,11 @@ std::string text_of(const fs::path& file) {
   return s.str();
 }
 
-/// Runs `script` under sh with a 4 GiB address-space limit and 60 s; its output and status.
+/// Runs `script` under sh with a 4 GiB address-space limit (not under AddressSanitizer) and 60 s;
+/// its output and status.
 test::PlisseResult shell(const std::string& script, const fs::path& log) {
   const std::string command =
-      "ulimit -v 4194304; timeout 60 sh -c '" + script + "' > '" + log.string() + "' 2>&1";
+      test::limits(60) + "sh -c '" + script + "' > '" + log.string() + "' 2>&1";
   const int status = std::system(command.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text_of(log)};
 }

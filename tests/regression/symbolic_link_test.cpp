@@ -18,7 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kLimits = "ulimit -v 4194304; timeout 60 ";
+const std::string kLimits = test::limits(60);
 
 /// A small shell of wrinkle rings: its runs write every file a run directory can hold.
 const std::string kCase =

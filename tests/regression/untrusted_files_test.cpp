@@ -33,12 +33,8 @@ struct Outcome {
 };
 
 /// The limits every command here runs under: 30 s, and 4 GiB of address space except under
-/// AddressSanitizer, which reserves terabytes of it for its shadow memory (scripts/sanitize).
-#if defined(__SANITIZE_ADDRESS__)
-const std::string kLimits = "timeout 30 ";
-#else
-const std::string kLimits = "ulimit -v 4194304; timeout 30 ";
-#endif
+/// AddressSanitizer (test::limits).
+const std::string kLimits = test::limits(30);
 
 /// `plisse ARGS` under kLimits.
 Outcome plisse(const std::string& args) {

@@ -36,6 +36,17 @@ inline int run_plisse(const std::string& args, const std::filesystem::path& log)
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+/// A shell prefix that limits the command after it to `seconds` of wall time and 4 GiB of
+/// address space, except under AddressSanitizer, which reserves terabytes of address space for
+/// its shadow memory (scripts/sanitize): then to the time only.
+inline std::string limits(int seconds) {
+#if defined(__SANITIZE_ADDRESS__)
+  return "timeout " + std::to_string(seconds) + " ";
+#else
+  return "ulimit -v 4194304; timeout " + std::to_string(seconds) + " ";
+#endif
+}
+
 /// Exit status and everything `plisse ARGS` printed (stdout and stderr).
 struct PlisseResult {
   int status = -1;

@@ -73,8 +73,7 @@ TEST(PreStepChecks, CheckMakesEveryCheckRunMakes) {
     const fs::path out = dir / (file.stem().string() + "-run");
     for (const std::string& args : {"check '" + file.string() + "'",
                                     "run '" + file.string() + "' -o '" + out.string() + "'"}) {
-      const test::PlisseResult r =
-          test::run_plisse_captured(args, "ulimit -v 4000000; timeout 60 ");
+      const test::PlisseResult r = test::run_plisse_captured(args, test::limits(60));
       EXPECT_EQ(r.status, 2) << args << "\n" << r.output;
       EXPECT_NE(r.output.find(found->second.message), std::string::npos) << args << "\n"
                                                                          << r.output;
@@ -102,8 +101,7 @@ fs::path write_sliding_cube(const fs::path& dir, const std::string& name,
 test::PlisseResult check_held_cube(const fs::path& dir, const std::string& name,
                                    const std::string& support) {
   return test::run_plisse_captured(
-      "check '" + write_sliding_cube(dir, name, support).string() + "'",
-      "ulimit -v 4000000; timeout 60 ");
+      "check '" + write_sliding_cube(dir, name, support).string() + "'", test::limits(60));
 }
 
 TEST(PreStepChecks, ASlidingBodyIsHeldByADieThatPressesInByTheFirstStepOrByACap) {
@@ -155,11 +153,10 @@ TEST(PreStepChecks, AFreeMotionTheCheckCannotJudgeStopsTheFirstStepAtOnce) {
   fs::create_directories(dir);
   const fs::path file = write_sliding_cube(dir, "case", "contacts: [{name: fold, self: top}]\n");
   const test::PlisseResult checked =
-      test::run_plisse_captured("check '" + file.string() + "'", "ulimit -v 4000000; timeout 60 ");
+      test::run_plisse_captured("check '" + file.string() + "'", test::limits(60));
   EXPECT_EQ(checked.status, 0) << checked.output;
-  const test::PlisseResult r =
-      test::run_plisse_captured("run '" + file.string() + "' -o '" + (dir / "run").string() + "'",
-                                "ulimit -v 4000000; timeout 120 ");
+  const test::PlisseResult r = test::run_plisse_captured(
+      "run '" + file.string() + "' -o '" + (dir / "run").string() + "'", test::limits(120));
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_NE(r.output.find("step 1: t = 0.25 failed: the body of 48 tetrahedra (centred near "
                           "[0.5, 0.5, 0.5]) can still move as a rigid body by translation along z"),
