@@ -226,14 +226,10 @@ void check_rigid_pieces(const Case& c, const Mesh& mesh, const ModelParts& parts
   const std::vector<FreePiece> free = free_rigid_motions(mesh, parts.constraints, holds);
   if (free.empty()) return;
   const FreePiece& piece = free.front();
-  char head[200];
-  std::snprintf(head, sizeof head, "%s of %d %s (centred near [%.4g, %.4g, %.4g])",
-                piece.n_pieces > 1 ? "a piece of the mesh" : "the body", piece.n_elements,
-                mesh.is_shell() ? "triangles" : "tetrahedra", piece.centre.x(), piece.centre.y(),
-                piece.centre.z());
+  const std::string head = piece_text(piece, mesh);
   if (piece.motions.size() == 6)
     throw InputError({c.path, 0, 0, "boundary"},
-                     std::string(head) +
+                     head +
                          " is held by no boundary condition, die or cap: it can move as a rigid "
                          "body, so the tangent is singular; fix or prescribe some of its "
                          "displacements, or add solver.viscosity");
@@ -243,16 +239,12 @@ void check_rigid_pieces(const Case& c, const Mesh& mesh, const ModelParts& parts
              : k + 1 == piece.motions.size() ? " and "
                                              : ", ") +
             piece.motions[k].describe();
-  const int node = piece.nodes.front();
-  const Vec3d& x = mesh.nodes[static_cast<std::size_t>(node)];
-  char where[160];
-  std::snprintf(where, sizeof where, "node %d at [%.6g, %.6g, %.6g]", node, x.x(), x.y(), x.z());
   char when[64];
   std::snprintf(when, sizeof when, "%g", t1);
   throw InputError(
       {c.path, 0, 0, "boundary"},
-      std::string(head) + " can still move as a rigid body by " + ways + " (" + where +
-          " moves so): nothing holds " + (piece.motions.size() > 1 ? "these" : "this") +
+      head + " " + free_motion_text(ways, mesh, piece.nodes.front()) + ": nothing holds " +
+          (piece.motions.size() > 1 ? "these" : "this") +
           ", so the tangent is singular. Hold it by a boundary condition (a symmetry plane "
           "holds only the motion across it), a cap, or a die that touches the body by the first "
           "step's end (t = " +

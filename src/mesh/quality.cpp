@@ -42,6 +42,11 @@ std::string number(double v) {
   return out.str();
 }
 
+/// " (centred at [x, y, z])": where an element of a message lies, for a mesh viewer.
+std::string centred_at(const Vec3d& c) {
+  return " (centred at [" + number(c.x()) + ", " + number(c.y()) + ", " + number(c.z()) + "])";
+}
+
 /// (longest edge / inradius) / (2 sqrt 6), inradius r = 3 V / (sum of face areas); 1 for a
 /// regular tetrahedron, infinity for a degenerate one.
 double aspect_ratio(const std::array<Vec3d, 4>& x, double volume) {
@@ -157,9 +162,8 @@ void check_volumes(const Mesh& mesh, MeshReport& report) {
       // by its place among the tetrahedra counted from 1 and by its centre, which a user finds
       // in a mesh viewer.
       const auto which = [&] {
-        const Vec3d c = 0.25 * (x[0] + x[1] + x[2] + x[3]);
-        return "tetrahedron " + std::to_string(t + 1) + " (centred at [" + number(c.x()) + ", " +
-               number(c.y()) + ", " + number(c.z()) + "])";
+        return "tetrahedron " + std::to_string(t + 1) +
+               centred_at(0.25 * (x[0] + x[1] + x[2] + x[3]));
       };
       if (std::abs(volume) <= 1e-12 * longest * longest * longest) {
         inverted.add(which() + " is degenerate (volume " + number(volume) + " mm^3)");
@@ -368,9 +372,10 @@ void check_shell_surface(const Mesh& mesh, MeshReport& report) {
       if (angle < kShellAngleWarning) ++n_sharp;
     }
     if (n.norm() <= 2e-12 * longest * longest) {
-      const Vec3d c = (mesh.nodes[tri[0]] + mesh.nodes[tri[1]] + mesh.nodes[tri[2]]) / 3.0;
-      degenerate.add("triangle " + std::to_string(t + 1) + " (centred at [" + number(c.x()) + ", " +
-                     number(c.y()) + ", " + number(c.z()) + "]) has zero area");
+      degenerate.add(
+          "triangle " + std::to_string(t + 1) +
+          centred_at((mesh.nodes[tri[0]] + mesh.nodes[tri[1]] + mesh.nodes[tri[2]]) / 3.0) +
+          " has zero area");
       continue;
     }
     normals[t] = n.normalized();

@@ -82,6 +82,23 @@ std::string RigidMotion::describe() const {
          " through " + point_text(point, scale);
 }
 
+std::string piece_text(const FreePiece& piece, const Mesh& mesh) {
+  char text[200];
+  std::snprintf(text, sizeof text, "%s of %d %s (centred near [%.4g, %.4g, %.4g])",
+                piece.n_pieces > 1 ? "a piece of the mesh" : "the body", piece.n_elements,
+                mesh.is_shell() ? "triangles" : "tetrahedra", piece.centre.x(), piece.centre.y(),
+                piece.centre.z());
+  return text;
+}
+
+std::string free_motion_text(const std::string& motion, const Mesh& mesh, int node) {
+  const Vec3d& x = mesh.nodes[static_cast<std::size_t>(node)];
+  char where[160];
+  std::snprintf(where, sizeof where, " (node %d at [%.6g, %.6g, %.6g] moves so)", node, x.x(),
+                x.y(), x.z());
+  return "can still move as a rigid body by " + motion + where;
+}
+
 int farthest_moved(const RigidMotion& motion, const Mesh& mesh, const std::vector<int>& nodes) {
   int carrier = nodes.empty() ? -1 : nodes.front();
   double farthest = -1.0;

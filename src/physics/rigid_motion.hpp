@@ -40,6 +40,13 @@ struct FreePiece {
   std::vector<int> nodes;
 };
 
+/// "the body of 48 tetrahedra (centred near [0.5, 0.5, 0.5])", or "a piece of the mesh of ..."
+/// when the mesh has several: how the messages about `piece` name it.
+std::string piece_text(const FreePiece& piece, const Mesh& mesh);
+/// "can still move as a rigid body by <motion> (node N at [x, y, z] moves so)", N the node of
+/// `piece` that `motion` moves farthest.
+std::string free_motion_text(const std::string& motion, const Mesh& mesh, int node);
+
 /// The node of `nodes` that `motion` moves farthest (the first of those it moves alike).
 int farthest_moved(const RigidMotion& motion, const Mesh& mesh, const std::vector<int>& nodes);
 

@@ -382,7 +382,6 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
                                 const Log& log) {
   SteppingResult result;
   const double end = settings_.end_time;
-  const bool resumed = resume_.has_value();
   start();
   StepperState& st = current_;
   result.steps = st.steps;
@@ -417,9 +416,10 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
     if (!failure.empty()) {
       model_.restore_converged();
       if (newton.interrupted || requested()) return stop();
-      // The first try of a run's first step: a tangent that some rigid motion leaves unresisted
-      // is singular at every step size, so cutting back would only take time.
-      if (result.steps == 0 && cutbacks_this_step == 0 && !resumed)
+      // The first try of a run's first step (a resumed run starts past it: its checkpoint holds
+      // a step): a tangent that some rigid motion leaves unresisted is singular at every step
+      // size, so cutting back would only take time.
+      if (result.steps == 0 && cutbacks_this_step == 0)
         if (const std::string free = unresisted_rigid_motion(model_); !free.empty()) {
           char head[64];
           std::snprintf(head, sizeof head, "step 1: t = %.6g failed: ", t_new);

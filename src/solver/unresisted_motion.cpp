@@ -103,16 +103,13 @@ std::string unresisted_rigid_motion(MixedModel& model) {
       if (std::abs(motion.rotation[k]) * piece.size <= 1e-6 * scale) motion.rotation[k] = 0.0;
     }
     const int carrier = farthest_moved(motion, mesh, piece.members);
-    const Vec3d& x = mesh.nodes[static_cast<std::size_t>(carrier)];
-    char text[400];
-    std::snprintf(text, sizeof text,
-                  "%s of %d %s (centred near [%.4g, %.4g, %.4g]) can still move as a rigid body "
-                  "by %s (node %d at [%.6g, %.6g, %.6g] moves so): the tangent's stiffness "
-                  "against it is %.1e of its largest, so the tangent is singular",
-                  piece.n_pieces > 1 ? "a piece of the mesh" : "the body", piece.n_elements,
-                  mesh.is_shell() ? "triangles" : "tetrahedra", piece.centre.x(), piece.centre.y(),
-                  piece.centre.z(), motion.describe().c_str(), carrier, x.x(), x.y(), x.z(),
+    char stiffness[120];
+    std::snprintf(stiffness, sizeof stiffness,
+                  ": the tangent's stiffness against it is %.1e of its largest, so the tangent "
+                  "is singular",
                   weakest / norm_K);
+    const std::string text = piece_text(piece, mesh) + " " +
+                             free_motion_text(motion.describe(), mesh, carrier) + stiffness;
     return text;
   }
   return {};
