@@ -34,19 +34,6 @@ const std::vector<std::string> kCorpus{
 // on which Gmsh loops is stopped there and refused, in time.
 constexpr double kTimeLimitSeconds = 30.0;
 
-// Whether this test (and so plisse, built with the same flags) has AddressSanitizer.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-
 /// Texts that only appear when plisse crashed or a sanitizer caught something.
 const std::vector<std::string> kCrashSigns{"terminate called", "Segmentation",  "Sanitizer",
                                            "runtime error:",   "core dumped",   "Aborted",

@@ -13,6 +13,8 @@
 #include <thread>
 #include <vector>
 
+#include "support/sanitizer.hpp"
+
 namespace plisse::test {
 
 /// A fresh directory under the build tree for one test's output, inside a folder named after the
@@ -40,11 +42,8 @@ inline int run_plisse(const std::string& args, const std::filesystem::path& log)
 /// address space, except under AddressSanitizer, which reserves terabytes of address space for
 /// its shadow memory (scripts/sanitize): then to the time only.
 inline std::string limits(int seconds) {
-#if defined(__SANITIZE_ADDRESS__)
-  return "timeout " + std::to_string(seconds) + " ";
-#else
-  return "ulimit -v 4194304; timeout " + std::to_string(seconds) + " ";
-#endif
+  return (kAddressSanitizer ? "" : "ulimit -v 4194304; ") + std::string("timeout ") +
+         std::to_string(seconds) + " ";
 }
 
 /// Exit status and everything `plisse ARGS` printed (stdout and stderr).

@@ -12,18 +12,10 @@
 #include "element_test_support.hpp"
 #include "material/fung.hpp"
 #include "material/neo_hookean.hpp"
+#include "support/sanitizer.hpp"
 
 // AddressSanitizer replaces malloc itself; interposing it there crashes at start-up.
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define PLISSE_ASAN 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__)
-#define PLISSE_ASAN 1
-#endif
-
-#if defined(__GLIBC__) && !defined(PLISSE_ASAN)
+#if defined(__GLIBC__) && !PLISSE_TEST_ASAN
 namespace {
 std::atomic<bool> counting{false};
 std::atomic<long> allocations{0};

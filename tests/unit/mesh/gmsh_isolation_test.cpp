@@ -26,14 +26,7 @@
 #include "mesh/gmsh_session.hpp"
 #include "mesh/isolated_process.hpp"
 #include "mesh_test_util.hpp"
-
-#if defined(__SANITIZE_ADDRESS__)
-#define PLISSE_TEST_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define PLISSE_TEST_ASAN 1
-#endif
-#endif
+#include "support/sanitizer.hpp"
 
 namespace plisse {
 namespace {
@@ -129,7 +122,7 @@ TEST(IsolatedProcess, LimitsTheMemoryTheChildCanMap) {
         }
       },
       small_limits());
-#ifdef PLISSE_TEST_ASAN
+#if PLISSE_TEST_ASAN
   EXPECT_TRUE(r.end != ChildResult::End::exited || r.exit_status != 0 || text_of(r) == "bad_alloc");
 #else
   EXPECT_EQ(text_of(r), "bad_alloc");
@@ -229,7 +222,7 @@ TEST(GmshIsolation, HugeAnnouncedNodeCountIsAMalformedMeshNotAnAllocation) {
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_NE(message.find("the mesh file is malformed"), std::string::npos) << message;
-#ifndef PLISSE_TEST_ASAN
+#if !PLISSE_TEST_ASAN
   EXPECT_NE(message.find("memory limit of 1024 MiB for a file of 93 bytes"), std::string::npos)
       << message;
 #endif
