@@ -1,6 +1,7 @@
 """Runs the validation tiers and writes the generated tables of docs/validation.md.
 
 Usage: scripts/validate [--tier ci|full] [-R REGEX] [-j N]   run a tier's tests, record, update
+       scripts/validate --tier ci --share K/N [-j N]        run the K-th of N shares of the tier
        scripts/validate --check                             the pages agree with the records
        scripts/validate --update                            rewrite the pages from the records
 
@@ -16,7 +17,10 @@ the last run, kept in the repository) and writes the tier's tables between the m
 of docs/validation.md. --check regenerates the tables from the records and fails (exit 1) when a
 page differs from them, when a record's row has no test behind it, or when a table row of the
 page lies outside a generated block (a number no command produces). A run with -R keeps the rows
-of the tests it did not run. Exit status: 0 when every test passed and every claim held, 1
+of the tests it did not run, and so does a run of a share: --share K/N splits the tier's tests
+into N shares of about equal cost (each test weighs its last recorded time times the processors it
+takes, the costliest placed first, each in the share that weighs least so far) and runs the K-th;
+CI runs one share a day, so that N days cover the tier. Exit status: 0 when every test passed and every claim held, 1
 otherwise (the record and the tables are written either way, a failed row marked so), 2 for bad
 usage.
 """
@@ -39,7 +43,8 @@ TIERS = ("ci", "full")
 PAGES = [ROOT / "docs" / "validation.md"]
 RECORDS = ROOT / "docs" / "validation"
 TIER_TITLE = {
-    "ci": "CI tier: the meshes CI runs on every change (the studies' own where CI can afford them)",
+    "ci": "CI tier: the meshes CI runs, a quarter of the tier each day (the studies' own where CI "
+          "can afford them)",
     "full": "Full tier: the studies' meshes where CI runs coarser ones",
 }
 
@@ -104,7 +109,13 @@ def block_text(tier, record):
         return "\n".join(lines)
     minutes = record["seconds"] / 60
     tests, jobs = len(record["tests"]), record["jobs"]
-    if record.get("regex"):  # a run of some tests, the others' rows kept from earlier runs
+    if record.get("share"):  # a share of the tests, the others' rows kept from earlier runs
+        k, n = record["share"].split("/")
+        lines += [f"`{record['command']}` at commit {record['commit']}, {record['date']}, ran "
+                  f"share {k} of {n} of the tier's tests in {minutes:.1f} minutes on {jobs} "
+                  f"process{'es' * (jobs != 1)} at once; the other rows are from earlier runs "
+                  f"(each test's own time below)."]
+    elif record.get("regex"):  # a run of some tests, the others' rows kept from earlier runs
         lines += [f"`{record['command']}` at commit {record['commit']}, {record['date']}, ran the "
                   f"tests matching `{record['regex']}` in {minutes:.1f} minutes on {jobs} "
                   f"process{'es' * (jobs != 1)} at once; the other rows are from earlier runs "
@@ -209,9 +220,52 @@ def junit_times(path):
     return tests
 
 
-def run(tier, regex, jobs):
+def tier_tests(build, tier):
+    """{test: processors} of the tests labelled validation-<tier> (ctest's own listing)."""
+    listing = subprocess.run(["ctest", "--test-dir", str(build), "-L", f"validation-{tier}",
+                              "--show-only=json-v1"], check=True, capture_output=True, text=True)
+    tests = {}
+    for t in json.loads(listing.stdout)["tests"]:
+        processors = 1
+        for prop in t.get("properties", []):
+            if prop["name"] == "PROCESSORS":
+                processors = int(prop["value"])
+        tests[t["name"]] = processors
+    return tests
+
+
+def shares(tests, seconds, n):
+    """The tests split into n lists of about equal cost: longest processing time first. A test's
+    cost is its recorded seconds (the mean of the recorded ones when it has none) times its
+    processors; ties go by name, so the split depends on the record alone."""
+    known = [seconds[t] for t in tests if t in seconds]
+    default = sum(known) / len(known) if known else 1.0
+    cost = {t: seconds.get(t, default) * p for t, p in tests.items()}
+    split, load = [[] for _ in range(n)], [0.0] * n
+    for t in sorted(tests, key=lambda t: (-cost[t], t)):
+        k = min(range(n), key=lambda k: (load[k], k))
+        split[k].append(t)
+        load[k] += cost[t]
+    return split
+
+
+def share_regex(build, tier, share):
+    """The anchored regex of the tests of share K of N (share: (K, N))."""
+    k, n = share
+    record = read_record(tier) or {"tests": {}}
+    seconds = {name: t["seconds"] for name, t in record["tests"].items()}
+    chosen = shares(tier_tests(build, tier), seconds, n)[k - 1]
+    if not chosen:
+        fail(f"share {k}/{n} of tier {tier} holds no test (the tier has fewer than {n})", 2)
+    print(f"validate: share {k} of {n} of tier {tier}: {', '.join(sorted(chosen))}")
+    return "^(" + "|".join(re.escape(t) for t in sorted(chosen)) + ")$"
+
+
+def run(tier, regex, jobs, share=None):
     build = Path(os.environ.get("PLISSE_BUILD_DIR", ROOT / "build"))
     subprocess.run([str(ROOT / "scripts" / "build")], check=True)
+    if share:
+        regex = share_regex(build, tier, share)
     work = build / "validation"
     work.mkdir(parents=True, exist_ok=True)
     lines, junit = work / f"{tier}.jsonl", work / f"{tier}-junit.xml"
@@ -243,12 +297,14 @@ def run(tier, regex, jobs):
     claims.sort(key=lambda c: (c["kind"] != "validation", c["row"]))
     record = {
         "tier": tier,
-        "command": f"scripts/validate --tier {tier}",
+        "command": f"scripts/validate --tier {tier}" + (f" --share {share[0]}/{share[1]}"
+                                                          if share else ""),
         "commit": tree_commit(ROOT),
         "date": datetime.date.today().isoformat(),
         "jobs": jobs,
         "seconds": round(seconds, 1),  # this invocation's wall time
-        "regex": regex if old else None,
+        "regex": regex if old and not share else None,
+        "share": f"{share[0]}/{share[1]}" if old and share else None,
         "tests": tests,
         "claims": claims,
     }
@@ -269,6 +325,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--tier", choices=TIERS, default="ci")
     ap.add_argument("-R", dest="regex", help="run only the tests that match (ctest -R)")
+    ap.add_argument("--share", metavar="K/N",
+                    help="run the K-th of N shares of the tier's tests, of about equal cost")
     ap.add_argument("-j", dest="jobs", type=int, default=os.cpu_count() or 1)
     ap.add_argument("--check", action="store_true", help="compare the pages with the records")
     ap.add_argument("--update", action="store_true", help="rewrite the pages from the records")
@@ -280,7 +338,15 @@ def main():
         return 0
     if args.jobs < 1:
         fail("-j: at least 1")
-    return run(args.tier, args.regex, args.jobs)
+    share = None
+    if args.share:
+        m = re.fullmatch(r"([0-9]+)/([0-9]+)", args.share)
+        if not m or not 1 <= int(m[1]) <= int(m[2]):
+            fail(f"--share takes K/N with 1 <= K <= N, not '{args.share}'")
+        if args.regex:
+            fail("--share and -R select tests each: give one")
+        share = (int(m[1]), int(m[2]))
+    return run(args.tier, args.regex, args.jobs, share)
 
 
 if __name__ == "__main__":

@@ -103,11 +103,54 @@ class TablesTest(Page):
         validate.update()
         self.assertIn("ran the tests matching `Sheet` in 1.5 minutes", self.page.read_text())
 
+    def test_a_share_says_which_share_it_ran(self):
+        partial = record([claim("a/b", 0.97, 1.0, -0.04, -0.02)])
+        partial["share"] = "2/4"
+        self.write("# page\n\n" + self.blocks() + "\n", partial)
+        validate.update()
+        self.assertIn("ran share 2 of 4 of the tier's tests in 1.5 minutes", self.page.read_text())
+
     def test_markers_out_of_order_are_refused(self):
         begin, end = validate.markers("ci")
         self.write(f"{end}\n{begin}\n", record([]))
         with self.assertRaises(SystemExit):
             validate.update()
+
+
+class SharesTest(unittest.TestCase):
+    """--share K/N: the tier's tests in N lists of about equal cost."""
+
+    def test_every_test_lands_in_exactly_one_share(self):
+        tests = {f"T.{c}": 1 for c in "abcdefghij"}
+        seconds = {t: 10.0 * (i + 1) for i, t in enumerate(sorted(tests))}
+        split = validate.shares(tests, seconds, 4)
+        self.assertEqual(sorted(t for share in split for t in share), sorted(tests))
+        self.assertEqual(len(split), 4)
+
+    def test_costs_are_balanced_longest_first(self):
+        # Costs 60, 50, 40, 30, 20, 10 in 2 shares: longest first into the lighter share gives
+        # {60, 30, 20} and {50, 40, 10}, 110 and 100 (a split by name alone gives 120 and 90).
+        tests = {f"T.{c}": 1 for c in "abcdef"}
+        seconds = dict(zip(sorted(tests), [60.0, 50.0, 40.0, 30.0, 20.0, 10.0]))
+        split = validate.shares(tests, seconds, 2)
+        self.assertEqual(split, [["T.a", "T.d", "T.e"], ["T.b", "T.c", "T.f"]])
+
+    def test_a_test_on_two_processors_weighs_twice(self):
+        tests = {"T.wide": 2, "T.x": 1, "T.y": 1}
+        seconds = {"T.wide": 50.0, "T.x": 60.0, "T.y": 45.0}
+        self.assertEqual(validate.shares(tests, seconds, 2), [["T.wide"], ["T.x", "T.y"]])
+
+    def test_a_test_without_a_recorded_time_weighs_the_mean(self):
+        tests = {"T.new": 1, "T.x": 1, "T.y": 1}
+        seconds = {"T.x": 100.0, "T.y": 20.0}
+        # T.new weighs 60: after T.x (100) it goes to the empty share, then T.y joins it.
+        self.assertEqual(validate.shares(tests, seconds, 2), [["T.x"], ["T.new", "T.y"]])
+
+    def test_the_split_does_not_depend_on_the_listing_order(self):
+        tests = {f"T.{c}": 1 for c in "abcdefg"}
+        seconds = {t: 30.0 for t in tests}
+        reverse = dict(reversed(list(tests.items())))
+        self.assertEqual(validate.shares(tests, seconds, 3), validate.shares(reverse, seconds, 3))
 
 
 class NumbersTest(unittest.TestCase):
