@@ -1,6 +1,7 @@
 // `plisse check CASE.yaml [--set key.path=value ...]`: validates a case and its mesh without
 // solving (docs/architecture.md, "Interface contract") and prints a short summary. Problems are
 // thrown as InputError, which main() reports with file, line, column and key and exit status 2.
+#include <algorithm>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -101,10 +102,14 @@ void check_case(const CheckOptions& options) {
   if (!c.title.empty()) out << "  title     " << c.title << '\n';
   out << "  material  " << material_line(c.material) << '\n';
   for (const Region& r : c.regions) {
+    const std::size_t n = region_elements(r, mesh).size();
     out << "  region    " << r.label() << " ("
-        << count(region_tets(r, mesh).size(), "tetrahedron", "tetrahedra") << "): ";
-    if (r.material)
-      out << material_line(*r.material);
+        << (mesh.is_shell() ? count(n, "triangle", "triangles")
+                            : count(n, "tetrahedron", "tetrahedra"))
+        << "): ";
+    if (r.material) out << material_line(*r.material);
+    if (r.thickness)
+      out << ", thickness " << number(*r.thickness) << " mm";
     else if (r.displacement.isZero())
       out << "rigid, held";
     else
@@ -132,8 +137,10 @@ void check_case(const CheckOptions& options) {
       << (c.mesh.file ? "file " + *c.mesh.file : "generated " + c.mesh.generate->kind) << ": "
       << mesh.n_nodes() << " nodes, ";
   if (mesh.is_shell()) {
-    out << mesh.triangles.size() << " triangles, thickness " << number(mesh.shell_thickness.front())
-        << " mm\n";
+    const auto [thinnest, thickest] =
+        std::minmax_element(mesh.triangle_thickness.begin(), mesh.triangle_thickness.end());
+    out << mesh.triangles.size() << " triangles, thickness " << number(*thinnest)
+        << (*thickest > *thinnest ? " to " + number(*thickest) : std::string()) << " mm\n";
     tag_line("edge", mesh.edge_tags, "edges");
     tag_line("surface", mesh.surface_tags, "triangles");
     out << "            quality: smallest angle " << number(report.min_angle_deg)

@@ -61,13 +61,13 @@ void check_free_displacements(const Case& c, const Mesh& mesh,
 }
 
 /// The density of every element [tonne/mm^3], as consistent_nodal_volumes weighs them: of each
-/// tetrahedron, its material's, 0 in a rigid region (its weight rests on whatever moves it); of
-/// each triangle of a shell, the case's material's (a shell has no regions).
+/// tetrahedron, or each triangle of a shell, its material's, 0 in a rigid region (its weight rests
+/// on whatever moves it).
 std::vector<double> element_densities(const Case& c, const Mesh& mesh) {
-  if (mesh.is_shell()) return std::vector<double>(mesh.triangles.size(), c.material.density);
-  std::vector<double> density(mesh.tets.size(), c.material.density);
+  std::vector<double> density(mesh.is_shell() ? mesh.triangles.size() : mesh.tets.size(),
+                              c.material.density);
   for (const Region& r : c.regions)
-    for (int t : region_tets(r, mesh))
+    for (int t : region_elements(r, mesh))
       density[static_cast<std::size_t>(t)] = r.material ? r.material->density : 0.0;
   return density;
 }
@@ -129,14 +129,15 @@ void orient_fibres_on_the_shell(const Case& c, const MaterialSection& section, i
   }
 }
 
-/// The material of every element: the case's `material` for the tetrahedra in no region, each
-/// deformable region's own, ElementMaterials::kRigid for a rigid region's (check_case_against_mesh
-/// has checked the tags and that no tetrahedron is in two regions).
+/// The material of every element: the case's `material` for the elements (tetrahedra, or a shell's
+/// triangles) in no region, each deformable region's own, ElementMaterials::kRigid for a rigid
+/// region's (check_case_against_mesh has checked the tags and that no element is in two regions).
 ElementMaterials element_materials(const Case& c, const Mesh& mesh) {
   ElementMaterials m = ElementMaterials::uniform(make_material(c.material.model, c.material.params),
                                                  c.material.inverse_bulk_modulus());
   std::vector<const MaterialSection*> sections = {&c.material};  // by material index
-  if (!c.regions.empty()) m.of_element.assign(mesh.tets.size(), 0);
+  if (!c.regions.empty())
+    m.of_element.assign(mesh.is_shell() ? mesh.triangles.size() : mesh.tets.size(), 0);
   for (const Region& r : c.regions) {
     int index = ElementMaterials::kRigid;
     if (r.material) {
@@ -145,7 +146,7 @@ ElementMaterials element_materials(const Case& c, const Mesh& mesh) {
       m.inverse_bulk_moduli.push_back(r.material->inverse_bulk_modulus());
       sections.push_back(&*r.material);
     }
-    for (int t : region_tets(r, mesh)) m.of_element[static_cast<std::size_t>(t)] = index;
+    for (int t : region_elements(r, mesh)) m.of_element[static_cast<std::size_t>(t)] = index;
   }
   for (const MaterialSection* section : sections) m.laws.push_back(section->inelastic());
   for (std::size_t k = 0; k < sections.size(); ++k)
@@ -181,7 +182,7 @@ void add_rigid_constraints(const Case& c, const Mesh& mesh, const ElementMateria
   const char* axes = "xyz";
   for (const Region& r : c.regions) {
     if (!r.rigid) continue;
-    const std::vector<int> tets = region_tets(r, mesh);
+    const std::vector<int> tets = region_elements(r, mesh);
     for (int v : tet_nodes(mesh, tets)) {
       for (int k = 0; k < 3; ++k) {
         const ConstrainedComponent cc{v, k, r.displacement[k], r.ramp};

@@ -161,7 +161,7 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
     int k = 0;
     for (const Region& r : c.regions) {
       const double value = r.rigid ? -1.0 : double(++k);
-      for (int t : region_tets(r, model.mesh()))
+      for (int t : region_elements(r, model.mesh()))
         material_field_[static_cast<std::size_t>(t)] = value;
     }
   }

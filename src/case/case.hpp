@@ -99,12 +99,18 @@ struct Probe {
 /// A part of the body given by a volume tag: with a material of its own, or rigid. Tetrahedra in
 /// no region have the case's `material`.
 struct Region {
-  std::string volume;  ///< the volume tag; empty when the region is a box
+  std::string volume;  ///< the volume tag (a solid's); empty when the region is a surface or box
   InputPlace volume_place;
-  /// The region as a box instead: the tetrahedra whose centroid lies in [lower, upper] [mm].
+  std::string surface;  ///< a shell's: the surface tag of its triangles; else empty
+  InputPlace surface_place;
+  /// The region as a box instead: the elements (tetrahedra, or a shell's triangles) whose centroid
+  /// lies in [lower, upper] [mm].
   std::optional<std::array<Vec3d, 2>> box;
   InputPlace box_place;
   std::optional<MaterialSection> material;  ///< a deformable region's model
+  /// A shell's region: its own reference wall thickness [mm] (else the mesh's).
+  std::optional<double> thickness;
+  InputPlace thickness_place;
   bool rigid = false;
   /// A rigid region: its translation [mm] at the end of the ramp (it does not turn). Every node
   /// of its tetrahedra follows it.
@@ -112,9 +118,11 @@ struct Region {
   Ramp ramp;
   std::string name;  ///< optional; a rigid region's force columns `force_x:<name>` ...
   InputPlace place;
-  /// What messages and summary.json call the region: its volume tag, else its name, else its key
-  /// ("regions[1]").
-  std::string label() const { return !volume.empty() ? volume : !name.empty() ? name : place.key; }
+  /// What messages and summary.json call the region: its volume or surface tag, else its name,
+  /// else its key ("regions[1]").
+  std::string label() const {
+    return !volume.empty() ? volume : !surface.empty() ? surface : !name.empty() ? name : place.key;
+  }
 };
 
 enum class Scheme { total_lagrangian, incremental };
@@ -207,9 +215,11 @@ Case parse_case_string(const std::string& text, const std::string& name,
 /// Reads or generates the case's mesh (InputError on failure, naming the case's mesh key).
 Mesh load_case_mesh(const Case& c);
 
-/// The tetrahedra of a region (indices into mesh.tets, increasing): its volume tag's, or those
-/// whose centroid lies in its box. Empty for a tag the mesh lacks.
-std::vector<int> region_tets(const Region& region, const Mesh& mesh);
+/// The elements of a region, increasing: of a solid, the tetrahedra (indices into mesh.tets) of its
+/// volume tag or whose centroid lies in its box; of a shell, the triangles (indices into
+/// mesh.triangles) of its surface tag or whose centroid lies in its box. Empty for a tag the mesh
+/// lacks, or one of the other kind of mesh.
+std::vector<int> region_elements(const Region& region, const Mesh& mesh);
 
 /// Checks everything that needs the mesh: every SurfaceRef names an existing, non-empty surface
 /// tag; symmetry surfaces are planar; the mesh passes check_mesh. Throws InputError at the place of

@@ -111,34 +111,59 @@ void check_element_family(const Case& c, const Mesh& mesh) {
   const auto refuse = [](const InputPlace& place, const std::string& what) {
     throw InputError(place, what + " is not built for `element: shell` yet");
   };
-  if (!c.regions.empty()) refuse(c.regions.front().place, "`regions`");
-  const MaterialSection& m = c.material;
-  if (!m.inelastic().elastic())
-    refuse(m.place, "a viscoelastic or Mullins material (history at the thickness points)");
-  if (m.shell_fibre_frame) refuse(m.fibre_frame_place, "`fibre_frame: shell`");
+  const auto refuse_material = [&](const MaterialSection& m) {
+    if (!m.inelastic().elastic())
+      refuse(m.place, "a viscoelastic or Mullins material (history at the thickness points)");
+    if (m.shell_fibre_frame) refuse(m.fibre_frame_place, "`fibre_frame: shell`");
+  };
+  refuse_material(c.material);
+  for (const Region& r : c.regions) {
+    if (r.rigid) refuse(r.place, "a rigid region");
+    if (r.material) refuse_material(*r.material);
+  }
   if (c.solver.viscosity > 0.0)
     refuse(InputPlace{c.path, 0, 0, "solver.viscosity"}, "`solver.viscosity`");
 }
 
-/// Every region names a non-empty volume tag or a box holding tetrahedra, no tetrahedron is in
-/// two regions, and something is left to deform.
+/// Every region names its elements the way its mesh holds them (a solid's by a volume tag or a
+/// box of tetrahedra, a shell's by a surface tag or a box of triangles), holds some, shares none
+/// with another region, and gives a thickness only on a shell; something is left to deform.
 void check_regions(const Case& c, const Mesh& mesh) {
   if (c.regions.empty()) return;
-  std::vector<int> region_of(mesh.tets.size(), -1);
+  const bool shell = mesh.is_shell();
+  const std::string element = shell ? "triangle" : "tetrahedron";
+  std::vector<int> region_of(shell ? mesh.triangles.size() : mesh.tets.size(), -1);
   for (std::size_t k = 0; k < c.regions.size(); ++k) {
     const Region& r = c.regions[k];
-    if (!r.box) check_tag(c, mesh, kVolumeTags, r.volume, r.volume_place);
-    const std::vector<int> tets = region_tets(r, mesh);
-    if (tets.empty())
+    if (shell && !r.volume.empty())
+      throw InputError(r.volume_place,
+                       "a shell has no volumes: name the region's triangles by a `surface` tag "
+                       "(a Gmsh physical surface) or a `box`");
+    if (!shell && !r.surface.empty())
+      throw InputError(r.surface_place,
+                       "`surface` names a shell's triangles; a region of a solid is a `volume` "
+                       "tag (a Gmsh physical volume) or a `box`");
+    if (!shell && r.thickness)
+      throw InputError(r.thickness_place,
+                       "`thickness` is a shell region's wall thickness; a solid's is its mesh's");
+    if (!r.box) {
+      if (shell)
+        check_tag(c, mesh, kSurfaceTags, r.surface, r.surface_place);
+      else
+        check_tag(c, mesh, kVolumeTags, r.volume, r.volume_place);
+    }
+    const std::vector<int> elements = region_elements(r, mesh);
+    if (elements.empty())
       throw InputError(r.box_place,
-                       "no tetrahedron of " + mesh_name(c) + " has its centroid in the box");
-    for (int t : tets) {
+                       "no " + element + " of " + mesh_name(c) + " has its centroid in the box");
+    const InputPlace& where = r.box ? r.box_place : shell ? r.surface_place : r.volume_place;
+    for (int t : elements) {
       int& owner = region_of[static_cast<std::size_t>(t)];
       if (owner >= 0)
-        throw InputError(r.box ? r.box_place : r.volume_place,
-                         "region '" + r.label() + "' shares tetrahedron " + std::to_string(t) +
-                             " with region '" + c.regions[static_cast<std::size_t>(owner)].label() +
-                             "': a tetrahedron may be in one region only");
+        throw InputError(where, "region '" + r.label() + "' shares " + element + " " +
+                                    std::to_string(t + 1) + " (numbered from 1) with region '" +
+                                    c.regions[static_cast<std::size_t>(owner)].label() + "': a " +
+                                    element + " may be in one region only");
       owner = static_cast<int>(k);
     }
   }
@@ -226,27 +251,43 @@ void check_wall_thickness(const Case& c) {
 
 }  // namespace
 
-std::vector<int> region_tets(const Region& region, const Mesh& mesh) {
+std::vector<int> region_elements(const Region& region, const Mesh& mesh) {
+  const bool shell = mesh.is_shell();
   if (!region.box) {
-    const auto tag = mesh.volume_tags.find(region.volume);
-    if (tag == mesh.volume_tags.end()) return {};
-    std::vector<int> tets = tag->second;
-    std::sort(tets.begin(), tets.end());
-    tets.erase(std::unique(tets.begin(), tets.end()), tets.end());
-    return tets;
+    const std::string& name = shell ? region.surface : region.volume;
+    const auto& tags = shell ? mesh.surface_tags : mesh.volume_tags;
+    const auto tag = tags.find(name);
+    if (name.empty() || tag == tags.end()) return {};
+    std::vector<int> elements = tag->second;
+    std::sort(elements.begin(), elements.end());
+    elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
+    return elements;
   }
   const auto& [lower, upper] = *region.box;
-  std::vector<int> tets;
+  const auto inside = [&](const Vec3d& centroid) {
+    return (centroid.array() >= lower.array()).all() && (centroid.array() <= upper.array()).all();
+  };
+  std::vector<int> elements;
+  if (shell) {
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      Vec3d centroid = Vec3d::Zero();
+      for (int v : mesh.triangles[t]) centroid += mesh.nodes[static_cast<std::size_t>(v)] / 3.0;
+      if (inside(centroid)) elements.push_back(static_cast<int>(t));
+    }
+    return elements;
+  }
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
     Vec3d centroid = Vec3d::Zero();
     for (int v : mesh.tets[t]) centroid += mesh.nodes[static_cast<std::size_t>(v)] / 4.0;
-    if ((centroid.array() >= lower.array()).all() && (centroid.array() <= upper.array()).all())
-      tets.push_back(static_cast<int>(t));
+    if (inside(centroid)) elements.push_back(static_cast<int>(t));
   }
-  return tets;
+  return elements;
 }
 
-Mesh load_case_mesh(const Case& c) {
+namespace {
+
+/// The case's mesh as its file holds it or its generator makes it (load_case_mesh).
+Mesh read_or_generate_mesh(const Case& c) {
   namespace fs = std::filesystem;
   if (c.mesh.file) {
     const std::string& path = *c.mesh.file;
@@ -312,6 +353,17 @@ Mesh load_case_mesh(const Case& c) {
     throw InputError(c.mesh.place,
                      std::string("cannot generate this mesh from these options: ") + e.what());
   }
+}
+
+}  // namespace
+
+Mesh load_case_mesh(const Case& c) {
+  Mesh mesh = read_or_generate_mesh(c);
+  // A shell region's own thickness (check_regions checks the regions against this mesh).
+  if (mesh.is_shell())
+    for (const Region& r : c.regions)
+      if (r.thickness) set_shell_thickness(mesh, region_elements(r, mesh), *r.thickness);
+  return mesh;
 }
 
 void check_case_against_mesh(const Case& c, const Mesh& mesh) {

@@ -1,4 +1,5 @@
-// The `regions:` section: volume tags or boxes with a material of their own, or rigid.
+// The `regions:` section: volume tags, a shell's surface tags, or boxes with a material (and on a
+// shell a thickness) of their own, or rigid.
 #include "case/sections.hpp"
 #include "schema/field.hpp"
 #include "schema/table.hpp"
@@ -22,14 +23,27 @@ Schema<Region> region_schema() {
           r.volume = f.name();
           r.volume_place = f.place();
         });
+  s.add({"surface",
+         "surface tag",
+         "–",
+         "",
+         "",
+         {},
+         "on a shell: the region's triangles (a Gmsh physical surface of the mesh file); a "
+         "triangle may be in one region only"},
+        [](const Field& f, Region& r, ReadContext&) {
+          r.surface = f.name();
+          r.surface_place = f.place();
+        });
   s.add({"box",
          "[[x, y, z], [x, y, z]]",
          "mm",
          "lower < upper",
          "",
          {},
-         "instead of `volume`: the tetrahedra whose centroid lies in this box (lower and upper "
-         "corners), for generated meshes, which have no volume tags"},
+         "instead of `volume` or `surface`: the tetrahedra (on a shell, the triangles) whose "
+         "centroid lies in this box (lower and upper corners), for generated meshes, which have "
+         "no volume tags"},
         [](const Field& f, Region& r, ReadContext&) {
           r.box_place = f.place();
           if (!f.node().IsSequence() || f.node().size() != 2)
@@ -43,12 +57,15 @@ Schema<Region> region_schema() {
                      std::string(1, "xyz"[k]) + ")");
           r.box = box;
         });
-  s.rule("exactly one of `volume` and `box`",
+  s.rule("exactly one of `volume`, `surface` and `box`",
          [](const FieldMap& m, const Region& r, const ReadContext&) {
-           if (!r.volume.empty() && r.box)
-             m.require("box").fail_at_key("give `volume` or `box`, not both");
-           if (r.volume.empty() && !r.box)
-             m.self().fail_at_key("give the region's `volume` tag or its `box`");
+           if (!r.volume.empty() && !r.surface.empty())
+             m.require("surface").fail_at_key("give `volume` or `surface`, not both");
+           if ((!r.volume.empty() || !r.surface.empty()) && r.box)
+             m.require("box").fail_at_key("give a tag (`volume` or `surface`) or `box`, not both");
+           if (r.volume.empty() && r.surface.empty() && !r.box)
+             m.self().fail_at_key(
+                 "give the region's `volume` tag (a solid), `surface` tag (a shell) or its `box`");
          });
   s.add({"material",
          "map",
@@ -63,6 +80,19 @@ Schema<Region> region_schema() {
           const double density = context.density;
           r.material = read_material(f, context);
           context.density = std::max(density, r.material->density);
+        });
+  s.add({"thickness",
+         "number",
+         "mm",
+         Range::positive().describe(),
+         "the mesh's",
+         {},
+         "on a shell: the region's reference wall thickness (a seam, a patch, a thinner "
+         "bladder); each triangle takes its region's, and a node where two thicknesses meet "
+         "their mean"},
+        [](const Field& f, Region& r, ReadContext&) {
+          r.thickness = f.real(Range::positive());
+          r.thickness_place = f.place();
         });
   s.boolean("rigid", &Region::rigid,
             "the region moves as a rigid body with the prescribed `displacement`: its elements "
@@ -87,6 +117,11 @@ Schema<Region> region_schema() {
                  .fail_at_key("a rigid region has no material: remove `material` or `rigid`");
            if (!r.rigid && !r.material)
              m.self().fail_at_key("give the region a `material`, or make it `rigid: true`");
+         });
+  s.rule("`thickness` only with `material`",
+         [](const FieldMap& m, const Region& r, const ReadContext&) {
+           if (r.rigid && r.thickness)
+             m.require("thickness").fail_at_key("a rigid region has no wall thickness");
          });
   s.rule("`displacement`, `ramp` and `name` only with `rigid: true`",
          [](const FieldMap& m, const Region& r, const ReadContext&) {

@@ -39,8 +39,12 @@ struct Mesh {
   /// Volume tags: name -> indices into `tets`.
   std::map<std::string, std::vector<int>> volume_tags;
   /// Shell meshes only (set by make_shell_surface, mesh/shell_surface.hpp), else empty. The
-  /// reference thickness at every node [mm]: a triangle's is the mean of its corners' (uniform
-  /// for the shells plisse makes so far).
+  /// reference thickness of every triangle [mm], the element's (uniform, or a region's own:
+  /// set_shell_thickness).
+  std::vector<double> triangle_thickness;
+  /// Shell meshes only, else empty: the reference thickness at every node [mm], the mean of its
+  /// triangles' (where regions of two thicknesses meet, in between). The elements, loads and dies
+  /// read triangle_thickness.
   std::vector<double> shell_thickness;
   /// Shell meshes only: for each triangle and each side i (the side opposite corner i), the
   /// corner of the neighbouring triangle across that side that is not on it (shell.md, KL1),

@@ -49,7 +49,29 @@ void make_shell_surface(Mesh& mesh, double thickness) {
         mesh.triangles[static_cast<std::size_t>(there.triangle)][there.side];
     mesh.triangle_adjacent[static_cast<std::size_t>(here.triangle)][here.side] = there.triangle;
   }
+  mesh.triangle_thickness.assign(mesh.triangles.size(), thickness);
   mesh.shell_thickness.assign(mesh.nodes.size(), thickness);
+}
+
+void set_shell_thickness(Mesh& mesh, const std::vector<int>& triangles, double thickness) {
+  PLISSE_CHECK(mesh.is_shell() && mesh.triangle_thickness.size() == mesh.triangles.size(),
+               "set_shell_thickness needs the mid-surface of a shell (make_shell_surface)");
+  PLISSE_CHECK(thickness > 0.0 && std::isfinite(thickness),
+               "a shell's thickness must be positive, got " << thickness);
+  for (const int t : triangles) {
+    PLISSE_CHECK(t >= 0 && static_cast<std::size_t>(t) < mesh.triangles.size(),
+                 "triangle " << t << " out of range (" << mesh.triangles.size() << " triangles)");
+    mesh.triangle_thickness[static_cast<std::size_t>(t)] = thickness;
+  }
+  std::vector<double> sum(mesh.nodes.size(), 0.0);
+  std::vector<int> count(mesh.nodes.size(), 0);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (const int v : mesh.triangles[t]) {
+      sum[static_cast<std::size_t>(v)] += mesh.triangle_thickness[t];
+      ++count[static_cast<std::size_t>(v)];
+    }
+  for (std::size_t v = 0; v < mesh.nodes.size(); ++v)
+    if (count[v] > 0) mesh.shell_thickness[v] = sum[v] / count[v];
 }
 
 std::vector<EdgeSide> sides_on_edges(const Mesh& mesh, const std::vector<int>& edges) {

@@ -11,13 +11,19 @@
 namespace plisse {
 
 /// Makes `mesh` (triangles, no tetrahedra) the mid-surface of a shell of uniform reference
-/// thickness `thickness` [mm]: fills mesh.shell_thickness, mesh.triangle_neighbours and
-/// mesh.triangle_adjacent. Throws
+/// thickness `thickness` [mm]: fills mesh.triangle_thickness, mesh.shell_thickness,
+/// mesh.triangle_neighbours and mesh.triangle_adjacent. Throws
 /// plisse::Error when the mesh has tetrahedra or no triangles, the thickness is not positive, a
 /// triangle repeats a node or names one out of range, an edge is shared by more than two
 /// triangles, or two triangles sharing an edge are oriented inconsistently (both run through it
 /// in the same direction: their normals, and a follower pressure on them, would disagree).
 void make_shell_surface(Mesh& mesh, double thickness);
+
+/// Gives the triangles `triangles` (indices into mesh.triangles) the reference thickness
+/// `thickness` [mm] (a region of its own thickness) and makes every node's the mean of its
+/// triangles'. Precondition: mesh.is_shell(); throws plisse::Error for a thickness that is not
+/// positive or a triangle out of range.
+void set_shell_thickness(Mesh& mesh, const std::vector<int>& triangles, double thickness);
 
 /// A side of a shell triangle on the surface's edge: its triangle and its directed pair of nodes
 /// (corner i + 1, corner i + 2 of the triangle, the key of Mesh::side_mirrors).

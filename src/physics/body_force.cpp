@@ -20,9 +20,8 @@ std::vector<double> consistent_nodal_volumes(const Mesh& mesh,
       const Vec3d X0 = mesh.nodes[triangle[0]];
       const double area =
           0.5 * (mesh.nodes[triangle[1]] - X0).cross(mesh.nodes[triangle[2]] - X0).norm();
-      double thickness = 0.0;  // the element's: the mean of its corners' (shell.md, section 7)
-      for (int node : triangle) thickness += mesh.shell_thickness[node] / 3.0;
-      const double third = weight(e) * area * thickness / 3.0;
+      // The element's thickness (shell.md, section 7): uniform, or its region's.
+      const double third = weight(e) * area * mesh.triangle_thickness[e] / 3.0;
       for (int node : triangle) volume[node] += third;  // (loads.md, L6s)
     }
     return volume;

@@ -24,7 +24,7 @@ struct GravityLoadSettings {
 /// tetrahedron the integrals of its quadratic shape functions with the isoparametric Jacobian
 /// (L10: -V_e / 20 per corner and V_e / 5 per edge node of a straight one), and on the
 /// mid-surface of a shell (Mesh::is_shell) A_e t_e / 3 per corner of each triangle, A_e its
-/// reference area and t_e the mean of its corners' Mesh::shell_thickness (L6s). Indexed by node;
+/// reference area and t_e its Mesh::triangle_thickness (L6s). Indexed by node;
 /// the sum is the volume of the mesh. Throws plisse::Error for an invalid 10-node tetrahedron.
 /// With `element_weight` (one per element: per tetrahedron, or per triangle of a shell) each
 /// element's integrals are multiplied by its weight: Σ_e w_e ∫_e N_a dV (a density per element

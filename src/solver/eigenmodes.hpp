@@ -32,8 +32,8 @@ struct EigenSettings {
 /// The lumped volume of every node [mm^3], the diagonal of M_u (E2): a quarter of the reference
 /// volume of each tetrahedron at its corners (the edge nodes of a second-order mesh get none),
 /// or, on the mid-surface of a shell (Mesh::is_shell), a third of each triangle's reference
-/// area times its thickness (the mean of its corners' Mesh::shell_thickness, as the shell
-/// element's). Their sum is the body's reference volume.
+/// area times its thickness (Mesh::triangle_thickness, as the shell element's). Their sum is the
+/// body's reference volume.
 std::vector<double> lumped_nodal_volumes(const Mesh& mesh);
 
 /// The `options.count` eigenpairs of (E1) nearest `options.target` at the model's current state,

@@ -71,7 +71,7 @@ class ElementAssembly {
     for (int e = 0; e < n; ++e) {
       const std::array<int, Element::kNodes> nodes = Element::nodes(mesh, e);
       nodes_.insert(nodes_.end(), nodes.begin(), nodes.end());
-      geometry_.push_back(Element::geometry(mesh, nodes));
+      geometry_.push_back(Element::geometry(mesh, e, nodes));
     }
     internal_.assign(n, Element::initial_internal());
     converged_internal_ = internal_;

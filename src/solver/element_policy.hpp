@@ -32,7 +32,7 @@
 ///   dofs(nodes)     the full-state index of every unknown (solver/dof_map.hpp: DofMap::dof).
 /// Kernels (templates on the material, any model of material/registry.hpp; thread-safe, no heap
 /// allocation: they run concurrently on different elements)
-///   geometry(mesh, nodes)                    Geometry of the element with these nodes.
+///   geometry(mesh, e, nodes)                 Geometry of element e, whose nodes these are.
 ///   initial_internal()                       Internal state of the undeformed body.
 ///   evaluate(g, x, material, 1/κ, internal, r, K)
 ///       residual r (and the tangent K = dr/dx when K is not null; both overwritten) at element
@@ -70,7 +70,7 @@ concept ElementPolicy = requires(const Mesh& mesh, std::span<const int, E::kNode
   { E::n_elements(mesh) } -> std::same_as<int>;
   { E::nodes(mesh, 0) } -> std::same_as<std::array<int, E::kNodes>>;
   { E::dofs(nodes) } -> std::same_as<std::array<int, E::kDof>>;
-  { E::geometry(mesh, nodes) } -> std::same_as<typename E::Geometry>;
+  { E::geometry(mesh, 0, nodes) } -> std::same_as<typename E::Geometry>;
   { E::initial_internal() } -> std::same_as<typename E::Internal>;
   { internal.data() } -> std::same_as<double*>;
   { E::evaluate(g, x, material, 0.0, internal, r, K) } -> std::same_as<typename E::Status>;

@@ -50,7 +50,7 @@ struct MiniElement {
   }
 
   /// mini::compute_tet_geometry of the corners (throws plisse::Error for a degenerate one).
-  static Geometry geometry(const Mesh& mesh, std::span<const int, kNodes> nodes) {
+  static Geometry geometry(const Mesh& mesh, int /*e*/, std::span<const int, kNodes> nodes) {
     return mini::compute_tet_geometry(
         {mesh.nodes[nodes[0]], mesh.nodes[nodes[1]], mesh.nodes[nodes[2]], mesh.nodes[nodes[3]]});
   }

@@ -117,6 +117,7 @@ MixedModel::MixedModel(const Mesh& mesh, ElementMaterials materials,
     for (int v : non_corner_nodes(mesh)) constraints_.push_back({v, 3, 0.0, Ramp{}});
   } else {
     PLISSE_CHECK(mesh.is_shell() && mesh.shell_thickness.size() == mesh.nodes.size() &&
+                     mesh.triangle_thickness.size() == mesh.triangles.size() &&
                      mesh.triangle_neighbours.size() == mesh.triangles.size() &&
                      mesh.triangle_adjacent.size() == mesh.triangles.size(),
                  "the shell element needs the mid-surface of a shell (make_shell_surface)");

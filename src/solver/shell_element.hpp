@@ -89,17 +89,15 @@ struct ShellElement {
   }
 
   /// shell::compute_shell_geometry of the patch's slots (shell_patch_slots: missing slots and
-  /// mirror images, KL8, KL8a), and the section of the element's thickness (the mean of its
-  /// corners', mesh.shell_thickness) with the default points (KL13). Throws plisse::Error for a
-  /// degenerate patch.
-  static Geometry geometry(const Mesh& mesh, std::span<const int, kNodes> nodes) {
+  /// mirror images, KL8, KL8a), and the section of triangle e's thickness
+  /// (mesh.triangle_thickness: uniform, or its region's) with the default points (KL13). Throws
+  /// plisse::Error for a degenerate patch.
+  static Geometry geometry(const Mesh& mesh, int e, std::span<const int, kNodes> nodes) {
     const ShellPatchSlots slots = shell_patch_slots(mesh, nodes);
     Geometry g;
     g.image_terms = slots.image_terms;
-    double thickness = 0.0;
-    for (int i = 0; i < 3; ++i) thickness += mesh.shell_thickness[nodes[i]] / 3.0;
     g.patch = shell::compute_shell_geometry(slots.X, slots.kinds);
-    g.section = shell::make_shell_section(thickness);
+    g.section = shell::make_shell_section(mesh.triangle_thickness[static_cast<std::size_t>(e)]);
     return g;
   }
 

@@ -62,7 +62,7 @@ struct TaylorHoodElement {
   }
 
   /// taylor_hood::compute_geometry of the 10 nodes (throws plisse::Error for an inverted one).
-  static Geometry geometry(const Mesh& mesh, std::span<const int, kNodes> nodes) {
+  static Geometry geometry(const Mesh& mesh, int /*e*/, std::span<const int, kNodes> nodes) {
     std::array<Vec3d, kNodes> X;
     for (int a = 0; a < kNodes; ++a) X[a] = mesh.nodes[nodes[a]];
     return taylor_hood::compute_geometry(X);

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <string>
 
+#include "core/error.hpp"
 #include "physics/die_contact.hpp"
 #include "physics/die_surface.hpp"
 #include "physics/surface.hpp"
@@ -87,17 +89,27 @@ void check_die_start(const DieSettings& die, const DieGeometry& geometry, const 
                                     " is taken as touching); place the die against the region");
 }
 
-/// Half the reference thickness of a shell's `candidates` [mm]: how far the shell's faces lie from
-/// the mid-surface nodes that carry its contact (contact.md, D23). InputError at the die when the
-/// thickness varies over them, which the offset die does not represent.
+/// Half the reference thickness of a shell's `candidates` [mm] (triangles of the shell, as node
+/// triples in any order): how far the shell's faces lie from the mid-surface nodes that carry its
+/// contact (contact.md, D23), each triangle's own (Mesh::triangle_thickness: a region's).
+/// InputError at the die when the thickness varies over them, which the offset die does not
+/// represent.
 double half_shell_thickness(const DieSettings& die, const Mesh& mesh,
                             const std::vector<std::array<int, 3>>& candidates) {
+  const auto sorted = [](std::array<int, 3> t) {
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  std::map<std::array<int, 3>, double> thickness_of;
+  for (std::size_t e = 0; e < mesh.triangles.size(); ++e)
+    thickness_of.emplace(sorted(mesh.triangles[e]), mesh.triangle_thickness[e]);
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
-  for (const auto& t : candidates)
-    for (const int v : t) {
-      lo = std::min(lo, mesh.shell_thickness[static_cast<std::size_t>(v)]);
-      hi = std::max(hi, mesh.shell_thickness[static_cast<std::size_t>(v)]);
-    }
+  for (const auto& t : candidates) {
+    const auto it = thickness_of.find(sorted(t));
+    PLISSE_CHECK(it != thickness_of.end(), "a die's candidate is not a triangle of the shell");
+    lo = std::min(lo, it->second);
+    hi = std::max(hi, it->second);
+  }
   if (hi - lo > 1e-12 * hi)
     throw InputError(die.place,
                      "the shell's thickness varies over the die's contact surface (from " +

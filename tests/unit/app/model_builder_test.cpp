@@ -164,6 +164,18 @@ TEST(ModelBuilder, GravityNormalToAMirrorPlaneIsRefusedNamingTheRoller) {
 // of 20 × 10 mm, 0.5 mm thick, clamped at one end, passes the case's checks against its mesh, and
 // the load's resultant is the sheet's weight ρ g A t = 1e-9 × 9810 × 200 × 0.5 = 9.81e-4 N along
 // −z (in the residual, where a load enters with its sign turned), nothing across.
+/// The sum over the nodes of `term`'s residual at the undeformed state, at the end of its ramp: a
+/// load's resultant with its sign turned (a load enters the residual negatively).
+Vec3d resultant_at_rest(ModelTerm& term, const Mesh& mesh) {
+  std::vector<double> x(static_cast<std::size_t>(kValuesPerNode * mesh.n_nodes()), 0.0);
+  std::vector<double> residual(x.size(), 0.0);
+  term.assemble(1.0, x, residual, nullptr);
+  Vec3d total = Vec3d::Zero();
+  for (int v = 0; v < mesh.n_nodes(); ++v)
+    for (int i = 0; i < 3; ++i) total[i] += residual[static_cast<std::size_t>(node_dof(v, i))];
+  return total;
+}
+
 TEST(ModelBuilder, GravityOnAShellIsItsWeight) {
   const std::string text =
       "element: shell\n"
@@ -177,16 +189,122 @@ TEST(ModelBuilder, GravityOnAShellIsItsWeight) {
   EXPECT_TRUE(unsupported_features(c, mesh).empty());
   const ModelParts parts = build_model_parts(c, mesh);
   ASSERT_EQ(parts.terms.size(), 1u);
-  std::vector<double> x(static_cast<std::size_t>(kValuesPerNode * mesh.n_nodes()), 0.0);
-  std::vector<double> residual(x.size(), 0.0);
-  parts.terms[0]->assemble(1.0, x, residual, nullptr);
-  Vec3d total = Vec3d::Zero();
-  for (int v = 0; v < mesh.n_nodes(); ++v)
-    for (int i = 0; i < 3; ++i) total[i] += residual[static_cast<std::size_t>(node_dof(v, i))];
+  const Vec3d total = resultant_at_rest(*parts.terms[0], mesh);
   const double weight = 1e-9 * 9810.0 * 200.0 * 0.5;
   EXPECT_NEAR(total.z(), weight, 1e-13 * weight);  // round-off of a sum over 66 nodes
   EXPECT_EQ(total.x(), 0.0);
   EXPECT_EQ(total.y(), 0.0);
+}
+
+/// A 20 x 10 mm sheet (2 mm cells) written to `dir`/sheet.msh with two physical surfaces: `seam`,
+/// the triangles with centroid y < 2, and `rest`. Returns the file's path.
+std::string write_seam_sheet(const std::filesystem::path& dir) {
+  MeshGenerationSpec spec;
+  spec.kind = "sheet";
+  spec.length = 20.0;
+  spec.width = 10.0;
+  spec.thickness = 0.5;
+  spec.element_size = 2.0;
+  Mesh sheet = generate_shell_surface(spec);
+  sheet.surface_tags.clear();
+  for (std::size_t t = 0; t < sheet.triangles.size(); ++t) {
+    double y = 0.0;
+    for (int v : sheet.triangles[t]) y += sheet.nodes[static_cast<std::size_t>(v)].y() / 3.0;
+    sheet.surface_tags[y < 2.0 ? "seam" : "rest"].push_back(static_cast<int>(t));
+  }
+  std::filesystem::create_directories(dir);
+  const std::string file = (dir / "sheet.msh").string();
+  write_gmsh(sheet, file);
+  return file;
+}
+
+// A shell read from a mesh file with two physical surfaces, `seam` (the triangles with centroid
+// y < 2) and `rest`: the region on `seam` has its own thickness and density, so each triangle
+// weighs ρ_e g A_e t_e and the gravity load sums to g (ρ_seam A_seam t_seam + ρ A_rest t), and
+// every triangle of the seam, no other, has the region's thickness and material.
+TEST(ModelBuilder, AShellRegionOnASurfaceTagHasItsOwnThicknessDensityAndMaterial) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("plisse-shell-region-" + std::to_string(::getpid()));
+  const std::string file = write_seam_sheet(dir);
+  const std::string text =
+      "element: shell\n"
+      "mesh: {file: " +
+      file +
+      ", thickness: 0.5}\n"
+      "material: {model: neo-hookean, c1: 0.2, density: 1.0e-9}\n"
+      "regions: [{surface: seam, thickness: 1.5, material: {model: mooney-rivlin, c1: 0.4, "
+      "c2: 0.1, density: 3.0e-9}}]\n"
+      "boundary:\n  - {type: clamped, surface: left}\n"
+      "loads:\n  - {type: gravity, name: g, acceleration: [0, 0, -9810]}\n";
+  const Case c = parse_case_string(text, "c.yaml");
+  const Mesh mesh = load_perturbed_mesh(c);
+  ASSERT_TRUE(mesh.is_shell());
+  const std::vector<int> seam = region_elements(c.regions[0], mesh);
+  EXPECT_EQ(seam.size(), mesh.surface_tags.at("seam").size());
+  std::vector<bool> in_seam(mesh.triangles.size(), false);
+  for (int t : seam) in_seam[static_cast<std::size_t>(t)] = true;
+  double seam_area = 0.0, rest_area = 0.0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    const Vec3d X0 = mesh.nodes[static_cast<std::size_t>(tri[0])];
+    const double area = 0.5 * (mesh.nodes[static_cast<std::size_t>(tri[1])] - X0)
+                                  .cross(mesh.nodes[static_cast<std::size_t>(tri[2])] - X0)
+                                  .norm();
+    (in_seam[t] ? seam_area : rest_area) += area;
+    EXPECT_EQ(mesh.triangle_thickness[t], in_seam[t] ? 1.5 : 0.5) << "triangle " << t;
+  }
+  EXPECT_NEAR(seam_area, 20.0 * 2.0, 1e-12);
+  const ModelParts parts = build_model_parts(c, mesh);
+  const ElementMaterials& m = parts.materials;
+  ASSERT_EQ(m.of_element.size(), mesh.triangles.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    EXPECT_EQ(m.of(static_cast<int>(t)), in_seam[t] ? 1 : 0) << "triangle " << t;
+  ASSERT_EQ(parts.terms.size(), 1u);
+  const Vec3d total = resultant_at_rest(*parts.terms[0], mesh);
+  const double weight = 9810.0 * (3.0e-9 * seam_area * 1.5 + 1.0e-9 * rest_area * 0.5);
+  EXPECT_NEAR(total.z(), weight, 1e-13 * weight);
+  std::filesystem::remove_all(dir);
+}
+
+// A die on the same sheet meets the shell's face half the thickness of its candidate triangles
+// from the mid-surface (z = 0.25): on the seam (1.5 mm) at z = -0.5, on the rest (0.5 mm) at 0.
+// A die on one region is built, the nodes where the regions meet included (their own thickness
+// is the mean of both); over both regions (no `surface`) it is refused: its offset face is one
+// surface, and the thickness varies under it.
+TEST(ModelBuilder, ADieOnOneShellRegionIsBuiltAndOneOverTwoThicknessesRefused) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("plisse-shell-region-die-" + std::to_string(::getpid()));
+  const std::string file = write_seam_sheet(dir);
+  const auto case_with_die = [&](const std::string& die) {
+    return "element: shell\n"
+           "mesh: {file: " +
+           file +
+           ", thickness: 0.5}\n"
+           "material: {model: neo-hookean, c1: 0.2}\n"
+           "regions: [{surface: seam, thickness: 1.5, material: {model: neo-hookean, c1: 0.2}}]\n"
+           "boundary:\n  - {type: clamped, surface: left}\n"
+           "loads:\n  - {type: pressure, name: p, surface: rest, value: 0.001}\n"
+           "dies:\n  - " +
+           die + "\n";
+  };
+  for (const auto& [die, ok] : std::vector<std::pair<std::string, bool>>{
+           {"{name: a, shape: plane, point: [0, 0, -0.5], normal: [0, 0, 1], surface: seam}", true},
+           {"{name: b, shape: plane, point: [0, 0, 0], normal: [0, 0, 1], surface: rest}", true},
+           {"{name: c, shape: plane, point: [0, 0, 0], normal: [0, 0, 1]}", false}}) {
+    const Case c = parse_case_string(case_with_die(die), "c.yaml");
+    const Mesh mesh = load_perturbed_mesh(c);
+    if (ok) {
+      EXPECT_EQ(build_model_parts(c, mesh).terms.size(), 2u) << die;
+    } else {
+      try {
+        build_model_parts(c, mesh);
+        ADD_FAILURE() << "accepted: " << die;
+      } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("thickness varies"), std::string::npos) << e.what();
+      }
+    }
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(ModelBuilder, NodesWithinRoundingOfASymmetryPlaneArePutOnIt) {

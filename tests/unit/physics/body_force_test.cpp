@@ -41,10 +41,32 @@ TEST(ShellNodalVolumes, UniformThicknessSumsToAreaTimesThickness) {
   EXPECT_NEAR(volume[0], 6.0 * 0.5 / 3.0, 1e-15 * 6.0);
 }
 
-TEST(ShellNodalVolumes, EachCornerGetsAThirdOfItsTrianglesAreaTimesTheirMeanThickness) {
+/// The three triangles with thicknesses of their own (regions): T0 0.6, T1 0.9, T2 1.1 mm.
+Mesh three_thicknesses() {
   Mesh mesh = three_triangles();
-  mesh.shell_thickness = {0.3, 0.6, 0.9, 1.2, 1.5};
-  // t_e, the mean of the corners': T0 0.6, T1 0.9, T2 1.1 mm; A_e t_e / 3 = 1.2, 3.75, 11/6 mm³.
+  set_shell_thickness(mesh, {0}, 0.6);
+  set_shell_thickness(mesh, {1}, 0.9);
+  set_shell_thickness(mesh, {2}, 1.1);
+  return mesh;
+}
+
+TEST(ShellThickness, EachTriangleKeepsItsOwnAndANodeTakesTheMeanOfItsTriangles) {
+  const Mesh mesh = three_thicknesses();
+  EXPECT_EQ(mesh.triangle_thickness, (std::vector<double>{0.6, 0.9, 1.1}));
+  // Node 0 is in T0 only, node 1 in all three, node 2 in T0 and T1, node 3 in T1 and T2, node 4
+  // in T2 only.
+  const std::vector<double> expected = {0.6, (0.6 + 0.9 + 1.1) / 3.0, 0.75, 1.0, 1.1};
+  for (std::size_t v = 0; v < expected.size(); ++v)
+    EXPECT_NEAR(mesh.shell_thickness[v], expected[v], 1e-15) << "node " << v;
+  Mesh copy = mesh;
+  EXPECT_THROW(set_shell_thickness(copy, {3}, 1.0), Error);  // no triangle 3
+  EXPECT_THROW(set_shell_thickness(copy, {0}, 0.0), Error);  // not positive
+  EXPECT_THROW(set_shell_thickness(copy, {0}, -1.0), Error);
+}
+
+TEST(ShellNodalVolumes, EachCornerGetsAThirdOfItsTrianglesAreaTimesItsThickness) {
+  const Mesh mesh = three_thicknesses();
+  // T0 0.6, T1 0.9, T2 1.1 mm; A_e t_e / 3 = 1.2, 3.75, 11/6 mm³.
   const double t0 = 1.2, t1 = 3.75, t2 = 11.0 / 6.0;
   const std::vector<double> expected = {t0, t0 + t1 + t2, t0 + t1, t1 + t2, t2};
   const std::vector<double> volume = consistent_nodal_volumes(mesh);
@@ -60,8 +82,7 @@ TEST(ShellNodalVolumes, EachCornerGetsAThirdOfItsTrianglesAreaTimesTheirMeanThic
 }
 
 TEST(ShellNodalVolumes, BodyForceOnAShellIsItsWeight) {
-  Mesh mesh = three_triangles();
-  mesh.shell_thickness = {0.3, 0.6, 0.9, 1.2, 1.5};
+  const Mesh mesh = three_thicknesses();
   // Densities per triangle [tonne/mm³] and g [mm/s²]: the resultant is -g Σ_e ρ_e A_e t_e in the
   // residual's sign (a load enters the residual negatively).
   const std::vector<double> density = {1e-9, 2e-9, 3e-9};

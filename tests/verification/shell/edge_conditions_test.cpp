@@ -63,7 +63,7 @@ struct Patch {
 Patch patch_of(const Mesh& mesh, std::size_t e) {
   Patch patch;
   patch.nodes = ShellElement::nodes(mesh, static_cast<int>(e));
-  patch.geometry = ShellElement::geometry(mesh, patch.nodes).patch;
+  patch.geometry = ShellElement::geometry(mesh, static_cast<int>(e), patch.nodes).patch;
   patch.inner = std::all_of(patch.geometry.slots.begin(), patch.geometry.slots.end(),
                             [](shell::Slot s) { return s == shell::Slot::node; });
   return patch;

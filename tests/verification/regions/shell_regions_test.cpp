@@ -1,0 +1,104 @@
+// Regions of a shell (`regions:` with `element: shell`), through `plisse run`: triangles with a
+// material and a wall thickness of their own.
+//
+// A sheet of two regions side by side, each its own model and thickness, pulled along x with its
+// long edges free: incompressible isotropic plane stress in uniaxial tension takes the stretches
+// (λ, λ^-1/2) in the plane and λ^-1/2 through the thickness whatever the model, so both regions
+// deform alike, their interface (along x, on a line of the mesh) carries no traction, and the pull
+// is W₁ t₁ P₁(λ) + W₂ t₂ P₂(λ), each region's width, reference thickness and nominal uniaxial
+// stress: neo-Hookean P = 2 c1 (λ − λ⁻²), Mooney-Rivlin P = 2 (c1 + c2 / λ)(λ − λ⁻²) (Ogden,
+// Non-linear Elastic Deformations, 1984, 7.2). Exact on any mesh whose lines follow the interface:
+// the solver's tolerance.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "output/history_writer.hpp"
+#include "support/run_case.hpp"
+
+namespace plisse {
+namespace {
+
+using test::history_column;
+using test::run_case_text;
+
+constexpr double kLength = 20.0, kWidth = 10.0;  // the half sheet: y in [0, W], mirrored at y = 0
+constexpr double kThin = 0.5, kThick = 1.2;      // [mm]: y < 5 and y > 5
+constexpr double kStretch = 1.4;
+
+double neo_hookean_nominal(double c1, double l) { return 2.0 * c1 * (l - 1.0 / (l * l)); }
+double mooney_rivlin_nominal(double c1, double c2, double l) {
+  return 2.0 * (c1 + c2 / l) * (l - 1.0 / (l * l));
+}
+
+/// The sheet pulled to kStretch; `regions` is the case's `regions:` line (empty: none).
+HistoryTable pulled_sheet(const std::string& label, const std::string& regions) {
+  const auto dir = test::scratch_directory("shell-regions-" + label);
+  // element_size 2.5: 8 x 4 cells, a mesh line at y = 5.
+  std::string text =
+      "element: shell\n"
+      "mesh: {generate: sheet, length: 20.0, width: 10.0, thickness: 0.5, element_size: 2.5}\n"
+      "material: {model: neo-hookean, c1: 0.2}\n" +
+      regions +
+      "boundary:\n"
+      "  - {type: displacement, surface: left, value: [0, null, 0]}\n"
+      "  - {type: displacement, name: pull, surface: right, value: [8.0, null, 0]}\n"
+      "  - {type: symmetry, surface: front}\n"
+      "probes:\n"
+      "  - {name: thin, point: [10.0, 2.5, 0.25], fields: [displacement, thickness, cauchy]}\n"
+      "  - {name: thick, point: [10.0, 7.5, 0.25], fields: [displacement, thickness, cauchy]}\n"
+      "solver: {steps: 2, newton: {rtol: 1.0e-12, atol: 1.0e-13}}\n";
+  return run_case_text(dir, text);
+}
+
+TEST(ShellRegions, TwoModelsAndThicknessesSideBySideCarryTheSumOfTheirUniaxialForces) {
+  const HistoryTable h = pulled_sheet("side-by-side",
+                                      "regions: [{box: [[-1, 5, -1], [21, 11, 1]], thickness: 1.2,"
+                                      " material: {model: mooney-rivlin, c1: 0.3, c2: 0.1}}]\n");
+  ASSERT_EQ(h.rows.size(), 2u);
+  const double half = 0.5 * kWidth;
+  const double expected = half * kThin * neo_hookean_nominal(0.2, kStretch) +
+                          half * kThick * mooney_rivlin_nominal(0.3, 0.1, kStretch);
+  const std::vector<double>& last = h.rows.back();
+  const double force = last[history_column(h, "force_x:pull")];
+  std::printf("two regions: pull %.12f N, closed form %.12f N (%.1e)\n", force, expected,
+              force / expected - 1.0);
+  EXPECT_NEAR(force, expected, 1e-9 * expected);
+  // Each region's wall thins as λ^-1/2 from its own thickness, and its Cauchy stress is its own
+  // model's: σ = λ P.
+  const double thinning = 1.0 / std::sqrt(kStretch);
+  EXPECT_NEAR(last[history_column(h, "thickness:thin")], kThin * thinning, 1e-10);
+  EXPECT_NEAR(last[history_column(h, "thickness:thick")], kThick * thinning, 1e-10);
+  const double s_thin = kStretch * neo_hookean_nominal(0.2, kStretch);
+  const double s_thick = kStretch * mooney_rivlin_nominal(0.3, 0.1, kStretch);
+  EXPECT_NEAR(last[history_column(h, "cauchy_xx:thin")], s_thin, 1e-9 * s_thin);
+  EXPECT_NEAR(last[history_column(h, "cauchy_xx:thick")], s_thick, 1e-9 * s_thick);
+  // Both contract alike across: the probes move the same way in y, by (λ^-1/2 - 1) y.
+  EXPECT_NEAR(last[history_column(h, "uy:thin")], (thinning - 1.0) * 2.5, 1e-10);
+  EXPECT_NEAR(last[history_column(h, "uy:thick")], (thinning - 1.0) * 7.5, 1e-10);
+}
+
+// A region of the sheet's own material and thickness under another name (one-term Ogden with
+// α = 2, μ = 2 c1 is neo-Hookean) changes nothing: a wrong index in the per-triangle materials or
+// thicknesses would.
+TEST(ShellRegions, ARegionOfTheSameMaterialAndThicknessChangesNothing) {
+  const HistoryTable uniform = pulled_sheet("uniform", "");
+  const HistoryTable split =
+      pulled_sheet("same",
+                   "regions: [{box: [[-1, 5, -1], [21, 11, 1]], thickness: 0.5,"
+                   " material: {model: ogden, mu1: 0.4, alpha1: 2}}]\n");
+  ASSERT_EQ(uniform.rows.size(), 2u);
+  ASSERT_EQ(split.rows.size(), 2u);
+  const std::size_t f = history_column(uniform, "force_x:pull");
+  for (std::size_t k = 0; k < 2; ++k)
+    EXPECT_NEAR(split.rows[k][f], uniform.rows[k][f], 1e-10 * std::abs(uniform.rows[k][f]))
+        << "step " << k + 1;
+  const double expected = kWidth * kThin * neo_hookean_nominal(0.2, kStretch);
+  EXPECT_NEAR(uniform.rows.back()[f], expected, 1e-9 * expected);
+}
+
+}  // namespace
+}  // namespace plisse
