@@ -264,24 +264,19 @@ std::vector<int> region_elements(const Region& region, const Mesh& mesh) {
     return elements;
   }
   const auto& [lower, upper] = *region.box;
-  const auto inside = [&](const Vec3d& centroid) {
-    return (centroid.array() >= lower.array()).all() && (centroid.array() <= upper.array()).all();
-  };
-  std::vector<int> elements;
-  if (shell) {
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+  // The elements (triangles or tetrahedra: arrays of corner nodes) whose centroid is in the box.
+  const auto in_box = [&](const auto& corners) {
+    std::vector<int> elements;
+    for (std::size_t t = 0; t < corners.size(); ++t) {
+      const double n = static_cast<double>(corners[t].size());
       Vec3d centroid = Vec3d::Zero();
-      for (int v : mesh.triangles[t]) centroid += mesh.nodes[static_cast<std::size_t>(v)] / 3.0;
-      if (inside(centroid)) elements.push_back(static_cast<int>(t));
+      for (int v : corners[t]) centroid += mesh.nodes[static_cast<std::size_t>(v)] / n;
+      if ((centroid.array() >= lower.array()).all() && (centroid.array() <= upper.array()).all())
+        elements.push_back(static_cast<int>(t));
     }
     return elements;
-  }
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-    Vec3d centroid = Vec3d::Zero();
-    for (int v : mesh.tets[t]) centroid += mesh.nodes[static_cast<std::size_t>(v)] / 4.0;
-    if (inside(centroid)) elements.push_back(static_cast<int>(t));
-  }
-  return elements;
+  };
+  return shell ? in_box(mesh.triangles) : in_box(mesh.tets);
 }
 
 namespace {
