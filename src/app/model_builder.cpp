@@ -262,7 +262,15 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
       mesh, constraints, mirrors,
       // The contact penalties' default scale (contact.md, D11): the case's `material`.
       [&parts] { return shear_modulus(parts.materials.materials.front()); },
-      [&] { return element_densities(c, mesh); }, [&] { return default_die_candidates(c, mesh); }};
+      [&] { return element_densities(c, mesh); }, [&] { return default_die_candidates(c, mesh); },
+      [&] {
+        std::vector<CapNodes> caps;
+        for (const TermEntry* entry : c.terms_in("caps")) {
+          const Cap& cap = entry->as<Cap>();
+          caps.push_back({cap.name, condition_nodes(mesh, cap.surface)});
+        }
+        return caps;
+      }};
   auto& terms = parts.terms;
   for (const TermSection& section : term_sections())
     for (const TermEntry* entry : c.terms_in(section.key))

@@ -263,7 +263,8 @@ std::vector<int> region_elements(const Region& region, const Mesh& mesh) {
     elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
     return elements;
   }
-  // Named, not bound with `auto [lower, upper]`: clang before 16 cannot capture a structured binding.
+  // Named, not bound with `auto [lower, upper]`: clang before 16 cannot capture a structured
+  // binding.
   const Vec3d& lower = (*region.box)[0];
   const Vec3d& upper = (*region.box)[1];
   // The elements (triangles or tetrahedra: arrays of corner nodes) whose centroid is in the box.

@@ -22,10 +22,12 @@ std::string describe_node(const Mesh& mesh, int node) {
 }  // namespace
 
 CavityTerm::CavityTerm(const Cavity& cavity, const Mesh& mesh,
-                       const std::vector<ConstrainedComponent>& constraints, int mirror_planes)
+                       const std::vector<ConstrainedComponent>& constraints, int mirror_planes,
+                       const std::vector<CapNodes>& caps)
     : mesh_(mesh), cavity_(cavity), faces_(outward_faces(mesh, cavity.surface.name)) {
   const InputPlace& place = cavity.surface.place;
-  if (const auto edge = first_open_edge(mesh, faces_)) {
+  WallClosure closure = close_over_caps(mesh, faces_, caps);
+  if (const auto edge = closure.open_edge) {
     int count = 0;
     for (const auto& f : faces_)
       for (int k = 0; k < 3; ++k)
@@ -35,11 +37,14 @@ CavityTerm::CavityTerm(const Cavity& cavity, const Mesh& mesh,
     rule << "surface '" << cavity.surface.name << "' of cavity '" << cavity.name
          << "' is not closed: the edge between nodes " << describe_node(mesh, (*edge)[0]) << " and "
          << describe_node(mesh, (*edge)[1]) << " belongs to " << count
-         << " triangle(s) of it and does not lie on a symmetry plane x = 0, y = 0 or z = 0; a "
-            "cavity's wall must be closed, or closed by those planes (docs/theory/cavities.md, C2)";
+         << " triangle(s) of it, does not lie on a symmetry plane x = 0, y = 0 or z = 0 and is "
+            "not tied by a cap (or ends a cap's rim off those planes); a cavity's wall must be "
+            "closed, by itself, by those planes or by the caps on its rims "
+            "(docs/theory/cavities.md, C2 and C14)";
     throw InputError(place, rule.str());
   }
-  full_body_factor_ = full_body_factor(closing_planes(mesh, faces_).value_or(0) & mirror_planes);
+  closures_ = std::move(closure.caps);
+  full_body_factor_ = full_body_factor(closure.planes & mirror_planes);
   reference_volume_ = volume(std::vector<double>(kValuesPerNode * mesh.n_nodes(), 0.0));
   // A wall that lies in the planes that close it (a flat sheet's face on z = 0) encloses nothing:
   // V0 is then round-off of the wall's size, taken as 0 (C8).
@@ -77,7 +82,7 @@ CavityTerm::CavityTerm(const Cavity& cavity, const Mesh& mesh,
   }
   const std::set<int> nodes = surface_nodes(faces_);
   nodes_.assign(nodes.begin(), nodes.end());
-  symmetric_ = pressure_stiffness_is_symmetric(mesh, faces_, constraints);
+  symmetric_ = pressure_stiffness_is_symmetric(mesh, faces_, constraints, closures_);
 }
 
 void CavityTerm::add_couplings(std::vector<std::pair<int, int>>& pairs) const {
@@ -87,10 +92,14 @@ void CavityTerm::add_couplings(std::vector<std::pair<int, int>>& pairs) const {
       pairs.emplace_back(node_dof(v, i), pressure_dof_);
     }
   pairs.emplace_back(pressure_dof_, pressure_dof_);
+  for (const CapClosure& closure : closures_)
+    add_cap_closure_couplings(closure, pressure_dof_, pairs);
 }
 
 double CavityTerm::volume(std::span<const double> x) const {
-  return cavity_volume(mesh_, faces_, x);
+  double six_volume = 6.0 * cavity_volume(mesh_, faces_, x);
+  for (const CapClosure& closure : closures_) six_volume += closure_six_volume(mesh_, closure, x);
+  return six_volume / 6.0;
 }
 
 double CavityTerm::fluid_volume(double p_c, double t) const {
@@ -180,6 +189,8 @@ void CavityTerm::assemble(double t, std::span<const double> x, std::span<double>
     else
       add_face<6>(face, p, x, residual, tangent, six_volume);
   }
+  for (const CapClosure& closure : closures_)  // (C16-C17)
+    add_cap_closure(mesh_, closure, p, x, residual, tangent, pressure_dof_, six_volume);
   residual[pressure_dof_] += -(six_volume / 6.0 - fluid);  // (C7)
   if (tangent) {
     const double d = fluid_volume_derivative(p, t);  // always inserted: a diagonal entry exists

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mesh/mesh.hpp"
+#include "physics/cap_closure.hpp"
 #include "physics/cavity_settings.hpp"
 #include "physics/dirichlet.hpp"
 #include "physics/model_term.hpp"
@@ -26,17 +27,21 @@ inline constexpr double kFlatVolumeTolerance = 1e-12;
 
 class CavityTerm : public ModelTerm {
  public:
-  /// Borrows `mesh`. Throws InputError at `cavity.surface.place` when the surface breaks the
-  /// closure rule (C2) or encloses a negative volume, and when a wall that starts flat (V0 below
+  /// Borrows `mesh`. The wall's rims that one of `caps` ties are closed by that cap (C14), so the
+  /// gas pushes on the cap too. Throws InputError at `cavity.surface.place` when the surface
+  /// breaks the closure rule (C2: an open edge that no symmetry plane or cap closes) or encloses a
+  /// negative volume, and when a wall that starts flat (V0 below
   /// kFlatVolumeTolerance A^{3/2}, A its area) has gas or a volume ratio, or the prescribed
   /// final volume is not positive. `constraints` decide symmetric(); `mirror_planes` (the
   /// model's, dirichlet.hpp) scale `full_volume:<name>`.
   CavityTerm(const Cavity& cavity, const Mesh& mesh,
-             const std::vector<ConstrainedComponent>& constraints, int mirror_planes);
+             const std::vector<ConstrainedComponent>& constraints, int mirror_planes,
+             const std::vector<CapNodes>& caps = {});
 
   int n_global_unknowns() const override { return 1; }
   void set_first_global_dof(int dof) override { pressure_dof_ = dof; }
-  /// (p_c, u) and (u, p_c) for every displacement component of the wall's nodes, and (p_c, p_c).
+  /// (p_c, u) and (u, p_c) for every displacement component of the wall's nodes, (p_c, p_c), and
+  /// each closing cap's rim nodes with one another (add_cap_closure_couplings).
   void add_couplings(std::vector<std::pair<int, int>>& pairs) const override;
   /// True when pressure_stiffness_is_symmetric holds for the wall (cavities.md, C5 and C11).
   bool symmetric() const override { return symmetric_; }
@@ -51,7 +56,7 @@ class CavityTerm : public ModelTerm {
   std::vector<std::string> history_columns() const override;
   std::vector<double> history_values(double t, std::span<const double> x) const override;
 
-  /// V(x) [mm^3] (C1) and the reference volume V0 = V(0).
+  /// V(x) [mm^3] (C1, with the caps' cones C15) and the reference volume V0 = V(0).
   double volume(std::span<const double> x) const;
   double reference_volume() const { return reference_volume_; }
   /// Volume control: the prescribed volume at the end of the ramp (C8).
@@ -70,8 +75,9 @@ class CavityTerm : public ModelTerm {
   void add_face(const SurfaceFace& face, double p, std::span<const double> x,
                 std::span<double> residual, TangentSink* tangent, double& six_volume) const;
 
-  std::vector<SurfaceFace> faces_;  ///< oriented with the body's outward normal, 3 or 6 nodes
-  std::vector<int> nodes_;          ///< distinct nodes of the wall (corners and edge nodes)
+  std::vector<SurfaceFace> faces_;    ///< oriented with the body's outward normal, 3 or 6 nodes
+  std::vector<int> nodes_;            ///< distinct nodes of the wall (corners and edge nodes)
+  std::vector<CapClosure> closures_;  ///< the caps that close the wall's rims (C14)
   double reference_volume_ = 0.0;
   bool symmetric_ = false;
   int pressure_dof_ = -1;

@@ -54,6 +54,36 @@ double cavity_volume(const Mesh& mesh, const std::vector<SurfaceFace>& faces,
   return six_volume / 6.0;
 }
 
+std::vector<OpenEdge> open_edges(const Mesh& mesh, const std::vector<SurfaceFace>& faces,
+                                 double relative_tolerance) {
+  std::vector<OpenEdge> open;
+  if (faces.empty()) return open;
+  // Per corner edge (sorted pair): the edge as the first face runs it, counting its faces.
+  std::map<std::array<int, 2>, OpenEdge> edges;
+  Vec3d low = Vec3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (const auto& f : faces) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = f.nodes[k], b = f.nodes[(k + 1) % 3];
+      const auto [it, first] =
+          edges.try_emplace({std::min(a, b), std::max(a, b)}, OpenEdge{a, b, f.edge_node(k), 1});
+      if (!first) ++it->second.faces;
+    }
+    for (int v : f.node_list()) {
+      low = low.cwiseMin(mesh.nodes[v]);
+      high = high.cwiseMax(mesh.nodes[v]);
+    }
+  }
+  const double tol = relative_tolerance * (high - low).maxCoeff();
+  for (auto& [key, edge] : edges) {
+    if (edge.faces == 2) continue;
+    const auto on = [&](int v, int k) { return v < 0 || std::abs(mesh.nodes[v][k]) <= tol; };
+    for (int k = 0; k < 3 && edge.faces == 1 && edge.plane < 0; ++k)
+      if (on(edge.a, k) && on(edge.b, k) && on(edge.middle, k)) edge.plane = k;
+    open.push_back(edge);
+  }
+  return open;
+}
+
 namespace {
 
 struct EdgeScan {
@@ -65,35 +95,12 @@ struct EdgeScan {
 EdgeScan scan_edges(const Mesh& mesh, const std::vector<SurfaceFace>& faces,
                     double relative_tolerance) {
   EdgeScan scan;
-  if (faces.empty()) return scan;
-  // Per corner edge: the faces it belongs to and its edge node (-1 on a linear face).
-  std::map<std::array<int, 2>, std::pair<int, int>> edges;
-  Vec3d low = Vec3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
-  for (const auto& f : faces) {
-    for (int k = 0; k < 3; ++k) {
-      const int a = f.nodes[k], b = f.nodes[(k + 1) % 3];
-      auto& [count, middle] = edges[{std::min(a, b), std::max(a, b)}];
-      ++count;
-      middle = f.edge_node(k);
-    }
-    for (int v : f.node_list()) {
-      low = low.cwiseMin(mesh.nodes[v]);
-      high = high.cwiseMax(mesh.nodes[v]);
-    }
-  }
-  const double tol = relative_tolerance * (high - low).maxCoeff();
-  for (const auto& [edge, entry] : edges) {
-    const auto [count, middle] = entry;
-    if (count == 2) continue;
-    const auto on = [&](int v, int k) { return v < 0 || std::abs(mesh.nodes[v][k]) <= tol; };
-    int plane = -1;
-    for (int k = 0; k < 3 && count == 1 && plane < 0; ++k)
-      if (on(edge[0], k) && on(edge[1], k) && on(middle, k)) plane = k;
-    if (plane < 0) {
-      scan.open_edge = edge;
+  for (const OpenEdge& edge : open_edges(mesh, faces, relative_tolerance)) {
+    if (edge.plane < 0) {
+      scan.open_edge = std::array<int, 2>{std::min(edge.a, edge.b), std::max(edge.a, edge.b)};
       return scan;
     }
-    scan.planes |= 1 << plane;
+    scan.planes |= 1 << edge.plane;
   }
   return scan;
 }

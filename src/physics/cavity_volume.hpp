@@ -34,6 +34,22 @@ std::array<Vec3d, 6> quadratic_cone_volume_gradient(const std::array<Vec3d, 6>& 
 double cavity_volume(const Mesh& mesh, const std::vector<SurfaceFace>& faces,
                      std::span<const double> state);
 
+/// A corner edge of `faces` that does not belong to exactly two of them: its corners in the order
+/// of the (first) face that runs it, its edge node on a 6-node face, how many faces hold it, and
+/// the plane x_k = 0 it lies in (k, or -1: none; its end nodes, and its edge node on a 6-node
+/// face, with |X_k| <= tolerance in the reference configuration).
+struct OpenEdge {
+  int a = -1, b = -1;  ///< corners, in the direction of the face
+  int middle = -1;     ///< edge node, -1 on a linear face
+  int faces = 1;       ///< 1 on a boundary; more where the surface is not a manifold
+  int plane = -1;      ///< k of the plane x_k = 0 the edge lies in (the first), -1: none
+};
+
+/// The open edges of `faces`, in the order of their sorted corner pairs, with the tolerance
+/// relative_tolerance times the largest extent of the surface. Empty for a closed surface.
+std::vector<OpenEdge> open_edges(const Mesh& mesh, const std::vector<SurfaceFace>& faces,
+                                 double relative_tolerance = 1e-8);
+
 /// The first corner edge (node pair) of `faces` that breaks the closure rule (cavities.md, C2):
 /// an edge must belong to exactly two faces, or to one face and lie in one of the planes x = 0,
 /// y = 0, z = 0 (its end nodes, and its edge node on a 6-node face, with |coordinate| <=

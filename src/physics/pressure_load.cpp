@@ -35,7 +35,11 @@ void add_face(const Mesh& mesh, const SurfaceFace& face, double p, std::span<con
 }  // namespace
 
 bool pressure_stiffness_is_symmetric(const Mesh& mesh, const std::vector<SurfaceFace>& faces,
-                                     const std::vector<ConstrainedComponent>& constraints) {
+                                     const std::vector<ConstrainedComponent>& constraints,
+                                     const std::vector<CapClosure>& closures) {
+  std::set<std::pair<int, int>> closed;
+  for (const CapClosure& closure : closures)
+    for (const auto& edge : closure.rim) closed.insert(std::minmax(edge[0], edge[1]));
   // Per corner edge: the faces it belongs to and its edge node (-1 on a linear face).
   std::map<std::pair<int, int>, std::pair<int, int>> edges;
   for (const auto& f : faces)
@@ -52,7 +56,7 @@ bool pressure_stiffness_is_symmetric(const Mesh& mesh, const std::vector<Surface
   };
   for (const auto& [edge, entry] : edges) {
     const auto [count, middle] = entry;
-    if (count != 1) continue;  // interior edge
+    if (count != 1 || closed.count(edge)) continue;  // interior edge, or a capped rim's
     // Plain ints, not a structured binding: the lambda below captures `a` (clang < 16 cannot
     // capture structured bindings).
     const int a = edge.first, b = edge.second;
@@ -70,15 +74,29 @@ bool pressure_stiffness_is_symmetric(const Mesh& mesh, const std::vector<Surface
 
 PressureLoad::PressureLoad(const Mesh& mesh, std::string name, const std::string& surface,
                            double value, Ramp ramp,
-                           const std::vector<ConstrainedComponent>& constraints, int mirror_planes)
+                           const std::vector<ConstrainedComponent>& constraints, int mirror_planes,
+                           const std::vector<CapNodes>& caps, const InputPlace& caps_place)
     : mesh_(mesh),
       name_(std::move(name)),
       faces_(outward_faces(mesh, surface)),
       value_(value),
-      ramp_(ramp),
-      symmetric_(pressure_stiffness_is_symmetric(mesh, faces_, constraints)),
-      closing_planes_(closing_planes(mesh, faces_)),
-      full_body_factor_(full_body_factor(closing_planes_.value_or(0) & mirror_planes)) {}
+      ramp_(ramp) {
+  WallClosure closure = close_over_caps(mesh, faces_, caps);
+  for (const CapNodes& cap : caps)
+    if (std::none_of(closure.caps.begin(), closure.caps.end(),
+                     [&](const CapClosure& c) { return c.cap == cap.name; }))
+      throw InputError(caps_place, "cap '" + cap.name + "' ties no rim of surface '" + surface +
+                                       "': a cap closes a loaded surface where it ties all the "
+                                       "nodes of the surface's open edges there");
+  closures_ = std::move(closure.caps);
+  symmetric_ = pressure_stiffness_is_symmetric(mesh, faces_, constraints, closures_);
+  if (!closure.open_edge) closing_planes_ = closure.planes;
+  full_body_factor_ = full_body_factor(closing_planes_.value_or(0) & mirror_planes);
+}
+
+void PressureLoad::add_couplings(std::vector<std::pair<int, int>>& pairs) const {
+  for (const CapClosure& closure : closures_) add_cap_closure_couplings(closure, -1, pairs);
+}
 
 std::vector<std::string> PressureLoad::history_columns() const {
   std::vector<std::string> columns = {"pressure:" + name_};
@@ -91,7 +109,12 @@ std::vector<double> PressureLoad::history_values(double t, std::span<const doubl
   std::vector<double> values = {pressure(t)};
   // Positive on either side: the faces' orientation (the body's outward normal) makes a cavity
   // behind an `inner` wall positive and the inside of an `outer` one negative.
-  const double v = closing_planes_ ? std::abs(cavity_volume(mesh_, faces_, x)) : 0.0;
+  double v = 0.0;
+  if (closing_planes_) {
+    double six_volume = 6.0 * cavity_volume(mesh_, faces_, x);
+    for (const CapClosure& closure : closures_) six_volume += closure_six_volume(mesh_, closure, x);
+    v = std::abs(six_volume / 6.0);
+  }
   if (closing_planes_) values.push_back(v);
   if (closing_planes_ && full_body_factor_ > 1) values.push_back(full_body_factor_ * v);
   return values;
@@ -107,6 +130,9 @@ void PressureLoad::assemble(double t, std::span<const double> x, std::span<doubl
     else
       add_face<6>(mesh_, face, p, x, residual, tangent);
   }
+  double six_volume = 0.0;
+  for (const CapClosure& closure : closures_)  // (cavities.md, C16)
+    add_cap_closure(mesh_, closure, p, x, residual, tangent, -1, six_volume);
 }
 
 }  // namespace plisse

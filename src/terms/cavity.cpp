@@ -23,7 +23,10 @@ TermKind cavity_kind() {
            "history columns `volume:<name>`, `pressure:<name>`, and `full_volume:<name>` on a "
            "model cut by symmetry planes (docs/output.md)")
       .required();
-  surface_key(s, "surface", &Cavity::surface, "the cavity's wall").required();
+  surface_key(s, "surface", &Cavity::surface,
+              "the cavity's wall: closed, or closed by symmetry planes and by the caps that tie "
+              "its rims (a capped tube's `inner`; the gas then pushes on the caps too)")
+      .required();
   s.variant<CavityControl>("control", &Cavity::control, kCavityControls,
                            "prescribed volume, or an ideal gas");
   ramp_key(s, &Cavity::ramp, "time ramp of the volume or the mass ratio");
@@ -87,7 +90,7 @@ TermKind cavity_kind() {
     check.surface(cavity.surface);
   };
   d.make = [](const Cavity& cavity, const TermContext& c) -> std::unique_ptr<ModelTerm> {
-    return std::make_unique<CavityTerm>(cavity, c.mesh, c.constraints, c.mirrors);
+    return std::make_unique<CavityTerm>(cavity, c.mesh, c.constraints, c.mirrors, c.caps());
   };
   d.history = {
       {"pressure:<cavity>", "MPa", "`cavities[]`",

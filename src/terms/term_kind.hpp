@@ -26,6 +26,7 @@
 #include "core/error.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/surface_ref.hpp"
+#include "physics/cap_closure.hpp"
 #include "physics/dirichlet.hpp"
 #include "physics/model_term.hpp"
 #include "physics/ramp.hpp"
@@ -84,6 +85,9 @@ struct TermContext {
   /// The faces a die touches when it names no `surface`: the boundary without the symmetry
   /// planes' faces (docs/theory/contact.md, D5).
   std::function<std::vector<std::array<int, 3>>()> default_die_faces;
+  /// The case's caps and the nodes each ties (condition_nodes of its `surface`), in the order of
+  /// `caps:`: what a cavity or a pressure closes its rims with (cavities.md, C14).
+  std::function<std::vector<CapNodes>()> caps;
 };
 
 /// A ramp of an entry that `plisse check` compares with solver.end_time, and what it moves
