@@ -155,7 +155,7 @@ void check_case(const CheckOptions& options) {
   }
   for (std::size_t i = 0; i < report.warnings.size() && i < 5; ++i)
     out << "            warning: " << report.warnings[i] << '\n';
-  for (const InputError& e : setup_warnings(c))
+  for (const InputError& e : setup_warnings(c, &mesh))
     std::cerr << "plisse check: warning: " << e.what() << '\n';
   out << "  case      " << count(c.terms_in("boundary").size(), "boundary condition") << ", "
       << count(c.terms_in("loads").size(), "load") << ", "

@@ -252,6 +252,20 @@ void check_rigid_pieces(const Case& c, const Mesh& mesh, const ModelParts& parts
           when + "); or add solver.viscosity");
 }
 
+namespace {
+
+/// The case's caps with the nodes each ties (TermContext::caps).
+std::vector<CapNodes> case_caps(const Case& c, const Mesh& mesh) {
+  std::vector<CapNodes> caps;
+  for (const TermEntry* entry : c.terms_in("caps")) {
+    const Cap& cap = entry->as<Cap>();
+    caps.push_back({cap.name, condition_nodes(mesh, cap.surface)});
+  }
+  return caps;
+}
+
+}  // namespace
+
 ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
   ModelParts parts{element_materials(c, mesh), collect_constraints(c.terms, mesh), {}, c.element};
   add_rigid_constraints(c, mesh, parts.materials, parts.constraints);
@@ -263,14 +277,7 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
       // The contact penalties' default scale (contact.md, D11): the case's `material`.
       [&parts] { return shear_modulus(parts.materials.materials.front()); },
       [&] { return element_densities(c, mesh); }, [&] { return default_die_candidates(c, mesh); },
-      [&] {
-        std::vector<CapNodes> caps;
-        for (const TermEntry* entry : c.terms_in("caps")) {
-          const Cap& cap = entry->as<Cap>();
-          caps.push_back({cap.name, condition_nodes(mesh, cap.surface)});
-        }
-        return caps;
-      }};
+      [&] { return case_caps(c, mesh); }};
   auto& terms = parts.terms;
   for (const TermSection& section : term_sections())
     for (const TermEntry* entry : c.terms_in(section.key))
@@ -291,8 +298,34 @@ std::unique_ptr<MixedModel> make_model(const Mesh& mesh, ModelParts parts) {
                                       parts.element);
 }
 
-std::vector<InputError> setup_warnings(const Case& c) {
+std::vector<InputError> setup_warnings(const Case& c, const Mesh* mesh) {
   std::vector<InputError> out;
+  // A pressure on a surface whose rim a cap ties, without that cap in its `caps`: the cap gets no
+  // end thrust (cavities.md, C14), which is a mistake unless the case loads the cap otherwise.
+  const std::vector<CapNodes> caps = mesh ? case_caps(c, *mesh) : std::vector<CapNodes>{};
+  for (const TermEntry* entry : c.terms_in("loads")) {
+    if (caps.empty() || entry->kind->word != "pressure") continue;
+    const auto& load = entry->as<PressureLoadSettings>();
+    std::vector<SurfaceFace> faces;
+    try {
+      faces = outward_faces(*mesh, load.surface.name);
+    } catch (const Error&) {
+      continue;  // the model's build reports it
+    }
+    for (const CapNodes& cap : caps) {
+      if (std::find(load.caps.begin(), load.caps.end(), cap.name) != load.caps.end() ||
+          close_over_caps(*mesh, faces, {cap}).caps.empty())
+        continue;
+      const InputPlace& at = entry->place;
+      out.emplace_back(InputPlace{at.file, at.line, at.column, at.key + ".caps"},
+                       "pressure load '" + load.name + "': cap '" + cap.name +
+                           "' ties a rim of surface '" + load.surface.name +
+                           "' but is not in the load's `caps`, so the pressure does not push on "
+                           "that cap (no end thrust); add it to `caps` to close the surface over "
+                           "it, unless the case loads the cap otherwise (a follower traction on "
+                           "its face)");
+    }
+  }
   const double end = c.solver.end_time;
   const auto number = [](double value) {
     char text[32];

@@ -57,7 +57,8 @@ std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh);
 /// or a rigid region that moves, that ends after solver.end_time (the load or motion is not
 /// complete when the run ends) or starts at or after it (never applied). A shorter end_time is
 /// legitimate for running part of a case, so these are warnings: `plisse check` prints them and
-/// `plisse run` writes them to log.txt.
-std::vector<InputError> setup_warnings(const Case& c);
+/// `plisse run` writes them to log.txt. With `mesh`, also a pressure load on a surface whose rim a
+/// cap ties and that does not name the cap in its `caps` (no end thrust on it).
+std::vector<InputError> setup_warnings(const Case& c, const Mesh* mesh = nullptr);
 
 }  // namespace plisse::app

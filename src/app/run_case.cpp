@@ -171,7 +171,7 @@ void log_input(RunLog& log, const RunContext& run, const RunOutput& out, const R
   log.info(
       "units: the case's, consistent (mm, N, MPa, s in plisse's docs); history.csv's "
       "columns: summary.json history_units, plisse outputs");
-  for (const InputError& e : setup_warnings(c)) log.warn(e.what());
+  for (const InputError& e : setup_warnings(c, &mesh)) log.warn(e.what());
   for (const TermEntry& entry : c.terms)
     for (const std::string& note : entry.kind->notes(entry, mesh)) log.info(note);
   for (const Probe& probe : c.probes) {

@@ -24,8 +24,8 @@ TermKind pressure_load_kind() {
          "of the body (inflates from `inner`)")
       .required();
   s.add({"caps",
-         "list",
-         "",
+         "list of names",
+         "–",
          "names of `caps[]` entries, each tying a rim of the surface",
          "[]",
          {},
@@ -69,7 +69,7 @@ TermKind pressure_load_kind() {
        "normal (on a balloon's `inner` surface it inflates)"},
       {"volume:<load>", "mm³",
        "a pressure load whose surface is closed, or closed by the planes "
-       "x = 0, y = 0, z = 0",
+       "x = 0, y = 0, z = 0 and the caps of its `caps`",
        "the volume the loaded surface encloses in the deformed state (of the modelled part), "
        "positive; with `pressure:<load>` the pressure–volume curve"},
       {"full_volume:<load>", "mm³", "as `volume:<load>`, on a surface closed by mirror planes",

@@ -95,6 +95,57 @@ TEST(ModelBuilder, RampsBeyondTheEndTimeAreWarnedAboutAtTheirKeys) {
   EXPECT_TRUE(setup_warnings(whole).empty());
 }
 
+// A pressure on a tube whose rim a cap ties, without the cap in its `caps`: the cap gets no end
+// thrust, said at the load's `caps` key (cavities.md, C14); naming the cap, or a cap that ties
+// no rim of the surface, says nothing. Unknown cap names are refused when the model is built.
+TEST(ModelBuilder, APressureThatLeavesACappedRimOpenIsWarnedAbout) {
+  const auto text = [](const std::string& caps) {
+    return "element: shell\n"
+           "mesh: {generate: tube, radius: 10.0, length: 20.0, thickness: 0.2, element_size: 4.0}\n"
+           "material: {model: neo-hookean, c1: 0.5}\n"
+           "loads:\n  - {type: pressure, name: gas, surface: inner, value: 0.001" +
+           caps +
+           "}\n"
+           "caps:\n"
+           "  - {name: clamp, surface: left, displacement: [0, 0, 0], rotation: [0, 0, 0]}\n"
+           "  - {name: tip, surface: right, displacement: [~, 0, 0], rotation: [0, 0, 0]}\n";
+  };
+  const Case open = parse_case_string(text(""), "c.yaml");
+  const Mesh mesh = load_case_mesh(open);
+  EXPECT_TRUE(setup_warnings(open).empty()) << "without the mesh nothing is judged";
+  const auto warnings = setup_warnings(open, &mesh);
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_EQ(warnings[0].place().key, "loads[0].caps");
+  EXPECT_EQ(warnings[0].place().line, 5);
+  EXPECT_NE(warnings[0].rule().find("cap 'clamp' ties a rim of surface 'inner' but is not in the "
+                                    "load's `caps`"),
+            std::string::npos)
+      << warnings[0].rule();
+  EXPECT_NE(warnings[1].rule().find("cap 'tip'"), std::string::npos) << warnings[1].rule();
+  const Case one = parse_case_string(text(", caps: [tip]"), "c.yaml");
+  const auto left = setup_warnings(one, &mesh);
+  ASSERT_EQ(left.size(), 1u);
+  EXPECT_NE(left[0].rule().find("cap 'clamp'"), std::string::npos) << left[0].rule();
+  EXPECT_TRUE(
+      setup_warnings(parse_case_string(text(", caps: [clamp, tip]"), "c.yaml"), &mesh).empty());
+  EXPECT_NO_THROW((void)build_model_parts(one, mesh));
+  // A name that is no cap, and a cap named twice: refused at the key, naming the caps there are.
+  for (const char* bad : {", caps: [lid]", ", caps: [tip, tip]"}) {
+    const Case wrong = parse_case_string(text(bad), "c.yaml");
+    try {
+      (void)build_model_parts(wrong, mesh);
+      ADD_FAILURE() << bad << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.place().key, "loads[0].caps") << bad;
+      EXPECT_NE(e.rule().find(std::string(bad).find("lid") != std::string::npos
+                                  ? "no cap is named 'lid' (caps: 'clamp', 'tip')"
+                                  : "cap 'tip' is named twice"),
+                std::string::npos)
+          << e.rule();
+    }
+  }
+}
+
 // The same for what moves the body without being a load: a displacement condition, a cap and a
 // rigid region whose ramps act only after end_time (never applied) or end after it; a held
 // component (value 0) has no ramp to speak of.
