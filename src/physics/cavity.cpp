@@ -63,11 +63,12 @@ CavityTerm::CavityTerm(const Cavity& cavity, const Mesh& mesh,
             "body (e.g. a balloon's 'inner' surface, not 'outer')";
     throw InputError(place, rule.str());
   }
-  if (flat && cavity.control == CavityControl::gas)
+  if (flat && cavity.control == CavityControl::gas && cavity.reservoir_volume == 0.0)
     throw InputError(place, "cavity '" + cavity.name + "' starts flat (its wall '" +
                                 cavity.surface.name +
                                 "' encloses no volume), so an ideal gas in it has no initial "
-                                "amount: use `control: volume` with `volume` or `volume_change`");
+                                "amount: use `control: volume` with `volume` or `volume_change`, "
+                                "or give the gas a `reservoir_volume` to start in");
   if (flat && cavity.control == CavityControl::volume && cavity.target == VolumeTarget::ratio)
     throw InputError(cavity.target_place.line > 0 ? cavity.target_place : place,
                      "cavity '" + cavity.name + "' starts flat (its wall '" + cavity.surface.name +
@@ -110,13 +111,21 @@ double CavityTerm::fluid_volume(double p_c, double t) const {
       return reference_volume_ * (1.0 + (cavity_.volume_ratio - 1.0) * ramp);
     return reference_volume_ + (final_volume() - reference_volume_) * ramp;
   }
-  // (C9): V_c = (p0 + p_amb) V0 m(t) / (p_c + p_amb)
+  // (C9): V_c = (V0 + V_r) m(t) ((p0 + p_amb) / (p_c + p_amb))^(1/gamma) - V_r
   const double p_amb = cavity_.ambient_pressure;
   PLISSE_CHECK(p_c + p_amb > 0.0, "cavity '" << cavity_.name
                                              << "': the absolute gas pressure p_c + p_amb = "
                                              << p_c + p_amb << " MPa is not positive");
   const double mass = 1.0 + (cavity_.mass_ratio - 1.0) * ramp;
-  return (cavity_.initial_pressure + p_amb) * reference_volume_ * mass / (p_c + p_amb);
+  const double reservoir = modelled_reservoir();
+  const double ratio = (cavity_.initial_pressure + p_amb) / (p_c + p_amb);
+  // No power for the isothermal gas (gamma = 1): its volume is exactly inverse to the pressure.
+  const double expansion = cavity_.gamma == 1.0 ? ratio : std::pow(ratio, 1.0 / cavity_.gamma);
+  return (reference_volume_ + reservoir) * mass * expansion - reservoir;
+}
+
+double CavityTerm::modelled_reservoir() const {
+  return cavity_.reservoir_volume / full_body_factor_;
 }
 
 double CavityTerm::final_volume() const {
@@ -133,7 +142,9 @@ double CavityTerm::final_volume() const {
 
 double CavityTerm::fluid_volume_derivative(double p_c, double t) const {
   if (cavity_.control == CavityControl::volume) return 0.0;
-  return -fluid_volume(p_c, t) / (p_c + cavity_.ambient_pressure);  // (C11)
+  // (C11): d V_c / d p_c = -V_gas / (gamma (p_c + p_amb)), V_gas = V_c + V_r
+  return -(fluid_volume(p_c, t) + modelled_reservoir()) /
+         (cavity_.gamma * (p_c + cavity_.ambient_pressure));
 }
 
 template <int N>
@@ -204,9 +215,9 @@ int CavityTerm::negative_directions() const {
   // is congruent to diag(d, K - g d^-1 g^T); d < 0 (gas, C11) gives one negative pivot and leaves
   // K + g g^T / |d|, the tangent with the gas stiffness. With d = 0 (volume control, C8) the pair
   // (g, p_c) is congruent to diag(+1, -1) on span(g) and K restricted to g^T du = 0: again one.
-  // An isothermal gas always has d = -V_c/(p_c + p_amb) < 0 (fluid_volume refuses a non-positive
-  // p_c + p_amb), so both controls give 1; a control with d > 0 would need the sign of
-  // d - g^T K^-1 g instead.
+  // A polytropic gas always has d = -V_gas/(gamma (p_c + p_amb)) < 0 (fluid_volume refuses a
+  // non-positive p_c + p_amb), so both controls give 1; a control with d > 0 would need the sign
+  // of d - g^T K^-1 g instead.
   return 1;
 }
 

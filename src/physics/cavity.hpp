@@ -19,7 +19,8 @@ namespace plisse {
 /// The cavity term: the gauge pressure p_c [MPa] is one global unknown that pushes on the wall
 /// like a follower pressure (virtual work p_c dV), and its equation is
 ///   -(V(x) - V_c(p_c, t)) = 0   (cavities.md, C7)
-/// with V_c the prescribed volume (C8) or the volume of an isothermal ideal gas at p_c (C9).
+/// with V_c the prescribed volume (C8) or the volume of a polytropic ideal gas at p_c, less a
+/// rigid reservoir's (C9).
 /// History columns `pressure:<name>` (p_c) and `volume:<name>` (V, C1).
 /// A cavity whose reference volume is below this fraction of A^{3/2} (A the wall's area) starts
 /// flat: V0 = 0 (cavities.md, C8).
@@ -61,6 +62,9 @@ class CavityTerm : public ModelTerm {
   double reference_volume() const { return reference_volume_; }
   /// Volume control: the prescribed volume at the end of the ramp (C8).
   double final_volume() const;
+  /// The reservoir's volume in the modelled part: `reservoir_volume` over the copies of the part
+  /// in the whole body (full_body_factor) [mm^3].
+  double modelled_reservoir() const;
   /// V_c(p_c, t) and its derivative d V_c / d p_c (C8, C9).
   double fluid_volume(double p_c, double t) const;
   double fluid_volume_derivative(double p_c, double t) const;

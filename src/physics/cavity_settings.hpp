@@ -31,6 +31,12 @@ struct Cavity {
   double initial_pressure = 0.0;              ///< gas: gauge pressure at t = 0 [MPa], >= 0
   double mass_ratio = 1.0;                    ///< gas: gas mass at end of ramp / initial mass, > 0
   double ambient_pressure = 0.1;              ///< gas: absolute ambient pressure [MPa], > 0
+  /// gas: polytropic exponent, (p + p_amb) (V_gas / m)^gamma constant: 1 isothermal, 1.4 adiabatic
+  /// air (cavities.md, C9)
+  double gamma = 1.0;
+  /// gas: the volume of a rigid reservoir the gas also fills [mm^3], of the whole body (the
+  /// modelled part of a symmetric model holds its share)
+  double reservoir_volume = 0.0;
   Ramp ramp;
   InputPlace place;
 };

@@ -86,6 +86,14 @@ TermKind cavity_kind() {
   s.real("ambient_pressure", &Cavity::ambient_pressure, Range::positive(), "MPa",
          "absolute ambient pressure")
       .applies({"gas"});
+  s.real("gamma", &Cavity::gamma, Range::at_least(1.0), "–",
+         "polytropic exponent: (p + p_amb) (V_gas / m)^gamma stays constant; 1 isothermal (slow "
+         "loading), 1.4 adiabatic air (fast: an impact on an airbag)")
+      .applies({"gas"});
+  s.real("reservoir_volume", &Cavity::reservoir_volume, Range::non_negative(), "mm³",
+         "a rigid volume the gas fills as well (a tank, a pipe, an inflator), of the whole body: a "
+         "symmetric model's part holds its share")
+      .applies({"gas"});
   d.check_mesh = [](const Cavity& cavity, const TermMeshCheck& check) {
     check.surface(cavity.surface);
   };

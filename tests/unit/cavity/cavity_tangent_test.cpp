@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <random>
 #include <set>
 
@@ -238,6 +239,66 @@ TEST(CavityTerm, ConstraintRowVanishesWhereTheIdealGasLawHolds) {
   EXPECT_LT(residual(*s.term, 0.5, x)[s.n - 1], -1e-3 * V0);
   x.back() = -0.1;  // zero absolute pressure is refused
   EXPECT_THROW(residual(*s.term, 0.5, x), Error);
+}
+
+// A polytropic gas (gamma = 1.4, adiabatic air) that also fills a rigid reservoir of half the
+// whole balloon's volume (cavities.md, C9): its row vanishes where (p + p_amb) ((V + V_r) /
+// m)^gamma equals its initial value, with the octant holding an eighth of the reservoir, and the
+// bordered tangent is the derivative of the residual.
+TEST(CavityTerm, PolytropicGasWithAReservoirKeepsItsLawAndItsTangent) {
+  Mesh mesh = small_shell(Symmetry::octant);
+  const auto constraints = symmetry_constraints(mesh);
+  const int mirrors = mirror_planes(symmetry_surfaces(mesh), mesh);
+  Cavity cavity = make_cavity(CavityControl::gas);
+  cavity.gamma = 1.4;
+  const double v_full = 8.0 * CavityTerm(cavity, mesh, constraints, mirrors).reference_volume();
+  cavity.reservoir_volume = 0.5 * v_full;
+  CavityTerm term(cavity, mesh, constraints, mirrors);
+  const int n = kValuesPerNode * mesh.n_nodes() + 1;
+  term.set_first_global_dof(n - 1);
+  const double V0 = term.reference_volume(), Vr = cavity.reservoir_volume / 8.0;
+  EXPECT_DOUBLE_EQ(term.modelled_reservoir(), Vr);
+  // Uniform stretch 1.2 at t = 0.5 (mass 1.5 times the initial): the pressure of the law.
+  const double s3 = 1.2 * 1.2 * 1.2, m = 1.5;
+  const double p = 0.12 * std::pow((V0 + Vr) * m / (s3 * V0 + Vr), 1.4) - 0.1;
+  std::vector<double> x(n, 0.0);
+  for (int v = 0; v < mesh.n_nodes(); ++v)
+    for (int i = 0; i < 3; ++i) x[node_dof(v, i)] = 0.2 * mesh.nodes[v][i];
+  x.back() = p;
+  EXPECT_NEAR(residual(term, 0.5, x)[n - 1], 0.0, 1e-12 * V0);
+  // Without the reservoir the same state holds less gas: the row is off.
+  Cavity alone = cavity;
+  alone.reservoir_volume = 0.0;
+  CavityTerm smaller(alone, mesh, constraints, mirrors);
+  smaller.set_first_global_dof(n - 1);
+  EXPECT_GT(std::abs(residual(smaller, 0.5, x)[n - 1]), 1e-3 * V0);
+  for (unsigned seed : {8u, 9u}) {
+    const auto y = random_state(mesh, constraints, seed, 0.5);
+    const auto errors = tangent_errors(term, 0.6, y, 1e-5);
+    for (double e : errors) EXPECT_LT(e, 1e-7) << "seed " << seed;
+  }
+}
+
+// A cavity that starts flat holds no gas of its own (C8), but a reservoir's: with one it is
+// accepted, starts at V_c = 0 and the gas pushed out of the reservoir fills it as the mass grows.
+TEST(CavityTerm, AFlatCavityTakesAGasThatStartsInAReservoir) {
+  MeshGenerationSpec spec;
+  spec.kind = "sheet";
+  spec.length = 4.0;
+  spec.width = 4.0;
+  spec.thickness = 0.5;
+  spec.layers = 1;
+  spec.element_size = 2.0;
+  const Mesh mesh = generate_mesh(spec);
+  Cavity cavity = make_cavity(CavityControl::gas);
+  cavity.surface = {"bottom", InputPlace{}};
+  EXPECT_THROW(CavityTerm(cavity, mesh, {}, 0), InputError);
+  cavity.reservoir_volume = 100.0;
+  const CavityTerm term(cavity, mesh, {}, 0);
+  EXPECT_EQ(term.reference_volume(), 0.0);
+  EXPECT_NEAR(term.fluid_volume(cavity.initial_pressure, 0.0), 0.0, 1e-13);
+  // Mass ratio 2 at the end of the ramp, at the initial pressure: the reservoir's gas doubles.
+  EXPECT_NEAR(term.fluid_volume(cavity.initial_pressure, 1.0), 100.0, 1e-12);
 }
 
 TEST(CavityTerm, CouplingsCoverEveryTangentEntryOutsideTheNodalBlock) {
