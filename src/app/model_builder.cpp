@@ -303,6 +303,23 @@ std::vector<InputError> setup_warnings(const Case& c, const Mesh* mesh) {
   // A pressure on a surface whose rim a cap ties, without that cap in its `caps`: the cap gets no
   // end thrust (cavities.md, C14), which is a mistake unless the case loads the cap otherwise.
   const std::vector<CapNodes> caps = mesh ? case_caps(c, *mesh) : std::vector<CapNodes>{};
+  // A traction or follower traction on a face the cap ties all of: the case loads the cap itself
+  // (the air-beam validation case's hand-computed end thrusts).
+  const auto loaded_otherwise = [&](const CapNodes& cap) {
+    for (const TermEntry* entry : c.terms_in("loads")) {
+      const SurfaceRef* surface = nullptr;
+      if (entry->kind->word == "follower-traction")
+        surface = &entry->as<FollowerTractionSettings>().surface;
+      else if (entry->kind->word == "traction")
+        surface = &entry->as<TractionLoadSettings>().surface;
+      if (!surface) continue;
+      const std::set<int> nodes = condition_nodes(*mesh, *surface);
+      if (!nodes.empty() &&
+          std::includes(cap.nodes.begin(), cap.nodes.end(), nodes.begin(), nodes.end()))
+        return true;
+    }
+    return false;
+  };
   for (const TermEntry* entry : c.terms_in("loads")) {
     if (caps.empty() || entry->kind->word != "pressure") continue;
     const auto& load = entry->as<PressureLoadSettings>();
@@ -314,7 +331,7 @@ std::vector<InputError> setup_warnings(const Case& c, const Mesh* mesh) {
     }
     for (const CapNodes& cap : caps) {
       if (std::find(load.caps.begin(), load.caps.end(), cap.name) != load.caps.end() ||
-          close_over_caps(*mesh, faces, {cap}).caps.empty())
+          close_over_caps(*mesh, faces, {cap}).caps.empty() || loaded_otherwise(cap))
         continue;
       const InputPlace& at = entry->place;
       out.emplace_back(InputPlace{at.file, at.line, at.column, at.key + ".caps"},

@@ -58,7 +58,8 @@ std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh);
 /// complete when the run ends) or starts at or after it (never applied). A shorter end_time is
 /// legitimate for running part of a case, so these are warnings: `plisse check` prints them and
 /// `plisse run` writes them to log.txt. With `mesh`, also a pressure load on a surface whose rim a
-/// cap ties and that does not name the cap in its `caps` (no end thrust on it).
+/// cap ties and that does not name the cap in its `caps` (no end thrust on it), unless a traction
+/// or follower traction loads a face of the cap's.
 std::vector<InputError> setup_warnings(const Case& c, const Mesh* mesh = nullptr);
 
 }  // namespace plisse::app

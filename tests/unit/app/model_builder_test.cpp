@@ -129,6 +129,24 @@ TEST(ModelBuilder, APressureThatLeavesACappedRimOpenIsWarnedAbout) {
   EXPECT_TRUE(
       setup_warnings(parse_case_string(text(", caps: [clamp, tip]"), "c.yaml"), &mesh).empty());
   EXPECT_NO_THROW((void)build_model_parts(one, mesh));
+  // The air-beam validation case loads its caps by follower tractions on their end faces.
+  const Case beam = parse_case_string(
+      "element: taylor-hood\n"
+      "mesh: {generate: tube, radius: 10.0, length: 20.0, thickness: 0.2, layers: 1,"
+      " element_size: 4.0, symmetry: half}\n"
+      "material: {model: neo-hookean, c1: 0.5}\n"
+      "boundary: [{type: symmetry, surface: sym_z}]\n"
+      "loads:\n"
+      "  - {type: pressure, name: gas, surface: inner, value: 0.004}\n"
+      "  - {type: follower-traction, name: thrust, surface: right, normal: 0.098}\n"
+      "caps:\n"
+      "  - {name: clamp, surface: left, displacement: [0, 0, 0], rotation: [0, 0, 0]}\n"
+      "  - {name: tip, surface: right, displacement: [~, 0, 0], rotation: [0, 0, 0]}\n",
+      "c.yaml");
+  const Mesh tube = load_case_mesh(beam);
+  const auto beam_warnings = setup_warnings(beam, &tube);
+  ASSERT_EQ(beam_warnings.size(), 1u) << "the tip is loaded by its traction, the clamp is not";
+  EXPECT_NE(beam_warnings[0].rule().find("cap 'clamp'"), std::string::npos);
   // A name that is no cap, and a cap named twice: refused at the key, naming the caps there are.
   for (const char* bad : {", caps: [lid]", ", caps: [tip, tip]"}) {
     const Case wrong = parse_case_string(text(bad), "c.yaml");
