@@ -130,7 +130,8 @@ TEST(TermKinds, EveryColumnATermWritesIsOneOfItsKindsRows) {
                             0,
                             [] { return 0.2; },
                             [&] { return std::vector<double>(mesh.tets.size(), 1e-9); },
-                            [] { return std::vector<std::array<int, 3>>{}; }};
+                            [] { return std::vector<std::array<int, 3>>{}; },
+                            [] { return std::vector<CapNodes>{}; }};
   std::set<std::string> made;
   for (const TermEntry& entry : c.terms) {
     if (!entry.kind->make) continue;  // a condition: its columns are the reactions (below)

@@ -104,17 +104,17 @@ TEST(CappedTube, ShellTubeIsAClosedVesselWithTheMembraneStretches) {
   EXPECT_NEAR(at("full_volume:p"), 2.0 * at("volume:p"), 1e-12 * at("full_volume:p"));
 }
 
-/// An ideal gas over the caps: isothermal, or adiabatic (gamma = 1.4) with a rigid reservoir of
-/// 20 000 mm^3 (the whole tube's; the half holds 10 000).
+/// An ideal gas over the caps, of polytropic exponent `gamma`, that also fills a rigid reservoir
+/// of `reservoir` mm^3 (the whole tube's; the half holds half).
 struct Gas {
   double gamma, reservoir;
   const char* name;
 };
 
-class CappedTubeGas : public ::testing::TestWithParam<Gas> {};
-
-TEST_P(CappedTubeGas, KeepsItsLawOverTheCapsAndMatchesThePressureLoad) {
-  const Gas gas = GetParam();
+/// Runs the half tube with `gas` in it, pumped to 1.04 times its air, and checks the gas law at
+/// every step, the closed vessel, and the volume against the pressure load at the gas's final
+/// pressure. (Not a parameterised test: HEAVY in CMakeLists.txt names its cases.)
+void check_gas_over_the_caps(const Gas& gas) {
   const double p_amb = 0.1, mass = 1.04;
   std::ostringstream cavity;
   cavity << "cavities:\n  - {name: air, surface: inner, control: gas, initial_pressure: 0,"
@@ -150,10 +150,13 @@ TEST_P(CappedTubeGas, KeepsItsLawOverTheCapsAndMatchesThePressureLoad) {
   EXPECT_NEAR(v_gas, v_load, 1e-7 * v_load);
 }
 
-INSTANTIATE_TEST_SUITE_P(Laws, CappedTubeGas,
-                         ::testing::Values(Gas{1.0, 0.0, "isothermal"},
-                                           Gas{1.4, 20000.0, "adiabatic_with_reservoir"}),
-                         [](const auto& info) { return std::string(info.param.name); });
+TEST(CappedTube, IsothermalGasOverTheCapsKeepsItsLawAndMatchesThePressureLoad) {
+  check_gas_over_the_caps({1.0, 0.0, "isothermal"});
+}
+
+TEST(CappedTube, AdiabaticGasWithAReservoirKeepsItsLawAndMatchesThePressureLoad) {
+  check_gas_over_the_caps({1.4, 20000.0, "adiabatic-with-reservoir"});
+}
 
 TEST(CappedTube, AirBeamsCapsCarryTheHandComputedThrust) {
   std::ifstream file(std::string(PLISSE_SOURCE_DIR) + "/validation/air-beam-bending.yaml");
