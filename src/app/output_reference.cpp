@@ -135,6 +135,12 @@ const std::vector<OutputEntry> kSummary = {
     {"completed", "–", "always", "true when the run reached `solver.end_time`"},
     {"interrupted", "–", "always", "true when a signal (Ctrl-C, SIGTERM) stopped the run"},
     {"failure", "–", "the run did not complete", "why the run stopped early"},
+    {"limit.time", "s", "the step fell below `solver.min_step`",
+     "the last converged step's time: no step past it converged, so the load could not be raised "
+     "there (a limit load if the body collapses there; prescribe a displacement to pass it)"},
+    {"limit.load_factor", "–", "the step fell below `solver.min_step`",
+     "that step's load factor (time / end_time)"},
+    {"limit.step", "–", "the step fell below `solver.min_step`", "that step's number"},
     {"nodes", "–", "always", "mesh nodes (corner and edge nodes)"},
     {"elements", "–", "always", "tetrahedra, or the triangles of a shell mesh"},
     {"element", "–", "always", "the element family: `mini`, `taylor-hood` or `shell`"},

@@ -60,7 +60,11 @@ std::string progress_line(const StepInfo& info, const WrinkleReport* wrinkles,
   std::snprintf(part, sizeof part, "  elapsed %.1fs", clock.elapsed);
   line += part;
   const double done = info.time - clock.start_time, to_go = clock.end_time - info.time;
-  if (done > 0.0 && to_go > 1e-12 * clock.end_time && clock.stepping > 0.0)
+  // After cut-backs the rate so far says nothing of the steps to come (a limit load can keep
+  // them small for good): no estimate until a step goes through at its first try.
+  if (info.cutbacks > 0 && to_go > 1e-12 * clock.end_time)
+    line += "  left unknown (steps cut back)";
+  else if (done > 0.0 && to_go > 1e-12 * clock.end_time && clock.stepping > 0.0)
     line += "  left ~" + format_duration(clock.stepping * to_go / done);
   return line;
 }

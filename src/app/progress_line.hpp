@@ -21,7 +21,8 @@ struct ProgressClock {
 /// ("wrinkled (ring 30 deg: 12 waves, 0.0123 mm)", the ring of the largest amplitude). `newton`
 /// counts every Newton iteration of the accepted attempt, contact passes included; `wrinkles` may
 /// be null (no rings measured). The time left is the wall time per unit of model time so far,
-/// times the model time still to go; none before the first step or after the last.
+/// times the model time still to go; none before the first step or after the last, and "left
+/// unknown (steps cut back)" after a step that needed cut-backs.
 std::string progress_line(const StepInfo& info, const WrinkleReport* wrinkles,
                           const ProgressClock& clock);
 

@@ -293,6 +293,23 @@ SteppingResult step_to_the_end(const RunContext& run, RunSolver& solver, RunReco
   return result;
 }
 
+/// What a run stopped at its smallest step says of the load it reached (load_stepper's
+/// smallest_step): the load factor and time of the last converged step, and how to go past it.
+std::string limit_load_text(const StepInfo& last) {
+  char text[640];
+  std::snprintf(text, sizeof text,
+                "the load could not be raised past load factor %.6g "
+                "(t = %.6g, step %d%s). If the body collapses there (its stiffness along the "
+                "load is gone), this is its limit load; under load control nothing follows it "
+                "further: prescribe a displacement instead (a cap's or a die's motion, a "
+                "displacement condition, a cavity's volume), which passes the maximum",
+                last.load_factor, last.time, last.step,
+                last.negative_pivots < 0 ? ""
+                : last.stable            ? ", stable"
+                                         : ", not stable");
+  return text;
+}
+
 /// The recorder's last files and summary, the log's closing line, and the outcome: returns when
 /// the run reached its end time, throws SolverError (with the command that resumes it, or the
 /// last converged step) when a signal or the solver stopped it.
@@ -327,10 +344,12 @@ void finish_run(const RunContext& run, const SteppingResult& result, const Start
   }
   if (!result.completed) {
     out.log().error(result.failure);
+    if (result.smallest_step) out.log().error(limit_load_text(last));
     out.flush_log();
     throw SolverError(result.failure + " (last converged step " + std::to_string(last.step) +
                       " at t = " + std::to_string(last.time) + " is written in " +
-                      directory.string() + ")");
+                      directory.string() + ")" +
+                      (result.smallest_step ? "\n" + limit_load_text(last) : std::string()));
   }
   out.flush_log();
 }

@@ -359,6 +359,11 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
   summary["completed"] = result.completed;
   summary["interrupted"] = result.interrupted;
   if (!result.completed) summary["failure"] = result.failure;
+  // The load the run could not raise (a limit load under load control): the last converged step.
+  if (result.smallest_step)
+    summary["limit"] = {{"time", last_step_.time},
+                        {"load_factor", last_step_.load_factor},
+                        {"step", last_step_.step}};
   summary["nodes"] = mesh.n_nodes();
   summary["elements"] = model_.n_elements();
   summary["element"] = to_string(model_.element_family());

@@ -156,7 +156,10 @@ Schema<SolverSettings> solver_schema() {
   s.integer("steps", &S::steps, Range::at_least(1),
             "initial number of steps (first step = end_time / steps)");
   s.integer("max_steps", &S::max_steps, Range::at_least(1), "largest number of steps");
-  s.real("min_step", &S::min_step, kFraction, "–", "smallest step, fraction of end_time");
+  s.real("min_step", &S::min_step, kFraction, "–",
+         "smallest step, fraction of end_time: a step that fails below it stops the run, which "
+         "names the load factor it could not raise (a limit load under load control; "
+         "summary.json `limit`)");
   s.real("max_step", &S::max_step, kFraction, "–", "largest step, fraction of end_time");
   s.real("growth", &S::growth, Range::at_least(1.0), "–", "step growth after easy steps");
   s.real("cutback", &S::cutback, kOpenUnit, "–", "step reduction after a failed step");

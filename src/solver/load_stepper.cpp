@@ -344,6 +344,7 @@ bool LoadStepper::cut_back(const NewtonResult& newton, const std::string& failur
                 min_dt);
   if (new_dt < min_dt) {
     result.failure = std::string(line) + failure + steps;
+    result.smallest_step = true;
     return false;
   }
   std::snprintf(steps, sizeof steps, "; cutting the step to %.6g", new_dt);

@@ -70,7 +70,10 @@ struct SteppingResult {
   int reused_solves = 0;      ///< solves with a reused factorisation, same count
   int krylov_steps = 0;       ///< Newton steps solved by GMRES with a reused factorisation
   int cutbacks = 0;
-  std::string failure;       ///< why the run stopped early (empty when completed)
+  std::string failure;  ///< why the run stopped early (empty when completed)
+  /// Stopped because no step past the last converged one went through down to solver.min_step:
+  /// the load could not be raised there (a limit load, under load control).
+  bool smallest_step = false;
   bool interrupted = false;  ///< stopped because set_interrupt's test said so, not by a failure
 };
 

@@ -38,6 +38,23 @@ TEST(ProgressLine, StepTimeIterationsAndTheTimeLeftAtTheRateSoFar) {
   EXPECT_FALSE(has(progress_line(step_at(1.0), nullptr, {40.0, 40.0, 0.0, 1.0}), "left"));
 }
 
+// After cut-backs the rate so far would promise the end too soon: a step near a limit load is
+// cut back over and over. The estimate comes back with a step taken at its first try.
+TEST(ProgressLine, TheTimeLeftIsUnknownAfterCutBacks) {
+  StepInfo info = step_at(0.25);
+  info.cutbacks = 3;
+  const std::string line = progress_line(info, nullptr, {31.5, 30.0, 0.0, 1.0});
+  EXPECT_TRUE(has(line, "cut-backs 3")) << line;
+  EXPECT_TRUE(has(line, "left unknown (steps cut back)")) << line;
+  EXPECT_FALSE(has(line, "left ~")) << line;
+  info.cutbacks = 0;
+  EXPECT_TRUE(has(progress_line(info, nullptr, {31.5, 30.0, 0.0, 1.0}), "left ~1m30s"));
+  // The last step ends the run whatever it took.
+  info = step_at(1.0);
+  info.cutbacks = 1;
+  EXPECT_FALSE(has(progress_line(info, nullptr, {40.0, 40.0, 0.0, 1.0}), "left")) << "at the end";
+}
+
 TEST(ProgressLine, CutBacksStabilityAndTheLargestWrinkledRing) {
   StepInfo info = step_at(0.5);
   info.cutbacks = 2;
