@@ -100,6 +100,8 @@ void check_case(const CheckOptions& options) {
   std::ostream& out = std::cout;
   out << "plisse check: " << c.path << ": valid\n";
   if (!c.title.empty()) out << "  title     " << c.title << '\n';
+  out << "  units     the case's own consistent set: plisse assumes none (mm, N, MPa and s below "
+         "are the docs' names for its length, force, stress and time units)\n";
   out << "  material  " << material_line(c.material) << '\n';
   for (const Region& r : c.regions) {
     const std::size_t n = region_elements(r, mesh).size();

@@ -41,7 +41,8 @@ int main(int argc, char** argv) {
   std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{
       "plisse: wrinkling and buckling of thin incompressible hyperelastic membranes\n"
-      "(3-D mixed P1+/P1 tetrahedra; units mm, MPa, s, tonne/mm^3)"};
+      "(3-D mixed tetrahedra, Taylor-Hood P2/P1 or MINI P1+/P1, and rotation-free shell\n"
+      "triangles; in the case's own consistent units: mm, N, MPa, s, tonne/mm^3 in the docs)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "plisse 0.1.0");
   plisse::app::add_run_command(app);

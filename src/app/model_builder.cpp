@@ -368,6 +368,47 @@ std::vector<InputError> setup_warnings(const Case& c, const Mesh* mesh) {
   for (const Region& r : c.regions)
     if (!r.material && !r.displacement.isZero(0.0))
       check(r.ramp, r.place, "the motion of region " + r.label());
+  // A load far above the stiffness of the stiffest material: most often a value in other units
+  // than the material's (a pressure in Pa in a case in MPa runs for hours, cutting its steps).
+  double modulus = 3.0 * shear_modulus(make_material(c.material.model, c.material.params));
+  for (const Region& r : c.regions)
+    if (r.material)
+      modulus = std::max(modulus,
+                         3.0 * shear_modulus(make_material(r.material->model, r.material->params)));
+  const auto stress = [&](double value, const InputPlace& item, const std::string& key,
+                          const std::string& what) {
+    if (!(modulus > 0.0) || !(std::abs(value) > kUnitsWarningFactor * modulus)) return;
+    out.emplace_back(
+        InputPlace{item.file, item.line, item.column, item.key + "." + key},
+        what + " " + number(value) + " is " + number(std::abs(value) / modulus) +
+            " times the material's small-strain Young's modulus " + number(modulus) +
+            " (3 times its shear modulus), which crushes the body at once; plisse computes in "
+            "the case's own consistent units (the docs use mm, N, MPa): check that the load and "
+            "the material are in the same ones (a pressure in Pa where the material is in MPa "
+            "is 10^6 times too large)");
+  };
+  for (const TermEntry* entry : c.terms_in("loads")) {
+    const std::string& word = entry->kind->word;
+    if (word == "pressure") {
+      const auto& load = entry->as<PressureLoadSettings>();
+      stress(load.value, entry->place, "value", "pressure load '" + load.name + "': its value");
+    } else if (word == "traction") {
+      const auto& load = entry->as<TractionLoadSettings>();
+      if (load.traction)
+        stress(load.traction->norm(), entry->place, "traction",
+               "traction load '" + load.name + "': its traction's magnitude");
+    } else if (word == "follower-traction") {
+      const auto& load = entry->as<FollowerTractionSettings>();
+      stress(std::hypot(load.normal, load.shear), entry->place, "normal",
+             "follower traction '" + load.name + "': its magnitude");
+    }
+  }
+  for (const TermEntry* entry : c.terms_in("cavities")) {
+    const auto& cavity = entry->as<Cavity>();
+    if (cavity.control == CavityControl::gas)
+      stress(cavity.initial_pressure, entry->place, "initial_pressure",
+             "cavity '" + cavity.name + "': its initial gauge pressure");
+  }
   return out;
 }
 

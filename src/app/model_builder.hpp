@@ -57,9 +57,14 @@ std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh);
 /// or a rigid region that moves, that ends after solver.end_time (the load or motion is not
 /// complete when the run ends) or starts at or after it (never applied). A shorter end_time is
 /// legitimate for running part of a case, so these are warnings: `plisse check` prints them and
-/// `plisse run` writes them to log.txt. With `mesh`, also a pressure load on a surface whose rim a
-/// cap ties and that does not name the cap in its `caps` (no end thrust on it), unless a traction
-/// or follower traction loads a face of the cap's.
+/// `plisse run` writes them to log.txt. Also a pressure, traction, follower traction or gas
+/// pressure above kUnitsWarningFactor times the stiffest material's small-strain Young's modulus
+/// (3 mu): most often a value in other units than the material's. With `mesh`, also a pressure load
+/// on a surface whose rim a cap ties and that does not name the cap in its `caps` (no end thrust on
+/// it), unless a traction or follower traction loads a face of the cap's.
 std::vector<InputError> setup_warnings(const Case& c, const Mesh* mesh = nullptr);
+
+/// How many times the Young's modulus a load may reach before setup_warnings asks about units.
+inline constexpr double kUnitsWarningFactor = 10.0;
 
 }  // namespace plisse::app

@@ -51,8 +51,11 @@ std::string LoadStepper::describe_failure(const NewtonResult& newton) const {
            "or node with more memory, over more ranks (-n), on a coarser mesh, or with "
            "solver.newton.linear: {type: iterative}";
   const AssemblyStatus& status = newton.status;
+  // Only MINI has bubbles to solve for; a Taylor-Hood or shell element can only invert.
   std::string why = status.ok ? "Newton did not converge (" + newton.reason + ")"
-                              : "an element inverted or its bubble did not converge";
+                    : model_.element_family() == ElementFamily::mini
+                        ? "an element inverted or its bubble did not converge"
+                        : "an element inverted";
   if (status.worst_element >= 0) {
     // A tetrahedron, or the triangle of a shell (a mesh without tetrahedra).
     const Mesh& mesh = model_.mesh();

@@ -164,6 +164,47 @@ TEST(ModelBuilder, APressureThatLeavesACappedRimOpenIsWarnedAbout) {
   }
 }
 
+// Loads far above the material's stiffness: E = 6 c1 = 1.2 MPa here, so a pressure of 1.2e5 (a
+// value in Pa in a case in MPa) is 1e5 E; warned at the value's key, as are a traction and a gas's
+// initial pressure past 10 E. Ten times E is the limit: 11 E is warned, 9 E not.
+TEST(ModelBuilder, LoadsFarAboveTheMaterialsModulusAskAboutUnits) {
+  const std::string text = kCube +
+                           "boundary: [{type: fixed, surface: bottom}]\n"
+                           "loads:\n"
+                           "  - {type: pressure, name: p, surface: top, value: 1.2e5}\n"
+                           "  - {type: pressure, name: q, surface: left, value: 10.8}\n"
+                           "  - {type: traction, name: t, surface: right, traction: [0, 0, 13.2]}\n"
+                           "  - {type: follower-traction, name: f, surface: front, normal: 0.5}\n";
+  const auto warnings = setup_warnings(parse_case_string(text, "c.yaml"));
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_EQ(warnings[0].place().key, "loads[0].value");
+  EXPECT_EQ(warnings[0].place().line, 5);
+  EXPECT_NE(warnings[0].rule().find("pressure load 'p': its value 120000 is 100000 times the "
+                                    "material's small-strain Young's modulus 1.2"),
+            std::string::npos)
+      << warnings[0].rule();
+  EXPECT_NE(warnings[0].rule().find("a pressure in Pa where the material is in MPa"),
+            std::string::npos);
+  EXPECT_EQ(warnings[1].place().key, "loads[2].traction");
+  EXPECT_NE(warnings[1].rule().find("11 times"), std::string::npos) << warnings[1].rule();
+  // A stiffer region raises the limit: with E = 12 MPa nothing here but the first is too large.
+  const auto stiff = setup_warnings(parse_case_string(
+      text + "regions: [{box: [[0, 0, 0], [1, 1, 1]], material: {model: neo-hookean, "
+             "c1: 2.0}}]\n",
+      "c.yaml"));
+  ASSERT_EQ(stiff.size(), 1u);
+  EXPECT_EQ(stiff[0].place().key, "loads[0].value");
+  // A gas's initial gauge pressure.
+  const auto gas = setup_warnings(parse_case_string(
+      "mesh: {generate: spherical-shell, inner_radius: 10, thickness: 1, layers: 1,"
+      " element_size: 4, symmetry: octant}\n"
+      "material: {model: neo-hookean, c1: 0.1}\n"
+      "cavities: [{name: air, surface: inner, control: gas, initial_pressure: 100.0}]\n",
+      "c.yaml"));
+  ASSERT_EQ(gas.size(), 1u);
+  EXPECT_EQ(gas[0].place().key, "cavities[0].initial_pressure");
+}
+
 // The same for what moves the body without being a load: a displacement condition, a cap and a
 // rigid region whose ramps act only after end_time (never applied) or end after it; a held
 // component (value 0) has no ramp to speak of.

@@ -88,7 +88,7 @@ TEST(TermKinds, ItemsAreJudgedByTheirOwnKind) {
   const std::string other =
       error_of(kCube + "loads: [{type: pressure, name: p, surface: top, value: 1, shear: 1}]\n");
   EXPECT_NE(other.find("'shear' does not apply to type 'pressure'; allowed keys here: type, name, "
-                       "surface, value, ramp"),
+                       "surface, value, caps, ramp"),
             std::string::npos)
       << other;
   EXPECT_NE(error_of(kCube + "loads: [{name: p, surface: top, value: 1}]\n")
