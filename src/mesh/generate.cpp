@@ -29,6 +29,16 @@ MeshOption real_option(std::string key, double Spec::*member, std::string unit, 
                     range};
 }
 
+/// A tube's stations along its axis (tube_stations), graded when end_element_size is set.
+std::vector<double> tube_stations_of(const MeshGenerationSpec& spec) {
+  return tube_stations(spec.length, spec.element_size, spec.end_element_size, spec.end_length);
+}
+
+/// A tube's cells along its axis, for the size estimates.
+double axial_cells(const MeshGenerationSpec& spec) {
+  return tube_cells_along(spec.length, spec.element_size, spec.end_element_size, spec.end_length);
+}
+
 MeshOption integer_option(std::string key, int Spec::*member, Range range, std::string help) {
   return MeshOption{std::move(key), std::string("-"), std::move(help), nullptr, member, nullptr,
                     range};
@@ -145,6 +155,12 @@ const std::vector<MeshKind>& mesh_kinds() {
           integer_option("layers", &Spec::layers, layers, layers_help),
           real_option("element_size", &Spec::element_size, "mm", size,
                       "target element edge along and about the axis (<= radius)"),
+          real_option("end_element_size", &Spec::end_element_size, "mm", Range::closed(0.0, 1e6),
+                      "cell length along the axis at the end x = 0 (a clamp), growing linearly "
+                      "to element_size over end_length; 0: uniform"),
+          real_option("end_length", &Spec::end_length, "mm", Range::closed(0.0, 1e6),
+                      "distance from x = 0 over which the cells grow from end_element_size to "
+                      "element_size"),
           MeshOption{"symmetry", "-", "part meshed: full | half (z >= 0)", nullptr, nullptr,
                      &Spec::symmetry, Range::any()},
           order}});
@@ -187,7 +203,7 @@ double estimate_n_tets(const MeshGenerationSpec& spec) {
     return 6.0 * std::max(1.0, std::round(spec.length / spec.element_size)) *
            std::max(1.0, std::round(spec.width / spec.element_size)) * spec.layers;
   if (spec.kind == "tube")
-    return 6.0 * std::max(1.0, std::round(spec.length / spec.element_size)) *
+    return 6.0 * axial_cells(spec) *
            tube_divisions_around(spec.radius, spec.element_size, spec.symmetry == Symmetry::half) *
            spec.layers;
   if (spec.kind == "spherical-shell")
@@ -206,7 +222,7 @@ double estimate_n_shell_triangles(const MeshGenerationSpec& spec) {
     return 2.0 * sheet_cells(spec.length, spec.element_size) *
            sheet_cells(spec.width, spec.element_size);
   if (spec.kind == "tube")
-    return 2.0 * std::max(1.0, std::round(spec.length / spec.element_size)) *
+    return 2.0 * axial_cells(spec) *
            tube_divisions_around(spec.radius, spec.element_size, spec.symmetry == Symmetry::half);
   if (spec.kind == "spherical-shell") {
     const double r = spec.inner_radius + 0.5 * spec.thickness;
@@ -283,6 +299,15 @@ void validate_spec(const MeshGenerationSpec& spec, bool shell) {
     if (spec.element_size > spec.radius)
       reject("element_size", "must be <= radius = " + number(spec.radius) + " mm (got " +
                                  number(spec.element_size) + ")");
+    if (spec.end_element_size > 0.0 && !(spec.end_length > 0.0))
+      reject("end_element_size",
+             "needs end_length > 0 (the distance over which the cells grow "
+             "to element_size)");
+    if (spec.end_length > 0.0 && spec.end_element_size == 0.0)
+      reject("end_length", "needs end_element_size > 0 (the cell length at x = 0)");
+    if (spec.end_length > spec.length)
+      reject("end_length", "must be <= length = " + number(spec.length) + " mm (got " +
+                               number(spec.end_length) + ")");
   }
   if (shell) {
     const double n = estimate_n_shell_triangles(spec);
@@ -336,7 +361,7 @@ Mesh generate_mesh(const MeshGenerationSpec& spec) {
                          spec.order);
   if (spec.kind == "tube")
     return make_tube_mesh(spec.radius, spec.length, spec.thickness, spec.layers, spec.element_size,
-                          spec.symmetry == Symmetry::half, spec.order);
+                          spec.symmetry == Symmetry::half, spec.order, tube_stations_of(spec));
   using Midpoint = std::function<Vec3d(int k1, int j1, int k2, int j2)>;
   if (spec.kind == "spherical-shell") {
     const double R = spec.inner_radius;
@@ -405,7 +430,7 @@ Mesh generate_shell_surface(const MeshGenerationSpec& spec) {
         {sheet_cells(spec.length, spec.element_size), sheet_cells(spec.width, spec.element_size)});
   } else if (spec.kind == "tube") {
     mesh = make_tube_surface(spec.radius, spec.length, spec.element_size,
-                             spec.symmetry == Symmetry::half);
+                             spec.symmetry == Symmetry::half, tube_stations_of(spec));
   } else {
     // The sphere of the wall's mid radius, or the airbag's mid-surface (generate_mesh).
     const bool sphere = spec.kind == "spherical-shell";

@@ -44,6 +44,9 @@ struct MeshGenerationSpec {
   // shell and airbag: finer elements about the +y pole (0 = none; docs/meshes.md)
   double pole_element_size = 0.0;  ///< edge at the pole [mm]
   double pole_radius = 0.0;        ///< distance from the pole meshed at pole_element_size [mm]
+  // tube: cells along the axis graded from the end x = 0 (0 = uniform; tube_stations)
+  double end_element_size = 0.0;  ///< cell length at x = 0 [mm]
+  double end_length = 0.0;        ///< distance from x = 0 over which it grows to element_size [mm]
   // all kinds
   int order = 1;  ///< 1: 4-node tetrahedra; 2: 10-node (one node per edge, on curved walls)
 };

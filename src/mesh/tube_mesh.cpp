@@ -33,24 +33,77 @@ std::vector<std::array<double, 2>> directions_about_axis(int na, bool half) {
 
 }  // namespace
 
+namespace {
+
+/// Phi(x) = the integral of 1 / h(s) ds of tube_stations' size function, and its inverse.
+struct AxialGrading {
+  double end_h, g, le, phi_le, size_after;
+  bool flat;
+  AxialGrading(double length, double h, double end_h_, double end_length)
+      : end_h(end_h_),
+        g((h - end_h_) / end_length),
+        le(std::min(end_length, length)),
+        phi_le(0.0),
+        size_after(end_h_ + g * le),
+        flat(std::abs(g) < 1e-12) {
+    phi_le = phi(le);
+  }
+  /// Logarithmic over the grading (the size linear in x), linear after it.
+  double phi(double x) const {
+    if (x > le) return phi_le + (x - le) / size_after;
+    return flat ? x / end_h : std::log((end_h + g * x) / end_h) / g;
+  }
+  double x_of(double p) const {
+    if (p > phi_le) return le + (p - phi_le) * size_after;
+    return flat ? p * end_h : end_h * std::expm1(g * p) / g;
+  }
+};
+
+}  // namespace
+
+double tube_cells_along(double length, double h, double end_h, double end_length) {
+  PLISSE_CHECK(length > 0.0 && h > 0.0 && end_h >= 0.0 && (end_h == 0.0 || end_length > 0.0),
+               "tube_cells_along: needs length > 0, h > 0, and end_length > 0 with end_h > 0");
+  const double n =
+      end_h == 0.0 ? length / h : AxialGrading(length, h, end_h, end_length).phi(length);
+  return std::max(1.0, std::round(n));
+}
+
+std::vector<double> tube_stations(double length, double h, double end_h, double end_length) {
+  const int nx = static_cast<int>(tube_cells_along(length, h, end_h, end_length));
+  std::vector<double> x(static_cast<std::size_t>(nx) + 1);
+  if (end_h == 0.0) {
+    for (int i = 0; i <= nx; ++i)
+      x[static_cast<std::size_t>(i)] = i == nx ? length : length * i / nx;
+    return x;
+  }
+  const AxialGrading grading(length, h, end_h, end_length);
+  const double phi_l = grading.phi(length);
+  for (int i = 0; i <= nx; ++i)
+    x[static_cast<std::size_t>(i)] =
+        i == nx ? length : std::min(grading.x_of(phi_l * i / nx), length);
+  return x;
+}
+
 int tube_divisions_around(double radius, double h, bool half) {
   const int n = std::max(3, static_cast<int>(std::lround(std::numbers::pi * radius / h)));
   return half ? n : 2 * n;
 }
 
 Mesh make_tube_mesh(double radius, double length, double thickness, int layers, double h, bool half,
-                    int order) {
+                    int order, std::vector<double> stations) {
   PLISSE_CHECK(radius > 0.5 * thickness && length > 0.0 && layers >= 1 && h > 0.0,
                "make_tube_mesh: needs radius > thickness / 2 > 0, length > 0, layers >= 1, h > 0");
   PLISSE_CHECK(order == 1 || order == 2, "make_tube_mesh: order must be 1 or 2");
-  const int nx = std::max(1, static_cast<int>(std::lround(length / h)));
+  if (stations.empty()) stations = tube_stations(length, h);
+  const int nx = static_cast<int>(stations.size()) - 1;
   const int na = tube_divisions_around(radius, h, half);
   // Node rows about the axis: na + 1 on the half tube (phi = 0 ... pi), na on the full one, whose
   // row na is row 0 again (the Kuhn cut is the same in every cell, so the seam is conforming).
   const int rows = half ? na + 1 : na;
   auto node = [&](int i, int k, int j) { return i + (nx + 1) * (k % rows + rows * j); };
   const auto direction = directions_about_axis(na, half);
-  auto x_of = [&](int i) { return i == nx ? length : length * i / nx; };
+  auto x_of = [&](int i) { return stations[static_cast<std::size_t>(i)]; };
   auto r_of = [&](int j) {
     const double inner = radius - 0.5 * thickness;
     return j == layers ? radius + 0.5 * thickness : inner + j * thickness / layers;
@@ -99,10 +152,12 @@ Mesh make_tube_mesh(double radius, double length, double thickness, int layers, 
   return mesh;
 }
 
-Mesh make_tube_surface(double radius, double length, double h, bool half) {
+Mesh make_tube_surface(double radius, double length, double h, bool half,
+                       std::vector<double> stations) {
   PLISSE_CHECK(radius > 0.0 && length > 0.0 && h > 0.0,
                "make_tube_surface: needs radius > 0, length > 0, h > 0");
-  const int nx = std::max(1, static_cast<int>(std::lround(length / h)));
+  if (stations.empty()) stations = tube_stations(length, h);
+  const int nx = static_cast<int>(stations.size()) - 1;
   const int na = tube_divisions_around(radius, h, half);
   const int rows = half ? na + 1 : na;  // the full tube's row na is row 0
   auto node = [&](int i, int k) { return i + (nx + 1) * (k % rows); };
@@ -112,7 +167,7 @@ Mesh make_tube_surface(double radius, double length, double h, bool half) {
   for (int k = 0; k < rows; ++k)
     for (int i = 0; i <= nx; ++i) {
       const auto& d = direction[static_cast<std::size_t>(k)];
-      mesh.nodes.emplace_back(i == nx ? length : length * i / nx, radius * d[0], radius * d[1]);
+      mesh.nodes.emplace_back(stations[static_cast<std::size_t>(i)], radius * d[0], radius * d[1]);
     }
   // Counter-clockwise in (x, phi) runs the normal e_x x e_phi towards the axis: reversed.
   mesh.triangles.reserve(static_cast<std::size_t>(2 * nx * na));

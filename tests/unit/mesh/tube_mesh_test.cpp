@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "core/error.hpp"
@@ -152,6 +154,97 @@ TEST(TubeMesh, RefusesQuarterThickWallsAndCoarseSizes) {
   spec = tube_spec(Symmetry::half, 1);
   spec.element_size = 11.0;
   EXPECT_NE(rule_for(spec, "mesh.element_size").find("<= radius"), std::string::npos);
+  // The grading from the end x = 0 needs both its keys, within the tube.
+  spec = tube_spec(Symmetry::half, 1);
+  spec.end_element_size = 0.3;
+  EXPECT_NE(rule_for(spec, "mesh.end_element_size").find("needs end_length > 0"),
+            std::string::npos);
+  spec.end_element_size = 0.0;
+  spec.end_length = 3.0;
+  EXPECT_NE(rule_for(spec, "mesh.end_length").find("needs end_element_size > 0"),
+            std::string::npos);
+  spec.end_element_size = 0.3;
+  spec.end_length = 13.0;
+  EXPECT_NE(rule_for(spec, "mesh.end_length").find("<= length"), std::string::npos);
+}
+
+/// Phi(x) = the integral of 1 / h(s) from 0 to x, by Simpson's rule on 20 000 intervals: an
+/// independent sum of the size function tube_stations integrates in closed form.
+double phi_by_quadrature(double x, double h, double end_h, double end_length) {
+  const auto size = [&](double s) { return end_h + (h - end_h) * std::min(s / end_length, 1.0); };
+  const int n = 20000;
+  const double dx = x / n;
+  double sum = 1.0 / size(0.0) + 1.0 / size(x);
+  for (int i = 1; i < n; ++i) sum += (i % 2 ? 4.0 : 2.0) / size(i * dx);
+  return sum * dx / 3.0;
+}
+
+// Cells graded from the clamp: 100 mm long, 0.5 mm at x = 0 growing to 4 mm over 20 mm. The count
+// is round(Phi(L)) and each station splits Phi evenly (Phi summed by quadrature, to 1e-6 of a
+// cell: Simpson's error on the kink at 20 mm); the cells grow monotonically up to the grading's
+// end and are equal after it, from about the end size to about element_size.
+TEST(TubeMesh, StationsFollowTheGradedSizeFromTheEnd) {
+  const double L = 100.0, h = 4.0, end_h = 0.5, end_length = 20.0;
+  const std::vector<double> x = tube_stations(L, h, end_h, end_length);
+  const double phi_l = phi_by_quadrature(L, h, end_h, end_length);
+  const int n = static_cast<int>(x.size()) - 1;
+  EXPECT_EQ(n, static_cast<int>(std::lround(phi_l))) << phi_l;
+  EXPECT_EQ(tube_cells_along(L, h, end_h, end_length), n);
+  EXPECT_EQ(x.front(), 0.0);
+  EXPECT_EQ(x.back(), L);
+  for (int i = 1; i < n; ++i)
+    EXPECT_NEAR(phi_by_quadrature(x[i], h, end_h, end_length), phi_l * i / n, 1e-6) << i;
+  for (int i = 1; i <= n; ++i) {
+    const double cell = x[i] - x[i - 1];
+    EXPECT_GT(cell, 0.0);
+    if (x[i] <= end_length) {
+      EXPECT_GE(cell, x[i - 1] - (i > 1 ? x[i - 2] : 0.0) - 1e-12) << "growing, cell " << i;
+    }
+  }
+  std::printf("graded stations: %d cells, first %.4f mm, last %.4f mm\n", n, x[1] - x[0],
+              x[n] - x[n - 1]);
+  // The size grows by (h - end_h) / end_length = 0.175 per mm, so the first cell, about half a
+  // millimetre long, is the size a quarter millimetre in: 9 % above end_h (asserted 10 %). The
+  // last ones are h times Phi(L) / N, the rounding of the count (0.4 % here, asserted 5 %).
+  EXPECT_NEAR(x[1] - x[0], end_h, 0.1 * end_h);
+  EXPECT_NEAR(x[n] - x[n - 1], h, 0.05 * h);
+  // Without a grading, the uniform stations of before: round(L / h) equal cells.
+  const std::vector<double> uniform = tube_stations(L, 3.0);
+  ASSERT_EQ(uniform.size(), 34u);
+  for (std::size_t i = 1; i < uniform.size(); ++i)
+    EXPECT_NEAR(uniform[i] - uniform[i - 1], L / 33.0, 1e-12 * L);
+}
+
+// The generated tubes, solid and shell, take the graded stations: every node on one, the counts
+// and the size estimates the graded cells', and the solid's wall volume still the polygonal
+// annulus's exactly (grading moves no node off the cylinders or the end planes).
+TEST(TubeMesh, GradedSolidAndShellTubesKeepTheirGeometry) {
+  auto spec = tube_spec(Symmetry::half, 1);
+  spec.end_element_size = 0.3;
+  spec.end_length = 4.0;
+  const std::vector<double> x = tube_stations(12.0, 1.5, 0.3, 4.0);
+  const int nx = static_cast<int>(x.size()) - 1, around = 21;
+  EXPECT_GT(nx, 8) << "finer than the uniform 8 cells";
+  const Mesh solid = generate_mesh(spec);
+  EXPECT_EQ(solid.n_tets(), 6 * nx * around * 2);
+  EXPECT_EQ(estimate_n_tets(spec), 6.0 * nx * around * 2);
+  for (const Vec3d& node : solid.nodes)
+    EXPECT_TRUE(std::any_of(x.begin(), x.end(), [&](double s) { return s == node.x(); }))
+        << node.x();
+  const double R = 10.0, ri = R - 0.25, ro = R + 0.25;
+  const int sectors = 2 * around;
+  const double polygon =
+      12.0 * 0.5 * sectors * 0.5 * std::sin(2.0 * std::numbers::pi / sectors) * (ro * ro - ri * ri);
+  EXPECT_NEAR(mesh_volume(solid), polygon, 1e-12 * polygon);
+  for (int n : tag_nodes(solid, "left"))
+    EXPECT_EQ(solid.nodes[static_cast<std::size_t>(n)].x(), 0.0);
+  const MeshReport report = check_mesh(solid, {"inner", "outer", "left", "right", "sym_z"});
+  for (const auto& e : report.errors) ADD_FAILURE() << "check_mesh error: " << e;
+  const Mesh shell = generate_shell_surface(spec);
+  EXPECT_EQ(shell.triangles.size(), static_cast<std::size_t>(2 * nx * around));
+  EXPECT_EQ(estimate_n_shell_triangles(spec), 2.0 * nx * around);
+  for (const Vec3d& node : shell.nodes)
+    EXPECT_TRUE(std::any_of(x.begin(), x.end(), [&](double s) { return s == node.x(); }));
 }
 
 }  // namespace
