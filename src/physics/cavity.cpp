@@ -98,6 +98,7 @@ void CavityTerm::add_couplings(std::vector<std::pair<int, int>>& pairs) const {
 }
 
 double CavityTerm::volume(std::span<const double> x) const {
+  if (closures_.empty()) return cavity_volume(mesh_, faces_, x);  // the same bits as before caps
   double six_volume = 6.0 * cavity_volume(mesh_, faces_, x);
   for (const CapClosure& closure : closures_) six_volume += closure_six_volume(mesh_, closure, x);
   return six_volume / 6.0;
@@ -117,6 +118,9 @@ double CavityTerm::fluid_volume(double p_c, double t) const {
                                              << "': the absolute gas pressure p_c + p_amb = "
                                              << p_c + p_amb << " MPa is not positive");
   const double mass = 1.0 + (cavity_.mass_ratio - 1.0) * ramp;
+  // The isothermal gas without a reservoir, as written before either existed: the same bits.
+  if (cavity_.gamma == 1.0 && cavity_.reservoir_volume == 0.0)
+    return (cavity_.initial_pressure + p_amb) * reference_volume_ * mass / (p_c + p_amb);
   const double reservoir = modelled_reservoir();
   const double ratio = (cavity_.initial_pressure + p_amb) / (p_c + p_amb);
   // No power for the isothermal gas (gamma = 1): its volume is exactly inverse to the pressure.
