@@ -37,13 +37,14 @@ namespace {
 
 /// Phi(x) = the integral of 1 / h(s) ds of tube_stations' size function, and its inverse.
 struct AxialGrading {
-  double end_h, g, le, phi_le, size_after;
+  double end_h, g, le;
+  double phi_le = 0.0;  // set once phi can be called
+  double size_after;
   bool flat;
   AxialGrading(double length, double h, double end_h_, double end_length)
       : end_h(end_h_),
         g((h - end_h_) / end_length),
         le(std::min(end_length, length)),
-        phi_le(0.0),
         size_after(end_h_ + g * le),
         flat(std::abs(g) < 1e-12) {
     phi_le = phi(le);
