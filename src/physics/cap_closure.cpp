@@ -171,6 +171,14 @@ double closure_six_volume(const Mesh& mesh, const CapClosure& closure,
   return six_volume;
 }
 
+double closed_volume(const Mesh& mesh, const std::vector<SurfaceFace>& faces,
+                     const std::vector<CapClosure>& closures, std::span<const double> state) {
+  if (closures.empty()) return cavity_volume(mesh, faces, state);
+  double six_volume = 6.0 * cavity_volume(mesh, faces, state);
+  for (const CapClosure& closure : closures) six_volume += closure_six_volume(mesh, closure, state);
+  return six_volume / 6.0;
+}
+
 void add_cap_closure(const Mesh& mesh, const CapClosure& closure, double p,
                      std::span<const double> state, std::span<double> residual,
                      TangentSink* tangent, int pressure_dof, double& six_volume) {

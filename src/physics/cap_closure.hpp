@@ -57,6 +57,11 @@ Vec3d closure_apex(const Mesh& mesh, const CapClosure& closure, std::span<const 
 double closure_six_volume(const Mesh& mesh, const CapClosure& closure,
                           std::span<const double> state);
 
+/// The volume [mm^3] enclosed by `faces` and the cones of `closures` in `state` (C1, C12, C15):
+/// cavity_volume itself when there are no closures (the same operations, so the same bits).
+double closed_volume(const Mesh& mesh, const std::vector<SurfaceFace>& faces,
+                     const std::vector<CapClosure>& closures, std::span<const double> state);
+
 /// Adds the follower pressure `p` on the closure's cone (C16): residual += the cone faces' nodal
 /// forces (loads.md, L2 or L8) carried to the rim's nodes through the apex and the cone's edge
 /// nodes, which are linear in them, and with `tangent` their load stiffness (L3 or L9) carried the

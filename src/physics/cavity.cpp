@@ -98,10 +98,7 @@ void CavityTerm::add_couplings(std::vector<std::pair<int, int>>& pairs) const {
 }
 
 double CavityTerm::volume(std::span<const double> x) const {
-  if (closures_.empty()) return cavity_volume(mesh_, faces_, x);  // the same bits as before caps
-  double six_volume = 6.0 * cavity_volume(mesh_, faces_, x);
-  for (const CapClosure& closure : closures_) six_volume += closure_six_volume(mesh_, closure, x);
-  return six_volume / 6.0;
+  return closed_volume(mesh_, faces_, closures_, x);
 }
 
 double CavityTerm::fluid_volume(double p_c, double t) const {

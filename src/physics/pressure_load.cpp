@@ -109,14 +109,7 @@ std::vector<double> PressureLoad::history_values(double t, std::span<const doubl
   std::vector<double> values = {pressure(t)};
   // Positive on either side: the faces' orientation (the body's outward normal) makes a cavity
   // behind an `inner` wall positive and the inside of an `outer` one negative.
-  double v = 0.0;
-  if (closing_planes_ && closures_.empty()) {
-    v = std::abs(cavity_volume(mesh_, faces_, x));  // the same bits as before caps
-  } else if (closing_planes_) {
-    double six_volume = 6.0 * cavity_volume(mesh_, faces_, x);
-    for (const CapClosure& closure : closures_) six_volume += closure_six_volume(mesh_, closure, x);
-    v = std::abs(six_volume / 6.0);
-  }
+  const double v = closing_planes_ ? std::abs(closed_volume(mesh_, faces_, closures_, x)) : 0.0;
   if (closing_planes_) values.push_back(v);
   if (closing_planes_ && full_body_factor_ > 1) values.push_back(full_body_factor_ * v);
   return values;

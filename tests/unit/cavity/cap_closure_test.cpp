@@ -71,14 +71,6 @@ std::vector<double> rigid_state(const Mesh& mesh, double angle, const Vec3d& shi
   return x;
 }
 
-/// Six times the volume of the wall and its caps' cones.
-double closed_volume(const Mesh& mesh, const std::vector<SurfaceFace>& faces,
-                     const std::vector<CapClosure>& closures, std::span<const double> x) {
-  double six = 6.0 * cavity_volume(mesh, faces, x);
-  for (const CapClosure& c : closures) six += closure_six_volume(mesh, c, x);
-  return six / 6.0;
-}
-
 TEST(CapClosure, ClosesBothRimsOfATube) {
   for (Symmetry symmetry : {Symmetry::full, Symmetry::half}) {
     const Mesh mesh = tube(symmetry, true, 5.0);
