@@ -7,13 +7,18 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "mesh/topology.hpp"
 #include "physics/body_force.hpp"
+#include "physics/boundary_condition.hpp"
+#include "physics/cap_settings.hpp"
 #include "physics/cavity.hpp"
 #include "physics/dead_load.hpp"
 #include "physics/die_contact.hpp"
+#include "physics/die_contact_settings.hpp"
+#include "physics/die_geometry.hpp"
 #include "physics/die_surface.hpp"
 #include "physics/follower_traction.hpp"
 #include "physics/pressure_load.hpp"
@@ -408,6 +413,55 @@ std::vector<InputError> setup_warnings(const Case& c, const Mesh* mesh) {
     if (cavity.control == CavityControl::gas)
       stress(cavity.initial_pressure, entry->place, "initial_pressure",
              "cavity '" + cavity.name + "': its initial gauge pressure");
+  }
+  if (mesh && !mesh->nodes.empty()) {
+    // A prescribed motion or a die far smaller than the body: most often a length in other
+    // units than the mesh's (metres typed into a case meshed in millimetres).
+    Vec3d low = mesh->nodes.front(), high = mesh->nodes.front();
+    for (const Vec3d& x : mesh->nodes) {
+      low = low.cwiseMin(x);
+      high = high.cwiseMax(x);
+    }
+    const double size = (high - low).norm();
+    const auto length = [&](double value, const InputPlace& item, const std::string& key,
+                            const std::string& what) {
+      if (value == 0.0 || !(std::abs(value) < kUnitsLengthFactor * size)) return;
+      out.emplace_back(
+          InputPlace{item.file, item.line, item.column, item.key + "." + key},
+          what + " " + number(std::abs(value)) + " is " + number(std::abs(value) / size) +
+              " of the mesh's size (the diagonal of its bounding box, " + number(size) +
+              "); plisse computes in the case's own consistent units: check that the case's "
+              "lengths are in the mesh's (a length in metres in a case meshed in millimetres is "
+              "1000 times too small)");
+    };
+    const auto largest = [](const std::array<std::optional<double>, 3>& components) {
+      double value = 0.0;
+      for (const std::optional<double>& component : components)
+        if (component) value = std::max(value, std::abs(*component));
+      return value;
+    };
+    for (const TermEntry* entry : c.terms_in("boundary"))
+      if (entry->kind->word == "displacement") {
+        const auto& condition = entry->as<DisplacementConditionSettings>();
+        length(largest(condition.value), entry->place, "value",
+               "displacement condition '" + condition.name + "': its largest component");
+      }
+    for (const TermEntry* entry : c.terms_in("caps")) {
+      const auto& cap = entry->as<Cap>();
+      length(largest(cap.displacement), entry->place, "displacement",
+             "cap '" + cap.name + "': its largest displacement component");
+    }
+    for (const TermEntry* entry : c.terms_in("dies")) {
+      const auto& die = entry->as<DieSettings>();
+      if (die.shape != DieShape::plane)
+        length(die.radius, entry->place, "radius", "die '" + die.name + "': its radius");
+      length(die.displacement.norm(), entry->place, "move.displacement",
+             "die '" + die.name + "': its motion");
+    }
+    for (const Region& r : c.regions)
+      if (!r.material)
+        length(r.displacement.norm(), r.place, "displacement",
+               "the motion of rigid region " + r.label());
   }
   return out;
 }

@@ -61,10 +61,16 @@ std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh);
 /// pressure above kUnitsWarningFactor times the stiffest material's small-strain Young's modulus
 /// (3 mu): most often a value in other units than the material's. With `mesh`, also a pressure load
 /// on a surface whose rim a cap ties and that does not name the cap in its `caps` (no end thrust on
-/// it), unless a traction or follower traction loads a face of the cap's.
+/// it), unless a traction or follower traction loads a face of the cap's; and a prescribed
+/// displacement or a cap's (its largest component), a die's radius or motion or a rigid region's
+/// motion that is not zero but below kUnitsLengthFactor times the mesh's size (its bounding box's
+/// diagonal): most often a length in other units than the mesh's.
 std::vector<InputError> setup_warnings(const Case& c, const Mesh* mesh = nullptr);
 
 /// How many times the Young's modulus a load may reach before setup_warnings asks about units.
 inline constexpr double kUnitsWarningFactor = 10.0;
+/// The fraction of the mesh's size below which a prescribed motion or a die's radius makes
+/// setup_warnings ask about units.
+inline constexpr double kUnitsLengthFactor = 1e-3;
 
 }  // namespace plisse::app

@@ -6,9 +6,11 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/wrinkling.hpp"
@@ -203,6 +205,64 @@ TEST(ModelBuilder, LoadsFarAboveTheMaterialsModulusAskAboutUnits) {
       "c.yaml"));
   ASSERT_EQ(gas.size(), 1u);
   EXPECT_EQ(gas[0].place().key, "cavities[0].initial_pressure");
+}
+
+// Lengths far below the body's: the cube's bounding box has the diagonal 2 sqrt(3) = 3.4641, so
+// 1e-3 of it is 0.0034641. A pull of 0.002 (metres typed into a case meshed in millimetres), a cap
+// moved 0.001, a die of radius 0.001 and a rigid region moved 1e-4 are warned at their keys; a
+// pull of 0.004, a held component (0), a die's motion of 0.5 and a plane die (no radius) are not.
+TEST(ModelBuilder, LengthsFarBelowTheMeshsSizeAskAboutUnits) {
+  const std::string text =
+      kCube +
+      "boundary:\n"
+      "  - {type: fixed, surface: bottom}\n"
+      "  - {type: displacement, name: pull, surface: top, value: [0, ~, 0.002]}\n"
+      "  - {type: displacement, name: push, surface: left, value: [0.004, 0, ~]}\n"
+      "caps:\n"
+      "  - {name: lid, surface: right, displacement: [0.001, 0, ~]}\n"
+      "  - {name: held, surface: front, displacement: [0, 0, 0]}\n"
+      "dies:\n"
+      "  - {name: ball, shape: sphere, point: [1, 1, 4], radius: 0.001,\n"
+      "     move: {displacement: [0, 0, -0.5]}}\n"
+      "  - {name: plate, shape: plane, point: [0, 0, 3], normal: [0, 0, -1]}\n"
+      "regions:\n"
+      "  - {name: block, box: [[0, 0, 0], [1, 1, 1]], rigid: true, displacement: [0, 0, 1e-4]}\n";
+  const Case c = parse_case_string(text, "c.yaml");
+  EXPECT_TRUE(setup_warnings(c).empty()) << "without the mesh nothing is judged";
+  const Mesh mesh = load_case_mesh(c);
+  const auto warnings = setup_warnings(c, &mesh);
+  ASSERT_EQ(warnings.size(), 4u);
+  EXPECT_EQ(warnings[0].place().key, "boundary[1].value");
+  EXPECT_EQ(warnings[0].place().line, 5);
+  EXPECT_NE(warnings[0].rule().find("displacement condition 'pull': its largest component 0.002 "
+                                    "is 0.00057735 of the mesh's size (the diagonal of its "
+                                    "bounding box, 3.4641)"),
+            std::string::npos)
+      << warnings[0].rule();
+  EXPECT_NE(warnings[0].rule().find("a length in metres in a case meshed in millimetres is 1000 "
+                                    "times too small"),
+            std::string::npos);
+  EXPECT_EQ(warnings[1].place().key, "caps[0].displacement");
+  EXPECT_NE(warnings[1].rule().find("cap 'lid': its largest displacement component 0.001"),
+            std::string::npos)
+      << warnings[1].rule();
+  EXPECT_EQ(warnings[2].place().key, "dies[0].radius");
+  EXPECT_NE(warnings[2].rule().find("die 'ball': its radius 0.001 is 0.00028867"),
+            std::string::npos)
+      << warnings[2].rule();
+  EXPECT_EQ(warnings[3].place().key, "regions[0].displacement");
+  EXPECT_NE(warnings[3].rule().find("the motion of rigid region block 0.0001"), std::string::npos)
+      << warnings[3].rule();
+  // The limit is 1e-3 of the size: a pull of 0.004 (0.00115 of it) and a die of radius 1 are not
+  // warned about, a cap moved 0.002 (0.00058 of it) still is, a region held in place (0) is not.
+  std::string larger = text;
+  for (const auto& [from, to] :
+       {std::pair{"0.002]", "0.004]"}, std::pair{"radius: 0.001", "radius: 1"},
+        std::pair{"0.001, 0, ~", "0.002, 0, ~"}, std::pair{"1e-4]", "0]"}})
+    larger.replace(larger.find(from), std::string(from).size(), to);
+  const auto fewer = setup_warnings(parse_case_string(larger, "c.yaml"), &mesh);
+  ASSERT_EQ(fewer.size(), 1u);
+  EXPECT_EQ(fewer[0].place().key, "caps[0].displacement");
 }
 
 // The same for what moves the body without being a load: a displacement condition, a cap and a
