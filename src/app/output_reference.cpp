@@ -141,6 +141,10 @@ const std::vector<OutputEntry> kSummary = {
     {"limit.load_factor", "–", "the step fell below `solver.min_step`",
      "that step's load factor (time / end_time)"},
     {"limit.step", "–", "the step fell below `solver.min_step`", "that step's number"},
+    {"limit.loads.<column>", "the column's", "the step fell below `solver.min_step`",
+     "the loads at that step, by their history.csv columns (`pressure:<name>`, `load_x:<name>` "
+     "..., caps' and dies' `force_x:<name>`, `moment_x:<name>` ...); the log's error names them "
+     "too"},
     {"nodes", "–", "always", "mesh nodes (corner and edge nodes)"},
     {"elements", "–", "always", "tetrahedra, or the triangles of a shell mesh"},
     {"element", "–", "always", "the element family: `mini`, `taylor-hood` or `shell`"},

@@ -5,6 +5,9 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "analysis/point_location.hpp"
 #include "app/model_builder.hpp"
@@ -294,20 +297,28 @@ SteppingResult step_to_the_end(const RunContext& run, RunSolver& solver, RunReco
 }
 
 /// What a run stopped at its smallest step says of the load it reached (load_stepper's
-/// smallest_step): the load factor and time of the last converged step, and how to go past it.
-std::string limit_load_text(const StepInfo& last) {
+/// smallest_step): the load factor and time of the last converged step, the loads there (the
+/// history's load columns: RunRecorder::last_loads), and how to go past it.
+std::string limit_load_text(const StepInfo& last,
+                            const std::vector<std::pair<std::string, double>>& loads) {
   char text[640];
   std::snprintf(text, sizeof text,
-                "the load could not be raised past load factor %.6g "
-                "(t = %.6g, step %d%s). If the body collapses there (its stiffness along the "
-                "load is gone), this is its limit load; under load control nothing follows it "
-                "further: prescribe a displacement instead (a cap's or a die's motion, a "
-                "displacement condition, a cavity's volume), which passes the maximum",
+                "the load could not be raised past load factor %.6g (t = %.6g, step %d%s)",
                 last.load_factor, last.time, last.step,
                 last.negative_pivots < 0 ? ""
                 : last.stable            ? ", stable"
                                          : ", not stable");
-  return text;
+  std::string out = text;
+  for (std::size_t k = 0; k < loads.size(); ++k) {
+    std::snprintf(text, sizeof text, "%s %s = %.6g", k == 0 ? "; there" : ",",
+                  loads[k].first.c_str(), loads[k].second);
+    out += text;
+  }
+  return out +
+         ". If the body collapses there (its stiffness along the load is gone), this is its "
+         "limit load; under load control nothing follows it further: prescribe a displacement "
+         "instead (a cap's or a die's motion, a displacement condition, a cavity's volume), "
+         "which passes the maximum";
 }
 
 /// The recorder's last files and summary, the log's closing line, and the outcome: returns when
@@ -344,12 +355,13 @@ void finish_run(const RunContext& run, const SteppingResult& result, const Start
   }
   if (!result.completed) {
     out.log().error(result.failure);
-    if (result.smallest_step) out.log().error(limit_load_text(last));
+    if (result.smallest_step) out.log().error(limit_load_text(last, recorder.last_loads()));
     out.flush_log();
     throw SolverError(result.failure + " (last converged step " + std::to_string(last.step) +
                       " at t = " + std::to_string(last.time) + " is written in " +
                       directory.string() + ")" +
-                      (result.smallest_step ? "\n" + limit_load_text(last) : std::string()));
+                      (result.smallest_step ? "\n" + limit_load_text(last, recorder.last_loads())
+                                            : std::string()));
   }
   out.flush_log();
 }

@@ -238,6 +238,20 @@ void RunRecorder::record(const StepInfo& info) {
   last_step_start_ = std::move(previous_state_);
   previous_state_ = model_.state();
   last_step_ = info;
+  last_row_ = row;
+}
+
+std::vector<std::pair<std::string, double>> RunRecorder::last_loads() const {
+  std::vector<std::pair<std::string, double>> out;
+  const std::vector<std::string>& names = columns_.names();
+  for (std::size_t k = 0; k < names.size() && k < last_row_.size(); ++k)
+    for (const char* prefix : {"pressure:", "load_x:", "load_y:", "load_z:", "force_x:", "force_y:",
+                               "force_z:", "moment_x:", "moment_y:", "moment_z:"})
+      if (names[k].starts_with(prefix)) {
+        out.emplace_back(names[k], last_row_[k]);
+        break;
+      }
+  return out;
 }
 
 void RunRecorder::check_material_stability(int step) {
@@ -360,10 +374,14 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
   summary["interrupted"] = result.interrupted;
   if (!result.completed) summary["failure"] = result.failure;
   // The load the run could not raise (a limit load under load control): the last converged step.
-  if (result.smallest_step)
+  if (result.smallest_step) {
+    nlohmann::json loads = nlohmann::json::object();
+    for (const auto& [name, value] : last_loads()) loads[name] = value;
     summary["limit"] = {{"time", last_step_.time},
                         {"load_factor", last_step_.load_factor},
-                        {"step", last_step_.step}};
+                        {"step", last_step_.step},
+                        {"loads", loads}};
+  }
   summary["nodes"] = mesh.n_nodes();
   summary["elements"] = model_.n_elements();
   summary["element"] = to_string(model_.element_family());

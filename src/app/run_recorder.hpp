@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/history_columns.hpp"
@@ -71,6 +72,10 @@ class RunRecorder {
 
   /// The last recorded step (step 0 before any).
   const StepInfo& last_step() const { return last_step_; }
+  /// The load columns of the last recorded step's history row (pressures `pressure:`, dead and
+  /// follower loads `load_x:` ..., caps' and dies' forces and moments `force_x:`, `moment_x:`
+  /// ...), in the history's order; empty before any step. What a run stopped at a limit load names.
+  std::vector<std::pair<std::string, double>> last_loads() const;
   /// The wrinkle metrics of the last recorded step, when the case measures them.
   const std::optional<WrinkleMeter::Result>& last_wrinkles() const { return last_wrinkles_; }
   /// Time spent computing and writing output so far [s].
@@ -126,6 +131,7 @@ class RunRecorder {
   std::optional<WrinkleMeter::Result> last_wrinkles_;
   nlohmann::json instabilities_ = nlohmann::json::array();
   StepInfo last_step_;
+  std::vector<double> last_row_;  ///< the last recorded step's history row
   /// The time of the resumed checkpoint (0 for a fresh run): a resumed run that has no step
   /// left records no step, and its summary's final_time is this one.
   double start_time_ = 0.0;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <set>
+#include <string>
 
 #include "core/error.hpp"
 #include "mesh/topology.hpp"
@@ -121,6 +122,14 @@ void RigidCap::assemble(double t, std::span<const double> x, std::span<double> r
                         TangentSink* tangent) {
   const std::array<double, 6> q = motion(t, x);
   const Vec3d u_c(q[0], q[1], q[2]), theta(q[3], q[4], q[5]);
+  // A Newton iterate far off (a step past a limit load): the step is cut back for this reason,
+  // which names the cap rather than the rotation formula's range.
+  if (!(theta.norm() <= kMaxRotationAngle)) {
+    char text[96];
+    std::snprintf(text, sizeof text, "%.3g", theta.norm());
+    throw Error("the Newton iterations diverged: they turned cap '" + settings_.name + "' by " +
+                text + " rad, more than the 2 pi a rotation vector describes");
+  }
   const double factor = settings_.ramp.factor(t);
   Mat3d theta_theta = Mat3d::Zero();  // −Σ λ_a,i ∂²(R d_a)_i/∂θ∂θ   (G7)
   Vec3d force_on_cap = Vec3d::Zero(), moment_rows = Vec3d::Zero();

@@ -11,6 +11,7 @@
 #include "output/history_writer.hpp"
 #include "output/json_file.hpp"
 #include "output/vtu_reader.hpp"
+#include "support/run_case.hpp"
 #include "support/run_plisse.hpp"
 
 namespace plisse {
@@ -146,7 +147,8 @@ namespace {
 // past its maximum p_max = 4 c1 (t/R)(1/l - 1/l^7) at l = 7^(1/6), 2.4789e-4 MPa (the thin-shell
 // closed form of examples/shell-balloon.yaml): the run stops at the load factor p_max / 3e-4 =
 // 0.8263 of the closed form, within 3e-3 above it (the discrete shell's maximum on elements of
-// 10 mm: measured 1.5e-3 above) and 5e-3 below (the last step that converged before it).
+// 10 mm: measured 1.5e-3 above) and 5e-3 below (the last step that converged before it). The
+// pressure reached is named in the log and summary.json.
 TEST(SolverFailure, ALoadPastTheLimitLoadStopsNamingTheLoadReached) {
   const auto dir = test::scratch_directory("limit-load");
   std::filesystem::create_directories(dir);
@@ -179,10 +181,18 @@ TEST(SolverFailure, ALoadPastTheLimitLoadStopsNamingTheLoadReached) {
               reached / limit - 1.0);
   EXPECT_LE(reached, limit * (1.0 + 3e-3));
   EXPECT_GE(reached, limit * (1.0 - 5e-3));
-  // The last converged step, which history.csv ends with (its column 1 is the time).
+  // The last converged step, which history.csv ends with (its column 1 is the time), and the
+  // pressure there, which the log and summary.json name: the load factor times 3e-4 MPa.
   const HistoryTable h = read_history(dir / "run" / "history.csv");
   ASSERT_FALSE(h.rows.empty());
   EXPECT_DOUBLE_EQ(h.rows.back()[1], summary["limit"]["time"].get<double>());
+  ASSERT_TRUE(summary["limit"]["loads"].contains("pressure:p")) << summary.dump();
+  const double pressure = summary["limit"]["loads"]["pressure:p"].get<double>();
+  EXPECT_NEAR(pressure, reached * 3.0e-4, 1e-12);
+  EXPECT_DOUBLE_EQ(pressure, h.rows.back()[test::history_column(h, "pressure:p")]);
+  char named[64];
+  std::snprintf(named, sizeof named, "; there pressure:p = %.6g. If", pressure);
+  EXPECT_NE(text.find(named), std::string::npos) << named << "\n" << text;
 }
 
 }  // namespace

@@ -6,7 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <string>
+#include <vector>
 
+#include "core/error.hpp"
 #include "mesh/box_mesh.hpp"
 #include "mesh/topology.hpp"
 #include "support/term_testing.hpp"
@@ -84,6 +87,24 @@ TEST(RigidCap, TangentIsTheSymmetricDerivativeWithSomeMotionsPrescribed) {
   EXPECT_DOUBLE_EQ(q[1], 0.1);
   EXPECT_DOUBLE_EQ(q[3], 0.15);
   EXPECT_DOUBLE_EQ(q[5], -0.05);
+}
+
+// A Newton iterate that turns the cap past 2 pi (a step beyond a limit load) ends the step with a
+// reason that names the cap and the divergence; 6 rad is still within the rotation's range.
+TEST(RigidCap, ANewtonIterateTurningTheCapPastTwoPiNamesTheCap) {
+  CapSetup s = make_cap(true);
+  std::vector<double> x(s.n, 0.0), r(s.n, 0.0);
+  x[s.n - 3] = 6.0;  // θ_x, the first of the last three free motions
+  EXPECT_NO_THROW(s.cap->assemble(1.0, x, r, nullptr));
+  x[s.n - 3] = 59.0;
+  try {
+    s.cap->assemble(1.0, x, r, nullptr);
+    ADD_FAILURE() << "a turn of 59 rad was assembled";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "the Newton iterations diverged: they turned cap 'cap' by 59 rad, more than the "
+              "2 pi a rotation vector describes");
+  }
 }
 
 TEST(RigidCap, ComponentsPrescribedByABoundaryConditionAreNotTied) {
