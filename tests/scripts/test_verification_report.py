@@ -72,13 +72,13 @@ class RenderTest(unittest.TestCase):
         self.assertIn("under halving of h: 0.88;", page)
         self.assertIn("meshes: 110.13 N (1.101 times", page)
         self.assertIn("| `cube-cycles-mullins` | taylor-hood | 60 | 180 | 6.90e-12 |", page)
-        self.assertIn("below 1e-11 P∞(λ = 2).", page)
+        self.assertIn("below 1e-11 P∞(λ = 2), and, as a", page)
         self.assertIn("| neo-Hookean | taylor-hood | 2.0 | 1 | 498 | 3276 | 0.0101 |", page)
         self.assertIn("| 1.40474 | 0.012118 |", page)
         self.assertIn("| closed form, thick wall | 1.40467 | 0.012091 |", page)
         self.assertIn("| thin-membrane limit 7^(1/6) | 1.38309 | |", page)  # 7^(1/6) = 1.383088
         self.assertIn("(3000 tetrahedra)", page)
-        self.assertIn("40 steps, 120 Newton iterations.", page)
+        self.assertIn("40 steps, 120 Newton iterations in total.", page)
         self.assertIn("| Taylor-Hood, 1 layer of 3 mm | 200 | 50 | 150 | 3.46e-05 |", page)
 
     def test_run_time_when_given_and_when_not(self):

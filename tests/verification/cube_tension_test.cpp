@@ -20,6 +20,7 @@
 #include "output/run_directory.hpp"
 #include "output/vtu_reader.hpp"
 #include "support/run_plisse.hpp"
+#include "support/verification_record.hpp"
 
 namespace plisse {
 namespace {
@@ -68,6 +69,11 @@ void expect_closed_form(const CubeCase& c) {
     EXPECT_NEAR(row[energy], stored, kTolerance * stored) << "strain energy, stretch " << lambda;
   }
   EXPECT_NEAR(h.rows.back()[stretch], 5.0, 1e-12);
+  // The steps and Newton iterations docs/verification.md prints for the run (regression guard).
+  const std::string name = std::string(c.example).substr(0, std::string(c.example).size() - 5);
+  test::expect_newton_as_printed(
+      h, test::verification_row("cube_tension", {{"case", name}, {"element", c.element}}),
+      name + ", " + c.element);
 
   // The probes. 'inside' is a material point X inside an element, away from its nodes: every
   // field interpolated there, or of its element, is the homogeneous stretch's, u = (F - I) X with
@@ -324,15 +330,21 @@ TEST(CubeTension, FibresAlongAndAcrossThePullMatchClosedFormsWithBothElements) {
 // closed form gives the converged force): the three forces 93.6872, 67.7645 and 60.0091 N to
 // 1e-5, the observed order of the force under halving of h, 1.74, within 0.005, and the
 // Richardson extrapolation from the two finest meshes, 56.70 N (1.089 times the homogeneous
-// force), within 0.005 N; it must lie between the homogeneous force and the finest mesh's.
+// force), within 0.005 N; it must lie between the homogeneous force and the finest mesh's. The
+// page's numbers are read from docs/verification/record.json, as are its steps and Newton
+// iterations, which each run must repeat.
 TEST(CubeTension, StickingEndsNeedMoreForceThanTheHomogeneousStretchAndConverge) {
   const double lambda = 5.0, c1 = 0.2, c2 = 0.05;
   const double homogeneous =
       2.0 * (c1 + c2 / lambda) * (lambda * lambda - 1.0 / lambda) * 25.0 / lambda;
   EXPECT_NEAR(homogeneous, 52.08, 1e-9);
-  const double page[3] = {93.6872, 67.7645, 60.0091};
+  const nlohmann::json table = test::verification_table("cube_sticking");
+  EXPECT_NEAR(table.value("homogeneous_force", 0.0), homogeneous, 1e-9);
+  nlohmann::json rows[3];
   double force[3] = {0.0, 0.0, 0.0};
   const int divisions[3] = {3, 6, 12};
+  for (int k = 0; k < 3; ++k)
+    rows[k] = test::verification_row("cube_sticking", {{"divisions", divisions[k]}});
   for (int k = 0; k < 3; ++k) {
     const auto dir = test::scratch_directory("sticking-" + std::to_string(divisions[k]));
     ASSERT_EQ(test::run_plisse("run " + test::example("cube-tension-sticking.yaml") + " -o " +
@@ -345,15 +357,18 @@ TEST(CubeTension, StickingEndsNeedMoreForceThanTheHomogeneousStretchAndConverge)
     force[k] = h.rows.back()[column(h, "force_z:die")];
     EXPECT_NEAR(h.rows.back()[column(h, "load_factor")], 1.0, 1e-12);
     EXPECT_GT(force[k], homogeneous) << divisions[k] << " divisions";
-    EXPECT_NEAR(force[k], page[k], 1e-5 * page[k]) << divisions[k] << " divisions";
+    const double page = rows[k].value("die_force", 0.0);
+    EXPECT_NEAR(force[k], page, 1e-5 * page) << divisions[k] << " divisions";
+    test::expect_newton_as_printed(h, rows[k], std::to_string(divisions[k]) + " divisions");
   }
   EXPECT_LT(force[1], force[0]);
   EXPECT_LT(force[2], force[1]);
   const double order = std::log((force[0] - force[1]) / (force[1] - force[2])) / std::log(2.0);
-  EXPECT_NEAR(order, 1.74, 0.005);
+  EXPECT_NEAR(order, table.value("observed_order", 0.0), 0.005);
   const double extrapolated = force[2] - (force[1] - force[2]) / (std::pow(2.0, order) - 1.0);
-  EXPECT_NEAR(extrapolated, 56.70, 0.005);
-  EXPECT_NEAR(extrapolated / homogeneous, 1.089, 0.0005);
+  EXPECT_NEAR(extrapolated, table.value("extrapolated_force", 0.0), 0.005);
+  EXPECT_NEAR(extrapolated / homogeneous, table.value("extrapolated_ratio_to_homogeneous", 0.0),
+              0.0005);
   EXPECT_GT(extrapolated, homogeneous);
   EXPECT_LT(extrapolated, force[2]);
 }

@@ -25,7 +25,9 @@
 #include <utility>
 
 #include "output/history_writer.hpp"
+#include "output/json_file.hpp"
 #include "support/run_plisse.hpp"
+#include "support/verification_record.hpp"
 
 namespace plisse {
 namespace {
@@ -72,11 +74,12 @@ const std::string kTaylorHood =
     " --set element=taylor-hood --set mesh.element_size=4 --set mesh.layers=1";
 
 HistoryTable run(const std::string& case_file, const std::string& label,
-                 const std::string& options = "") {
+                 const std::string& options = "", nlohmann::json* summary = nullptr) {
   const auto dir = test::scratch_directory("cavity-" + label);
   const int status =
       test::run_plisse("run " + case_file + " -o " + dir.string() + options, dir.string() + ".log");
   EXPECT_EQ(status, 0) << "see " << dir.string() << ".log";
+  if (summary) *summary = read_json_file(dir / "summary.json");
   return read_history(dir / "history.csv");
 }
 
@@ -126,10 +129,14 @@ void expect_few_newton_iterations(const HistoryTable& h) {
 }
 
 TEST(BalloonLimitPoint, VolumeControlPassesThePressureMaximumAtTheClosedFormStretch) {
-  const HistoryTable h = run(test::example("balloon-limit-point.yaml"), "volume");
+  nlohmann::json summary;
+  const HistoryTable h = run(test::example("balloon-limit-point.yaml"), "volume", "", &summary);
   ASSERT_GE(h.rows.size(), 10u);
   expect_closed_form_maximum(h, "volume control", 1e-4, 3e-3);  // docs/verification.md's run
   expect_few_newton_iterations(h);
+  // The steps and Newton iterations the page prints for it (regression guard).
+  test::expect_newton_as_printed(summary, test::verification_table("balloon_limit_point"),
+                                 "balloon-limit-point");
   // The constraint holds: V / (1 + 3 t) is the reference volume V0 at every step (volume_ratio 4),
   // and V0 is the octant of the inscribed polyhedron, just below the sphere's 4188.79 mm^3.
   const size_t v = column(h, "volume:balloon"), t = column(h, "time");

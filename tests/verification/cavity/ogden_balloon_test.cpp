@@ -19,7 +19,9 @@
 #include <string>
 
 #include "output/history_writer.hpp"
+#include "output/json_file.hpp"
 #include "support/run_plisse.hpp"
+#include "support/verification_record.hpp"
 
 namespace plisse {
 namespace {
@@ -67,8 +69,11 @@ size_t column(const HistoryTable& h, const std::string& name) {
 }
 
 /// Runs the example with `options`; checks every step against P(λa) within `tolerance` and the
-/// extrema of the computed curve against the closed form's, within the stretch between two steps.
-void expect_ogdens_curve(const std::string& label, const std::string& options, double tolerance) {
+/// extrema of the computed curve against the closed form's, within the stretch between two steps;
+/// and, as a regression guard, the steps and Newton iterations docs/verification.md prints in its
+/// row `page_row`.
+void expect_ogdens_curve(const std::string& label, const std::string& options, double tolerance,
+                         const std::string& page_row) {
   const auto dir = test::scratch_directory("ogden-balloon-" + label);
   const int status = test::run_plisse(
       "run " + test::example("balloon-ogden.yaml") + " -o " + dir.string() + options,
@@ -76,6 +81,9 @@ void expect_ogdens_curve(const std::string& label, const std::string& options, d
   ASSERT_EQ(status, 0) << "see " << dir.string() << ".log";
   const HistoryTable h = read_history(dir / "history.csv");
   ASSERT_GE(h.rows.size(), 20u);
+  test::expect_newton_as_printed(
+      read_json_file(dir / "summary.json"),
+      test::verification_row("balloon_ogden", {{"element_and_mesh", page_row}}), label);
   const size_t p_col = column(h, "pressure:balloon"), u_col = column(h, "ux:inner");
   const auto lambda = [&](size_t i) { return 1.0 + h.rows[i][u_col] / kA; };
   double worst = 0.0;
@@ -106,17 +114,18 @@ void expect_ogdens_curve(const std::string& label, const std::string& options, d
 }
 
 TEST(OgdenBalloon, MiniFollowsOgdensIntegralThroughTheMaximumAndTheMinimum) {
-  expect_ogdens_curve("mini", "", 3e-3);
+  expect_ogdens_curve("mini", "", 3e-3, "MINI, 2 layers of 2 mm");
 }
 
 TEST(OgdenBalloon, MiniOnThreeLayersFollowsOgdensIntegralCloser) {
-  expect_ogdens_curve("mini-1.4", " --set mesh.element_size=1.4 --set mesh.layers=3", 1.4e-3);
+  expect_ogdens_curve("mini-1.4", " --set mesh.element_size=1.4 --set mesh.layers=3", 1.4e-3,
+                      "MINI, 3 layers of 1.4 mm");
 }
 
 TEST(OgdenBalloon, TaylorHoodOnOneLayerFollowsOgdensIntegralWithin1e5) {
   expect_ogdens_curve("taylor-hood",
                       " --set element=taylor-hood --set mesh.element_size=3 --set mesh.layers=1",
-                      1e-5);
+                      1e-5, "Taylor-Hood, 1 layer of 3 mm");
 }
 
 }  // namespace

@@ -21,6 +21,7 @@
 
 #include "output/history_writer.hpp"
 #include "support/run_plisse.hpp"
+#include "support/verification_record.hpp"
 
 namespace plisse {
 namespace {
@@ -55,6 +56,12 @@ class InelasticRun : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(InelasticRun, RelaxationFollowsTheClosedFormAtEveryStep) {
   const HistoryTable h = run_example("cube-relaxation-viscoelastic.yaml", GetParam());
+  // The steps and Newton iterations docs/verification.md prints for the run (regression guard).
+  test::expect_newton_as_printed(
+      h,
+      test::verification_row("inelastic_cubes",
+                             {{"case", "cube-relaxation-viscoelastic"}, {"element", GetParam()}}),
+      std::string("cube-relaxation-viscoelastic, ") + GetParam());
   ASSERT_GE(h.rows.size(), 20u);
   const std::size_t time = column(h, "time"), force = column(h, "force_z:top"),
                     stretch = column(h, "stretch_z"), szz = column(h, "cauchy_zz");
@@ -112,6 +119,12 @@ TEST(InelasticRunMini, OneStepStretchRelaxesAsTheTextbookClosedForm) {
 
 TEST_P(InelasticRun, MullinsCyclesFollowTheClosedFormAndRetraceTheFirstUnloading) {
   const HistoryTable h = run_example("cube-cycles-mullins.yaml", GetParam());
+  // The steps and Newton iterations docs/verification.md prints for the run (regression guard).
+  test::expect_newton_as_printed(
+      h,
+      test::verification_row("inelastic_cubes",
+                             {{"case", "cube-cycles-mullins"}, {"element", GetParam()}}),
+      std::string("cube-cycles-mullins, ") + GetParam());
   ASSERT_GE(h.rows.size(), 60u);
   const std::size_t time = column(h, "time"), force = column(h, "force_z:top"),
                     stretch = column(h, "stretch_z"), szz = column(h, "cauchy_zz");
