@@ -22,8 +22,8 @@ Per run, from history.csv:
   - the onset: the first step whose state is unstable (column stable: more negative pivots than
     a stable state) or whose largest ring amplitude exceeds 0.1 t (the example's threshold),
     bracketed in pressure by the step before it and the step itself (column pressure:gas);
-  - the wave count m around the whole rim at the onset (history.csv wrinkle_count: the ring with
-    the largest amplitude; even only, the quarter model's mirrors hold no other), and the ring
+  - the wave count m around the whole rim at the onset (history.csv wrinkle_peak_count: the ring
+    with the largest amplitude, above the threshold or not; even only, the quarter model's mirrors hold no other), and the ring
     (latitude) whose harmonic is largest in wrinkle_spectrum.csv at the first step written from
     the onset on.
 --summary gives d log p_c / d log a between neighbouring radii (the dimensional argument of the
@@ -103,7 +103,7 @@ def measure(run):
         result["onset"] = fits.bracket(p, index)
         unstable = "stable" in h and h["stable"][index] == 0
         result["kind"] = "instability" if unstable else "folds"
-        result["count"] = int(h["wrinkle_count"][index])
+        result["count"] = int(h["wrinkle_peak_count"][index])
         result["peak"] = spectrum_peak(run, int(h["step"][index]))
     return result
 

@@ -1,10 +1,12 @@
 """Figures of a run directory: what `plisse plot DIR` draws (docs/output.md, "Figures").
 
-Usage: plot.py RUN_DIR OUT_DIR PLISSE_EXECUTABLE
+Usage: plot.py RUN_DIR OUT_DIR PLISSE_EXECUTABLE [--x COLUMN] [--y COLUMN ...]
 
 Reads RUN_DIR/history.csv, summary.json and the step files, and writes PNG files into OUT_DIR:
   forces.png           each force's largest component against the time and, with probes, against
                        the largest probe displacement (load against displacement)
+  moments.png          each cap's largest moment component against the time (runs with caps
+                       whose turn is free or prescribed)
   pressure_volume.png  pressure against enclosed volume, for every pressure or cavity with a
                        volume column (the whole body's where the history has it)
   newton.png           Newton iterations per step and the residual reached
@@ -12,11 +14,13 @@ Reads RUN_DIR/history.csv, summary.json and the step files, and writes PNG files
   wrinkle_map.png      the last state's measured surface coloured by its normal deviation from
                        the axisymmetric mean shape, with the rings drawn (runs with rings), and
                        wrinkle_map_step_NNNN.png at every step where stability was lost
+With --y (one or more history columns) and --x (a column, default time) it draws only
+columns.png: each --y column against the --x column.
 Axis labels take their units from the output reference (`plisse outputs history`).
 Exit status: 0 done; 2 RUN_DIR is not a run directory, its files are malformed or larger than a
 run writes (history.csv at most 256 MiB, summary.json 64 MiB, a step file's arrays no larger than
-its mesh: checked before they are read), or a figure's path is a symbolic link; 1 a figure could
-not be written.
+its mesh: checked before they are read), a figure's path is a symbolic link, or a --x or --y
+column is not in the history (the message lists those there are); 1 a figure could not be written.
 """
 import os
 import re
@@ -34,7 +38,8 @@ MAX_SUMMARY_BYTES = 64 << 20
 MALFORMED = (ValueError, KeyError, TypeError, IndexError, AttributeError, UnicodeDecodeError,
              MemoryError, OverflowError)
 
-FIGURES = ("forces.png", "pressure_volume.png", "newton.png", "wrinkles.png", "wrinkle_map.png")
+FIGURES = ("forces.png", "moments.png", "pressure_volume.png", "newton.png", "wrinkles.png",
+           "wrinkle_map.png", "columns.png")
 
 
 def fail(message, status=2):
@@ -121,6 +126,41 @@ def forces_figure(h, units, out):
     save(fig, os.path.join(out, "forces.png"))
 
 
+def moments_figure(h, units, out):
+    moments = named_groups(h, ["moment_"])
+    if not moments:
+        return
+    fig, ax = plt.subplots(figsize=(6.0, 4.2))
+    for name, cols in sorted(moments.items()):
+        c = largest_component(h, cols)
+        ax.plot(h["time"], h[c], marker=".", label=c)
+    ax.set_xlabel("time t [–]")
+    unit = unit_of(units, next(iter(moments.values()))[0])
+    ax.set_ylabel(f"moment [{unit}]" if unit else "moment")
+    ax.set_title("moments on the caps (largest component of each)")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    save(fig, os.path.join(out, "moments.png"))
+
+
+def columns_figure(h, units, out, x, ys):
+    """columns.png: each of the columns `ys` against the column `x`."""
+    missing = [c for c in [x, *ys] if c not in h]
+    if missing:
+        fail(f"history.csv has no column {', '.join(missing)}; its columns: {', '.join(h)}")
+    fig, ax = plt.subplots(figsize=(6.0, 4.2))
+    for y in ys:
+        ax.plot(h[x], h[y], marker=".", label=y)
+    ax.set_xlabel(label(units, x))
+    if len(ys) == 1:
+        ax.set_ylabel(label(units, ys[0]))
+    else:
+        ax.legend(fontsize=8)
+    ax.set_title(f"{', '.join(ys)} against {x}")
+    ax.grid(alpha=0.3)
+    save(fig, os.path.join(out, "columns.png"))
+
+
 def pressure_volume_figure(h, units, out):
     pairs = []
     for c in h:
@@ -165,7 +205,10 @@ def wrinkles_figure(h, out):
     ax.set_xlabel("time t [–]")
     ax.set_ylabel("largest ring amplitude [mm]", color="tab:red")
     twin = ax.twinx()
-    twin.step(h["time"], h["wrinkle_count"], "k", where="mid")
+    twin.step(h["time"], h["wrinkle_count"], "k", where="mid", label="above the threshold")
+    if "wrinkle_peak_count" in h:
+        twin.step(h["time"], h["wrinkle_peak_count"], "k:", where="mid", label="any amplitude")
+        twin.legend(fontsize=8, loc="upper left")
     twin.set_ylabel("its wave count")
     twin.yaxis.set_major_locator(MaxNLocator(integer=True))
     ax.set_title("wrinkles")
@@ -229,9 +272,21 @@ def check_step_header(vtu, summary):
 
 
 def main():
-    if len(sys.argv) != 4:
-        fail("usage: plot.py RUN_DIR OUT_DIR PLISSE_EXECUTABLE")
-    run, out, plisse = sys.argv[1:]
+    usage = "usage: plot.py RUN_DIR OUT_DIR PLISSE_EXECUTABLE [--x COLUMN] [--y COLUMN ...]"
+    if len(sys.argv) < 4:
+        fail(usage)
+    run, out, plisse = sys.argv[1:4]
+    x, ys, rest = None, [], sys.argv[4:]
+    while rest:
+        if len(rest) < 2 or rest[0] not in ("--x", "--y"):
+            fail(usage)
+        if rest[0] == "--x":
+            x = rest[1]
+        else:
+            ys.append(rest[1])
+        rest = rest[2:]
+    if x is not None and not ys:
+        fail("--x needs at least one --y column to draw against it")
     if not os.path.isfile(os.path.join(run, "history.csv")):
         fail(f"{run}: not a run directory (no history.csv)")
     check_size(os.path.join(run, "history.csv"), MAX_HISTORY_BYTES)
@@ -258,7 +313,11 @@ def main():
         fail(str(e))
     units = reference_units(plisse)
     try:
+        if ys:
+            columns_figure(h, units, out, x or "time", ys)
+            return
         forces_figure(h, units, out)
+        moments_figure(h, units, out)
         pressure_volume_figure(h, units, out)
         newton_figure(h, out)
         wrinkles_figure(h, out)

@@ -20,8 +20,8 @@ touches), and
     definiteness; the run switches branch along its mode there) or the first step with a
     wrinkled ring (amplitude above 0.1 t), whichever comes first (a mesh that is not exactly
     axisymmetric can let the wrinkles grow without a bifurcation), bracketed by the step before;
-  - the wrinkle count m: `wrinkle_count` of the ring with the largest amplitude at the first step
-    where a ring is wrinkled (docs/case-file.md, Wrinkle metrics), and at the last step.
+  - the wrinkle count m: `wrinkle_peak_count` of the ring with the largest amplitude at the first
+    step from the onset where it has a wrinkle peak (docs/case-file.md, Wrinkle metrics), and at the last step.
 The octant (mirrors x = 0, z = 0) holds only even m. --summary also fits the exponents of
 w0_c and m against tau over the runs given (theory: 1 and 1/2).
 """
@@ -68,7 +68,7 @@ def measure(run, c1):
     shown = np.flatnonzero(((h["step"] == first) if first is not None else False)
                            | (h["wrinkle_amplitude"] > 0.1 * thickness))
     result["onset"] = fits.bracket(depth, shown[0]) if len(shown) else None
-    counts = h["wrinkle_count"].astype(int)
+    counts = h["wrinkle_peak_count"].astype(int)
     counted = [k for k in range(shown[0], len(counts)) if counts[k] > 0] if len(shown) else []
     result["count"] = int(counts[counted[0]]) if counted else 0
     result["ring"] = wrinkled_ring(run, int(h["step"][counted[0]]), radius) if counted else None

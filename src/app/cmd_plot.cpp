@@ -17,7 +17,9 @@ namespace fs = std::filesystem;
 
 struct PlotOptions {
   std::string run_directory;
-  std::string output;  ///< default: DIR/plots
+  std::string output;          ///< default: DIR/plots
+  std::string x;               ///< --x: the abscissa of columns.png (default time)
+  std::vector<std::string> y;  ///< --y: the columns of columns.png; none: the default figures
 };
 
 void plot(const PlotOptions& o) {
@@ -27,11 +29,18 @@ void plot(const PlotOptions& o) {
   if (!fs::is_directory(dir, ec)) throw InputError(place, "is not a run directory");
   if (!fs::is_regular_file(dir / "history.csv", ec))
     throw InputError(place, "holds no history.csv: not a plisse run directory, or no step done");
+  if (!o.x.empty() && o.y.empty())
+    throw InputError(InputPlace{"command line", 0, 0, "--x"},
+                     "needs at least one --y column to draw against it");
   const std::string out = o.output.empty() ? (dir / "plots").string() : o.output;
-  const int status =
-      run_python_script("plisse plot", "plot.py", {dir.string(), out, own_executable()});
+  std::vector<std::string> args{dir.string(), out, own_executable()};
+  if (!o.x.empty()) args.insert(args.end(), {"--x", o.x});
+  for (const std::string& column : o.y) args.insert(args.end(), {"--y", column});
+  const int status = run_python_script("plisse plot", "plot.py", args);
   if (status == 2)
-    throw InputError(place, "plot.py refused the run directory or the figures' folder (see above)");
+    throw InputError(place,
+                     "plot.py refused the run directory, the figures' folder or a column (see "
+                     "above)");
   if (status != 0) throw Error("plisse plot: drawing the figures failed (see the messages above)");
 }
 
@@ -40,11 +49,18 @@ void plot(const PlotOptions& o) {
 void add_plot_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "plot",
-      "Draw PNG figures of a run: forces, pressure against volume, Newton iterations, wrinkles "
-      "and the wrinkle map (writes DIR/plots/; needs python3-matplotlib)");
+      "Draw PNG figures of a run: forces, moments, pressure against volume, Newton iterations, "
+      "wrinkles and the wrinkle map, or history columns of your choice with --y (and --x) "
+      "(writes DIR/plots/; needs python3-matplotlib)");
   auto o = std::make_shared<PlotOptions>();
   cmd->add_option("dir", o->run_directory, "Run directory written by plisse run")->required();
   cmd->add_option("-o,--output", o->output, "Folder for the figures (default: DIR/plots)");
+  cmd->add_option("--y", o->y,
+                  "A history.csv column to draw (repeat for several): draws only columns.png, "
+                  "these columns against --x")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  cmd->add_option("--x", o->x, "The history.csv column of columns.png's abscissa (default time)");
   cmd->callback([o] { plot(*o); });
 }
 

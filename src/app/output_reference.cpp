@@ -110,7 +110,11 @@ const std::vector<OutputEntry> kHistoryAfter = {
     {"wrinkle_amplitude", "mm", "`output.wrinkles.rings_deg`",
      "the largest ring amplitude at the step (peak to peak of the ring's wrinkle band)"},
     {"wrinkle_count", "–", "`output.wrinkles.rings_deg`",
-     "the full-circle wave count of that ring (0 when no ring has a wrinkle band)"},
+     "the full-circle wave count of that ring when its amplitude is above the threshold "
+     "(`output.wrinkles.threshold` times the thickness), else 0: the body has wrinkled"},
+    {"wrinkle_peak_count", "–", "`output.wrinkles.rings_deg`",
+     "the same ring's count whether or not its amplitude is above the threshold (0 when no ring "
+     "has a wrinkle band): the count of wrinkles still growing, or of the mesh's noise"},
     {"wrinkled_fraction", "–", "`output.wrinkles.rings_deg`",
      "fraction of the measured surface's area that is wrinkled in the tension-field sense (one "
      "principal membrane stress compressive)"},

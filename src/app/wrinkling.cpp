@@ -259,7 +259,8 @@ WrinkleMeter::Result WrinkleMeter::evaluate(const Mesh& mesh, const std::vector<
 }
 
 std::vector<std::string> WrinkleMeter::history_columns() {
-  return {"wrinkle_amplitude", "wrinkle_count", "wrinkled_fraction", "slack_fraction"};
+  return {"wrinkle_amplitude", "wrinkle_count", "wrinkle_peak_count", "wrinkled_fraction",
+          "slack_fraction"};
 }
 
 std::vector<double> WrinkleMeter::history_values(const Result& r) const {
@@ -270,6 +271,9 @@ std::vector<double> WrinkleMeter::history_values(const Result& r) const {
       best = ring.amplitude;
       count = ring.count;
     }
+  // Below the threshold the largest peak is a count of mesh noise or of wrinkles not yet grown:
+  // wrinkle_count says 0, wrinkle_peak_count keeps it (an instability's onset reads it).
+  const int wrinkled_count = r.rings.wrinkled ? count : 0;
   double total = 0.0, wrinkled = 0.0, slack = 0.0;
   for (std::size_t t = 0; t < triangles_.size(); ++t) {
     total += triangle_area_[t];
@@ -277,7 +281,8 @@ std::vector<double> WrinkleMeter::history_values(const Result& r) const {
     if (r.tension.triangle_state[t] == MembraneState::slack) slack += triangle_area_[t];
   }
   const double scale = total > 0.0 ? 1.0 / total : 0.0;
-  return {r.rings.max_amplitude, static_cast<double>(count), wrinkled * scale, slack * scale};
+  return {r.rings.max_amplitude, static_cast<double>(wrinkled_count), static_cast<double>(count),
+          wrinkled * scale, slack * scale};
 }
 
 nlohmann::json wrinkles_json(const Case& c, const WrinkleMeter::Result& r) {

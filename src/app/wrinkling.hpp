@@ -51,8 +51,10 @@ class WrinkleMeter {
                   const std::vector<double>& J) const;
 
   /// History columns and their values: wrinkle_amplitude (largest ring wrinkle amplitude, mm;
-  /// 0 when no ring has a wrinkle peak), wrinkle_count (count of that ring, 0 likewise),
-  /// wrinkled_fraction (outer area fraction in the wrinkled state), slack_fraction.
+  /// 0 when no ring has a wrinkle peak), wrinkle_count (count of that ring when its amplitude is
+  /// above the threshold, else 0), wrinkle_peak_count (count of that ring, threshold or not; 0
+  /// when no ring has a wrinkle peak), wrinkled_fraction (outer area fraction in the wrinkled
+  /// state), slack_fraction.
   static std::vector<std::string> history_columns();
   std::vector<double> history_values(const Result& r) const;
 

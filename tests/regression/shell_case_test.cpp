@@ -306,8 +306,8 @@ TEST(ShellCase, InflatedOctantWithARandomImperfectionMeasuresItsWrinkles) {
   ASSERT_EQ(r.status, 0) << r.output;
   const HistoryTable h = read_history(dir / "history.csv");
   ASSERT_FALSE(h.rows.empty());
-  for (const char* name :
-       {"wrinkle_amplitude", "wrinkle_count", "wrinkled_fraction", "slack_fraction"}) {
+  for (const char* name : {"wrinkle_amplitude", "wrinkle_count", "wrinkle_peak_count",
+                           "wrinkled_fraction", "slack_fraction"}) {
     const std::vector<double> values = column(h, name);
     ASSERT_EQ(values.size(), h.rows.size()) << name;
     for (double v : values) EXPECT_TRUE(std::isfinite(v)) << name;

@@ -650,3 +650,46 @@ TEST(ModelBuilder, ShellRandomImperfectionKeepsTheSymmetryEdgesInTheirPlanes) {
 
 }  // namespace
 }  // namespace plisse::app
+
+namespace plisse::app {
+namespace {
+
+// wrinkle_count counts waves only above the wrinkle threshold (0.1 t = 0.02 mm here),
+// wrinkle_peak_count at any amplitude (docs/theory/wrinkles.md, section 7). The octant shell
+// sphere of radius 10 mm moved along its normal by a cos(12 phi), phi the azimuth about y: a
+// full-circle count of 12 and a peak-to-peak amplitude 2a on the ring at 30 degrees (radius 8.66
+// mm, 9 elements of 0.5 mm per wave: within 5 %). 2a = 0.01 mm is below the threshold, 0.1 mm
+// above it; the undeformed sphere has no wrinkle peak at all.
+TEST(ModelBuilder, WrinkleCountIsZeroBelowTheThresholdWhereThePeakCountIsNot) {
+  const Case c = parse_case_string(
+      "element: shell\n"
+      "mesh: {generate: spherical-shell, inner_radius: 9.9, thickness: 0.2, element_size: 0.5,"
+      " symmetry: octant}\n"
+      "material: {model: neo-hookean, c1: 0.5}\n"
+      "output: {wrinkles: {axis: y, rings_deg: [30]}}\n",
+      "c.yaml");
+  const Mesh mesh = load_case_mesh(c);
+  const WrinkleMeter meter(c, mesh);
+  const std::vector<std::string> names = WrinkleMeter::history_columns();
+  const auto value = [&](const std::vector<double>& row, const std::string& name) {
+    const auto at = std::find(names.begin(), names.end(), name);
+    EXPECT_NE(at, names.end()) << name;
+    return at == names.end() ? -1.0 : row[std::size_t(at - names.begin())];
+  };
+  const std::vector<Mat3d> sigma(mesh.triangles.size(), Mat3d::Zero());
+  for (const double a : {0.0, 0.005, 0.05}) {
+    std::vector<Vec3d> u(mesh.nodes.size());
+    for (std::size_t j = 0; j < mesh.nodes.size(); ++j) {
+      const Vec3d& X = mesh.nodes[j];
+      u[j] = a * std::cos(12.0 * std::atan2(X.z(), X.x())) * X.normalized();
+    }
+    const std::vector<double> row = meter.history_values(meter.evaluate(mesh, u, sigma, {}));
+    const double amplitude = value(row, "wrinkle_amplitude");
+    EXPECT_NEAR(amplitude, 2.0 * a, 0.05 * 2.0 * a) << "a = " << a;
+    EXPECT_EQ(value(row, "wrinkle_peak_count"), a > 0.0 ? 12.0 : 0.0) << "a = " << a;
+    EXPECT_EQ(value(row, "wrinkle_count"), 2.0 * a > 0.02 ? 12.0 : 0.0) << "a = " << a;
+  }
+}
+
+}  // namespace
+}  // namespace plisse::app

@@ -87,7 +87,7 @@ Onset inflate(double a, double pressure) {
   const std::size_t pressure = history_column(h, "pressure:gas"),
                     stable = history_column(h, "stable"),
                     amplitude = history_column(h, "wrinkle_amplitude"),
-                    count = history_column(h, "wrinkle_count");
+                    count = history_column(h, "wrinkle_peak_count");
   double before = 0.0;
   for (const auto& row : h.rows) {
     result.always_stable = result.always_stable && row[stable] == 1.0;

@@ -119,7 +119,7 @@ Wrinkling indent(double tau) {
   const std::size_t contact = history_column(h, "contact_nodes:indenter"),
                     uy = history_column(h, "uy:mid"), step = history_column(h, "step"),
                     compressed = history_column(h, "wrinkled_fraction"),
-                    count = history_column(h, "wrinkle_count"),
+                    count = history_column(h, "wrinkle_peak_count"),
                     amplitude = history_column(h, "wrinkle_amplitude");
   // Wrinkles show at the first instability (the run switches branch there) or at the first step
   // with a wrinkled ring (amplitude above 0.1 t), whichever comes first: the mesh is not exactly
