@@ -1,6 +1,7 @@
 """Figures of a run directory: what `plisse plot DIR` draws (docs/output.md, "Figures").
 
 Usage: plot.py RUN_DIR OUT_DIR PLISSE_EXECUTABLE [--x COLUMN] [--y COLUMN ...]
+       plot.py RUN_DIR OUT_DIR PLISSE_EXECUTABLE --line AX,AY,AZ:BX,BY,BZ [--points N] [--step K]
 
 Reads RUN_DIR/history.csv, summary.json and the step files, and writes PNG files into OUT_DIR:
   forces.png           each force's largest component against the time and, with probes, against
@@ -15,7 +16,9 @@ Reads RUN_DIR/history.csv, summary.json and the step files, and writes PNG files
                        the axisymmetric mean shape, with the rings drawn (runs with rings), and
                        wrinkle_map_step_NNNN.png at every step where stability was lost
 With --y (one or more history columns) and --x (a column, default time) it draws only
-columns.png: each --y column against the --x column.
+columns.png: each --y column against the --x column. With --line it writes only line.csv and
+line.png: the fields of step K (default the last written) at N points (default 200) of the
+segment from A to B of the undeformed body (plisse_study.lines), against the distance from A.
 Axis labels take their units from the output reference (`plisse outputs history`).
 Exit status: 0 done; 2 RUN_DIR is not a run directory, its files are malformed or larger than a
 run writes (history.csv at most 256 MiB, summary.json 64 MiB, a step file's arrays no larger than
@@ -26,8 +29,9 @@ import os
 import re
 import subprocess
 import sys
+import tempfile
 
-from plisse_study import figures, runs
+from plisse_study import figures, lines, runs
 from plisse_study.figures import plt
 from matplotlib.ticker import MaxNLocator
 import numpy as np
@@ -39,7 +43,7 @@ MALFORMED = (ValueError, KeyError, TypeError, IndexError, AttributeError, Unicod
              MemoryError, OverflowError)
 
 FIGURES = ("forces.png", "moments.png", "pressure_volume.png", "newton.png", "wrinkles.png",
-           "wrinkle_map.png", "columns.png")
+           "wrinkle_map.png", "columns.png", "line.png", "line.csv")
 
 
 def fail(message, status=2):
@@ -161,6 +165,81 @@ def columns_figure(h, units, out, x, ys):
     save(fig, os.path.join(out, "columns.png"))
 
 
+def parse_line(text):
+    """The two end points of --line AX,AY,AZ:BX,BY,BZ."""
+    try:
+        ends = [[float(v) for v in end.split(",")] for end in text.split(":")]
+        if len(ends) != 2 or any(len(e) != 3 for e in ends) or not np.all(np.isfinite(ends)):
+            raise ValueError
+    except ValueError:
+        fail(f"--line {text}: give the two end points as AX,AY,AZ:BX,BY,BZ (six numbers, "
+             "coordinates of the undeformed body)")
+    if ends[0] == ends[1]:
+        fail(f"--line {text}: the two end points are the same point")
+    return ends
+
+
+def line_files(run, summary, units, out, ends, n, step):
+    """line.csv and line.png: the fields of a written step along the segment `ends`."""
+    steps = runs.written_steps(run, initial=True)
+    if not steps:
+        fail(f"{run}: no step file written (solution.pvd)")
+    chosen = [path for k, path in steps if k == step] if step is not None else [steps[-1][1]]
+    if not chosen:
+        fail(f"--step {step}: no such step file in {os.path.join(run, 'solution.pvd')} "
+             f"(written: {', '.join(str(k) for k, _ in steps[:20])}; output.every decides)")
+    vtu = chosen[0]
+    if not vtu.endswith(".vtu"):
+        fail(f"{vtu}: a distributed run's step is written in pieces; run plisse plot --line on a "
+             "step of a run on one process")
+    check_step_header(vtu, summary)
+    state = runs.read_state(vtu)
+    blocks = state.mesh.cells_dict
+    kind = next((k for k in ("tetra10", "tetra", "triangle6", "triangle") if k in blocks), None)
+    if kind is None:
+        fail(f"{vtu}: holds no tetrahedra or triangles")
+    cell_data = {name: arrays[0] for name, arrays in state.mesh.cell_data.items()}
+    # The reference positions: step 0's points (a run with output.deformed writes the current
+    # ones in the later steps).
+    reference = state.points
+    if steps[0][0] == 0 and steps[0][1] != vtu and steps[0][1].endswith(".vtu"):
+        check_step_header(steps[0][1], summary)
+        initial = runs.read_state(steps[0][1]).points
+        if initial.shape == reference.shape:
+            reference = initial
+    header, rows, outside = lines.sample(reference, blocks[kind], state.mesh.point_data,
+                                         cell_data, ends[0], ends[1], n)
+    if not rows:
+        fail(f"--line: none of its {n} points lies in the body (the undeformed body's "
+             "coordinates; a shell's points within half an element of its mid-surface)")
+    csv = os.path.join(out, "line.csv")
+    figures.refuse_link(csv)
+    fd, temporary = tempfile.mkstemp(prefix=".line.csv.tmp.", dir=out)
+    with os.fdopen(fd, "w") as f:
+        f.write(",".join(header) + "\n")
+        for row in rows:
+            f.write(",".join(f"{v:.10g}" for v in row) + "\n")
+    os.replace(temporary, csv)
+    print(csv)
+    data = np.array(rows)
+    column = {name: k for k, name in enumerate(header)}
+    panels = [[c for c in header if c.startswith("displacement_")],
+              [c for c in ("von_mises", "pressure", "thickness") if c in column]]
+    panels = [p for p in panels if p]
+    fig, axes = plt.subplots(len(panels), 1, figsize=(6.0, 3.0 * len(panels)), squeeze=False)
+    for ax, names in zip(axes[:, 0], panels):
+        for name in names:
+            ax.plot(data[:, 0], data[:, column[name]], marker=".", ms=3, label=label(units, name))
+        ax.set_xlabel("distance along the line s [mm]")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    step_text = runs.step_of(vtu)
+    axes[0, 0].set_title(f"step {step_text} along ({', '.join(f'{v:g}' for v in ends[0])}) to "
+                         f"({', '.join(f'{v:g}' for v in ends[1])})"
+                         + (f"; {outside} of {n} points outside the body" if outside else ""))
+    save(fig, os.path.join(out, "line.png"))
+
+
 def pressure_volume_figure(h, units, out):
     pairs = []
     for c in h:
@@ -276,17 +355,27 @@ def main():
     if len(sys.argv) < 4:
         fail(usage)
     run, out, plisse = sys.argv[1:4]
-    x, ys, rest = None, [], sys.argv[4:]
+    x, ys, line, n, step, rest = None, [], None, 200, None, sys.argv[4:]
     while rest:
-        if len(rest) < 2 or rest[0] not in ("--x", "--y"):
+        if len(rest) < 2 or rest[0] not in ("--x", "--y", "--line", "--points", "--step"):
             fail(usage)
         if rest[0] == "--x":
             x = rest[1]
-        else:
+        elif rest[0] == "--y":
             ys.append(rest[1])
+        elif rest[0] == "--line":
+            line = parse_line(rest[1])
+        elif rest[0] == "--points":
+            n = int(rest[1]) if rest[1].isdigit() else 0
+            if not 2 <= n <= 100000:
+                fail(f"--points {rest[1]}: give a whole number from 2 to 100000")
+        else:
+            step = int(rest[1]) if rest[1].isdigit() else fail(f"--step {rest[1]}: not a step number")
         rest = rest[2:]
     if x is not None and not ys:
         fail("--x needs at least one --y column to draw against it")
+    if line is not None and (ys or x is not None):
+        fail("--line and --x/--y draw different figures: give one or the other")
     if not os.path.isfile(os.path.join(run, "history.csv")):
         fail(f"{run}: not a run directory (no history.csv)")
     check_size(os.path.join(run, "history.csv"), MAX_HISTORY_BYTES)
@@ -315,6 +404,9 @@ def main():
     try:
         if ys:
             columns_figure(h, units, out, x or "time", ys)
+            return
+        if line is not None:
+            line_files(run, summary, units, out, line, n, step)
             return
         forces_figure(h, units, out)
         moments_figure(h, units, out)

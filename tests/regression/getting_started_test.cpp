@@ -2,12 +2,14 @@
 // meshes the geometry, and plisse runs the case to the numbers the page quotes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "output/history_writer.hpp"
 #include "support/run_plisse.hpp"
@@ -78,6 +80,33 @@ TEST(GettingStarted, TheCaseMeshesRunsAndGivesThePagesNumbers) {
   ASSERT_EQ(p.status, 0) << p.output;
   for (const char* figure : {"forces.png", "pressure_volume.png", "newton.png"})
     EXPECT_TRUE(fs::exists(dir / "run" / "plots" / figure)) << figure;
+  // The fields along the top face from the apex to the clamped rim, of the last step: at the
+  // apex the probe's displacement (the same quadratic interpolation, to the CSV's 10 digits), at
+  // the rim none.
+  const auto line = test::run_plisse_captured("plot '" + (dir / "run").string() +
+                                              "' --line 0,0,0.5:20,0,0.5 --points 41");
+  ASSERT_EQ(line.status, 0) << line.output;
+  std::ifstream csv(dir / "run" / "plots" / "line.csv");
+  std::string header, row, apex_row, rim_row;
+  std::getline(csv, header);
+  int rows = 0;
+  while (std::getline(csv, row)) {
+    if (rows++ == 0) apex_row = row;
+    rim_row = row;
+  }
+  EXPECT_EQ(rows, 41);
+  const auto field = [&](const std::string& text, const std::string& name) {
+    std::vector<std::string> names, values;
+    std::stringstream h(header), v(text);
+    for (std::string cell; std::getline(h, cell, ',');) names.push_back(cell);
+    for (std::string cell; std::getline(v, cell, ',');) values.push_back(cell);
+    const auto at = std::find(names.begin(), names.end(), name);
+    EXPECT_NE(at, names.end()) << name;
+    return at == names.end() ? 0.0 : std::stod(values[std::size_t(at - names.begin())]);
+  };
+  EXPECT_NEAR(field(apex_row, "displacement_z"), last("uz:apex"), 1e-8 * last("uz:apex"));
+  EXPECT_EQ(field(rim_row, "s"), 20.0);
+  EXPECT_EQ(field(rim_row, "displacement_z"), 0.0);
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 """Unit tests of scripts/plot.py (`plisse plot`): the figure of chosen columns (--x, --y) draws
 exactly those columns, with their units; moments.png draws each cap's largest moment component;
-a column the history lacks, or --x without --y, is refused with exit status 2."""
+a column the history lacks, or --x without --y, is refused with exit status 2; the fields along a
+line (plisse_study.lines, --line) are sampled exactly where the element's shape functions hold
+the field, and written to line.csv."""
 import os
 import subprocess
 import sys
@@ -11,7 +13,7 @@ import numpy as np
 
 import study_fixtures as fx
 import plot
-from plisse_study import runs
+from plisse_study import lines, runs
 
 UNITS_TABLE = """| column | unit | what |
 |---|---|---|
@@ -125,6 +127,140 @@ class CommandLineTest(unittest.TestCase):
         p = self.plot("--x", "uz:tip")
         self.assertEqual(p.returncode, 2)
         self.assertIn("--x needs at least one --y column", p.stderr)
+
+
+def kuhn_cube(size=2.0):
+    """The cube [0, size]^3 cut into 6 tetrahedra along its diagonal: points and corner lists."""
+    corners = np.array([[i, j, k] for k in (0, 1) for j in (0, 1) for i in (0, 1)], dtype=float)
+    index = {tuple(p): n for n, p in enumerate(corners)}
+    tets = []
+    for path in ((0, 1, 2), (0, 2, 1), (1, 0, 2), (1, 2, 0), (2, 0, 1), (2, 1, 0)):
+        p = np.zeros(3)
+        chain = [index[tuple(p)]]
+        for axis in path:
+            p = p.copy()
+            p[axis] = 1.0
+            chain.append(index[tuple(p)])
+        tets.append(chain)
+    return size * corners, np.array(tets)
+
+
+def quadratic(points, tets):
+    """The 10-node tetrahedra of `tets` (VTK order: corners, then the edges (0,1), (1,2), (0,2),
+    (0,3), (1,3), (2,3)), their edge nodes at the midpoints."""
+    points, cells, mid = list(points), [], {}
+    for t in tets:
+        row = list(t)
+        for i, j in lines.TETRA10_EDGES:
+            key = tuple(sorted((t[i], t[j])))
+            if key not in mid:
+                mid[key] = len(points)
+                points.append(0.5 * (points[t[i]] + points[t[j]]))
+            row.append(mid[key])
+        cells.append(row)
+    return np.array(points), np.array(cells)
+
+
+class LineTest(unittest.TestCase):
+    """plisse_study.lines: a linear field on 4-node tetrahedra and a quadratic one on 10-node
+    tetrahedra are sampled exactly (to round-off); a cell field gives the value of the cell
+    holding the point; points outside the body are left out; a shell's triangles take the points
+    near their plane."""
+
+    def test_linear_field_on_linear_tetrahedra(self):
+        X, tets = kuhn_cube()
+        A = np.array([[0.1, 0.2, -0.3], [0.0, 0.5, 0.1], [0.2, -0.1, 0.4]])
+        u = X @ A.T + np.array([1.0, -2.0, 0.5])
+        sigma = np.tile(np.arange(6.0), (len(tets), 1))
+        header, rows, outside = lines.sample(X, tets, {"displacement": u},
+                                             {"cauchy_stress": sigma}, [-1, 0.3, 0.7], [3, 1.7, 1.1], 41)
+        self.assertEqual(header[:7], ["s", "X", "Y", "Z", "displacement_x", "displacement_y",
+                                      "displacement_z"])
+        self.assertEqual(header[7:], [f"cauchy_stress_{c}" for c in ("xx", "yy", "zz", "xy", "yz", "xz")])
+        rows = np.array(rows)
+        # x = -1 + 4 t lies in [0, 2] for t in [1/4, 3/4]: 21 of the 41 points.
+        self.assertEqual(len(rows), 21)
+        self.assertEqual(outside, 20)
+        np.testing.assert_allclose(rows[:, 4:7], rows[:, 1:4] @ A.T + [1.0, -2.0, 0.5], atol=1e-12)
+        np.testing.assert_allclose(rows[:, 7:], np.tile(np.arange(6.0), (21, 1)))
+        np.testing.assert_allclose(rows[:, 0], np.linalg.norm(rows[:, 1:4] - [-1, 0.3, 0.7], axis=1),
+                                   atol=1e-12)
+
+    def test_quadratic_field_on_quadratic_tetrahedra(self):
+        X, tets = quadratic(*kuhn_cube())
+        f = X[:, 0] ** 2 - X[:, 1] * X[:, 2] + 3.0
+        _, rows, outside = lines.sample(X, tets, {"f": f}, {}, [0.1, 0.2, 0.3], [1.9, 1.7, 1.3], 25)
+        rows = np.array(rows)
+        self.assertEqual(outside, 0)
+        np.testing.assert_allclose(rows[:, 4], rows[:, 1] ** 2 - rows[:, 2] * rows[:, 3] + 3.0,
+                                   atol=1e-12)
+
+    def test_cell_field_is_the_holding_cells(self):
+        X, tets = kuhn_cube()
+        centre_x = X[tets].mean(axis=1)[:, 0]
+        _, rows, _ = lines.sample(X, tets, {}, {"c": centre_x}, [0.05, 1.0, 1.0], [1.95, 1.0, 1.0], 9)
+        for row in rows:
+            holding = [k for k, t in enumerate(tets) if lines.locate_in_tetrahedra(
+                X, tets[[k]], np.array(row[1:4])) is not None]
+            self.assertIn(row[4], centre_x[holding])
+
+    def test_shell_triangles_take_points_near_their_plane(self):
+        X = np.array([[0, 0, 0], [4, 0, 0], [4, 4, 0], [0, 4, 0]], dtype=float)
+        triangles = np.array([[0, 1, 2], [0, 2, 3]])
+        u = np.column_stack([X[:, 0], np.zeros(4), 0.5 * X[:, 1]])
+        _, rows, outside = lines.sample(X, triangles, {"displacement": u}, {"thickness": [0.2, 0.3]},
+                                        [0.25, 1.0, 0.01], [3.25, 1.0, 0.01], 7)
+        rows = np.array(rows)
+        self.assertEqual(outside, 0)
+        np.testing.assert_allclose(rows[:, 4], rows[:, 1], atol=1e-12)
+        np.testing.assert_allclose(rows[:, 6], 0.5 * rows[:, 2], atol=1e-12)
+        # Below the diagonal x = y the first triangle, above it the second.
+        np.testing.assert_array_equal(rows[:, 7], np.where(rows[:, 1] > 1.0, 0.2, 0.3))
+        _, far, outside = lines.sample(X, triangles, {"displacement": u}, {}, [0, 1, 5], [4, 1, 5], 5)
+        self.assertEqual((len(far), outside), (0, 5))
+
+
+class LineCommandTest(CommandLineTest):
+    """plot.py --line on a run of two written steps: line.csv of the last one (or --step's)."""
+
+    def setUp(self):
+        super().setUp()
+        X, tets = kuhn_cube()
+        states = [(X, tets, {"displacement": 0.0 * X}, {"von_mises": np.zeros(len(tets))}),
+                  (X, tets, {"displacement": 0.1 * X}, {"von_mises": np.ones(len(tets))})]
+        fx.write_steps(self.run, states)
+        fx.write_summary(self.run, {"steps": 4, "nodes": len(X)})
+
+    def read_line(self):
+        with open(os.path.join(self.out, "line.csv")) as f:
+            header = f.readline().strip().split(",")
+            return header, np.loadtxt(f, delimiter=",", ndmin=2)
+
+    def test_last_step_along_the_line(self):
+        p = self.plot("--line", "0,1,1:2,1,1", "--points", "11")
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertEqual(sorted(os.listdir(self.out)), ["line.csv", "line.png"])
+        header, data = self.read_line()
+        self.assertEqual(data.shape, (11, len(header)))
+        np.testing.assert_allclose(data[:, header.index("displacement_x")], 0.1 * data[:, 1],
+                                   atol=1e-12)
+        np.testing.assert_allclose(data[:, header.index("von_mises")], 1.0)
+
+    def test_chosen_step(self):
+        p = self.plot("--line", "0,1,1:2,1,1", "--points", "5", "--step", "0")
+        self.assertEqual(p.returncode, 0, p.stderr)
+        header, data = self.read_line()
+        np.testing.assert_allclose(data[:, header.index("von_mises")], 0.0)
+
+    def test_refusals(self):
+        for args, message in ((("--line", "0,1,1:2,1"), "six numbers"),
+                              (("--line", "1,1,1:1,1,1"), "the same point"),
+                              (("--line", "5,5,5:6,6,6"), "none of its 200 points lies in the body"),
+                              (("--line", "0,1,1:2,1,1", "--step", "3"), "--step 3: no such step"),
+                              (("--line", "0,1,1:2,1,1", "--y", "time"), "one or the other")):
+            p = self.plot(*args)
+            self.assertEqual(p.returncode, 2, args)
+            self.assertIn(message, p.stderr)
 
 
 if __name__ == "__main__":
