@@ -15,6 +15,8 @@ Reads RUN_DIR/history.csv, summary.json and the step files, and writes PNG files
   wrinkle_map.png      the last state's measured surface coloured by its normal deviation from
                        the axisymmetric mean shape, with the rings drawn (runs with rings), and
                        wrinkle_map_step_NNNN.png at every step where stability was lost
+  wrinkle_unrolled.png the same surface unrolled: arc length around the axis against the axial
+                       coordinate (a tube's wrinkles in one view)
 With --y (one or more history columns) and --x (a column, default time) it draws only
 columns.png: each --y column against the --x column. With --line it writes only line.csv and
 line.png: the fields of step K (default the last written) at N points (default 200) of the
@@ -43,7 +45,7 @@ MALFORMED = (ValueError, KeyError, TypeError, IndexError, AttributeError, Unicod
              MemoryError, OverflowError)
 
 FIGURES = ("forces.png", "moments.png", "pressure_volume.png", "newton.png", "wrinkles.png",
-           "wrinkle_map.png", "columns.png", "line.png", "line.csv")
+           "wrinkle_map.png", "wrinkle_unrolled.png", "columns.png", "line.png", "line.csv")
 
 
 def fail(message, status=2):
@@ -327,6 +329,13 @@ def wrinkle_maps(run, summary, out):
         check_step_header(vtu, summary)
         if figures.surface_figure(vtu, settings, path, title):
             print(path)
+    if files and files[0][1].endswith("wrinkle_map.png"):
+        unrolled = os.path.join(out, "wrinkle_unrolled.png")
+        figures.refuse_link(unrolled)
+        if figures.unrolled_figure(files[0][0], settings, unrolled,
+                                   f"t = {summary.get('final_time', '?')}: normal deviation, "
+                                   "unrolled"):
+            print(unrolled)
 
 
 def check_size(path, limit):

@@ -159,6 +159,64 @@ def surface_figure(vtu, settings, path, title):
     return True
 
 
+def unrolled_map(X, x, triangles, axis, center):
+    """A surface of revolution about `axis` through `center` unrolled: for each triangle (nodes of
+    X, the reference points) the reference arc length s = mean radius times azimuth and the axial
+    coordinate h of its nodes, and its normal deviation (the mean of its nodes' normal_deviation
+    of the deformed points x). Triangles across the azimuth's seam at +-pi are left out. Returns
+    (s, h, triangles, deviation per triangle)."""
+    a = np.zeros(3)
+    a[axis] = 1.0
+    r = X - center
+    h = r @ a
+    e_u, e_v = np.eye(3)[(axis + 1) % 3], np.eye(3)[(axis + 2) % 3]
+    azimuth = np.arctan2(r @ e_v, r @ e_u)
+    used = np.unique(triangles)
+    rho = np.linalg.norm(r[used] - np.outer(h[used], a), axis=1).mean()
+    dev = np.zeros(len(X))
+    dev[used] = normal_deviation(X[used], x[used], axis, center)
+    keep = np.ptp(azimuth[triangles], axis=1) < np.pi
+    triangles = triangles[keep]
+    return rho * azimuth, h, triangles, dev[triangles].mean(axis=1)
+
+
+def unrolled_figure(vtu, settings, path, title):
+    """The measured surface of `vtu` (a tube's or any surface of revolution's: the outer faces of
+    the tetrahedra, or a shell's triangles) unrolled about settings["axis"]: arc length around
+    against the axial coordinate, coloured by the normal deviation from the mean axisymmetric
+    shape (unrolled_map). False when the file has no cells or displacement."""
+    state = runs.read_state(vtu)
+    if "displacement" not in state.mesh.point_data:
+        return False
+    X, x = state.points, state.deformed
+    axis = runs.AXES.get(settings.get("axis", "y"), 1)
+    center = np.array(settings.get("center", [0.0, 0.0, 0.0]), dtype=float)
+    blocks = state.mesh.cells_dict
+    if state.corners is not None:
+        tris = outer_surface(X, state.corners, center)
+    elif "triangle" in blocks or "triangle6" in blocks:
+        tris = blocks.get("triangle", blocks.get("triangle6"))[:, :3]
+    else:
+        return False
+    if len(tris) == 0:
+        return False
+    s, h, tris, face_dev = unrolled_map(X, x, tris, axis, center)
+    if len(tris) == 0:
+        return False
+    limit = max(np.percentile(np.abs(face_dev), 99), 1e-9)
+    fig, ax = plt.subplots(figsize=(7.0, 4.2))
+    mesh = ax.tripcolor(s, h, tris, facecolors=face_dev, cmap="coolwarm", vmin=-limit,
+                        vmax=limit)
+    fig.colorbar(mesh, ax=ax, label="normal deviation [mm]")
+    names = "xyz"
+    ax.set_xlabel(f"arc length around the {names[axis]} axis (mean radius times azimuth) [mm]")
+    ax.set_ylabel(f"{names[axis]} [mm]")
+    ax.set_aspect("equal")
+    ax.set_title(title, fontsize=10)
+    save(fig, path, dpi=110)
+    return True
+
+
 def mirrored_quarter(x, z, values):
     """The points (x, z, value) of a quarter model's disc (mirrors x = 0 and z = 0) mirrored to
     the full disc, rounded to 1e-9 and without repeats (the nodes on the mirrors): an (n, 3)

@@ -77,6 +77,55 @@ class SurfaceTest(unittest.TestCase):
         self.assertFalse(os.path.exists(os.path.join(self.tmp.name, "no.png")))
 
 
+def shell_tube(radius=10.0, length=20.0, around=48, along=11):
+    """A closed shell tube about the y axis from y = 0 to `length`: points and triangles (two per
+    cell, the cells across the azimuth's seam included)."""
+    phi = np.linspace(0.0, 2.0 * np.pi, around, endpoint=False)
+    y = np.linspace(0.0, length, along)
+    points = np.array([[radius * np.cos(p), h, radius * np.sin(p)] for h in y for p in phi])
+    triangles = []
+    for j in range(along - 1):
+        for i in range(around):
+            a, b = j * around + i, j * around + (i + 1) % around
+            c, d = a + around, b + around
+            triangles += [[a, b, d], [a, d, c]]
+    return points, np.array(triangles)
+
+
+class UnrolledTest(unittest.TestCase):
+    """The unrolled map of a shell tube moved radially by a cos(6 phi): arc length from -pi R to
+    pi R, the seam's triangles left out, and each triangle's deviation the mean of a cos(6 phi) at
+    its nodes (the mean shape of each ring is the circle of radius R)."""
+
+    def test_radial_waves_unrolled(self):
+        points, triangles = shell_tube()
+        phi = np.arctan2(points[:, 2], points[:, 0])
+        a = 0.1
+        u = a * np.cos(6 * phi)[:, None] * np.column_stack([np.cos(phi), 0 * phi, np.sin(phi)])
+        center = np.array([0.0, 10.0, 0.0])
+        s, h, kept, dev = figures.unrolled_map(points, points + u, triangles, 1, center)
+        self.assertEqual(len(kept), len(triangles) - 2 * 10)
+        np.testing.assert_allclose([s.min(), s.max()], [-np.pi * 10.0, np.pi * 10.0 * 46 / 48],
+                                   rtol=1e-12)
+        np.testing.assert_allclose(h, points[:, 1] - 10.0, atol=1e-12)
+        np.testing.assert_allclose(dev, (a * np.cos(6 * phi))[kept].mean(axis=1), atol=1e-12)
+
+    def test_unrolled_figure_written(self):
+        tmp = tempfile.TemporaryDirectory()
+        points, triangles = shell_tube()
+        phi = np.arctan2(points[:, 2], points[:, 0])
+        u = 0.1 * np.cos(6 * phi)[:, None] * np.column_stack([np.cos(phi), 0 * phi, np.sin(phi)])
+        vtu = os.path.join(tmp.name, "step_0001.vtu")
+        fx.write_vtu(vtu, points, triangles, {"displacement": u}, kind="triangle")
+        png = os.path.join(tmp.name, "unrolled.png")
+        self.assertTrue(figures.unrolled_figure(vtu, {"axis": "y", "center": [0, 10, 0]}, png,
+                                                "t"))
+        with open(png, "rb") as f:
+            self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n")
+        self.assertEqual(figures.plt.get_fignums(), [])
+        tmp.cleanup()
+
+
 class DiscTest(unittest.TestCase):
     def test_mirrored_quarter(self):
         # (0, 0) lies on both mirrors, (1, 0) and (0, 1) on one: 1 + 2 + 2 + 4 = 9 points.
