@@ -45,7 +45,8 @@ MALFORMED = (ValueError, KeyError, TypeError, IndexError, AttributeError, Unicod
              MemoryError, OverflowError)
 
 FIGURES = ("forces.png", "moments.png", "pressure_volume.png", "newton.png", "wrinkles.png",
-           "wrinkle_map.png", "wrinkle_unrolled.png", "columns.png", "line.png", "line.csv")
+           "wrinkle_map.png", "wrinkle_unrolled.png", "columns.png", "line.png", "line.csv",
+           "line_spectrum.csv")
 
 
 def fail(message, status=2):
@@ -225,6 +226,28 @@ def line_files(run, summary, units, out, ends, n, step):
     print(csv)
     data = np.array(rows)
     column = {name: k for k, name in enumerate(header)}
+    # The waves along the line, when every point lies in the body (equal spacing).
+    measured = None
+    if not outside and "displacement_x" in column:
+        deformed = data[:, 1:4] + data[:, [column[f"displacement_{c}"] for c in "xyz"]]
+        measured = lines.waves(data[:, 0], deformed)
+    if measured:
+        count, wavelength, amplitude, peak, spectrum = measured
+        if peak:
+            print(f"waves along the line: {count} (wavelength {wavelength:.6g} mm), amplitude "
+                  f"{amplitude:.6g} mm peak to peak")
+        else:
+            print(f"waves along the line: none stands out of the line's smooth shape (the "
+                  f"largest of 3 or more, {count}, is {amplitude:.3g} mm peak to peak)")
+        spectrum_csv = os.path.join(out, "line_spectrum.csv")
+        figures.refuse_link(spectrum_csv)
+        fd, temporary = tempfile.mkstemp(prefix=".line_spectrum.csv.tmp.", dir=out)
+        with os.fdopen(fd, "w") as f:
+            f.write("waves,wavelength,amplitude\n")
+            for k, length, a in spectrum:
+                f.write(f"{k},{length:.10g},{a:.10g}\n")
+        os.replace(temporary, spectrum_csv)
+        print(spectrum_csv)
     panels = [[c for c in header if c.startswith("displacement_")],
               [c for c in ("von_mises", "pressure", "thickness") if c in column]]
     panels = [p for p in panels if p]

@@ -118,3 +118,32 @@ def sample(points, cells, point_data, cell_data, a, b, n):
             row += list(np.atleast_1d(v[c]))
         rows.append(row)
     return header, rows, outside
+
+
+def waves(s, x, min_count=3, peak_ratio=2.0):
+    """The waves along a sampled path: the deformed points x (n, 3) at the equally spaced
+    distances s along it, less a quadratic fit in s of each coordinate (the path's own bending),
+    projected on their principal direction, give a deviation w(s); its discrete Fourier series
+    over the path's length L (the last sample closes the period) has amplitudes A_k, half the peak
+    to peak of harmonic k, k waves along the path, wavelength L / k. Returns (count, wavelength,
+    amplitude, peak) of the largest harmonic with k >= min_count, the amplitude peak to peak
+    (2 A_k), peak when A_k is more than `peak_ratio` times both its neighbours' A_(k-1), A_(k+1)
+    (waves that stand out of the path's smooth shape, whose spectrum falls steadily), and the
+    spectrum as rows (k, L / k, A_k); None when fewer than 2 (min_count + 1) samples."""
+    s, x = np.asarray(s, dtype=float), np.asarray(x, dtype=float)
+    n = len(s) - 1
+    if n < 2 * (min_count + 1):
+        return None
+    fit = np.column_stack([np.polyval(np.polyfit(s, x[:, c], 2), s) for c in range(3)])
+    d = x - fit
+    _, _, vt = np.linalg.svd(d - d.mean(axis=0), full_matrices=False)
+    w = d[:n] @ vt[0]
+    A = 2.0 * np.abs(np.fft.rfft(w)) / n
+    length = s[-1] - s[0]
+    ks = np.arange(min_count, n // 2)
+    if len(ks) == 0:
+        return None
+    k = int(ks[np.argmax(A[ks])])
+    peak = bool(A[k] > peak_ratio * max(A[k - 1], A[k + 1]))
+    spectrum = [(int(j), length / j, float(A[j])) for j in range(1, n // 2)]
+    return k, length / k, 2.0 * float(A[k]), peak, spectrum
