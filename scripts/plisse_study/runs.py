@@ -158,15 +158,78 @@ def cauchy_tensors(components):
     return np.asarray(components)[:, [0, 3, 5, 3, 1, 4, 5, 4, 2]].reshape(-1, 3, 3)
 
 
+VTU_TYPES = {"Float64": "<f8", "Float32": "<f4", "Int64": "<i8", "Int32": "<i4", "UInt8": "u1",
+             "UInt64": "<u8", "UInt32": "<u4"}
+VTK_CELLS = {5: "triangle", 10: "tetra", 22: "triangle6", 24: "tetra10"}
+
+
+def read_raw_vtu(path):
+    """A step file as plisse writes it (raw appended data, UInt64 headers, zlib-compressed blocks
+    or none, one cell type) as a meshio.Mesh; None for any other layout. meshio's own reader of raw
+    appended data mixes up arrays when an array's new offset equals another's old one (a run's
+    step 6 had its velocity read as its Cauchy stress), so plisse's files are read here."""
+    import zlib
+
+    import meshio
+
+    with open(path, "rb") as f:
+        raw = f.read()
+    start = raw.find(b"<AppendedData")
+    if start < 0:
+        return None
+    begin = raw.index(b"_", raw.index(b">", start)) + 1
+    root = ET.fromstring(raw[:start] + b"</VTKFile>")
+    if root.get("header_type", "UInt32") != "UInt64" or root.get("byte_order") != "LittleEndian":
+        return None
+    compressed = root.get("compressor") == "vtkZLibDataCompressor"
+    if root.get("compressor") not in (None, "vtkZLibDataCompressor"):
+        return None
+
+    def array(tag):
+        if tag.get("format") != "appended" or tag.get("type") not in VTU_TYPES:
+            raise ValueError(f"{path}: array {tag.get('Name')} is not raw appended data")
+        at = begin + int(tag.get("offset"))
+        if compressed:
+            blocks = int(np.frombuffer(raw, "<u8", 1, at)[0])
+            sizes = np.frombuffer(raw, "<u8", blocks, at + 24)
+            at += 8 * (3 + blocks)
+            data = b""
+            for size in sizes:
+                data += zlib.decompress(raw[at:at + int(size)])
+                at += int(size)
+        else:
+            size = int(np.frombuffer(raw, "<u8", 1, at)[0])
+            data = raw[at + 8:at + 8 + size]
+        values = np.frombuffer(data, VTU_TYPES[tag.get("type")])
+        n = tag.get("NumberOfComponents")  # as meshio: (n, k) when given, 1 included
+        return values if n is None else values.reshape(-1, int(n))
+
+    piece = root.find("UnstructuredGrid/Piece")
+    fields = {}
+    for kind in ("PointData", "CellData"):
+        fields[kind] = {t.get("Name"): array(t) for t in piece.find(kind) or []}
+    points = array(piece.find("Points/DataArray"))
+    cell_arrays = {t.get("Name"): array(t) for t in piece.find("Cells")}
+    types = np.unique(cell_arrays["types"])
+    if len(types) != 1 or int(types[0]) not in VTK_CELLS:
+        return None
+    offsets = cell_arrays["offsets"]
+    width = int(offsets[0])
+    cells = cell_arrays["connectivity"].reshape(-1, width)
+    return meshio.Mesh(points, [(VTK_CELLS[int(types[0])], cells)], point_data=fields["PointData"],
+                       cell_data={k: [v] for k, v in fields["CellData"].items()})
+
+
 class State:
-    """One written step read with meshio: reference points, displacement, the tetrahedra (their
-    corner nodes in `corners`, all their nodes in `cells`), point and cell fields."""
+    """One written step: reference points, displacement, the tetrahedra (their corner nodes in
+    `corners`, all their nodes in `cells`), point and cell fields (read_raw_vtu for plisse's own
+    files, meshio for others)."""
 
     def __init__(self, path):
         import meshio
 
         self.path = path
-        self.mesh = meshio.read(path)
+        self.mesh = read_raw_vtu(path) or meshio.read(path)
         self.points = self.mesh.points
         cells = self.mesh.cells_dict
         self.cells = cells.get("tetra10", cells.get("tetra"))

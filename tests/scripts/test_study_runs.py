@@ -151,5 +151,43 @@ class StepsAndStatesTest(unittest.TestCase):
         np.testing.assert_array_equal(s.corners, [[0, 1, 2, 3]])
 
 
+
+class RawVtuTest(unittest.TestCase):
+    """plisse's own step files (raw appended, zlib) are read by runs.read_raw_vtu. The file in
+    tests/data/vtu is the last step of examples/cube-tension-mooney-rivlin.yaml with c2 = 0.1 MPa
+    (27 nodes, 48 tetrahedra, stretch 5), whose arrays Debian's meshio 1.x mixes up (the velocity
+    read as the Cauchy stress: an array's new offset equals another's old one). Every element holds
+    the homogeneous stress, the closed form 2 c1 (l^2 - 1/l) - 2 c2 (1/l^2 - l) = 10.912 MPa along
+    z and 0 across, to 1e-9 of it (the run's Newton tolerance is 1e-10)."""
+
+    def test_plisse_step_file(self):
+        path = os.path.join(os.path.dirname(fx.SCRIPTS), "tests", "data", "vtu",
+                            "cube-mooney-rivlin-step-6.vtu")
+        mesh = runs.read_raw_vtu(path)
+        self.assertEqual(list(mesh.cells_dict), ["tetra"])
+        self.assertEqual(mesh.cells_dict["tetra"].shape, (48, 4))
+        self.assertEqual(mesh.points.shape, (27, 3))
+        self.assertEqual(mesh.point_data["velocity"].shape, (27, 3))
+        self.assertEqual(mesh.cell_data["von_mises"][0].shape, (48, 1))
+        sigma = mesh.cell_data["cauchy_stress"][0]
+        l, c1, c2 = 5.0, 0.2, 0.1
+        szz = 2 * c1 * (l * l - 1 / l) - 2 * c2 * (1 / l**2 - l)
+        self.assertAlmostEqual(szz, 10.912, places=12)
+        np.testing.assert_allclose(sigma[:, 2], szz, rtol=1e-9)
+        np.testing.assert_allclose(sigma[:, [0, 1, 3, 4, 5]], 0.0, atol=1e-9 * szz)
+        # The top face moved 20 mm up: u_z = 4 z at every node.
+        np.testing.assert_allclose(mesh.point_data["displacement"][:, 2], 4 * mesh.points[:, 2],
+                                   atol=1e-9)
+        self.assertEqual(runs.read_state(path).cells.shape, (48, 4))
+
+    def test_other_layouts_go_to_meshio(self):
+        tmp = tempfile.TemporaryDirectory()
+        path = os.path.join(tmp.name, "step_0001.vtu")
+        points, tets, _ = fx.shell_octant(10.0, 1.0)
+        fx.write_vtu(path, points, tets, {"displacement": 0.5 * points})
+        self.assertIsNone(runs.read_raw_vtu(path))  # meshio writes base64
+        np.testing.assert_allclose(runs.read_state(path).displacement, 0.5 * points)
+        tmp.cleanup()
+
 if __name__ == "__main__":
     unittest.main()
