@@ -10,6 +10,7 @@
 #include <optional>
 #include <set>
 
+#include "mesh/bounding_box.hpp"
 #include "mesh/topology.hpp"
 #include "physics/body_force.hpp"
 #include "physics/boundary_condition.hpp"
@@ -417,12 +418,8 @@ std::vector<InputError> setup_warnings(const Case& c, const Mesh* mesh) {
   if (mesh && !mesh->nodes.empty()) {
     // A prescribed motion or a die far smaller than the body: most often a length in other
     // units than the mesh's (metres typed into a case meshed in millimetres).
-    Vec3d low = mesh->nodes.front(), high = mesh->nodes.front();
-    for (const Vec3d& x : mesh->nodes) {
-      low = low.cwiseMin(x);
-      high = high.cwiseMax(x);
-    }
-    const double size = (high - low).norm();
+    const BoundingBox box = bounding_box(mesh->nodes);
+    const double size = (box.high - box.low).norm();
     const auto length = [&](double value, const InputPlace& item, const std::string& key,
                             const std::string& what) {
       if (value == 0.0 || !(std::abs(value) < kUnitsLengthFactor * size)) return;

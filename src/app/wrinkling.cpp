@@ -8,6 +8,7 @@
 
 #include "analysis/surface_columns.hpp"
 #include "core/error.hpp"
+#include "mesh/bounding_box.hpp"
 #include "mesh/imperfection.hpp"
 #include "mesh/topology.hpp"
 #include "output/atomic_file.hpp"
@@ -107,12 +108,8 @@ namespace {
 /// not a coordinate plane are left to the boundary condition's own check.
 void snap_to_symmetry_planes(const Case& c, Mesh& mesh) {
   if (mesh.nodes.empty()) return;
-  Vec3d low = mesh.nodes.front(), high = low;
-  for (const Vec3d& x : mesh.nodes) {
-    low = low.cwiseMin(x);
-    high = high.cwiseMax(x);
-  }
-  const double rounding = 1e-9 * std::max((high - low).maxCoeff(), 1e-300);
+  const BoundingBox box = bounding_box(mesh.nodes);
+  const double rounding = 1e-9 * std::max((box.high - box.low).maxCoeff(), 1e-300);
   for (const std::string& surface : mirror_surfaces(c.terms)) {
     int axis = -1;
     std::set<int> nodes;

@@ -4,12 +4,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <set>
 #include <string>
 #include <utility>
 
+#include "mesh/bounding_box.hpp"
 #include "mesh/shell_surface.hpp"
 #include "mesh/topology.hpp"
 
@@ -17,11 +17,8 @@ namespace plisse {
 
 int mirror_planes(const std::vector<std::string>& symmetry_surfaces, const Mesh& mesh, double tol) {
   // The body's extent along each axis, and the levels of the symmetry planes of a solid.
-  Vec3d low = Vec3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
-  for (const Vec3d& x : mesh.nodes) {
-    low = low.cwiseMin(x);
-    high = high.cwiseMax(x);
-  }
+  const BoundingBox box = bounding_box(mesh.nodes);
+  const Vec3d &low = box.low, &high = box.high;
   const double size = std::max({low.cwiseAbs().maxCoeff(), high.cwiseAbs().maxCoeff(), 1.0});
   std::array<std::vector<double>, 3> levels;
   for (const std::string& surface : symmetry_surfaces) {
