@@ -355,13 +355,13 @@ void finish_run(const RunContext& run, const SteppingResult& result, const Start
   }
   if (!result.completed) {
     out.log().error(result.failure);
-    if (result.smallest_step) out.log().error(limit_load_text(last, recorder.last_loads()));
+    const std::string limit =
+        result.smallest_step ? limit_load_text(last, recorder.last_loads()) : std::string();
+    if (!limit.empty()) out.log().error(limit);
     out.flush_log();
     throw SolverError(result.failure + " (last converged step " + std::to_string(last.step) +
                       " at t = " + std::to_string(last.time) + " is written in " +
-                      directory.string() + ")" +
-                      (result.smallest_step ? "\n" + limit_load_text(last, recorder.last_loads())
-                                            : std::string()));
+                      directory.string() + ")" + (limit.empty() ? std::string() : "\n" + limit));
   }
   out.flush_log();
 }
