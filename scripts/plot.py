@@ -182,6 +182,20 @@ def parse_line(text):
     return ends
 
 
+def write_csv(path, header, rows):
+    """A CSV file of `header` and `rows` (numbers, 10 digits), written to a temporary beside `path`
+    and renamed over it; a `path` that is a symbolic link raises LinkRefused."""
+    figures.refuse_link(path)
+    fd, temporary = tempfile.mkstemp(prefix=f".{os.path.basename(path)}.tmp.",
+                                     dir=os.path.dirname(path) or ".")
+    with os.fdopen(fd, "w") as f:
+        f.write(",".join(header) + "\n")
+        for row in rows:
+            f.write(",".join(f"{v:.10g}" for v in row) + "\n")
+    os.replace(temporary, path)
+    print(path)
+
+
 def line_files(run, summary, units, out, ends, n, step):
     """line.csv and line.png: the fields of a written step along the segment `ends`."""
     steps = runs.written_steps(run, initial=True)
@@ -215,15 +229,7 @@ def line_files(run, summary, units, out, ends, n, step):
     if not rows:
         fail(f"--line: none of its {n} points lies in the body (the undeformed body's "
              "coordinates; a shell's points within half an element of its mid-surface)")
-    csv = os.path.join(out, "line.csv")
-    figures.refuse_link(csv)
-    fd, temporary = tempfile.mkstemp(prefix=".line.csv.tmp.", dir=out)
-    with os.fdopen(fd, "w") as f:
-        f.write(",".join(header) + "\n")
-        for row in rows:
-            f.write(",".join(f"{v:.10g}" for v in row) + "\n")
-    os.replace(temporary, csv)
-    print(csv)
+    write_csv(os.path.join(out, "line.csv"), header, rows)
     data = np.array(rows)
     column = {name: k for k, name in enumerate(header)}
     # The waves along the line, when every point lies in the body (equal spacing).
@@ -239,15 +245,8 @@ def line_files(run, summary, units, out, ends, n, step):
         else:
             print(f"waves along the line: none stands out of the line's smooth shape (the "
                   f"largest of 3 or more, {count}, is {amplitude:.3g} mm peak to peak)")
-        spectrum_csv = os.path.join(out, "line_spectrum.csv")
-        figures.refuse_link(spectrum_csv)
-        fd, temporary = tempfile.mkstemp(prefix=".line_spectrum.csv.tmp.", dir=out)
-        with os.fdopen(fd, "w") as f:
-            f.write("waves,wavelength,amplitude\n")
-            for k, length, a in spectrum:
-                f.write(f"{k},{length:.10g},{a:.10g}\n")
-        os.replace(temporary, spectrum_csv)
-        print(spectrum_csv)
+        write_csv(os.path.join(out, "line_spectrum.csv"), ["waves", "wavelength", "amplitude"],
+                  spectrum)
     panels = [[c for c in header if c.startswith("displacement_")],
               [c for c in ("von_mises", "pressure", "thickness") if c in column]]
     panels = [p for p in panels if p]
