@@ -12,6 +12,7 @@
 
 #include "output/history_writer.hpp"
 #include "output/json_file.hpp"
+#include "support/run_case.hpp"
 
 namespace plisse::test {
 
@@ -61,10 +62,7 @@ inline void expect_newton_as_printed(std::size_t steps, double iterations,
 /// tables of the cubes count these).
 inline void expect_newton_as_printed(const HistoryTable& h, const nlohmann::json& row,
                                      const std::string& what) {
-  std::size_t it = h.columns.size();
-  for (std::size_t k = 0; k < h.columns.size(); ++k)
-    if (h.columns[k] == "newton_iterations") it = k;
-  ASSERT_LT(it, h.columns.size()) << "no column newton_iterations";
+  const std::size_t it = history_column(h, "newton_iterations");  // a failure when missing
   double total = 0.0;
   for (const auto& r : h.rows) total += r[it];
   expect_newton_as_printed(h.rows.size(), total, row, what);
