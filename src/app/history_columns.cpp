@@ -106,16 +106,21 @@ void HistoryColumns::add_reactions(const Case& c, const Mesh& mesh) {
     // the images (a symmetry condition's reaction is internal to the whole body).
     const int cut = entry.kind->mirror ? 0 : planes_reached(mesh, *nodes, mirrors);
     std::vector<std::string> names = xyz_columns("force_", entry.name);
-    if (cut != 0) {
-      const std::vector<std::string> whole = xyz_columns("full_force_", entry.name);
-      names.insert(names.end(), whole.begin(), whole.end());
-    }
+    const std::vector<std::string> moments = xyz_columns("moment_", entry.name);
+    names.insert(names.end(), moments.begin(), moments.end());
+    if (cut != 0)
+      for (const char* stem : {"full_force_", "full_moment_"}) {
+        const std::vector<std::string> whole = xyz_columns(stem, entry.name);
+        names.insert(names.end(), whole.begin(), whole.end());
+      }
     add(names, [nodes, cut](const StepRecord& r, std::vector<double>& row) {
       const Vec3d f = r.model.node_reaction(*nodes);
-      for (int k = 0; k < 3; ++k) row.push_back(f[k]);
+      const Vec3d m = r.model.node_reaction_moment(*nodes);
+      for (const Vec3d& v : {f, m})
+        for (int k = 0; k < 3; ++k) row.push_back(v[k]);
       if (cut == 0) return;
-      const Vec3d whole = whole_body_force(f, cut);
-      for (int k = 0; k < 3; ++k) row.push_back(whole[k]);
+      for (const Vec3d& v : {whole_body_force(f, cut), whole_body_moment(m, cut)})
+        for (int k = 0; k < 3; ++k) row.push_back(v[k]);
     });
   }
   for (const Region& region : c.regions) {

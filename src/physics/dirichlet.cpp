@@ -115,6 +115,16 @@ Vec3d whole_body_force(Vec3d f, int cut) {
   return f;
 }
 
+Vec3d whole_body_moment(Vec3d m, int cut) {
+  for (int k = 0; k < 3; ++k) {
+    if (!(cut & (1 << k))) continue;
+    const double normal = 2.0 * m[k];
+    m.setZero();
+    m[k] = normal;
+  }
+  return m;
+}
+
 int coordinate_plane_axis(const Mesh& mesh, const std::vector<int>& triangles, double tol) {
   int axis = -1;
   for (int t : triangles) {

@@ -60,6 +60,11 @@ int shell_edge_plane_axis(const Mesh& mesh, const std::vector<int>& edges, doubl
 /// its mirror images add up, so the component normal to each such plane cancels and every other
 /// component doubles, once per plane.
 Vec3d whole_body_force(Vec3d f, int cut);
+/// The same for a moment about the origin `m` (the mirror planes pass through it): a mirror image
+/// of a moment is the moment reflected and turned round (an axial vector), so the images add up
+/// to twice the component normal to the plane, and the others cancel, once per plane (two planes
+/// leave nothing).
+Vec3d whole_body_moment(Vec3d m, int cut);
 
 /// The constrained components of a model's conditions, gathered one condition at a time, one per
 /// (node, component). A node where two conditions prescribe different motions of the same

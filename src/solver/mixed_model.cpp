@@ -361,6 +361,19 @@ Vec3d MixedModel::node_reaction(const std::set<int>& nodes) const {
   return force;
 }
 
+Vec3d MixedModel::node_reaction_moment(const std::set<int>& nodes) const {
+  Vec3d moment = Vec3d::Zero();
+  for (int v : nodes) {
+    const Vec3d f(local_reaction(v, 0), local_reaction(v, 1), local_reaction(v, 2));
+    if (f.isZero(0.0)) continue;  // free, or not this rank's
+    Vec3d x = mesh_.nodes[static_cast<std::size_t>(v)];
+    for (int k = 0; k < 3; ++k) x[k] += state_[static_cast<std::size_t>(DofMap::dof(v, k))];
+    moment += x.cross(f);
+  }
+  distribution_->sum_over_ranks(moment.data(), 3);
+  return moment;
+}
+
 std::vector<double> MixedModel::nodal_reactions() const {
   std::vector<double> reactions(3 * static_cast<std::size_t>(mesh_.n_nodes()), 0.0);
   for (int v = 0; v < mesh_.n_nodes(); ++v)

@@ -212,6 +212,9 @@ class MixedModel {
   Vec3d reaction(const std::vector<int>& triangles) const;
   /// The same on the constrained dofs of `nodes` [N]. Collective.
   Vec3d node_reaction(const std::set<int>& nodes) const;
+  /// The moment of those reactions about the origin [N mm]: the sum over `nodes` of x × R, x the
+  /// node's current position and R its reaction. Collective.
+  Vec3d node_reaction_moment(const std::set<int>& nodes) const;
 
   /// The reaction force at every node [N], 3 values a node (x, y, z): the residual on its
   /// constrained components from the last assemble_residual, zero on its free ones. Collective.

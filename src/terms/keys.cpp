@@ -116,6 +116,14 @@ std::vector<OutputEntry> reaction_outputs(bool whole) {
        "octant pulls it, negative along the plane's outward normal; likewise y, z)"},
       {"force_y:<boundary>", "N", "`boundary[]` with a `name`", "y component of the reaction"},
       {"force_z:<boundary>", "N", "`boundary[]` with a `name`", "z component of the reaction"},
+      {"moment_x:<boundary>", "N mm", "`boundary[]` with a `name`",
+       "x component of the reaction's moment about the origin: the sum over the condition's "
+       "nodes of x × R, x the node's current position and R its reaction (a clamp's bending "
+       "moment when the origin lies on the clamped section; likewise y, z)"},
+      {"moment_y:<boundary>", "N mm", "`boundary[]` with a `name`",
+       "y component of the reaction's moment about the origin"},
+      {"moment_z:<boundary>", "N mm", "`boundary[]` with a `name`",
+       "z component of the reaction's moment about the origin"},
   };
   if (!whole) return out;
   out.insert(out.end(),
@@ -129,6 +137,14 @@ std::vector<OutputEntry> reaction_outputs(bool whole) {
                   "y component of the whole body's reaction"},
                  {"full_force_z:<boundary>", "N", "as `full_force_x:<boundary>`",
                   "z component of the whole body's reaction"},
+                 {"full_moment_x:<boundary>", "N mm", "as `full_force_x:<boundary>`",
+                  "x component of the whole body's reaction moment about the origin: the mirror "
+                  "images summed, which leaves twice the component normal to the plane (likewise "
+                  "y, z; see Symmetry)"},
+                 {"full_moment_y:<boundary>", "N mm", "as `full_force_x:<boundary>`",
+                  "y component of the whole body's reaction moment"},
+                 {"full_moment_z:<boundary>", "N mm", "as `full_force_x:<boundary>`",
+                  "z component of the whole body's reaction moment"},
              });
   return out;
 }

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "mesh/box_mesh.hpp"
 #include "mesh/generate.hpp"
@@ -115,6 +117,34 @@ TEST(Symmetry, ASliceBetweenSymmetryPlanesMirrorsNothing) {
   EXPECT_EQ(whole_body_force(Vec3d(1.0, 2.0, 3.0),
                              planes_reached(mesh, mesh.surface_tags.at("right"), with_base)),
             Vec3d(2.0, 0.0, 6.0));
+}
+
+// A force f at x and its mirror images (f and x reflected in each plane of `cut`) have the
+// moment about the origin that whole_body_moment gives from the modelled part's x × f.
+TEST(Symmetry, WholeBodyMomentIsTheSumOfTheMirrorImagesMoments) {
+  const Vec3d x(0.3, -1.7, 2.2), f(1.1, 0.4, -0.9);
+  for (int cut = 0; cut < 8; ++cut) {
+    std::vector<std::pair<Vec3d, Vec3d>> images = {{x, f}};
+    for (int k = 0; k < 3; ++k) {
+      if (!(cut & (1 << k))) continue;
+      const std::size_t n = images.size();
+      for (std::size_t i = 0; i < n; ++i) {
+        auto [xi, fi] = images[i];
+        xi[k] = -xi[k];
+        fi[k] = -fi[k];
+        images.emplace_back(xi, fi);
+      }
+    }
+    Vec3d sum = Vec3d::Zero(), force = Vec3d::Zero();
+    for (const auto& [xi, fi] : images) sum += xi.cross(fi), force += fi;
+    const Vec3d m = whole_body_moment(x.cross(f), cut), whole = whole_body_force(f, cut);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(m[k], sum[k], 1e-14) << "cut " << cut << " axis " << k;
+      EXPECT_NEAR(whole[k], force[k], 1e-14) << "cut " << cut << " axis " << k;
+    }
+  }
+  EXPECT_EQ(whole_body_moment(Vec3d(1.0, 2.0, 3.0), 4), Vec3d(0.0, 0.0, 6.0));
+  EXPECT_EQ(whole_body_moment(Vec3d(1.0, 2.0, 3.0), 1 | 4), Vec3d::Zero());
 }
 
 TEST(PressureLoad, EnclosedVolumeAndTheWholeBodysCountOnlyMirrorPlanes) {

@@ -151,6 +151,8 @@ TEST(PointForce, ClampedBaseCarriesTheForceAndTheLogNamesTheNode) {
                                "loads:\n"
                                "  - {type: point-force, name: tip, point: [2.5, 2.6, 5.1],"
                                " force: [0.2, -0.1, -0.5]}\n"
+                               "probes: [{name: node, point: [2.5, 2.5, 5.0],"
+                               " fields: [position]}]\n"
                                "solver: {steps: 2, newton: {rtol: 1.0e-12, atol: 1.0e-14}}\n");
     ASSERT_FALSE(h.rows.empty());
     const auto& last = h.rows.back();
@@ -162,6 +164,16 @@ TEST(PointForce, ClampedBaseCarriesTheForceAndTheLogNamesTheNode) {
           << element << " component " << axes[i];
       EXPECT_DOUBLE_EQ(last[history_column(h, std::string("load_") + axes[i] + ":tip")], F[i]);
     }
+    // And its moment about the origin balances the force's, which acts at the loaded node's
+    // current position (the probe on that node): moment_<axis>:base = -(x × F).
+    const Vec3d x(last[history_column(h, "x:node")], last[history_column(h, "y:node")],
+                  last[history_column(h, "z:node")]);
+    EXPECT_GT((x - Vec3d(2.5, 2.5, 5.0)).norm(), 0.1) << "the node should move";
+    const Vec3d moment = -x.cross(Vec3d(F[0], F[1], F[2]));
+    for (int i = 0; i < 3; ++i)
+      EXPECT_NEAR(last[history_column(h, std::string("moment_") + axes[i] + ":base")], moment[i],
+                  1e-9)
+          << element << " component " << axes[i];
     std::ifstream log(dir / "run" / "log.txt");
     const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
     EXPECT_NE(text.find("load 'tip': on node"), std::string::npos) << text;
