@@ -316,9 +316,11 @@ std::string limit_load_text(const StepInfo& last,
   }
   return out +
          ". If the body collapses there (its stiffness along the load is gone), this is its "
-         "limit load; under load control nothing follows it further: prescribe a displacement "
+         "limit load. Under load control nothing follows it further: prescribe a displacement "
          "instead (a cap's or a die's motion, a displacement condition, a cavity's volume), "
-         "which passes the maximum";
+         "which passes the maximum. A run already driven by a motion has met a snap (the path "
+         "turns back in that motion too, or jumps to another branch), which no step size "
+         "follows: the steps up to it are its quasi-static path";
 }
 
 /// The recorder's last files and summary, the log's closing line, and the outcome: returns when
