@@ -78,9 +78,15 @@ TEST(HistoryColumns, NamesAndValuesComeFromOneTableInTheContractOrder) {
                                           "force_x:pull",
                                           "force_y:pull",
                                           "force_z:pull",
+                                          "moment_x:pull",
+                                          "moment_y:pull",
+                                          "moment_z:pull",
                                           "full_force_x:pull",
                                           "full_force_y:pull",
                                           "full_force_z:pull",
+                                          "full_moment_x:pull",
+                                          "full_moment_y:pull",
+                                          "full_moment_z:pull",
                                           "ux:corner",
                                           "uy:corner",
                                           "uz:corner",
@@ -140,6 +146,18 @@ TEST(HistoryColumns, NamesAndValuesComeFromOneTableInTheContractOrder) {
   EXPECT_EQ(value("full_force_z:pull"), 4.0 * value("force_z:pull"));
   EXPECT_EQ(value("full_force_x:pull"), 0.0);
   EXPECT_EQ(value("full_force_y:pull"), 0.0);
+  // Its moment about the origin. The top's nodes lie at z = kStretch kEdge; the pull along z is
+  // the uniform stress over the top, whose nodal forces have the first moment of a force at its
+  // centre (c, c), c = lateral kEdge / 2; the lateral reactions (the unbalanced lateral stress on
+  // the side faces, which reach the top's edge nodes) act at the top's height and, spread along
+  // the edges x = 2 c and y = 2 c, at their middles. Two mirror planes leave the whole body none.
+  const double centre = lateral * kEdge / 2, top = kStretch * kEdge;
+  const double fx = value("force_x:pull"), fy = value("force_y:pull"), fz = value("force_z:pull");
+  EXPECT_NEAR(value("moment_x:pull"), centre * fz - top * fy, 1e-10);
+  EXPECT_NEAR(value("moment_y:pull"), top * fx - centre * fz, 1e-10);
+  EXPECT_NEAR(value("moment_z:pull"), centre * fy - centre * fx, 1e-10);
+  for (const char* axis : {"x", "y", "z"})
+    EXPECT_EQ(value(std::string("full_moment_") + axis + ":pull"), 0.0);
   EXPECT_EQ(value("negative_pivots"), 12.0);
   EXPECT_EQ(value("stable"), 1.0);
 }
