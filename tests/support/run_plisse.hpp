@@ -19,15 +19,29 @@ namespace plisse::test {
 
 /// A fresh directory under the build tree for one test's output, inside a folder named after the
 /// running test: CTest runs tests in parallel processes, and two tests that chose the same `name`
-/// would otherwise wipe and write each other's runs.
+/// would otherwise wipe and write each other's runs. A validation test's full-tier build (the
+/// same source with PLISSE_VALIDATION_FULL=1, CTest suffix .full) gets a folder of its own, so
+/// that the two tiers can run at once.
 inline std::filesystem::path scratch_directory(const std::string& name) {
   std::filesystem::path dir = std::filesystem::path(PLISSE_BINARY_DIR) / "test-runs";
-  if (const auto* test = ::testing::UnitTest::GetInstance()->current_test_info())
+  if (const auto* test = ::testing::UnitTest::GetInstance()->current_test_info()) {
     dir /= std::string(test->test_suite_name()) + "." + test->name();
+#if defined(PLISSE_VALIDATION_FULL) && PLISSE_VALIDATION_FULL
+    dir += ".full";
+#endif
+  }
   dir /= name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir.parent_path());
   return dir;
+}
+
+/// `x` with 6 significant digits (printf's %.6g), as the tests write the values of `--set` and
+/// the names of their runs.
+inline std::string six_digits(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
 }
 
 /// Runs `plisse ARGS` with stdout and stderr captured in `log`; returns the exit status.

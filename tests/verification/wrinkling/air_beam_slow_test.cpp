@@ -91,11 +91,7 @@ struct BeamResult {
   double start_fraction = 0.0;  ///< clamp moment at 2 mm / its largest
 };
 
-std::string number(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", x);
-  return text;
-}
+std::string number(double x) { return test::six_digits(x); }
 
 /// The half tube's mesh as the case generates it (the VTU files hold no connectivity to read).
 Mesh tube_mesh() {
