@@ -91,10 +91,11 @@ Mesh shell_tube(const Wall& w) {
 ShellBeam bend(const Wall& w) {
   ShellBeam result;
   const double p = w.pressure;
-  const auto dir = test::scratch_directory("air-beam-shell-t" + number(w.thickness) + "-h" + number(w.size));
+  const auto dir =
+      test::scratch_directory("air-beam-shell-t" + number(w.thickness) + "-h" + number(w.size));
   const std::string options =
-      " --set mesh.thickness=" + number(w.thickness) + " --set mesh.element_size=" +
-      number(w.size) + " --set loads[0].value=" + number(p) +
+      " --set mesh.thickness=" + number(w.thickness) +
+      " --set mesh.element_size=" + number(w.size) + " --set loads[0].value=" + number(p) +
       " --set solver.steps=50 --set solver.max_step=0.02 --set solver.min_step=1e-3";
   const int status =
       test::run_plisse("run " + std::string(PLISSE_SOURCE_DIR) +
@@ -205,15 +206,14 @@ ShellBeam bend(const Wall& w) {
     result.slack_moment = (a.moment + f * (c.moment - a.moment) - F * result.slack_x) / unit_moment;
     result.slack_expected = 0.5 * p0.row[j] / (p * r / 2);
   }
-  EXPECT_TRUE(slack) << "the compressed fibre never went slack at R/t = "
-                     << kRadius / w.thickness;
+  EXPECT_TRUE(slack) << "the compressed fibre never went slack at R/t = " << kRadius / w.thickness;
   double largest = 0.0;
   for (const auto& s : bending) largest = std::max(largest, s.moment);
   result.collapse = largest / unit_moment;
   std::cout << "R/t = " << kRadius / w.thickness << ": r " << r << ", closed tube N_x "
-            << result.axial_ratio << " N_theta " << result.hoop_ratio << "; first slack at x = "
-            << result.slack_x << ": M/(pi p r^3) " << result.slack_moment << " (theory "
-            << result.slack_expected << "); largest clamp moment " << result.collapse
+            << result.axial_ratio << " N_theta " << result.hoop_ratio
+            << "; first slack at x = " << result.slack_x << ": M/(pi p r^3) " << result.slack_moment
+            << " (theory " << result.slack_expected << "); largest clamp moment " << result.collapse
             << " pi p r^3\n";
   result.ran = slack;
   return result;
@@ -224,9 +224,7 @@ std::string subject(double r_over_t) {
          ", L/R = 5, neo-Hookean, p R/t = 0.2 MPa";
 }
 
-std::string mesh_text(const Wall& w) {
-  return "h = " + number(w.size) + " mm, shell triangles";
-}
+std::string mesh_text(const Wall& w) { return "h = " + number(w.size) + " mm, shell triangles"; }
 
 void expect_membrane_theory(const Wall& w, const ShellBeam& b, const std::string& id) {
   const double rt = kRadius / w.thickness;
@@ -299,8 +297,8 @@ TEST(AirBeamShellSlow, CollapseFallsBelowMembraneTheoryAsTheWallThins) {
                       .low = -0.08,
                       .high = 0.0,
                       .why = "earlier: next to the clamp the wall also bends (study)"});
-  expect_study(thin, "rt500/slack", kSlack, b.slack_moment, test::kFullTier ? 0.5882 : 0.4807,
-               0.02, "a guard: it lies in the clamp's flare and moves with the mesh (study)");
+  expect_study(thin, "rt500/slack", kSlack, b.slack_moment, test::kFullTier ? 0.5882 : 0.4807, 0.02,
+               "a guard: it lies in the clamp's flare and moves with the mesh (study)");
   // The collapse lies below membrane theory's capacity: pi p r^3 of the uniform tube at R/t = 50;
   // at R/t = 500 even pi p R^3, the clamped end's, whose radius stays R.
   const double end = std::pow(kRadius / b.r, 3);
