@@ -22,9 +22,10 @@
 //    20 % below pi p R^3, the capacity of the clamped end, whose radius stays R while the tube
 //    grows to r; and it falls by more than 0.1 pi p r^3 from R/t = 50 to 500 (the law the study
 //    reports: the thin wall's stiffness no longer carries it past the narrowed end).
-// Regression guards against the study's runs: each collapse within 1 % (CI's meshes), and the
-// thin wall's first slack fibre within 2 % (it lies in the clamp's flare, where the wall's radius
-// rises from R to r, and moves with the mesh: 0.481 pi p r^3 on 0.5 mm elements, 0.588 on 0.35).
+// Regression guards against the study's runs: the degrees of freedom the study prints and each
+// collapse within 1 % (CI's meshes), and the thin wall's first slack fibre within 2 % (it lies in
+// the clamp's flare, where the wall's radius rises from R to r, and moves with the mesh:
+// 0.481 pi p r^3 on 0.5 mm elements, 0.588 on 0.35).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -40,6 +41,7 @@
 #include "mesh/generate.hpp"
 #include "mesh/tube_mesh.hpp"
 #include "output/history_writer.hpp"
+#include "output/json_file.hpp"
 #include "output/pvd_writer.hpp"
 #include "output/run_directory.hpp"
 #include "output/vtu_reader.hpp"
@@ -73,6 +75,7 @@ struct ShellBeam {
   double collapse = 0.0;        ///< largest clamp moment / (pi p r^3)
   double r = 0.0;               ///< mid radius at mid-length after the pressure
   double slack_x = 0.0;         ///< where the fibre went slack [mm]
+  long dofs = 0;                ///< summary.json's dofs (the study's cost line prints them)
 };
 
 std::string number(double x) { return test::six_digits(x); }
@@ -105,6 +108,7 @@ ShellBeam bend(const Wall& w) {
   EXPECT_TRUE(status == 0 || status == 1) << "see " << dir.string() << ".log";
   if (!std::filesystem::exists(dir / "history.csv")) return result;
   const HistoryTable history = read_history(dir / "history.csv");
+  result.dofs = read_json_file(dir / "summary.json").value("dofs", 0L);
   const std::size_t c_time = test::history_column(history, "time"),
                     c_force = test::history_column(history, "force_y:tip"),
                     c_moment = test::history_column(history, "moment_z:clamp");
@@ -327,6 +331,9 @@ TEST(AirBeamShellSlow, CollapseFallsBelowMembraneTheoryAsTheWallThins) {
   // The law: the thin wall's collapse falls further below membrane theory.
   EXPECT_LT(b.collapse, a.collapse - 0.1);
   if (!test::kFullTier) {
+    // The degrees of freedom the study's cost line prints (summary.json `dofs`).
+    EXPECT_EQ(a.dofs, 6624);
+    EXPECT_EQ(b.dofs, 26048);
     const char* collapse = "collapse: largest clamp moment / (π p r³)";
     expect_study(thick, "rt50/collapse-guard", collapse, a.collapse, 0.9428, 0.01,
                  "a guard, not evidence");
