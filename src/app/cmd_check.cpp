@@ -170,7 +170,9 @@ void check_case(const CheckOptions& options) {
       << ", end_time " << number(c.solver.end_time) << " s, " << c.solver.steps
       << " initial steps (at most " << c.solver.max_steps << "), Newton rtol "
       << number(c.solver.newton.rtol) << ", at most " << c.solver.newton.max_iterations
-      << " iterations" << (c.solver.stability.check ? ", stability check on" : "") << '\n';
+      << " iterations" << (c.solver.stability.check ? ", stability check on" : "")
+      << (c.solver.control == StepControl::arc_length ? ", arc-length control from step 2" : "")
+      << '\n';
 }
 
 }  // namespace

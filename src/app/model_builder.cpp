@@ -493,6 +493,22 @@ std::vector<InputError> unsupported_features(const Case& c, const Mesh& mesh) {
   if (c.solver.scheme != Scheme::total_lagrangian)
     out.emplace_back(InputPlace{c.path, 0, 0, "solver.scheme"},
                      "only the total-lagrangian scheme is available yet");
+  // The arc length runs the load parameter backwards past a limit load: a rate-dependent
+  // material would see time run backwards.
+  if (c.solver.control == StepControl::arc_length) {
+    std::vector<const MaterialSection*> materials = {&c.material};
+    for (const Region& r : c.regions)
+      if (r.material) materials.push_back(&*r.material);
+    for (const MaterialSection* m : materials)
+      if (m->viscoelastic.n_terms() > 0) {
+        out.emplace_back(m->place,
+                         "a viscoelastic material cannot run with 'solver.control: arc-length': "
+                         "past a limit load the arc length lowers the load factor, which is the "
+                         "time its relaxation follows; use load control, or the material without "
+                         "'viscoelastic'");
+        break;
+      }
+  }
   return out;
 }
 

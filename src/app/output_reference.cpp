@@ -11,7 +11,8 @@ const std::vector<OutputEntry> kHistoryBefore = {
     {"step", "–", "always", "converged step, counted from 1"},
     {"time", "–", "always",
      "the step's time t in [0, `solver.end_time`]: the quasi-static load parameter every ramp is a "
-     "function of (`loads[].ramp`, `dies[].move.ramp`, ...)"},
+     "function of (`loads[].ramp`, `dies[].move.ramp`, ...); with `solver.control: arc-length` "
+     "it falls where the path passes a limit load"},
     {"load_factor", "–", "always",
      "t / `solver.end_time`, the fraction of the run done; each load's own magnitude is its "
      "column (`pressure:<load>`, `load_x:<load>`, ...), since ramps may start and end anywhere"},

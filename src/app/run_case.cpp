@@ -298,12 +298,17 @@ SteppingResult step_to_the_end(const RunContext& run, RunSolver& solver, RunReco
 
 /// What a run stopped at its smallest step says of the load it reached (load_stepper's
 /// smallest_step): the load factor and time of the last converged step, the loads there (the
-/// history's load columns: RunRecorder::last_loads), and how to go past it.
+/// history's load columns: RunRecorder::last_loads), and how to go past it. Under arc-length
+/// control (`arc_length`) no step of the shortest arc converged: the path itself was lost there.
 std::string limit_load_text(const StepInfo& last,
-                            const std::vector<std::pair<std::string, double>>& loads) {
+                            const std::vector<std::pair<std::string, double>>& loads,
+                            bool arc_length) {
   char text[640];
   std::snprintf(text, sizeof text,
-                "the load could not be raised past load factor %.6g (t = %.6g, step %d%s)",
+                arc_length ? "the path could not be followed past load factor %.6g (t = %.6g, "
+                             "step %d%s)"
+                           : "the load could not be raised past load factor %.6g (t = %.6g, "
+                             "step %d%s)",
                 last.load_factor, last.time, last.step,
                 last.negative_pivots < 0 ? ""
                 : last.stable            ? ", stable"
@@ -314,11 +319,17 @@ std::string limit_load_text(const StepInfo& last,
                   loads[k].first.c_str(), loads[k].second);
     out += text;
   }
+  if (arc_length)
+    return out +
+           ". No arc down to the shortest converged there: the path branches or turns too sharply "
+           "for the arc length (a bifurcation: seed it with stability.imperfection), or an element "
+           "inverts (a finer mesh there)";
   return out +
          ". If the body collapses there (its stiffness along the load is gone), this is its "
-         "limit load. Under load control nothing follows it further: prescribe a displacement "
-         "instead (a cap's or a die's motion, a displacement condition, a cavity's volume), "
-         "which passes the maximum. A run already driven by a motion has met a snap (the path "
+         "limit load. Under load control nothing follows it further: set solver.control: "
+         "arc-length, which follows the load past its maximum, or prescribe a displacement "
+         "instead (a cap's or a die's motion, a displacement condition, a cavity's volume). A run "
+         "already driven by a motion has met a snap (the path "
          "turns back in that motion too, or jumps to another branch), which no step size "
          "follows: the steps up to it are its quasi-static path";
 }
@@ -357,8 +368,10 @@ void finish_run(const RunContext& run, const SteppingResult& result, const Start
   }
   if (!result.completed) {
     out.log().error(result.failure);
-    const std::string limit =
-        result.smallest_step ? limit_load_text(last, recorder.last_loads()) : std::string();
+    const std::string limit = result.smallest_step
+                                  ? limit_load_text(last, recorder.last_loads(),
+                                                    run.c.solver.control == StepControl::arc_length)
+                                  : std::string();
     if (!limit.empty()) out.log().error(limit);
     out.flush_log();
     throw SolverError(result.failure + " (last converged step " + std::to_string(last.step) +

@@ -176,8 +176,11 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
           history_->rows().size() < std::size_t(resume->steps))
         throw InputError({directory.history_csv().string(), 0, 0, "--resume"},
                          "history.csv does not match the checkpoint");
+      // Under arc-length control the collection's times are step numbers (pvd_time).
+      const bool by_step = c.solver.control == StepControl::arc_length;
       for (const PvdEntry& e : read_pvd(directory.solution_pvd()))
-        if (e.time <= resume->time * (1.0 + 1e-12)) pvd_entries.push_back(e);
+        if (by_step ? e.time <= resume->steps + 0.5 : e.time <= resume->time * (1.0 + 1e-12))
+          pvd_entries.push_back(e);
       if (root_)
         history_->keep_first_rows(resume->steps);
       else
@@ -306,7 +309,11 @@ void RunRecorder::write_step_files(const StepInfo& info, const std::vector<doubl
   write_step_vtu(directory_.directory() / name, case_, model_, fields_, shell_outputs_,
                  columns_.wall_thickness(), step_start, info.dt, point_fields, cell_fields);
   on_every_rank_alike([&] {
-    if (pvd_) pvd_->add(info.time, name);
+    // ParaView orders a collection by its times: an arc-length run's load factor falls past a
+    // limit load, so its steps are listed by their number.
+    if (pvd_)
+      pvd_->add(case_.solver.control == StepControl::arc_length ? double(info.step) : info.time,
+                name);
     if (spectrum_ && last_wrinkles_ && info.step > 0)
       spectrum_->add_step(info.step, info.time, last_wrinkles_->rings);
   });

@@ -29,6 +29,8 @@ const Choices<LineSearch> kLineSearches{{"bt", LineSearch::bt},
                                         {"basic", LineSearch::basic},
                                         {"l2", LineSearch::l2},
                                         {"cp", LineSearch::cp}};
+const Choices<StepControl> kStepControls{{"load", StepControl::load},
+                                         {"arc-length", StepControl::arc_length}};
 const Choices<LinearSolverType> kLinearSolverTypes{{"direct", LinearSolverType::direct},
                                                    {"iterative", LinearSolverType::iterative}};
 const Choices<std::string> kImperfectionKinds{{"random", "random"}, {"mode", "mode"}};
@@ -153,6 +155,13 @@ Schema<SolverSettings> solver_schema() {
                    "total-Lagrangian Newton (step-size independent), or the paper's incremental "
                    "velocity scheme");
   s.real("end_time", &S::end_time, Range::positive(), "s", "end of the (pseudo-)time");
+  s.choice<StepControl>(
+      "control", &S::control, kStepControls,
+      "load: each step raises the time (the load factor) and Newton finds the state; "
+      "arc-length: from the second step on, each step has a length along the path of equilibria "
+      "and the load factor is an unknown (Crisfield's cylindrical arc length), so the run follows "
+      "the load past its maximum and through a snap-back, ending at end_time; the step-size keys "
+      "then set the arc (docs/theory/arc_length.md)");
   s.integer("steps", &S::steps, Range::at_least(1),
             "initial number of steps (first step = end_time / steps)");
   s.integer("max_steps", &S::max_steps, Range::at_least(1), "largest number of steps");
@@ -212,6 +221,29 @@ Schema<SolverSettings> solver_schema() {
           .fail("min_step must be <= max_step (got min_step " + format_number(solver.min_step) +
                 ", max_step " + format_number(solver.max_step) + ")");
   });
+  s.rule(
+      "`control: arc-length` refuses `viscosity`, `stability.branch_switch` and the "
+      "iterative linear solver",
+      [](const FieldMap& m, const S& solver, const ReadContext&) {
+        if (solver.control != StepControl::arc_length) return;
+        const std::string head = "with 'control: arc-length', ";
+        if (solver.viscosity > 0.0)
+          m.find("viscosity")
+              ->fail(head +
+                     "viscous stabilisation is not available: its forces follow the time "
+                     "step, which the arc length makes run backwards past a limit load; the "
+                     "arc length follows the snap itself");
+        if (solver.stability.branch_switch)
+          throw InputError(solver.stability.place,
+                           head +
+                               "'branch_switch' is not available: the arc length follows "
+                               "the path it is on; switch branches under load control");
+        if (solver.newton.linear.type == LinearSolverType::iterative)
+          throw InputError(solver.newton.linear.place,
+                           head +
+                               "the linear systems are solved by MUMPS; remove "
+                               "'type: iterative'");
+      });
   s.rule("`steps` <= `max_steps`", [](const FieldMap& m, const S& solver, const ReadContext&) {
     if (solver.steps > solver.max_steps)
       (m.has("steps") ? *m.find("steps") : *m.find("max_steps"))

@@ -75,7 +75,10 @@ std::string LoadStepper::describe_failure(const NewtonResult& newton) const {
 }
 
 LoadStepper::LoadStepper(MixedModel& model, const SteppingSettings& settings)
-    : model_(model), settings_(settings), newton_(model, settings.newton) {}
+    : model_(model), settings_(settings), newton_(model, settings.newton) {
+  if (settings.control == StepControl::arc_length)
+    arc_ = std::make_unique<ArcLengthSolver>(model, settings.newton, settings.end_time);
+}
 
 LoadStepper::~LoadStepper() = default;
 
@@ -288,6 +291,7 @@ void LoadStepper::check_stability(StepInfo& info, SteppingResult& result, const 
 
 void LoadStepper::set_interrupt(std::function<bool()> stop) {
   interrupt_ = stop;
+  if (arc_) arc_->set_interrupt(stop);
   newton_.set_interrupt(std::move(stop));
 }
 
@@ -298,9 +302,12 @@ void LoadStepper::start() {
     st = *resume_;
     resume_.reset();
     model_.resume_at(st.time);
+    // From the second converged step on, an arc-length run's next step size is an arc length.
+    arc_length_set_ = arc_ && st.steps >= 2;
     return;
   }
   st = StepperState{};
+  arc_length_set_ = false;
   st.dt = std::min(settings_.end_time / settings_.steps, settings_.max_step * settings_.end_time);
   model_.set_time(0.0);
   model_.save_converged();
@@ -382,6 +389,128 @@ StepInfo LoadStepper::accept_step(const NewtonResult& newton, double t_new, doub
   return info;
 }
 
+LoadStepper::Attempt LoadStepper::arc_length_attempt(SteppingResult& result, const Log& log,
+                                                     StepInfo& info) {
+  StepperState& st = current_;
+  const double end = settings_.end_time;
+  if (!arc_length_set_) {
+    // The first arc: the length of the first (load-controlled) step's increment, grown or kept
+    // as that step's time step was.
+    const double first = arc_->distance_from(st.previous_state);
+    st.dt = first * (st.previous_dt > 0.0 ? st.dt / st.previous_dt : 1.0);
+    arc_length_set_ = true;
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "  arc-length control from step 2: first arc %.4g mm (step 1 moved %.4g mm)",
+                  st.dt, first);
+    log(text);
+  }
+  const double arc = st.dt;
+  attempt_newton_ = 0;
+  attempt_reused_ = 0;
+  NewtonResult newton;
+  ArcLengthPredictor predictor;
+  double t_new = st.time;
+  std::string failure;
+  try {
+    newton = arc_->solve(st.time, arc, st.previous_state, t_new, predictor);
+    int augmentations = 0;
+    // Contact multipliers: updated at the converged point, then the same arc solved again.
+    while (newton.converged && model_.update_multipliers()) {
+      attempt_newton_ += newton.iterations;
+      if (++augmentations > settings_.max_augmentations) {
+        failure = "constraints not met after " + std::to_string(settings_.max_augmentations) +
+                  " multiplier updates";
+        break;
+      }
+      newton = arc_->correct(arc, t_new);
+    }
+  } catch (const Error& e) {
+    failure = e.what();
+  } catch (const std::bad_alloc&) {
+    newton.out_of_memory = true;
+    newton.reason = "out of memory: an allocation failed while solving the step";
+  }
+  attempt_newton_ += newton.iterations;
+  result.newton_iterations += newton.iterations;
+  if (failure.empty() && !newton.converged && !arc_->left_ramps())
+    failure = describe_failure(newton);
+  report_workspace_growth(result.steps + 1, log);
+  if (failure.empty() && !newton.converged && !newton.interrupted && !newton.out_of_memory &&
+      arc_->left_ramps()) {
+    // The arc passes end_time (or falls below 0), beyond which the ramps hold: the step is taken
+    // again under load control to that bound, from the point where the line from the converged
+    // state to the iterate crosses it (A8).
+    const double bound = t_new > end ? end : 0.0;
+    const std::vector<double> on_arc = model_.state();
+    const double f = (bound - st.time) / (t_new - st.time);
+    model_.restore_converged();
+    const std::vector<double>& from = model_.converged_state();
+    std::vector<double>& x = model_.state();
+    for (std::size_t i = 0; i < x.size(); ++i) x[i] = from[i] + f * (on_arc[i] - from[i]);
+    char passed[160];
+    std::snprintf(passed, sizeof passed,
+                  "the arc passed t = %.6g (to %.6g) and the step to it under load control "
+                  "failed: ",
+                  bound, t_new);
+    t_new = bound;
+    model_.set_time(bound);
+    failure = solve_step(newton, result);
+    if (!failure.empty()) failure = passed + failure;
+  }
+  if (!failure.empty()) {
+    model_.restore_converged();
+    model_.set_time(st.time);
+    if (newton.interrupted || (interrupt_ && interrupt_())) {
+      result.interrupted = true;
+      return Attempt::stop;
+    }
+    if (newton.out_of_memory) {
+      result.failure = "step " + std::to_string(result.steps + 1) + ": " + failure;
+      return Attempt::stop;
+    }
+    if (!(predictor.rate > 0.0)) {
+      result.failure = "step " + std::to_string(result.steps + 1) + ": " + failure;
+      return Attempt::stop;
+    }
+    ++result.cutbacks;
+    // The shortest arc: that of a load increment of solver.min_step at the last converged
+    // state's stiffness (A7).
+    const double shortest = settings_.min_step * end * predictor.rate;
+    const double next = arc * settings_.cutback;
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "step %d: arc %.4g mm from t = %.6g failed after %d iterations: ",
+                  result.steps + 1, arc, st.time, newton.iterations);
+    if (next < shortest) {
+      char tail[200];
+      std::snprintf(tail, sizeof tail,
+                    "; the next arc %.4g mm would be below the shortest %.4g mm (solver.min_step "
+                    "of the load at the last step's stiffness)",
+                    next, shortest);
+      result.failure = std::string(line) + failure + tail;
+      result.smallest_step = true;
+      return Attempt::stop;
+    }
+    char tail[80];
+    std::snprintf(tail, sizeof tail, "; cutting the arc to %.4g mm", next);
+    log("  " + std::string(line) + failure + tail);
+    st.dt = next;
+    return Attempt::retry;
+  }
+  const double load_step = t_new - st.time;
+  info = accept_step(newton, t_new, std::abs(load_step), result);
+  info.dt = load_step;
+  info.newton_iterations = attempt_newton_;
+  // The next arc: grown after an easy step, and short enough that its load increment stays
+  // under solver.max_step (at this step's ratio of arc to load).
+  double next = newton.iterations <= settings_.easy_iterations ? arc * settings_.growth : arc;
+  const double largest = settings_.max_step * end;
+  if (std::abs(load_step) > 0.0) next = std::min(next, arc * largest / std::abs(load_step));
+  st.dt = next;
+  return Attempt::accepted;
+}
+
 SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_step,
                                 const Log& log) {
   SteppingResult result;
@@ -404,6 +533,32 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
       result.failure = "reached solver.max_steps = " + std::to_string(settings_.max_steps) +
                        " at time " + std::to_string(st.time);
       return result;
+    }
+    if (arc_ && st.steps >= 1) {
+      StepInfo info;
+      const Attempt attempt = arc_length_attempt(result, log, info);
+      if (attempt == Attempt::stop) return result.interrupted ? stop() : result;
+      if (attempt == Attempt::retry) {
+        ++cutbacks_this_step;
+        continue;
+      }
+      info.cutbacks = cutbacks_this_step;
+      cutbacks_this_step = 0;
+      bool switched = false;
+      check_stability(info, result, log, switched);
+      report_workspace_growth(info.step, log);
+      on_step(info);
+      if (st.time <= 0.0) {
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "step %d: the load factor fell back to %.6g: past its limit load the body "
+                      "carries none of the load (the path of solver.control: arc-length ends at "
+                      "load factor 0)",
+                      info.step, st.time / end);
+        result.failure = text;
+        return result;
+      }
+      continue;
     }
     // Land on end_time without a sliver: take the rest when it fits, halve it when it is less
     // than two steps.

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "solver/arc_length.hpp"
 #include "solver/eigenmodes.hpp"
 #include "solver/mixed_model.hpp"
 #include "solver/newton_solver.hpp"
@@ -79,10 +80,12 @@ struct SteppingResult {
 
 /// Where the stepping is, so that a run can continue from a checkpoint.
 struct StepperState {
-  int steps = 0;                       ///< converged steps so far
-  double time = 0.0;                   ///< time of the last converged step
-  double dt = 0.0;                     ///< next step size (0: start from end_time / steps)
-  double previous_dt = 0.0;            ///< size of the last converged step (0: none yet)
+  int steps = 0;      ///< converged steps so far
+  double time = 0.0;  ///< time of the last converged step
+  /// Next step size (0: start from end_time / steps); under arc-length control from the second
+  /// converged step on, the next arc length [mm] (A2)
+  double dt = 0.0;
+  double previous_dt = 0.0;  ///< size |t_n - t_{n-1}| of the last converged step (0: none yet)
   std::vector<double> previous_state;  ///< converged state before the last one (predictor)
   int negative_pivots = -1;  ///< of the last converged step (-1: not checked); a rise above it is
                              ///< a new instability
@@ -157,12 +160,22 @@ class LoadStepper {
   /// size and returns the step's record (its cut-backs and stability not yet filled in).
   StepInfo accept_step(const NewtonResult& newton, double t_new, double step,
                        SteppingResult& result);
+  /// What an attempt at a step came to.
+  enum class Attempt { accepted, retry, stop };
+  /// One attempt at an arc-length step (StepControl::arc_length, from the second step on): the
+  /// arc continuation from the last converged state; a step that ends past end_time is taken
+  /// again under load control to end_time. On `accepted`, `info` is the step's record and the
+  /// model holds it; on `retry` the arc was cut back; on `stop`, `result` says why.
+  Attempt arc_length_attempt(SteppingResult& result, const Log& log, StepInfo& info);
   /// Logs, once, that a factorisation's workspace had to grow since the last report.
   void report_workspace_growth(int step, const Log& log);
 
   MixedModel& model_;
   SteppingSettings settings_;
   NewtonSolver newton_;
+  std::unique_ptr<ArcLengthSolver> arc_;  ///< with StepControl::arc_length
+  /// current_.dt holds the arc length (from the first arc-length step on), not a time step.
+  bool arc_length_set_ = false;
   std::optional<StepperState> resume_;
   StepperState current_;
   std::function<bool()> interrupt_;

@@ -4,8 +4,13 @@
 
 namespace plisse {
 
+/// How a step's size is set: by its load increment (the time step), or by the length of its
+/// increment along the path of equilibria (solver/arc_length.hpp).
+enum class StepControl { load, arc_length };
+
 /// Time runs from 0 to end_time in adaptive steps (solver/load_stepper.hpp).
 struct SteppingSettings {
+  StepControl control = StepControl::load;
   double end_time = 1.0;       ///< [s], > 0
   int steps = 10;              ///< initial number of steps (initial step = end_time/steps), >= 1
   int max_steps = 10000;       ///< >= 1

@@ -113,6 +113,13 @@ fs::path expect_kill_and_resume(const std::string& name, const std::string& set 
 
 TEST(Restart, KilledRunResumesToTheUninterruptedHistory) { expect_kill_and_resume("restart"); }
 
+TEST(Restart, AnArcLengthRunResumesOnItsArc) {
+  // Under arc-length control the checkpoint's next step size is an arc length, and the increment
+  // before it (the previous state) orients the next predictor; the step files are listed by step
+  // number (a falling load would disorder them by time), and the resume keeps the first ones.
+  expect_kill_and_resume("restart-arc", "solver.control=arc-length");
+}
+
 TEST(Restart, ViscoelasticAndMullinsHistorySurvivesAKill) {
   // The points' internal variables (the Maxwell elements' overstresses, the largest energy
   // reached) are part of the checkpoint, and the resumed run's first step measures its time step
