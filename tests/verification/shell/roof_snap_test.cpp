@@ -118,8 +118,8 @@ Path follow_roof(int n) {
       kThickness);
   const auto node = [n](int i, int j) { return i * (n + 1) + j; };
   ConstraintSet set;
-  symmetry(mesh, "s0", set);  // x = 0
-  symmetry(mesh, "r0", set);  // θ = 0: y = 0
+  symmetry(mesh, "s0", set);                                                    // x = 0
+  symmetry(mesh, "r0", set);                                                    // θ = 0: y = 0
   prescribe_surface(mesh, SurfaceRef{"r1", {}}, {0.0, 0.0, 0.0}, Ramp{}, set);  // hinged
   const int crown = node(0, 0);
   std::vector<std::unique_ptr<ModelTerm>> terms;
@@ -142,8 +142,7 @@ Path follow_roof(int n) {
   Path path;
   const SteppingResult result = stepper.run(
       [&](const StepInfo& info) {
-        path.points.push_back(
-            {info.time, -model.state()[DofMap::dof(crown, 2)], info.dt});
+        path.points.push_back({info.time, -model.state()[DofMap::dof(crown, 2)], info.dt});
       },
       [](const std::string& line) { std::printf("%s\n", line.c_str()); });
   path.completed = result.completed;
@@ -174,19 +173,19 @@ TEST(HingedRoof, ArcLengthFollowsTheSnapThroughOfSzeEtAl) {
     errors.push_back(error);
     const auto extremum = [&](std::size_t k) {
       return parabola_extremum(
-          {path.points[k - 1].deflection, path.points[k].deflection,
-           path.points[k + 1].deflection},
+          {path.points[k - 1].deflection, path.points[k].deflection, path.points[k + 1].deflection},
           {path.points[k - 1].load, path.points[k].load, path.points[k + 1].load});
     };
     ASSERT_GT(top, 0u);
     ASSERT_GT(bottom, top);
     ASSERT_LT(bottom + 1, path.points.size());
     const double limit = extremum(top), minimum = extremum(bottom);
-    std::printf("%2d x %2d cells: %zu steps, %d with a falling load, largest strain %.2e; "
-                "largest |P - P_Sze(w)| / Pmax %.4f; limit %.4f (Sze 0.7421), minimum %.4f "
-                "(Sze 0.1729); end w %.3f\n",
-                n, n, path.points.size(), falling, path.largest_strain, error, limit, minimum,
-                path.points.back().deflection);
+    std::printf(
+        "%2d x %2d cells: %zu steps, %d with a falling load, largest strain %.2e; "
+        "largest |P - P_Sze(w)| / Pmax %.4f; limit %.4f (Sze 0.7421), minimum %.4f "
+        "(Sze 0.1729); end w %.3f\n",
+        n, n, path.points.size(), falling, path.largest_strain, error, limit, minimum,
+        path.points.back().deflection);
     EXPECT_GT(falling, 2);
     EXPECT_DOUBLE_EQ(path.points.back().load, 1.0);
     EXPECT_LT(path.largest_strain, 2e-2);
