@@ -137,7 +137,12 @@ const std::vector<OutputEntry> kSummary = {
     {"case_path", "–", "always", "the case file's absolute path"},
     {"overrides", "–", "always", "the `--set KEY=VALUE` overrides of the run, in order"},
     {"title", "–", "always", "the case's `title`"},
-    {"completed", "–", "always", "true when the run reached `solver.end_time`"},
+    {"completed", "–", "always",
+     "true when the run reached `solver.end_time`, or (arc-length control) its load factor fell "
+     "below `solver.stop_load_factor` past a limit load (`ended` says which)"},
+    {"ended", "–", "the run completed",
+     "what ended it: `end_time`, or `stop_load_factor` (arc-length control: the load factor fell "
+     "below `solver.stop_load_factor` past a limit load)"},
     {"interrupted", "–", "always", "true when a signal (Ctrl-C, SIGTERM) stopped the run"},
     {"failure", "–", "the run did not complete", "why the run stopped early"},
     {"limit.time", "s", "the step fell below `solver.min_step`",

@@ -62,7 +62,9 @@ std::string progress_line(const StepInfo& info, const WrinkleReport* wrinkles,
   const double done = info.time - clock.start_time, to_go = clock.end_time - info.time;
   // After cut-backs the rate so far says nothing of the steps to come (a limit load can keep
   // them small for good): no estimate until a step goes through at its first try.
-  if (info.cutbacks > 0 && to_go > 1e-12 * clock.end_time)
+  if (clock.arc_length && info.step > 1 && to_go > 1e-12 * clock.end_time)
+    line += "  left unknown (arc length)";
+  else if (info.cutbacks > 0 && to_go > 1e-12 * clock.end_time)
     line += "  left unknown (steps cut back)";
   else if (done > 0.0 && to_go > 1e-12 * clock.end_time && clock.stepping > 0.0)
     line += "  left ~" + format_duration(clock.stepping * to_go / done);

@@ -13,6 +13,8 @@ struct ProgressClock {
   double stepping = 0.0;    ///< wall time since this process started stepping [s]
   double start_time = 0.0;  ///< the model time stepping started from (a resume's checkpoint) [s]
   double end_time = 1.0;    ///< solver.end_time [s]
+  /// Arc-length control: the load factor may fall, so its rate says nothing of the time left.
+  bool arc_length = false;
 };
 
 /// "step 12  t 0.24  load 0.2400  dt 0.02  newton  6  reuse  4  |R| 1.017e-12  stable  elapsed

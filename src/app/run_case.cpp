@@ -281,9 +281,10 @@ SteppingResult step_to_the_end(const RunContext& run, RunSolver& solver, RunReco
     recorder.record(info);
     if (const std::string w = recorder.take_material_warning(); !w.empty()) log.warn(w);
     const auto& wrinkles = recorder.last_wrinkles();
-    log.info(progress_line(info, wrinkles ? &wrinkles->rings : nullptr,
-                           {seconds_since(run.start), seconds_since(stepping_start), start_time,
-                            run.c.solver.end_time}));
+    log.info(
+        progress_line(info, wrinkles ? &wrinkles->rings : nullptr,
+                      {seconds_since(run.start), seconds_since(stepping_start), start_time,
+                       run.c.solver.end_time, run.c.solver.control == StepControl::arc_length}));
     recorder.checkpoint_when_due(info.step);
     out.flush_log();
   };
@@ -353,6 +354,13 @@ void finish_run(const RunContext& run, const SteppingResult& result, const Start
   out.log().info(line);
   const StepInfo& last = recorder.last_step();
   const fs::path& directory = out.directory().directory();
+  if (result.stopped_after_limit) {
+    std::snprintf(line, sizeof line,
+                  "ended past the limit load: the load factor fell to %.6g at step %d, below "
+                  "solver.stop_load_factor = %.6g",
+                  last.load_factor, last.step, run.c.solver.stop_load_factor);
+    out.log().info(line);
+  }
   if (result.interrupted) {
     out.flush_log();
     // A resume must repeat the --set values (the checkpoint's fingerprint holds them); a

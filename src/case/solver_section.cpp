@@ -155,6 +155,10 @@ Schema<SolverSettings> solver_schema() {
                    "total-Lagrangian Newton (step-size independent), or the paper's incremental "
                    "velocity scheme");
   s.real("end_time", &S::end_time, Range::positive(), "s", "end of the (pseudo-)time");
+  s.real("stop_load_factor", &S::stop_load_factor, Range{0.0, 1.0, false, true}, "–",
+         "with `control: arc-length`: the run ends, completed, once its load factor falls below "
+         "this on a falling branch (past a limit load: a collapse whose load never comes back to "
+         "end_time); 0: only end_time ends it");
   s.choice<StepControl>(
       "control", &S::control, kStepControls,
       "load: each step raises the time (the load factor) and Newton finds the state; "
@@ -244,6 +248,14 @@ Schema<SolverSettings> solver_schema() {
                                "the linear systems are solved by MUMPS; remove "
                                "'type: iterative'");
       });
+  s.rule("`stop_load_factor` needs `control: arc-length`",
+         [](const FieldMap& m, const S& solver, const ReadContext&) {
+           if (solver.stop_load_factor > 0.0 && solver.control != StepControl::arc_length)
+             m.find("stop_load_factor")
+                 ->fail(
+                     "stop_load_factor needs 'control: arc-length' (under load control the "
+                     "load factor never falls)");
+         });
   s.rule("`steps` <= `max_steps`", [](const FieldMap& m, const S& solver, const ReadContext&) {
     if (solver.steps > solver.max_steps)
       (m.has("steps") ? *m.find("steps") : *m.find("max_steps"))

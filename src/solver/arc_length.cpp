@@ -125,7 +125,6 @@ bool ArcLengthSolver::tangent(double t, NewtonResult& result) {
     solve_seconds_ += seconds_since(start);
     return false;
   }
-  ++factorisations_;
   solve_seconds_ += seconds_since(start);
   return true;
 }

@@ -71,7 +71,6 @@ class ArcLengthSolver {
   /// Wall time of the assemblies and of the factorisations with their solves [s].
   double assembly_seconds() const { return assembly_seconds_; }
   double solve_seconds() const { return solve_seconds_; }
-  int factorisations() const { return factorisations_; }
 
  private:
   /// The free vectors sized for the model's current layout (and K_ for its sparsity).
@@ -102,7 +101,6 @@ class ArcLengthSolver {
   double reference_ = 0.0;  ///< ||q|| |t_p - t_n| of the current step (A6)
   double assembly_seconds_ = 0.0;
   double solve_seconds_ = 0.0;
-  int factorisations_ = 0;
 };
 
 }  // namespace plisse

@@ -94,6 +94,15 @@ void LoadStepper::set_stability(const StabilityCheckSettings& options) {
   stability_ = options;
 }
 
+PhaseTimes LoadStepper::times() const {
+  PhaseTimes t = newton_.times();
+  if (arc_) {
+    t.assembly += arc_->assembly_seconds();
+    t.linear_solve += arc_->solve_seconds();
+  }
+  return t;
+}
+
 double LoadStepper::stability_seconds() const { return inertia_ ? inertia_->seconds() : 0.0; }
 double LoadStepper::stability_assembly_seconds() const {
   return inertia_ ? inertia_->assembly_seconds() : 0.0;
@@ -548,6 +557,12 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
       check_stability(info, result, log, switched);
       report_workspace_growth(info.step, log);
       on_step(info);
+      if (info.dt < 0.0 && settings_.stop_load_factor > 0.0 &&
+          st.time / end < settings_.stop_load_factor) {
+        result.completed = true;
+        result.stopped_after_limit = true;
+        return result;
+      }
       if (st.time <= 0.0) {
         char text[200];
         std::snprintf(text, sizeof text,

@@ -76,6 +76,9 @@ struct SteppingResult {
   /// the load could not be raised there (a limit load, under load control).
   bool smallest_step = false;
   bool interrupted = false;  ///< stopped because set_interrupt's test said so, not by a failure
+  /// Completed because the load factor fell below SteppingSettings::stop_load_factor past a limit
+  /// load (arc-length control), not at end_time.
+  bool stopped_after_limit = false;
 };
 
 /// Where the stepping is, so that a run can continue from a checkpoint.
@@ -114,7 +117,9 @@ class LoadStepper {
   /// `log` receives progress lines.
   SteppingResult run(const std::function<void(const StepInfo&)>& on_step,
                      const std::function<void(const std::string&)>& log);
-  PhaseTimes times() const { return newton_.times(); }
+  /// Newton's, with the arc-length steps' assemblies and linear solves added (the factorisations
+  /// and triangular solves come from PETSc's event log and count both already).
+  PhaseTimes times() const;
   /// Entries of the last MUMPS factor of Newton (NewtonSolver::factor_entries).
   double factor_entries() const { return newton_.factor_entries(); }
   /// Wall time of the stability checks [s] (assembly + LDL^T factorisation) and their number;

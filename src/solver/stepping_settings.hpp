@@ -11,6 +11,9 @@ enum class StepControl { load, arc_length };
 /// Time runs from 0 to end_time in adaptive steps (solver/load_stepper.hpp).
 struct SteppingSettings {
   StepControl control = StepControl::load;
+  /// With arc-length control: the run ends, completed, when its load factor falls below this on a
+  /// falling branch (past a limit load); 0: only end_time ends it.
+  double stop_load_factor = 0.0;
   double end_time = 1.0;       ///< [s], > 0
   int steps = 10;              ///< initial number of steps (initial step = end_time/steps), >= 1
   int max_steps = 10000;       ///< >= 1

@@ -144,6 +144,96 @@ fs::path write_case(const std::string& name, const std::string& text) {
   return file;
 }
 
+// An air beam's collapse under a force, followed by arc length: the Comer & Levy tube of the air-
+// beam study as a shell (R = 10 mm, L = 50 mm, t = 0.2 mm, half tube, clamped at x = 0, a cap
+// free to turn at x = L, the gas's pressure 4e-3 MPa closing over it), inflated in a first run
+// and bent in a second (`--from`) by a force on the cap: under load control such a run stops at
+// the collapse load; under arc length it passes it, its load factor falls, and
+// `solver.stop_load_factor` ends it, completed. The collapse force is checked against the same
+// beam bent by a prescribed tip displacement (the same equilibria, parametrised by the motion,
+// which passes the maximum without arc length): the largest force the arc-length run reaches
+// within 0.1 % below the parabola through the displacement run's three largest samples, and not
+// above it by more than 1e-4 (measured: 0.1450995 N against 0.1451105 N, -7.6e-5). Right after
+// the maximum the stability check counts one negative pivot more than a stable state has (a
+// force-controlled beam past its collapse load is unstable).
+TEST(ShellCase, ArcLengthFollowsAForceOnAnAirBeamPastItsCollapse) {
+  const std::string beam =
+      "element: shell\n"
+      "mesh: {generate: tube, radius: 10.0, length: 50.0, thickness: 0.2, element_size: 1.0,"
+      " symmetry: half}\n"
+      "material: {model: neo-hookean, c1: 0.5}\n"
+      "boundary:\n"
+      "  - {type: symmetry, surface: sym_z}\n"
+      "  - {type: clamped, name: clamp, surface: left}\n";
+  const std::string gas = "loads:\n  - {type: pressure, name: gas, surface: inner, value: 4.0e-3, ";
+  const std::string cap =
+      "caps:\n  - {name: tip, surface: right, point: [50, 0, 0], rotation: [0, 0, ~], ";
+  const std::string solver =
+      "  newton: {rtol: 1.0e-8, max_iterations: 20}\noutput: {every: 1000}\n";
+  const fs::path inflate = write_case(
+      "air-beam-inflate", beam + gas + "caps: [tip]}\n" + cap +
+                              "displacement: [~, ~, 0]}\nsolver:\n  steps: 4\n" + solver);
+  const fs::path push = write_case(
+      "air-beam-push",
+      beam + gas + "ramp: [[0, 1], [1, 1]], caps: [tip]}\n" + cap +
+          "displacement: [~, -15.0, 0]}\nsolver:\n  steps: 20\n  max_step: 0.05\n" + solver);
+  const fs::path force = write_case(
+      "air-beam-force",
+      beam + gas + "ramp: [[0, 1], [1, 1]], caps: [tip]}\n" + cap +
+          "displacement: [~, ~, 0], force: [0, -0.2, 0]}\nsolver:\n  control: arc-length\n"
+          "  stop_load_factor: 0.72\n  steps: 20\n  max_steps: 40\n  stability: {check: true}\n" +
+          solver);
+  const fs::path inflated = test::scratch_directory("air-beam-inflated");
+  fs::remove_all(inflated);
+  const auto first =
+      test::run_plisse_captured("run '" + inflate.string() + "' -o '" + inflated.string() + "'");
+  ASSERT_EQ(first.status, 0) << first.output;
+  const std::string from = "--from '" + inflated.string() + "'";
+  const HistoryTable pushed = run_case(push, "air-beam-pushed", from);
+  const fs::path forced_dir = test::scratch_directory("air-beam-forced");
+  fs::remove_all(forced_dir);
+  const auto second = test::run_plisse_captured("run '" + force.string() + "' " + from + " -o '" +
+                                                forced_dir.string() + "'");
+  ASSERT_EQ(second.status, 0) << second.output;
+  const HistoryTable forced = read_history(forced_dir / "history.csv");
+  const std::vector<double> f_push = column(pushed, "force_y:tip"),
+                            u_push = column(pushed, "uy:tip");
+  const std::vector<double> f_arc = column(forced, "force_y:tip"), t_arc = column(forced, "time");
+  const std::vector<double> pivots = column(forced, "negative_pivots"),
+                            expected = column(forced, "expected_negative_pivots");
+  ASSERT_GE(f_push.size(), 5u);
+  ASSERT_GE(f_arc.size(), 5u);
+  // The displacement run's collapse force: the vertex of the parabola F(u) through the largest
+  // sample and its neighbours (forces on the body are -F_y).
+  std::size_t k = 1;
+  for (std::size_t i = 1; i + 1 < f_push.size(); ++i)
+    if (-f_push[i] > -f_push[k]) k = i;
+  const double u0 = u_push[k - 1], u1 = u_push[k], u2 = u_push[k + 1];
+  const double d1 = (f_push[k - 1] - f_push[k]) / (u0 - u1),
+               d2 = (f_push[k] - f_push[k + 1]) / (u1 - u2);
+  const double a = (d2 - d1) / (u2 - u0), b = d1 - a * (u0 + u1);
+  const double vertex = -b / (2.0 * a);
+  const double collapse = -(f_push[k] + (vertex - u1) * (b + a * (vertex + u1)));
+  std::size_t top = 0;
+  for (std::size_t i = 0; i < f_arc.size(); ++i)
+    if (-f_arc[i] > -f_arc[top]) top = i;
+  const double reached = -f_arc[top];
+  std::printf(
+      "collapse force: %.7f N by the prescribed motion, %.7f N reached by arc length "
+      "(%+.2e); %zu arc-length steps\n",
+      collapse, reached, reached / collapse - 1.0, f_arc.size());
+  EXPECT_LT(reached, collapse * (1.0 + 1e-4));
+  EXPECT_GT(reached, collapse * (1.0 - 1e-3));
+  // Past the maximum: a falling load, and one negative pivot more than a stable state's.
+  ASSERT_LT(top + 1, f_arc.size());
+  EXPECT_LT(t_arc[top + 1], t_arc[top]);
+  EXPECT_EQ(pivots[top + 1], expected[top + 1] + 1.0);
+  const nlohmann::json summary = read_json_file(forced_dir / "summary.json");
+  EXPECT_TRUE(summary["completed"].get<bool>());
+  EXPECT_EQ(summary["ended"], "stop_load_factor");
+  EXPECT_LT(t_arc.back(), 0.72);
+}
+
 /// A strip case written as `name`.yaml: the sheet L = 100 mm, W = 10 mm, t = 1 mm as a shell in
 /// cells of 2.5 mm, its long edges `front` and `back` symmetric (plane strain), then the
 /// `boundary:` items `ends` (YAML lines, for the ends `left` and `right`) and the sections `rest`.

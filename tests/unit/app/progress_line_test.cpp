@@ -55,6 +55,18 @@ TEST(ProgressLine, TheTimeLeftIsUnknownAfterCutBacks) {
   EXPECT_FALSE(has(progress_line(info, nullptr, {40.0, 40.0, 0.0, 1.0}), "left")) << "at the end";
 }
 
+// Under arc-length control the load factor may fall past a limit load: its rate gives no time
+// left from the second step on (the first is taken under load control).
+TEST(ProgressLine, TheTimeLeftIsUnknownUnderArcLengthControl) {
+  StepInfo info = step_at(0.25);
+  info.step = 2;
+  const std::string line = progress_line(info, nullptr, {31.5, 30.0, 0.0, 1.0, true});
+  EXPECT_TRUE(has(line, "left unknown (arc length)")) << line;
+  EXPECT_FALSE(has(line, "left ~")) << line;
+  info.step = 1;
+  EXPECT_TRUE(has(progress_line(info, nullptr, {31.5, 30.0, 0.0, 1.0, true}), "left ~1m30s"));
+}
+
 TEST(ProgressLine, CutBacksStabilityAndTheLargestWrinkledRing) {
   StepInfo info = step_at(0.5);
   info.cutbacks = 2;
