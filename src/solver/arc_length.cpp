@@ -188,6 +188,17 @@ NewtonResult ArcLengthSolver::solve(double t_n, double arc,
                         : "the predictor is not finite";
     return result;
   }
+  // A predictor past end_time (or below 0), where the ramps hold, is shortened to end there: the
+  // corrector then finds the point of the path at the bound, or a limit point before it (A8).
+  const double t_p = t_n + predictor.load_step;
+  if (t_p > end_time_ || t_p < 0.0) {
+    const double f = ((t_p > end_time_ ? end_time_ : 0.0) - t_n) / predictor.load_step;
+    if (f > 0.0) {
+      arc *= f;
+      predictor.load_step *= f;
+    }
+  }
+  used_arc_ = arc;
   // x_p = x_n + dt b, t_p = t_n + dt (b_ still holds the converged state's direction).
   PLISSE_PETSC(VecWAXPY(x_, predictor.load_step, b_, x_n_));
   t = t_n + predictor.load_step;

@@ -56,6 +56,9 @@ class ArcLengthSolver {
   /// Goes on with the iterations of the last solve from the model's state (its last iterate, at
   /// `t`), on the same arc: after an update of contact multipliers moved the equilibrium.
   NewtonResult correct(double arc, double& t);
+  /// The arc length the last solve used [mm]: the one asked for, or shorter when its predictor
+  /// passed end_time or 0 (A8).
+  double used_arc() const { return used_arc_; }
   /// The last solve or correct stopped because its load parameter left [0, end_time], where the
   /// ramps hold: the model holds that iterate (A8).
   bool left_ramps() const { return left_ramps_; }
@@ -98,6 +101,7 @@ class ArcLengthSolver {
   Vec x_ = nullptr, r_ = nullptr, q_ = nullptr, a_ = nullptr, b_ = nullptr;
   Vec x_n_ = nullptr, last_ = nullptr, increment_ = nullptr;
   bool left_ramps_ = false;
+  double used_arc_ = 0.0;
   double reference_ = 0.0;  ///< ||q|| |t_p - t_n| of the current step (A6)
   double assembly_seconds_ = 0.0;
   double solve_seconds_ = 0.0;

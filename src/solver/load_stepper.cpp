@@ -414,7 +414,7 @@ LoadStepper::Attempt LoadStepper::arc_length_attempt(SteppingResult& result, con
                   st.dt, first);
     log(text);
   }
-  const double arc = st.dt;
+  double arc = st.dt;
   attempt_newton_ = 0;
   attempt_reused_ = 0;
   NewtonResult newton;
@@ -423,6 +423,7 @@ LoadStepper::Attempt LoadStepper::arc_length_attempt(SteppingResult& result, con
   std::string failure;
   try {
     newton = arc_->solve(st.time, arc, st.previous_state, t_new, predictor);
+    arc = arc_->used_arc();  // shorter when the predictor passed end_time (A8)
     int augmentations = 0;
     // Contact multipliers: updated at the converged point, then the same arc solved again.
     while (newton.converged && model_.update_multipliers()) {
