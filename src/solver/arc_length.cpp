@@ -82,7 +82,7 @@ bool ArcLengthSolver::residual(double t, NewtonResult& result) {
   return result.status.ok;
 }
 
-bool ArcLengthSolver::tangent(double t, NewtonResult& result) {
+bool ArcLengthSolver::tangent(double t, bool have_residual, NewtonResult& result) {
   auto start = std::chrono::steady_clock::now();
   // q = dR/dt: forward in t, backward at the ramps' end (a ramp may stop there).
   const double step = kTimeDifference * end_time_;
@@ -90,12 +90,11 @@ bool ArcLengthSolver::tangent(double t, NewtonResult& result) {
   model_.set_time(shifted);
   model_.set_free(x_);
   AssemblyStatus status = model_.assemble_residual(q_);
-  if (status.ok) {
-    // R(x, t) last, so that the model's reactions are those of (x, t).
-    model_.set_time(t);
-    model_.set_free(x_);
-    status = model_.assemble_residual(r_);
-  }
+  model_.set_time(t);
+  model_.set_free(x_);
+  // The reactions the model keeps are then those of (x, t + δ) until the next residual: the
+  // corrector assembles one at every iterate, the converged one last.
+  if (status.ok && !have_residual) status = model_.assemble_residual(r_);
   if (status.ok) status = model_.assemble_tangent(K_);
   assembly_seconds_ += seconds_since(start);
   if (!status.ok) {
@@ -118,7 +117,7 @@ bool ArcLengthSolver::tangent(double t, NewtonResult& result) {
         result.reason = memory.message();
       } else if (memory.workspace_too_small && grow_factor_workspace(pc_, memory)) {
         solve_seconds_ += seconds_since(start);
-        return tangent(t, result);
+        return tangent(t, true, result);
       }
     }
     if (result.reason.empty()) result.reason = "the factorisation of the tangent failed";
@@ -152,7 +151,7 @@ ArcLengthPredictor ArcLengthSolver::predict(double t_n, double arc,
   PLISSE_PETSC(VecCopy(x_n_, x_));
   NewtonResult ignored;
   ArcLengthPredictor p;
-  if (!tangent(t_n, ignored)) {
+  if (!tangent(t_n, false, ignored)) {
     model_.restore_converged();
     model_.set_time(t_n);
     return p;
@@ -249,7 +248,7 @@ NewtonResult ArcLengthSolver::correct(double arc, double& t, NewtonResult& resul
       result.reason = "interrupted";
       return result;
     }
-    if (!tangent(t, result)) {
+    if (!tangent(t, true, result)) {
       if (result.reason.empty()) result.reason = "an element could not be evaluated";
       return result;
     }

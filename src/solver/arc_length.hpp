@@ -80,10 +80,10 @@ class ArcLengthSolver {
   void prepare();
   /// R at the model's state and time `t` into r_; false when an element could not be evaluated.
   bool residual(double t, NewtonResult& result);
-  /// K and q = dR/dt at the model's state and time `t` (q by a one-sided difference of step
-  /// kTimeDifference * end_time), K factorised; false when the assembly or the factorisation
-  /// failed (result says why).
-  bool tangent(double t, NewtonResult& result);
+  /// K and q = dR/dt at the free state x_ and time `t` (q by a one-sided difference of step
+  /// kTimeDifference * end_time), K factorised; r_ holds R(x_, t) already when `have_residual`,
+  /// else it is assembled. False when the assembly or the factorisation failed (result says why).
+  bool tangent(double t, bool have_residual, NewtonResult& result);
   /// The iterations of solve() and correct(), counted into `result`.
   NewtonResult correct(double arc, double& t, NewtonResult& result);
   /// y = K^-1 v with the last factorisation.
