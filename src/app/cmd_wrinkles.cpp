@@ -20,6 +20,7 @@
 #include "app/wrinkling.hpp"
 #include "core/error.hpp"
 #include "output/checkpoint.hpp"
+#include "output/history_writer.hpp"
 #include "output/json_file.hpp"
 #include "output/pvd_writer.hpp"
 #include "output/run_directory.hpp"
@@ -242,9 +243,15 @@ void recompute_wrinkles(const WrinklesOptions& options) {
     throw InputError({(dir / "checkpoint.bin").string(), 0, 0, "DIR"},
                      "the run's state no longer matches its case (" + case_path + "): " + changes);
   const WrinkleMeter meter(c, mesh);
-  const MeasuredState measured = options.step >= 0
-                                     ? measure_step_file(dir, options.step, mesh, meter)
-                                     : measure_last_state(dir, c, mesh, meter, checkpoint);
+  MeasuredState measured = options.step >= 0 ? measure_step_file(dir, options.step, mesh, meter)
+                                             : measure_last_state(dir, c, mesh, meter, checkpoint);
+  // Under arc-length control solution.pvd lists the step files by step number (the load falls
+  // past a limit point): the step's time is history.csv's.
+  if (options.step >= 0 && c.solver.control == StepControl::arc_length) {
+    const HistoryTable history = read_history(dir / "history.csv");
+    for (const std::vector<double>& row : history.rows)
+      if (!row.empty() && row[0] == options.step) measured.time = row[1];
+  }
   // Its own file: summary.json stays the run's, matching history.csv.
   const nlohmann::json table = {{"case", case_path},
                                 {"run_overrides", run.run_overrides},

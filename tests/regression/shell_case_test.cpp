@@ -133,6 +133,12 @@ TEST(ShellCase, ArcLengthExampleFollowsTheBalloonPastItsMaximumAndMinimum) {
   const std::vector<PvdEntry> entries = read_pvd(dir / "solution.pvd");
   ASSERT_EQ(entries.size(), t.size() + 1);  // step 0 and every step
   for (std::size_t k = 0; k < entries.size(); ++k) EXPECT_EQ(entries[k].time, double(k));
+  // plisse wrinkles on a written step gives that step's load time (history.csv's), not the
+  // collection's step number.
+  const auto measured = test::run_plisse_captured(
+      "wrinkles '" + dir.string() + "' --step 9 --set 'output.wrinkles.rings_deg=[30]'");
+  ASSERT_EQ(measured.status, 0) << measured.output;
+  EXPECT_EQ(read_json_file(dir / "wrinkles.json")["time"].get<double>(), t[8]);
 }
 
 /// Writes `text` to a fresh case file `name`.yaml and returns its path.
