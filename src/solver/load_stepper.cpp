@@ -465,7 +465,9 @@ LoadStepper::Attempt LoadStepper::arc_length_attempt(SteppingResult& result, con
                   bound, t_new);
     t_new = bound;
     model_.set_time(bound);
+    const int arc_iterations = attempt_newton_;  // solve_step counts its own from 0
     failure = solve_step(newton, result);
+    attempt_newton_ += arc_iterations;
     if (!failure.empty()) failure = passed + failure;
   }
   if (!failure.empty()) {
