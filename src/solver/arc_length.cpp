@@ -90,8 +90,7 @@ bool ArcLengthSolver::tangent(double t, bool have_residual, NewtonResult& result
   model_.set_time(shifted);
   model_.set_free(x_);
   AssemblyStatus status = model_.assemble_residual(q_);
-  model_.set_time(t);
-  model_.set_free(x_);
+  model_.set_time(t);  // the constrained values only: the free ones stay x_
   // The reactions the model keeps are then those of (x, t + δ) until the next residual: the
   // corrector assembles one at every iterate, the converged one last.
   if (status.ok && !have_residual) status = model_.assemble_residual(r_);
@@ -144,14 +143,14 @@ double ArcLengthSolver::distance_from(const std::vector<double>& state) {
 }
 
 ArcLengthPredictor ArcLengthSolver::predict(double t_n, double arc,
-                                            const std::vector<double>& previous_state) {
+                                            const std::vector<double>& previous_state,
+                                            NewtonResult& result) {
   prepare();
   model_.restore_converged();
   model_.get_free(x_n_);
   PLISSE_PETSC(VecCopy(x_n_, x_));
-  NewtonResult ignored;
   ArcLengthPredictor p;
-  if (!tangent(t_n, false, ignored)) {
+  if (!tangent(t_n, false, result)) {
     model_.restore_converged();
     model_.set_time(t_n);
     return p;
@@ -179,12 +178,14 @@ NewtonResult ArcLengthSolver::solve(double t_n, double arc,
   NewtonResult result;
   t = t_n;
   left_ramps_ = false;
-  predictor = predict(t_n, arc, previous_state);
+  predictor = predict(t_n, arc, previous_state, result);
   if (predictor.rate <= 0.0 || !std::isfinite(predictor.load_step)) {
-    result.reason = predictor.rate <= 0.0 && result.reason.empty()
-                        ? "the load does not move the free unknowns (dR/dt = 0, or the tangent "
-                          "at the last converged state could not be factorised)"
-                        : "the predictor is not finite";
+    // The tangent at the converged state failed (result says why), or the load moves nothing.
+    if (result.reason.empty())
+      result.reason = predictor.rate <= 0.0
+                          ? "at the last converged state the load does not move the free "
+                            "unknowns (dR/dt = 0: no load changes with t there)"
+                          : "the predictor is not finite";
     return result;
   }
   // A predictor past end_time (or below 0), where the ramps hold, is shortened to end there: the

@@ -66,8 +66,10 @@ class ArcLengthSolver {
   /// model's converged state.
   double distance_from(const std::vector<double>& state);
   /// The predictor alone (A1) at the model's converged state at `t_n`: what `solve` would start
-  /// with. The model is back at its converged state on return.
-  ArcLengthPredictor predict(double t_n, double arc, const std::vector<double>& previous_state);
+  /// with (rate 0 when the tangent there failed: `result` says why). The model is back at its
+  /// converged state on return.
+  ArcLengthPredictor predict(double t_n, double arc, const std::vector<double>& previous_state,
+                             NewtonResult& result);
   /// `stop` is asked after every iteration; when it says true the solve ends unconverged with
   /// `interrupted` set.
   void set_interrupt(std::function<bool()> stop) { interrupt_ = std::move(stop); }
