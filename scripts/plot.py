@@ -17,6 +17,8 @@ Reads RUN_DIR/history.csv, summary.json and the step files, and writes PNG files
                        wrinkle_map_step_NNNN.png at every step where stability was lost
   wrinkle_unrolled.png the same surface unrolled: arc length around the axis against the axial
                        coordinate (a tube's wrinkles in one view)
+  wrinkle_lines.png    each measurement line's crest height and its crests above the threshold
+                       against the time (runs with output.wrinkles.lines)
 With --y (one or more history columns) and --x (a column, default time) it draws only
 columns.png: each --y column against the --x column. With --line it writes only line.csv and
 line.png: the fields of step K (default the last written) at N points (default 200) of the
@@ -45,8 +47,8 @@ MALFORMED = (ValueError, KeyError, TypeError, IndexError, AttributeError, Unicod
              MemoryError, OverflowError)
 
 FIGURES = ("forces.png", "moments.png", "pressure_volume.png", "newton.png", "wrinkles.png",
-           "wrinkle_map.png", "wrinkle_unrolled.png", "columns.png", "line.png", "line.csv",
-           "line_spectrum.csv")
+           "wrinkle_map.png", "wrinkle_unrolled.png", "wrinkle_lines.png", "columns.png", "line.png",
+           "line.csv", "line_spectrum.csv")
 
 
 def fail(message, status=2):
@@ -318,6 +320,28 @@ def wrinkles_figure(h, out):
     save(fig, os.path.join(out, "wrinkles.png"))
 
 
+def wrinkle_lines_figure(h, out):
+    """wrinkle_lines.png: each measurement line's crest height against t, and its crests counted
+    above the threshold."""
+    names = [c[len("wrinkle_amplitude:"):] for c in h if c.startswith("wrinkle_amplitude:")]
+    if not names:
+        return
+    fig, ax = plt.subplots(figsize=(6.0, 4.2))
+    twin = ax.twinx()
+    for k, name in enumerate(names):
+        color = f"C{k % 10}"
+        ax.plot(h["time"], h["wrinkle_amplitude:" + name], color=color, marker=".", label=name)
+        twin.step(h["time"], h["wrinkle_crests:" + name], color=color, linestyle=":",
+                  where="mid")
+    ax.set_xlabel("time t [–]")
+    ax.set_ylabel("crest height along the line [mm] (solid)")
+    twin.set_ylabel("crests above the threshold (dotted)")
+    twin.yaxis.set_major_locator(MaxNLocator(integer=True))
+    ax.legend(fontsize=8, loc="upper left", title="line")
+    ax.set_title("wrinkles along the measurement lines")
+    save(fig, os.path.join(out, "wrinkle_lines.png"))
+
+
 def case_wrinkle_settings(summary):
     path = summary.get("case_path")
     settings = {}
@@ -444,6 +468,7 @@ def main():
         pressure_volume_figure(h, units, out)
         newton_figure(h, out)
         wrinkles_figure(h, out)
+        wrinkle_lines_figure(h, out)
         wrinkle_maps(run, summary, out)
     except figures.LinkRefused as e:
         fail(str(e))

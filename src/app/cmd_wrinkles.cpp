@@ -167,17 +167,18 @@ MeasuredState measure_last_state(const fs::path& dir, const Case& c, const Mesh&
   return {meter.evaluate(*model, model->element_fields()), checkpoint.steps, checkpoint.time};
 }
 
-/// The table on the terminal: the state measured, each ring's metrics and decision, the tension
-/// field's counts.
+/// The table on the terminal: the state measured, each ring's metrics and decision, each line's,
+/// the tension field's counts.
 void print_wrinkles(const fs::path& dir, const WrinklesOptions& options, const RunRecord& run,
                     const MeasuredState& measured, int checkpoint_steps) {
   const WrinkleMeter::Result& result = measured.result;
   const nlohmann::json& summary = run.summary;
+  double largest = result.rings.max_amplitude;
+  for (const LineReading& line : result.lines) largest = std::max(largest, line.metrics.amplitude);
   std::printf(
       "plisse wrinkles: %s, step %d at t = %g: %s (max amplitude %.4g mm, threshold %.4g mm)\n",
       dir.string().c_str(), measured.step, measured.time,
-      result.rings.wrinkled ? "wrinkled" : "not wrinkled", result.rings.max_amplitude,
-      result.rings.threshold);
+      result.wrinkled() ? "wrinkled" : "not wrinkled", largest, result.rings.threshold);
   std::printf("  written to %s\n", (dir / "wrinkles.json").string().c_str());
   if (options.step < 0 && summary.contains("completed") && summary["completed"] == false)
     std::printf(
@@ -186,8 +187,10 @@ void print_wrinkles(const fs::path& dir, const WrinklesOptions& options, const R
         summary.contains("failure") && summary["failure"].is_string()
             ? (" (it stopped: " + summary["failure"].get<std::string>() + ")").c_str()
             : "");
-  std::printf("  %14s %7s %16s %16s %14s %7s  %s\n", "latitude [deg]", "count", "amplitude [mm]",
-              "wavelength [mm]", "radius [mm]", "points", "decision (dominant m: A_m / E_m)");
+  if (!result.rings.rings.empty())
+    std::printf("  %14s %7s %16s %16s %14s %7s  %s\n", "latitude [deg]", "count",
+                "amplitude [mm]", "wavelength [mm]", "radius [mm]", "points",
+                "decision (dominant m: A_m / E_m)");
   for (const RingMetrics& r : result.rings.rings) {
     // The largest harmonic m >= min_count against the global shape's envelope (wrinkles.md,
     // W15-W16): the ratio that decided, the full spectrum being in summary.json.
@@ -202,6 +205,13 @@ void print_wrinkles(const fs::path& dir, const WrinklesOptions& options, const R
     std::printf("  %14.4g %7d %16.4g %16.4g %14.4g %7d  %s\n", r.latitude_deg, r.count, r.amplitude,
                 r.wavelength, r.mean_radius, r.n_points, why.c_str());
   }
+  if (!result.lines.empty())
+    std::printf("  %14s %7s %16s %16s %16s  %s\n", "line", "crests", "amplitude [mm]",
+                "wavelength [mm]", "deviation [mm]", "wrinkled");
+  for (const LineReading& line : result.lines)
+    std::printf("  %14.14s %7d %16.4g %16.4g %16.4g  %s\n", line.name.c_str(), line.metrics.crests,
+                line.metrics.amplitude, line.metrics.wavelength, line.metrics.deviation,
+                line.wrinkled ? "yes" : "no");
   const auto& n = result.tension.n_elements;
   std::printf("  tension field (elements): %d taut, %d wrinkled, %d slack\n", n[0], n[1], n[2]);
 }
@@ -231,8 +241,9 @@ void recompute_wrinkles(const WrinklesOptions& options) {
   const Checkpoint checkpoint = read_checkpoint(dir / "checkpoint.bin");
   if (!c.output.wrinkles.enabled())
     throw InputError({case_path, 0, 0, "output.wrinkles.rings_deg"},
-                     "no rings to measure: give their latitudes, e.g. --set "
-                     "output.wrinkles.rings_deg=[0,30,60]");
+                     "no rings or lines to measure: give the rings' latitudes, e.g. --set "
+                     "output.wrinkles.rings_deg=[0,30,60], or measurement lines, e.g. --set "
+                     "'output.wrinkles.lines=[{name: a, from: [0,0,0], to: [10,0,0]}]'");
 
   const Mesh mesh = load_perturbed_mesh(c);
   // After the mesh file has passed its reader's checks (type, size): it is hashed whole.

@@ -89,7 +89,7 @@ HistoryColumns::HistoryColumns(const Case& c, const MixedModel& model, const Wri
     });
   if (c.output.wrinkles.enabled()) {
     PLISSE_CHECK(meter, "history: the wrinkle columns need a wrinkle meter");
-    add(WrinkleMeter::history_columns(), [meter](const StepRecord& r, std::vector<double>& row) {
+    add(meter->history_columns(), [meter](const StepRecord& r, std::vector<double>& row) {
       PLISSE_CHECK(r.wrinkles, "history: the wrinkle columns need the step's wrinkle metrics");
       for (double v : meter->history_values(*r.wrinkles)) row.push_back(v);
     });

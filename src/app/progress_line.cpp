@@ -19,7 +19,7 @@ std::string format_duration(double seconds) {
 }
 
 std::string progress_line(const StepInfo& info, const WrinkleReport* wrinkles,
-                          const ProgressClock& clock) {
+                          const ProgressClock& clock, const std::vector<LineReading>* lines) {
   std::string line;
   char part[160];
   std::snprintf(part, sizeof part,
@@ -44,19 +44,27 @@ std::string progress_line(const StepInfo& info, const WrinkleReport* wrinkles,
                   info.zero_pivots == 1 ? "" : "s");
     line += part;
   }
-  if (wrinkles && wrinkles->wrinkled) {
-    const RingMetrics* largest = nullptr;
+  // The wrinkled ring or line of the largest amplitude.
+  double largest = -1.0;
+  std::string wrinkled;
+  if (wrinkles && wrinkles->wrinkled)
     for (const RingMetrics& ring : wrinkles->rings)
-      if (ring.decision == RingDecision::wrinkled &&
-          (!largest || ring.amplitude > largest->amplitude))
-        largest = &ring;
-    if (largest)
-      std::snprintf(part, sizeof part, "  wrinkled (ring %g deg: %d waves, %.3g mm)",
-                    largest->latitude_deg, largest->count, largest->amplitude);
-    else
-      std::snprintf(part, sizeof part, "  wrinkled");
-    line += part;
-  }
+      if (ring.decision == RingDecision::wrinkled && ring.amplitude > largest) {
+        largest = ring.amplitude;
+        std::snprintf(part, sizeof part, "  wrinkled (ring %g deg: %d waves, %.3g mm)",
+                      ring.latitude_deg, ring.count, ring.amplitude);
+        wrinkled = part;
+      }
+  if (lines)
+    for (const LineReading& line : *lines)
+      if (line.wrinkled && line.metrics.amplitude > largest) {
+        largest = line.metrics.amplitude;
+        std::snprintf(part, sizeof part, "  wrinkled (line %.60s: %d crests, %.3g mm)",
+                      line.name.c_str(), line.metrics.crests, line.metrics.amplitude);
+        wrinkled = part;
+      }
+  if (wrinkled.empty() && wrinkles && wrinkles->wrinkled) wrinkled = "  wrinkled";
+  line += wrinkled;
   std::snprintf(part, sizeof part, "  elapsed %.1fs", clock.elapsed);
   line += part;
   const double done = info.time - clock.start_time, to_go = clock.end_time - info.time;

@@ -3,8 +3,10 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <utility>
 
@@ -181,16 +183,18 @@ RunRecorder::RunRecorder(const Case& c, const RunDirectory& directory, RunIdenti
       for (const PvdEntry& e : read_pvd(directory.solution_pvd()))
         if (by_step ? e.time <= resume->steps + 0.5 : e.time <= resume->time * (1.0 + 1e-12))
           pvd_entries.push_back(e);
-      if (root_)
+      if (root_) {
         history_->keep_first_rows(resume->steps);
-      else
+        read_wrinkling_so_far();
+      } else {
         history_.reset();
+      }
     } else if (root_) {
       history_.emplace(directory.history_csv(), columns_.extra_names());
     }
     if (root_) pvd_.emplace(directory.solution_pvd(), pvd_entries);
-    // The spectrum of every written step, cut back like the history on --resume.
-    if (root_ && meter_)
+    // The rings' spectra of every written step, cut back like the history on --resume.
+    if (root_ && meter_ && c.output.wrinkles.has_rings())
       spectrum_.emplace(
           resume ? WrinkleSpectrumWriter::reopen(
                        directory.directory() / WrinkleSpectrumWriter::kFileName, resume->steps)
@@ -215,6 +219,9 @@ void RunRecorder::record(const StepInfo& info) {
   shell_outputs_ = model_.shell_outputs();
   const BodyAverages averages = model_.averages(fields_);
   if (meter_) last_wrinkles_ = meter_->evaluate(model_, fields_);
+  if (case_.solver.stability.check && !info.stable) stable_so_far_ = false;
+  if (last_wrinkles_ && first_wrinkled_.is_null() && last_wrinkles_->wrinkled())
+    note_first_wrinkled(info);
   const std::vector<double> row =
       columns_.row({info, model_, fields_, averages, last_wrinkles_ ? &*last_wrinkles_ : nullptr,
                     model_.mesh().is_shell() ? &shell_outputs_ : nullptr});
@@ -285,6 +292,69 @@ void RunRecorder::check_material_stability(int step) {
       << ": from here on a softening of the material itself may look like wrinkles or buckling "
          "(summary.json material_stability; the stable ranges are in the log's material line)";
   material_warning_ = out.str();
+}
+
+void RunRecorder::note_first_wrinkled(const StepInfo& info) {
+  // The ring or line of the largest amplitude among the wrinkled ones.
+  std::string by, what;
+  double largest = -1.0;
+  char text[200];
+  for (const RingMetrics& ring : last_wrinkles_->rings.rings)
+    if (ring.decision == RingDecision::wrinkled && ring.amplitude > largest) {
+      largest = ring.amplitude;
+      std::snprintf(text, sizeof text, "ring %g deg", ring.latitude_deg);
+      by = text;
+      std::snprintf(text, sizeof text, "%d waves %.3g mm high, wavelength %.4g mm", ring.count,
+                    ring.amplitude, ring.wavelength);
+      what = text;
+    }
+  for (const LineReading& line : last_wrinkles_->lines)
+    if (line.wrinkled && line.metrics.amplitude > largest) {
+      largest = line.metrics.amplitude;
+      by = "line " + line.name;
+      std::snprintf(text, sizeof text, "%d crests %.3g mm high, wavelength %.4g mm",
+                    line.metrics.crests, line.metrics.amplitude, line.metrics.wavelength);
+      what = text;
+    }
+  const bool checked = case_.solver.stability.check;
+  first_wrinkled_ = {{"step", info.step},
+                     {"time", info.time},
+                     {"by", by},
+                     {"stable", checked ? nlohmann::json(stable_so_far_) : nlohmann::json()}};
+  std::snprintf(text, sizeof text, "step %d (t = %.6g): the body has wrinkled: ", info.step,
+                info.time);
+  wrinkle_notice_ = text + by + " has " + what;
+  std::snprintf(text, sizeof text, " (threshold %.3g mm)", last_wrinkles_->rings.threshold);
+  wrinkle_notice_ += text;
+  if (checked && stable_so_far_)
+    wrinkle_notice_ +=
+        ", while the stability check has found every step stable: the wrinkles grew from the "
+        "imperfection or the mesh's own asymmetry without a bifurcation, which the check cannot "
+        "see";
+}
+
+void RunRecorder::read_wrinkling_so_far() {
+  const std::vector<std::string>& names = history_->columns();
+  std::optional<std::size_t> stable;
+  std::vector<std::pair<std::size_t, std::string>> counts;  // column, what it measures
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    if (names[k] == "stable") stable = k;
+    if (names[k] == "wrinkle_count") counts.emplace_back(k, "a ring");
+    if (names[k].starts_with("wrinkle_crests:"))
+      counts.emplace_back(k, "line " + names[k].substr(std::string("wrinkle_crests:").size()));
+  }
+  for (const std::vector<double>& row : history_->rows()) {
+    if (stable && row[*stable] != 1.0) stable_so_far_ = false;
+    if (!first_wrinkled_.is_null()) continue;
+    for (const auto& [k, by] : counts)
+      if (row[k] > 0.0) {
+        first_wrinkled_ = {{"step", static_cast<int>(row[0])},
+                           {"time", row[1]},
+                           {"by", by},
+                           {"stable", stable ? nlohmann::json(stable_so_far_) : nlohmann::json()}};
+        break;
+      }
+  }
 }
 
 std::string RunRecorder::take_material_warning() { return std::exchange(material_warning_, ""); }
@@ -429,7 +499,10 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
                             {"instabilities", instabilities_}};
   }
   if (!watched_.empty()) summary["material_stability"] = material_stability();
-  if (last_wrinkles_) summary["wrinkles"] = wrinkles_json(c, *last_wrinkles_);
+  if (last_wrinkles_) {
+    summary["wrinkles"] = wrinkles_json(c, *last_wrinkles_);
+    summary["wrinkles"]["first_wrinkled"] = first_wrinkled_;
+  }
   for (const HistoryColumns::ProbePoint& p : columns_.probe_points()) {
     const auto xyz = [](const Vec3d& v) { return nlohmann::json::array({v[0], v[1], v[2]}); };
     summary["probes"].push_back({{"name", p.name},

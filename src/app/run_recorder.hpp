@@ -78,6 +78,9 @@ class RunRecorder {
   std::vector<std::pair<std::string, double>> last_loads() const;
   /// The wrinkle metrics of the last recorded step, when the case measures them.
   const std::optional<WrinkleMeter::Result>& last_wrinkles() const { return last_wrinkles_; }
+  /// The notice of the first recorded step at which a ring or line is wrinkled (what, how much,
+  /// and whether the stability check found every step so far stable), once; empty otherwise.
+  std::string take_wrinkle_notice() { return std::exchange(wrinkle_notice_, ""); }
   /// Time spent computing and writing output so far [s].
   double output_seconds() const { return output_seconds_; }
 
@@ -100,6 +103,10 @@ class RunRecorder {
   /// The VTU file of `info`'s step, whose state the model holds; `step_start` is the state at the
   /// start of that step (for the step velocity).
   void write_step_files(const StepInfo& info, const std::vector<double>& step_start);
+  /// Records the first wrinkled step (summary.json wrinkles.first_wrinkled) and its notice.
+  void note_first_wrinkled(const StepInfo& info);
+  /// A resumed run's first wrinkled step and stability so far, from the history's kept rows.
+  void read_wrinkling_so_far();
   /// Drucker's condition at every element's state; the warning at the first failure.
   void check_material_stability(int step);
   nlohmann::json summary(const SteppingResult& result, const StartTimes& times, double memory_total,
@@ -118,7 +125,7 @@ class RunRecorder {
   HistoryColumns columns_;
   std::optional<HistoryWriter> history_;  ///< rank 0's
   std::optional<PvdWriter> pvd_;          ///< rank 0's
-  /// Rank 0's wrinkle_spectrum.csv, when the case measures wrinkles: a block per written step.
+  /// Rank 0's wrinkle_spectrum.csv, when the case measures rings: a block per written step.
   std::optional<WrinkleSpectrumWriter> spectrum_;
   /// Element fields (stress, J) of the last recorded step: computed once per step for the
   /// history, the wrinkle metrics and the VTU file.
@@ -145,6 +152,11 @@ class RunRecorder {
   int unstable_elements_ = 0;       ///< at the last recorded step
   int most_unstable_elements_ = 0;  ///< over the recorded steps
   std::string material_warning_;
+  /// summary.json's wrinkles.first_wrinkled: null until a ring or line is wrinkled.
+  nlohmann::json first_wrinkled_;
+  /// The stability check has found every recorded step stable (true without the check).
+  bool stable_so_far_ = true;
+  std::string wrinkle_notice_;
   int last_written_ = -1;
   int accepted_newton_iterations_ = 0;  ///< over the steps recorded by this run
   double output_seconds_ = 0.0;

@@ -212,7 +212,8 @@ StabilityCheckSettings stability_check_settings(const Case& c) {
   return o;
 }
 
-WrinkleMeter::WrinkleMeter(const Case& c, const Mesh& mesh) : surface_(c.output.wrinkles.surface) {
+WrinkleMeter::WrinkleMeter(const Case& c, const Mesh& mesh)
+    : rings_(c.output.wrinkles.has_rings()), surface_(c.output.wrinkles.surface) {
   const WrinkleSettings& w = c.output.wrinkles;
   options_.rings.axis = w.axis - 'x';
   options_.rings.center = w.center;
@@ -230,6 +231,14 @@ WrinkleMeter::WrinkleMeter(const Case& c, const Mesh& mesh) : surface_(c.output.
     columns_ = assign_columns(mesh.nodes, mesh.tets, triangles_);
   triangle_area_.reserve(triangles_.size());
   for (const auto& t : triangles_) triangle_area_.push_back(triangle_area(mesh, t));
+  for (const WrinkleLine& line : w.lines)
+    lines_.push_back({line.name, line.min_crests,
+                      LineGauge(mesh, line.from, line.to, line.points, line.mirror)});
+}
+
+bool WrinkleMeter::Result::wrinkled() const {
+  return rings.wrinkled || std::any_of(lines.begin(), lines.end(),
+                                       [](const LineReading& line) { return line.wrinkled; });
 }
 
 WrinkleMeter::Result WrinkleMeter::evaluate(const MixedModel& model,
@@ -247,7 +256,17 @@ WrinkleMeter::Result WrinkleMeter::evaluate(const Mesh& mesh, const std::vector<
                                             const std::vector<Mat3d>& sigma,
                                             const std::vector<double>& J) const {
   Result r;
-  r.rings = evaluate_wrinkles(mesh.nodes, ring_triangles_, u, options_);
+  if (rings_) {
+    r.rings = evaluate_wrinkles(mesh.nodes, ring_triangles_, u, options_);
+  } else {
+    r.rings.threshold = options_.threshold_fraction * options_.thickness;
+  }
+  // W27: a line is wrinkled when it has crests and their height passes the rings' threshold.
+  for (const Line& line : lines_) {
+    const LineSamples samples = line.gauge.samples(u);
+    const LineMetrics m = measure_line(samples.s, samples.x, line.min_crests);
+    r.lines.push_back({line.name, m, m.crests > 0 && m.amplitude > r.rings.threshold});
+  }
   if (mesh.is_shell())
     r.tension = compute_shell_tension_field(mesh.nodes, mesh.triangles, shell_surface_, u, sigma);
   else
@@ -255,9 +274,15 @@ WrinkleMeter::Result WrinkleMeter::evaluate(const Mesh& mesh, const std::vector<
   return r;
 }
 
-std::vector<std::string> WrinkleMeter::history_columns() {
-  return {"wrinkle_amplitude", "wrinkle_count", "wrinkle_peak_count", "wrinkled_fraction",
-          "slack_fraction"};
+std::vector<std::string> WrinkleMeter::history_columns() const {
+  std::vector<std::string> names;
+  if (rings_) names = {"wrinkle_amplitude", "wrinkle_count", "wrinkle_peak_count"};
+  names.insert(names.end(), {"wrinkled_fraction", "slack_fraction"});
+  for (const Line& line : lines_)
+    for (const char* stem : {"wrinkle_crests:", "wrinkle_peak_crests:", "wrinkle_amplitude:",
+                             "wrinkle_wavelength:"})
+      names.push_back(stem + line.name);
+  return names;
 }
 
 std::vector<double> WrinkleMeter::history_values(const Result& r) const {
@@ -278,8 +303,16 @@ std::vector<double> WrinkleMeter::history_values(const Result& r) const {
     if (r.tension.triangle_state[t] == MembraneState::slack) slack += triangle_area_[t];
   }
   const double scale = total > 0.0 ? 1.0 / total : 0.0;
-  return {r.rings.max_amplitude, static_cast<double>(wrinkled_count), static_cast<double>(count),
-          wrinkled * scale, slack * scale};
+  std::vector<double> values;
+  if (rings_)
+    values = {r.rings.max_amplitude, static_cast<double>(wrinkled_count),
+              static_cast<double>(count)};
+  values.insert(values.end(), {wrinkled * scale, slack * scale});
+  for (const LineReading& line : r.lines)
+    values.insert(values.end(), {line.wrinkled ? static_cast<double>(line.metrics.crests) : 0.0,
+                                 static_cast<double>(line.metrics.crests), line.metrics.amplitude,
+                                 line.metrics.wavelength});
+  return values;
 }
 
 nlohmann::json wrinkles_json(const Case& c, const WrinkleMeter::Result& r) {
@@ -302,8 +335,27 @@ nlohmann::json wrinkles_json(const Case& c, const WrinkleMeter::Result& r) {
                      {"sector_deg", ring.sector_deg},
                      {"spectrum", spectrum}});
   }
+  nlohmann::json lines = nlohmann::json::array();
+  for (std::size_t k = 0; k < r.lines.size(); ++k) {
+    const WrinkleLine& line = c.output.wrinkles.lines[k];
+    const LineMetrics& m = r.lines[k].metrics;
+    lines.push_back({{"name", line.name},
+                     {"wrinkled", r.lines[k].wrinkled},
+                     {"crests", m.crests},
+                     {"amplitude", m.amplitude},
+                     {"wavelength", m.wavelength},
+                     {"reference_wavelength", m.reference_wavelength},
+                     {"deviation", m.deviation},
+                     {"from", {line.from.x(), line.from.y(), line.from.z()}},
+                     {"to", {line.to.x(), line.to.y(), line.to.z()}},
+                     {"points", line.points},
+                     {"min_crests", line.min_crests},
+                     {"mirror", line.mirror == LineMirror::from ? "from"
+                                : line.mirror == LineMirror::to ? "to"
+                                                                : "none"}});
+  }
   const auto& n = r.tension.n_elements;
-  return {{"wrinkled", r.rings.wrinkled},
+  return {{"wrinkled", r.wrinkled()},
           {"max_amplitude", r.rings.max_amplitude},
           {"threshold", r.rings.threshold},
           {"peak_ratio", c.output.wrinkles.peak_ratio},
@@ -312,6 +364,7 @@ nlohmann::json wrinkles_json(const Case& c, const WrinkleMeter::Result& r) {
           {"axis", std::string(1, c.output.wrinkles.axis)},
           {"surface", c.output.wrinkles.surface},
           {"rings", rings},
+          {"lines", lines},
           {"tension_field",
            {{"taut", n[static_cast<int>(MembraneState::taut)]},
             {"wrinkled", n[static_cast<int>(MembraneState::wrinkled)]},

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "analysis/tension_field.hpp"
+#include "analysis/wrinkle_lines.hpp"
 #include "analysis/wrinkle_rings.hpp"
 #include "case/case.hpp"
 #include "mesh/mesh.hpp"
@@ -39,8 +40,11 @@ class WrinkleMeter {
   WrinkleMeter(const Case& c, const Mesh& mesh);
 
   struct Result {
-    WrinkleReport rings;
+    WrinkleReport rings;              ///< no rings without output.wrinkles.rings_deg
+    std::vector<LineReading> lines;   ///< in the order of output.wrinkles.lines
     TensionField tension;
+    /// A ring or a line is wrinkled (wrinkles.md, W14, W27).
+    bool wrinkled() const;
   };
   /// Metrics of the model's current state, whose element_fields() are `fields`.
   Result evaluate(const MixedModel& model, const std::vector<ElementFields>& fields) const;
@@ -50,17 +54,26 @@ class WrinkleMeter {
   Result evaluate(const Mesh& mesh, const std::vector<Vec3d>& u, const std::vector<Mat3d>& sigma,
                   const std::vector<double>& J) const;
 
-  /// History columns and their values: wrinkle_amplitude (largest ring wrinkle amplitude, mm;
-  /// 0 when no ring has a wrinkle peak), wrinkle_count (count of that ring when its amplitude is
-  /// above the threshold, else 0), wrinkle_peak_count (count of that ring, threshold or not; 0
-  /// when no ring has a wrinkle peak), wrinkled_fraction (outer area fraction in the wrinkled
-  /// state), slack_fraction.
-  static std::vector<std::string> history_columns();
+  /// History columns and their values. With rings: wrinkle_amplitude (largest ring wrinkle
+  /// amplitude, mm; 0 when no ring has a wrinkle peak), wrinkle_count (count of that ring when its
+  /// amplitude is above the threshold, else 0), wrinkle_peak_count (count of that ring, threshold
+  /// or not; 0 when no ring has a wrinkle peak). Always: wrinkled_fraction (outer area fraction in
+  /// the wrinkled state), slack_fraction. Per line: wrinkle_crests:<line> (its crests when it is
+  /// wrinkled, else 0), wrinkle_peak_crests:<line> (threshold or not), wrinkle_amplitude:<line>,
+  /// wrinkle_wavelength:<line> (mm, along the deformed line).
+  std::vector<std::string> history_columns() const;
   std::vector<double> history_values(const Result& r) const;
 
  private:
   WrinkleMeasureSettings options_;
+  bool rings_ = false;  ///< the case measures rings
   std::string surface_;
+  struct Line {
+    std::string name;
+    int min_crests = 4;
+    LineGauge gauge;
+  };
+  std::vector<Line> lines_;
   std::vector<std::array<int, 3>> triangles_;       ///< the surface's corner triangles
   std::vector<std::array<int, 3>> ring_triangles_;  ///< sampling_triangles of the surface
   std::vector<int> columns_;        ///< solid meshes: the triangle of each tetrahedron's column
@@ -71,8 +84,10 @@ class WrinkleMeter {
 /// The summary.json table: {"wrinkled", "max_amplitude", "threshold", "peak_ratio",
 /// "min_count", "thickness", "axis", "surface", "rings": [{"latitude_deg", "decision", "count",
 /// "amplitude", "wavelength", "dominant_count", "residual_amplitude", "band", "mean_radius",
-/// "points", "sector_deg", "spectrum": [[m, A_m, E_m], ...]}], "tension_field": {"taut",
-/// "wrinkled", "slack"} (element counts)} (docs/case-file.md, "Wrinkle metrics").
+/// "points", "sector_deg", "spectrum": [[m, A_m, E_m], ...]}], "lines": [{"name", "wrinkled",
+/// "crests", "amplitude", "wavelength", "reference_wavelength", "deviation", "from", "to",
+/// "points", "min_crests"}], "tension_field": {"taut", "wrinkled", "slack"} (element counts)}
+/// (docs/case-file.md, "Wrinkle metrics").
 nlohmann::json wrinkles_json(const Case& c, const WrinkleMeter::Result& r);
 
 /// wrinkle_spectrum.csv of a run directory (docs/case-file.md, "Wrinkle metrics"): each ring's

@@ -33,23 +33,6 @@ const Choices<ElementFamily> kElementFamilies{{"mini", ElementFamily::mini},
                                               {"taylor-hood", ElementFamily::taylor_hood},
                                               {"shell", ElementFamily::shell}};
 
-/// A list of entries, each a map read by `entry`.
-template <class S, class E>
-typename Schema<S>::Row& list_key(Schema<S>& schema, std::string key,
-                                  std::type_identity_t<std::vector<E> S::*> member,
-                                  const Schema<E>& entry, std::string help) {
-  auto& row = schema.add({std::move(key), "list", "", "", "empty", {}, std::move(help)},
-                         [member, entry](const Field& f, S& s, ReadContext& context) {
-                           for (const Field& item : f.items()) {
-                             E e;
-                             entry.read(item, e, context);
-                             (s.*member).push_back(std::move(e));
-                           }
-                         });
-  row.nested = entry.doc();
-  return row;
-}
-
 /// A term section (terms/term_kind.hpp): a list of entries, each read by its kind.
 void term_list_key(Schema<Case>& schema, const std::string& key) {
   auto& row = schema.add({key, "list", "", "", "empty", {}, term_section(key).help},

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "analysis/point_location.hpp"
+#include "analysis/wrinkle_lines.hpp"
 #include "analysis/wall_thickness.hpp"
 #include "case/case.hpp"
 #include "mesh/gmsh_io.hpp"
@@ -249,6 +250,30 @@ void check_wall_thickness(const Case& c) {
                      "the wrinkle threshold is relative to the wall thickness: " + why);
 }
 
+/// A measurement line lies in the body: each of its samples within half the wall thickness of the
+/// mesh (a line on a curved wall misses its flat facets by their sag; of a shell, it lies on the
+/// mid-surface).
+void check_wrinkle_line(const Case& c, const Mesh& mesh, const WrinkleLine& line) {
+  const std::string what = "output.wrinkles.lines '" + line.name + "'";
+  for (const auto& [end, place] : {std::pair{line.from, line.from_place}, {line.to, line.to_place}})
+    if (!(end.cwiseAbs().maxCoeff() <= kMaxCoordinate))
+      throw InputError(place, what + ": the point " + schema::format_vector(end) +
+                                  " lies beyond ±" + format_number(kMaxCoordinate) +
+                                  " mm, far off the body: give a line in the body");
+  const LineGauge gauge(mesh, line.from, line.to, line.points);
+  const double allowed = 0.5 * *c.mesh.wall_thickness();
+  const LineGauge::Outside& out = gauge.outside();
+  if (out.distance > allowed)
+    throw InputError(line.place,
+                     what + ": its point " + std::to_string(out.index + 1) + " of " +
+                         std::to_string(line.points) + ", " + schema::format_vector(out.point) +
+                         ", is " + format_number(out.distance) +
+                         " mm from the body, more than half the wall thickness (" +
+                         format_number(allowed) + " mm): give a line " +
+                         (mesh.is_shell() ? "on the mid-surface" : "inside the body") +
+                         " of the undeformed body");
+}
+
 }  // namespace
 
 std::vector<int> region_elements(const Region& region, const Mesh& mesh) {
@@ -376,6 +401,7 @@ void check_case_against_mesh(const Case& c, const Mesh& mesh) {
   if (c.output.wrinkles.enabled()) {
     const WrinkleSettings& w = c.output.wrinkles;
     check_surface(c, mesh, {w.surface, w.surface_place.line > 0 ? w.surface_place : w.place});
+    for (const WrinkleLine& line : w.lines) check_wrinkle_line(c, mesh, line);
   }
 
   const MeshReport report = check_mesh(mesh);

@@ -1,4 +1,7 @@
 // The `output:` section and its `wrinkles` table.
+#include <string>
+#include <tuple>
+
 #include "analysis/wrinkle_rings.hpp"
 #include "case/sections.hpp"
 #include "schema/field.hpp"
@@ -13,6 +16,52 @@ const Range kLatitude{-90.0, 90.0, true, true};
 const Choices<char> kAxes{{"x", 'x'}, {"y", 'y'}, {"z", 'z'}};
 
 }  // namespace
+
+/// `output.wrinkles.lines` items.
+Schema<WrinkleLine> wrinkle_line_schema() {
+  Schema<WrinkleLine> s;
+  s.place(&WrinkleLine::place, false);
+  name_key(s, &WrinkleLine::name,
+           "names the line's history columns (`wrinkle_crests:<name>`, ...) and its entry in "
+           "summary.json")
+      .required();
+  for (const auto& [key, member, place] :
+       {std::tuple{"from", &WrinkleLine::from, &WrinkleLine::from_place},
+        std::tuple{"to", &WrinkleLine::to, &WrinkleLine::to_place}})
+    s.add({key,
+           "vector",
+           "mm",
+           "",
+           "",
+           {},
+           std::string(key == std::string("from") ? "one end" : "the other end") +
+               " of the line, a point of the undeformed body (of a shell, of its mid-surface)"},
+          [member, place](const Field& f, WrinkleLine& line, ReadContext&) {
+            line.*member = f.vec3();
+            line.*place = f.place();
+          })
+        .required();
+  s.integer("points", &WrinkleLine::points, Range::closed(16, 20000),
+            "points sampled along the line, equally spaced; a wavelength needs about 10 of them");
+  s.integer("min_crests", &WrinkleLine::min_crests, Range::at_least(1),
+            "fewer crests and troughs along the line are a smooth change of its shape, not "
+            "wrinkles (docs/theory/wrinkles.md, W24)");
+  s.choice<LineMirror>("mirror", &WrinkleLine::mirror,
+                       {{"none", LineMirror::none},
+                        {"from", LineMirror::from},
+                        {"to", LineMirror::to}},
+                       "the end that lies on a mirror plane of the model, which the line crosses at "
+                       "a right angle: the line is measured with its mirror image beyond that end, "
+                       "as the whole body has it, so a crest on the plane counts (W21)");
+  s.rule("`from` and `to` are different points",
+         [](const FieldMap&, const WrinkleLine& line, const ReadContext&) {
+           if (line.from == line.to)
+             throw InputError(line.to_place, "the line's two ends are the same point " +
+                                                 schema::format_vector(line.from) +
+                                                 ": give a line of positive length");
+         });
+  return s;
+}
 
 /// `output.wrinkles`.
 Schema<WrinkleSettings> wrinkle_schema() {
@@ -31,7 +80,7 @@ Schema<WrinkleSettings> wrinkle_schema() {
          "latitudes of the rings (0 is the equator; ±90 would be a single point)"},
         [](const Field& f, WrinkleSettings& w, ReadContext&) { w.rings_deg = f.reals(kLatitude); });
   s.real("threshold", &WrinkleSettings::threshold, Range::positive(), "–",
-         "a ring is wrinkled when its amplitude exceeds threshold × wall thickness");
+         "a ring or line is wrinkled when its amplitude exceeds threshold × wall thickness");
   // The rings' spectra reach the full-circle count max_count: a larger min_count leaves nothing
   // to measure.
   s.integer("min_count", &WrinkleSettings::min_count, Range::closed(1, RingSettings{}.max_count),
@@ -52,6 +101,10 @@ Schema<WrinkleSettings> wrinkle_schema() {
           w.surface = f.text();
           w.surface_place = f.place();
         });
+  list_key(s, "lines", &WrinkleSettings::lines, wrinkle_line_schema(),
+           "measurement lines: straight segments of the undeformed body along which the crests "
+           "of wrinkles are counted, with their height and wavelength (docs/theory/wrinkles.md, "
+           "W20-W26): a tube's generator, a sheet's width, a film's length");
   return s;
 }
 

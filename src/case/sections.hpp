@@ -24,6 +24,23 @@ using schema::ReadContext;
 using schema::Schema;
 using namespace term_keys;
 
+/// A list of entries, each a map read by `entry`.
+template <class S, class E>
+typename Schema<S>::Row& list_key(Schema<S>& schema, std::string key,
+                                  std::type_identity_t<std::vector<E> S::*> member,
+                                  const Schema<E>& entry, std::string help) {
+  auto& row = schema.add({std::move(key), "list", "", "", "empty", {}, std::move(help)},
+                         [member, entry](const Field& f, S& s, ReadContext& context) {
+                           for (const Field& item : f.items()) {
+                             E e;
+                             entry.read(item, e, context);
+                             (s.*member).push_back(std::move(e));
+                           }
+                         });
+  row.nested = entry.doc();
+  return row;
+}
+
 /// `mesh:`. Its variant is which of `file` and `generate` is given; the generators' options come
 /// from the mesh registry (mesh_kinds) and are read by read_mesh.
 schema::Schema<MeshSection> mesh_schema();

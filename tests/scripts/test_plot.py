@@ -2,7 +2,8 @@
 exactly those columns, with their units; moments.png draws each cap's largest moment component;
 a column the history lacks, or --x without --y, is refused with exit status 2; the fields along a
 line (plisse_study.lines, --line) are sampled exactly where the element's shape functions hold
-the field, and written to line.csv."""
+the field, and written to line.csv; wrinkle_lines.png draws each measurement line's crest height
+and crests."""
 import os
 import subprocess
 import sys
@@ -77,6 +78,19 @@ class FiguresTest(unittest.TestCase):
         ax = self.captured.figures["moments.png"].axes[0]
         self.assertEqual([line.get_label() for line in ax.lines], ["moment_y:tip"])
         self.assertEqual(ax.get_ylabel(), "moment [N mm]")
+
+    def test_wrinkle_lines_draw_each_lines_height_and_crests(self):
+        header = ["step", "time", "wrinkle_crests:across", "wrinkle_peak_crests:across",
+                  "wrinkle_amplitude:across", "wrinkle_wavelength:across"]
+        rows = [[k, 0.25 * k, 0 if k < 3 else 7, 7, 0.01 * k, 3.0] for k in range(1, 5)]
+        fx.write_history(self.run, header, rows)
+        plot.wrinkle_lines_figure(runs.read_history(self.run), self.dir.name)
+        ax, twin = self.captured.figures["wrinkle_lines.png"].axes
+        self.assertEqual([line.get_label() for line in ax.lines], ["across"])
+        np.testing.assert_array_equal(ax.lines[0].get_ydata(), [0.01, 0.02, 0.03, 0.04])
+        np.testing.assert_array_equal(twin.lines[0].get_ydata(), [0, 0, 7, 7])
+        plot.wrinkle_lines_figure(self.h, self.dir.name + "/none")
+        self.assertEqual(list(self.captured.figures), ["wrinkle_lines.png"])
 
     def test_no_moments_no_figure(self):
         fx.write_history(self.run, HEADER[:7], [r[:7] for r in ROWS])

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -670,7 +671,7 @@ TEST(ModelBuilder, WrinkleCountIsZeroBelowTheThresholdWhereThePeakCountIsNot) {
       "c.yaml");
   const Mesh mesh = load_case_mesh(c);
   const WrinkleMeter meter(c, mesh);
-  const std::vector<std::string> names = WrinkleMeter::history_columns();
+  const std::vector<std::string> names = meter.history_columns();
   const auto value = [&](const std::vector<double>& row, const std::string& name) {
     const auto at = std::find(names.begin(), names.end(), name);
     EXPECT_NE(at, names.end()) << name;
@@ -688,6 +689,48 @@ TEST(ModelBuilder, WrinkleCountIsZeroBelowTheThresholdWhereThePeakCountIsNot) {
     EXPECT_NEAR(amplitude, 2.0 * a, 0.05 * 2.0 * a) << "a = " << a;
     EXPECT_EQ(value(row, "wrinkle_peak_count"), a > 0.0 ? 12.0 : 0.0) << "a = " << a;
     EXPECT_EQ(value(row, "wrinkle_count"), 2.0 * a > 0.02 ? 12.0 : 0.0) << "a = " << a;
+  }
+}
+
+
+// A measurement line (docs/theory/wrinkles.md, W20-W27) on a shell sheet 50 x 20 mm, t = 0.2 mm,
+// moved out of its plane by a sin(2 pi 5 x / 50): 10 crests, wavelength 10 mm, height 2a, seen
+// along y = 5 on 0.5 mm triangles (20 to a wave: the height within 1.2 %). wrinkle_crests counts
+// them only above the threshold 0.1 t = 0.02 mm, wrinkle_peak_crests at any height; the flat
+// sheet has none. Without rings the meter writes no ring columns.
+TEST(ModelBuilder, LineColumnsCountCrestsOnlyAboveTheThreshold) {
+  const Case c = parse_case_string(
+      "element: shell\n"
+      "mesh: {generate: sheet, length: 50, width: 20, thickness: 0.2, element_size: 0.5}\n"
+      "material: {model: neo-hookean, c1: 0.5}\n"
+      "output: {wrinkles: {surface: top,\n"
+      "                    lines: [{name: across, from: [0, 5, 0.1], to: [50, 5, 0.1]}]}}\n",
+      "c.yaml");
+  const Mesh mesh = load_case_mesh(c);
+  check_case_against_mesh(c, mesh);
+  const WrinkleMeter meter(c, mesh);
+  const std::vector<std::string> names = meter.history_columns();
+  EXPECT_EQ(names, (std::vector<std::string>{"wrinkled_fraction", "slack_fraction",
+                                             "wrinkle_crests:across", "wrinkle_peak_crests:across",
+                                             "wrinkle_amplitude:across",
+                                             "wrinkle_wavelength:across"}));
+  const std::vector<Mat3d> sigma(mesh.triangles.size(), Mat3d::Zero());
+  for (const double a : {0.0, 0.005, 0.05}) {
+    std::vector<Vec3d> u(mesh.nodes.size());
+    for (std::size_t j = 0; j < mesh.nodes.size(); ++j)
+      u[j] = Vec3d(0.0, 0.0, a * std::sin(2.0 * std::numbers::pi * mesh.nodes[j].x() / 10.0));
+    const WrinkleMeter::Result r = meter.evaluate(mesh, u, sigma, {});
+    const std::vector<double> row = meter.history_values(r);
+    ASSERT_EQ(row.size(), names.size());
+    const bool above = 2.0 * a > 0.02;
+    EXPECT_EQ(row[2], above ? 10.0 : 0.0) << "a = " << a;
+    EXPECT_EQ(row[3], a > 0.0 ? 10.0 : 0.0) << "a = " << a;
+    EXPECT_NEAR(row[4], 2.0 * a, 0.012 * 2.0 * a) << "a = " << a;
+    if (a > 0.0) {
+      EXPECT_NEAR(row[5], 10.0, 0.001 * 10.0) << "a = " << a;
+    }
+    EXPECT_EQ(r.wrinkled(), above) << "a = " << a;
+    EXPECT_EQ(wrinkles_json(c, r)["lines"][0]["wrinkled"], above);
   }
 }
 

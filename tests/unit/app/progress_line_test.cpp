@@ -102,6 +102,33 @@ TEST(ProgressLine, CutBacksStabilityAndTheLargestWrinkledRing) {
   EXPECT_FALSE(has(calm, "wrinkled")) << calm;
 }
 
+// A wrinkled line (docs/theory/wrinkles.md, W27) higher than every wrinkled ring is the one named;
+// a line below the threshold is not, however high.
+TEST(ProgressLine, TheLargestWrinkledLineOrRing) {
+  const StepInfo info = step_at(0.5);
+  WrinkleReport report;
+  report.wrinkled = true;
+  RingMetrics ring;
+  ring.latitude_deg = 30;
+  ring.count = 12;
+  ring.amplitude = 0.0123;
+  ring.decision = RingDecision::wrinkled;
+  report.rings = {ring};
+  LineReading across{"across", {}, true}, noise{"noise", {}, false};
+  across.metrics.crests = 7;
+  across.metrics.amplitude = 0.114;
+  noise.metrics.crests = 31;
+  noise.metrics.amplitude = 0.5;
+  const std::vector<LineReading> lines = {across, noise};
+  const std::string line = progress_line(info, &report, {5.0, 5.0, 0.0, 1.0}, &lines);
+  EXPECT_TRUE(has(line, "  wrinkled (line across: 7 crests, 0.114 mm)  elapsed")) << line;
+  const std::vector<LineReading> low = {noise};
+  const std::string ringed = progress_line(info, &report, {5.0, 5.0, 0.0, 1.0}, &low);
+  EXPECT_TRUE(has(ringed, "wrinkled (ring 30 deg: 12 waves, 0.0123 mm)")) << ringed;
+  report.wrinkled = false;
+  EXPECT_FALSE(has(progress_line(info, &report, {5.0, 5.0, 0.0, 1.0}, &low), "wrinkled"));
+}
+
 TEST(ProgressLine, DurationsReadAsSecondsMinutesOrHours) {
   EXPECT_EQ(format_duration(0.4), "0s");
   EXPECT_EQ(format_duration(42.4), "42s");
