@@ -188,9 +188,8 @@ void print_wrinkles(const fs::path& dir, const WrinklesOptions& options, const R
             ? (" (it stopped: " + summary["failure"].get<std::string>() + ")").c_str()
             : "");
   if (!result.rings.rings.empty())
-    std::printf("  %14s %7s %16s %16s %14s %7s  %s\n", "latitude [deg]", "count",
-                "amplitude [mm]", "wavelength [mm]", "radius [mm]", "points",
-                "decision (dominant m: A_m / E_m)");
+    std::printf("  %14s %7s %16s %16s %14s %7s  %s\n", "latitude [deg]", "count", "amplitude [mm]",
+                "wavelength [mm]", "radius [mm]", "points", "decision (dominant m: A_m / E_m)");
   for (const RingMetrics& r : result.rings.rings) {
     // The largest harmonic m >= min_count against the global shape's envelope (wrinkles.md,
     // W15-W16): the ratio that decided, the full spectrum being in summary.json.

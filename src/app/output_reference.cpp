@@ -312,15 +312,15 @@ const std::vector<OutputEntry> kSummary = {
     {"wrinkles.lines[].min_crests", "–", "`output.wrinkles.lines`", "the option `min_crests`"},
     {"wrinkles.lines[].mirror", "–", "`output.wrinkles.lines`",
      "the option `mirror`: the end measured with its mirror image"},
-    {"wrinkles.first_wrinkled", "–", "`output.wrinkles`",
+    {"first_wrinkled", "–", "`output.wrinkles`",
      "the first recorded step at which a ring or line was wrinkled (null if none was): the "
      "keys below"},
-    {"wrinkles.first_wrinkled.step", "–", "`output.wrinkles`", "its step"},
-    {"wrinkles.first_wrinkled.time", "s", "`output.wrinkles`", "its time (load parameter)"},
-    {"wrinkles.first_wrinkled.by", "–", "`output.wrinkles`",
+    {"first_wrinkled.step", "–", "`output.wrinkles`", "its step"},
+    {"first_wrinkled.time", "s", "`output.wrinkles`", "its time (load parameter)"},
+    {"first_wrinkled.by", "–", "`output.wrinkles`",
      "what was wrinkled: `ring <latitude> deg` or `line <name>`, the one of the largest "
      "amplitude"},
-    {"wrinkles.first_wrinkled.stable", "–", "`output.wrinkles`",
+    {"first_wrinkled.stable", "–", "`output.wrinkles`",
      "with `solver.stability.check`, whether the stability check found every step up to it "
      "stable: true means the wrinkles grew without a bifurcation, from the imperfection or the "
      "mesh's own asymmetry (null without the check)"},

@@ -1,7 +1,6 @@
 #pragma once
 /// The progress line `plisse run` prints (and writes to log.txt) after every converged step.
 #include <string>
-
 #include <vector>
 
 #include "analysis/wrinkle_lines.hpp"

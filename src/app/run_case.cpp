@@ -282,11 +282,10 @@ SteppingResult step_to_the_end(const RunContext& run, RunSolver& solver, RunReco
     if (const std::string w = recorder.take_material_warning(); !w.empty()) log.warn(w);
     if (const std::string w = recorder.take_wrinkle_notice(); !w.empty()) log.info(w);
     const auto& wrinkles = recorder.last_wrinkles();
-    log.info(progress_line(
-        info, wrinkles ? &wrinkles->rings : nullptr,
-        {seconds_since(run.start), seconds_since(stepping_start), start_time, run.c.solver.end_time,
-         run.c.solver.control == StepControl::arc_length},
-        wrinkles ? &wrinkles->lines : nullptr));
+    log.info(progress_line(info, wrinkles ? &wrinkles->rings : nullptr,
+                           {seconds_since(run.start), seconds_since(stepping_start), start_time,
+                            run.c.solver.end_time, run.c.solver.control == StepControl::arc_length},
+                           wrinkles ? &wrinkles->lines : nullptr));
     recorder.checkpoint_when_due(info.step);
     out.flush_log();
   };

@@ -499,10 +499,9 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
                             {"instabilities", instabilities_}};
   }
   if (!watched_.empty()) summary["material_stability"] = material_stability();
-  if (last_wrinkles_) {
-    summary["wrinkles"] = wrinkles_json(c, *last_wrinkles_);
-    summary["wrinkles"]["first_wrinkled"] = first_wrinkled_;
-  }
+  // The state's metrics, which `plisse wrinkles DIR` reproduces, and the run's first wrinkled step.
+  if (last_wrinkles_) summary["wrinkles"] = wrinkles_json(c, *last_wrinkles_);
+  if (c.output.wrinkles.enabled()) summary["first_wrinkled"] = first_wrinkled_;
   for (const HistoryColumns::ProbePoint& p : columns_.probe_points()) {
     const auto xyz = [](const Vec3d& v) { return nlohmann::json::array({v[0], v[1], v[2]}); };
     summary["probes"].push_back({{"name", p.name},

@@ -103,7 +103,7 @@ class RunRecorder {
   /// The VTU file of `info`'s step, whose state the model holds; `step_start` is the state at the
   /// start of that step (for the step velocity).
   void write_step_files(const StepInfo& info, const std::vector<double>& step_start);
-  /// Records the first wrinkled step (summary.json wrinkles.first_wrinkled) and its notice.
+  /// Records the first wrinkled step (summary.json first_wrinkled) and its notice.
   void note_first_wrinkled(const StepInfo& info);
   /// A resumed run's first wrinkled step and stability so far, from the history's kept rows.
   void read_wrinkling_so_far();
@@ -152,7 +152,7 @@ class RunRecorder {
   int unstable_elements_ = 0;       ///< at the last recorded step
   int most_unstable_elements_ = 0;  ///< over the recorded steps
   std::string material_warning_;
-  /// summary.json's wrinkles.first_wrinkled: null until a ring or line is wrinkled.
+  /// summary.json's first_wrinkled: null until a ring or line is wrinkled.
   nlohmann::json first_wrinkled_;
   /// The stability check has found every recorded step stable (true without the check).
   bool stable_so_far_ = true;

@@ -279,8 +279,8 @@ std::vector<std::string> WrinkleMeter::history_columns() const {
   if (rings_) names = {"wrinkle_amplitude", "wrinkle_count", "wrinkle_peak_count"};
   names.insert(names.end(), {"wrinkled_fraction", "slack_fraction"});
   for (const Line& line : lines_)
-    for (const char* stem : {"wrinkle_crests:", "wrinkle_peak_crests:", "wrinkle_amplitude:",
-                             "wrinkle_wavelength:"})
+    for (const char* stem :
+         {"wrinkle_crests:", "wrinkle_peak_crests:", "wrinkle_amplitude:", "wrinkle_wavelength:"})
       names.push_back(stem + line.name);
   return names;
 }

@@ -40,8 +40,8 @@ class WrinkleMeter {
   WrinkleMeter(const Case& c, const Mesh& mesh);
 
   struct Result {
-    WrinkleReport rings;              ///< no rings without output.wrinkles.rings_deg
-    std::vector<LineReading> lines;   ///< in the order of output.wrinkles.lines
+    WrinkleReport rings;             ///< no rings without output.wrinkles.rings_deg
+    std::vector<LineReading> lines;  ///< in the order of output.wrinkles.lines
     TensionField tension;
     /// A ring or a line is wrinkled (wrinkles.md, W14, W27).
     bool wrinkled() const;

@@ -156,24 +156,24 @@ struct SolverSettings : SteppingSettings {
 /// A measurement line of `output.wrinkles.lines`: a straight segment of the undeformed body along
 /// which the crests of wrinkles are counted (docs/theory/wrinkles.md, W20-W26).
 struct WrinkleLine {
-  std::string name;             ///< names its history columns (`wrinkle_crests:<name>`, ...)
-  Vec3d from = Vec3d::Zero();   ///< one end [mm]
-  Vec3d to = Vec3d::Zero();     ///< the other end [mm], not `from`
-  int points = 200;             ///< samples, equally spaced, in [16, 20000]
-  int min_crests = 3;           ///< fewer crests are a smooth shape, not wrinkles, >= 1
+  std::string name;            ///< names its history columns (`wrinkle_crests:<name>`, ...)
+  Vec3d from = Vec3d::Zero();  ///< one end [mm]
+  Vec3d to = Vec3d::Zero();    ///< the other end [mm], not `from`
+  int points = 200;            ///< samples, equally spaced, in [16, 20000]
+  int min_crests = 3;          ///< fewer crests are a smooth shape, not wrinkles, >= 1
   LineMirror mirror = LineMirror::none;  ///< the end on a mirror plane of the model
-  InputPlace place;             ///< where the entry is
+  InputPlace place;                      ///< where the entry is
   InputPlace from_place, to_place;
 };
 
 struct WrinkleSettings {
-  char axis = 'y';                ///< 'x' | 'y' | 'z'
-  Vec3d center = Vec3d::Zero();   ///< a point on the axis [mm]
-  std::vector<double> rings_deg;  ///< latitudes [deg] in (-90, 90)
-  double threshold = 0.1;         ///< wrinkled when amplitude > threshold * thickness, > 0
-  int min_count = 3;              ///< smaller full-circle counts are global shape modes, >= 1
-  double peak_ratio = 2.0;        ///< a wrinkle peak exceeds this times the shape envelope, >= 1
-  std::string surface = "outer";  ///< the tagged surface the rings lie on
+  char axis = 'y';                 ///< 'x' | 'y' | 'z'
+  Vec3d center = Vec3d::Zero();    ///< a point on the axis [mm]
+  std::vector<double> rings_deg;   ///< latitudes [deg] in (-90, 90)
+  double threshold = 0.1;          ///< wrinkled when amplitude > threshold * thickness, > 0
+  int min_count = 3;               ///< smaller full-circle counts are global shape modes, >= 1
+  double peak_ratio = 2.0;         ///< a wrinkle peak exceeds this times the shape envelope, >= 1
+  std::string surface = "outer";   ///< the tagged surface the rings lie on
   std::vector<WrinkleLine> lines;  ///< measurement lines
   InputPlace place;                ///< where `wrinkles:` is
   InputPlace surface_place;

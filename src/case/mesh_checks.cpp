@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "analysis/point_location.hpp"
-#include "analysis/wrinkle_lines.hpp"
 #include "analysis/wall_thickness.hpp"
+#include "analysis/wrinkle_lines.hpp"
 #include "case/case.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "mesh/quality.hpp"
@@ -264,14 +264,14 @@ void check_wrinkle_line(const Case& c, const Mesh& mesh, const WrinkleLine& line
   const double allowed = 0.5 * *c.mesh.wall_thickness();
   const LineGauge::Outside& out = gauge.outside();
   if (out.distance > allowed)
-    throw InputError(line.place,
-                     what + ": its point " + std::to_string(out.index + 1) + " of " +
-                         std::to_string(line.points) + ", " + schema::format_vector(out.point) +
-                         ", is " + format_number(out.distance) +
-                         " mm from the body, more than half the wall thickness (" +
-                         format_number(allowed) + " mm): give a line " +
-                         (mesh.is_shell() ? "on the mid-surface" : "inside the body") +
-                         " of the undeformed body");
+    throw InputError(line.place, what + ": its point " + std::to_string(out.index + 1) + " of " +
+                                     std::to_string(line.points) + ", " +
+                                     schema::format_vector(out.point) + ", is " +
+                                     format_number(out.distance) +
+                                     " mm from the body, more than half the wall thickness (" +
+                                     format_number(allowed) + " mm): give a line " +
+                                     (mesh.is_shell() ? "on the mid-surface" : "inside the body") +
+                                     " of the undeformed body");
 }
 
 }  // namespace

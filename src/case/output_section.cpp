@@ -46,13 +46,12 @@ Schema<WrinkleLine> wrinkle_line_schema() {
   s.integer("min_crests", &WrinkleLine::min_crests, Range::at_least(1),
             "fewer crests and troughs along the line are a smooth change of its shape, not "
             "wrinkles (docs/theory/wrinkles.md, W24)");
-  s.choice<LineMirror>("mirror", &WrinkleLine::mirror,
-                       {{"none", LineMirror::none},
-                        {"from", LineMirror::from},
-                        {"to", LineMirror::to}},
-                       "the end that lies on a mirror plane of the model, which the line crosses at "
-                       "a right angle: the line is measured with its mirror image beyond that end, "
-                       "as the whole body has it, so a crest on the plane counts (W21)");
+  s.choice<LineMirror>(
+      "mirror", &WrinkleLine::mirror,
+      {{"none", LineMirror::none}, {"from", LineMirror::from}, {"to", LineMirror::to}},
+      "the end that lies on a mirror plane of the model, which the line crosses at "
+      "a right angle: the line is measured with its mirror image beyond that end, "
+      "as the whole body has it, so a crest on the plane counts (W21)");
   s.rule("`from` and `to` are different points",
          [](const FieldMap&, const WrinkleLine& line, const ReadContext&) {
            if (line.from == line.to)

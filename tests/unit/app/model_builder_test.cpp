@@ -8,8 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <filesystem>
+#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
@@ -692,7 +692,6 @@ TEST(ModelBuilder, WrinkleCountIsZeroBelowTheThresholdWhereThePeakCountIsNot) {
   }
 }
 
-
 // A measurement line (docs/theory/wrinkles.md, W20-W27) on a shell sheet 50 x 20 mm, t = 0.2 mm,
 // moved out of its plane by a sin(2 pi 5 x / 50): 10 crests, wavelength 10 mm, height 2a, seen
 // along y = 5 on 0.5 mm triangles (20 to a wave: the height within 1.2 %). wrinkle_crests counts
@@ -710,10 +709,10 @@ TEST(ModelBuilder, LineColumnsCountCrestsOnlyAboveTheThreshold) {
   check_case_against_mesh(c, mesh);
   const WrinkleMeter meter(c, mesh);
   const std::vector<std::string> names = meter.history_columns();
-  EXPECT_EQ(names, (std::vector<std::string>{"wrinkled_fraction", "slack_fraction",
-                                             "wrinkle_crests:across", "wrinkle_peak_crests:across",
-                                             "wrinkle_amplitude:across",
-                                             "wrinkle_wavelength:across"}));
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"wrinkled_fraction", "slack_fraction",
+                                      "wrinkle_crests:across", "wrinkle_peak_crests:across",
+                                      "wrinkle_amplitude:across", "wrinkle_wavelength:across"}));
   const std::vector<Mat3d> sigma(mesh.triangles.size(), Mat3d::Zero());
   for (const double a : {0.0, 0.005, 0.05}) {
     std::vector<Vec3d> u(mesh.nodes.size());
