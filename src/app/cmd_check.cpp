@@ -173,6 +173,20 @@ void check_case(const CheckOptions& options) {
       << " iterations" << (c.solver.stability.check ? ", stability check on" : "")
       << (c.solver.control == StepControl::arc_length ? ", arc-length control from step 2" : "")
       << '\n';
+  if (const WrinkleSettings& w = c.output.wrinkles; w.enabled()) {
+    out << "  wrinkles  ";
+    if (w.has_rings()) out << count(w.rings_deg.size(), "ring") << " about " << w.axis << ", ";
+    for (const WrinkleLine& line : w.lines)
+      out << "line " << line.name << " (" << number((line.to - line.from).norm()) << " mm, "
+          << line.points << " points"
+          << (line.mirror == LineMirror::none
+                  ? std::string()
+                  : std::string(", mirrored at its ") +
+                        (line.mirror == LineMirror::from ? "start" : "end"))
+          << "), ";
+    out << "tension field of '" << w.surface << "'; wrinkled above "
+        << number(w.threshold * *c.mesh.wall_thickness()) << " mm\n";
+  }
 }
 
 }  // namespace

@@ -56,6 +56,18 @@ TEST(CheckCommand, ValidCaseExitsZeroWithASummary) {
       << r.output;
 }
 
+// The wrinkle measures the run will take: rings, lines (length, points, a mirrored end), the
+// surface whose tension field is counted and the threshold in mm (0.1 t).
+TEST(CheckCommand, TheSummaryNamesTheWrinkleMeasures) {
+  const std::string sheet = std::string(PLISSE_SOURCE_DIR) + "/examples/sheet-wrinkles-line.yaml";
+  const Result r = run_plisse("check " + sheet + " --set output.wrinkles.rings_deg=[10,20]");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("  wrinkles  2 rings about y, line across (10 mm, 200 points, mirrored "
+                          "at its start), tension field of 'top'; wrinkled above 0.002 mm\n"),
+            std::string::npos)
+      << r.output;
+}
+
 TEST(CheckCommand, OverridesApply) {
   const std::string balloon = std::string(PLISSE_SOURCE_DIR) + "/examples/balloon-limit-point.yaml";
   const Result r = run_plisse("check " + balloon + " --set mesh.layers=3 --set solver.steps=80");
