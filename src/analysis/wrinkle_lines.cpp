@@ -121,7 +121,7 @@ double crest_wavelength(const std::vector<double>& s, const std::vector<Extremum
     const std::size_t last = first + 2 * ((crests.size() - 1 - first) / 2);
     if (last == first) continue;
     sum += (interpolate_at(s, along, crests[last].s) - interpolate_at(s, along, crests[first].s)) /
-           static_cast<double>((last - first) / 2);
+           (static_cast<double>(last - first) / 2.0);
     ++kinds;
   }
   return sum / kinds;

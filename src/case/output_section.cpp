@@ -1,6 +1,5 @@
 // The `output:` section and its `wrinkles` table.
 #include <string>
-#include <tuple>
 
 #include "analysis/wrinkle_rings.hpp"
 #include "case/sections.hpp"
@@ -25,22 +24,25 @@ Schema<WrinkleLine> wrinkle_line_schema() {
            "names the line's history columns (`wrinkle_crests:<name>`, ...) and its entry in "
            "summary.json")
       .required();
-  for (const auto& [key, member, place] :
-       {std::tuple{"from", &WrinkleLine::from, &WrinkleLine::from_place},
-        std::tuple{"to", &WrinkleLine::to, &WrinkleLine::to_place}})
+  // `from` and `to`: a point each, with where it is written.
+  const auto end_key = [&s](const char* key, Vec3d WrinkleLine::*member,
+                            InputPlace WrinkleLine::*place, const char* which) {
     s.add({key,
            "vector",
            "mm",
            "",
            "",
            {},
-           std::string(key == std::string("from") ? "one end" : "the other end") +
+           std::string(which) +
                " of the line, a point of the undeformed body (of a shell, of its mid-surface)"},
           [member, place](const Field& f, WrinkleLine& line, ReadContext&) {
             line.*member = f.vec3();
             line.*place = f.place();
           })
         .required();
+  };
+  end_key("from", &WrinkleLine::from, &WrinkleLine::from_place, "one end");
+  end_key("to", &WrinkleLine::to, &WrinkleLine::to_place, "the other end");
   s.integer("points", &WrinkleLine::points, Range::closed(16, 20000),
             "points sampled along the line, equally spaced; a wavelength needs about 10 of them");
   s.integer("min_crests", &WrinkleLine::min_crests, Range::at_least(1),
