@@ -12,9 +12,6 @@
 namespace plisse {
 namespace {
 
-/// Degree of the smooth shape taken off the line (wrinkles.md, W22): a cubic holds a beam's
-/// bending, a sheet's lateral bow and the stretch along the line.
-constexpr int kSmoothDegree = 3;
 /// An extremum is a crest when it is at least this fraction of the largest |w| (W24).
 constexpr double kCrestFraction = 0.1;
 
@@ -48,7 +45,9 @@ double interpolate_at(const std::vector<double>& s, const std::vector<double>& f
   return f[j - 1] + r * (f[j] - f[j - 1]);
 }
 
-/// Cubics in s, written in tau = (s - middle) / half in [-1, 1] for their conditioning.
+/// Cubics in s, written in tau = (s - middle) / half in [-1, 1] for their conditioning: the smooth
+/// shape taken off the line (wrinkles.md, W22), which holds a beam's bending, a sheet's lateral bow
+/// and the stretch along the line.
 struct CubicBasis {
   double middle = 0.0, half = 1.0;
   Eigen::RowVector4d at(double s) const {
@@ -80,7 +79,7 @@ struct Deviation {
 
 Deviation deviation_from(const std::vector<double>& s, const Eigen::MatrixX3d& residual) {
   const std::size_t n = s.size();
-  const Eigen::JacobiSVD<Eigen::MatrixX3d> svd(residual, Eigen::ComputeThinV);
+  const Eigen::JacobiSVD<Eigen::MatrixX3d> svd(residual, Eigen::ComputeFullV);
   const Eigen::Vector3d direction = svd.matrixV().col(0);
   Deviation d;
   d.w.resize(n);
@@ -107,24 +106,30 @@ Deviation deviation_from(const std::vector<double>& s, const Eigen::MatrixX3d& r
   return d;
 }
 
-/// The mean distance between consecutive crests of one sign, for crests and troughs apart and
-/// averaged (W26; a slope moves crests and troughs opposite ways, the crests of one sign alike),
-/// along `along` (a distance at each s); with two crests, twice their distance.
-double crest_wavelength(const std::vector<double>& s, const std::vector<Extremum>& crests,
-                        const std::vector<double>& along) {
+/// The wavelength of the crests (W26) along `along` (a distance at each s): twice the mean distance
+/// between the zeros of w that separate consecutive crests, each where w changes sign between
+/// two samples, interpolated linearly; with two crests, twice their distance. The zeros of a wave
+/// whose height grows or decays along the line stay where they are, where its crests move towards
+/// the higher ones.
+double crest_wavelength(const std::vector<double>& s, const std::vector<double>& w,
+                        const std::vector<Extremum>& crests, const std::vector<double>& along) {
   if (crests.size() < 2) return 0.0;
-  if (crests.size() == 2)
-    return 2.0 * (interpolate_at(s, along, crests[1].s) - interpolate_at(s, along, crests[0].s));
-  double sum = 0.0;
-  int kinds = 0;
-  for (const std::size_t first : {std::size_t{0}, std::size_t{1}}) {
-    const std::size_t last = first + 2 * ((crests.size() - 1 - first) / 2);
-    if (last == first) continue;
-    sum += (interpolate_at(s, along, crests[last].s) - interpolate_at(s, along, crests[first].s)) /
-           (static_cast<double>(last - first) / 2.0);
-    ++kinds;
+  std::vector<double> zeros;
+  std::size_t i = 0;
+  for (std::size_t k = 0; k + 1 < crests.size(); ++k) {
+    while (i + 1 < s.size() && s[i + 1] <= crests[k].s) ++i;
+    for (; i + 1 < s.size() && s[i] < crests[k + 1].s; ++i)
+      if ((w[i] > 0.0) != (w[i + 1] > 0.0)) {
+        zeros.push_back(s[i] + w[i] * (s[i + 1] - s[i]) / (w[i] - w[i + 1]));
+        ++i;
+        break;
+      }
   }
-  return sum / kinds;
+  if (zeros.size() < 2)
+    return 2.0 *
+           (interpolate_at(s, along, crests.back().s) - interpolate_at(s, along, crests.front().s));
+  return 2.0 * (interpolate_at(s, along, zeros.back()) - interpolate_at(s, along, zeros.front())) /
+         static_cast<double>(zeros.size() - 1);
 }
 
 /// The smooth shape under wrinkles of wavelength `lambda` (W22b): the means of x over one
@@ -201,7 +206,7 @@ LineMetrics measure_line(const std::vector<double>& s, const std::vector<Vec3d>&
   // size about 1 / (pi crests) that tilts and shifts them; twice, the smooth shape is fitted
   // again to the means over the wavelength found, which hold no waves.
   for (int pass = 0; pass < 2 && d.crests.size() >= 2; ++pass) {
-    const auto better = smooth_under_waves(basis, s, X, crest_wavelength(s, d.crests, s));
+    const auto better = smooth_under_waves(basis, s, X, crest_wavelength(s, d.w, d.crests, s));
     if (!better) break;
     Deviation next = deviation_from(s, X - *better);
     if (static_cast<int>(next.crests.size()) < min_crests) break;
@@ -229,8 +234,8 @@ LineMetrics measure_line(const std::vector<double>& s, const std::vector<Vec3d>&
     arc[i] = arc[i - 1] + (smooth.row(static_cast<Eigen::Index>(i)) -
                            smooth.row(static_cast<Eigen::Index>(i - 1)))
                               .norm();
-  m.reference_wavelength = crest_wavelength(s, crests, s);
-  m.wavelength = crest_wavelength(s, crests, arc);
+  m.reference_wavelength = crest_wavelength(s, d.w, crests, s);
+  m.wavelength = crest_wavelength(s, d.w, crests, arc);
   return m;
 }
 

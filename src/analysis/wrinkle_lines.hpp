@@ -25,8 +25,8 @@ struct LineMetrics {
   /// The largest height of a crest over the mean of the troughs beside it (W25); 0 when
   /// crests == 0.
   double amplitude = 0.0;
-  /// The mean distance between consecutive crests of one sign, along the line's deformed smooth
-  /// shape (W26): the wavelength one sees; 0 when crests < 2.
+  /// Twice the mean distance between the zeros that separate the crests, along the line's deformed
+  /// smooth shape (W26): the wavelength one sees; 0 when crests < 2.
   double wavelength = 0.0;
   /// The same along the undeformed line (the material wavelength); 0 when crests < 2.
   double reference_wavelength = 0.0;

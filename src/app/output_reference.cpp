@@ -131,8 +131,8 @@ const std::vector<OutputEntry> kHistoryAfter = {
     {"wrinkle_amplitude:<line>", "mm", "`output.wrinkles.lines[]`",
      "the largest height of a crest over the troughs beside it (W25); 0 without crests"},
     {"wrinkle_wavelength:<line>", "mm", "`output.wrinkles.lines[]`",
-     "the mean distance between consecutive crests of one sign along the deformed line's smooth "
-     "shape (W26); 0 with fewer than 2 crests"},
+     "twice the mean distance between the zeros that separate its crests, along the deformed "
+     "line's smooth shape (W26); 0 with fewer than 2 crests"},
 };
 
 const std::vector<OutputEntry> kSummary = {
@@ -300,8 +300,8 @@ const std::vector<OutputEntry> kSummary = {
     {"wrinkles.lines[].amplitude", "mm", "`output.wrinkles.lines`",
      "the largest height of a crest over the troughs beside it (W25)"},
     {"wrinkles.lines[].wavelength", "mm", "`output.wrinkles.lines`",
-     "the mean distance between consecutive crests of one sign along the deformed line's smooth "
-     "shape (W26)"},
+     "twice the mean distance between the zeros that separate its crests, along the deformed "
+     "line's smooth shape (W26)"},
     {"wrinkles.lines[].reference_wavelength", "mm", "`output.wrinkles.lines`",
      "the same along the undeformed line (the material wavelength)"},
     {"wrinkles.lines[].deviation", "mm", "`output.wrinkles.lines`",

@@ -50,12 +50,12 @@ Samples wavy_line(double L, int n, int k, double a) {
   return line;
 }
 
-// k whole waves over L have 2k crests from L/(4k) to L - L/(4k), 2a apart in height: the
-// reference wavelength is L / k and the one along the smooth shape the arc between the first and
-// last crest over k - 1/2. The first cubic (W22) also takes the sinusoid's own projection on the
-// cubics, a smooth term of relative size about 1/k that moved the crests by 1.6 % and the heights
-// by 5.6 % at k = 4; fitted again to the means over one wavelength (W22b), the measure is within
-// 0.1 % on the wavelengths and 0.2 % on the height.
+// k whole waves over L have 2k crests, 2a apart in height, and between them 2k - 1 zeros from
+// L/(2k) to L - L/(2k) (W26): the reference wavelength is L / k and the one along the smooth shape
+// the arc between the first and last zero over k - 1. The first cubic (W22) also takes the
+// sinusoid's own projection on the cubics, a smooth term of relative size about 1/k that moved the
+// heights by 5.6 % at k = 4; fitted again to the means over one wavelength (W22b), the measure is
+// within 0.1 % on the wavelengths and 0.2 % on the height.
 TEST(WrinkleLines, WholeWavesOnASmoothBendGiveTheirCrestsWavelengthAndHeight) {
   const double L = 60.0, a = 0.05;
   for (const int k : {4, 6, 11}) {
@@ -63,8 +63,8 @@ TEST(WrinkleLines, WholeWavesOnASmoothBendGiveTheirCrestsWavelengthAndHeight) {
     const LineMetrics m = measure_line(line.s, line.x, 4);
     EXPECT_EQ(m.crests, 2 * k) << "k = " << k;
     EXPECT_NEAR(m.reference_wavelength, L / k, 0.001 * L / k) << "k = " << k;
-    const double first = L / (4.0 * k), last = L - first;
-    const double seen = smooth_arc(first, last) / (k - 0.5);
+    const double first = L / (2.0 * k), last = L - first;  // the first and last zero
+    const double seen = smooth_arc(first, last) / (k - 1.0);
     EXPECT_NEAR(m.wavelength, seen, 0.001 * seen) << "k = " << k;
     EXPECT_NEAR(m.amplitude, 2.0 * a, 0.002 * 2.0 * a) << "k = " << k;
     EXPECT_NEAR(m.deviation, 2.0 * a, 0.02 * 2.0 * a) << "k = " << k;

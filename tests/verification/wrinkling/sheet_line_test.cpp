@@ -11,11 +11,13 @@
 //    of 0.01 t grows to 0.1 t within a few steps past a supercritical bifurcation;
 //  - the line's measure against the sheet's own nodes on the middle line (nodal_crests, which
 //    neither interpolates nor smooths): at every wrinkled written step (38; 5 crests, then 7 from
-//    about 10 %) the same count of crests, and the line's crest height between the nodes' largest
-//    crest-over-troughs height and their peak to peak, within 2 %.
+//    about 10 %) the same count of crests, the line's crest height between the nodes' largest
+//    crest-over-troughs height and their peak to peak, within 2 %, and its wavelength within 1 %
+//    of twice the mean spacing of the nodes' zeros between crests in the deformed sheet.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -53,19 +55,21 @@ double column(const HistoryTable& h, const std::vector<double>& row, const std::
 struct NodalCrests {
   int crests = 0;
   double height = 0.0, peak_to_peak = 0.0;
+  double wavelength = 0.0;  ///< twice the mean spacing of the zeros between crests, deformed y
 };
 
 NodalCrests nodal_crests(const std::vector<Vec3d>& reference,
                          const std::vector<Vec3d>& displacement) {
-  std::vector<std::pair<double, double>> line;
+  std::vector<std::array<double, 3>> line;  // reference y, deformed y, deformed z
   for (std::size_t i = 0; i < reference.size(); ++i)
     if (std::abs(reference[i].x() - kHalfLength) < 1e-6 * kHalfLength)
-      line.emplace_back(reference[i].y(), reference[i].z() + displacement[i].z());
+      line.push_back({reference[i].y(), reference[i].y() + displacement[i].y(),
+                      reference[i].z() + displacement[i].z()});
   std::sort(line.begin(), line.end());
-  std::vector<double> w;
+  std::vector<double> y, w;
   for (auto it = line.rbegin(); it != line.rend(); ++it)
-    if (it->first > 1e-9) w.push_back(it->second);
-  for (const auto& [y, wi] : line) w.push_back(wi);
+    if ((*it)[0] > 1e-9) y.push_back(-(*it)[1]), w.push_back((*it)[2]);
+  for (const auto& point : line) y.push_back(point[1]), w.push_back(point[2]);
   double mean = 0.0;
   for (double wi : w) mean += wi / static_cast<double>(w.size());
   double largest = 0.0, low = w.front(), high = w.front();
@@ -76,17 +80,28 @@ NodalCrests nodal_crests(const std::vector<Vec3d>& reference,
     high = std::max(high, wi);
   }
   std::vector<double> crest;
+  std::vector<std::size_t> at;
   for (std::size_t k = 1; k + 1 < w.size(); ++k) {
     const bool extremum = (w[k] > 0 && w[k] >= w[k - 1] && w[k] >= w[k + 1]) ||
                           (w[k] < 0 && w[k] <= w[k - 1] && w[k] <= w[k + 1]);
     if (!extremum || std::abs(w[k]) < 0.1 * largest) continue;
     if (!crest.empty() && (crest.back() > 0) == (w[k] > 0)) {
-      if (std::abs(w[k]) > std::abs(crest.back())) crest.back() = w[k];
+      if (std::abs(w[k]) > std::abs(crest.back())) crest.back() = w[k], at.back() = k;
       continue;
     }
     crest.push_back(w[k]);
+    at.push_back(k);
   }
   NodalCrests n;
+  std::vector<double> zeros;
+  for (std::size_t c = 0; c + 1 < at.size(); ++c)
+    for (std::size_t k = at[c]; k < at[c + 1]; ++k)
+      if ((w[k] > 0) != (w[k + 1] > 0)) {
+        zeros.push_back(y[k] + w[k] * (y[k + 1] - y[k]) / (w[k] - w[k + 1]));
+        break;
+      }
+  if (zeros.size() >= 2)
+    n.wavelength = 2.0 * (zeros.back() - zeros.front()) / static_cast<double>(zeros.size() - 1);
   n.crests = static_cast<int>(crest.size());
   n.peak_to_peak = high - low;
   for (std::size_t k = 0; k < crest.size() && crest.size() >= 2; ++k) {
@@ -163,11 +178,13 @@ TEST(SheetLine, AnImperfectSheetWrinklesWhileEveryStepIsStableAndTheLineSeesIt) 
     ASSERT_NE(row, nullptr) << entry.file;
     const double crests = column(history, *row, "wrinkle_crests:across");
     const double amplitude = column(history, *row, "wrinkle_amplitude:across");
+    const double wavelength = column(history, *row, "wrinkle_wavelength:across");
     if (crests == 0.0) continue;  // below the threshold
     ++compared;
     EXPECT_EQ(crests, nodes.crests) << entry.file;
     EXPECT_GE(amplitude, 0.98 * nodes.height) << entry.file;
     EXPECT_LE(amplitude, 1.02 * nodes.peak_to_peak) << entry.file;
+    EXPECT_NEAR(wavelength, nodes.wavelength, 0.01 * nodes.wavelength) << entry.file;
   }
   std::cout << compared << " wrinkled steps compared with the nodes\n";
   EXPECT_GE(compared, 30);
