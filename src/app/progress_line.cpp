@@ -18,6 +18,24 @@ std::string format_duration(double seconds) {
   return text;
 }
 
+LargestWrinkle largest_wrinkle(const WrinkleReport* rings, const std::vector<LineReading>* lines) {
+  LargestWrinkle largest;
+  double amplitude = -1.0;
+  if (rings && rings->wrinkled)
+    for (const RingMetrics& ring : rings->rings)
+      if (ring.decision == RingDecision::wrinkled && ring.amplitude > amplitude) {
+        amplitude = ring.amplitude;
+        largest.ring = &ring;
+      }
+  if (lines)
+    for (const LineReading& line : *lines)
+      if (line.wrinkled && line.metrics.amplitude > amplitude) {
+        amplitude = line.metrics.amplitude;
+        largest = {nullptr, &line};
+      }
+  return largest;
+}
+
 std::string progress_line(const StepInfo& info, const WrinkleReport* wrinkles,
                           const ProgressClock& clock, const std::vector<LineReading>* lines) {
   std::string line;
@@ -44,27 +62,18 @@ std::string progress_line(const StepInfo& info, const WrinkleReport* wrinkles,
                   info.zero_pivots == 1 ? "" : "s");
     line += part;
   }
-  // The wrinkled ring or line of the largest amplitude.
-  double largest = -1.0;
-  std::string wrinkled;
-  if (wrinkles && wrinkles->wrinkled)
-    for (const RingMetrics& ring : wrinkles->rings)
-      if (ring.decision == RingDecision::wrinkled && ring.amplitude > largest) {
-        largest = ring.amplitude;
-        std::snprintf(part, sizeof part, "  wrinkled (ring %g deg: %d waves, %.3g mm)",
-                      ring.latitude_deg, ring.count, ring.amplitude);
-        wrinkled = part;
-      }
-  if (lines)
-    for (const LineReading& line : *lines)
-      if (line.wrinkled && line.metrics.amplitude > largest) {
-        largest = line.metrics.amplitude;
-        std::snprintf(part, sizeof part, "  wrinkled (line %.60s: %d crests, %.3g mm)",
-                      line.name.c_str(), line.metrics.crests, line.metrics.amplitude);
-        wrinkled = part;
-      }
-  if (wrinkled.empty() && wrinkles && wrinkles->wrinkled) wrinkled = "  wrinkled";
-  line += wrinkled;
+  if (const LargestWrinkle largest = largest_wrinkle(wrinkles, lines); largest.ring) {
+    std::snprintf(part, sizeof part, "  wrinkled (ring %g deg: %d waves, %.3g mm)",
+                  largest.ring->latitude_deg, largest.ring->count, largest.ring->amplitude);
+    line += part;
+  } else if (largest.line) {
+    std::snprintf(part, sizeof part, "  wrinkled (line %.60s: %d crests, %.3g mm)",
+                  largest.line->name.c_str(), largest.line->metrics.crests,
+                  largest.line->metrics.amplitude);
+    line += part;
+  } else if (wrinkles && wrinkles->wrinkled) {
+    line += "  wrinkled";
+  }
   std::snprintf(part, sizeof part, "  elapsed %.1fs", clock.elapsed);
   line += part;
   const double done = info.time - clock.start_time, to_go = clock.end_time - info.time;

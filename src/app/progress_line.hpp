@@ -19,6 +19,15 @@ struct ProgressClock {
   bool arc_length = false;
 };
 
+/// The wrinkled ring or line of the largest amplitude: rings only when the report is wrinkled,
+/// lines when they are; at most one of the two is set, neither when nothing is wrinkled. What the
+/// progress line and a run's first_wrinkled name.
+struct LargestWrinkle {
+  const RingMetrics* ring = nullptr;
+  const LineReading* line = nullptr;
+};
+LargestWrinkle largest_wrinkle(const WrinkleReport* rings, const std::vector<LineReading>* lines);
+
 /// "step 12  t 0.24  load 0.2400  dt 0.02  newton  6  reuse  4  |R| 1.017e-12  stable  elapsed
 /// 26.0s  left ~1m50s", with, when they apply, "cut-backs N" (failed attempts of this step), the
 /// stability state ("UNSTABLE (3/2 neg. pivots)", "SINGULAR (1 zero pivot)") and the wrinkles

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "app/output_reference.hpp"
+#include "app/progress_line.hpp"
 #include "app/shell_fields.hpp"
 #include "core/wall_clock.hpp"
 #include "element/element_fields.hpp"
@@ -295,27 +296,21 @@ void RunRecorder::check_material_stability(int step) {
 }
 
 void RunRecorder::note_first_wrinkled(const StepInfo& info) {
-  // The ring or line of the largest amplitude among the wrinkled ones.
   std::string by, what;
-  double largest = -1.0;
   char text[200];
-  for (const RingMetrics& ring : last_wrinkles_->rings.rings)
-    if (ring.decision == RingDecision::wrinkled && ring.amplitude > largest) {
-      largest = ring.amplitude;
-      std::snprintf(text, sizeof text, "ring %g deg", ring.latitude_deg);
-      by = text;
-      std::snprintf(text, sizeof text, "%d waves %.3g mm high, wavelength %.4g mm", ring.count,
-                    ring.amplitude, ring.wavelength);
-      what = text;
-    }
-  for (const LineReading& line : last_wrinkles_->lines)
-    if (line.wrinkled && line.metrics.amplitude > largest) {
-      largest = line.metrics.amplitude;
-      by = "line " + line.name;
-      std::snprintf(text, sizeof text, "%d crests %.3g mm high, wavelength %.4g mm",
-                    line.metrics.crests, line.metrics.amplitude, line.metrics.wavelength);
-      what = text;
-    }
+  const LargestWrinkle largest = largest_wrinkle(&last_wrinkles_->rings, &last_wrinkles_->lines);
+  if (const RingMetrics* ring = largest.ring) {
+    std::snprintf(text, sizeof text, "ring %g deg", ring->latitude_deg);
+    by = text;
+    std::snprintf(text, sizeof text, "%d waves %.3g mm high, wavelength %.4g mm", ring->count,
+                  ring->amplitude, ring->wavelength);
+    what = text;
+  } else if (const LineReading* line = largest.line) {
+    by = "line " + line->name;
+    std::snprintf(text, sizeof text, "%d crests %.3g mm high, wavelength %.4g mm",
+                  line->metrics.crests, line->metrics.amplitude, line->metrics.wavelength);
+    what = text;
+  }
   const bool checked = case_.solver.stability.check;
   first_wrinkled_ = {{"step", info.step},
                      {"time", info.time},
