@@ -20,6 +20,7 @@
 #include "mesh/quality.hpp"
 #include "output/run_directory.hpp"
 #include "solver/petsc_session.hpp"
+#include "solver/pressure_twins.hpp"
 
 namespace plisse::app {
 namespace {
@@ -110,11 +111,9 @@ void check_case(const CheckOptions& options) {
                             : count(n, "tetrahedron", "tetrahedra"))
         << "): ";
     if (r.material) out << material_line(*r.material);
-    if (r.thickness)
-      out << ", thickness " << number(*r.thickness) << " mm";
-    else if (r.displacement.isZero())
-      out << "rigid, held";
-    else
+    if (r.thickness) out << ", thickness " << number(*r.thickness) << " mm";
+    if (r.rigid && r.displacement.isZero()) out << "rigid, held";
+    if (r.rigid && !r.displacement.isZero())
       out << "rigid, translated by (" << number(r.displacement[0]) << ", "
           << number(r.displacement[1]) << ", " << number(r.displacement[2]) << ") mm";
     out << '\n';
@@ -124,6 +123,17 @@ void check_case(const CheckOptions& options) {
                            ? " (P2/P1, 10-node tetrahedra)"
                            : " (rotation-free Kirchhoff-Love triangles on the mid-surface)";
   out << "  element   " << to_string(c.element) << family << '\n';
+  if (!mesh.is_shell() && !c.regions.empty()) {
+    const int twins =
+        make_pressure_twins(mesh.n_nodes(), mesh.tets, parts.materials.pressure_region).n_twins();
+    out << "  pressure  "
+        << (c.region_pressure == RegionPressure::continuous
+                ? "one continuous field across the regions (region_pressure: continuous)"
+                : "a region's own where regions meet: " +
+                      count(static_cast<std::size_t>(twins), "pressure unknown") +
+                      " more at the corner nodes they share")
+        << '\n';
+  }
   const auto tag_line = [&out](const char* what,
                                const std::map<std::string, std::vector<int>>& tags,
                                const char* items) {

@@ -138,6 +138,8 @@ void orient_fibres_on_the_shell(const Case& c, const MaterialSection& section, i
 /// The material of every element: the case's `material` for the elements (tetrahedra, or a shell's
 /// triangles) in no region, each deformable region's own, ElementMaterials::kRigid for a rigid
 /// region's (check_case_against_mesh has checked the tags and that no element is in two regions).
+/// With `region_pressure: discontinuous` a solid's tetrahedra also name their region for the
+/// pressure: 0 in no region, k + 1 in regions[k], -1 rigid.
 ElementMaterials element_materials(const Case& c, const Mesh& mesh) {
   ElementMaterials m = ElementMaterials::uniform(make_material(c.material.model, c.material.params),
                                                  c.material.inverse_bulk_modulus());
@@ -153,6 +155,14 @@ ElementMaterials element_materials(const Case& c, const Mesh& mesh) {
       sections.push_back(&*r.material);
     }
     for (int t : region_elements(r, mesh)) m.of_element[static_cast<std::size_t>(t)] = index;
+  }
+  if (!c.regions.empty() && !mesh.is_shell() &&
+      c.region_pressure == RegionPressure::discontinuous) {
+    m.pressure_region.assign(mesh.tets.size(), 0);
+    for (std::size_t k = 0; k < c.regions.size(); ++k)
+      for (int t : region_elements(c.regions[k], mesh))
+        m.pressure_region[static_cast<std::size_t>(t)] =
+            c.regions[k].rigid ? -1 : static_cast<int>(k) + 1;
   }
   for (const MaterialSection* section : sections) m.laws.push_back(section->inelastic());
   for (std::size_t k = 0; k < sections.size(); ++k)

@@ -173,6 +173,10 @@ const std::vector<OutputEntry> kSummary = {
     {"dofs", "–", "always", "all unknowns, constrained ones included"},
     {"free_dofs", "–", "always", "the unknowns solved for (the size of the linear systems)"},
     {"pressure_dofs", "–", "always", "free pressure unknowns"},
+    {"pressure_twins", "–", "always",
+     "pressure unknowns a region has of its own where regions meet (`region_pressure: "
+     "discontinuous`, docs/theory/regions.md): one per region beyond the first at each corner "
+     "node they share; 0 with one region, with `continuous` and on a shell"},
     {"steps", "–", "always",
      "converged steps of the whole run, the number of its last step: after --resume the steps "
      "before the resume are counted too, as in history.csv's rows (the counters below are this "

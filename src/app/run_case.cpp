@@ -170,6 +170,10 @@ void log_input(RunLog& log, const RunContext& run, const RunOutput& out, const R
                 to_string(model.element_family()).c_str(), model.n_free(),
                 model.dofs().n_free_pressure(), solver.n_constrained);
   log.info(line);
+  if (const int twins = model.pressure_twins().n_twins(); twins > 0)
+    log.info("regions: a pressure of each region's own at the " + std::to_string(twins) +
+             " corner nodes where they meet (" + std::to_string(twins) +
+             " pressure unknowns more; region_pressure: continuous shares one field)");
   log.info("threads: " + run.session.threads());
   log.info(
       "units: the case's, consistent (mm, N, MPa, s in plisse's docs); history.csv's "

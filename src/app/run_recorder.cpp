@@ -462,6 +462,7 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
   summary["dofs"] = model_.dofs().n_dofs();
   summary["free_dofs"] = model_.n_free();
   summary["pressure_dofs"] = model_.dofs().n_free_pressure();
+  summary["pressure_twins"] = model_.pressure_twins().n_twins();
   summary["steps"] = result.steps;
   summary["newton_iterations"] = result.newton_iterations;
   summary["failed_newton_iterations"] = result.newton_iterations - accepted_newton_iterations_;

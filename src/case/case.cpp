@@ -33,6 +33,9 @@ const Choices<ElementFamily> kElementFamilies{{"mini", ElementFamily::mini},
                                               {"taylor-hood", ElementFamily::taylor_hood},
                                               {"shell", ElementFamily::shell}};
 
+const Choices<RegionPressure> kRegionPressures{{"discontinuous", RegionPressure::discontinuous},
+                                               {"continuous", RegionPressure::continuous}};
+
 /// A term section (terms/term_kind.hpp): a list of entries, each read by its kind.
 void term_list_key(Schema<Case>& schema, const std::string& key) {
   auto& row = schema.add({key, "list", "", "", "empty", {}, term_section(key).help},
@@ -68,6 +71,20 @@ Schema<Case> case_schema() {
       .nested = material_schema().doc();
   list_key(s, "regions", &Case::regions, region_schema(),
            "volume tags with their own material, or rigid");
+  s.add({"region_pressure",
+         schema::doc_choice({"discontinuous", "continuous"}),
+         "–",
+         "",
+         "`discontinuous`",
+         {},
+         "mini and taylor-hood with regions: discontinuous gives each region its own pressure "
+         "unknowns at the corner nodes it shares with another region, so that the pressure jumps "
+         "across their interface as the hydrostatic stress of bonded materials does; continuous "
+         "shares one pressure field, which smears the jump over the elements at the interface"},
+        [](const Field& f, Case& c, ReadContext&) {
+          c.region_pressure = f.choice(kRegionPressures);
+          c.region_pressure_place = f.place();
+        });
   for (const char* section : {"boundary", "loads", "cavities", "dies", "caps", "contacts"})
     term_list_key(s, section);
   list_key(s, "probes", &Case::probes, probe_schema(),

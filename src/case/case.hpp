@@ -126,6 +126,10 @@ struct Region {
   }
 };
 
+/// The pressure where regions of different materials meet (mixed solid elements): each region's
+/// own, so that it may jump across their interface, or one field shared by all.
+enum class RegionPressure { discontinuous, continuous };
+
 enum class Scheme { total_lagrangian, incremental };
 
 struct StabilitySettings {
@@ -206,6 +210,9 @@ struct Case {
   MeshSection mesh;
   MaterialSection material;
   std::vector<Region> regions;
+  /// The pressure where the regions meet (solver/pressure_twins.hpp).
+  RegionPressure region_pressure = RegionPressure::discontinuous;
+  InputPlace region_pressure_place;  ///< where it was given (empty key: not given)
   /// The items of the term sections (`boundary`, `loads`, `cavities`, `dies`, `caps`, `contacts`),
   /// each with its kind and settings (terms/term_kind.hpp), in the order of the file.
   std::vector<TermEntry> terms;

@@ -128,10 +128,15 @@ void check_element_family(const Case& c, const Mesh& mesh) {
 
 /// Every region names its elements the way its mesh holds them (a solid's by a volume tag or a
 /// box of tetrahedra, a shell's by a surface tag or a box of triangles), holds some, shares none
-/// with another region, and gives a thickness only on a shell; something is left to deform.
+/// with another region, and gives a thickness only on a shell; something is left to deform. A
+/// shell takes no `region_pressure`.
 void check_regions(const Case& c, const Mesh& mesh) {
-  if (c.regions.empty()) return;
   const bool shell = mesh.is_shell();
+  if (shell && !c.region_pressure_place.key.empty())
+    throw InputError(c.region_pressure_place,
+                     "a shell has no pressure unknowns (plane stress): `region_pressure` is for "
+                     "the mixed solid elements, mini and taylor-hood");
+  if (c.regions.empty()) return;
   const std::string element = shell ? "triangle" : "tetrahedron";
   std::vector<int> region_of(shell ? mesh.triangles.size() : mesh.tets.size(), -1);
   for (std::size_t k = 0; k < c.regions.size(); ++k) {

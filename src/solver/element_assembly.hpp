@@ -34,6 +34,7 @@
 #include "solver/element_nodes.hpp"
 #include "solver/element_policy.hpp"
 #include "solver/petsc_call.hpp"
+#include "solver/pressure_twins.hpp"
 #include "solver/tangent_layout.hpp"
 
 namespace plisse {
@@ -52,8 +53,10 @@ class ElementAssembly {
   /// The elements of `mesh` (borrowed only here), their geometry and initial internal state, and
   /// the material of each (`materials`: at least one model, an index per element or none; rigid
   /// elements are skipped by the assembly and the stored energy, and report the fields of an
-  /// unstressed element).
-  ElementAssembly(const Mesh& mesh, ElementMaterials materials) : materials_(std::move(materials)) {
+  /// unstressed element). `twins`, when it has any, gives each element the nodes of its
+  /// corners' pressure values (PressureTwins::carrier; a family with pressure unknowns only).
+  ElementAssembly(const Mesh& mesh, ElementMaterials materials, const PressureTwins& twins = {})
+      : materials_(std::move(materials)) {
     const int n = Element::n_elements(mesh);
     PLISSE_CHECK(!materials_.materials.empty() &&
                      materials_.inverse_bulk_moduli.size() == materials_.materials.size() &&
@@ -68,8 +71,17 @@ class ElementAssembly {
                    "element material index " << m << " out of range");
     nodes_.reserve(static_cast<std::size_t>(n) * Element::kNodes);
     geometry_.reserve(n);
+    PLISSE_CHECK(twins.carrier.empty() || (Element::kPressureNodes == 4 &&
+                                           twins.carrier.size() == 4 * static_cast<std::size_t>(n)),
+                 "pressure twins: " << twins.carrier.size() << " corners for " << n
+                                    << " elements of " << Element::kPressureNodes
+                                    << " pressure nodes");
     for (int e = 0; e < n; ++e) {
-      const std::array<int, Element::kNodes> nodes = Element::nodes(mesh, e);
+      std::array<int, Element::kNodes> nodes = Element::nodes(mesh, e);
+      // The corners' pressure carriers: the corners themselves, or their region's twins.
+      constexpr int first = Element::kNodes - Element::kPressureNodes;
+      for (int a = 0; a < Element::kPressureNodes; ++a)
+        nodes[first + a] = twins.carrier_of(e, a, nodes[first + a]);
       nodes_.insert(nodes_.end(), nodes.begin(), nodes.end());
       geometry_.push_back(Element::geometry(mesh, e, nodes));
     }

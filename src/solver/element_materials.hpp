@@ -21,6 +21,11 @@ struct ElementMaterials {
   std::vector<double> inverse_bulk_moduli;
   /// Per tetrahedron: its index into `materials`, or kRigid. Empty: every element has material 0.
   std::vector<int> of_element;
+  /// Per tetrahedron: the region whose pressure unknowns it takes at the corners it shares with
+  /// another region's tetrahedra (>= 0; negative for a rigid one), so that the pressure may jump
+  /// between regions (solver/pressure_twins.hpp). Empty: one continuous pressure field. A shell
+  /// has no pressure unknowns and ignores it.
+  std::vector<int> pressure_region;
   /// The viscoelasticity and Mullins softening of each model, index by index (material/
   /// inelastic.hpp). Empty: every model is elastic.
   std::vector<InelasticLaw> laws;

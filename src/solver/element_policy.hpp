@@ -9,9 +9,14 @@
 /// Sizes
 ///   kNodes         nodes in the element's node list (the width of its ElementNodes; the tangent
 ///                  layout stores one position per pair of them; a node may appear twice).
-///                  MINI: 4, Taylor-Hood: 10, shell: 6.
+///                  MINI: 8, Taylor-Hood: 14, shell: 12.
+///   kPressureNodes the last kPressureNodes positions of the node list carry the element's
+///                  pressure unknowns, one per corner: nodes(mesh, e) lists the corners there,
+///                  and the assembly puts a region's pressure twin in a corner's place where the
+///                  model gives the regions their own pressures (solver/pressure_twins.hpp).
+///                  MINI and Taylor-Hood: 4, shell: 0.
 ///   kDof           element unknowns seen by the global solver, all nodal values. MINI: 16,
-///                  Taylor-Hood: 34, shell: 18.
+///                  Taylor-Hood: 34, shell: 36.
 ///   kInternalSize  doubles of internal state per element, condensed out of the global system
 ///                  and carried from one evaluation to the next (a warm start). MINI: 3 (bubble).
 ///                  May be 0.
@@ -63,6 +68,7 @@ concept ElementPolicy = requires(const Mesh& mesh, std::span<const int, E::kNode
                                  const AnyMaterial& any_material, typename E::Internal& internal,
                                  typename E::Vector& r, typename E::Matrix* K, double& volume) {
   { E::kNodes } -> std::convertible_to<int>;
+  { E::kPressureNodes } -> std::convertible_to<int>;
   { E::kDof } -> std::convertible_to<int>;
   { E::kInternalSize } -> std::convertible_to<int>;
   { E::kQuadPoints } -> std::convertible_to<int>;

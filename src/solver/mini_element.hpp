@@ -1,6 +1,8 @@
 #pragma once
 /// The MINI (P1+/P1) tetrahedron as an element policy of the assembly (solver/element_policy.hpp
-/// states the contract): 4 corner nodes, 16 unknowns [u0x, u0y, u0z, ..., u3z, p0, ..., p3]
+/// states the contract): 8 nodes in its list (the 4 corners, then the 4 nodes whose pressure
+/// values the corners take: the corners themselves, or their region's pressure twins,
+/// solver/pressure_twins.hpp), 16 unknowns [u0x, u0y, u0z, ..., u3z, p0, ..., p3]
 /// (element/mini_layout.hpp), and the bubble (3 values) as the internal state, condensed by the
 /// kernel (element/mini.hpp) and kept per element as the warm start of its next evaluation.
 #include <array>
@@ -16,7 +18,8 @@
 namespace plisse {
 
 struct MiniElement {
-  static constexpr int kNodes = mini::kNodes;
+  static constexpr int kNodes = 2 * mini::kNodes;
+  static constexpr int kPressureNodes = mini::kNodes;
   static constexpr int kDof = mini::kDof;
   static constexpr int kInternalSize = mini::kDofBubble;
   static constexpr int kQuadPoints = mini::kQuadPoints;
@@ -27,24 +30,31 @@ struct MiniElement {
   using Status = mini::ElementStatus;
   using Fields = ElementFields;
 
-  /// Local node (0..3) of unknown i: displacement components node by node, then the pressures.
+  /// Local node of unknown i: displacement components of corners 0..3, then the pressures from
+  /// positions 4..7 of the node list.
   static constexpr std::array<int, kDof> kLocalNode = [] {
     std::array<int, kDof> node{};
-    for (int i = 0; i < kDof; ++i) node[i] = i < mini::kDofU ? i / 3 : i - mini::kDofU;
+    for (int i = 0; i < kDof; ++i)
+      node[i] = i < mini::kDofU ? i / 3 : mini::kNodes + i - mini::kDofU;
     return node;
   }();
 
-  /// The tetrahedra of the mesh (its corner nodes; edge nodes of a second-order mesh are unused).
+  /// The tetrahedra of the mesh: their corner nodes (edge nodes of a second-order mesh are
+  /// unused), twice: as the carriers of their displacements and of their pressures.
   static int n_elements(const Mesh& mesh) { return mesh.n_tets(); }
-  static std::array<int, kNodes> nodes(const Mesh& mesh, int e) { return mesh.tets[e]; }
+  static std::array<int, kNodes> nodes(const Mesh& mesh, int e) {
+    std::array<int, kNodes> n;
+    for (int a = 0; a < mini::kNodes; ++a) n[a] = n[mini::kNodes + a] = mesh.tets[e][a];
+    return n;
+  }
 
-  /// Full-state index of every element unknown: node a's (ux, uy, uz) at 3a..3a+2, its pressure
-  /// at kDofU + a.
+  /// Full-state index of every element unknown: corner a's (ux, uy, uz) at 3a..3a+2, its
+  /// pressure (the value of node list position 4 + a) at kDofU + a.
   static std::array<int, kDof> dofs(std::span<const int, kNodes> nodes) {
     std::array<int, kDof> full;
-    for (int a = 0; a < kNodes; ++a) {
+    for (int a = 0; a < mini::kNodes; ++a) {
       for (int k = 0; k < 3; ++k) full[3 * a + k] = DofMap::dof(nodes[a], k);
-      full[mini::kDofU + a] = DofMap::dof(nodes[a], 3);
+      full[mini::kDofU + a] = DofMap::dof(nodes[mini::kNodes + a], 3);
     }
     return full;
   }

@@ -109,10 +109,17 @@ MixedModel::MixedModel(const Mesh& mesh, ElementMaterials materials,
                "the " << to_string(family) << " element needs a mesh of order "
                       << mesh_order_of(family) << ", this one has order " << mesh.order());
   pressure_weight_ = pressure_weight_of(mesh, materials);
+  twins_ = family == ElementFamily::shell
+               ? PressureTwins{mesh.n_nodes(), {}, {}}
+               : make_pressure_twins(mesh.n_nodes(), mesh.tets, materials.pressure_region);
+  // A twin carries a pressure value only: the displacement is its corner's.
+  for (int k = 0; k < twins_.n_twins(); ++k)
+    for (int c = 0; c < 3; ++c) constraints_.push_back({mesh.n_nodes() + k, c, 0.0, Ramp{}});
   if (family == ElementFamily::mini) {
-    elements_ = std::make_unique<ElementAssembly<MiniElement>>(mesh, std::move(materials));
+    elements_ = std::make_unique<ElementAssembly<MiniElement>>(mesh, std::move(materials), twins_);
   } else if (family == ElementFamily::taylor_hood) {
-    elements_ = std::make_unique<ElementAssembly<TaylorHoodElement>>(mesh, std::move(materials));
+    elements_ =
+        std::make_unique<ElementAssembly<TaylorHoodElement>>(mesh, std::move(materials), twins_);
     // The pressure is linear: the edge nodes' pressure values are not unknowns.
     for (int v : non_corner_nodes(mesh)) constraints_.push_back({v, 3, 0.0, Ramp{}});
   } else {
@@ -133,12 +140,12 @@ MixedModel::MixedModel(const Mesh& mesh, ElementMaterials materials,
   int next_global = 0;
   for (auto& term : terms_) {
     // The global unknowns follow the values of every node (DofMap::global_dof).
-    term->set_first_global_dof(DofMap::kPerNode * mesh.n_nodes() + next_global);
+    term->set_first_global_dof(DofMap::kPerNode * twins_.n_nodes + next_global);
     next_global += term->n_global_unknowns();
   }
   for (const auto& term : terms_) term->couplings_changed();  // what they report now is the start
   const std::vector<std::pair<int, int>> couplings = term_couplings();
-  const NodeGraph graph = build_node_graph(mesh.n_nodes(), element_nodes, couplings);
+  const NodeGraph graph = build_node_graph(twins_.n_nodes, element_nodes, couplings);
   distribution_ = std::make_unique<Distribution>(graph, element_nodes, n_global, constraints_);
   layout_ = std::make_unique<TangentLayout>(graph, element_nodes, *distribution_, couplings);
   state_.assign(dofs().n_dofs(), 0.0);
@@ -290,6 +297,9 @@ void MixedModel::continue_from(std::span<const double> state, std::span<const do
                    << state.size() << " values for " << nodal << " nodal values, "
                    << internal.size() << " internal for " << n_internal << ")");
   std::copy_n(state.begin(), nodal, state_.begin());
+  for (int k = 0; k < twins_.n_twins(); ++k)
+    state_[DofMap::dof(mesh_.n_nodes() + k, 3)] =
+        state_[DofMap::dof(twins_.corner[static_cast<std::size_t>(k)], 3)];
   visit_elements([&](auto& e) { e.restore(internal); });
   set_time(time_);
   save_converged();
@@ -325,7 +335,7 @@ void MixedModel::refresh_couplings() {
   // the pattern of the owned rows grows.
   const ElementNodes element_nodes = visit_elements([](const auto& e) { return e.nodes(); });
   const std::vector<std::pair<int, int>> couplings = term_couplings();
-  const NodeGraph graph = build_node_graph(mesh_.n_nodes(), element_nodes, couplings);
+  const NodeGraph graph = build_node_graph(twins_.n_nodes, element_nodes, couplings);
   layout_ = std::make_unique<TangentLayout>(graph, element_nodes, *distribution_, couplings);
   ++pattern_version_;
 }

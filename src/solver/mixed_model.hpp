@@ -47,6 +47,7 @@
 #include "solver/element_materials.hpp"
 #include "solver/element_policy.hpp"
 #include "solver/mini_element.hpp"
+#include "solver/pressure_twins.hpp"
 #include "solver/shell_element.hpp"
 #include "solver/taylor_hood_element.hpp"
 
@@ -77,7 +78,10 @@ class MixedModel {
              ElementFamily family = ElementFamily::mini);
   /// The same with a material per element (several models by volume, rigid elements): the
   /// constraints must hold every node of the rigid elements and the pressure of the nodes that
-  /// only rigid elements touch (they have no equation of their own).
+  /// only rigid elements touch (they have no equation of their own). With
+  /// `materials.pressure_region` the solid families give every region its own pressure unknowns
+  /// where regions meet (solver/pressure_twins.hpp): the state then has a node per twin after the
+  /// mesh's nodes, whose displacement values the model holds at 0.
   MixedModel(const Mesh& mesh, ElementMaterials materials,
              std::vector<ConstrainedComponent> constraints,
              std::vector<std::unique_ptr<ModelTerm>> terms = {},
@@ -98,6 +102,9 @@ class MixedModel {
   /// The number of elements: tetrahedra, or the triangles of a shell.
   int n_elements() const;
   const DofMap& dofs() const { return distribution_->dofs(); }
+  /// The pressure twins of the regions' interfaces (none without `pressure_region`); the state's
+  /// nodes are the mesh's, then these.
+  const PressureTwins& pressure_twins() const { return twins_; }
   int n_free() const { return dofs().n_free(); }
 
   /// The communicator of the algebraic objects: PETSC_COMM_SELF on one rank, else PETSC_COMM_WORLD.
@@ -120,7 +127,8 @@ class MixedModel {
   /// with the layout of create_vector (pressures weighted as in get_free). Collective.
   std::vector<double> full_from_free(Vec x) const;
 
-  /// Full state: kPerNode values per node (ux, uy, uz, p), then the terms' global unknowns.
+  /// Full state: kPerNode values per node (ux, uy, uz, p; the mesh's nodes, then the pressure
+  /// twins), then the terms' global unknowns.
   const std::vector<double>& state() const { return state_; }
   std::vector<double>& state() { return state_; }
   /// Moves to time t: the constrained components take their prescribed values at t and the
@@ -196,9 +204,10 @@ class MixedModel {
   /// of their points; its time is the current time).
   void save_converged();
   void restore_converged();
-  /// Starts from another run's converged state on the same mesh and element: its nodal values
-  /// (the first kPerNode * n_nodes of `state`) and the elements' internal state `internal`; the
-  /// terms' unknowns keep their start values, the constrained components take this model's
+  /// Starts from another run's converged state on the same mesh and element: the values of the
+  /// mesh's nodes (the first kPerNode * n_nodes of `state`) and the elements' internal state
+  /// `internal`; a pressure twin starts from its corner's pressure, the terms' unknowns keep
+  /// their start values, the constrained components take this model's
   /// values at the current time, and the result is the converged state. Throws plisse::Error when
   /// the sizes do not fit.
   void continue_from(std::span<const double> state, std::span<const double> internal);
@@ -224,9 +233,10 @@ class MixedModel {
   /// current state (for principal stretches; of a shell, its mid-surface's, shell_output.hpp).
   std::vector<Mat3d> element_deformation_gradients() const;
 
-  /// The pressure field at every node [MPa]: the nodal unknowns, and on the edge nodes of a
-  /// Taylor-Hood model (which carry no pressure unknown) the linear interpolation, the mean of
-  /// the edge's two corners (for output).
+  /// The pressure field at every node of the mesh [MPa]: the nodal unknowns (where regions with
+  /// their own pressures meet, the first region's), and on the edge nodes of a Taylor-Hood model
+  /// (which carry no pressure unknown) the linear interpolation, the mean of the edge's two
+  /// corners (for output).
   std::vector<double> nodal_pressures() const;
 
   /// Per-element Cauchy stress, J and von Mises at the current state (of a shell, thickness
@@ -266,6 +276,7 @@ class MixedModel {
 
   const Mesh& mesh_;
   ElementFamily family_;
+  PressureTwins twins_;  ///< the regions' own pressure nodes, after the mesh's
   std::vector<ConstrainedComponent> constraints_;
   std::vector<std::unique_ptr<ModelTerm>> terms_;
   Elements elements_;                           ///< element data and loops

@@ -37,6 +37,7 @@ namespace plisse {
 
 struct ShellElement {
   static constexpr int kNodes = shell::kPatchNodes;
+  static constexpr int kPressureNodes = 0;  ///< plane stress: no pressure unknowns
   static constexpr int kDof = shell::kPatchDofs;
   static constexpr int kInternalSize = 0;
   /// The points through the thickness (KL13): the section's rule has at most this many; a model

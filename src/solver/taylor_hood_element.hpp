@@ -1,9 +1,11 @@
 #pragma once
 /// The Taylor-Hood (P2/P1) tetrahedron as an element policy of the assembly
-/// (solver/element_policy.hpp states the contract): 10 nodes (corners, then the edge nodes of a
-/// second-order mesh), 34 unknowns [u0x, ..., u9z, p0, ..., p3] (element/taylor_hood_geometry.hpp)
-/// and no internal state. The pressure unknowns of the edge nodes are not used by the element;
-/// the model constrains them (solver/mixed_model.hpp).
+/// (solver/element_policy.hpp states the contract): 14 nodes in its list (corners, then the edge
+/// nodes of a second-order mesh, then the 4 nodes whose pressure values the corners take: the
+/// corners themselves, or their region's pressure twins, solver/pressure_twins.hpp), 34 unknowns
+/// [u0x, ..., u9z, p0, ..., p3] (element/taylor_hood_geometry.hpp) and no internal state. The
+/// pressure unknowns of the edge nodes are not used by the element; the model constrains them
+/// (solver/mixed_model.hpp).
 #include <array>
 #include <span>
 
@@ -16,7 +18,8 @@
 namespace plisse {
 
 struct TaylorHoodElement {
-  static constexpr int kNodes = taylor_hood::kNodes;
+  static constexpr int kNodes = taylor_hood::kNodes + taylor_hood::kCorners;
+  static constexpr int kPressureNodes = taylor_hood::kCorners;
   static constexpr int kDof = taylor_hood::kDof;
   static constexpr int kInternalSize = 0;
   static constexpr int kQuadPoints = taylor_hood::kQuadPoints;
@@ -31,40 +34,40 @@ struct TaylorHoodElement {
     const double* data() const { return nullptr; }
   };
 
-  /// Local node (0..9) of unknown i: displacement components node by node, then the pressures
-  /// of the corners.
+  /// Local node of unknown i: displacement components of nodes 0..9, then the corners' pressures
+  /// from positions 10..13 of the node list.
   static constexpr std::array<int, kDof> kLocalNode = [] {
     std::array<int, kDof> node{};
     for (int i = 0; i < kDof; ++i)
-      node[i] = i < taylor_hood::kDofU ? i / 3 : i - taylor_hood::kDofU;
+      node[i] = i < taylor_hood::kDofU ? i / 3 : taylor_hood::kNodes + i - taylor_hood::kDofU;
     return node;
   }();
 
-  /// The tetrahedra of a second-order mesh: corners, then edge nodes (Gmsh's edge order).
-  /// Precondition: mesh.order() == 2.
+  /// The tetrahedra of a second-order mesh: corners, then edge nodes (Gmsh's edge order), then
+  /// the corners again as the carriers of the pressures. Precondition: mesh.order() == 2.
   static int n_elements(const Mesh& mesh) { return mesh.n_tets(); }
   static std::array<int, kNodes> nodes(const Mesh& mesh, int e) {
     std::array<int, kNodes> n;
-    for (int a = 0; a < 4; ++a) n[a] = mesh.tets[e][a];
+    for (int a = 0; a < 4; ++a) n[a] = n[taylor_hood::kNodes + a] = mesh.tets[e][a];
     for (int k = 0; k < 6; ++k) n[4 + k] = mesh.tet_edge_nodes[e][k];
     return n;
   }
 
   /// Full-state index of every element unknown: node a's (ux, uy, uz) at 3a..3a+2, corner a's
-  /// pressure at kDofU + a.
+  /// pressure (the value of node list position 10 + a) at kDofU + a.
   static std::array<int, kDof> dofs(std::span<const int, kNodes> nodes) {
     std::array<int, kDof> full;
-    for (int a = 0; a < kNodes; ++a)
+    for (int a = 0; a < taylor_hood::kNodes; ++a)
       for (int k = 0; k < 3; ++k) full[3 * a + k] = DofMap::dof(nodes[a], k);
     for (int a = 0; a < taylor_hood::kCorners; ++a)
-      full[taylor_hood::kDofU + a] = DofMap::dof(nodes[a], 3);
+      full[taylor_hood::kDofU + a] = DofMap::dof(nodes[taylor_hood::kNodes + a], 3);
     return full;
   }
 
   /// taylor_hood::compute_geometry of the 10 nodes (throws plisse::Error for an inverted one).
   static Geometry geometry(const Mesh& mesh, int /*e*/, std::span<const int, kNodes> nodes) {
-    std::array<Vec3d, kNodes> X;
-    for (int a = 0; a < kNodes; ++a) X[a] = mesh.nodes[nodes[a]];
+    std::array<Vec3d, taylor_hood::kNodes> X;
+    for (int a = 0; a < taylor_hood::kNodes; ++a) X[a] = mesh.nodes[nodes[a]];
     return taylor_hood::compute_geometry(X);
   }
 

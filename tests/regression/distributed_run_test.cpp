@@ -244,9 +244,10 @@ TEST(DistributedRun, CapAndTractionsAreTheSameOnTwoRanks) {
 }
 
 // Regions (examples/sheet-patch-grips.yaml, coarsened): a patch of its own material, assembled by
-// whichever rank holds it, and two rigid grips whose elements no rank assembles and whose nodes
-// every rank constrains alike. Also what the example says: the grips' forces balance and the
-// stiff patch stretches less than the sheet beside it.
+// whichever rank holds it, with pressure unknowns of its own where it meets the sheet (twin nodes,
+// which the partition hands out like any node), and two rigid grips whose elements no rank
+// assembles and whose nodes every rank constrains alike. Also what the example says: the grips'
+// forces balance and the stiff patch stretches less than the sheet beside it.
 TEST(DistributedRun, RegionsOfTheirOwnMaterialAndRigidGripsAreTheSameOnTwoRanks) {
   const std::string args = " --set mesh.element_size=5 --set solver.steps=5";
   const fs::path one = run("patch-grips", example("sheet-patch-grips.yaml"), args, 1);
@@ -254,8 +255,9 @@ TEST(DistributedRun, RegionsOfTheirOwnMaterialAndRigidGripsAreTheSameOnTwoRanks)
   expect_same_history(one, two, 1e-6);
   const nlohmann::json s1 = read_json_file(one / "summary.json"),
                        s2 = read_json_file(two / "summary.json");
-  for (const char* key : {"steps", "newton_iterations", "free_dofs", "completed"})
+  for (const char* key : {"steps", "newton_iterations", "free_dofs", "pressure_twins", "completed"})
     EXPECT_EQ(s1[key], s2[key]) << key;
+  EXPECT_GT(s1["pressure_twins"].get<int>(), 0) << "the patch has pressures of its own";
   const HistoryTable h = read_history(one / "history.csv");
   ASSERT_FALSE(h.rows.empty());
   const auto at_end = [&](const std::string& name) {

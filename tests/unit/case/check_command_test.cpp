@@ -68,6 +68,27 @@ TEST(CheckCommand, TheSummaryNamesTheWrinkleMeasures) {
       << r.output;
 }
 
+// A region of its own material is named with it, not as a rigid one; the pressure line says how
+// many unknowns the regions' own pressures add (82: two per corner node of the coating's
+// interface, 41 x 2 of a 40 x 1-cell sheet), or that one field is shared.
+TEST(CheckCommand, TheSummaryNamesTheRegionsAndTheirPressures) {
+  const std::string strip = std::string(PLISSE_SOURCE_DIR) + "/examples/coated-strip-bending.yaml";
+  Result r = run_plisse("check " + strip);
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("  region    regions[0] (240 tetrahedra): neo-hookean: c1 = 50 MPa; "
+                          "exactly incompressible\n"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("  pressure  a region's own where regions meet: 82 pressure unknowns "
+                          "more at the corner nodes they share\n"),
+            std::string::npos)
+      << r.output;
+  r = run_plisse("check " + strip + " --set region_pressure=continuous");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("  pressure  one continuous field across the regions"), std::string::npos)
+      << r.output;
+}
+
 TEST(CheckCommand, OverridesApply) {
   const std::string balloon = std::string(PLISSE_SOURCE_DIR) + "/examples/balloon-limit-point.yaml";
   const Result r = run_plisse("check " + balloon + " --set mesh.layers=3 --set solver.steps=80");
