@@ -7,6 +7,7 @@
 
 #include "analysis/point_location.hpp"
 #include "analysis/wall_thickness.hpp"
+#include "app/model_builder.hpp"
 #include "app/output_reference.hpp"
 #include "mesh/topology.hpp"
 #include "output/history_writer.hpp"
@@ -125,8 +126,7 @@ void HistoryColumns::add_reactions(const Case& c, const Mesh& mesh) {
   }
   for (const Region& region : c.regions) {
     if (!region.rigid || region.name.empty()) continue;
-    auto nodes =
-        std::make_shared<const std::set<int>>(tet_nodes(mesh, region_elements(region, mesh)));
+    auto nodes = std::make_shared<const std::set<int>>(region_nodes(region, mesh));
     add(xyz_columns("force_", region.name), [nodes](const StepRecord& r, std::vector<double>& row) {
       const Vec3d f = r.model.node_reaction(*nodes);
       for (int k = 0; k < 3; ++k) row.push_back(f[k]);

@@ -171,10 +171,10 @@ ElementMaterials element_materials(const Case& c, const Mesh& mesh) {
   return m;
 }
 
-/// Adds the rigid regions' constraints to `constraints`: every node of their tetrahedra follows
-/// the region's translation, and a corner node that no deformable tetrahedron touches has its
-/// pressure held at 0 (no element gives it an equation). A node that a boundary condition or
-/// another rigid region moves otherwise is an InputError at the region.
+/// Adds the rigid regions' constraints to `constraints`: every node of their tetrahedra (of a
+/// shell, triangles) follows the region's translation, and a corner node that no deformable
+/// tetrahedron touches has its pressure held at 0 (no element gives it an equation). A node that a
+/// boundary condition or another rigid region moves otherwise is an InputError at the region.
 void add_rigid_constraints(const Case& c, const Mesh& mesh, const ElementMaterials& materials,
                            std::vector<ConstrainedComponent>& constraints) {
   if (std::none_of(c.regions.begin(), c.regions.end(), [](const Region& r) { return r.rigid; }))
@@ -198,8 +198,8 @@ void add_rigid_constraints(const Case& c, const Mesh& mesh, const ElementMateria
   const char* axes = "xyz";
   for (const Region& r : c.regions) {
     if (!r.rigid) continue;
-    const std::vector<int> tets = region_elements(r, mesh);
-    for (int v : tet_nodes(mesh, tets)) {
+    const std::vector<int> elements = region_elements(r, mesh);
+    for (int v : region_nodes(r, mesh)) {
       for (int k = 0; k < 3; ++k) {
         const ConstrainedComponent cc{v, k, r.displacement[k], r.ramp};
         const auto [it, added] = existing.try_emplace({v, k}, constraints.size());
@@ -217,7 +217,8 @@ void add_rigid_constraints(const Case& c, const Mesh& mesh, const ElementMateria
         }
       }
     }
-    for (int t : tets)
+    if (mesh.is_shell()) continue;  // a shell has no pressure unknowns: the model holds them all
+    for (int t : elements)
       for (int v : mesh.tets[static_cast<std::size_t>(t)])
         if (!deformable[static_cast<std::size_t>(v)]) {
           deformable[static_cast<std::size_t>(v)] = 1;  // once
@@ -281,6 +282,11 @@ std::vector<CapNodes> case_caps(const Case& c, const Mesh& mesh) {
 }
 
 }  // namespace
+
+std::set<int> region_nodes(const Region& region, const Mesh& mesh) {
+  const std::vector<int> elements = region_elements(region, mesh);
+  return mesh.is_shell() ? triangle_nodes(mesh, elements) : tet_nodes(mesh, elements);
+}
 
 ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
   ModelParts parts{element_materials(c, mesh), collect_constraints(c.terms, mesh), {}, c.element};

@@ -4,6 +4,7 @@
 /// `plisse run`, `plisse check` and `plisse wrinkles` all build through it, so a case is judged
 /// the same way by every command.
 #include <memory>
+#include <set>
 #include <vector>
 
 #include "case/case.hpp"
@@ -28,6 +29,10 @@ struct ModelParts {
   std::vector<std::unique_ptr<ModelTerm>> terms;
   ElementFamily element = ElementFamily::mini;  ///< the case's `element`
 };
+
+/// The nodes of a region's elements: a solid's tetrahedra (corners and, on a second-order mesh,
+/// edge nodes), a shell's triangles.
+std::set<int> region_nodes(const Region& region, const Mesh& mesh);
 
 /// Builds the parts of the case's model on `mesh` (the case's mesh, already checked against the
 /// case by load_perturbed_mesh) and validates them: conflicting or non-planar Dirichlet conditions,

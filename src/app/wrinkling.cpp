@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "mesh/bounding_box.hpp"
 #include "mesh/imperfection.hpp"
+#include "mesh/shell_surface.hpp"
 #include "mesh/topology.hpp"
 #include "output/atomic_file.hpp"
 #include "output/history_writer.hpp"
@@ -153,11 +154,20 @@ std::vector<HeldPlane> shell_symmetry_planes(const Case& c, const Mesh& mesh) {
 }
 
 /// The sides of a shell's clamped and symmetry edges (Mesh::side_mirrors), from the reference
-/// positions the model starts from.
+/// positions the model starts from, and the sides where it meets a rigid region, which are
+/// clamped to it (clamp_to_rigid: a rigid region only translates).
 void hold_shell_slopes(const Case& c, Mesh& mesh) {
   if (!mesh.is_shell()) return;
   for (const TermEntry& entry : c.terms)
     if (entry.kind->hold_slope) entry.kind->hold_slope(entry, mesh);
+  std::vector<char> rigid(mesh.triangles.size(), 0);
+  bool any = false;
+  for (const Region& r : c.regions) {
+    if (!r.rigid) continue;
+    for (int t : region_elements(r, mesh)) rigid[static_cast<std::size_t>(t)] = 1;
+    any = true;
+  }
+  if (any) clamp_to_rigid(mesh, rigid);
 }
 
 }  // namespace

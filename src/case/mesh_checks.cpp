@@ -118,10 +118,8 @@ void check_element_family(const Case& c, const Mesh& mesh) {
     if (m.shell_fibre_frame) refuse(m.fibre_frame_place, "`fibre_frame: shell`");
   };
   refuse_material(c.material);
-  for (const Region& r : c.regions) {
-    if (r.rigid) refuse(r.place, "a rigid region");
+  for (const Region& r : c.regions)
     if (r.material) refuse_material(*r.material);
-  }
   if (c.solver.viscosity > 0.0)
     refuse(InputPlace{c.path, 0, 0, "solver.viscosity"}, "`solver.viscosity`");
 }
@@ -178,7 +176,7 @@ void check_regions(const Case& c, const Mesh& mesh) {
   });
   if (!deforms)
     throw InputError(c.regions.back().place,
-                     "every tetrahedron is in a rigid region: nothing is left to deform");
+                     "every " + element + " is in a rigid region: nothing is left to deform");
 }
 
 /// A probe reports at a material point of the body: one farther from the mesh than the longest

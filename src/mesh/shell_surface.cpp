@@ -74,6 +74,19 @@ void set_shell_thickness(Mesh& mesh, const std::vector<int>& triangles, double t
     if (count[v] > 0) mesh.shell_thickness[v] = sum[v] / count[v];
 }
 
+namespace {
+/// Clamps `side` (KL8a): its missing node is the half turn of the opposite corner about the
+/// triangle's reference normal through the side's midpoint.
+void clamp_side(Mesh& mesh, const EdgeSide& side) {
+  const auto& tri = mesh.triangles[static_cast<std::size_t>(side.triangle)];
+  const Vec3d& x0 = mesh.nodes[tri[0]];
+  const Vec3d n = (mesh.nodes[tri[1]] - x0).cross(mesh.nodes[tri[2]] - x0).normalized();
+  SideMirror& m = mesh.side_mirrors[side.nodes];
+  m.point = 0.5 * (mesh.nodes[side.nodes.first] + mesh.nodes[side.nodes.second]);
+  m.map = 2.0 * n * n.transpose() - Mat3d::Identity();
+}
+}  // namespace
+
 std::vector<EdgeSide> sides_on_edges(const Mesh& mesh, const std::vector<int>& edges) {
   std::set<std::pair<int, int>> wanted;  // undirected: the smaller node first
   for (const int k : edges) {
@@ -92,14 +105,29 @@ std::vector<EdgeSide> sides_on_edges(const Mesh& mesh, const std::vector<int>& e
 }
 
 void clamp_sides(Mesh& mesh, const std::vector<int>& edges) {
-  for (const EdgeSide& side : sides_on_edges(mesh, edges)) {
-    const auto& tri = mesh.triangles[static_cast<std::size_t>(side.triangle)];
-    const Vec3d& x0 = mesh.nodes[tri[0]];
-    const Vec3d n = (mesh.nodes[tri[1]] - x0).cross(mesh.nodes[tri[2]] - x0).normalized();
-    SideMirror& m = mesh.side_mirrors[side.nodes];
-    m.point = 0.5 * (mesh.nodes[side.nodes.first] + mesh.nodes[side.nodes.second]);
-    m.map = 2.0 * n * n.transpose() - Mat3d::Identity();
-  }
+  for (const EdgeSide& side : sides_on_edges(mesh, edges)) clamp_side(mesh, side);
+}
+
+int clamp_to_rigid(Mesh& mesh, const std::vector<char>& rigid) {
+  PLISSE_CHECK(mesh.is_shell() && rigid.size() == mesh.triangles.size() &&
+                   mesh.triangle_adjacent.size() == mesh.triangles.size() &&
+                   mesh.triangle_neighbours.size() == mesh.triangles.size(),
+               "clamp_to_rigid needs a shell's mid-surface and a flag per triangle");
+  int clamped = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const int a = mesh.triangle_adjacent[t][static_cast<std::size_t>(i)];
+      if (a < 0 || (rigid[t] != 0) == (rigid[static_cast<std::size_t>(a)] != 0)) continue;
+      mesh.triangle_adjacent[t][static_cast<std::size_t>(i)] = -1;
+      mesh.triangle_neighbours[t][static_cast<std::size_t>(i)] = -1;
+      if (rigid[t] != 0) continue;  // the rigid side's patch is never assembled
+      const auto& tri = mesh.triangles[t];
+      clamp_side(mesh, {static_cast<int>(t),
+                        {tri[static_cast<std::size_t>((i + 1) % 3)],
+                         tri[static_cast<std::size_t>((i + 2) % 3)]}});
+      ++clamped;
+    }
+  return clamped;
 }
 
 void mirror_sides(Mesh& mesh, const std::vector<int>& edges, int axis, double value) {

@@ -42,6 +42,14 @@ std::vector<EdgeSide> sides_on_edges(const Mesh& mesh, const std::vector<int>& e
 /// tangent plane while the edge's nodes are held. Precondition: mesh.is_shell().
 void clamp_sides(Mesh& mesh, const std::vector<int>& edges);
 
+/// A shell glued to rigid parts that only translate (a case's rigid regions): the patches of the
+/// triangles with `rigid[t]` == 0 no longer reach across their sides into the triangles with
+/// `rigid[t]` != 0 (neither side sees the other as a neighbour), and each side between the two
+/// is clamped as clamp_sides clamps an edge (KL8a): the rigid part's slope is its reference one,
+/// and the side's bending is counted in full on the deformable side. Returns the number of sides
+/// clamped. Precondition: mesh.is_shell(), rigid.size() == mesh.triangles.size().
+int clamp_to_rigid(Mesh& mesh, const std::vector<char>& rigid);
+
 /// A symmetry edge (KL8a): every side of `edges` without a neighbour sees its missing node as the
 /// mirror image of the opposite corner through the plane x_axis = value, so that the surface
 /// meets the plane at a right angle. Precondition: mesh.is_shell(), axis 0, 1 or 2.

@@ -166,8 +166,9 @@ class ElementAssembly {
   /// evaluate(geometry, x, material, 1/κ, internal) of every element at `state`, for output: each
   /// rank evaluates its owned elements, in parallel, and the ranks' arrays (`zero` on the elements
   /// of other ranks) are summed, so every rank gets every element's value. R holds doubles only
-  /// (it is summed as a flat array). A rigid element is evaluated with model 0, exactly
-  /// incompressible, at zero pressure (it moves rigidly and carries no stress); a model with
+  /// (it is summed as a flat array). A rigid element is evaluated undeformed (it only
+  /// translates), with model 0, exactly incompressible, at zero pressure: F = I and no stress,
+  /// also for a shell triangle whose patch reaches across into the deformable body; a model with
   /// history gives the response of its last converged history. Collective.
   template <class R, class Evaluate>
   std::vector<R> per_element(const Distribution& distribution, std::span<const double> state,
@@ -187,9 +188,8 @@ class ElementAssembly {
         int m = materials_.of(e);
         double inverse_bulk_modulus = 0.0;
         if (m == ElementMaterials::kRigid) {
-          // Any model at zero pressure gives F, J = 1 and zero stresses.
-          for (int i = 0; i < Element::kDof; ++i)
-            if (full[i] % DofMap::kPerNode == 3) x[i] = 0.0;
+          // Any model, undeformed and at zero pressure, gives F, J = 1 and zero stresses.
+          x.setZero();
           m = 0;
         } else {
           inverse_bulk_modulus = materials_.inverse_bulk_moduli[m];

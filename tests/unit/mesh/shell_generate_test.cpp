@@ -16,6 +16,7 @@
 
 #include "core/error.hpp"
 #include "mesh/generate.hpp"
+#include "mesh/shell_surface.hpp"
 #include "mesh/spheroid_surface.hpp"
 #include "mesh_test_util.hpp"
 
@@ -387,4 +388,48 @@ TEST(GenerateShellSurface, RefusesTheCubeSecondOrderAndTooManyTriangles) {
 }
 
 }  // namespace
+// A shell glued to a rigid part (clamp_to_rigid): the sheet 10 x 4 mm of 1 mm cells, its
+// triangles left of x = 3 rigid. The 4 sides on the line x = 3 (one per row of cells) are cut
+// out of both sides' patches and clamped on the deformable side: the half turn about the
+// sheet's normal z through each side's midpoint, diag(-1, -1, 1). Done once: a second call finds
+// no side between the two left.
+TEST(GenerateShellSurface, ARigidPartClampsTheSidesItShares) {
+  MeshGenerationSpec spec;
+  spec.kind = "sheet";
+  spec.length = 10.0;
+  spec.width = 4.0;
+  spec.thickness = 0.3;
+  spec.element_size = 1.0;
+  spec.layers = 0;
+  Mesh mesh = generate_shell_surface(spec);
+  std::vector<char> rigid(mesh.triangles.size(), 0);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    double x = 0.0;
+    for (int v : mesh.triangles[t]) x += mesh.nodes[static_cast<std::size_t>(v)].x() / 3.0;
+    rigid[t] = x < 3.0 ? 1 : 0;
+  }
+  const std::size_t mirrors_before = mesh.side_mirrors.size();
+  EXPECT_EQ(clamp_to_rigid(mesh, rigid), 4);
+  EXPECT_EQ(mesh.side_mirrors.size(), mirrors_before + 4);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const int a = mesh.triangle_adjacent[t][static_cast<std::size_t>(i)];
+      if (a >= 0)
+        EXPECT_EQ(rigid[t], rigid[static_cast<std::size_t>(a)]) << "triangle " << t;
+      else
+        EXPECT_EQ(mesh.triangle_neighbours[t][static_cast<std::size_t>(i)], -1);
+    }
+  int on_the_line = 0;
+  for (const auto& [side, mirror] : mesh.side_mirrors) {
+    if (mesh.nodes[static_cast<std::size_t>(side.first)].x() != 3.0 ||
+        mesh.nodes[static_cast<std::size_t>(side.second)].x() != 3.0)
+      continue;
+    ++on_the_line;
+    EXPECT_EQ(mirror.point.x(), 3.0);
+    EXPECT_TRUE(mirror.map.isApprox(Vec3d(-1.0, -1.0, 1.0).asDiagonal().toDenseMatrix(), 1e-15));
+  }
+  EXPECT_EQ(on_the_line, 4);
+  EXPECT_EQ(clamp_to_rigid(mesh, rigid), 0);
+}
+
 }  // namespace plisse
