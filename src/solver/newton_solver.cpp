@@ -13,6 +13,11 @@ namespace {
 /// A reuse iteration is kept when it cuts ||R|| at least this much (newton_solver.hpp): at this
 /// rate the factor's ten or so solves to rtol 1e-8 cost less than two factorisations.
 constexpr double kReuseContraction = 0.1;
+/// A Newton step the line search cut below this fraction is a short step; a failed solve of at
+/// least kCrawlIterations iterations, three quarters of them short under bt, says why and what
+/// to change (read_snes_outcome): its full steps kept raising the residual.
+constexpr double kShortStep = 0.5;
+constexpr int kCrawlIterations = 4;
 /// Reuse iterations per solve at most (chord and Krylov steps together).
 constexpr int kReuseMaxIterations = 12;
 /// A Krylov step solves K dx = -R to this relative residual: its iterate then cuts ||R|| by
@@ -100,6 +105,7 @@ NewtonSolver::NewtonSolver(MixedModel& model, const NewtonSettings& settings) : 
   PLISSE_PETSC(SNESSetFunction(snes_, r_, &NewtonSolver::form_function, this));
   make_matrix();
   configure_snes(snes_, settings, model.symmetric());
+  backtracking_ = settings.line_search == LineSearch::bt;
   if (settings.linear.type == LinearSolverType::iterative) {
     KSP ksp = nullptr;
     PLISSE_PETSC(SNESGetKSP(snes_, &ksp));
@@ -172,6 +178,13 @@ PetscErrorCode NewtonSolver::converged(SNES snes, PetscInt it, PetscReal xnorm, 
   if (*reason == SNES_CONVERGED_ITERATING && fnorm <= self->pass_rtol_ * self->reference_norm_)
     *reason = SNES_CONVERGED_FNORM_RELATIVE;
   if (it > 0 && self->chord_next_) ++self->chord_iterations_;  // iteration `it` was a chord step
+  if (it > 0) {
+    SNESLineSearch line_search = nullptr;
+    PetscReal lambda = 1.0;
+    PetscCall(SNESGetLineSearch(snes, &line_search));
+    PetscCall(SNESLineSearchGetLambda(line_search, &lambda));
+    if (lambda < kShortStep) ++self->short_steps_;
+  }
   // The next iteration keeps the factor when this one cut ||R|| tenfold (newton_solver.hpp).
   self->chord_next_ = self->chord_enabled_ && self->reuse_allowed_ && it > 0 &&
                       fnorm <= kReuseContraction * self->previous_fnorm_;
@@ -395,6 +408,7 @@ NewtonResult NewtonSolver::run() {
   passed_test_ = false;
   jacobians_ = 0;
   chord_iterations_ = 0;
+  short_steps_ = 0;
   model_.get_free(x_);
   // The tangent's sparsity grew (contact pairs): a new matrix, which the factorisation analyses
   // anew; a factor of the old pattern is not reused.
@@ -483,6 +497,14 @@ void NewtonSolver::read_snes_outcome(NewtonResult& result, int earlier_iteration
       result.reason +=
           " without plisse's residual test (a PETSc option such as -snes_type ksponly "
           "skips it): the state is not accepted";
+    if (!result.converged && !interrupted_ && backtracking_ && its >= kCrawlIterations &&
+        4 * short_steps_ >= 3 * static_cast<int>(its))
+      result.reason += "; the line search shortened " + std::to_string(short_steps_) + " of " +
+                       std::to_string(its) +
+                       " steps: each full Newton step raised the residual, as a small load "
+                       "carried in bending from a flat start or a cap's turn does (second-order "
+                       "membrane forces, a rotation's second-order gap); "
+                       "solver.newton.line_search: cp, which minimises along the step, takes it";
   }
   result.interrupted = interrupted_;
   result.status = last_status_;

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <utility>
 
 #include "output/history_writer.hpp"
 #include "output/json_file.hpp"
@@ -193,6 +195,47 @@ TEST(SolverFailure, ALoadPastTheLimitLoadStopsNamingTheLoadReached) {
   char named[64];
   std::snprintf(named, sizeof named, "; there pressure:p = %.6g. If", pressure);
   EXPECT_NE(text.find(named), std::string::npos) << named << "\n" << text;
+}
+
+// Requirement: a Newton solve that fails because the back-tracking line search shortened nearly
+// every step says so and names the line search that takes such steps. A shell strip (110 x 10 x
+// 1 mm, clamped at x = 0, plane strain) under its weight from flat: the load (w/L ~ 1e-3) is
+// carried in bending, and each full Newton step's second-order membrane forces raise the
+// residual a hundredfold, so bt cuts every step (and the steps with it). With `line_search: cp`
+// the same case converges in one step with at most 4 Newton iterations.
+TEST(SolverFailure, ALineSearchThatShortensEveryStepIsNamedWithItsRemedy) {
+  const std::string strip =
+      "element: shell\n"
+      "mesh: {generate: sheet, length: 110.0, width: 10.0, thickness: 1.0, element_size: 2.5}\n"
+      "material: {model: neo-hookean, c1: 0.5, density: 2.5e-13}\n"
+      "boundary:\n"
+      "  - {type: clamped, surface: left}\n"
+      "  - {type: symmetry, surface: front}\n"
+      "  - {type: symmetry, surface: back}\n"
+      "loads: [{type: gravity, name: g, acceleration: [0, 0, -9810]}]\n"
+      "solver: {steps: 1, newton: {line_search: LS}}\n";
+  const auto with = [&](const std::string& line_search) {
+    std::string text = strip;
+    text.replace(text.find("LS"), 2, line_search);
+    const auto dir = test::scratch_directory("line-search-" + line_search);
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "case.yaml") << text;
+    test::run_plisse("run " + (dir / "case.yaml").string() + " -o " + (dir / "run").string(),
+                     dir / "out.log");
+    std::ifstream in(dir / "out.log");
+    return std::pair{std::string((std::istreambuf_iterator<char>(in)), {}),
+                     read_json_file(dir / "run" / "summary.json")};
+  };
+  const auto [bt_log, bt] = with("bt");
+  EXPECT_NE(bt_log.find("each full Newton step raised the residual"), std::string::npos) << bt_log;
+  EXPECT_NE(bt_log.find("solver.newton.line_search: cp"), std::string::npos) << bt_log;
+  EXPECT_GT(bt["cutbacks"].get<int>(), 0);
+  const auto [cp_log, cp] = with("cp");
+  EXPECT_EQ(cp_log.find("each full Newton step raised the residual"), std::string::npos) << cp_log;
+  EXPECT_TRUE(cp["completed"].get<bool>()) << cp_log;
+  EXPECT_EQ(cp["steps"].get<int>(), 1);
+  EXPECT_EQ(cp["cutbacks"].get<int>(), 0);
+  EXPECT_LE(cp["newton_iterations"].get<int>(), 4);
 }
 
 }  // namespace
