@@ -69,7 +69,11 @@ class ElementAssembly {
       PLISSE_CHECK(m == ElementMaterials::kRigid ||
                        (m >= 0 && m < static_cast<int>(materials_.materials.size())),
                    "element material index " << m << " out of range");
-    nodes_.reserve(static_cast<std::size_t>(n) * Element::kNodes);
+    // Without twins the carriers are the corners: the lists keep the other positions only, and
+    // the layout reads the corners for the pressures (compact_local_node), so a model without
+    // regions stores and scatters what it did before twins existed.
+    width_ = twins.carrier.empty() ? kCompactWidth : Element::kNodes;
+    nodes_.reserve(static_cast<std::size_t>(n) * width_);
     geometry_.reserve(n);
     PLISSE_CHECK(twins.carrier.empty() || (Element::kPressureNodes == 4 &&
                                            twins.carrier.size() == 4 * static_cast<std::size_t>(n)),
@@ -82,7 +86,7 @@ class ElementAssembly {
       constexpr int first = Element::kNodes - Element::kPressureNodes;
       for (int a = 0; a < Element::kPressureNodes; ++a)
         nodes[first + a] = twins.carrier_of(e, a, nodes[first + a]);
-      nodes_.insert(nodes_.end(), nodes.begin(), nodes.end());
+      nodes_.insert(nodes_.end(), nodes.begin(), nodes.begin() + width_);
       geometry_.push_back(Element::geometry(mesh, e, nodes));
     }
     internal_.assign(n, Element::initial_internal());
@@ -97,8 +101,10 @@ class ElementAssembly {
     converged_history_ = history_;
   }
 
-  /// The element node lists (a view of this object's storage).
-  ElementNodes nodes() const { return {nodes_, Element::kNodes}; }
+  /// The element node lists (a view of this object's storage): Element::kNodes per element, or
+  /// without pressure twins all but the last Element::kPressureNodes (the carriers, which are
+  /// then the corners, the first Element::kPressureNodes).
+  ElementNodes nodes() const { return {nodes_, width_}; }
   /// The material of every element.
   const ElementMaterials& materials() const { return materials_; }
   /// Number of elements (all ranks hold all of them).
@@ -129,7 +135,9 @@ class ElementAssembly {
       const std::array<int, Element::kDof> full = dofs(e);
       std::array<int, Element::kDof> equations;
       for (int i = 0; i < Element::kDof; ++i) equations[i] = dof_map.equation(full[i]);
-      layout.add_element(e, equations, Element::kLocalNode, out.K, values);
+      layout.add_element(e, equations,
+                         width_ == Element::kNodes ? Element::kLocalNode : kCompactLocalNode, out.K,
+                         values);
     });
   }
 
@@ -235,12 +243,11 @@ class ElementAssembly {
       double volume = 0.0;
       const int m = materials_.of(e);
       const bool rigid = m == ElementMaterials::kRigid;  // moves rigidly: model 0, J = 1
+      const std::array<int, Element::kNodes> nodes = node_list(e);
       const Mat3d integral = Element::deformation_integral(
-          mesh,
-          std::span<const int, Element::kNodes>(
-              nodes_.data() + static_cast<std::size_t>(e) * Element::kNodes, Element::kNodes),
-          geometry_[e], gather(dofs(e), state), materials_.materials[rigid ? 0 : m],
-          rigid ? 0.0 : materials_.inverse_bulk_moduli[m], volume);
+          mesh, std::span<const int, Element::kNodes>(nodes), geometry_[e], gather(dofs(e), state),
+          materials_.materials[rigid ? 0 : m], rigid ? 0.0 : materials_.inverse_bulk_moduli[m],
+          volume);
       visit(e, volume, integral);
     }
   }
@@ -311,9 +318,26 @@ class ElementAssembly {
     bool rigid;  ///< a rigid element: nothing evaluated, nothing to add
   };
 
+  /// Positions of a node list without its pressure carriers.
+  static constexpr int kCompactWidth = Element::kNodes - Element::kPressureNodes;
+  /// Element::kLocalNode for the compact lists: a pressure's carrier is its corner, position a.
+  static constexpr std::array<int, Element::kDof> kCompactLocalNode = [] {
+    std::array<int, Element::kDof> node = Element::kLocalNode;
+    for (int& a : node)
+      if (a >= kCompactWidth) a -= kCompactWidth;
+    return node;
+  }();
+  /// Element e's whole node list (Element::nodes with its carriers).
+  std::array<int, Element::kNodes> node_list(int e) const {
+    std::array<int, Element::kNodes> nodes;
+    const int* stored = nodes_.data() + static_cast<std::size_t>(e) * width_;
+    for (int a = 0; a < width_; ++a) nodes[a] = stored[a];
+    for (int a = width_; a < Element::kNodes; ++a) nodes[a] = stored[a - kCompactWidth];
+    return nodes;
+  }
   std::array<int, Element::kDof> dofs(int e) const {
-    return Element::dofs(std::span<const int, Element::kNodes>(
-        nodes_.data() + static_cast<std::size_t>(e) * Element::kNodes, Element::kNodes));
+    const std::array<int, Element::kNodes> nodes = node_list(e);
+    return Element::dofs(std::span<const int, Element::kNodes>(nodes));
   }
   /// Element e's point history: the current (written by evaluations) and the converged one.
   std::span<double> history(int e) {
@@ -385,7 +409,8 @@ class ElementAssembly {
   }
 
   ElementMaterials materials_;
-  std::vector<int> nodes_;  ///< Element::kNodes per element
+  std::vector<int> nodes_;  ///< width_ per element (nodes())
+  int width_ = Element::kNodes;
   std::vector<typename Element::Geometry> geometry_;
   std::vector<typename Element::Internal> internal_, converged_internal_;
   /// Point history (material/inelastic.hpp): element e's at [history_offset_[e],

@@ -11,10 +11,11 @@
 ///                  layout stores one position per pair of them; a node may appear twice).
 ///                  MINI: 8, Taylor-Hood: 14, shell: 12.
 ///   kPressureNodes the last kPressureNodes positions of the node list carry the element's
-///                  pressure unknowns, one per corner: nodes(mesh, e) lists the corners there,
-///                  and the assembly puts a region's pressure twin in a corner's place where the
-///                  model gives the regions their own pressures (solver/pressure_twins.hpp).
-///                  MINI and Taylor-Hood: 4, shell: 0.
+///                  pressure unknowns, one per corner: nodes(mesh, e) lists there the corners,
+///                  which are its first kPressureNodes positions, and the assembly puts a
+///                  region's pressure twin in a corner's place where the model gives the regions
+///                  their own pressures (solver/pressure_twins.hpp); without twins it keeps
+///                  the other positions only. MINI and Taylor-Hood: 4, shell: 0.
 ///   kDof           element unknowns seen by the global solver, all nodal values. MINI: 16,
 ///                  Taylor-Hood: 34, shell: 36.
 ///   kInternalSize  doubles of internal state per element, condensed out of the global system

@@ -189,8 +189,8 @@ class NewtonSolver {
   int short_steps_ = 0;  ///< SNES iterations in the current solve whose line search cut the step
                          ///< below half (failure_hint)
   bool backtracking_ = false;  ///< the line search is bt (NewtonSettings::line_search)
-  KSP krylov_ = nullptr;         ///< GMRES of the Krylov steps, made at the first one
-  int krylov_iterations_ = 0;    ///< GMRES iterations per Krylov step at most; 0: none
+  KSP krylov_ = nullptr;       ///< GMRES of the Krylov steps, made at the first one
+  int krylov_iterations_ = 0;  ///< GMRES iterations per Krylov step at most; 0: none
   /// A chord step with reuse_ was refused: its solves start with Krylov steps.
   bool factor_stale_ = false;
 };

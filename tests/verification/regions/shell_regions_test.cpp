@@ -182,8 +182,8 @@ TEST(ShellRegions, ThePatchAndGripsExampleRunsAsAShell) {
   std::ifstream file(std::string(PLISSE_SOURCE_DIR) + "/examples/sheet-patch-grips.yaml");
   std::stringstream text;
   text << file.rdbuf();
-  const HistoryTable h = run_case_text(test::scratch_directory("shell-patch-grips"),
-                                       "element: shell\n" + text.str());
+  const HistoryTable h =
+      run_case_text(test::scratch_directory("shell-patch-grips"), "element: shell\n" + text.str());
   ASSERT_FALSE(h.rows.empty());
   const auto& row = h.rows.back();
   const double pull = row[history_column(h, "force_x:right_grip")];
