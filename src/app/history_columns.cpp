@@ -178,7 +178,7 @@ void HistoryColumns::add_probes(const std::vector<Probe>& probes, const Mesh& me
   };
   std::vector<Located> located;
   std::vector<std::string> names;
-  bool needs_F = false, needs_thickness = false, needs_pressure = false;
+  bool needs_F = false, needs_thickness = false;
   for (const Probe& probe : probes) {
     const MeshPoint at = locate_point(mesh, probe.point);
     probe_points_.push_back({probe.name, probe.point, at});
@@ -188,63 +188,64 @@ void HistoryColumns::add_probes(const std::vector<Probe>& probes, const Mesh& me
       names.insert(names.end(), columns.begin(), columns.end());
       needs_F |= f == ProbeField::principal_stretches;
       needs_thickness |= f == ProbeField::thickness;
-      needs_pressure |= f == ProbeField::pressure;
     }
   }
   const bool shell = mesh.is_shell();
   PLISSE_CHECK(!needs_thickness || wall_ || shell,
                "history: a probe of the thickness needs a wall");
-  add(std::move(names),
-      [located = std::move(located), needs_F, needs_thickness, needs_pressure, shell, &mesh,
-       wall = wall_](const StepRecord& r, std::vector<double>& row) {
-        // What several probes share, computed once a row.
-        const std::vector<Vec3d> u = nodal_displacements(r.model);
-        const std::vector<double> p =
-            needs_pressure ? r.model.nodal_pressures() : std::vector<double>{};
-        const std::vector<Mat3d> F =
-            needs_F ? r.model.element_deformation_gradients() : std::vector<Mat3d>{};
-        // A wall's thickness is a nodal field (interpolated at the point); a shell's, its
-        // triangle's.
-        const std::vector<double> thickness =
-            needs_thickness && !shell ? (*wall)(u) : std::vector<double>{};
-        PLISSE_CHECK(!(needs_thickness && shell) || r.shell != nullptr,
-                     "history: a shell's thickness probe needs the step's shell outputs");
-        for (const Located& at : located) {
-          const ElementFields& cell = r.fields[static_cast<std::size_t>(at.element)];
-          const auto push = [&row](const Vec3d& v) { row.insert(row.end(), {v[0], v[1], v[2]}); };
-          for (ProbeField field : at.fields) switch (field) {
-              case ProbeField::displacement:
-                push(interpolate(at.weights, u));
-                break;
-              case ProbeField::position:
-                push(interpolate(at.weights, mesh.nodes) + interpolate(at.weights, u));
-                break;
-              case ProbeField::pressure:
-                row.push_back(interpolate(at.weights, p));
-                break;
-              case ProbeField::cauchy:
-                for (auto [i, j] : {std::pair{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}})
-                  row.push_back(cell.cauchy(i, j));
-                break;
-              case ProbeField::von_mises:
-                row.push_back(cell.von_mises);
-                break;
-              case ProbeField::principal_stretches:
-                push(principal_stretches(F[static_cast<std::size_t>(at.element)]));
-                break;
-              case ProbeField::principal_stresses:
-                push(principal_values(cell.cauchy));
-                break;
-              case ProbeField::J:
-                row.push_back(cell.J);
-                break;
-              case ProbeField::thickness:
-                row.push_back(shell ? (*r.shell)[static_cast<std::size_t>(at.element)].thickness
-                                    : interpolate(at.weights, thickness));
-                break;
-            }
+  add(std::move(names), [located = std::move(located), needs_F, needs_thickness, shell, &mesh,
+                         wall = wall_](const StepRecord& r, std::vector<double>& row) {
+    // What several probes share, computed once a row.
+    const std::vector<Vec3d> u = nodal_displacements(r.model);
+    const std::vector<Mat3d> F =
+        needs_F ? r.model.element_deformation_gradients() : std::vector<Mat3d>{};
+    // A wall's thickness is a nodal field (interpolated at the point); a shell's, its
+    // triangle's.
+    const std::vector<double> thickness =
+        needs_thickness && !shell ? (*wall)(u) : std::vector<double>{};
+    PLISSE_CHECK(!(needs_thickness && shell) || r.shell != nullptr,
+                 "history: a shell's thickness probe needs the step's shell outputs");
+    for (const Located& at : located) {
+      const ElementFields& cell = r.fields[static_cast<std::size_t>(at.element)];
+      const auto push = [&row](const Vec3d& v) { row.insert(row.end(), {v[0], v[1], v[2]}); };
+      for (ProbeField field : at.fields) switch (field) {
+          case ProbeField::displacement:
+            push(interpolate(at.weights, u));
+            break;
+          case ProbeField::position:
+            push(interpolate(at.weights, mesh.nodes) + interpolate(at.weights, u));
+            break;
+          case ProbeField::pressure: {
+            // The element's own pressures: where regions meet, its region's (twins).
+            double p = 0.0;
+            for (const auto& [node, weight] : at.weights)
+              p += weight * r.model.element_pressure(at.element, node);
+            row.push_back(p);
+            break;
+          }
+          case ProbeField::cauchy:
+            for (auto [i, j] : {std::pair{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}})
+              row.push_back(cell.cauchy(i, j));
+            break;
+          case ProbeField::von_mises:
+            row.push_back(cell.von_mises);
+            break;
+          case ProbeField::principal_stretches:
+            push(principal_stretches(F[static_cast<std::size_t>(at.element)]));
+            break;
+          case ProbeField::principal_stresses:
+            push(principal_values(cell.cauchy));
+            break;
+          case ProbeField::J:
+            row.push_back(cell.J);
+            break;
+          case ProbeField::thickness:
+            row.push_back(shell ? (*r.shell)[static_cast<std::size_t>(at.element)].thickness
+                                : interpolate(at.weights, thickness));
+            break;
         }
-      });
+    }
+  });
 }
 
 std::vector<std::string> HistoryColumns::extra_names() const {

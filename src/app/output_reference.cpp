@@ -64,7 +64,8 @@ const std::vector<OutputEntry> kHistoryAfter = {
     {"y:<probe>", "mm", "`probes[]`, `position`", "deformed y coordinate of the probe"},
     {"z:<probe>", "mm", "`probes[]`, `position`", "deformed z coordinate of the probe"},
     {"pressure:<probe>", "MPa", "`probes[]`, `pressure`",
-     "the pressure field interpolated at the probe, positive in compression (VTU `pressure`)"},
+     "the pressure field interpolated at the probe, positive in compression (VTU `pressure`); "
+     "where regions meet, the pressure of the probe's element's region (`region_pressure`)"},
     {"cauchy_xx:<probe>", "MPa", "`probes[]`, `cauchy`",
      "σ_xx of the element holding the probe, its volume average (VTU `cauchy_stress`), tension "
      "positive (likewise `cauchy_yy`, `cauchy_zz`, `cauchy_xy`, `cauchy_yz`, `cauchy_xz`)"},
@@ -357,8 +358,11 @@ const std::vector<OutputEntry> kVtuPoint = {
      "units of the load parameter t, so not a physical speed)"},
     {"pressure", "MPa", "always",
      "the pressure unknown p, positive in compression (σ = −p I + the isochoric part); on a "
-     "Taylor-Hood mesh's edge nodes the mean of the edge's corners; 0 on a shell, which has no "
-     "pressure unknown (its cell field `pressure`)"},
+     "Taylor-Hood mesh's edge nodes the mean of the edge's corners; at a node where regions "
+     "with pressures of their own meet (`region_pressure`), the first region's (each element's "
+     "own: cell field `element_pressure`); 0 on a shell, which has no pressure unknown (its cell "
+     "field "
+     "`pressure`)"},
     {"reaction", "N", "always",
      "the force the constraints exert on the body at each node (3 components): zero on the free "
      "components, the nodal reaction on the prescribed ones; summed over a surface it is "
@@ -376,6 +380,10 @@ const std::vector<OutputEntry> kVtuCell = {
      "the element's volume average of the Cauchy stress σ, 6 components xx, yy, zz, xy, yz, xz, "
      "tension positive; of a shell, its average through the thickness"},
     {"von_mises", "MPa", "always", "√(3/2 dev σ̄ : dev σ̄) of that average"},
+    {"element_pressure", "MPa", "a solid mesh",
+     "the element's volume average of its pressure field p, positive in compression: where "
+     "regions with pressures of their own meet (`region_pressure`), its region's, which the "
+     "point field `pressure` shows for the first region only"},
     {"J", "–", "always",
      "the element's volume average of det F (of a shell, its average through the thickness: 1 "
      "when exactly incompressible)"},

@@ -97,6 +97,11 @@ void write_step_vtu(const fs::path& file, const Case& c, const MixedModel& model
   if (mesh.is_shell()) {
     const std::vector<VtuField> shell_fields = shell_cell_fields(fields, shell);
     cell_fields.insert(cell_fields.end(), shell_fields.begin(), shell_fields.end());
+  } else {
+    // Each element's own pressure: where regions meet, the point field holds one region's.
+    std::vector<double> element_pressure(n_cells);
+    for (int e = 0; e < n_cells; ++e) element_pressure[e] = fields[e].pressure;
+    cell_fields.push_back(make_scalar_field("element_pressure", element_pressure));
   }
   cell_fields.insert(cell_fields.end(), extra_cell_fields.begin(), extra_cell_fields.end());
   for (const VtuField& f : point_fields) require_output_entry(OutputTable::vtu_point, f.name);

@@ -420,6 +420,25 @@ std::vector<double> MixedModel::nodal_pressures() const {
   return p;
 }
 
+double MixedModel::element_pressure(int e, int node) const {
+  if (family_ == ElementFamily::shell) return 0.0;  // plane stress: no pressure unknowns
+  const auto& corners = mesh_.tets[static_cast<std::size_t>(e)];
+  const auto corner_pressure = [&](int a) {
+    const int carrier = twins_.carrier_of(e, a, corners[static_cast<std::size_t>(a)]);
+    return state_[DofMap::dof(carrier, 3)];
+  };
+  for (int a = 0; a < 4; ++a)
+    if (corners[static_cast<std::size_t>(a)] == node) return corner_pressure(a);
+  PLISSE_CHECK(mesh_.order() == 2, "node " << node << " is not a corner of element " << e);
+  for (int k = 0; k < 6; ++k)
+    if (mesh_.tet_edge_nodes[static_cast<std::size_t>(e)][static_cast<std::size_t>(k)] == node) {
+      const auto [i, j] = kTetEdges[static_cast<std::size_t>(k)];
+      return 0.5 * (corner_pressure(i) + corner_pressure(j));
+    }
+  PLISSE_CHECK(false, "node " << node << " is not a node of element " << e);
+  return 0.0;
+}
+
 double MixedModel::strain_energy() const {
   return visit_elements([&](const auto& e) { return e.strain_energy(*distribution_, state_); });
 }

@@ -239,6 +239,12 @@ class MixedModel {
   /// corners (for output).
   std::vector<double> nodal_pressures() const;
 
+  /// The pressure [MPa] element e interpolates at its node `node` (a corner, or on a
+  /// Taylor-Hood mesh an edge node): the value of the corner's carrier, the node's own or its
+  /// region's twin (solver/pressure_twins.hpp), and at an edge node the mean of the edge's two
+  /// corners'. Without twins, nodal_pressures()[node]. Precondition: `node` is a node of e.
+  double element_pressure(int e, int node) const;
+
   /// Per-element Cauchy stress, J and von Mises at the current state (of a shell, thickness
   /// averages: element/shell_output.hpp).
   std::vector<ElementFields> element_fields() const;

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -24,6 +25,7 @@
 #include "mesh/gmsh_io.hpp"
 #include "output/history_writer.hpp"
 #include "output/json_file.hpp"
+#include "output/vtu_reader.hpp"
 #include "support/run_case.hpp"
 
 namespace plisse {
@@ -107,8 +109,9 @@ TEST(Regions, ARegionOfTheSameMaterialUnderAnotherModelChangesNothing) {
 // force is A1 P1(λ) + A2 P2(λ) with each model's nominal uniaxial stress P (materials.md; Ogden,
 // Non-linear Elastic Deformations, 1984, 7.2). Their pressures differ (σ_yy = 0 in each): a
 // pressure of each region's own (`region_pressure: discontinuous`, the default) holds the
-// affine solution exactly on any mesh; one continuous field cannot jump: it smears the jump over
-// the elements at the interface, an error that must shrink as the mesh is refined.
+// affine solution exactly on any mesh, and probes in the elements beside the interface read each
+// layer's own pressure; one continuous field cannot jump: it smears the jump over the elements
+// at the interface, an error that must shrink as the mesh is refined.
 double layered_force_error(int order, int n, const std::string& region_pressure) {
   const auto dir = test::scratch_directory("regions-layers-" + element_name(order) + "-" +
                                            std::to_string(n) + "-" + region_pressure);
@@ -127,16 +130,40 @@ double layered_force_error(int order, int n, const std::string& region_pressure)
                "  - {type: symmetry, surface: sym_y}\n"
                "  - {type: symmetry, surface: sym_z}\n"
                "  - {type: displacement, name: pull, surface: right, value: [2, ~, ~]}\n"
+               "probes:\n"
+               "  - {name: soft, point: [1.1, 0.45, 0.6], fields: [pressure]}\n"
+               "  - {name: stiff, point: [1.1, 0.55, 0.6], fields: [pressure]}\n"
                "solver:\n  steps: 2\n  max_step: 0.5\n" +
                std::string(kNewton));
   if (h.rows.empty()) return NAN;
   const double lambda = 2.0;  // the end of the pull
   const double area = 0.5;    // of each layer: 0.5 x 1 mm
-  const double expected =
-      area *
-          nominal_stress(make_material("neo-hookean", {{"c1", 0.1}}), TestMode::uniaxial, lambda) +
-      area * nominal_stress(make_material("mooney-rivlin", {{"c1", 0.3}, {"c2", 0.1}}),
-                            TestMode::uniaxial, lambda);
+  const double soft =
+      nominal_stress(make_material("neo-hookean", {{"c1", 0.1}}), TestMode::uniaxial, lambda);
+  const double stiff = nominal_stress(make_material("mooney-rivlin", {{"c1", 0.3}, {"c2", 0.1}}),
+                                      TestMode::uniaxial, lambda);
+  const double expected = area * soft + area * stiff;
+  if (region_pressure == "discontinuous") {
+    // Each layer's own pressure, read by probes in the elements beside the interface: with
+    // σ_yy = 0 and a traceless isochoric stress, p = σ_iso,yy = -λ P / 3 in each layer.
+    for (const auto& [probe, P] : {std::pair{"pressure:soft", soft}, {"pressure:stiff", stiff}})
+      EXPECT_NEAR(h.rows.back()[history_column(h, probe)], -lambda * P / 3.0, 1e-9 * lambda * P)
+          << element_name(order) << ", " << n << " cells, " << probe;
+    // The last step file's cell field: every element has its own layer's pressure.
+    char step_file[32];
+    std::snprintf(step_file, sizeof step_file, "step_%04d.vtu",
+                  static_cast<int>(h.rows.back()[history_column(h, "step")]));
+    const VtuField cells = read_vtu_cell_field(dir / "run" / step_file, "element_pressure");
+    int in_soft = 0, in_stiff = 0;
+    for (double p : cells.values) {
+      const bool is_soft = std::abs(p + lambda * soft / 3.0) <= 1e-9 * lambda * soft;
+      const bool is_stiff = std::abs(p + lambda * stiff / 3.0) <= 1e-9 * lambda * stiff;
+      EXPECT_TRUE(is_soft || is_stiff) << p;
+      in_soft += is_soft ? 1 : 0;
+      in_stiff += is_stiff ? 1 : 0;
+    }
+    EXPECT_EQ(in_soft, in_stiff) << "the two layers have as many elements";
+  }
   return std::abs(h.rows.back()[history_column(h, "force_x:pull")] - expected) / expected;
 }
 
