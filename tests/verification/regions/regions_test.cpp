@@ -309,9 +309,8 @@ TEST(Regions, AStifferAndStifferBlockTendsToTheRigidOne) {
 // Taylor-Hood element through the coating, turned by 0.005 rad at a cap. Away from the cap it
 // bends as a circle; the cap's moment over b D κ (κ from the probes' second difference, b D the
 // composite section's, docs/theory/regions.md BL7) is the closed form's 1 with a pressure of each
-// layer's own: 1.0005 measured, held within 1e-3 (the strains' own nonlinearity, which shrinks
-// with the rotation). With one shared pressure it is 0.908 (held within 0.002): the numbers the
-// example and docs/case-file.md print.
+// layer's own: 1.0005 (the strains' own nonlinearity, which shrinks with the rotation). With one
+// shared pressure it is 0.908. Both held to the digits the example and docs/case-file.md print.
 TEST(Regions, TheCoatedStripExampleBendsAsTheCompositeBeam) {
   std::ifstream file(std::string(PLISSE_SOURCE_DIR) + "/examples/coated-strip-bending.yaml");
   std::stringstream text;
@@ -325,7 +324,7 @@ TEST(Regions, TheCoatedStripExampleBendsAsTheCompositeBeam) {
   EXPECT_NEAR(D, 0.15082, 5e-6);
   EXPECT_NEAR(0.25 * D, 0.037705, 5e-7);
   for (const auto& [setting, expected, tolerance] :
-       {std::tuple{"discontinuous", 1.0, 1e-3}, std::tuple{"continuous", 0.908, 0.002}}) {
+       {std::tuple{"discontinuous", 1.0005, 1e-4}, std::tuple{"continuous", 0.908, 5e-4}}) {
     std::string yaml = text.str();
     const std::string key = "\nregion_pressure: discontinuous";
     ASSERT_NE(yaml.find(key), std::string::npos);

@@ -11,6 +11,7 @@
 // the solver's tolerance.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -156,8 +157,11 @@ TEST(ShellRegions, ARigidGripClampsTheShellItHolds) {
     std::printf("cells %.3g mm: w = %.6e mm, exact %.6e, error %.2e\n", h, w, exact, errors.back());
     EXPECT_NEAR(t.rows.back()[history_column(t, "force_z:grip")], weight, 1e-8 * weight) << h;
   }
-  EXPECT_LT(errors[0], 1e-3);
-  EXPECT_LT(errors.back(), 5e-5);
+  // The numbers docs/case-file.md and docs/theory/shell.md print, to their last digit (a guard
+  // on plisse's own discretisation error, against the closed form).
+  const std::array<double, 3> printed{6.6e-4, 1.6e-4, 3.9e-5};
+  const std::array<double, 3> half_digit{5e-6, 5e-6, 5e-7};
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(errors[k], printed[k], half_digit[k]) << k;
   for (std::size_t k = 0; k + 1 < errors.size(); ++k)
     EXPECT_GT(errors[k] / errors[k + 1], 3.5) << "second order, halving " << k;
 }
