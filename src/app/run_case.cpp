@@ -306,6 +306,7 @@ SteppingResult step_to_the_end(const RunContext& run, RunSolver& solver, RunReco
 /// smallest_step): the load factor and time of the last converged step, the loads there (the
 /// history's load columns: RunRecorder::last_loads), and how to go past it. Under arc-length
 /// control (`arc_length`) no step of the shortest arc converged: the path itself was lost there.
+/// When no step converged at all, the start is named instead of a limit load.
 std::string limit_load_text(const StepInfo& last,
                             const std::vector<std::pair<std::string, double>>& loads,
                             bool arc_length) {
@@ -330,6 +331,13 @@ std::string limit_load_text(const StepInfo& last,
            ". No arc down to the shortest converged there: the path branches or turns too sharply "
            "for the arc length (a bifurcation: seed it with stability.imperfection), or an element "
            "inverts (a finer mesh there)";
+  if (last.step == 0)
+    return out +
+           ": no step converged from the start. A body that cannot take the first increment of "
+           "its load at any step size is seldom at a limit load: the reason of the failed "
+           "attempts above says why (Newton's tolerances below the residual's round-off, a line "
+           "search that cut every step, an element that inverts, an unresisted motion), and a "
+           "load far above the material's modulus is often a unit slip";
   return out +
          ". If the body collapses there (its stiffness along the load is gone), this is its "
          "limit load. Under load control nothing follows it further: set solver.control: "

@@ -238,5 +238,32 @@ TEST(SolverFailure, ALineSearchThatShortensEveryStepIsNamedWithItsRemedy) {
   EXPECT_LE(cp["newton_iterations"].get<int>(), 4);
 }
 
+// Requirement: a run in which no step converges from the start does not call the start a limit
+// load. The shell strip under its weight, with the back-tracking line search and 8 iterations a
+// step, fails every attempt (each full step raises the residual: see the test above); the
+// message says that no step converged from the start and points to the attempts' reason.
+TEST(SolverFailure, NoStepConvergedFromTheStartIsNotCalledALimitLoad) {
+  const auto dir = test::scratch_directory("no-first-step");
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "case.yaml")
+      << "element: shell\n"
+         "mesh: {generate: sheet, length: 110.0, width: 10.0, thickness: 1.0, element_size: 5.0}\n"
+         "material: {model: neo-hookean, c1: 0.5, density: 2.5e-13}\n"
+         "boundary:\n"
+         "  - {type: clamped, surface: left}\n"
+         "  - {type: symmetry, surface: front}\n"
+         "  - {type: symmetry, surface: back}\n"
+         "loads: [{type: gravity, name: g, acceleration: [0, 0, -9810]}]\n"
+         "solver: {steps: 1, min_step: 0.2, newton: {line_search: bt, rtol: 1.0e-10,"
+         " atol: 1.0e-15, max_iterations: 8}}\n";
+  const int status = test::run_plisse(
+      "run " + (dir / "case.yaml").string() + " -o " + (dir / "run").string(), dir / "log.txt");
+  EXPECT_EQ(status, 1);
+  std::ifstream in(dir / "log.txt");
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(text.find("no step converged from the start"), std::string::npos) << text;
+  EXPECT_EQ(text.find("this is its limit load"), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace plisse
