@@ -126,7 +126,8 @@ void HistoryColumns::add_reactions(const Case& c, const Mesh& mesh) {
   }
   for (const Region& region : c.regions) {
     if (!region.rigid || region.name.empty()) continue;
-    auto nodes = std::make_shared<const std::set<int>>(region_nodes(region, mesh));
+    auto nodes = std::make_shared<const std::set<int>>(
+        nodes_of_elements(mesh, region_elements(region, mesh)));
     add(xyz_columns("force_", region.name), [nodes](const StepRecord& r, std::vector<double>& row) {
       const Vec3d f = r.model.node_reaction(*nodes);
       for (int k = 0; k < 3; ++k) row.push_back(f[k]);

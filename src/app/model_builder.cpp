@@ -146,7 +146,11 @@ ElementMaterials element_materials(const Case& c, const Mesh& mesh) {
   std::vector<const MaterialSection*> sections = {&c.material};  // by material index
   if (!c.regions.empty())
     m.of_element.assign(mesh.is_shell() ? mesh.triangles.size() : mesh.tets.size(), 0);
-  for (const Region& r : c.regions) {
+  const bool own_pressures =
+      !c.regions.empty() && !mesh.is_shell() && c.region_pressure == RegionPressure::discontinuous;
+  if (own_pressures) m.pressure_region.assign(mesh.tets.size(), 0);
+  for (std::size_t k = 0; k < c.regions.size(); ++k) {
+    const Region& r = c.regions[k];
     int index = ElementMaterials::kRigid;
     if (r.material) {
       index = static_cast<int>(m.materials.size());
@@ -154,15 +158,11 @@ ElementMaterials element_materials(const Case& c, const Mesh& mesh) {
       m.inverse_bulk_moduli.push_back(r.material->inverse_bulk_modulus());
       sections.push_back(&*r.material);
     }
-    for (int t : region_elements(r, mesh)) m.of_element[static_cast<std::size_t>(t)] = index;
-  }
-  if (!c.regions.empty() && !mesh.is_shell() &&
-      c.region_pressure == RegionPressure::discontinuous) {
-    m.pressure_region.assign(mesh.tets.size(), 0);
-    for (std::size_t k = 0; k < c.regions.size(); ++k)
-      for (int t : region_elements(c.regions[k], mesh))
-        m.pressure_region[static_cast<std::size_t>(t)] =
-            c.regions[k].rigid ? -1 : static_cast<int>(k) + 1;
+    for (int t : region_elements(r, mesh)) {
+      m.of_element[static_cast<std::size_t>(t)] = index;
+      if (own_pressures)
+        m.pressure_region[static_cast<std::size_t>(t)] = r.rigid ? -1 : static_cast<int>(k) + 1;
+    }
   }
   for (const MaterialSection* section : sections) m.laws.push_back(section->inelastic());
   for (std::size_t k = 0; k < sections.size(); ++k)
@@ -199,7 +199,7 @@ void add_rigid_constraints(const Case& c, const Mesh& mesh, const ElementMateria
   for (const Region& r : c.regions) {
     if (!r.rigid) continue;
     const std::vector<int> elements = region_elements(r, mesh);
-    for (int v : region_nodes(r, mesh)) {
+    for (int v : nodes_of_elements(mesh, elements)) {
       for (int k = 0; k < 3; ++k) {
         const ConstrainedComponent cc{v, k, r.displacement[k], r.ramp};
         const auto [it, added] = existing.try_emplace({v, k}, constraints.size());
@@ -283,8 +283,7 @@ std::vector<CapNodes> case_caps(const Case& c, const Mesh& mesh) {
 
 }  // namespace
 
-std::set<int> region_nodes(const Region& region, const Mesh& mesh) {
-  const std::vector<int> elements = region_elements(region, mesh);
+std::set<int> nodes_of_elements(const Mesh& mesh, const std::vector<int>& elements) {
   return mesh.is_shell() ? triangle_nodes(mesh, elements) : tet_nodes(mesh, elements);
 }
 

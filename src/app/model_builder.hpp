@@ -30,9 +30,9 @@ struct ModelParts {
   ElementFamily element = ElementFamily::mini;  ///< the case's `element`
 };
 
-/// The nodes of a region's elements: a solid's tetrahedra (corners and, on a second-order mesh,
-/// edge nodes), a shell's triangles.
-std::set<int> region_nodes(const Region& region, const Mesh& mesh);
+/// The nodes of `elements` as region_elements gives them: of a solid, tetrahedra (corners and, on
+/// a second-order mesh, edge nodes); of a shell, triangles.
+std::set<int> nodes_of_elements(const Mesh& mesh, const std::vector<int>& elements);
 
 /// Builds the parts of the case's model on `mesh` (the case's mesh, already checked against the
 /// case by load_perturbed_mesh) and validates them: conflicting or non-planar Dirichlet conditions,

@@ -70,7 +70,7 @@ class ElementAssembly {
                        (m >= 0 && m < static_cast<int>(materials_.materials.size())),
                    "element material index " << m << " out of range");
     // Without twins the carriers are the corners: the lists keep the other positions only, and
-    // the layout reads the corners for the pressures (compact_local_node), so a model without
+    // the layout reads the corners for the pressures (kCompactLocalNode), so a model without
     // regions stores and scatters what it did before twins existed.
     width_ = twins.carrier.empty() ? kCompactWidth : Element::kNodes;
     nodes_.reserve(static_cast<std::size_t>(n) * width_);

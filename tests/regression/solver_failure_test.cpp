@@ -19,6 +19,23 @@
 namespace plisse {
 namespace {
 
+/// A case given as YAML text, written to `name`'s scratch directory as case.yaml and run by the
+/// built plisse into its run/: the exit status, what plisse printed (log.txt) and the directory.
+struct CaseRun {
+  int status = -1;
+  std::string log;
+  std::filesystem::path dir;
+};
+CaseRun run_yaml(const std::string& name, const std::string& yaml) {
+  const auto dir = test::scratch_directory(name);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "case.yaml") << yaml;
+  const int status = test::run_plisse(
+      "run " + (dir / "case.yaml").string() + " -o " + (dir / "run").string(), dir / "log.txt");
+  std::ifstream in(dir / "log.txt");
+  return {status, std::string((std::istreambuf_iterator<char>(in)), {}), dir};
+}
+
 TEST(SolverFailure, StopsWithExitStatus1AndNamesStepElementAndReason) {
   const auto dir = test::scratch_directory("solver-failure");
   const std::string case_file =
@@ -152,26 +169,21 @@ namespace {
 // 10 mm: measured 1.5e-3 above) and 5e-3 below (the last step that converged before it). The
 // pressure reached is named in the log and summary.json.
 TEST(SolverFailure, ALoadPastTheLimitLoadStopsNamingTheLoadReached) {
-  const auto dir = test::scratch_directory("limit-load");
-  std::filesystem::create_directories(dir);
-  {
-    std::ofstream(dir / "case.yaml")
-        << "element: shell\n"
-           "mesh: {generate: spherical-shell, inner_radius: 99.95, thickness: 0.1,"
-           " element_size: 10.0, symmetry: octant}\n"
-           "material: {model: neo-hookean, c1: 0.1}\n"
-           "boundary:\n"
-           "  - {type: symmetry, surface: sym_x}\n"
-           "  - {type: symmetry, surface: sym_y}\n"
-           "  - {type: symmetry, surface: sym_z}\n"
-           "loads: [{type: pressure, name: p, surface: inner, value: 3.0e-4}]\n"
-           "solver: {steps: 10, min_step: 1.0e-4, stability: {check: true}}\n";
-  }
-  const int status = test::run_plisse(
-      "run " + (dir / "case.yaml").string() + " -o " + (dir / "run").string(), dir / "log.txt");
-  EXPECT_EQ(status, 1);
-  std::ifstream in(dir / "log.txt");
-  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  const CaseRun run =
+      run_yaml("limit-load",
+               "element: shell\n"
+               "mesh: {generate: spherical-shell, inner_radius: 99.95, thickness: 0.1,"
+               " element_size: 10.0, symmetry: octant}\n"
+               "material: {model: neo-hookean, c1: 0.1}\n"
+               "boundary:\n"
+               "  - {type: symmetry, surface: sym_x}\n"
+               "  - {type: symmetry, surface: sym_y}\n"
+               "  - {type: symmetry, surface: sym_z}\n"
+               "loads: [{type: pressure, name: p, surface: inner, value: 3.0e-4}]\n"
+               "solver: {steps: 10, min_step: 1.0e-4, stability: {check: true}}\n");
+  EXPECT_EQ(run.status, 1);
+  const std::string& text = run.log;
+  const std::filesystem::path& dir = run.dir;
   EXPECT_NE(text.find("the load could not be raised past load factor"), std::string::npos) << text;
   EXPECT_NE(text.find("prescribe a displacement instead"), std::string::npos) << text;
   const auto summary = read_json_file(dir / "run" / "summary.json");
@@ -217,14 +229,8 @@ TEST(SolverFailure, ALineSearchThatShortensEveryStepIsNamedWithItsRemedy) {
   const auto with = [&](const std::string& line_search) {
     std::string text = strip;
     text.replace(text.find("LS"), 2, line_search);
-    const auto dir = test::scratch_directory("line-search-" + line_search);
-    std::filesystem::create_directories(dir);
-    std::ofstream(dir / "case.yaml") << text;
-    test::run_plisse("run " + (dir / "case.yaml").string() + " -o " + (dir / "run").string(),
-                     dir / "out.log");
-    std::ifstream in(dir / "out.log");
-    return std::pair{std::string((std::istreambuf_iterator<char>(in)), {}),
-                     read_json_file(dir / "run" / "summary.json")};
+    const CaseRun run = run_yaml("line-search-" + line_search, text);
+    return std::pair{run.log, read_json_file(run.dir / "run" / "summary.json")};
   };
   const auto [bt_log, bt] = with("bt");
   EXPECT_NE(bt_log.find("each full Newton step raised the residual"), std::string::npos) << bt_log;
@@ -243,26 +249,21 @@ TEST(SolverFailure, ALineSearchThatShortensEveryStepIsNamedWithItsRemedy) {
 // step, fails every attempt (each full step raises the residual: see the test above); the
 // message says that no step converged from the start and points to the attempts' reason.
 TEST(SolverFailure, NoStepConvergedFromTheStartIsNotCalledALimitLoad) {
-  const auto dir = test::scratch_directory("no-first-step");
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / "case.yaml")
-      << "element: shell\n"
-         "mesh: {generate: sheet, length: 110.0, width: 10.0, thickness: 1.0, element_size: 5.0}\n"
-         "material: {model: neo-hookean, c1: 0.5, density: 2.5e-13}\n"
-         "boundary:\n"
-         "  - {type: clamped, surface: left}\n"
-         "  - {type: symmetry, surface: front}\n"
-         "  - {type: symmetry, surface: back}\n"
-         "loads: [{type: gravity, name: g, acceleration: [0, 0, -9810]}]\n"
-         "solver: {steps: 1, min_step: 0.2, newton: {line_search: bt, rtol: 1.0e-10,"
-         " atol: 1.0e-15, max_iterations: 8}}\n";
-  const int status = test::run_plisse(
-      "run " + (dir / "case.yaml").string() + " -o " + (dir / "run").string(), dir / "log.txt");
-  EXPECT_EQ(status, 1);
-  std::ifstream in(dir / "log.txt");
-  const std::string text((std::istreambuf_iterator<char>(in)), {});
-  EXPECT_NE(text.find("no step converged from the start"), std::string::npos) << text;
-  EXPECT_EQ(text.find("this is its limit load"), std::string::npos) << text;
+  const CaseRun run = run_yaml(
+      "no-first-step",
+      "element: shell\n"
+      "mesh: {generate: sheet, length: 110.0, width: 10.0, thickness: 1.0, element_size: 5.0}\n"
+      "material: {model: neo-hookean, c1: 0.5, density: 2.5e-13}\n"
+      "boundary:\n"
+      "  - {type: clamped, surface: left}\n"
+      "  - {type: symmetry, surface: front}\n"
+      "  - {type: symmetry, surface: back}\n"
+      "loads: [{type: gravity, name: g, acceleration: [0, 0, -9810]}]\n"
+      "solver: {steps: 1, min_step: 0.2, newton: {line_search: bt, rtol: 1.0e-10,"
+      " atol: 1.0e-15, max_iterations: 8}}\n");
+  EXPECT_EQ(run.status, 1);
+  EXPECT_NE(run.log.find("no step converged from the start"), std::string::npos) << run.log;
+  EXPECT_EQ(run.log.find("this is its limit load"), std::string::npos) << run.log;
 }
 
 }  // namespace

@@ -120,7 +120,8 @@ std::map<std::string, std::pair<int, double>> cut_edge_tags(Symmetry symmetry) {
   return tags;
 }
 
-TEST(GenerateShellSurface, SheetIsTheStructuredMidPlane) {
+/// The sheet 10 x 4 mm of 1 mm cells, 0.3 mm thick, as a shell's mid-surface.
+MeshGenerationSpec small_sheet() {
   MeshGenerationSpec spec;
   spec.kind = "sheet";
   spec.length = 10.0;
@@ -128,6 +129,11 @@ TEST(GenerateShellSurface, SheetIsTheStructuredMidPlane) {
   spec.thickness = 0.3;
   spec.element_size = 1.0;
   spec.layers = 0;  // ignored by a shell (out of the solid's range [1, 64])
+  return spec;
+}
+
+TEST(GenerateShellSurface, SheetIsTheStructuredMidPlane) {
+  const MeshGenerationSpec spec = small_sheet();
   const Mesh mesh = generate_shell_surface(spec);
   const int nx = 10, ny = 4;
   EXPECT_EQ(mesh.n_nodes(), (nx + 1) * (ny + 1));
@@ -394,14 +400,7 @@ TEST(GenerateShellSurface, RefusesTheCubeSecondOrderAndTooManyTriangles) {
 // sheet's normal z through each side's midpoint, diag(-1, -1, 1). Done once: a second call finds
 // no side between the two left.
 TEST(GenerateShellSurface, ARigidPartClampsTheSidesItShares) {
-  MeshGenerationSpec spec;
-  spec.kind = "sheet";
-  spec.length = 10.0;
-  spec.width = 4.0;
-  spec.thickness = 0.3;
-  spec.element_size = 1.0;
-  spec.layers = 0;
-  Mesh mesh = generate_shell_surface(spec);
+  Mesh mesh = generate_shell_surface(small_sheet());
   std::vector<char> rigid(mesh.triangles.size(), 0);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     double x = 0.0;
