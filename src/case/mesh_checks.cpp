@@ -73,7 +73,12 @@ void check_tag(const Case& c, const Mesh& mesh, const TagKind& kind, const std::
                                 " has no " + kind.items + "; " + tag_list(mesh, kind));
 }
 
+/// A surface tag; on a shell, an edge tag given instead is named as such (the key wants a face).
 void check_surface(const Case& c, const Mesh& mesh, const SurfaceRef& ref) {
+  if (mesh.is_shell() && !mesh.surface_tags.count(ref.name) && mesh.edge_tags.count(ref.name))
+    throw InputError(ref.place, "'" + ref.name + "' is an edge tag of " + mesh_name(c) +
+                                    ": this key names a face of the shell (a surface tag); " +
+                                    tag_list(mesh, kSurfaceTags));
   check_tag(c, mesh, kSurfaceTags, ref.name, ref.place);
 }
 

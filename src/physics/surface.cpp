@@ -81,6 +81,26 @@ std::vector<std::array<int, 3>> outward_triangles(const Mesh& mesh, const std::s
   return out;
 }
 
+std::vector<double> shell_thickness(const Mesh& mesh,
+                                    const std::vector<std::array<int, 3>>& triangles) {
+  const auto sorted = [](std::array<int, 3> t) {
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  std::map<std::array<int, 3>, double> thickness_of;
+  for (std::size_t e = 0; e < mesh.triangles.size(); ++e)
+    thickness_of.emplace(sorted(mesh.triangles[e]), mesh.triangle_thickness.at(e));
+  std::vector<double> out;
+  out.reserve(triangles.size());
+  for (const auto& t : triangles) {
+    const auto it = thickness_of.find(sorted(t));
+    PLISSE_CHECK(it != thickness_of.end(), "nodes " << t[0] << ", " << t[1] << ", " << t[2]
+                                                    << " are not a triangle of the shell");
+    out.push_back(it->second);
+  }
+  return out;
+}
+
 std::vector<SurfaceFace> faces_with_corners(const Mesh& mesh,
                                             const std::vector<std::array<int, 3>>& triangles) {
   std::vector<SurfaceFace> out(triangles.size());

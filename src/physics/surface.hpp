@@ -44,6 +44,13 @@ std::vector<std::array<int, 3>> outward_triangles(const Mesh& mesh, const std::s
 std::vector<SurfaceFace> faces_with_corners(const Mesh& mesh,
                                             const std::vector<std::array<int, 3>>& triangles);
 
+/// Shell meshes only: the reference thickness [mm] of each of `triangles` (corner triples of the
+/// mesh's triangles in any order, such as those of outward_triangles): Mesh::triangle_thickness
+/// of the triangle with those corners. Throws plisse::Error when a triple is not a triangle of
+/// the mesh.
+std::vector<double> shell_thickness(const Mesh& mesh,
+                                    const std::vector<std::array<int, 3>>& triangles);
+
 /// The distinct nodes of `faces`, corners and edge nodes.
 std::set<int> surface_nodes(const std::vector<SurfaceFace>& faces);
 

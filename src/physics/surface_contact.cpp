@@ -118,15 +118,30 @@ SurfaceContact::SurfaceContact(const Mesh& mesh, SurfaceContactSettings settings
   for (size_t f = 0; f < own.size(); ++f)
     for (int v : own[f])
       if (const auto it = index.find(v); it != index.end()) node_faces_[it->second].push_back(f);
-  // Facets a node skips: those that contain it and, in self contact, those that touch one of
-  // its own facets (N4).
+  // On a shell the faces lie half the reference thickness off the mid-surface that carries the
+  // nodes: a node's own half thickness (the mean of its faces') and the facet's (N14).
+  node_offsets_.assign(nodes_.size(), 0.0);
+  facet_offsets_.assign(facets_.size(), 0.0);
+  if (mesh_.is_shell()) {
+    const std::vector<double> own_thickness = shell_thickness(mesh_, nodes_from);
+    for (size_t i = 0; i < nodes_.size(); ++i) {
+      for (int f : node_faces_[i]) node_offsets_[i] += own_thickness[f];
+      node_offsets_[i] *= 0.5 / static_cast<double>(node_faces_[i].size());
+    }
+    const std::vector<double> facet_thickness = shell_thickness(mesh_, facets_from);
+    for (size_t f = 0; f < facets_.size(); ++f) facet_offsets_[f] = 0.5 * facet_thickness[f];
+    widest_offset_ = *std::max_element(node_offsets_.begin(), node_offsets_.end()) +
+                     *std::max_element(facet_offsets_.begin(), facet_offsets_.end());
+  }
+  // Facets a node skips: those that contain it and, in self contact or on a shell (whose two
+  // faces hold the same triangles), those that touch one of its own facets (N4).
   std::map<int, std::vector<int>> facets_at;
   for (size_t f = 0; f < facets_.size(); ++f)
     for (int v : facets_[f]) facets_at[v].push_back(static_cast<int>(f));
   excluded_.resize(nodes_.size());
   for (size_t i = 0; i < nodes_.size(); ++i) {
     std::set<int> near = {nodes_[i]};
-    if (self_)
+    if (self_ || mesh_.is_shell())
       for (int f : node_faces_[i])
         for (int v : own[f]) near.insert(v);
     std::set<int> skip;
@@ -160,7 +175,7 @@ std::vector<int> SurfaceContact::find_pairs(std::span<const double> x,
                                             std::span<const int> keep) const {
   const std::vector<Vec3d> points = positions(x);
   const double reach = settings_.search_distance;
-  const FacetSearch search(facets_, points, reach);
+  const FacetSearch search(facets_, points, reach + widest_offset_);
   std::vector<int> out(nodes_.size(), -1);
   for (size_t i = 0; i < nodes_.size(); ++i) {
     const Vec3d& xs = points[nodes_[i]];
@@ -171,9 +186,10 @@ std::vector<int> SurfaceContact::find_pairs(std::span<const double> x,
       if (excluded(i, f)) return -1.0;
       const auto& t = facets_[f];
       const NodeFacetGap gap = node_facet_gap(xs, points[t[0]], points[t[1]], points[t[2]], false);
-      if (gap.xi.minCoeff() < -kInside || gap.n.dot(normal) >= 0.0 || std::abs(gap.g) > reach)
+      const double g = gap.g - offset(i, f);
+      if (gap.xi.minCoeff() < -kInside || gap.n.dot(normal) >= 0.0 || std::abs(g) > reach)
         return -1.0;
-      return std::abs(gap.g);
+      return std::abs(g);
     };
     // A pair that still qualifies is kept, so that a node near the edge between two facets
     // does not switch back and forth between solves.
@@ -207,7 +223,8 @@ std::vector<SurfaceContact::Contact> SurfaceContact::contacts(std::span<const do
     const int f = pairs_[i];
     if (f < 0) continue;
     const NodeFacetGap g = gap(i, f, x, false);
-    out[i] = {f, g.g, std::max(0.0, multipliers_[i] - eps * g.g), g.n};
+    const double g_faces = g.g - offset(i, f);  // N14; the plane's distance on a solid
+    out[i] = {f, g_faces, std::max(0.0, multipliers_[i] - eps * g_faces), g.n};
   }
   return out;
 }
@@ -259,8 +276,8 @@ std::set<std::pair<int, int>> SurfaceContact::reachable_pairs(std::span<const do
   const std::vector<Vec3d> points = positions(x);
   std::set<std::pair<int, int>> out;
   // Twice the reach: a node pairs with the facets within its reach, and may move by as much
-  // again before the next accepted step (N6).
-  const FacetSearch search(facets_, points, 2.0 * settings_.search_distance);
+  // again before the next accepted step (N6); on a shell, beyond the faces' offsets (N14).
+  const FacetSearch search(facets_, points, 2.0 * settings_.search_distance + widest_offset_);
   for (size_t i = 0; i < nodes_.size(); ++i) {
     for (int f : search.containing(points[nodes_[i]])) {
       if (excluded(i, f)) continue;

@@ -3,7 +3,9 @@
 /// each node of the first surface is kept out of the facets of the second by a node-based
 /// augmented Lagrangian with a penalty per unit area, as for the rigid dies; the facets are the
 /// surface's triangles (a 6-node face counts as its four flat sub-triangles). Candidate facets
-/// are found with a bounding-volume hierarchy (Eigen's KdBVH). docs/theory/surface-contact.md.
+/// are found with a bounding-volume hierarchy (Eigen's KdBVH). On a shell the surfaces are faces
+/// of the shell, half its thickness off the mid-surface that carries the nodes and facets.
+/// docs/theory/surface-contact.md.
 #include <array>
 #include <optional>
 #include <set>
@@ -47,8 +49,10 @@ class SurfaceContact : public ModelTerm {
  public:
   /// The nodes of `nodes_from` (faces named by their corners, outward; contact weights of D5 and
   /// D16) against the facets of `facets_from` (outward). `self`: the two lists are one surface,
-  /// and a node skips the facets that touch its own faces (N4). Borrows `mesh`. Throws
-  /// plisse::Error when penalty, tolerance or search distance is not > 0, or a list is empty.
+  /// and a node skips the facets that touch its own faces (N4), as it does on a shell, whose
+  /// faces are triangles of the mesh (Mesh::triangle_thickness gives their offsets, N14). Borrows
+  /// `mesh`. Throws plisse::Error when penalty, tolerance or search distance is not > 0, or a list
+  /// is empty.
   SurfaceContact(const Mesh& mesh, SurfaceContactSettings settings,
                  const std::vector<std::array<int, 3>>& nodes_from,
                  const std::vector<std::array<int, 3>>& facets_from, bool self);
@@ -112,12 +116,19 @@ class SurfaceContact : public ModelTerm {
   bool excluded(size_t i, int f) const;
   /// The node pairs (contact node, facet node) within reach at x (N6).
   std::set<std::pair<int, int>> reachable_pairs(std::span<const double> x) const;
+  /// How far the faces of contact node i and of `facet` lie off the mid-surfaces that carry
+  /// them, together [mm]: the gap is the planes' distance less this (N14; 0 on a solid).
+  double offset(size_t i, int facet) const { return node_offsets_[i] + facet_offsets_[facet]; }
 
   const Mesh& mesh_;
   SurfaceContactSettings settings_;
   bool self_;
-  std::vector<int> nodes_;                      ///< contact nodes, increasing
-  std::vector<double> areas_;                   ///< their reference tributary areas [mm^2]
+  std::vector<int> nodes_;     ///< contact nodes, increasing
+  std::vector<double> areas_;  ///< their reference tributary areas [mm^2]
+  /// On a shell, half the reference thickness at each contact node and of each facet [mm]; 0 on
+  /// a solid (N14).
+  std::vector<double> node_offsets_, facet_offsets_;
+  double widest_offset_ = 0.0;  ///< the largest node offset plus the largest facet offset [mm]
   std::vector<std::array<int, 3>> facets_;      ///< outward flat facets (mesh nodes)
   std::vector<std::array<int, 3>> own_facets_;  ///< flat facets of the nodes' own surface
   std::vector<std::vector<int>> node_faces_;    ///< per contact node, its own facets (normals)

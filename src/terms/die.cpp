@@ -96,26 +96,14 @@ void check_die_start(const DieSettings& die, const DieGeometry& geometry, const 
 /// represent.
 double half_shell_thickness(const DieSettings& die, const Mesh& mesh,
                             const std::vector<std::array<int, 3>>& candidates) {
-  const auto sorted = [](std::array<int, 3> t) {
-    std::sort(t.begin(), t.end());
-    return t;
-  };
-  std::map<std::array<int, 3>, double> thickness_of;
-  for (std::size_t e = 0; e < mesh.triangles.size(); ++e)
-    thickness_of.emplace(sorted(mesh.triangles[e]), mesh.triangle_thickness[e]);
-  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
-  for (const auto& t : candidates) {
-    const auto it = thickness_of.find(sorted(t));
-    PLISSE_CHECK(it != thickness_of.end(), "a die's candidate is not a triangle of the shell");
-    lo = std::min(lo, it->second);
-    hi = std::max(hi, it->second);
-  }
-  if (hi - lo > 1e-12 * hi)
+  const std::vector<double> thickness = shell_thickness(mesh, candidates);
+  const auto [lo, hi] = std::minmax_element(thickness.begin(), thickness.end());
+  if (*hi - *lo > 1e-12 * *hi)
     throw InputError(die.place,
                      "the shell's thickness varies over the die's contact surface (from " +
-                         std::to_string(lo) + " to " + std::to_string(hi) +
+                         std::to_string(*lo) + " to " + std::to_string(*hi) +
                          " mm): a die on a shell needs a uniform thickness there");
-  return 0.5 * hi;
+  return 0.5 * *hi;
 }
 
 /// The die that a shell's mid-surface nodes meet: `die` moved out by `offset` towards the body, so

@@ -1,5 +1,6 @@
 // `contacts:`: contact between two tagged surfaces of the body, or of one surface with itself
-// (physics/surface_contact.hpp, docs/theory/surface-contact.md).
+// (physics/surface_contact.hpp, docs/theory/surface-contact.md); on a shell, between faces of the
+// shell, half its thickness off the mid-surface (N14).
 #include "physics/surface_contact.hpp"
 
 #include "physics/die_contact.hpp"
@@ -90,6 +91,7 @@ TermKind surface_contact_kind() {
       if (*ref) check.surface(**ref);
   };
   d.make = make_surface_contact_term;
+  d.shell = true;
   d.history = contact_state_outputs();
   d.history.insert(
       d.history.end(),

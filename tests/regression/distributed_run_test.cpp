@@ -312,6 +312,10 @@ TEST(DistributedRun, SelfContactAndContactPatchTestAreTheSameOnTwoRanks) {
   // (surface-contact.md, N4 and N6); every rank finds the same pairs from the same state.
   const std::string pillow = std::string(PLISSE_SOURCE_DIR) + "/examples/pillow-deflated.yaml";
   expect_same_history(run("pillow", pillow, "", 1), run("pillow", pillow, "", 2), 1e-6);
+  // The same as a shell: the faces half a wall off the mid-surfaces (N14).
+  const std::string shell = " --set element=shell";
+  expect_same_history(run("pillow-shell", pillow, shell, 1), run("pillow-shell", pillow, shell, 2),
+                      1e-6);
   const std::string blocks =
       std::string(PLISSE_SOURCE_DIR) + "/tests/verification/contact/two-blocks-pressed.yaml";
   expect_same_history(run("blocks", blocks, "", 1), run("blocks", blocks, "", 2), 1e-8);
