@@ -97,12 +97,14 @@ def render_block(results):
     return "\n".join(lines) + "\n"
 
 
-def block_span(text):
+def block_span(text, markers=(BEGIN, END)):
     """(start, end): the offsets of the block's inner text in `text`, from just after the begin
     marker's line to the start of the end marker's line. Raises BlockError unless each marker
-    appears exactly once, on a line of its own, begin before end."""
+    appears exactly once, on a line of its own, begin before end. `markers`: (begin, end), this
+    table's by default; other generated blocks of the docs (bench/thin-shell's) pass theirs."""
+    begin, end_marker = markers
     lines = text.splitlines(keepends=True)
-    found = {BEGIN: [], END: []}
+    found = {begin: [], end_marker: []}
     offset = 0
     for line in lines:
         if line.strip() in found:
@@ -112,34 +114,40 @@ def block_span(text):
         if len(places) != 1:
             what = "no line" if not places else f"{len(places)} lines"
             raise BlockError(f"{what} '{marker}' (one is needed)")
-    (_, start), (end, _) = found[BEGIN][0], found[END][0]
+    (_, start), (end, _) = found[begin][0], found[end_marker][0]
     if end < start:
-        raise BlockError(f"'{END}' comes before '{BEGIN}'")
+        raise BlockError(f"'{end_marker}' comes before '{begin}'")
     return start, end
 
 
-def read_block(text):
+def read_block(text, markers=(BEGIN, END)):
     """The inner text of the block in `text` (see block_span)."""
-    start, end = block_span(text)
+    start, end = block_span(text, markers)
     return text[start:end]
 
 
-def replace_block(text, inner):
+def replace_block(text, inner, markers=(BEGIN, END)):
     """`text` with the block's inner text replaced by `inner`; the markers and everything
     outside them stay as they were."""
-    start, end = block_span(text)
+    start, end = block_span(text, markers)
     return text[:start] + inner + text[end:]
+
+
+def write_block(path, inner, markers):
+    """Replaces the inner text of the block of `markers` in the file at `path` by `inner`; leaves
+    the file untouched and raises BlockError when its markers are wrong."""
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    updated = replace_block(text, inner, markers)
+    if updated != text:
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(updated)
 
 
 def update_file(path, results):
     """Rewrites the block of the file at `path` from the measurements; leaves the file untouched
     and raises BlockError when its markers are wrong."""
-    with open(path, encoding="utf-8") as f:
-        text = f.read()
-    updated = replace_block(text, render_block(results))
-    if updated != text:
-        with open(path, "w", encoding="utf-8") as f:
-            f.write(updated)
+    write_block(path, render_block(results), (BEGIN, END))
 
 
 def load(path):

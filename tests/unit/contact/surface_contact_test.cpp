@@ -76,6 +76,17 @@ std::vector<double> upper_moved(const Mesh& mesh, const SurfaceContact& term, co
   return x;
 }
 
+/// The sum over the nodes of the term's residual at x: the net force of the pairs, zero when
+/// each pushes its facet back as much as its node (N2).
+Vec3d residual_sum(SurfaceContact& term, const Mesh& mesh, const std::vector<double>& x) {
+  std::vector<double> r(x.size(), 0.0);
+  term.assemble(0.0, x, r, nullptr);
+  Vec3d sum = Vec3d::Zero();
+  for (int v = 0; v < mesh.n_nodes(); ++v)
+    for (int k = 0; k < 3; ++k) sum[k] += r[node_dof(v, k)];
+  return sum;
+}
+
 SurfaceContact blocks_term(const Mesh& mesh, SurfaceContactSettings s = settings()) {
   return SurfaceContact(mesh, s, outward_triangles(mesh, "upper_bottom"),
                         outward_triangles(mesh, "lower_top"), false);
@@ -94,12 +105,7 @@ TEST(SurfaceContact, UniformPenetrationGivesPenaltyTimesAreaTimesDepth) {
   EXPECT_NEAR(term.penetration(x), 0.01, 1e-14);
   EXPECT_EQ(term.n_contact_nodes(x), static_cast<int>(term.nodes().size()));
   // The facets' nodes get the opposite force: the residual sums to zero.
-  std::vector<double> r(x.size(), 0.0);
-  term.assemble(0.0, x, r, nullptr);
-  Vec3d sum = Vec3d::Zero();
-  for (int v = 0; v < mesh.n_nodes(); ++v)
-    for (int k = 0; k < 3; ++k) sum[k] += r[node_dof(v, k)];
-  EXPECT_LT(sum.norm(), 1e-14);
+  EXPECT_LT(residual_sum(term, mesh, x).norm(), 1e-14);
   // Uzawa (N5): lambda = eps * 0.01 doubles the force at the same state; a rejected step
   // forgets it.
   ASSERT_TRUE(term.update_multipliers(x));
@@ -236,12 +242,7 @@ TEST(SurfaceContact, ShellFacesMeetHalfTheirThicknessesOffTheMidSurfaces) {
   EXPECT_NEAR(term.penetration(x), 0.01, 1e-14);
   EXPECT_EQ(term.n_contact_nodes(x), 25);
   EXPECT_TRUE(term.force(x).isApprox(Vec3d(0, 0, 3.0 * 0.01 * 16.0), 1e-12));
-  std::vector<double> r(x.size(), 0.0);
-  term.assemble(0.0, x, r, nullptr);
-  Vec3d sum = Vec3d::Zero();
-  for (int v = 0; v < mesh.n_nodes(); ++v)
-    for (int k = 0; k < 3; ++k) sum[k] += r[node_dof(v, k)];
-  EXPECT_LT(sum.norm(), 1e-14);
+  EXPECT_LT(residual_sum(term, mesh, x).norm(), 1e-14);
   // Either way round: the lower sheet's nodes against the upper's faces see the same overlap.
   const SurfaceContact reversed(mesh, settings(), outward_triangles(mesh, "lower"),
                                 outward_triangles(mesh, "upper"), false);

@@ -1,0 +1,85 @@
+"""Unit tests of bench/shell_vs_solid_table.py, the generated block of docs/performance.md ("The
+shell against the solid"): the table from fixed measurements, the ratio taken within each pair,
+and that the docs hold what the last run wrote. No timing.
+Run by CTest (test bench_shell_vs_solid, label unit): /usr/bin/python3 bench/shell_vs_solid_test.py
+"""
+import copy
+import sys
+import tempfile
+import unittest
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.dont_write_bytecode = True  # leave no __pycache__ in the source tree
+sys.path.insert(0, str(HERE))
+import shell_vs_solid_table as table  # noqa: E402
+
+ROOT = HERE.parent
+
+
+def run(unknowns, steps, newton, wall, peak, wavelength):
+    return {"unknowns": unknowns, "steps": steps, "newton": newton, "factorisations": newton,
+            "peak": peak, "wall": wall, "wavelength": wavelength,
+            "cerda_mahadevan": {"0.05": 4.325, "0.1": 3.637}}
+
+
+# Two pairs. Shell 30 s and 36 s (median 33), solid 690 s and 900 s (median 795); ratios within
+# the pairs 23 and 25, median 24.0 (the ratio of the medians would be 24.09). The solid had no
+# wrinkles around 5 % in its last run: a dash.
+MEASUREMENTS = {
+    "command": "bench/shell-vs-solid --repeat 2", "commit": "abc1234", "local_changes": False,
+    "date": "2024-01-02", "cores": 2, "repeats": 2,
+    "cases": [{"h": 0.25, "pairs": [
+        {"shell": run(12159, 29, 40, 30.0, 372.0, {"0.05": 3.86, "0.1": 3.30}),
+         "solid": run(153000, 29, 120, 690.0, 3100.0, {"0.05": 3.86, "0.1": 3.26})},
+        {"shell": run(12159, 29, 40, 36.0, 380.0, {"0.05": 3.86, "0.1": 3.30}),
+         "solid": run(153000, 29, 120, 900.0, 3000.0, {"0.1": 3.26})}]}]}
+
+EXPECTED = """\
+Made by `bench/shell-vs-solid --repeat 2` at commit abc1234 on 2024-01-02: 2 pairs of runs per \
+mesh, the shell then the solid, one core each, to 12 % strain. Wall time and ratio: median \
+(smallest–largest) over the pairs; peak memory: the largest.
+
+| h [mm] | element | unknowns | steps | Newton iterations | wall [s] | peak [MiB] \
+| λ at 5 % [mm] (λ/λ_CM) | λ at 10 % [mm] (λ/λ_CM) | solid / shell |
+|---|---|---|---|---|---|---|---|---|---|
+| 0.25 | shell triangle | 12 159 | 29 | 40 | 33.0 (30.0–36.0) | 380 | 3.86 (0.892) \
+| 3.30 (0.907) |  |
+|  | Taylor–Hood, one layer | 153 000 | 29 | 120 | 795.0 (690.0–900.0) | 3100 | – \
+| 3.26 (0.896) | **24.0 (23.0–25.0)** |
+"""
+
+
+class ShellVsSolidTable(unittest.TestCase):
+    def test_block_from_fixed_measurements(self):
+        self.assertEqual(table.render_block(MEASUREMENTS), EXPECTED)
+
+    def test_uncommitted_changes_and_load_are_said(self):
+        m = copy.deepcopy(MEASUREMENTS)
+        m["local_changes"] = True
+        m["load_average"] = [0.2, 1.3]
+        first = table.render_block(m).splitlines()[0]
+        self.assertIn("at commit abc1234 with uncommitted changes on", first)
+        self.assertIn("load average of 0.2 when the run began and 1.3 when it ended", first)
+
+    def test_update_leaves_the_other_blocks_alone(self):
+        peers = table.peer_table
+        page = (f"# T\n\n{table.BEGIN}\nold\n{table.END}\n\n{peers.BEGIN}\npeers\n{peers.END}\n")
+        with tempfile.TemporaryDirectory() as tmp:
+            path = Path(tmp) / "page.md"
+            path.write_text(page, encoding="utf-8")
+            table.update_file(path, MEASUREMENTS)
+            text = path.read_text(encoding="utf-8")
+            self.assertEqual(peers.read_block(text, table.MARKERS), EXPECTED)
+            self.assertEqual(peers.read_block(text), "peers\n")
+
+    def test_docs_hold_what_the_last_run_wrote(self):
+        page = (ROOT / "docs" / "performance.md").read_text(encoding="utf-8")
+        record = ROOT / "docs" / "performance" / "shell-vs-solid.json"
+        self.assertTrue(record.exists(), "run bench/shell-vs-solid --update docs/performance.md")
+        self.assertEqual(table.peer_table.read_block(page, table.MARKERS),
+                         table.render_block(table.load(record)))
+
+
+if __name__ == "__main__":
+    unittest.main()
