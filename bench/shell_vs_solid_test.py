@@ -3,7 +3,6 @@ shell against the solid"): the table from fixed measurements, the ratio taken wi
 and that the docs hold what the last run wrote. No timing.
 Run by CTest (test bench_shell_vs_solid, label unit): /usr/bin/python3 bench/shell_vs_solid_test.py
 """
-import copy
 import sys
 import tempfile
 import unittest
@@ -12,6 +11,7 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 sys.dont_write_bytecode = True  # leave no __pycache__ in the source tree
 sys.path.insert(0, str(HERE))
+import block_testing  # noqa: E402
 import shell_vs_solid_table as table  # noqa: E402
 
 ROOT = HERE.parent
@@ -55,12 +55,9 @@ class ShellVsSolidTable(unittest.TestCase):
         self.assertEqual(table.render_block(MEASUREMENTS), EXPECTED)
 
     def test_uncommitted_changes_and_load_are_said(self):
-        m = copy.deepcopy(MEASUREMENTS)
-        m["local_changes"] = True
-        m["load_average"] = [0.2, 1.3]
-        first = table.render_block(m).splitlines()[0]
+        first = block_testing.provenance_line(table.render_block, MEASUREMENTS)
         self.assertIn("at commit abc1234 with uncommitted changes on", first)
-        self.assertIn("load average of 0.2 when the run began and 1.3 when it ended", first)
+        self.assertIn("load average of 0.9 when the run began and 1.1 when it ended", first)
 
     def test_update_leaves_the_other_blocks_alone(self):
         peers = table.peer_table

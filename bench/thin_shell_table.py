@@ -47,12 +47,17 @@ def exponent(runs, value):
     return math.log(value(last) / value(first)) / math.log(last["unknowns"] / first["unknowns"])
 
 
+def three_digits(value):
+    """`value` to 3 significant digits, without an exponent (1110, not 1.11e+03)."""
+    return f"{value:.3g}" if value < 1000 else f"{value:.0f}"
+
+
 def row(run):
     cells = (f"{run['h']:g}", peer_table.grouped(run["triangles"]),
              peer_table.grouped(run["unknowns"]), str(run["newton"]),
              f"{per_iteration(run, 'assembly'):.3g}", f"{per_iteration(run, 'factorisation'):.3g}",
              f"{per_iteration(run, 'solve'):.3g}", f"{iteration_time(run):.3g}",
-             f"{run['factor_entries'] / 1e6:.3g}", f"{run['peak']:.0f}", f"{run['wall']:.0f}",
+             three_digits(run["factor_entries"] / 1e6), f"{run['peak']:.0f}", f"{run['wall']:.0f}",
              f"{run['stretch_error']:+.1e}")
     return "| " + " | ".join(cells) + " |"
 

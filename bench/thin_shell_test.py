@@ -13,6 +13,7 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 sys.dont_write_bytecode = True  # leave no __pycache__ in the source tree
 sys.path.insert(0, str(HERE))
+import block_testing  # noqa: E402
 import thin_shell_table  # noqa: E402
 
 peer_table = thin_shell_table.peer_table
@@ -65,12 +66,14 @@ class ThinShellTable(unittest.TestCase):
                                math.log(12) / math.log(8), places=12)
 
     def test_uncommitted_changes_and_load_are_said(self):
-        m = copy.deepcopy(MEASUREMENTS)
-        m["local_changes"] = True
-        m["load_average"] = [0.9, 1.1]
-        first = thin_shell_table.render_block(m).splitlines()[0]
+        first = block_testing.provenance_line(thin_shell_table.render_block, MEASUREMENTS)
         self.assertIn("at commit abc1234 with uncommitted changes on", first)
         self.assertIn("load average of 0.9 when the run began and 1.1 when it ended", first)
+
+    def test_factor_entries_keep_three_digits_without_an_exponent(self):
+        self.assertEqual(thin_shell_table.three_digits(71.14), "71.1")
+        self.assertEqual(thin_shell_table.three_digits(282.4), "282")
+        self.assertEqual(thin_shell_table.three_digits(1107.3), "1107")
 
     def test_one_run_has_no_exponents(self):
         m = copy.deepcopy(MEASUREMENTS)
