@@ -35,75 +35,18 @@
 #include "support/run_case.hpp"
 #include "support/run_plisse.hpp"
 #include "support/validation_claim.hpp"
+#include "verification/wrinkling/indented_sphere.hpp"
 
 namespace plisse {
 namespace {
 
-using test::history_column;
+constexpr double kRadius = 200.0;
+using test::indent;
+using test::Indentation;
 
-constexpr double kRadius = 200.0, kThickness = 1.0, kC1 = 1.0;
-constexpr double kSymmetry = 4.0;  // the octant holds a quarter of the azimuth
-constexpr double kFitDepth = 0.2;  // fit over w0 <= 0.2 t
-
-double youngs_modulus() { return 6.0 * kC1; }
-
-double reissner() { return 8.0 / 3.0 * youngs_modulus() * kThickness * kThickness / kRadius; }
-
-double tau_of(double pressure) {
-  return 3.0 * pressure * kRadius * kRadius / (4.0 * youngs_modulus() * kThickness * kThickness);
-}
-
-double vella(double tau) {
-  if (tau == 0.0) return reissner();
-  return reissner() * std::numbers::pi / 2.0 * std::sqrt(tau * tau - 1.0) /
-         std::atanh(std::sqrt(1.0 - 1.0 / (tau * tau)));
-}
-
-struct Indentation {
-  double pressure = 0.0;
-  double stiffness = 0.0;  ///< k [N/mm], whole sphere
-  int fitted = 0;          ///< steps in the fit
-};
-
-/// Runs `validation/<case_file>` shortened to w0 = 0.2 t with `options` and fits k.
-Indentation indent(const std::string& name, const std::string& options,
-                   const std::string& case_file = "pressurised-shell-indentation.yaml") {
-  const auto dir = test::scratch_directory(name);
-  // Shorter than the case, as the fit needs: 5 pressure steps, then 25 indenter steps of
-  // 0.01 mm to w0 = 0.2 t (the case goes on to 0.3 t).
-  const std::string shorter =
-      " --set solver.steps=30 --set solver.max_step=0.0333334 --set loads[0].ramp=[0,0.166667]"
-      " --set dies[0].move.ramp=[0.166667,1] --set dies[0].move.displacement=[0,-0.25,0]";
-  const int status = test::run_plisse("run " + std::string(PLISSE_SOURCE_DIR) + "/validation/" +
-                                          case_file + " -o " + dir.string() + shorter + options,
-                                      dir.string() + ".log");
-  EXPECT_EQ(status, 0) << "see " << dir.string() << ".log";
-  Indentation result;
-  if (status != 0) return result;
-  const HistoryTable h = read_history(dir / "history.csv");
-  const std::size_t contact = history_column(h, "contact_nodes:indenter"),
-                    uy = history_column(h, "uy:mid"), force = history_column(h, "force_y:indenter"),
-                    pressure = history_column(h, "pressure:gas");
-  result.pressure = h.rows.back()[pressure];
-  double rest = 0.0;
-  bool touched = false;
-  // Normal equations of F = k w + c w^2.
-  double s2 = 0.0, s3 = 0.0, s4 = 0.0, b1 = 0.0, b2 = 0.0;
-  for (const auto& row : h.rows) {
-    if (row[contact] == 0.0) {
-      EXPECT_FALSE(touched) << "the indenter lost contact";
-      rest = row[uy];
-      continue;
-    }
-    touched = true;
-    const double w = rest - row[uy], f = kSymmetry * row[force];
-    if (w <= 0.0 || w > kFitDepth * kThickness) continue;
-    s2 += w * w, s3 += w * w * w, s4 += w * w * w * w, b1 += w * f, b2 += w * w * f;
-    ++result.fitted;
-  }
-  result.stiffness = (b1 * s4 - b2 * s3) / (s2 * s4 - s3 * s3);
-  return result;
-}
+double reissner() { return test::reissner(kRadius); }
+double tau_of(double pressure) { return test::tau_of(pressure, kRadius); }
+double vella(double tau) { return test::vella(tau, kRadius); }
 
 /// The rows of one element's runs: k(0) against Reissner's k0 within `reissner_band` and k(4)
 /// against Vella et al.'s within `vella_band` (relative differences). `suffix` ends the row names.
