@@ -47,27 +47,30 @@ inline Mat2d in_plane_C(const StrainVec& s, double zeta) {
 }
 
 /// Ψ and its derivatives at the generalized strains s (KL13, KL15, KL16); inverse_bulk_modulus
-/// 1/κ [1/MPa], 0 for exact incompressibility (KL9, KL12). Throws InadmissibleDeformation where
-/// the model or C₂ is inadmissible.
+/// 1/κ [1/MPa], 0 for exact incompressibility (KL9, KL12). Without `with_hessian` the Hessian is
+/// left zero: a residual needs Ψ and its gradient only. Throws InadmissibleDeformation where the
+/// model or C₂ is inadmissible.
 template <class Material>
 SectionResponse integrate_section(const ShellSection& section, const Mat3d& frame,
                                   const StrainVec& s, const Material& material,
-                                  double inverse_bulk_modulus) {
+                                  double inverse_bulk_modulus, bool with_hessian = true) {
   SectionResponse r;
   for (int q = 0; q < section.n_points; ++q) {
     const double zeta = section.zeta[q];
     const double w = section.weight[q];
-    const PlaneStressResponse p =
-        evaluate_plane_stress(material, q, in_plane_C(s, zeta), frame, inverse_bulk_modulus);
+    const PlaneStressResponse p = evaluate_plane_stress(material, q, in_plane_C(s, zeta), frame,
+                                                        inverse_bulk_modulus, with_hessian);
     r.min_J = std::min(r.min_J, p.J);
     r.energy += w * p.W;
     r.gradient.head<3>() += 2.0 * w * p.dW;  // ∂c/∂ε = 2, ∂c/∂κ = 2ζ (KL15)
     r.gradient.tail<3>() += 2.0 * w * zeta * p.dW;
+    if (!with_hessian) continue;
     r.hessian.topLeftCorner<3, 3>() += 4.0 * w * p.d2W;  // (KL16)
     r.hessian.topRightCorner<3, 3>() += 4.0 * w * zeta * p.d2W;
     r.hessian.bottomRightCorner<3, 3>() += 4.0 * w * zeta * zeta * p.d2W;
   }
-  r.hessian.bottomLeftCorner<3, 3>() = r.hessian.topRightCorner<3, 3>().transpose();
+  if (with_hessian)
+    r.hessian.bottomLeftCorner<3, 3>() = r.hessian.topRightCorner<3, 3>().transpose();
   return r;
 }
 
@@ -78,7 +81,8 @@ double compute_shell_energy(const ShellGeometry& g, const ShellSection& section,
                             const Material& material, double inverse_bulk_modulus) {
   const ShellKinematics k = compute_shell_kinematics(g, g.X + u);
   return g.area *
-         integrate_section(section, g.frame, k.strains, material, inverse_bulk_modulus).energy;
+         integrate_section(section, g.frame, k.strains, material, inverse_bulk_modulus, false)
+             .energy;
 }
 
 /// Energy, residual r = ∂Π_e/∂u (KL15) and, when K is given, tangent K = ∂²Π_e/∂u∂u (KL16) of one
@@ -94,8 +98,8 @@ ShellStatus assemble_shell(const ShellGeometry& g, const ShellSection& section, 
   if (K != nullptr) K->setZero();
   try {
     const ShellKinematics k = compute_shell_kinematics(g, g.X + u);
-    const SectionResponse psi =
-        integrate_section(section, g.frame, k.strains, material, inverse_bulk_modulus);
+    const SectionResponse psi = integrate_section(section, g.frame, k.strains, material,
+                                                  inverse_bulk_modulus, K != nullptr);
     const StrainGradient D = compute_strain_gradient(g, k);
     status.energy = g.area * psi.energy;
     status.min_J = psi.min_J;

@@ -127,7 +127,7 @@ double next_thickness_iterate(double C33, double step) {
 }
 
 PlaneStressResponse condense_plane_stress(const Mat2d& C2, const Mat3d& frame, const Mat3d& F,
-                                          const PointResponse& m) {
+                                          const PointResponse& m, bool with_hessian) {
   const Mat2d C2_inverse = C2.inverse();
   const double C33 = 1.0 / C2.determinant();
   const Mat3d F_inverse_T = F.inverse().transpose();
@@ -145,6 +145,7 @@ PlaneStressResponse condense_plane_stress(const Mat2d& C2, const Mat3d& frame, c
   r.C33 = C33;
   for (int a = 0; a < 3; ++a) {
     r.dW(a) = m.P.cwiseProduct(dF[a]).sum();  // DW₂[E_a] = P : dF_a (KL10)
+    if (!with_hessian) continue;
     const double tr_a = C2_inverse.cwiseProduct(E[a]).sum();
     for (int b = a; b < 3; ++b) {
       const double tr_b = C2_inverse.cwiseProduct(E[b]).sum();

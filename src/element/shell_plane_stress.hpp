@@ -52,9 +52,10 @@ Mat3d plane_stress_deformation(const Mat2d& C2, const Mat3d& frame, double C33);
 /// The same with C33 = 1/det C₂ (KL9): det F = 1.
 Mat3d plane_stress_deformation(const Mat2d& C2, const Mat3d& frame);
 
-/// (KL10)-(KL11) from the model's response m at F = plane_stress_deformation(C2, frame).
+/// (KL10)-(KL11) from the model's response m at F = plane_stress_deformation(C2, frame); without
+/// `with_hessian` d2W is left zero (a residual needs W and dW only, and d2W is most of the work).
 PlaneStressResponse condense_plane_stress(const Mat2d& C2, const Mat3d& frame, const Mat3d& F,
-                                          const PointResponse& m);
+                                          const PointResponse& m, bool with_hessian = true);
 
 /// Ŵ + κ/2 (J - 1)² and its derivatives in (C11, C22, C12, C33) (KL12) from the model's response m
 /// at F = plane_stress_deformation(C2, frame, C33); bulk_modulus κ [MPa] > 0.
@@ -75,12 +76,15 @@ double next_thickness_iterate(double C33, double step);
 /// incompressible when inverse_bulk_modulus = 0 (KL9-KL11), else with the bulk modulus
 /// κ = 1/inverse_bulk_modulus [MPa] (KL12). Throws InadmissibleDeformation when C₂ is not
 /// positive definite, the model rejects F, or no positive C33 makes the normal stress zero.
+/// Without `with_hessian` an exactly incompressible point leaves d2W zero (the nearly
+/// incompressible one needs it for C33 and returns it anyway).
 template <class Material>
 PlaneStressResponse evaluate_plane_stress(const Material& material, int q, const Mat2d& C2,
-                                          const Mat3d& frame, double inverse_bulk_modulus = 0.0) {
+                                          const Mat3d& frame, double inverse_bulk_modulus = 0.0,
+                                          bool with_hessian = true) {
   if (inverse_bulk_modulus == 0.0) {
     const Mat3d F = plane_stress_deformation(C2, frame);
-    return condense_plane_stress(C2, frame, F, evaluate_at_point(material, q, F));
+    return condense_plane_stress(C2, frame, F, evaluate_at_point(material, q, F), with_hessian);
   }
   const double bulk_modulus = 1.0 / inverse_bulk_modulus;
   double C33 = 1.0 / C2.determinant();  // the incompressible value: close when κ >> μ

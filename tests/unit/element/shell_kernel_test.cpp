@@ -257,6 +257,29 @@ TEST(ShellKernel, ResidualAndTangentMatchFiniteDifferencesForEveryModel) {
   }
 }
 
+// A residual alone (no tangent asked) skips the plane-stress condensation's Hessian, most of the
+// point's work: it must give the energy and the residual of the call that also forms the tangent,
+// to the last bit (the same operations in the same order), for every model, exactly and nearly
+// incompressible.
+TEST(ShellKernel, TheResidualAloneIsTheResidualOfTheCallWithTheTangent) {
+  const ShellSection section = make_shell_section(0.1);
+  const PatchState s = deformed_curved_patch(11, all_nodes());
+  for (double inverse_bulk_modulus : {0.0, 0.5}) {
+    for (const AnyMaterial& material : every_material()) {
+      PatchVec with_tangent, alone;
+      PatchMat K;
+      const ShellStatus full = assemble_shell(s.geometry, section, s.u, material,
+                                              inverse_bulk_modulus, with_tangent, &K);
+      const ShellStatus residual =
+          assemble_shell(s.geometry, section, s.u, material, inverse_bulk_modulus, alone, nullptr);
+      ASSERT_TRUE(full.ok && residual.ok) << material_name(material);
+      EXPECT_EQ(residual.energy, full.energy) << material_name(material);
+      EXPECT_EQ(alone, with_tangent)
+          << material_name(material) << ", 1/kappa " << inverse_bulk_modulus;
+    }
+  }
+}
+
 TEST(ShellKernel, TangentIsSymmetricAndMissingNeighbourIsUncoupled) {
   const PatchState s = deformed_curved_patch(11, free_sides({2}));
   PatchVec r;
