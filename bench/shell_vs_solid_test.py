@@ -4,7 +4,6 @@ and that the docs hold what the last run wrote. No timing.
 Run by CTest (test bench_shell_vs_solid, label unit): /usr/bin/python3 bench/shell_vs_solid_test.py
 """
 import sys
-import tempfile
 import unittest
 from pathlib import Path
 
@@ -60,15 +59,11 @@ class ShellVsSolidTable(unittest.TestCase):
         self.assertIn("load average of 0.9 when the run began and 1.1 when it ended", first)
 
     def test_update_leaves_the_other_blocks_alone(self):
-        peers = table.peer_table
-        page = (f"# T\n\n{table.BEGIN}\nold\n{table.END}\n\n{peers.BEGIN}\npeers\n{peers.END}\n")
-        with tempfile.TemporaryDirectory() as tmp:
-            path = Path(tmp) / "page.md"
-            path.write_text(page, encoding="utf-8")
-            table.update_file(path, MEASUREMENTS)
-            text = path.read_text(encoding="utf-8")
-            self.assertEqual(peers.read_block(text, table.MARKERS), EXPECTED)
-            self.assertEqual(peers.read_block(text), "peers\n")
+        block, peers, _, refused = block_testing.update_beside_the_peers(
+            table.update_file, table.MARKERS, MEASUREMENTS, table.peer_table)
+        self.assertEqual(block, EXPECTED)
+        self.assertEqual(peers, "the peers' block\n")
+        self.assertEqual(refused, "# Title\n\nno block here\n")
 
     def test_docs_hold_what_the_last_run_wrote(self):
         page = (ROOT / "docs" / "performance.md").read_text(encoding="utf-8")

@@ -6,7 +6,6 @@ Run by CTest (test bench_thin_shell, label unit): /usr/bin/python3 bench/thin_sh
 import copy
 import math
 import sys
-import tempfile
 import unittest
 from pathlib import Path
 
@@ -81,22 +80,13 @@ class ThinShellTable(unittest.TestCase):
         self.assertNotIn("unknowns^a", thin_shell_table.render_block(m))
 
     def test_update_writes_the_block_between_its_own_markers_only(self):
-        page = (f"# Title\n\nProse.\n\n{thin_shell_table.BEGIN}\nold\n{thin_shell_table.END}\n\n"
-                f"{peer_table.BEGIN}\nthe peers' block\n{peer_table.END}\n")
-        with tempfile.TemporaryDirectory() as tmp:
-            path = Path(tmp) / "page.md"
-            path.write_text(page, encoding="utf-8")
-            thin_shell_table.update_file(path, MEASUREMENTS)
-            text = path.read_text(encoding="utf-8")
-            self.assertEqual(peer_table.read_block(text, thin_shell_table.MARKERS), EXPECTED)
-            self.assertEqual(peer_table.read_block(text), "the peers' block\n")
-            self.assertTrue(text.startswith("# Title\n\nProse.\n\n"))
-            # Without its markers the file is refused and left alone.
-            bare = "# Title\n\nno block here\n"
-            path.write_text(bare, encoding="utf-8")
-            with self.assertRaises(peer_table.BlockError):
-                thin_shell_table.update_file(path, MEASUREMENTS)
-            self.assertEqual(path.read_text(encoding="utf-8"), bare)
+        block, peers, text, refused = block_testing.update_beside_the_peers(
+            thin_shell_table.update_file, thin_shell_table.MARKERS, MEASUREMENTS, peer_table)
+        self.assertEqual(block, EXPECTED)
+        self.assertEqual(peers, "the peers' block\n")
+        self.assertTrue(text.startswith("# Title\n\nProse.\n\n"))
+        # Without its markers the file is refused and left alone.
+        self.assertEqual(refused, "# Title\n\nno block here\n")
 
     def test_docs_hold_what_the_last_run_wrote(self):
         page = (ROOT / "docs" / "performance.md").read_text(encoding="utf-8")

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "output/history_writer.hpp"
+#include "support/printed_errors.hpp"
 #include "support/run_case.hpp"
 
 namespace plisse {
@@ -159,11 +160,8 @@ TEST(ShellRegions, ARigidGripClampsTheShellItHolds) {
   }
   // The numbers docs/case-file.md and docs/theory/shell.md print, to their last digit (a guard
   // on plisse's own discretisation error, against the closed form).
-  const std::array<double, 3> printed{6.6e-4, 1.6e-4, 3.9e-5};
-  const std::array<double, 3> half_digit{5e-6, 5e-6, 5e-7};
-  for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(errors[k], printed[k], half_digit[k]) << k;
-  for (std::size_t k = 0; k + 1 < errors.size(); ++k)
-    EXPECT_GT(errors[k] / errors[k + 1], 3.5) << "second order, halving " << k;
+  test::expect_printed_second_order(errors, std::array{6.6e-4, 1.6e-4, 3.9e-5},
+                                    std::array{5e-6, 5e-6, 5e-7});
 }
 
 // The grip lifted by 2 mm carries the strip up rigidly: the tip sits 2 mm higher, less the same
