@@ -246,6 +246,17 @@ def instability_steps(run):
     return times, [step for step, _ in runs.log_instabilities(run)]
 
 
+def wavelength_at(wrinkled, strain):
+    """The wavelength [mm] at `strain`, interpolated linearly between the two wrinkled rows of
+    measure() (step, strain, amplitude, crests, wavelength) around it; None when no two wrinkled
+    rows enclose it."""
+    points = [(r[1], r[4]) for r in wrinkled]
+    for (e0, l0), (e1, l1) in zip(points, points[1:]):
+        if e0 <= strain <= e1:
+            return l0 + (l1 - l0) * (strain - e0) / (e1 - e0)
+    return None
+
+
 def summary(results):
     """Per run: onset bracket (stability check), vanishing bracket, wavelength at fixed strains;
     then the exponent of t in the wavelength across runs of different thickness."""
@@ -271,12 +282,8 @@ def summary(results):
         peak = max((r[2] for r in wrinkled), default=0.0) / t
         lambdas, ratios = [], []
         for e in SUMMARY_STRAINS:
-            pts = [(r[1], r[4]) for r in wrinkled]
-            value = ""
-            for (e0, l0), (e1, l1) in zip(pts, pts[1:]):
-                if e0 <= e <= e1:
-                    value = l0 + (l1 - l0) * (e - e0) / (e1 - e0)
-                    break
+            value = wavelength_at(wrinkled, e)
+            value = "" if value is None else value
             lambdas.append(f"{value:.4f}" if value != "" else "")
             ratios.append(f"{value / cerda_mahadevan(e, length, t):.4f}" if value != "" else "")
             if value != "":
