@@ -3,8 +3,9 @@
 // case's mesh): the stiffness against Reissner's k0 (τ = 0) and Vella et al.'s law at τ = 4, both
 // thin-shell theory (verification/wrinkling/indented_sphere.hpp). What is left between the shell
 // and that theory is not discretisation (halving the elements moves it by 0.2 % at most, the study)
-// and falls with t/R. The claims: each ratio k / k_theory within 0.5 % of the study's table (0.977,
-// 0.949 at R/t = 100; 0.985, 0.970 at 200; 0.994, 0.991 at 1000), and the law: at each τ the
+// and falls with t/R. The claims: each ratio k / k_theory to the last digit the study's table
+// prints, within half of it (0.977, 0.949 at R/t = 100; 0.985, 0.970 at 200; 0.994, 0.991 at 1000;
+// measured 0.9768, 0.9487, 0.9847, 0.9704, 0.9936, 0.9913), and the law: at each τ the
 // difference 1 − k / k_theory falls at each step of R/t, and from 100 to 1000 to less than 0.4 of
 // itself: at least as (t/R)^0.4 (the study: about (t/R)^0.55 at τ = 0, (t/R)^0.8 at τ = 4); a
 // difference that does not fall with t/R fails.
@@ -69,7 +70,7 @@ TEST(ShellIndentationThinning, TheShellsDifferenceFromThinShellTheoryFallsWithTO
       ratio[k] = stiffness_ratio(radii[k], taus[i]);
       std::printf("R/t = %g, τ = %g: k / k_theory = %.4f (study %.3f)\n", radii[k], taus[i],
                   ratio[k], printed[i][k]);
-      EXPECT_NEAR(ratio[k], printed[i][k], 0.005) << "R/t " << radii[k] << ", τ " << taus[i];
+      EXPECT_NEAR(ratio[k], printed[i][k], 5e-4) << "R/t " << radii[k] << ", τ " << taus[i];
     }
     for (std::size_t k = 0; k + 1 < radii.size(); ++k)
       EXPECT_LT(1.0 - ratio[k + 1], 1.0 - ratio[k])
