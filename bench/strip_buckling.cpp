@@ -2,9 +2,11 @@
 // process so that the peak memory is that configuration's: the measure of docs/performance.md,
 // "Element families" (the same strip and search as tests/verification/buckling/).
 //
-// Usage: plisse-strip-buckling mini|taylor-hood LAYERS [IN_PLANE_SIZE]
+// Usage: plisse-strip-buckling mini|taylor-hood LAYERS [IN_PLANE_SIZE [LENGTH]]
 //   LAYERS: cells through the thickness t = 1 mm; IN_PLANE_SIZE [mm]: in-plane cell size
-//   (default t / LAYERS, cubic cells). Prints one line: element, layers, size, free dofs,
+//   (default t / LAYERS, cubic cells; 0 for the default); LENGTH [mm]: the strip's length L
+//   (default 20, L/t = 20). PLANE_STRAIN=1 in the environment: the strip in plane strain
+//   (u_y = 0, one cell across). Prints one line: element, layers, size, free dofs,
 //   eps_cr / beam theory, wall time [s], peak resident memory [MiB].
 #include <sys/resource.h>
 
@@ -20,15 +22,19 @@
 int main(int argc, char** argv) {
   using namespace plisse;
   if (argc < 3 || !parse_element_family(argv[1])) {
-    std::fprintf(stderr, "usage: plisse-strip-buckling mini|taylor-hood LAYERS [IN_PLANE_SIZE]\n");
+    std::fprintf(stderr,
+                 "usage: plisse-strip-buckling mini|taylor-hood LAYERS [IN_PLANE_SIZE [LENGTH]]\n");
     return 2;
   }
   test::ClampedStrip strip;
   strip.element = *parse_element_family(argv[1]);
   strip.layers = std::atoi(argv[2]);
   if (argc > 3) strip.in_plane_size = std::atof(argv[3]);
-  if (strip.layers < 1 || strip.in_plane_size < 0) {
-    std::fprintf(stderr, "plisse-strip-buckling: LAYERS >= 1 and IN_PLANE_SIZE > 0\n");
+  if (argc > 4) strip.length = std::atof(argv[4]);
+  if (const char* plane = std::getenv("PLANE_STRAIN"))
+    strip.plane_strain = std::string(plane) == "1";
+  if (strip.layers < 1 || strip.in_plane_size < 0 || !(strip.length > 0)) {
+    std::fprintf(stderr, "plisse-strip-buckling: LAYERS >= 1, IN_PLANE_SIZE >= 0, LENGTH > 0\n");
     return 2;
   }
   PetscSession petsc({"-no_signal_handler"});
