@@ -31,15 +31,21 @@ Mat3d direction_of_C(const Mat2d& X, const Mat2d& C2_inverse, double C33) {
 
 Vec9d vec(const Mat3d& M) { return Eigen::Map<const Vec9d>(M.data()); }
 
-}  // namespace
-
-Mat3d plane_stress_deformation(const Mat2d& C2, const Mat3d& frame, double C33) {
+/// Throws InadmissibleDeformation unless C₂ is positive definite; returns det C₂.
+double positive_definite_determinant(const Mat2d& C2) {
   const double det = C2.determinant();
   if (!(C2(0, 0) > 0.0) || !(det > 0.0) || !std::isfinite(det)) {
     throw InadmissibleDeformation(
         "shell: in-plane C is not positive definite (C11 = " + std::to_string(C2(0, 0)) +
         ", det = " + std::to_string(det) + ")");
   }
+  return det;
+}
+
+}  // namespace
+
+Mat3d plane_stress_deformation(const Mat2d& C2, const Mat3d& frame, double C33) {
+  const double det = positive_definite_determinant(C2);
   if (!(C33 > 0.0) || !std::isfinite(C33)) {
     throw InadmissibleDeformation("shell: thickness stretch squared C33 = " + std::to_string(C33) +
                                   " is not positive");
@@ -156,6 +162,39 @@ PlaneStressResponse condense_plane_stress(const Mat2d& C2, const Mat3d& frame, c
       r.d2W(b, a) = r.d2W(a, b);
     }
   }
+  return r;
+}
+
+Eigen::Vector2d plane_stress_invariants(const Mat2d& C2) {
+  const double det = positive_definite_determinant(C2);
+  const double trace = C2.trace();
+  return {trace + 1.0 / det, det + trace / det};
+}
+
+PlaneStressResponse condense_invariants(const Mat2d& C2, const InvariantDerivatives& d,
+                                        bool with_hessian) {
+  const double det = positive_definite_determinant(C2);
+  const double trace = C2.trace();
+  const double inv = 1.0 / det;
+  // Derivatives in c = (C11, C22, C12), C12 one unknown for both off-diagonal entries (KL11a).
+  const Vec3d dtrace(1.0, 1.0, 0.0);
+  const Vec3d ddet(C2(1, 1), C2(0, 0), -2.0 * C2(0, 1));
+  const Vec3d dI1 = dtrace - inv * inv * ddet;
+  const Vec3d dI2 = ddet + inv * dtrace - trace * inv * inv * ddet;
+  PlaneStressResponse r;
+  r.W = d.W;
+  r.C33 = inv;
+  r.dW = d.W_1 * dI1 + d.W_2 * dI2;
+  if (!with_hessian) return r;
+  Mat3d d2det = Mat3d::Zero();
+  d2det(0, 1) = d2det(1, 0) = 1.0;
+  d2det(2, 2) = -2.0;
+  const Mat3d ddet_ddet = ddet * ddet.transpose();
+  const Mat3d d2I1 = 2.0 * inv * inv * inv * ddet_ddet - inv * inv * d2det;
+  const Mat3d d2I2 = d2det - inv * inv * (dtrace * ddet.transpose() + ddet * dtrace.transpose()) +
+                     2.0 * trace * inv * inv * inv * ddet_ddet - trace * inv * inv * d2det;
+  r.d2W = d.W_1 * d2I1 + d.W_2 * d2I2 + d.W_11 * dI1 * dI1.transpose() +
+          d.W_12 * (dI1 * dI2.transpose() + dI2 * dI1.transpose()) + d.W_22 * dI2 * dI2.transpose();
   return r;
 }
 

@@ -8,10 +8,12 @@
 /// mixed element's pressure term and C33 is found by Newton's method (KL12). No heap;
 /// thread-safe.
 #include <cmath>
+#include <concepts>
 
 #include "core/types.hpp"
 #include "element/shell_geometry.hpp"
 #include "material/inadmissible_deformation.hpp"
+#include "material/isochoric_invariants.hpp"
 #include "material/point_response.hpp"
 
 namespace plisse::shell {
@@ -24,6 +26,26 @@ struct PlaneStressResponse {
   double C33 = 1.0;           ///< λ3², the thickness stretch squared at the point [-]
   double J = 1.0;             ///< det F = √(det C₂ C33) [-]
 };
+
+/// A model whose energy is W(Ī1, Ī2) alone, evaluated through material/isochoric_invariants.hpp
+/// (neo-Hookean, Mooney-Rivlin, Yeoh, Gent, Arruda-Boyce, Fung), and whose points carry no
+/// history: its exactly incompressible plane stress has the closed form (KL11a).
+template <class Material>
+concept InvariantModel = requires(const Material& m, int q, const Mat3d& F) {
+  { m.invariant_derivatives(1.0, 1.0) } -> std::same_as<InvariantDerivatives>;
+}
+&&!requires(const Material& m, int q, const Mat3d& F) { m.evaluate_at(q, F); };
+
+/// (KL11a): W₂ = W(I1, I2) with I1 = tr C₂ + 1/det C₂ and I2 = det C₂ + tr C₂ / det C₂ (C33 =
+/// 1/det C₂, J = 1), and its derivatives in c = (C11, C22, C12) by the chain rule from the model's
+/// derivatives d at (I1, I2). The same function of C₂ as (KL9)-(KL11) evaluate through F, P and A;
+/// without `with_hessian` d2W is left zero. Throws InadmissibleDeformation when C₂ is not positive
+/// definite, with the message of plane_stress_deformation.
+PlaneStressResponse condense_invariants(const Mat2d& C2, const InvariantDerivatives& d,
+                                        bool with_hessian = true);
+
+/// The invariants (I1, I2) of C₂ ⊕ 1/det C₂ (KL11a); throws as condense_invariants.
+Eigen::Vector2d plane_stress_invariants(const Mat2d& C2);
 
 /// The 3-D energy Ŵ(C₂ ⊕ C33) + κ/2 (J - 1)² of a point and its derivatives with respect to the
 /// four components (C11, C22, C12, C33), at a given C33 (KL12).
@@ -83,6 +105,10 @@ PlaneStressResponse evaluate_plane_stress(const Material& material, int q, const
                                           const Mat3d& frame, double inverse_bulk_modulus = 0.0,
                                           bool with_hessian = true) {
   if (inverse_bulk_modulus == 0.0) {
+    if constexpr (InvariantModel<Material>) {
+      const Eigen::Vector2d I = plane_stress_invariants(C2);
+      return condense_invariants(C2, material.invariant_derivatives(I(0), I(1)), with_hessian);
+    }
     const Mat3d F = plane_stress_deformation(C2, frame);
     return condense_plane_stress(C2, frame, F, evaluate_at_point(material, q, F), with_hessian);
   }

@@ -88,6 +88,58 @@ TEST(ShellPlaneStress, DerivativesMatchFiniteDifferencesForEveryModel) {
   }
 }
 
+TEST(ShellPlaneStress, TheInvariantFormIsTheGeneralFormForEveryInvariantModel) {
+  // (KL11a) against (KL9)-(KL11) through F, P and A, for every model of W(Ī1, Ī2) at 20 random
+  // C₂ (stretches about 0.7 to 1.4) in a tilted frame: the same function of C₂, so they differ
+  // by round-off (measured 1.0e-15 to 3.1e-15 of the largest entry); 1e-13 allows for the
+  // general path's inverse of F and its 9 x 9 products. evaluate_plane_stress takes (KL11a) for
+  // these models (the same bits), and both refuse a C₂ that is not positive definite.
+  std::mt19937 rng(11);
+  const Mat3d frame = Eigen::AngleAxisd(0.4, Vec3d(2, 1, -1).normalized()).toRotationMatrix();
+  int invariant_models = 0;
+  for (const AnyMaterial& material : every_material()) {
+    std::visit(
+        [&](const auto& m) {
+          using Model = std::decay_t<decltype(m)>;
+          if constexpr (InvariantModel<Model>) {
+            ++invariant_models;
+            double largest = 0.0;
+            for (int k = 0; k < 20; ++k) {
+              const Mat2d C2 = random_C2(rng);
+              const Eigen::Vector2d I = plane_stress_invariants(C2);
+              const PlaneStressResponse fast =
+                  condense_invariants(C2, m.invariant_derivatives(I(0), I(1)));
+              const PlaneStressResponse taken = evaluate_plane_stress(m, 0, C2, frame);
+              EXPECT_EQ(taken.W, fast.W) << material_name(material);
+              EXPECT_EQ(taken.dW, fast.dW) << material_name(material);
+              EXPECT_EQ(taken.d2W, fast.d2W) << material_name(material);
+              const Mat3d F = plane_stress_deformation(C2, frame);
+              const PlaneStressResponse general =
+                  condense_plane_stress(C2, frame, F, m.evaluate(F));
+              const double scale = std::max({std::abs(general.W), general.dW.cwiseAbs().maxCoeff(),
+                                             general.d2W.cwiseAbs().maxCoeff()});
+              largest = std::max({largest, std::abs(fast.W - general.W) / scale,
+                                  (fast.dW - general.dW).cwiseAbs().maxCoeff() / scale,
+                                  (fast.d2W - general.d2W).cwiseAbs().maxCoeff() / scale,
+                                  std::abs(fast.C33 - general.C33) / general.C33});
+              const PlaneStressResponse residual_only =
+                  evaluate_plane_stress(m, 0, C2, frame, 0.0, false);
+              EXPECT_EQ(residual_only.W, fast.W) << material_name(material);
+              EXPECT_EQ(residual_only.dW, fast.dW) << material_name(material);
+            }
+            std::printf("%-14s invariant form against the general form: %.1e\n",
+                        material_name(material).c_str(), largest);
+            EXPECT_LT(largest, 1e-13) << material_name(material);
+            Mat2d folded;
+            folded << 1.0, 1.2, 1.2, 1.0;  // det < 0
+            EXPECT_THROW(evaluate_plane_stress(m, 0, folded, frame), InadmissibleDeformation);
+          }
+        },
+        material);
+  }
+  EXPECT_EQ(invariant_models, 6);  // neo-Hookean, Mooney-Rivlin, Fung, Yeoh, Gent, Arruda-Boyce
+}
+
 TEST(ShellPlaneStress, NearlyIncompressibleNeoHookeanAgainstTheZeroNormalStress) {
   // A principal in-plane stretch (λ1, λ2): λ3 from ∂W/∂λ3 = 0 by bisection (independent of
   // KL12's Newton's method), then W₂ = W(λ1, λ2, λ3) and, by the envelope theorem,
