@@ -38,8 +38,8 @@
 namespace plisse {
 namespace {
 
-constexpr double kHalfSpan = 20.0;  // a [mm]
-constexpr double kC1 = 0.1;         // [MPa]
+constexpr double kHalfSpan = 20.0;                 // a [mm]
+constexpr double kC1 = 0.1;                        // [MPa]
 constexpr double kPressurePerThickness = 2.34e-3;  // p / t [MPa/mm]
 
 /// The membrane's apex rise [mm] in closed form (above), θ by bisection.
@@ -77,8 +77,8 @@ double run_rise(bool shell, double thickness, double size) {
       "solver:\n"
       "  steps: 6\n"
       "  newton: {rtol: 1.0e-11, atol: 1.0e-14, line_search: cp}\n",
-      shell ? "shell" : "taylor-hood", kHalfSpan, size, thickness, shell ? "" : " layers: 1,",
-      size, kC1, shell ? "clamped" : "fixed", kPressurePerThickness * thickness, 0.5 * thickness);
+      shell ? "shell" : "taylor-hood", kHalfSpan, size, thickness, shell ? "" : " layers: 1,", size,
+      kC1, shell ? "clamped" : "fixed", kPressurePerThickness * thickness, 0.5 * thickness);
   const std::string name = std::string(shell ? "shell" : "solid") + "-t" +
                            test::six_digits(thickness) + "-h" + test::six_digits(size);
   const HistoryTable h = test::run_case_text(test::scratch_directory(name), text);
@@ -100,8 +100,8 @@ TEST(ShellCylindricalBulge, TheShellAndTheSolidMeetTheMembraneAndEachOtherAsTheW
     std::vector<double> limits;
     for (const bool shell : {true, false}) {
       std::vector<double> rises;
-      for (const double cells : {2.0, 4.0, 8.0}) rises.push_back(run_rise(shell, thickness,
-                                                                            thickness / cells));
+      for (const double cells : {2.0, 4.0, 8.0})
+        rises.push_back(run_rise(shell, thickness, thickness / cells));
       ASSERT_GT(rises[2], 0.0) << (shell ? "shell" : "solid") << ", t " << thickness;
       double order = 0.0;
       limits.push_back(extrapolate(rises, order));
@@ -113,8 +113,9 @@ TEST(ShellCylindricalBulge, TheShellAndTheSolidMeetTheMembraneAndEachOtherAsTheW
     shell_shortfall.push_back(1.0 - limits[0] / membrane);
     solid_shortfall.push_back(1.0 - limits[1] / membrane);
     gaps.push_back((limits[1] - limits[0]) / membrane);
-    std::printf("a/t = %g: shortfall from the membrane: shell %.3e, solid %.3e; solid - shell %.3e\n",
-                kHalfSpan / thickness, shell_shortfall.back(), solid_shortfall.back(), gaps.back());
+    std::printf(
+        "a/t = %g: shortfall from the membrane: shell %.3e, solid %.3e; solid - shell %.3e\n",
+        kHalfSpan / thickness, shell_shortfall.back(), solid_shortfall.back(), gaps.back());
     EXPECT_GT(solid_shortfall.back(), 0.0) << "t " << thickness;
     EXPECT_GT(gaps.back(), 0.0) << "t " << thickness;
   }
