@@ -27,14 +27,23 @@ struct PlaneStressResponse {
   double J = 1.0;             ///< det F = √(det C₂ C33) [-]
 };
 
-/// A model whose energy is W(Ī1, Ī2) alone, evaluated through material/isochoric_invariants.hpp
-/// (neo-Hookean, Mooney-Rivlin, Yeoh, Gent, Arruda-Boyce, Fung), and whose points carry no
-/// history: its exactly incompressible plane stress has the closed form (KL11a).
+/// A model that gives its energy's derivatives in (Ī1, Ī2) (material/isochoric_invariants.hpp).
 template <class Material>
-concept InvariantModel = requires(const Material& m, int q, const Mat3d& F) {
+concept HasInvariantDerivatives = requires(const Material& m) {
   { m.invariant_derivatives(1.0, 1.0) } -> std::same_as<InvariantDerivatives>;
-}
-&&!requires(const Material& m, int q, const Mat3d& F) { m.evaluate_at(q, F); };
+};
+
+/// A model whose points carry history (material/point_response.hpp: evaluate_at).
+template <class Material>
+concept HasPointHistory = requires(const Material& m, int q, const Mat3d& F) {
+  m.evaluate_at(q, F);
+};
+
+/// A model whose energy is W(Ī1, Ī2) alone (neo-Hookean, Mooney-Rivlin, Yeoh, Gent, Arruda-Boyce,
+/// Fung) and whose points carry no history: its exactly incompressible plane stress has the
+/// closed form (KL11a).
+template <class Material>
+concept InvariantModel = HasInvariantDerivatives<Material> && !HasPointHistory<Material>;
 
 /// (KL11a): W₂ = W(I1, I2) with I1 = tr C₂ + 1/det C₂ and I2 = det C₂ + tr C₂ / det C₂ (C33 =
 /// 1/det C₂, J = 1), and its derivatives in c = (C11, C22, C12) by the chain rule from the model's
