@@ -33,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "support/extrapolation.hpp"
 #include "support/run_case.hpp"
 
 namespace plisse {
@@ -86,13 +87,6 @@ double run_rise(bool shell, double thickness, double size) {
   return h.rows.back()[test::history_column(h, "uz:apex")];
 }
 
-/// The limit of three values on halved cells, and the observed order.
-double extrapolate(const std::vector<double>& r, double& order) {
-  const double q = (r[0] - r[1]) / (r[1] - r[2]);
-  order = std::log2(q);
-  return r[2] - (r[1] - r[2]) / (q - 1.0);
-}
-
 TEST(ShellCylindricalBulge, TheShellAndTheSolidMeetTheMembraneAndEachOtherAsTheWallThins) {
   std::vector<double> shell_shortfall, solid_shortfall, gaps;
   for (const double thickness : {1.0, 0.5}) {
@@ -103,12 +97,12 @@ TEST(ShellCylindricalBulge, TheShellAndTheSolidMeetTheMembraneAndEachOtherAsTheW
       for (const double cells : {2.0, 4.0, 8.0})
         rises.push_back(run_rise(shell, thickness, thickness / cells));
       ASSERT_GT(rises[2], 0.0) << (shell ? "shell" : "solid") << ", t " << thickness;
-      double order = 0.0;
-      limits.push_back(extrapolate(rises, order));
+      const test::Extrapolation fit = test::extrapolate_halvings(rises[0], rises[1], rises[2]);
+      limits.push_back(fit.limit);
       std::printf("a/t = %g, %s: rise %.6f %.6f %.6f mm (order %.2f, limit %.6f), membrane %.6f\n",
                   kHalfSpan / thickness, shell ? "shell" : "solid", rises[0], rises[1], rises[2],
-                  order, limits.back(), membrane);
-      EXPECT_GT(order, 1.5) << (shell ? "shell" : "solid") << ", t " << thickness;
+                  fit.order, fit.limit, membrane);
+      EXPECT_GT(fit.order, 1.5) << (shell ? "shell" : "solid") << ", t " << thickness;
     }
     shell_shortfall.push_back(1.0 - limits[0] / membrane);
     solid_shortfall.push_back(1.0 - limits[1] / membrane);

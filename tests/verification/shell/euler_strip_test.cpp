@@ -33,6 +33,7 @@
 #include "solver/eigenmodes.hpp"
 #include "solver/mixed_model.hpp"
 #include "solver/newton_solver.hpp"
+#include "support/extrapolation.hpp"
 #include "verification/buckling/fixtures/clamped_strip.hpp"
 
 namespace plisse {
@@ -197,11 +198,6 @@ TEST(ShellEulerStrip, ClampedStripBucklesAtFourTimesTheEulerStrain) {
 // ε_cr, ratio 4.1.
 TEST(ShellEulerStrip, TheClampedStripBucklesWhereTheSolidStripInPlaneStrainDoes) {
   const double pi = std::numbers::pi;
-  const auto extrapolate = [](const std::vector<double>& r, double& order) {
-    const double q = (r[0] - r[1]) / (r[1] - r[2]);
-    order = std::log2(q);
-    return r[2] - (r[1] - r[2]) / (q - 1.0);
-  };
   std::vector<double> gaps;
   const double engesser = -4.8;  // the shear's relative part over ε_cr (above)
   for (const double slenderness : {20.0, 40.0}) {
@@ -223,17 +219,16 @@ TEST(ShellEulerStrip, TheClampedStripBucklesWhereTheSolidStripInPlaneStrainDoes)
       ASSERT_GT(r.strain_critical, 0.0) << "L/t " << slenderness << ", size " << size;
       solid.push_back(r.strain_critical / r.strain_analytic);
     }
-    double shell_order = 0.0, solid_order = 0.0;
-    const double shell_limit = extrapolate(shell, shell_order);
-    const double solid_limit = extrapolate(solid, solid_order);
-    gaps.push_back(solid_limit - shell_limit);
+    const test::Extrapolation shell_fit = test::extrapolate_halvings(shell[0], shell[1], shell[2]);
+    const test::Extrapolation solid_fit = test::extrapolate_halvings(solid[0], solid[1], solid[2]);
+    gaps.push_back(solid_fit.limit - shell_fit.limit);
     std::printf(
         "L/t = %g: eps_cr / beam theory, shell %.6f %.6f %.6f (order %.2f, limit %.6f), solid "
         "%.6f %.6f %.6f (order %.2f, limit %.6f); solid - shell %.2e\n",
-        slenderness, shell[0], shell[1], shell[2], shell_order, shell_limit, solid[0], solid[1],
-        solid[2], solid_order, solid_limit, gaps.back());
-    EXPECT_GT(shell_order, 1.5) << "L/t " << slenderness;
-    EXPECT_GT(solid_order, 1.5) << "L/t " << slenderness;
+        slenderness, shell[0], shell[1], shell[2], shell_fit.order, shell_fit.limit, solid[0],
+        solid[1], solid[2], solid_fit.order, solid_fit.limit, gaps.back());
+    EXPECT_GT(shell_fit.order, 1.5) << "L/t " << slenderness;
+    EXPECT_GT(solid_fit.order, 1.5) << "L/t " << slenderness;
     const double epsilon = beam;  // ε_cr of beam theory
     EXPECT_LT(gaps.back(), 0.5 * engesser * epsilon) << "L/t " << slenderness;
     EXPECT_GT(gaps.back(), engesser * epsilon) << "L/t " << slenderness;

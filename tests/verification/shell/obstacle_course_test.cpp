@@ -47,6 +47,7 @@
 #include "physics/dirichlet.hpp"
 #include "shell_fixtures.hpp"
 #include "solver/mixed_model.hpp"
+#include "support/extrapolation.hpp"
 
 namespace plisse {
 namespace {
@@ -374,12 +375,13 @@ double aitken_limit(const char* what, const std::vector<Answer>& answers, double
   const std::size_t k = answers.size() - 1;
   const double d1 = answers[k - 1].displacement - answers[k - 2].displacement;
   const double d2 = answers[k].displacement - answers[k - 1].displacement;
-  const double limit = answers[k].displacement - d2 * d2 / (d2 - d1);
+  const test::Extrapolation fit = test::extrapolate_halvings(
+      answers[k - 2].displacement, answers[k - 1].displacement, answers[k].displacement);
   std::printf(
       "%s: last increments %.3e, %.3e (ratio %.2f, order %.2f); Aitken's limit %.5e, %+.2e "
       "from the reference\n",
-      what, d1, d2, d1 / d2, std::log2(d1 / d2), limit, limit / reference - 1.0);
-  return limit;
+      what, d1, d2, d1 / d2, fit.order, fit.limit, fit.limit / reference - 1.0);
+  return fit.limit;
 }
 
 // The roof at ν = 0 on 4² … 128² cells (8 s). Measured: errors 3.06e-2, 2.20e-2, 2.07e-2,
