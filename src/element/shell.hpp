@@ -94,8 +94,8 @@ ShellStatus assemble_shell(const ShellGeometry& g, const ShellSection& section, 
                            const Material& material, double inverse_bulk_modulus, PatchVec& r,
                            PatchMat* K) {
   ShellStatus status;
-  r.setZero();
-  if (K != nullptr) K->setZero();
+  // r and K are assigned whole below (or zeroed on an inadmissible state): zeroing them first
+  // would write the 36 x 36 tangent of every patch twice.
   try {
     const ShellKinematics k = compute_shell_kinematics(g, g.X + u);
     const SectionResponse psi = integrate_section(section, g.frame, k.strains, material,
