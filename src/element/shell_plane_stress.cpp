@@ -165,17 +165,16 @@ PlaneStressResponse condense_plane_stress(const Mat2d& C2, const Mat3d& frame, c
   return r;
 }
 
-Eigen::Vector2d plane_stress_invariants(const Mat2d& C2) {
+PlaneStressInvariants plane_stress_invariants(const Mat2d& C2) {
   const double det = positive_definite_determinant(C2);
   const double trace = C2.trace();
-  return {trace + 1.0 / det, det + trace / det};
+  return {det, trace, trace + 1.0 / det, det + trace / det};
 }
 
-PlaneStressResponse condense_invariants(const Mat2d& C2, const InvariantDerivatives& d,
-                                        bool with_hessian) {
-  const double det = positive_definite_determinant(C2);
-  const double trace = C2.trace();
-  const double inv = 1.0 / det;
+PlaneStressResponse condense_invariants(const Mat2d& C2, const PlaneStressInvariants& invariants,
+                                        const InvariantDerivatives& d, bool with_hessian) {
+  const double trace = invariants.trace;
+  const double inv = 1.0 / invariants.det;
   // Derivatives in c = (C11, C22, C12), C12 one unknown for both off-diagonal entries (KL11a).
   const Vec3d dtrace(1.0, 1.0, 0.0);
   const Vec3d ddet(C2(1, 1), C2(0, 0), -2.0 * C2(0, 1));

@@ -45,16 +45,25 @@ concept HasPointHistory = requires(const Material& m, int q, const Mat3d& F) {
 template <class Material>
 concept InvariantModel = HasInvariantDerivatives<Material> && !HasPointHistory<Material>;
 
-/// (KL11a): W₂ = W(I1, I2) with I1 = tr C₂ + 1/det C₂ and I2 = det C₂ + tr C₂ / det C₂ (C33 =
-/// 1/det C₂, J = 1), and its derivatives in c = (C11, C22, C12) by the chain rule from the model's
-/// derivatives d at (I1, I2). The same function of C₂ as (KL9)-(KL11) evaluate through F, P and A;
-/// without `with_hessian` d2W is left zero. Throws InadmissibleDeformation when C₂ is not positive
-/// definite, with the message of plane_stress_deformation.
-PlaneStressResponse condense_invariants(const Mat2d& C2, const InvariantDerivatives& d,
-                                        bool with_hessian = true);
+/// det C₂, tr C₂ and the invariants I1 = tr C₂ + 1/det C₂, I2 = det C₂ + tr C₂ / det C₂ of
+/// C₂ ⊕ 1/det C₂ (KL11a).
+struct PlaneStressInvariants {
+  double det = 1.0;
+  double trace = 2.0;
+  double I1 = 3.0;
+  double I2 = 3.0;
+};
 
-/// The invariants (I1, I2) of C₂ ⊕ 1/det C₂ (KL11a); throws as condense_invariants.
-Eigen::Vector2d plane_stress_invariants(const Mat2d& C2);
+/// The invariants of (KL11a) at C₂. Throws InadmissibleDeformation when C₂ is not positive
+/// definite, with the message of plane_stress_deformation.
+PlaneStressInvariants plane_stress_invariants(const Mat2d& C2);
+
+/// (KL11a): W₂ = W(I1, I2) (C33 = 1/det C₂, J = 1) and its derivatives in c = (C11, C22, C12) by
+/// the chain rule from the model's derivatives d at (I1, I2) of `invariants`, those of C₂. The
+/// same function of C₂ as (KL9)-(KL11) evaluate through F, P and A; without `with_hessian` d2W is
+/// left zero.
+PlaneStressResponse condense_invariants(const Mat2d& C2, const PlaneStressInvariants& invariants,
+                                        const InvariantDerivatives& d, bool with_hessian = true);
 
 /// The 3-D energy Ŵ(C₂ ⊕ C33) + κ/2 (J - 1)² of a point and its derivatives with respect to the
 /// four components (C11, C22, C12, C33), at a given C33 (KL12).
@@ -115,8 +124,8 @@ PlaneStressResponse evaluate_plane_stress(const Material& material, int q, const
                                           bool with_hessian = true) {
   if (inverse_bulk_modulus == 0.0) {
     if constexpr (InvariantModel<Material>) {
-      const Eigen::Vector2d I = plane_stress_invariants(C2);
-      return condense_invariants(C2, material.invariant_derivatives(I(0), I(1)), with_hessian);
+      const PlaneStressInvariants I = plane_stress_invariants(C2);
+      return condense_invariants(C2, I, material.invariant_derivatives(I.I1, I.I2), with_hessian);
     }
     const Mat3d F = plane_stress_deformation(C2, frame);
     return condense_plane_stress(C2, frame, F, evaluate_at_point(material, q, F), with_hessian);
