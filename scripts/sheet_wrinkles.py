@@ -283,11 +283,13 @@ def summary(results):
         lambdas, ratios = [], []
         for e in SUMMARY_STRAINS:
             value = wavelength_at(wrinkled, e)
-            value = "" if value is None else value
-            lambdas.append(f"{value:.4f}" if value != "" else "")
-            ratios.append(f"{value / cerda_mahadevan(e, length, t):.4f}" if value != "" else "")
-            if value != "":
-                by_strain[e].append((t, value))
+            if value is None:
+                lambdas.append("")
+                ratios.append("")
+                continue
+            lambdas.append(f"{value:.4f}")
+            ratios.append(f"{value / cerda_mahadevan(e, length, t):.4f}")
+            by_strain[e].append((t, value))
         print(f"{os.path.basename(run.rstrip('/'))},{t:g},{onset[0]},{onset[1]},{vanish[0]},"
               f"{vanish[1]},{peak:.3f}," + ",".join(lambdas) + "," + ",".join(ratios))
     for e, pts in by_strain.items():
