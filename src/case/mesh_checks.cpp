@@ -125,8 +125,6 @@ void check_element_family(const Case& c, const Mesh& mesh) {
   refuse_material(c.material);
   for (const Region& r : c.regions)
     if (r.material) refuse_material(*r.material);
-  if (c.solver.viscosity > 0.0)
-    refuse(InputPlace{c.path, 0, 0, "solver.viscosity"}, "`solver.viscosity`");
 }
 
 /// Every region names its elements the way its mesh holds them (a solid's by a volume tag or a

@@ -18,6 +18,16 @@ std::size_t state_index(std::size_t j) {
 }  // namespace
 
 double mean_edge_length(const Mesh& mesh) {
+  if (mesh.is_shell()) {
+    PLISSE_CHECK(!mesh.triangles.empty(), "mean edge length: the shell has no triangles");
+    double sum = 0.0;
+    for (const auto& tri : mesh.triangles)
+      for (std::size_t a = 0; a < 3; ++a)
+        sum += (mesh.nodes[static_cast<std::size_t>(tri[a])] -
+                mesh.nodes[static_cast<std::size_t>(tri[(a + 1) % 3])])
+                   .norm();
+    return sum / (3.0 * static_cast<double>(mesh.triangles.size()));
+  }
   PLISSE_CHECK(!mesh.tets.empty(), "mean edge length: the mesh has no tetrahedra");
   double sum = 0.0;
   for (const auto& tet : mesh.tets)
@@ -31,9 +41,22 @@ double mean_edge_length(const Mesh& mesh) {
 namespace {
 
 /// Calls add(node, V) with the lumped volume V [mm^3] of every node of every tetrahedron
-/// (viscous.md, Z1 and Z5), element by element.
+/// (viscous.md, Z1 and Z5), or of every shell triangle (Z6), element by element.
 template <class Add>
 void for_each_lumped_volume(const Mesh& mesh, Add&& add) {
+  if (mesh.is_shell()) {
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      const auto& tri = mesh.triangles[t];
+      const Vec3d& a = mesh.nodes[static_cast<std::size_t>(tri[0])];
+      const double third = 0.5 *
+                           (mesh.nodes[static_cast<std::size_t>(tri[1])] - a)
+                               .cross(mesh.nodes[static_cast<std::size_t>(tri[2])] - a)
+                               .norm() *
+                           mesh.triangle_thickness[t] / 3.0;  // A_T t_T / 3 (Z6)
+      for (int v : tri) add(v, third);
+    }
+    return;
+  }
   if (mesh.order() == 1) {
     for (const auto& tet : mesh.tets) {
       const double quarter = six_signed_volume(mesh.nodes[static_cast<std::size_t>(tet[0])],

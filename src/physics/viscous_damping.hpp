@@ -7,12 +7,12 @@
 ///   dF_i / du_i = c_i / Δt I (diagonal, symmetric positive)                                (Z2)
 ///   D^{n+1} = D^n + Σ_i F_i · (u_i - u_i^n)   at the converged state of the step             (Z3)
 /// η [MPa s] is `solver.viscosity`, ℓ [mm] a length (wall thickness), V_i [mm³] the lumped
-/// reference volume of node i (Σ_e V_e / 4 on linear tetrahedra, Z5 on 10-node ones), u^n and
-/// t^n the last accepted state.
-/// F = 0 when Δt <= 0, and on constrained components (fixed, prescribed, symmetry): their residual
-/// rows are not equations, so a force there would not act but would count in D. The force is
-/// not part of the physics: the user checks that the dissipated
-/// energy D stays small against the strain energy (history column `dissipated_energy`).
+/// reference volume of node i (Σ_e V_e / 4 on linear tetrahedra, Z5 on 10-node ones, Σ_T A_T t_T /
+/// 3 on a shell's triangles, Z6), u^n and t^n the last accepted state. F = 0 when Δt <= 0, and on
+/// constrained components (fixed, prescribed, symmetry): their residual rows are not equations, so
+/// a force there would not act but would count in D. The force is not part of the physics: the user
+/// checks that the dissipated energy D stays small against the strain energy (history column
+/// `dissipated_energy`).
 #include <string>
 #include <vector>
 
@@ -23,7 +23,8 @@
 namespace plisse {
 
 /// Mean length of the tetrahedron edges of `mesh` [mm] (each edge counted once per tetrahedron
-/// it belongs to). Throws plisse::Error for a mesh without tetrahedra.
+/// it belongs to), or of a shell's triangle edges (once per triangle). Throws plisse::Error for a
+/// mesh without tetrahedra, or a shell without triangles.
 double mean_edge_length(const Mesh& mesh);
 
 class ViscousDamping : public ModelTerm {
@@ -57,7 +58,8 @@ class ViscousDamping : public ModelTerm {
   /// c_i = η V_i / ℓ² [N s / mm] of one component (0 when it is constrained). V_i is the lumped
   /// volume of node i: Σ_e V_e / 4 over its linear tetrahedra; for 10-node tetrahedra the
   /// diagonally scaled lumping V_e ∫ N_i² dV / Σ_b ∫ N_b² dV (Z5: V_e / 36 per corner and
-  /// 4 V_e / 27 per edge node of a straight one), which stays positive.
+  /// 4 V_e / 27 per edge node of a straight one), which stays positive; on a shell, a third of
+  /// each triangle's area times its thickness (Z6).
   double damping_coefficient(int node, int component) const {
     return coefficient_[3 * static_cast<std::size_t>(node) + static_cast<std::size_t>(component)];
   }

@@ -1,7 +1,8 @@
 // Viscous stabilisation (physics/viscous_damping.hpp, docs/theory/viscous.md): the tangent is the
 // derivative of the residual, the force and the dissipated energy of a prescribed motion match
 // their closed forms, nothing acts without a time increment, checkpoints restore the state, and
-// the model builder creates the term with the wall thickness as length.
+// the model builder creates the term with the wall thickness as length; on a shell's mid-surface
+// the same, with the wall's volume lumped by triangles (Z6).
 #include "physics/viscous_damping.hpp"
 
 #include <gtest/gtest.h>
@@ -9,6 +10,8 @@
 #include <cmath>
 
 #include "app/model_builder.hpp"
+#include "app/wrinkling.hpp"
+#include "case/case.hpp"
 #include "core/error.hpp"
 #include "mesh/generate.hpp"
 #include "support/term_testing.hpp"
@@ -246,6 +249,90 @@ TEST(ModelBuilder, CreatesViscousDampingWithTheWallThicknessWhenViscosityIsPosit
   double sum = 0.0;
   for (int i = 0; i < mesh.n_nodes(); ++i) sum += term->damping_coefficient(i, 1);
   EXPECT_NEAR(sum, kEta * kBoxVolume / (1.0 * 1.0), 1e-13);  // ℓ = thickness = 1 mm
+}
+
+// A shell's mid-surface (viscous.md, Z6): the sheet of 3 x 2 mm, 0.1 mm thick, in triangles of
+// 0.5 mm. Every corner takes a third of its triangles' area times their thickness: the
+// coefficients are positive and sum to η A t / ℓ²; the damping force of a uniform increment is
+// then η A t / ℓ² v in total, and the tangent is the derivative of the residual on the shell's
+// state as well.
+Mesh shell_sheet() {
+  MeshGenerationSpec spec;
+  spec.kind = "sheet";
+  spec.length = 3.0;
+  spec.width = 2.0;
+  spec.thickness = 0.1;
+  spec.element_size = 0.5;
+  return generate_shell_surface(spec);
+}
+constexpr double kShellVolume = 3.0 * 2.0 * 0.1;  // [mm^3]
+
+TEST(ViscousDamping, OnAShellTheCornersShareTheWallsVolumeByThirds) {
+  const Mesh mesh = shell_sheet();
+  ASSERT_TRUE(mesh.is_shell());
+  const ViscousDamping term(mesh, kEta, kLength);
+  double sum = 0.0;
+  for (int i = 0; i < mesh.n_nodes(); ++i) {
+    EXPECT_GT(term.damping_coefficient(i, 0), 0.0) << "node " << i;
+    sum += term.damping_coefficient(i, 2);
+  }
+  EXPECT_NEAR(sum, kEta * kShellVolume / (kLength * kLength), 1e-13);
+
+  ViscousDamping moving(mesh, kEta, kLength);
+  const double dt = 0.25;
+  const Vec3d w(0.0, 0.0, 0.02);  // a uniform increment normal to the sheet
+  const auto x = uniform_state(mesh, w);
+  std::vector<double> residual(x.size(), 0.0);
+  moving.assemble(dt, x, residual, nullptr);
+  double force = 0.0;
+  for (int i = 0; i < mesh.n_nodes(); ++i)
+    force += residual[static_cast<std::size_t>(node_dof(i, 2))];
+  EXPECT_NEAR(force, kEta * kShellVolume / (kLength * kLength) * w.z() / dt, 1e-13);
+
+  // The tangent against central differences, after a first accepted step (u^n != 0).
+  const int n = kValuesPerNode * mesh.n_nodes();
+  term_residual(moving, 0.1, random_state(n, 3, 0.01));
+  moving.accept_step(random_state(n, 3, 0.01));
+  const auto state = random_state(n, 4, 0.02);
+  DenseSink sink(n);
+  std::vector<double> r(n, 0.0);
+  moving.assemble(0.35, state, r, &sink);
+  const double scale = sink.K.cwiseAbs().maxCoeff();
+  EXPECT_GT(scale, 0.0);
+  // The residual is linear in x: only rounding remains.
+  EXPECT_LT(test::max_tangent_error(moving, 0.35, state, sink.K, 1e-6), 1e-8 * scale);
+}
+
+TEST(ViscousDamping, MeanEdgeLengthOfAShellIsItsTrianglesOwn) {
+  // The generated sheet cuts each square cell of 0.5 mm into two right triangles: per triangle two
+  // sides of 0.5 mm and a diagonal of 0.5 √2.
+  EXPECT_NEAR(mean_edge_length(shell_sheet()), 0.5 * (2.0 + std::sqrt(2.0)) / 3.0, 1e-14);
+}
+
+// `solver.viscosity` on a shell case: the model builder adds the term with the wall thickness as ℓ,
+// and the clamped edge's nodes get none.
+TEST(ModelBuilder, CreatesViscousDampingOnAShellWithItsThickness) {
+  const Case c = parse_case_string(
+      "element: shell\n"
+      "mesh: {generate: sheet, length: 3.0, width: 2.0, thickness: 0.1, element_size: 0.5}\n"
+      "material: {model: neo-hookean, c1: 0.2}\n"
+      "boundary:\n  - {type: clamped, surface: left}\n"
+      "solver: {viscosity: 0.3}\n",
+      "c.yaml");
+  const Mesh mesh = app::load_perturbed_mesh(c);
+  ASSERT_TRUE(mesh.is_shell());
+  EXPECT_TRUE(app::unsupported_features(c, mesh).empty());
+  const auto terms = std::move(app::build_model_parts(c, mesh).terms);
+  ASSERT_EQ(terms.size(), 1u);
+  const auto* term = dynamic_cast<const ViscousDamping*>(terms[0].get());
+  ASSERT_NE(term, nullptr);
+  // ℓ = the thickness, 0.1 mm; the clamped edge x = 0 gets no damping.
+  const ViscousDamping free(mesh, kEta, 0.1);
+  for (int i = 0; i < mesh.n_nodes(); ++i)
+    EXPECT_EQ(term->damping_coefficient(i, 0), mesh.nodes[static_cast<std::size_t>(i)].x() > 0.0
+                                                   ? free.damping_coefficient(i, 0)
+                                                   : 0.0)
+        << "node " << i;
 }
 
 }  // namespace
