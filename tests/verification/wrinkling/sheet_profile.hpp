@@ -7,12 +7,21 @@
 /// (alternating extrema of at least 10 % of the amplitude; none on a profile no higher than
 /// `flat`); and the wavelength, twice the mean spacing of the zero crossings between consecutive
 /// crests.
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "core/types.hpp"
+#include "mesh/mesh.hpp"
+#include "output/pvd_writer.hpp"
+#include "output/run_directory.hpp"
+#include "output/vtu_reader.hpp"
 
 namespace plisse::test {
 
@@ -83,6 +92,55 @@ inline SheetProfile measure_sheet(const std::vector<Vec3d>& reference,
   if (zeros.size() >= 2)
     p.wavelength = 2.0 * (zeros.back() - zeros.front()) / static_cast<double>(zeros.size() - 1);
   return p;
+}
+
+/// The profile of every written step of the run in `dir` (its solution.pvd) but step 0, the sheet
+/// before the first step; `mesh` is the run's own (generated again by the caller), `flat` as for
+/// measure_sheet. A step file whose displacement does not fit the mesh fails the test and ends the
+/// list there.
+inline std::vector<SheetProfile> measure_sheet_run(const std::filesystem::path& dir,
+                                                   const Mesh& mesh, double flat = 0.0) {
+  std::vector<SheetProfile> steps;
+  for (const PvdEntry& entry : read_pvd(dir / "solution.pvd")) {
+    if (entry.file == RunDirectory::step_file_name(0)) continue;
+    const VtuField u = read_vtu_point_field(dir / entry.file, "displacement");
+    EXPECT_EQ(u.values.size(), 3u * static_cast<std::size_t>(mesh.n_nodes())) << entry.file;
+    if (u.values.size() != 3u * static_cast<std::size_t>(mesh.n_nodes())) break;
+    std::vector<Vec3d> displacement(static_cast<std::size_t>(mesh.n_nodes()));
+    for (std::size_t i = 0; i < displacement.size(); ++i)
+      displacement[i] = Vec3d(u.values[3 * i], u.values[3 * i + 1], u.values[3 * i + 2]);
+    steps.push_back(measure_sheet(mesh.nodes, displacement, flat));
+  }
+  return steps;
+}
+
+/// The time of the first step the run's log reports a new instability at ("step 7: t =
+/// 0.0167562: new instability, ..."), 0 when there is none.
+inline double first_instability_time(const std::string& log_path) {
+  std::ifstream log(log_path);
+  for (std::string line; std::getline(log, line);) {
+    const auto t = line.find(": t = ");
+    if (line.find("new instability") != std::string::npos && t != std::string::npos)
+      return std::stod(line.substr(t + 6));
+  }
+  return 0.0;
+}
+
+/// The least-squares line through the points (log x, log y): the exponent of a power law y ~ x^a
+/// and the means of the logarithms. Precondition: at least two distinct x.
+struct PowerLaw {
+  double exponent = 0.0;
+  double mean_log_x = 0.0, mean_log_y = 0.0;
+};
+
+inline PowerLaw fit_power_law(const std::vector<std::pair<double, double>>& points) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (const auto& [x, y] : points) {
+    const double lx = std::log(x), ly = std::log(y);
+    sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly;
+  }
+  const double n = static_cast<double>(points.size());
+  return {(n * sxy - sx * sy) / (n * sxx - sx * sx), sx / n, sy / n};
 }
 
 }  // namespace plisse::test

@@ -21,17 +21,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include "mesh/generate.hpp"
-#include "output/pvd_writer.hpp"
-#include "output/run_directory.hpp"
-#include "output/vtu_reader.hpp"
 #include "support/run_plisse.hpp"
 #include "verification/wrinkling/sheet_profile.hpp"
 
@@ -94,26 +89,10 @@ TEST(TensionWrinklingShellRegression, ShellSheetWrinklesAtTheSolidsOnsetWithTheS
   spec.width = 10.0;
   spec.thickness = kThickness;
   spec.element_size = 0.5;
-  const Mesh mesh = generate_shell_surface(spec);
-  std::vector<test::SheetProfile> steps;
-  for (const PvdEntry& entry : read_pvd(dir / "solution.pvd")) {
-    if (entry.file == RunDirectory::step_file_name(0)) continue;  // before the first step
-    const VtuField u = read_vtu_point_field(dir / entry.file, "displacement");
-    ASSERT_EQ(u.values.size(), 3u * mesh.n_nodes());
-    std::vector<Vec3d> displacement(mesh.n_nodes());
-    for (int i = 0; i < mesh.n_nodes(); ++i)
-      displacement[i] = Vec3d(u.values[3 * i], u.values[3 * i + 1], u.values[3 * i + 2]);
-    steps.push_back(test::measure_sheet(mesh.nodes, displacement, 1e-4 * kThickness));
-  }
-  // "step 12: t = 0.292...: new instability, ..." in the log: the strain is kFinalStrain t.
-  double onset = 0.0;
-  std::ifstream log(dir.string() + ".log");
-  for (std::string line; std::getline(log, line);) {
-    const auto at = line.find("new instability");
-    const auto t = line.find(": t = ");
-    if (at != std::string::npos && t != std::string::npos && onset == 0.0)
-      onset = kFinalStrain * std::stod(line.substr(t + 6));
-  }
+  const std::vector<test::SheetProfile> steps =
+      test::measure_sheet_run(dir, generate_shell_surface(spec), 1e-4 * kThickness);
+  // The log's "new instability" step: the strain is kFinalStrain t.
+  const double onset = kFinalStrain * test::first_instability_time(dir.string() + ".log");
   ASSERT_GE(steps.size(), 20u);
   for (const auto& s : steps)
     std::cout << "strain " << s.strain << " amplitude/t " << s.amplitude / kThickness << " crests "

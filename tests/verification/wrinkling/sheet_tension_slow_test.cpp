@@ -32,17 +32,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mesh/generate.hpp"
-#include "output/pvd_writer.hpp"
-#include "output/run_directory.hpp"
-#include "output/vtu_reader.hpp"
 #include "support/run_plisse.hpp"
 #include "support/validation_claim.hpp"
 #include "verification/wrinkling/sheet_profile.hpp"
@@ -96,23 +92,9 @@ SheetRun run_sheet() {
   spec.layers = 1;
   spec.element_size = kSize;
   spec.order = 2;
-  const Mesh mesh = generate_mesh(spec);
-  for (const PvdEntry& entry : read_pvd(dir / "solution.pvd")) {
-    if (entry.file == RunDirectory::step_file_name(0)) continue;  // before the first step
-    const VtuField u = read_vtu_point_field(dir / entry.file, "displacement");
-    std::vector<Vec3d> displacement(mesh.n_nodes());
-    for (int i = 0; i < mesh.n_nodes(); ++i)
-      displacement[i] = Vec3d(u.values[3 * i], u.values[3 * i + 1], u.values[3 * i + 2]);
-    run.steps.push_back(test::measure_sheet(mesh.nodes, displacement));
-  }
-  // "step 4: t = 0.0666667: new instability, ..." in the log: the strain is kFinalStrain t.
-  std::ifstream log(dir.string() + ".log");
-  for (std::string line; std::getline(log, line);) {
-    const auto at = line.find("new instability");
-    const auto t = line.find(": t = ");
-    if (at != std::string::npos && t != std::string::npos && run.onset_strain == 0.0)
-      run.onset_strain = kFinalStrain * std::stod(line.substr(t + 6));
-  }
+  run.steps = test::measure_sheet_run(dir, generate_mesh(spec));
+  // The log's "new instability" step: the strain is kFinalStrain t.
+  run.onset_strain = kFinalStrain * test::first_instability_time(dir.string() + ".log");
   return run;
 }
 
@@ -179,20 +161,13 @@ TEST(TensionWrinklingSlow, StretchedSheetWrinklesWithTheCerdaMahadevanWavelength
   const auto far_from_onset = [&](const test::SheetProfile& s) {
     return wrinkled(s) && s.amplitude >= kThickness && s.strain >= 1.5 * run.onset_strain;
   };
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  int n = 0;
-  for (const auto& s : run.steps) {
-    if (!far_from_onset(s)) continue;
-    const double x = std::log(s.strain), y = std::log(s.wavelength);
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-    ++n;
-  }
-  ASSERT_GE(n, 15) << "fewer than 15 wrinkled steps";
-  const double mean_ratio = std::exp((sy + 0.25 * sx) / n) /
-                            cerda_mahadevan(1.0);  // geometric mean of lambda eps^(1/4) / CM's
+  std::vector<std::pair<double, double>> points;
+  for (const auto& s : run.steps)
+    if (far_from_onset(s)) points.emplace_back(s.strain, s.wavelength);
+  ASSERT_GE(points.size(), 15u) << "fewer than 15 wrinkled steps";
+  const test::PowerLaw fit = test::fit_power_law(points);
+  // The geometric mean of lambda eps^(1/4), over Cerda & Mahadevan's.
+  const double mean_ratio = std::exp(fit.mean_log_y + 0.25 * fit.mean_log_x) / cerda_mahadevan(1.0);
   std::cout << "mean ratio to Cerda & Mahadevan: " << mean_ratio << "\n";
   test::expect_claim({.row = "sheet-tension/wavelength",
                       .subject = kSubject,
@@ -213,8 +188,9 @@ TEST(TensionWrinklingSlow, StretchedSheetWrinklesWithTheCerdaMahadevanWavelength
     if (!far_from_onset(s)) continue;
     EXPECT_NEAR(s.wavelength / cerda_mahadevan(s.strain), mean_ratio, 0.04) << s.strain;
   }
-  const double exponent = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-  std::cout << "fitted exponent of the strain: " << exponent << " over " << n << " steps\n";
+  const double exponent = fit.exponent;
+  std::cout << "fitted exponent of the strain: " << exponent << " over " << points.size()
+            << " steps\n";
   test::expect_claim({.row = "sheet-tension/wavelength-exponent",
                       .subject = kSubject,
                       .quantity = "exponent of ε in the wavelength, fitted over the same steps",
