@@ -6,6 +6,8 @@
 #include "core/error.hpp"
 #include "element/taylor_hood_geometry.hpp"
 #include "mesh/topology.hpp"
+#include "physics/body_force.hpp"
+#include "physics/die_surface.hpp"
 
 namespace plisse {
 namespace {
@@ -18,16 +20,7 @@ std::size_t state_index(std::size_t j) {
 }  // namespace
 
 double mean_edge_length(const Mesh& mesh) {
-  if (mesh.is_shell()) {
-    PLISSE_CHECK(!mesh.triangles.empty(), "mean edge length: the shell has no triangles");
-    double sum = 0.0;
-    for (const auto& tri : mesh.triangles)
-      for (std::size_t a = 0; a < 3; ++a)
-        sum += (mesh.nodes[static_cast<std::size_t>(tri[a])] -
-                mesh.nodes[static_cast<std::size_t>(tri[(a + 1) % 3])])
-                   .norm();
-    return sum / (3.0 * static_cast<double>(mesh.triangles.size()));
-  }
+  if (mesh.is_shell()) return mean_edge_length(mesh, mesh.triangles);  // its triangles'
   PLISSE_CHECK(!mesh.tets.empty(), "mean edge length: the mesh has no tetrahedra");
   double sum = 0.0;
   for (const auto& tet : mesh.tets)
@@ -41,20 +34,14 @@ double mean_edge_length(const Mesh& mesh) {
 namespace {
 
 /// Calls add(node, V) with the lumped volume V [mm^3] of every node of every tetrahedron
-/// (viscous.md, Z1 and Z5), or of every shell triangle (Z6), element by element.
+/// (viscous.md, Z1 and Z5), element by element, or of every node of a shell (Z6).
 template <class Add>
 void for_each_lumped_volume(const Mesh& mesh, Add&& add) {
   if (mesh.is_shell()) {
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-      const auto& tri = mesh.triangles[t];
-      const Vec3d& a = mesh.nodes[static_cast<std::size_t>(tri[0])];
-      const double third = 0.5 *
-                           (mesh.nodes[static_cast<std::size_t>(tri[1])] - a)
-                               .cross(mesh.nodes[static_cast<std::size_t>(tri[2])] - a)
-                               .norm() *
-                           mesh.triangle_thickness[t] / 3.0;  // A_T t_T / 3 (Z6)
-      for (int v : tri) add(v, third);
-    }
+    // A_T t_T / 3 per corner (Z6): a shell's consistent nodal volumes, the weights of its body
+    // forces too (loads.md, L6s).
+    const std::vector<double> volume = consistent_nodal_volumes(mesh);
+    for (std::size_t v = 0; v < volume.size(); ++v) add(static_cast<int>(v), volume[v]);
     return;
   }
   if (mesh.order() == 1) {

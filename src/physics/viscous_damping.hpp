@@ -23,8 +23,9 @@
 namespace plisse {
 
 /// Mean length of the tetrahedron edges of `mesh` [mm] (each edge counted once per tetrahedron
-/// it belongs to), or of a shell's triangle edges (once per triangle). Throws plisse::Error for a
-/// mesh without tetrahedra, or a shell without triangles.
+/// it belongs to), or of a shell's triangle edges (once per triangle, die_surface.hpp's
+/// mean_edge_length). Throws plisse::Error for a mesh without tetrahedra, or a shell without
+/// triangles.
 double mean_edge_length(const Mesh& mesh);
 
 class ViscousDamping : public ModelTerm {
