@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
@@ -124,6 +125,15 @@ inline double first_instability_time(const std::string& log_path) {
       return std::stod(line.substr(t + 6));
   }
   return 0.0;
+}
+
+/// Cerda & Mahadevan's wavelength (2003, Phys. Rev. Lett. 90, 074302) of a sheet of length
+/// `length` and thickness `thickness` [mm] at the nominal strain `strain`, for nu = 1/2:
+/// lambda = (2 pi L t)^(1/2) / (3 (1 - nu^2) eps)^(1/4) [mm].
+inline double cerda_mahadevan(double strain, double length, double thickness) {
+  const double nu = 0.5;
+  return std::sqrt(2.0 * std::numbers::pi * length * thickness) /
+         std::pow(3.0 * (1.0 - nu * nu) * strain, 0.25);
 }
 
 /// The least-squares line through the points (log x, log y): the exponent of a power law y ~ x^a

@@ -39,12 +39,6 @@ constexpr double kOnsetLow = 0.025, kOnsetHigh = 0.04;
 // The study's converged shell wavelength at 10 %, 3.30 mm (0.25 and 0.125 mm), within 3 %.
 constexpr double kWavelengthLow = 0.97 * 3.298, kWavelengthHigh = 1.03 * 3.302;
 
-double cerda_mahadevan(double strain) {
-  const double nu = 0.5;
-  return std::sqrt(2.0 * std::numbers::pi * kLength * kThickness) /
-         std::pow(3.0 * (1.0 - nu * nu) * strain, 0.25);
-}
-
 // The measure on a shell's mesh, all of whose nodes lie in the mid-surface z = t/2: the synthetic
 // pattern of sheet_tension_slow_test.cpp, w = A cos(2 pi y / lambda) exp(-(y / 5.5)^2) on the
 // middle line, gives the same 11 crests and wavelength from the mid-surface nodes; the same
@@ -97,7 +91,10 @@ TEST(TensionWrinklingShellRegression, ShellSheetWrinklesAtTheSolidsOnsetWithTheS
   for (const auto& s : steps)
     std::cout << "strain " << s.strain << " amplitude/t " << s.amplitude / kThickness << " crests "
               << s.crests << " wavelength " << s.wavelength << " / CM "
-              << (s.wavelength > 0 ? s.wavelength / cerda_mahadevan(s.strain) : 0.0) << "\n";
+              << (s.wavelength > 0
+                      ? s.wavelength / test::cerda_mahadevan(s.strain, kLength, kThickness)
+                      : 0.0)
+              << "\n";
 
   std::cout << "the check finds the instability at the step of strain " << onset << "\n";
   EXPECT_GT(onset, kOnsetLow) << "the stability check found no bifurcation, or too early";

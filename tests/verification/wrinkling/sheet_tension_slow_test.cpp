@@ -59,12 +59,6 @@ constexpr const char* kMesh = test::kFullTier ? "h = 0.25 mm = 12.5 t, 1 TH laye
                                               : "h = 0.5 mm = 25 t, 1 TH layer, steps of 1 %";
 constexpr const char* kCerdaMahadevan = "Cerda & Mahadevan 2003, λ = (2πLt)^½ / (3(1−ν²)ε)^¼";
 
-double cerda_mahadevan(double strain) {
-  const double nu = 0.5;
-  return std::sqrt(2.0 * std::numbers::pi * kLength * kThickness) /
-         std::pow(3.0 * (1.0 - nu * nu) * strain, 0.25);
-}
-
 struct SheetRun {
   std::vector<test::SheetProfile> steps;
   double onset_strain = 0.0;  ///< strain of the step where the check found the instability
@@ -132,7 +126,10 @@ TEST(TensionWrinklingSlow, StretchedSheetWrinklesWithTheCerdaMahadevanWavelength
   for (const auto& s : run.steps)
     std::cout << "strain " << s.strain << " amplitude/t " << s.amplitude / kThickness << " crests "
               << s.crests << " wavelength " << s.wavelength << " / CM "
-              << (s.wavelength > 0 ? s.wavelength / cerda_mahadevan(s.strain) : 0.0) << "\n";
+              << (s.wavelength > 0
+                      ? s.wavelength / test::cerda_mahadevan(s.strain, kLength, kThickness)
+                      : 0.0)
+              << "\n";
   const auto wrinkled = [](const test::SheetProfile& s) { return s.crests >= 5; };
 
   // Onset: the converged bracket of the study, widened by the 1 % steps of this run.
@@ -167,7 +164,8 @@ TEST(TensionWrinklingSlow, StretchedSheetWrinklesWithTheCerdaMahadevanWavelength
   ASSERT_GE(points.size(), 15u) << "fewer than 15 wrinkled steps";
   const test::PowerLaw fit = test::fit_power_law(points);
   // The geometric mean of lambda eps^(1/4), over Cerda & Mahadevan's.
-  const double mean_ratio = std::exp(fit.mean_log_y + 0.25 * fit.mean_log_x) / cerda_mahadevan(1.0);
+  const double mean_ratio = std::exp(fit.mean_log_y + 0.25 * fit.mean_log_x) /
+                            test::cerda_mahadevan(1.0, kLength, kThickness);
   std::cout << "mean ratio to Cerda & Mahadevan: " << mean_ratio << "\n";
   test::expect_claim({.row = "sheet-tension/wavelength",
                       .subject = kSubject,
@@ -186,7 +184,9 @@ TEST(TensionWrinklingSlow, StretchedSheetWrinklesWithTheCerdaMahadevanWavelength
                                  : "this mesh's number ± 1 %; the law is a scaling estimate"});
   for (const auto& s : run.steps) {
     if (!far_from_onset(s)) continue;
-    EXPECT_NEAR(s.wavelength / cerda_mahadevan(s.strain), mean_ratio, 0.04) << s.strain;
+    EXPECT_NEAR(s.wavelength / test::cerda_mahadevan(s.strain, kLength, kThickness), mean_ratio,
+                0.04)
+        << s.strain;
   }
   const double exponent = fit.exponent;
   std::cout << "fitted exponent of the strain: " << exponent << " over " << points.size()

@@ -26,7 +26,6 @@
 #include <cmath>
 #include <future>
 #include <iostream>
-#include <numbers>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -53,12 +52,6 @@ constexpr std::array<double, 3> kMeanRatio = test::kFullTier
                                                  ? std::array<double, 3>{0.916, 0.911, 0.906}
                                                  : std::array<double, 3>{0.913, 0.902, 0.910};
 constexpr const char* kCerdaMahadevan = "Cerda & Mahadevan 2003, λ = (2πLt)^½ / (3(1−ν²)ε)^¼";
-
-double cerda_mahadevan(double strain, double thickness) {
-  const double nu = 0.5;
-  return std::sqrt(2.0 * std::numbers::pi * kLength * thickness) /
-         std::pow(3.0 * (1.0 - nu * nu) * strain, 0.25);
-}
 
 std::string subject(double thickness) {
   std::ostringstream s;
@@ -133,7 +126,9 @@ LawFit fit_the_law(const SheetRun& run) {
   for (const auto& s : run.steps)
     std::cout << "  strain " << s.strain << " amplitude/t " << s.amplitude / t << " crests "
               << s.crests << " wavelength " << s.wavelength << " / CM "
-              << (s.wavelength > 0 ? s.wavelength / cerda_mahadevan(s.strain, t) : 0.0) << "\n";
+              << (s.wavelength > 0 ? s.wavelength / test::cerda_mahadevan(s.strain, kLength, t)
+                                   : 0.0)
+              << "\n";
   for (const auto& s : run.steps) {  // flat before the check finds the bifurcation
     if (s.strain >= run.onset_strain * (1.0 - 1e-5)) break;  // the log's t has 6 digits
     EXPECT_EQ(s.crests, 0) << "W/t " << kWidth / t << ", strain " << s.strain;
@@ -147,7 +142,7 @@ LawFit fit_the_law(const SheetRun& run) {
   const test::PowerLaw fit = test::fit_power_law(points);
   LawFit law;
   law.prefactor = std::exp(fit.mean_log_y + 0.25 * fit.mean_log_x);
-  law.mean_ratio = law.prefactor / cerda_mahadevan(1.0, t);
+  law.mean_ratio = law.prefactor / test::cerda_mahadevan(1.0, kLength, t);
   law.exponent = fit.exponent;
   std::cout << "  mean ratio to Cerda & Mahadevan " << law.mean_ratio << ", exponent of the strain "
             << law.exponent << " over " << points.size() << " steps\n";
