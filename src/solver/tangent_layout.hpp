@@ -99,12 +99,25 @@ void TangentLayout::add_element(int e, const std::array<int, kDof>& equations,
                                 PetscScalar* values) const {
   const int first = distribution_.first_equation();
   const int* shift = element_shift_.data() + static_cast<std::size_t>(e) * width_ * width_;
+  // The free columns, and where each lands in a row of the current row node: the unknowns of a
+  // node are consecutive in i (Element::kLocalNode), so the positions are found once per node
+  // instead of once per entry.
+  std::array<int, kDof> column{};
+  std::array<int, kDof> position{};
+  std::size_t n_free = 0;
+  for (std::size_t j = 0; j < kDof; ++j)
+    if (equations[j] >= 0) column[n_free++] = static_cast<int>(j);
+  int row_node = -1;
   for (std::size_t i = 0; i < kDof; ++i) {
     if (!distribution_.owns_equation(equations[i])) continue;
+    if (local_node[i] != row_node) {
+      row_node = local_node[i];
+      const int* row_shift = shift + width_ * row_node;
+      for (std::size_t k = 0; k < n_free; ++k)
+        position[k] = row_shift[local_node[column[k]]] + equations[column[k]];
+    }
     PetscScalar* row = values + row_start_[equations[i] - first];
-    const int* row_shift = shift + width_ * local_node[i];
-    for (std::size_t j = 0; j < kDof; ++j)
-      if (equations[j] >= 0) row[row_shift[local_node[j]] + equations[j]] += K(i, j);
+    for (std::size_t k = 0; k < n_free; ++k) row[position[k]] += K(i, column[k]);
   }
 }
 

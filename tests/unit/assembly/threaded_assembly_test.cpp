@@ -5,9 +5,11 @@
 //  - the direct fill of a create_matrix() matrix through precomputed positions against
 //    MatSetValues into a matrix of another layout: same entries, same values (tolerance 0), and
 //    the layout of create_matrix holds every entry MatSetValues creates.
-// Models: the paper's indentation case (follower pressure, frictionless and sticking dies) and a
+// Models: the paper's indentation case (follower pressure, frictionless and sticking dies), a
 // volume-controlled balloon (a cavity with its global pressure unknown, whose row and column lie
-// outside the node blocks), both coarse, at a deterministic non-trivial state (random nodal
+// outside the node blocks), and the stretched sheet of shell triangles (12-node patches with
+// missing slots on the free edges, mirrored slots on the clamped and symmetry edges, constrained
+// columns inside a patch), all coarse, at a deterministic non-trivial state (random nodal
 // displacements of 2 % of the element size and random pressures) so that every term is active and
 // the bubbles need several local Newton iterations.
 #include <gtest/gtest.h>
@@ -35,11 +37,11 @@ struct TestModel {
   std::unique_ptr<MixedModel> model;
 };
 
-/// The case file `name` with `overrides`, at time t, nodal values perturbed with a fixed seed.
+/// The case file `name` (under the source tree) with `overrides`, at time t, nodal values perturbed with a fixed seed.
 std::unique_ptr<TestModel> make_model(const std::string& name, std::vector<std::string> overrides,
                                       double t, double displacement, double pressure) {
   auto m = std::make_unique<TestModel>();
-  m->c = parse_case_file(std::string(PLISSE_SOURCE_DIR) + "/examples/" + name, overrides);
+  m->c = parse_case_file(std::string(PLISSE_SOURCE_DIR) + "/" + name, overrides);
   m->mesh = load_case_mesh(m->c);
   app::ModelParts parts = app::build_model_parts(m->c, m->mesh);
   // Exact incompressibility, whatever the case says.
@@ -149,15 +151,22 @@ void expect_direct_fill_equals_mat_set_values(MixedModel& model) {
 // Indentation: pressure on `inner`, frictionless punch pressed 0.5 mm into the top at t = 0.26,
 // sticking floor; 3 layers, element size 4 mm.
 std::unique_ptr<TestModel> indentation() {
-  return make_model("sphere-indentation.yaml", {"mesh.element_size=4"}, 0.26, 0.08, 1e-4);
+  return make_model("examples/sphere-indentation.yaml", {"mesh.element_size=4"}, 0.26, 0.08, 1e-4);
 }
 
 // Balloon: volume-controlled cavity (global unknown p_c) on `inner`, octant, element size 4 mm.
 std::unique_ptr<TestModel> balloon() {
-  auto m = make_model("balloon-limit-point.yaml", {"mesh.element_size=4"}, 0.1, 0.08, 1e-2);
+  auto m = make_model("examples/balloon-limit-point.yaml", {"mesh.element_size=4"}, 0.1, 0.08, 1e-2);
   m->model->state().back() = 0.02;  // the cavity pressure p_c [MPa]
   m->model->save_converged();
   return m;
+}
+
+// Shell sheet: clamped ends pulled by 1.2 mm at t = 0.08, symmetry edges, free edges; element
+// size 1 mm, displacements of 2 % of it.
+std::unique_ptr<TestModel> shell_sheet() {
+  return make_model("validation/sheet-tension-wrinkling-shell.yaml", {"mesh.element_size=1"}, 0.08,
+                    0.02, 0.0);
 }
 
 TEST(ThreadedAssembly, IndentationSameBitsAtAnyThreadCount) {
@@ -172,6 +181,17 @@ TEST(ThreadedAssembly, BalloonSameBitsAtAnyThreadCount) {
 
 TEST(DirectTangentFill, IndentationEqualsMatSetValues) {
   auto m = indentation();
+  expect_direct_fill_equals_mat_set_values(*m->model);
+}
+
+TEST(ThreadedAssembly, ShellSheetSameBitsAtAnyThreadCount) {
+  auto m = shell_sheet();
+  expect_same_assembly_at_any_thread_count(*m->model);
+}
+
+TEST(DirectTangentFill, ShellSheetEqualsMatSetValues) {
+  auto m = shell_sheet();
+  ASSERT_LT(m->model->n_free(), 3 * m->mesh.n_nodes());  // the clamps' columns are constrained
   expect_direct_fill_equals_mat_set_values(*m->model);
 }
 
