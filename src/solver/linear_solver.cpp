@@ -74,6 +74,11 @@ void request_factor_workspace(int percent) {
     set_default_option(prefix, "mat_mumps_icntl_14", value.c_str());
 }
 
+void request_minimum_degree_ordering() {
+  for (const char* prefix : {"", "stability_", "arc_length_", "st_"})
+    set_default_option(prefix, "mat_mumps_icntl_7", "0");
+}
+
 std::string FactorMemory::message() const {
   char text[240];
   if (status == -19)

@@ -81,6 +81,15 @@ void configure_iterative(KSP ksp, IS u, IS p, const LinearSolverSettings& settin
 /// with INFO(1) = -9. Call before the solvers are set up; needs PETSc initialised.
 void request_factor_workspace(int percent);
 
+/// Asks MUMPS for its approximate minimum degree ordering (ICNTL(7) = 0) in the Newton,
+/// stability, arc-length and eigenmode factorisations, unless the user gave that option. On a
+/// shell's tangent (a patch couples nodes up to four edges apart) it needs fewer operations than
+/// PORD, the nested dissection MUMPS picks otherwise (Debian's MUMPS has neither METIS nor
+/// SCOTCH): 16 % fewer on the stretched sheet's 12k unknowns (factor_ordering_test.cpp,
+/// docs/performance.md "The ordering of a shell's factorisation"). Call before the solvers are
+/// set up; needs PETSc initialised.
+void request_minimum_degree_ordering();
+
 /// What a MUMPS factorisation that failed says about memory (MUMPS user's guide, INFOG(1)).
 struct FactorMemory {
   /// A work array or buffer smaller than the factorisation turned out to need (INFOG(1) = -8,
