@@ -105,7 +105,10 @@ ShellStatus assemble_shell(const ShellGeometry& g, const ShellSection& section, 
     status.min_J = psi.min_J;
     r.noalias() = g.area * D.transpose() * psi.gradient;
     if (K != nullptr) {
-      K->noalias() = g.area * D.transpose() * psi.hessian * D;
+      // 36 x 6 times 6 x 36: coefficient-wise, not the blocked GEMM, which packs its operands
+      // for an inner dimension of only 6.
+      const Eigen::Matrix<double, kPatchDofs, 6> DtH = g.area * D.transpose() * psi.hessian;
+      K->noalias() = DtH.lazyProduct(D);
       add_strain_hessians(g, k, g.area * psi.gradient, *K);
     }
   } catch (const InadmissibleDeformation&) {

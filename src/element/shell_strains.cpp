@@ -105,6 +105,11 @@ void add_strain_hessians(const ShellGeometry& g, const ShellKinematics& k, const
   }
   for (int n = 0; n < kPatchNodes; ++n) {
     for (int m = 0; m < kPatchNodes; ++m) {
+      if (n >= kTriangleNodes && m >= kTriangleNodes) {
+        // Only the membrane part, a multiple of I: the off-diagonal entries stay as they are.
+        for (int i = 0; i < 3; ++i) K(3 * n + i, 3 * m + i) += h(n, m);
+        continue;
+      }
       Mat3d block = h(n, m) * Mat3d::Identity();
       if (n < kTriangleNodes) block += kw(m) * k.d_normal[n].transpose();
       if (m < kTriangleNodes) block += kw(n) * k.d_normal[m];
