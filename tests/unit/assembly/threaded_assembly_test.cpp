@@ -37,7 +37,8 @@ struct TestModel {
   std::unique_ptr<MixedModel> model;
 };
 
-/// The case file `name` (under the source tree) with `overrides`, at time t, nodal values perturbed with a fixed seed.
+/// The case file `name` (under the source tree) with `overrides`, at time t, nodal values perturbed
+/// with a fixed seed.
 std::unique_ptr<TestModel> make_model(const std::string& name, std::vector<std::string> overrides,
                                       double t, double displacement, double pressure) {
   auto m = std::make_unique<TestModel>();
@@ -156,7 +157,8 @@ std::unique_ptr<TestModel> indentation() {
 
 // Balloon: volume-controlled cavity (global unknown p_c) on `inner`, octant, element size 4 mm.
 std::unique_ptr<TestModel> balloon() {
-  auto m = make_model("examples/balloon-limit-point.yaml", {"mesh.element_size=4"}, 0.1, 0.08, 1e-2);
+  auto m =
+      make_model("examples/balloon-limit-point.yaml", {"mesh.element_size=4"}, 0.1, 0.08, 1e-2);
   m->model->state().back() = 0.02;  // the cavity pressure p_c [MPa]
   m->model->save_converged();
   return m;
