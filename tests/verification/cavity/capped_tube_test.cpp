@@ -206,6 +206,10 @@ namespace {
 // tenth of the bending): a closed vessel at every step, the isothermal gas law (p + p_amb) V =
 // p_amb V0 m(t) with V0 the half prism's volume (20 sides on the half), and after the pump the
 // mid-length radius of the closed thin tube's membrane solution at the gas's pressure.
+// Steps of 0.01, so that one ends with the pump at t = 0.2: a first step of 0.02 from the
+// unpressurised tube stalls at |R| = 2.4e-8 of its first residual, just above the Newton's
+// tolerance, where whether the line search still finds a decrease (and so whether the step is
+// cut, which moves every later step off 0.2) turns on the round-off of the linear solve.
 TEST(CappedTube, AirBeamExampleHoldsItsAirAndInflatesAsTheClosedTube) {
   const auto dir = test::scratch_directory("air-beam-example");
   std::filesystem::create_directories(dir);
@@ -213,7 +217,7 @@ TEST(CappedTube, AirBeamExampleHoldsItsAirAndInflatesAsTheClosedTube) {
       test::run_plisse("run " + std::string(PLISSE_SOURCE_DIR) + "/examples/air-beam.yaml -o " +
                            (dir / "run").string() +
                            " --set mesh.element_size=8 --set solver.end_time=0.3 --set "
-                           "solver.steps=15 --set solver.max_step=0.0666666666666667",
+                           "solver.steps=30 --set solver.max_step=0.0333333333333333",
                        dir / "log.txt");
   ASSERT_EQ(status, 0) << "see " << (dir / "log.txt").string();
   const HistoryTable h = read_history(dir / "run" / "history.csv");
