@@ -96,8 +96,9 @@ struct RunSolver {
     // A rigid cap borders the tangent with one multiplier per tied component: MUMPS needs more
     // working space than it estimates (linear_solver.hpp, request_factor_workspace).
     if (!c.terms_in("caps").empty()) request_factor_workspace(100);
-    if (mesh.is_shell()) request_minimum_degree_ordering();
-    return make_model(mesh, std::move(parts));
+    std::unique_ptr<MixedModel> model = make_model(mesh, std::move(parts));
+    if (mesh.is_shell()) choose_factor_ordering(*model);
+    return model;
   }
   std::size_t n_constrained;  ///< constrained components of the model
   std::unique_ptr<MixedModel> model;

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "solver/mixed_model.hpp"
 #include "solver/petsc_call.hpp"
 
 namespace plisse {
@@ -74,9 +75,45 @@ void request_factor_workspace(int percent) {
     set_default_option(prefix, "mat_mumps_icntl_14", value.c_str());
 }
 
-void request_minimum_degree_ordering() {
+double estimated_factor_operations(Mat K, int ordering) {
+  // Only the analysis. MUMPS reads its controls from the options database when it analyses, so
+  // the ordering goes there, under a prefix of this probe's own, and is taken out again.
+  const char* const prefix = "plisse_ordering_probe_";
+  const std::string option = std::string("-") + prefix + "mat_mumps_icntl_7";
+  PLISSE_PETSC(PetscOptionsSetValue(nullptr, option.c_str(), std::to_string(ordering).c_str()));
+  Mat F = nullptr;
+  PetscReal operations = -1.0;
+  const PetscErrorCode code = [&]() -> PetscErrorCode {
+    PetscCall(MatGetFactor(K, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &F));
+    PetscCall(MatSetOptionsPrefix(F, prefix));
+    MatFactorInfo info;
+    PetscCall(MatFactorInfoInitialize(&info));
+    PetscCall(MatCholeskyFactorSymbolic(F, K, nullptr, &info));
+    PetscCall(MatMumpsGetRinfog(F, 1, &operations));
+    return 0;
+  }();
+  MatDestroy(&F);
+  PetscOptionsClearValue(nullptr, option.c_str());
+  PLISSE_PETSC(code);
+  return operations;
+}
+
+int choose_factor_ordering(MixedModel& model) {
+  Mat K = model.create_matrix();
+  const AssemblyStatus status = model.assemble_tangent(K);
+  int ordering = 7;  // MUMPS's own choice
+  if (status.ok) {
+    // The analysis reads the upper triangle as a symmetric matrix's, whatever the model's tangent.
+    PLISSE_PETSC(MatSetOption(K, MAT_SYMMETRIC, PETSC_TRUE));
+    const double minimum_degree = estimated_factor_operations(K, 0);
+    const double own = estimated_factor_operations(K, 7);
+    if (minimum_degree > 0.0 && minimum_degree < own) ordering = 0;
+  }
+  MatDestroy(&K);
+  const std::string value = std::to_string(ordering);
   for (const char* prefix : {"", "stability_", "arc_length_", "st_"})
-    set_default_option(prefix, "mat_mumps_icntl_7", "0");
+    set_default_option(prefix, "mat_mumps_icntl_7", value.c_str());
+  return ordering;
 }
 
 std::string FactorMemory::message() const {

@@ -32,6 +32,10 @@
 #include "solver/newton_settings.hpp"
 
 namespace plisse {
+class MixedModel;
+}  // namespace plisse
+
+namespace plisse {
 
 /// The two fields of the split, as index sets of equation numbers (PETSc's global row numbers).
 /// Owns its IS handles (destroyed with it); PCFieldSplitSetIS keeps its own reference, so the
@@ -81,14 +85,21 @@ void configure_iterative(KSP ksp, IS u, IS p, const LinearSolverSettings& settin
 /// with INFO(1) = -9. Call before the solvers are set up; needs PETSc initialised.
 void request_factor_workspace(int percent);
 
-/// Asks MUMPS for its approximate minimum degree ordering (ICNTL(7) = 0) in the Newton,
-/// stability, arc-length and eigenmode factorisations, unless the user gave that option. On a
-/// shell's tangent (a patch couples nodes up to four edges apart) it needs fewer operations than
-/// PORD, the nested dissection MUMPS picks otherwise (Debian's MUMPS has neither METIS nor
-/// SCOTCH): 16 % fewer on the stretched sheet's 12k unknowns (factor_ordering_test.cpp,
-/// docs/performance.md "The ordering of a shell's factorisation"). Call before the solvers are
-/// set up; needs PETSc initialised.
-void request_minimum_degree_ordering();
+/// MUMPS's estimate of the operations of a factorisation of the symmetric pattern of K (its
+/// analysis alone, RINFOG(1)) with the ordering ICNTL(7) = `ordering`. Collective on K.
+double estimated_factor_operations(Mat K, int ordering);
+
+/// The fill-reducing ordering of a shell model's factorisations: MUMPS's analysis of the model's
+/// tangent at its current state with the approximate minimum degree (ICNTL(7) = 0) and with the
+/// ordering MUMPS picks itself (7: PORD but for small matrices, Debian's MUMPS having neither
+/// METIS nor SCOTCH), and the one with the fewer estimated operations made the default of the
+/// Newton, stability, arc-length and eigenmode factorisations, unless the user gave
+/// -mat_mumps_icntl_7 for that solver. A shell's tangent is denser per node than a solid's (a
+/// patch couples nodes up to four edges apart), and which ordering wins depends on the mesh:
+/// minimum degree on the structured sheet of 12k unknowns, PORD on the Gmsh balloon of 32k
+/// (factor_ordering_test.cpp, docs/performance.md "The ordering of a shell's factorisation").
+/// Returns the ordering chosen. Collective; call before the solvers are set up.
+int choose_factor_ordering(MixedModel& model);
 
 /// What a MUMPS factorisation that failed says about memory (MUMPS user's guide, INFOG(1)).
 struct FactorMemory {
