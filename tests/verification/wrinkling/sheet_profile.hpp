@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -134,6 +135,17 @@ inline double cerda_mahadevan(double strain, double length, double thickness) {
   const double nu = 0.5;
   return std::sqrt(2.0 * std::numbers::pi * length * thickness) /
          std::pow(3.0 * (1.0 - nu * nu) * strain, 0.25);
+}
+
+/// Prints each step of `steps` to `out`: strain, amplitude over t, crests, wavelength and its
+/// ratio to Cerda & Mahadevan's for the sheet of `length` and `thickness` [mm].
+inline void print_sheet_steps(std::ostream& out, const std::vector<SheetProfile>& steps,
+                              double length, double thickness) {
+  for (const auto& s : steps)
+    out << "  strain " << s.strain << " amplitude/t " << s.amplitude / thickness << " crests "
+        << s.crests << " wavelength " << s.wavelength << " / CM "
+        << (s.wavelength > 0 ? s.wavelength / cerda_mahadevan(s.strain, length, thickness) : 0.0)
+        << "\n";
 }
 
 /// The least-squares line through the points (log x, log y): the exponent of a power law y ~ x^a

@@ -88,13 +88,7 @@ TEST(TensionWrinklingShellRegression, ShellSheetWrinklesAtTheSolidsOnsetWithTheS
   // The log's "new instability" step: the strain is kFinalStrain t.
   const double onset = kFinalStrain * test::first_instability_time(dir.string() + ".log");
   ASSERT_GE(steps.size(), 20u);
-  for (const auto& s : steps)
-    std::cout << "strain " << s.strain << " amplitude/t " << s.amplitude / kThickness << " crests "
-              << s.crests << " wavelength " << s.wavelength << " / CM "
-              << (s.wavelength > 0
-                      ? s.wavelength / test::cerda_mahadevan(s.strain, kLength, kThickness)
-                      : 0.0)
-              << "\n";
+  test::print_sheet_steps(std::cout, steps, kLength, kThickness);
 
   std::cout << "the check finds the instability at the step of strain " << onset << "\n";
   EXPECT_GT(onset, kOnsetLow) << "the stability check found no bifurcation, or too early";

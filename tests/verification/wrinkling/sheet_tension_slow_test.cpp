@@ -123,13 +123,7 @@ TEST(TensionWrinklingSlow, StretchedSheetWrinklesWithTheCerdaMahadevanWavelength
   ASSERT_GE(run.steps.size(), 35u);
   ASSERT_GT(run.onset_strain, 0.0) << "the stability check found no bifurcation";
   std::cout << "the check finds the instability at the step of strain " << run.onset_strain << "\n";
-  for (const auto& s : run.steps)
-    std::cout << "strain " << s.strain << " amplitude/t " << s.amplitude / kThickness << " crests "
-              << s.crests << " wavelength " << s.wavelength << " / CM "
-              << (s.wavelength > 0
-                      ? s.wavelength / test::cerda_mahadevan(s.strain, kLength, kThickness)
-                      : 0.0)
-              << "\n";
+  test::print_sheet_steps(std::cout, run.steps, kLength, kThickness);
   const auto wrinkled = [](const test::SheetProfile& s) { return s.crests >= 5; };
 
   // Onset: the converged bracket of the study, widened by the 1 % steps of this run.

@@ -123,12 +123,7 @@ LawFit fit_the_law(const SheetRun& run) {
   EXPECT_GT(run.onset_strain, 0.0) << "the stability check found no bifurcation; " << run.log;
   std::cout << "W/t = " << kWidth / t << ", h = " << run.cells
             << " t: the check finds the instability at strain " << run.onset_strain << "\n";
-  for (const auto& s : run.steps)
-    std::cout << "  strain " << s.strain << " amplitude/t " << s.amplitude / t << " crests "
-              << s.crests << " wavelength " << s.wavelength << " / CM "
-              << (s.wavelength > 0 ? s.wavelength / test::cerda_mahadevan(s.strain, kLength, t)
-                                   : 0.0)
-              << "\n";
+  test::print_sheet_steps(std::cout, run.steps, kLength, t);
   for (const auto& s : run.steps) {  // flat before the check finds the bifurcation
     if (s.strain >= run.onset_strain * (1.0 - 1e-5)) break;  // the log's t has 6 digits
     EXPECT_EQ(s.crests, 0) << "W/t " << kWidth / t << ", strain " << s.strain;
