@@ -401,6 +401,14 @@ PetscErrorCode NewtonSolver::snes_solve() {
   return SNESSolve(snes_, nullptr, x_);
 }
 
+bool NewtonSolver::chord_step_failed() const {
+  // converged() is not called for an iteration whose line search failed: chord_next_ still says
+  // how that iteration's direction was solved.
+  SNESConvergedReason reason;
+  PLISSE_PETSC(SNESGetConvergedReason(snes_, &reason));
+  return reason == SNES_DIVERGED_LINE_SEARCH && chord_next_;
+}
+
 NewtonResult NewtonSolver::run() {
   NewtonResult result;
   error_ = nullptr;
@@ -444,6 +452,12 @@ bool NewtonSolver::solve_timed(NewtonResult& result, int& earlier_iterations) {
     // model's bubbles may be the refused trial's; the next assembly solves them anew from there).
     if (reuse == ReuseOutcome::handed_over) PLISSE_PETSC(SNESSetInitialFunction(snes_, r_));
     if (!reuse_converged) code = snes_solve();
+    if (!reuse_converged && code == 0 && !error_ && !interrupted_ && chord_step_failed()) {
+      PetscInt its = 0;
+      PLISSE_PETSC(SNESGetIterationNumber(snes_, &its));
+      earlier_iterations += static_cast<int>(its);
+      code = snes_solve();
+    }
     while (!reuse_converged && code == 0 && !error_ && !interrupted_ &&
            grow_factor_workspace(result)) {
       PetscInt its = 0;

@@ -31,8 +31,10 @@
 /// Within SNES, the same rule: after an iteration that cut ||R|| at least kReuseContraction-fold,
 /// the next one keeps the tangent and its factor (a chord step, through SNES's Jacobian lag);
 /// after one that did not, Newton assembles and factorises anew. A chord step is taken, not
-/// refused, since its line search still asks ||R|| to decrease. Not done when the user gives
-/// -snes_lag_jacobian, nor while reuse is suspended (allow_reuse).
+/// refused, since its line search still asks ||R|| to decrease; when the line search finds no
+/// decrease along a chord direction, Newton starts again from there with a new tangent (once per
+/// solve). Not done when the user gives -snes_lag_jacobian, nor while reuse is suspended
+/// (allow_reuse).
 #include <petscsnes.h>
 
 #include <exception>
@@ -152,6 +154,11 @@ class NewtonSolver {
   void read_snes_outcome(NewtonResult& result, int earlier_iterations);
   /// SNESSolve from x_, its first iteration with a new tangent.
   PetscErrorCode snes_solve();
+  /// After snes_solve(): its line search failed in a chord step. A kept tangent can be far
+  /// enough from the current one in some direction that the chord direction does not lower
+  /// ||R|| at all, even where Newton's own converges; solve_timed() then solves again from the
+  /// iterate reached, with a new tangent, once.
+  bool chord_step_failed() const;
   /// After a failed linear solve: when MUMPS's workspace, sized from its analysis's estimate and
   /// ICNTL(14) percent more, proved too small, grows it for a new factor (plisse::
   /// grow_factor_workspace) and returns true (the solve goes on from the iterate reached); when
