@@ -373,6 +373,31 @@ class ElementAssembly {
     AssemblyStatus status;
     const std::vector<int>& local = distribution.local_elements();
     const int n = static_cast<int>(local.size());
+    const auto evaluate_one = [&](int e, Result& out) {
+      const int m = materials_.of(e);
+      out.rigid = m == ElementMaterials::kRigid;
+      if (out.rigid) return;
+      out.status = with_material(e, m, history(e), dt_, [&](const auto& material) {
+        return Element::evaluate(geometry_[e], gather(dofs(e), state), material,
+                                 materials_.inverse_bulk_moduli[m], internal_[e], out.r,
+                                 with_tangent ? &out.K : nullptr);
+      });
+    };
+    const auto add_one = [&](int e, const Result& out) {
+      if (out.rigid) return;
+      track_element(status, out.status.ok, out.status.min_J, e);
+      scatter(e, out);
+    };
+    if (threads <= 1) {
+      // One thread: each element is added while its result is still in the cache (a chunk of
+      // shell tangents is 44 MB), in the same order as the chunks add them.
+      chunk_.resize(std::min(n, 1));
+      for (int k = 0; k < n; ++k) {
+        evaluate_one(local[k], chunk_[0]);
+        add_one(local[k], chunk_[0]);
+      }
+      return distribution.reduce(status);
+    }
     chunk_.resize(std::min(n, kChunkElements));
     for (int first = 0; first < n; first += kChunkElements) {
       const int last = std::min(n, first + kChunkElements);
@@ -382,28 +407,14 @@ class ElementAssembly {
 #pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
       for (int k = first; k < last; ++k) {
         try {
-          const int e = local[k];
-          Result& out = chunk_[k - first];
-          const int m = materials_.of(e);
-          out.rigid = m == ElementMaterials::kRigid;
-          if (out.rigid) continue;
-          out.status = with_material(e, m, history(e), dt_, [&](const auto& material) {
-            return Element::evaluate(geometry_[e], gather(dofs(e), state), material,
-                                     materials_.inverse_bulk_moduli[m], internal_[e], out.r,
-                                     with_tangent ? &out.K : nullptr);
-          });
+          evaluate_one(local[k], chunk_[k - first]);
         } catch (...) {
 #pragma omp critical(plisse_element_loop_error)
           if (!error) error = std::current_exception();
         }
       }
       if (error) std::rethrow_exception(error);
-      for (int k = first; k < last; ++k) {
-        const Result& out = chunk_[k - first];
-        if (out.rigid) continue;
-        track_element(status, out.status.ok, out.status.min_J, local[k]);
-        scatter(local[k], out);
-      }
+      for (int k = first; k < last; ++k) add_one(local[k], chunk_[k - first]);
     }
     return distribution.reduce(status);
   }

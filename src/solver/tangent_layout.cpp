@@ -219,10 +219,16 @@ void TangentLayout::TermSink::add(std::span<const int> rows, std::span<const int
     const int row = equation - first;
     const PetscInt* begin = ja + ia[row];
     const PetscInt* end = ja + ia[row + 1];
+    // The terms list a node's unknowns together, whose free equations are consecutive and so
+    // are their columns in the row: the entry after the last one found is tried first.
+    const PetscInt* at = end;
     for (size_t j = 0; j < cols.size(); ++j) {
       const int col = dofs.equation(cols[j]);
       if (col < 0) continue;
-      const PetscInt* at = std::lower_bound(begin, end, static_cast<PetscInt>(col));
+      if (at == end || at + 1 == end || at[1] != col)
+        at = std::lower_bound(begin, end, static_cast<PetscInt>(col));
+      else
+        ++at;
       PLISSE_CHECK(at != end && *at == col,
                    "a model term adds the tangent entry ("
                        << rows[i] << ", " << cols[j]
