@@ -59,22 +59,29 @@ def wavelength_cells(run, strains):
     return cells
 
 
-def table_rows(case, strains):
-    """The two rows (shell, then solid) of one mesh, with the wavelength at `strains`."""
+def pair_rows(case, label, measured):
+    """The two rows (shell, then solid) of one case of a paired benchmark: `label` in the first
+    cell of the shell's row, the costs, measured(run) (the cells of what the last repeat found),
+    and the ratio solid / shell within each pair in the solid's last cell."""
     pairs = case["pairs"]
     ratios = [pair["solid"]["wall"] / pair["shell"]["wall"] for pair in pairs]
     rows = []
     for element in ELEMENTS:
         runs = [pair[element] for pair in pairs]
         last = runs[-1]
-        first = f"{case['h']:g}" if element == ELEMENTS[0] else ""
+        first = label if element == ELEMENTS[0] else ""
         ratio = f"**{peer_table.spread(ratios, 1)}**" if element == "solid" else ""
         cells = (first, ELEMENT_NAMES[element], peer_table.grouped(last["unknowns"]),
                  str(last["steps"]), str(last["newton"]), peer_table.spread(
                      [r["wall"] for r in runs], 1), f"{max(r['peak'] for r in runs):.0f}",
-                 *wavelength_cells(last, strains), ratio)
+                 *measured(last), ratio)
         rows.append("| " + " | ".join(cells) + " |")
     return rows
+
+
+def table_rows(case, strains):
+    """The two rows (shell, then solid) of one mesh, with the wavelength at `strains`."""
+    return pair_rows(case, f"{case['h']:g}", lambda run: wavelength_cells(run, strains))
 
 
 def render_block(results):

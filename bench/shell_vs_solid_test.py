@@ -13,7 +13,6 @@ sys.path.insert(0, str(HERE))
 import block_testing  # noqa: E402
 import shell_vs_solid_table as table  # noqa: E402
 
-ROOT = HERE.parent
 
 
 def run(unknowns, steps, newton, wall, peak, wavelength):
@@ -51,28 +50,11 @@ ratio to λ_CM (in brackets) at each strain, '–' where the run had no wrinkles
 """
 
 
-class ShellVsSolidTable(unittest.TestCase):
-    def test_block_from_fixed_measurements(self):
-        self.assertEqual(table.render_block(MEASUREMENTS), EXPECTED)
-
-    def test_uncommitted_changes_and_load_are_said(self):
-        first = block_testing.provenance_line(table.render_block, MEASUREMENTS)
-        self.assertIn("at commit abc1234 with uncommitted changes on", first)
-        self.assertIn("load average of 0.9 when the run began and 1.1 when it ended", first)
-
-    def test_update_leaves_the_other_blocks_alone(self):
-        block, peers, _, refused = block_testing.update_beside_the_peers(
-            table.update_file, table.MARKERS, MEASUREMENTS, table.peer_table)
-        self.assertEqual(block, EXPECTED)
-        self.assertEqual(peers, "the peers' block\n")
-        self.assertEqual(refused, "# Title\n\nno block here\n")
-
-    def test_docs_hold_what_the_last_run_wrote(self):
-        page = (ROOT / "docs" / "performance.md").read_text(encoding="utf-8")
-        record = ROOT / "docs" / "performance" / "shell-vs-solid.json"
-        self.assertTrue(record.exists(), "run bench/shell-vs-solid --update docs/performance.md")
-        self.assertEqual(table.peer_table.read_block(page, table.MARKERS),
-                         table.render_block(table.load(record)))
+class ShellVsSolidTable(block_testing.PairedTableChecks, unittest.TestCase):
+    table = table
+    measurements = MEASUREMENTS
+    expected = EXPECTED
+    record = "shell-vs-solid"
 
 
 if __name__ == "__main__":
