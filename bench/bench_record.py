@@ -1,12 +1,15 @@
 """What every benchmark of bench/ that writes a generated block of the docs records beside its
 measurements: the command, the commit and whether the measured sources had uncommitted changes,
 the date, the machine's cores and its load average when the run began (and, appended by the
-caller, when it ended); and where the measurements behind a page's block are kept."""
+caller, when it ended); where the measurements behind a page's block are kept; and one run of
+plisse timed from outside."""
 import datetime
+import json
 import os
 import shlex
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -31,3 +34,17 @@ def record_of(page, name):
     """Where the measurements behind the block of `page` are kept: docs/performance.md and
     "thin-shell" -> docs/performance/thin-shell.json."""
     return Path(page).with_suffix("") / f"{name}.json"
+
+
+def run_plisse(plisse, case, options, out, log):
+    """Runs `plisse run --overwrite CASE OPTIONS -o OUT` (plisse: the executable) on one core
+    (OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1), what it prints into the file `log`; returns the
+    wall time of the whole process [s] and its summary.json. Raises
+    subprocess.CalledProcessError when the run fails."""
+    env = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1")
+    start = time.monotonic()
+    with open(log, "w", encoding="utf-8") as f:
+        subprocess.run([str(plisse), "run", "--overwrite", str(case), *options, "-o", str(out)],
+                       env=env, stdout=f, stderr=subprocess.STDOUT, check=True)
+    wall = time.monotonic() - start
+    return wall, json.loads((Path(out) / "summary.json").read_text(encoding="utf-8"))

@@ -86,12 +86,9 @@ def table_rows(case, strains):
 
 def render_block(results):
     """The lines between the markers, ending in a newline, from the measurements alone."""
-    changes = " with uncommitted changes" if results.get("local_changes") else ""
-    pairs = "1 pair of runs" if results["repeats"] == 1 else f"{results['repeats']} pairs of runs"
     strains = results["strains"]
     lines = [
-        f"Made by `{results['command']}` at commit {results['commit']}{changes} on "
-        f"{results['date']}: {pairs} per mesh, the shell then the solid, one core each, to "
+        f"{peer_table.made_by(results)}: {peer_table.pairs_of_runs(results)} per mesh, the shell then the solid, one core each, to "
         f"{percent(results['end_strain'])} strain. Wall time and ratio: median "
         "(smallest–largest) over the pairs; peak memory: the largest; the wavelength λ [mm] and "
         "its ratio to λ_CM (in brackets) at each strain, '–' where the run had no wrinkles "

@@ -64,11 +64,9 @@ def row(run):
 
 def render_block(results):
     """The lines between the markers, ending in a newline, from the measurements alone."""
-    changes = " with uncommitted changes" if results.get("local_changes") else ""
     runs = results["runs"]
     lines = [
-        f"Made by `{results['command']}` at commit {results['commit']}{changes} on "
-        f"{results['date']}: one run per mesh, one core (OMP_NUM_THREADS=1 "
+        f"{peer_table.made_by(results)}: one run per mesh, one core (OMP_NUM_THREADS=1 "
         f"OPENBLAS_NUM_THREADS=1), full Newton.{peer_table.machine_load(results)}",
         "",
         "| h [mm] | triangles | unknowns | Newton iterations | assembly [s/it] "

@@ -77,14 +77,23 @@ def machine_load(results):
             f"run began and {end:.1f} when it ended.")
 
 
+def made_by(results):
+    """'Made by `COMMAND` at commit C[ with uncommitted changes] on DATE', a block's first words."""
+    changes = " with uncommitted changes" if results.get("local_changes") else ""
+    return (f"Made by `{results['command']}` at commit {results['commit']}{changes} on "
+            f"{results['date']}")
+
+
+def pairs_of_runs(results):
+    """'1 pair of runs' or 'N pairs of runs', N the measurements' repeats."""
+    return "1 pair of runs" if results["repeats"] == 1 else f"{results['repeats']} pairs of runs"
+
+
 def render_block(results):
     """The lines between the markers, ending in a newline, from the measurements alone (so the
     same measurements always give the same text)."""
-    changes = " with uncommitted changes" if results.get("local_changes") else ""
-    pairs = "1 pair of runs" if results["repeats"] == 1 else f"{results['repeats']} pairs of runs"
     lines = [
-        f"Made by `{results['command']}` at commit {results['commit']}{changes} on "
-        f"{results['date']}: {pairs} per row, plisse then DOLFINx, "
+        f"{made_by(results)}: {pairs_of_runs(results)} per row, plisse then DOLFINx, "
         "one core each. Wall time and ratio: median (smallest–largest) over the pairs; peak "
         f"memory: the largest.{machine_load(results)}",
         "",
