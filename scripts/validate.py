@@ -187,6 +187,8 @@ def check():
         if outside:
             problems.append(f"{page.relative_to(ROOT)}: table rows outside the generated blocks "
                             f"(no command behind them) at lines {', '.join(map(str, outside))}")
+    build = Path(os.environ.get("PLISSE_BUILD_DIR", ROOT / "build"))
+    listed = (build / "CTestTestfile.cmake").is_file()  # else the tiers' tests cannot be listed
     for tier in TIERS:
         record = read_record(tier)
         if record is None:
@@ -195,6 +197,11 @@ def check():
             if not c.get("test") or c["test"] not in record["tests"]:
                 problems.append(f"docs/validation/{tier}.json: row {c['row']} has no test behind "
                                 f"it")
+        if listed:
+            for name in gone(record, tier_tests(build, tier)):
+                problems.append(f"docs/validation/{tier}.json: test {name} is no longer in the "
+                                f"tier (renamed or removed; scripts/validate --tier {tier} drops "
+                                f"its rows)")
     for p in problems:
         print(f"validate: {p}", file=sys.stderr)
     return 1 if problems else 0
@@ -249,6 +256,19 @@ def shares(tests, seconds, n):
     return split
 
 
+def gone(record, current):
+    """The recorded tests of `record` that the tier's listing `current` no longer holds."""
+    return sorted(name for name in record["tests"] if name not in current)
+
+
+def merged(old, tests, claims, current):
+    """The record's tests and rows after a run of some of the tier's tests: the run's `tests`
+    and `claims`, and those `old` holds of the tests the run left out that are still in the
+    tier (`current`); a renamed or removed test's rows are dropped."""
+    kept = {k: v for k, v in old["tests"].items() if k not in tests and k in current}
+    return {**kept, **tests}, [c for c in old["claims"] if c["test"] in kept] + claims
+
+
 def share_regex(build, tier, share):
     """The anchored regex of the tests of share K of N (share: (K, N))."""
     k, n = share
@@ -291,9 +311,10 @@ def run(tier, regex, jobs, share=None):
     claims = [json.loads(line) for line in lines.read_text().splitlines()] if lines.is_file() else []
     old = read_record(tier) if regex else None
     if old:  # keep the rows and times of the tests this run left out
-        ran = set(tests)
-        tests = {**{k: v for k, v in old["tests"].items() if k not in ran}, **tests}
-        claims = [c for c in old["claims"] if c["test"] not in ran] + claims
+        current = tier_tests(build, tier)
+        for name in gone(old, current):
+            print(f"validate: dropped the rows of {name}, no longer in the tier")
+        tests, claims = merged(old, tests, claims, current)
     claims.sort(key=lambda c: (c["kind"] != "validation", c["row"]))
     record = {
         "tier": tier,

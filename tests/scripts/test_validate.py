@@ -85,6 +85,24 @@ class TablesTest(Page):
         validate.update()
         self.assertEqual(validate.check(), 1)
 
+    def test_a_partial_run_drops_the_rows_of_a_test_no_longer_in_the_tier(self):
+        old = record([claim("a/b", 0.97, 1.0, -0.04, -0.02, test="Suite.Renamed"),
+                      claim("a/c", 0.97, 1.0, -0.04, -0.02, test="Suite.Kept"),
+                      claim("a/d", 0.97, 1.0, -0.04, -0.02, test="Suite.Run")],
+                     tests={name: {"seconds": 9.0, "status": "passed"}
+                            for name in ("Suite.Renamed", "Suite.Kept", "Suite.Run")})
+        current = {"Suite.Kept": 1, "Suite.Run": 1, "Suite.NewName": 1}
+        self.assertEqual(validate.gone(old, current), ["Suite.Renamed"])
+        ran = {"Suite.Run": {"seconds": 5.0, "status": "passed"},
+               "Suite.NewName": {"seconds": 7.0, "status": "passed"}}
+        fresh = [claim("a/d", 0.98, 1.0, -0.04, -0.02, test="Suite.Run"),
+                 claim("a/b", 0.97, 1.0, -0.04, -0.02, test="Suite.NewName")]
+        tests, claims = validate.merged(old, ran, fresh, current)
+        self.assertEqual(sorted(tests), ["Suite.Kept", "Suite.NewName", "Suite.Run"])
+        self.assertEqual(tests["Suite.Run"]["seconds"], 5.0)
+        self.assertEqual(sorted((c["row"], c["test"]) for c in claims),
+                         [("a/b", "Suite.NewName"), ("a/c", "Suite.Kept"), ("a/d", "Suite.Run")])
+
     def test_a_failed_claim_and_a_regression_guard_are_marked_so(self):
         self.write("# page\n\n" + self.blocks() + "\n",
                    record([claim("a/b", 0.95, 1.0, -0.04, -0.02),
