@@ -43,7 +43,7 @@ TIERS = ("ci", "full")
 PAGES = [ROOT / "docs" / "validation.md"]
 RECORDS = ROOT / "docs" / "validation"
 TIER_TITLE = {
-    "ci": "CI tier: the meshes CI runs, a quarter of the tier each day (the studies' own where CI "
+    "ci": "CI tier: the meshes CI runs, half the tier each day (the studies' own where CI "
           "can afford them)",
     "full": "Full tier: the studies' meshes where CI runs coarser ones",
 }
