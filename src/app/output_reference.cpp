@@ -152,10 +152,12 @@ const std::vector<OutputEntry> kSummary = {
     {"title", "–", "always", "the case's `title`"},
     {"completed", "–", "always",
      "true when the run reached `solver.end_time`, or (arc-length control) its load factor fell "
-     "below `solver.stop_load_factor` past a limit load (`ended` says which)"},
+     "below `solver.stop_load_factor` past a limit load, or it stopped at an instability "
+     "(`solver.stability.stop_when_unstable`; `ended` says which)"},
     {"ended", "–", "the run completed",
      "what ended it: `end_time`, or `stop_load_factor` (arc-length control: the load factor fell "
-     "below `solver.stop_load_factor` past a limit load)"},
+     "below `solver.stop_load_factor` past a limit load), or `instability` (the last step is the "
+     "first the stability check found unstable, `solver.stability.stop_when_unstable`)"},
     {"interrupted", "–", "always", "true when a signal (Ctrl-C, SIGTERM) stopped the run"},
     {"failure", "–", "the run did not complete", "why the run stopped early"},
     {"limit.time", "s", "the step fell below `solver.min_step`",

@@ -385,6 +385,13 @@ void finish_run(const RunContext& run, const SteppingResult& result, const Start
                   last.load_factor, last.step, run.c.solver.stop_load_factor);
     out.log().info(line);
   }
+  if (result.stopped_unstable) {
+    std::snprintf(line, sizeof line,
+                  "ended at the instability: step %d (load factor %.6g) is unstable, the step "
+                  "before it stable (solver.stability.stop_when_unstable)",
+                  last.step, last.load_factor);
+    out.log().info(line);
+  }
   if (result.interrupted) {
     out.flush_log();
     // A resume must repeat the --set values (the checkpoint's fingerprint holds them); a

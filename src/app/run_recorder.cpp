@@ -449,7 +449,9 @@ nlohmann::json RunRecorder::summary(const SteppingResult& result, const StartTim
   summary["title"] = c.title;
   summary["completed"] = result.completed;
   if (result.completed)
-    summary["ended"] = result.stopped_after_limit ? "stop_load_factor" : "end_time";
+    summary["ended"] = result.stopped_after_limit ? "stop_load_factor"
+                       : result.stopped_unstable  ? "instability"
+                                                  : "end_time";
   summary["interrupted"] = result.interrupted;
   if (!result.completed) summary["failure"] = result.failure;
   // The load the run could not raise (a limit load under load control): the last converged step.

@@ -218,6 +218,7 @@ StabilityCheckSettings stability_check_settings(const Case& c) {
   o.check = st.check;
   o.branch_switch = st.branch_switch;
   o.modes = st.modes;
+  o.stop_when_unstable = st.stop_when_unstable;
   if (st.branch_switch) o.perturbation_mm = st.branch_amplitude * *c.mesh.wall_thickness();
   return o;
 }

@@ -144,7 +144,10 @@ struct StabilitySettings {
   std::string imperfection_from;
   int imperfection_mode = 1;      ///< >= 1
   double branch_amplitude = 0.1;  ///< perturbation along the critical mode / wall thickness, > 0
-  InputPlace place;               ///< where `stability:` is
+  /// End the run, completed, at the first step found unstable that a branch switch (when on) did
+  /// not leave: the step before and this one bracket the buckling or collapse load.
+  bool stop_when_unstable = false;
+  InputPlace place;  ///< where `stability:` is
 };
 
 /// `solver:`: the stepping and Newton settings (solver/stepping_settings.hpp) and what the app

@@ -119,6 +119,10 @@ Schema<StabilitySettings> stability_schema() {
             "which mode (`mode_N` field) of that run");
   s.real("branch_amplitude", &StabilitySettings::branch_amplitude, Range::positive(), "–",
          "size of the perturbation along the critical mode at a branch switch / wall thickness");
+  s.boolean("stop_when_unstable", &StabilitySettings::stop_when_unstable,
+            "end the run, completed, at the first step the check finds unstable and a branch "
+            "switch (when on) does not leave: that step and the one before bracket the buckling "
+            "or collapse load (summary.json `ended`: `instability`)");
   s.rule("`imperfection_from` needs `imperfection_kind: mode`",
          [](const FieldMap& m, const StabilitySettings& st, const ReadContext&) {
            if (const auto from = m.find("imperfection_from");
@@ -133,6 +137,14 @@ Schema<StabilitySettings> stability_schema() {
                            "'imperfection_kind: mode' needs 'imperfection_from: DIR', the run "
                            "whose eigenmode shapes the imperfection");
       });
+  s.rule("`stop_when_unstable` needs `check: true`",
+         [](const FieldMap& m, const StabilitySettings& st, const ReadContext&) {
+           if (st.stop_when_unstable && !st.check)
+             m.find("stop_when_unstable")
+                 ->fail(
+                     "stop_when_unstable needs 'check: true' (the instability it stops at is "
+                     "found by the stability check)");
+         });
   s.rule("`branch_switch` needs `check: true`",
          [](const FieldMap& m, const StabilitySettings& st, const ReadContext&) {
            if (st.branch_switch && !st.check)

@@ -261,6 +261,13 @@ bool LoadStepper::switch_branch(StepInfo& info, SteppingResult& result, const Lo
   return true;
 }
 
+bool LoadStepper::ends_unstable(const StepInfo& info, SteppingResult& result) const {
+  if (!stability_.stop_when_unstable || info.negative_pivots < 0 || info.stable) return false;
+  result.completed = true;
+  result.stopped_unstable = true;
+  return true;
+}
+
 void LoadStepper::check_stability(StepInfo& info, SteppingResult& result, const Log& log,
                                   bool& switched) {
   switched = false;
@@ -560,6 +567,7 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
       check_stability(info, result, log, switched);
       report_workspace_growth(info.step, log);
       on_step(info);
+      if (ends_unstable(info, result)) return result;
       if (info.dt < 0.0 && settings_.stop_load_factor > 0.0 &&
           st.time / end < settings_.stop_load_factor) {
         result.completed = true;
@@ -618,6 +626,7 @@ SteppingResult LoadStepper::run(const std::function<void(const StepInfo&)>& on_s
     // After a switch the last increment holds the jump onto the new branch: no extrapolation.
     if (switched) st.previous_dt = 0.0;
     on_step(info);
+    if (ends_unstable(info, result)) return result;
   }
   result.completed = true;
   return result;

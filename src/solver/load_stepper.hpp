@@ -28,6 +28,8 @@ struct StabilityCheckSettings {
   int modes = 4;                 ///< eigenmodes computed at a new instability, >= 1
   double perturbation_mm = 0.0;  ///< amplitude a of u += a φ1 [mm] (relative amplitude x wall
                                  ///< thickness, computed by the caller), > 0 with branch_switch
+  /// End the run, completed, at the first checked step that is unstable after any branch switch.
+  bool stop_when_unstable = false;
 };
 
 /// One converged step, as reported to the caller.
@@ -79,6 +81,9 @@ struct SteppingResult {
   /// Completed because the load factor fell below SteppingSettings::stop_load_factor past a limit
   /// load (arc-length control), not at end_time.
   bool stopped_after_limit = false;
+  /// Completed at a step the stability check found unstable
+  /// (StabilityCheckSettings::stop_when_unstable), not at end_time.
+  bool stopped_unstable = false;
 };
 
 /// Where the stepping is, so that a run can continue from a checkpoint.
@@ -138,6 +143,9 @@ class LoadStepper {
   /// The stability part of a converged, saved step: inertia, modes, branch switching. The model
   /// holds the step's accepted state on return. Sets `switched` when the predictor must restart.
   void check_stability(StepInfo& info, SteppingResult& result, const Log& log, bool& switched);
+  /// True, with `result` completed and stopped_unstable, when stop_when_unstable is on and the
+  /// check found the reported step `info` unstable.
+  bool ends_unstable(const StepInfo& info, SteppingResult& result) const;
   /// The inertia of the model's tangent into `out`; false when the check failed (said in the
   /// log for `step`, which is then reported unchecked).
   bool compute_inertia(Inertia& out, int step, const Log& log);

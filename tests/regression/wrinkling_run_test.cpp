@@ -21,6 +21,7 @@
 
 #include "output/history_writer.hpp"
 #include "output/json_file.hpp"
+#include "output/run_directory.hpp"
 #include "output/vtu_reader.hpp"
 #include "support/run_plisse.hpp"
 
@@ -93,6 +94,42 @@ TEST_F(StripBuckling, CheckFindsTheInstabilityAndWritesItsModes) {
     // The perfect strip stays straight: only the Poisson thickening of the wall (eps t / 2).
     EXPECT_LT(std::abs(uz[k]), 0.01) << "t = " << time[k];
   }
+}
+
+// solver.stability.stop_when_unstable ends the run, completed, at the step the check finds the
+// instability at: the same step and time as the perfect run's instability, the step before it
+// stable, the step files of that last step written.
+TEST_F(StripBuckling, StopWhenUnstableEndsTheRunAtTheInstability) {
+  const nlohmann::json perfect = read_json_file(*perfect_ / "summary.json");
+  ASSERT_EQ(perfect["stability"]["instabilities"].size(), 1u);
+  const double t_unstable = perfect["stability"]["instabilities"][0]["time"].get<double>();
+  const fs::path dir = scratch_directory("strip-stop-when-unstable");
+  const auto r = run_plisse_captured("run '" + kStrip + "' -o '" + dir.string() +
+                                     "' --set solver.stability.stop_when_unstable=true");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const nlohmann::json s = read_json_file(dir / "summary.json");
+  EXPECT_TRUE(s["completed"].get<bool>());
+  EXPECT_EQ(s["ended"].get<std::string>(), "instability");
+  EXPECT_LT(s["steps"].get<int>(), perfect["steps"].get<int>());
+  EXPECT_NEAR(s["final_time"].get<double>(), t_unstable, 1e-12);
+  const HistoryTable h = read_history(dir / "history.csv");
+  const auto stable = column(h, "stable"), time = column(h, "time");
+  ASSERT_GE(stable.size(), 2u);
+  EXPECT_EQ(stable.back(), 0.0);
+  EXPECT_EQ(stable[stable.size() - 2], 1.0);
+  EXPECT_NEAR(time.back(), t_unstable, 1e-12);
+  EXPECT_TRUE(fs::exists(dir / RunDirectory::step_file_name(s["steps"].get<int>())))
+      << "the unstable step's files";
+  EXPECT_NE(r.output.find("ended at the instability"), std::string::npos) << r.output;
+}
+
+TEST(StripBucklingInput, StopWhenUnstableWithoutTheCheckIsRefused) {
+  const auto r = run_plisse_captured("check '" + kStrip +
+                                     "' --set solver.stability.check=false"
+                                     " --set solver.stability.stop_when_unstable=true");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("solver.stability.stop_when_unstable"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("needs 'check: true'"), std::string::npos) << r.output;
 }
 
 TEST_F(StripBuckling, ModeImperfectionAndBranchSwitchingReachTheBuckledBranch) {
