@@ -47,6 +47,7 @@
 #include "output/vtu_reader.hpp"
 #include "support/run_case.hpp"
 #include "support/run_plisse.hpp"
+#include "support/shell_tube.hpp"
 #include "support/validation_claim.hpp"
 
 namespace plisse {
@@ -119,12 +120,7 @@ ShellBeam bend(const Wall& w) {
   // a slice is one ring of cells.
   const double dx = kLength / static_cast<double>(std::lround(kLength / w.size));
   const auto slices = static_cast<std::size_t>(std::floor(kLength / 2 / dx + 1e-9));
-  std::vector<Vec3d> centroid;
-  for (const auto& t : mesh.triangles) {
-    Vec3d c = Vec3d::Zero();
-    for (int n : t) c += mesh.nodes[static_cast<std::size_t>(n)] / 3.0;
-    centroid.push_back(c);
-  }
+  const std::vector<Vec3d> centroid = test::triangle_centroids(mesh);
   // The ring of nodes nearest mid-length.
   double x_mid = 0.0;
   for (const Vec3d& X : mesh.nodes)
@@ -232,16 +228,8 @@ std::string mesh_text(const Wall& w) { return "h = " + number(w.size) + " mm, sh
 
 void expect_membrane_theory(const Wall& w, const ShellBeam& b, const std::string& id) {
   const double rt = kRadius / w.thickness;
-  test::expect_claim({.row = "air-beam-shell/" + id + "/axial-prestress",
-                      .subject = subject(rt),
-                      .quantity = "membrane force N_x at mid-length after the pressure, over p r/2",
-                      .mesh = mesh_text(w),
-                      .measured = b.axial_ratio,
-                      .reference = 1.0,
-                      .source = "closed tube's equilibrium, N_x = p r/2",
-                      .low = -0.0025,
-                      .high = 0.0025,
-                      .why = "the flat triangles are chords of the circle"});
+  test::expect_closed_tube_axial_force("air-beam-shell/" + id + "/axial-prestress", subject(rt),
+                                       "mid-length", mesh_text(w), b.axial_ratio);
   test::expect_claim({.row = "air-beam-shell/" + id + "/hoop-prestress",
                       .subject = subject(rt),
                       .quantity = "membrane force N_θ at mid-length after the pressure, over p r",
