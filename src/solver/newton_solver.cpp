@@ -18,6 +18,9 @@ constexpr double kReuseContraction = 0.1;
 /// to change (read_snes_outcome): its full steps kept raising the residual.
 constexpr double kShortStep = 0.5;
 constexpr int kCrawlIterations = 4;
+/// A failed solve whose residual fell this far below ||R(x_0)|| has converged as far as round-off
+/// lets it: its tolerance lies below the problem's round-off floor (read_snes_outcome says so).
+constexpr double kFloorReduction = 1e-6;
 /// Reuse iterations per solve at most (chord and Krylov steps together).
 constexpr int kReuseMaxIterations = 12;
 /// A Krylov step solves K dx = -R to this relative residual: its iterate then cuts ||R|| by
@@ -511,8 +514,22 @@ void NewtonSolver::read_snes_outcome(NewtonResult& result, int earlier_iteration
       result.reason +=
           " without plisse's residual test (a PETSc option such as -snes_type ksponly "
           "skips it): the state is not accepted";
-    if (!result.converged && !interrupted_ && backtracking_ && its >= kCrawlIterations &&
-        4 * short_steps_ >= 3 * static_cast<int>(its))
+    const double lowest =
+        result.residual_history.empty()
+            ? 0.0
+            : *std::min_element(result.residual_history.begin(), result.residual_history.end());
+    const double target = std::max(atol_, pass_rtol_ * reference_norm_);
+    if (!result.converged && !interrupted_ && last_status_.ok && lowest > target &&
+        lowest <= kFloorReduction * reference_norm_) {
+      char floor[320];
+      std::snprintf(floor, sizeof floor,
+                    "; the residual fell from %.3g to %.3g but no step took it to the tolerance "
+                    "%.3g: the round-off floor of this problem lies above its tolerance; a looser "
+                    "solver.newton.rtol or atol accepts the state",
+                    reference_norm_, lowest, target);
+      result.reason += floor;
+    } else if (!result.converged && !interrupted_ && backtracking_ && its >= kCrawlIterations &&
+               4 * short_steps_ >= 3 * static_cast<int>(its))
       result.reason += "; the line search shortened " + std::to_string(short_steps_) + " of " +
                        std::to_string(its) +
                        " steps: each full Newton step raised the residual, as a small load "

@@ -61,6 +61,28 @@ TEST(SolverFailure, StopsWithExitStatus1AndNamesStepElementAndReason) {
   }
 }
 
+// A tolerance below what round-off lets Newton reach: the homogeneous cube converges to the
+// round-off floor of its residual (about 1e-15 of its start) and the line search then finds no
+// lower one. The failure says so and what to change, not that the step was too large (the
+// message for a line search that keeps shortening full steps from the start).
+TEST(SolverFailure, AToleranceBelowTheRoundOffFloorIsNamedAsSuch) {
+  const auto dir = test::scratch_directory("round-off-floor");
+  const int status =
+      test::run_plisse("run " + std::string(PLISSE_SOURCE_DIR) +
+                           "/examples/cube-tension-neo-hookean.yaml -o " + dir.string() +
+                           " --set solver.newton.rtol=1e-15 --set solver.newton.atol=0"
+                           " --set solver.min_step=0.5",
+                       dir.string() + ".log");
+  EXPECT_EQ(status, 1);
+  std::ifstream in(dir.string() + ".log");
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(text.find("round-off floor of this problem lies above its tolerance"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("a looser solver.newton.rtol or atol"), std::string::npos) << text;
+  EXPECT_EQ(text.find("a small load carried in bending"), std::string::npos) << text;
+}
+
 // Requirement: a run that stops before its end writes its last converged step with the step
 // velocity v = (u_n - u_{n-1}) / dt of that step. Cube tension with the top pulled 20 mm along a
 // linear ramp over 1 s: the deformation is homogeneous with u_z = 4 t Z, linear in time, so
