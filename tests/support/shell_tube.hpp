@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "mesh/mesh.hpp"
+#include "support/run_plisse.hpp"
 #include "support/validation_claim.hpp"
 
 namespace plisse::test {
@@ -20,6 +21,11 @@ inline std::vector<Vec3d> triangle_centroids(const Mesh& mesh) {
     centroids.push_back(c);
   }
   return centroids;
+}
+
+/// How the rows name a shell mesh of in-surface element size `size` [mm].
+inline std::string shell_mesh_text(double size) {
+  return "h = " + six_digits(size) + " mm, shell triangles";
 }
 
 /// The row `row` of a closed tube with a shell wall: N_x after the pressure, at the section

@@ -215,7 +215,7 @@ std::string subject(double r_over_t) {
          " N/mm, p R/(E t) = 1 %";
 }
 
-std::string mesh_text(const Wall& w) { return "h = " + number(w.size) + " mm, shell triangles"; }
+std::string mesh_text(const Wall& w) { return test::shell_mesh_text(w.size); }
 
 void expect_rows(const Wall& w, const Beam& b, const std::string& id) {
   const double rt = kRadius / w.thickness;

@@ -224,7 +224,7 @@ std::string subject(double r_over_t) {
          ", L/R = 5, neo-Hookean, p R/t = 0.2 MPa";
 }
 
-std::string mesh_text(const Wall& w) { return "h = " + number(w.size) + " mm, shell triangles"; }
+std::string mesh_text(const Wall& w) { return test::shell_mesh_text(w.size); }
 
 void expect_membrane_theory(const Wall& w, const ShellBeam& b, const std::string& id) {
   const double rt = kRadius / w.thickness;
