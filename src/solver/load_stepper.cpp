@@ -51,11 +51,17 @@ std::string LoadStepper::describe_failure(const NewtonResult& newton) const {
            "or node with more memory, over more ranks (-n), on a coarser mesh, or with "
            "solver.newton.linear: {type: iterative}";
   const AssemblyStatus& status = newton.status;
-  // Only MINI has bubbles to solve for; a Taylor-Hood or shell element can only invert.
+  // Only MINI has bubbles to solve for; a Taylor-Hood element can only invert. A shell triangle
+  // has no det F that falls to zero (J = 1 when exactly incompressible): its state is refused
+  // when the triangle collapses or the metric of a point of its section is not positive, the wall
+  // folded tighter than half its thickness (element/shell_plane_stress.cpp).
+  const bool shell = model_.element_family() == ElementFamily::shell;
   std::string why = status.ok ? "Newton did not converge (" + newton.reason + ")"
                     : model_.element_family() == ElementFamily::mini
                         ? "an element inverted or its bubble did not converge"
-                        : "an element inverted";
+                    : shell ? "a shell triangle collapsed, or its wall folded tighter than half "
+                              "its thickness"
+                            : "an element inverted";
   if (status.worst_element >= 0) {
     // A tetrahedron, or the triangle of a shell (a mesh without tetrahedra).
     const Mesh& mesh = model_.mesh();
@@ -66,10 +72,13 @@ std::string LoadStepper::describe_failure(const NewtonResult& newton) const {
       for (int v : mesh.tets[status.worst_element]) centroid += 0.25 * mesh.nodes[v];
     }
     char where[160];
-    std::snprintf(where, sizeof where,
-                  "; worst element %d (reference centroid %.4g, %.4g, %.4g), min J %.3g",
-                  status.worst_element, centroid[0], centroid[1], centroid[2], status.min_J);
+    std::snprintf(where, sizeof where, "; worst element %d (reference centroid %.4g, %.4g, %.4g)",
+                  status.worst_element, centroid[0], centroid[1], centroid[2]);
     why += where;
+    if (!shell) {  // a shell's J says nothing of why it failed
+      std::snprintf(where, sizeof where, ", min J %.3g", status.min_J);
+      why += where;
+    }
   }
   return why;
 }

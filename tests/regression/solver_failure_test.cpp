@@ -61,6 +61,27 @@ TEST(SolverFailure, StopsWithExitStatus1AndNamesStepElementAndReason) {
   }
 }
 
+// A shell whose Newton iterate is inadmissible: the party balloon's fourfold volume in one step
+// with full Newton steps. A shell triangle has no det F to name (J = 1, exactly incompressible):
+// the failure says what a shell's refusal means, the triangle and no J.
+TEST(SolverFailure, AnInadmissibleShellTriangleIsNamedAsSuch) {
+  const auto dir = test::scratch_directory("shell-inadmissible");
+  const int status = test::run_plisse(
+      "run " + std::string(PLISSE_SOURCE_DIR) + "/examples/shell-balloon.yaml -o " + dir.string() +
+          " --set solver.steps=1 --set solver.max_step=1 --set solver.min_step=1"
+          " --set solver.newton.line_search=basic",
+      dir.string() + ".log");
+  EXPECT_EQ(status, 1);
+  std::ifstream in(dir.string() + ".log");
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(text.find("a shell triangle collapsed, or its wall folded tighter than half its "
+                      "thickness; worst element"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("an element inverted"), std::string::npos) << text;
+  EXPECT_EQ(text.find("min J"), std::string::npos) << text;
+}
+
 // A tolerance below what round-off lets Newton reach: the homogeneous cube converges to the
 // round-off floor of its residual (about 1e-15 of its start) and the line search then finds no
 // lower one. The failure says so and what to change, not that the step was too large (the
