@@ -36,6 +36,18 @@ CaseRun run_yaml(const std::string& name, const std::string& yaml) {
   return {status, std::string((std::istreambuf_iterator<char>(in)), {}), dir};
 }
 
+/// The example `example` (a file of examples/) run by the built plisse into `name`'s scratch
+/// directory with the command-line `options`: the exit status and what plisse printed.
+CaseRun run_example(const std::string& name, const std::string& example,
+                    const std::string& options) {
+  const auto dir = test::scratch_directory(name);
+  const int status = test::run_plisse("run " + std::string(PLISSE_SOURCE_DIR) + "/examples/" +
+                                          example + " -o " + dir.string() + " " + options,
+                                      dir.string() + ".log");
+  std::ifstream in(dir.string() + ".log");
+  return {status, std::string((std::istreambuf_iterator<char>(in)), {}), dir};
+}
+
 TEST(SolverFailure, StopsWithExitStatus1AndNamesStepElementAndReason) {
   const auto dir = test::scratch_directory("solver-failure");
   const std::string case_file =
@@ -65,21 +77,16 @@ TEST(SolverFailure, StopsWithExitStatus1AndNamesStepElementAndReason) {
 // with full Newton steps. A shell triangle has no det F to name (J = 1, exactly incompressible):
 // the failure says what a shell's refusal means, the triangle and no J.
 TEST(SolverFailure, AnInadmissibleShellTriangleIsNamedAsSuch) {
-  const auto dir = test::scratch_directory("shell-inadmissible");
-  const int status = test::run_plisse(
-      "run " + std::string(PLISSE_SOURCE_DIR) + "/examples/shell-balloon.yaml -o " + dir.string() +
-          " --set solver.steps=1 --set solver.max_step=1 --set solver.min_step=1"
-          " --set solver.newton.line_search=basic",
-      dir.string() + ".log");
-  EXPECT_EQ(status, 1);
-  std::ifstream in(dir.string() + ".log");
-  const std::string text((std::istreambuf_iterator<char>(in)), {});
-  EXPECT_NE(text.find("a shell triangle collapsed, or its wall folded tighter than half its "
-                      "thickness; worst element"),
+  const CaseRun r = run_example("shell-inadmissible", "shell-balloon.yaml",
+                                "--set solver.steps=1 --set solver.max_step=1 --set "
+                                "solver.min_step=1 --set solver.newton.line_search=basic");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.log.find("a shell triangle collapsed, or its wall folded tighter than half its "
+                       "thickness; worst element"),
             std::string::npos)
-      << text;
-  EXPECT_EQ(text.find("an element inverted"), std::string::npos) << text;
-  EXPECT_EQ(text.find("min J"), std::string::npos) << text;
+      << r.log;
+  EXPECT_EQ(r.log.find("an element inverted"), std::string::npos) << r.log;
+  EXPECT_EQ(r.log.find("min J"), std::string::npos) << r.log;
 }
 
 // A tolerance below what round-off lets Newton reach: the homogeneous cube converges to the
@@ -87,21 +94,15 @@ TEST(SolverFailure, AnInadmissibleShellTriangleIsNamedAsSuch) {
 // lower one. The failure says so and what to change, not that the step was too large (the
 // message for a line search that keeps shortening full steps from the start).
 TEST(SolverFailure, AToleranceBelowTheRoundOffFloorIsNamedAsSuch) {
-  const auto dir = test::scratch_directory("round-off-floor");
-  const int status =
-      test::run_plisse("run " + std::string(PLISSE_SOURCE_DIR) +
-                           "/examples/cube-tension-neo-hookean.yaml -o " + dir.string() +
-                           " --set solver.newton.rtol=1e-15 --set solver.newton.atol=0"
-                           " --set solver.min_step=0.5",
-                       dir.string() + ".log");
-  EXPECT_EQ(status, 1);
-  std::ifstream in(dir.string() + ".log");
-  const std::string text((std::istreambuf_iterator<char>(in)), {});
-  EXPECT_NE(text.find("round-off floor of this problem lies above its tolerance"),
+  const CaseRun r = run_example(
+      "round-off-floor", "cube-tension-neo-hookean.yaml",
+      "--set solver.newton.rtol=1e-15 --set solver.newton.atol=0 --set solver.min_step=0.5");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.log.find("round-off floor of this problem lies above its tolerance"),
             std::string::npos)
-      << text;
-  EXPECT_NE(text.find("a looser solver.newton.rtol or atol"), std::string::npos) << text;
-  EXPECT_EQ(text.find("a small load carried in bending"), std::string::npos) << text;
+      << r.log;
+  EXPECT_NE(r.log.find("a looser solver.newton.rtol or atol"), std::string::npos) << r.log;
+  EXPECT_EQ(r.log.find("a small load carried in bending"), std::string::npos) << r.log;
 }
 
 // Requirement: a run that stops before its end writes its last converged step with the step
