@@ -49,7 +49,8 @@ def table_rows(case):
 def render_block(results):
     """The lines between the markers, ending in a newline, from the measurements alone."""
     lines = [
-        f"{peer_table.made_by(results)}: {peer_table.pairs_of_runs(results)} per tau, the shell then the solid, one core each. Wall time "
+        f"{peer_table.made_by(results)}: {peer_table.pairs_of_runs(results)} per tau, the "
+        "shell then the solid, one core each. Wall time "
         "and ratio: median (smallest–largest) over the pairs; peak memory: the largest; the "
         "onsets: the pole's inward travel w0 / (p R² / Y) at the last step before and the first "
         "step with hoop compression, and with wrinkles (the first instability or wrinkled ring), "

@@ -88,7 +88,8 @@ def render_block(results):
     """The lines between the markers, ending in a newline, from the measurements alone."""
     strains = results["strains"]
     lines = [
-        f"{peer_table.made_by(results)}: {peer_table.pairs_of_runs(results)} per mesh, the shell then the solid, one core each, to "
+        f"{peer_table.made_by(results)}: {peer_table.pairs_of_runs(results)} per mesh, the "
+        "shell then the solid, one core each, to "
         f"{percent(results['end_strain'])} strain. Wall time and ratio: median "
         "(smallest–largest) over the pairs; peak memory: the largest; the wavelength λ [mm] and "
         "its ratio to λ_CM (in brackets) at each strain, '–' where the run had no wrinkles "

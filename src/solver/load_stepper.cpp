@@ -55,9 +55,10 @@ std::string LoadStepper::describe_failure(const NewtonResult& newton) const {
   // has no det F that falls to zero (J = 1 when exactly incompressible): its state is refused
   // when the triangle collapses or the metric of a point of its section is not positive, the wall
   // folded tighter than half its thickness (element/shell_plane_stress.cpp).
-  const bool shell = model_.element_family() == ElementFamily::shell;
+  const ElementFamily family = model_.element_family();
+  const bool shell = family == ElementFamily::shell;
   std::string why = status.ok ? "Newton did not converge (" + newton.reason + ")"
-                    : model_.element_family() == ElementFamily::mini
+                    : family == ElementFamily::mini
                         ? "an element inverted or its bubble did not converge"
                     : shell ? "a shell triangle collapsed, or its wall folded tighter than half "
                               "its thickness"

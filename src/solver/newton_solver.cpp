@@ -321,7 +321,7 @@ NewtonSolver::ReuseOutcome NewtonSolver::iterate_with_factor(NewtonResult& resul
   // An inverted element: SNES meets it again and reports it.
   if (!residual(x_, norm)) return ReuseOutcome::not_started;
   if (reference_norm_ == 0.0) reference_norm_ = norm;
-  const double target = std::max(atol_, pass_rtol_ * reference_norm_);
+  const double target = tolerance();
   if (norm <= target) return ReuseOutcome::handed_over;  // SNES converges at once
   result.residual_history.push_back(norm);
   bool converged = false;
@@ -518,7 +518,7 @@ void NewtonSolver::read_snes_outcome(NewtonResult& result, int earlier_iteration
         result.residual_history.empty()
             ? 0.0
             : *std::min_element(result.residual_history.begin(), result.residual_history.end());
-    const double target = std::max(atol_, pass_rtol_ * reference_norm_);
+    const double target = tolerance();
     if (!result.converged && !interrupted_ && last_status_.ok && lowest > target &&
         lowest <= kFloorReduction * reference_norm_) {
       char floor[320];

@@ -37,6 +37,7 @@
 /// (allow_reuse).
 #include <petscsnes.h>
 
+#include <algorithm>
 #include <exception>
 #include <functional>
 #include <string>
@@ -188,6 +189,8 @@ class NewtonSolver {
   Vec r_kept_ = nullptr;         ///< R at the last kept reuse iterate (scratch)
   double reference_norm_ = 0.0;  ///< ||R|| where the current solve started (convergence test)
   double pass_rtol_ = 0.0;       ///< relative tolerance of the current solve
+  /// The ||R|| the current solve must reach: max(atol, pass_rtol_ ||R(x_0)||).
+  double tolerance() const { return std::max(atol_, pass_rtol_ * reference_norm_); }
   int jacobians_ = 0;            ///< tangent assemblies in the current solve
   bool chord_enabled_ = false;   ///< SNES may keep its factor between iterations (chord steps)
   bool chord_next_ = false;      ///< the coming SNES iteration keeps the factor

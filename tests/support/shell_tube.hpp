@@ -5,11 +5,25 @@
 #include <string>
 #include <vector>
 
+#include "mesh/generate.hpp"
 #include "mesh/mesh.hpp"
 #include "support/run_plisse.hpp"
 #include "support/validation_claim.hpp"
 
 namespace plisse::test {
+
+/// The mid-surface of the half tube (z >= 0) along x that `mesh: {generate: tube, symmetry:
+/// half}` gives a shell case (the VTU files hold no connectivity to read) [mm].
+inline Mesh half_tube_shell(double radius, double length, double thickness, double size) {
+  MeshGenerationSpec spec;
+  spec.kind = "tube";
+  spec.radius = radius;
+  spec.length = length;
+  spec.thickness = thickness;
+  spec.element_size = size;
+  spec.symmetry = Symmetry::half;
+  return generate_shell_surface(spec);
+}
 
 /// The centroid of each triangle of `mesh` in the reference configuration [mm].
 inline std::vector<Vec3d> triangle_centroids(const Mesh& mesh) {

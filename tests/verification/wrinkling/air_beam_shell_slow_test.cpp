@@ -38,7 +38,6 @@
 #include <string>
 #include <vector>
 
-#include "mesh/generate.hpp"
 #include "mesh/tube_mesh.hpp"
 #include "output/history_writer.hpp"
 #include "output/json_file.hpp"
@@ -81,17 +80,6 @@ struct ShellBeam {
 
 std::string number(double x) { return test::six_digits(x); }
 
-Mesh shell_tube(const Wall& w) {
-  MeshGenerationSpec spec;
-  spec.kind = "tube";
-  spec.radius = kRadius;
-  spec.length = kLength;
-  spec.thickness = w.thickness;
-  spec.element_size = w.size;
-  spec.symmetry = Symmetry::half;
-  return generate_shell_surface(spec);
-}
-
 ShellBeam bend(const Wall& w) {
   ShellBeam result;
   const double p = w.pressure;
@@ -114,7 +102,7 @@ ShellBeam bend(const Wall& w) {
                     c_force = test::history_column(history, "force_y:tip"),
                     c_moment = test::history_column(history, "moment_z:clamp");
 
-  const Mesh mesh = shell_tube(w);
+  const Mesh mesh = test::half_tube_shell(kRadius, kLength, w.thickness, w.size);
   const int around = tube_divisions_around(kRadius, w.size, true);
   // The cells' length along the axis (the generator's round(L / h) stations, mesh/tube_mesh.hpp):
   // a slice is one ring of cells.

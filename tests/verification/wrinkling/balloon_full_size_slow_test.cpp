@@ -60,7 +60,7 @@ double thin_sphere_maximum() {
   return thin_sphere_pressure(0.5 * (a + b));
 }
 
-struct Mesh2 {
+struct BalloonMesh {
   double size = 0.0, pole_size = 0.0;  ///< [mm]
 };
 
@@ -73,7 +73,7 @@ struct Balloon {
   long dofs = 0;
 };
 
-Balloon squeeze(const Mesh2& m) {
+Balloon squeeze(const BalloonMesh& m) {
   Balloon result;
   const auto dir = test::scratch_directory("balloon-full-size-h" + test::six_digits(m.size));
   const int status = test::run_plisse(
@@ -112,12 +112,12 @@ constexpr const char* kSubject =
     "rubber balloon at full size squeezed between plates, shell, R = 50 mm, R/t = 500, Ogden "
     "(Treloar)";
 
-std::string mesh_text(const Mesh2& m) {
+std::string mesh_text(const BalloonMesh& m) {
   return "h = " + test::six_digits(m.pole_size) + " mm within 30 mm of the pole, " +
          test::six_digits(m.size) + " mm elsewhere, shell triangles";
 }
 
-void expect_rows(const Mesh2& m, const Balloon& b, const std::string& id, double p_max) {
+void expect_rows(const BalloonMesh& m, const Balloon& b, const std::string& id, double p_max) {
   test::expect_claim({.row = "balloon-full-size/" + id + "/pressure-maximum",
                       .subject = kSubject,
                       .quantity = "largest pressure of the inflation [MPa]",
@@ -146,8 +146,8 @@ void expect_rows(const Mesh2& m, const Balloon& b, const std::string& id, double
 
 // The full tier only: two runs at once, about 6 CPU-minutes (PROCESSORS 2).
 TEST(BalloonFullSizeSlow, PassesItsPressureMaximumAsTheThinSphereAndStaysTautBetweenPlates) {
-  const Mesh2 coarse{.size = 3.0, .pole_size = 1.0};
-  const Mesh2 fine{.size = 2.0, .pole_size = 0.6};
+  const BalloonMesh coarse{.size = 3.0, .pole_size = 1.0};
+  const BalloonMesh fine{.size = 2.0, .pole_size = 0.6};
   auto fine_run = std::async(std::launch::async, squeeze, fine);
   const Balloon a = squeeze(coarse);
   const Balloon b = fine_run.get();
