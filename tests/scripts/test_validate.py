@@ -3,6 +3,7 @@
 Run by CTest (label unit) with Debian's python3; needs no build and runs no plisse.
 """
 import json
+import os
 import sys
 import tempfile
 import unittest
@@ -37,10 +38,18 @@ class Page(unittest.TestCase):
         self.page = root / "validation.md"
         self.records = root / "records"
         self.saved = (validate.PAGES, validate.RECORDS, validate.ROOT)
+        # The check lists the tiers from the build it is pointed at; this folder has none, so the
+        # result does not depend on which build runs these tests (the sanitizer build has no tiers).
+        self.saved_build = os.environ.get("PLISSE_BUILD_DIR")
+        os.environ["PLISSE_BUILD_DIR"] = str(root / "build")
         validate.PAGES, validate.RECORDS, validate.ROOT = [self.page], self.records, root
 
     def tearDown(self):
         validate.PAGES, validate.RECORDS, validate.ROOT = self.saved
+        if self.saved_build is None:
+            os.environ.pop("PLISSE_BUILD_DIR", None)
+        else:
+            os.environ["PLISSE_BUILD_DIR"] = self.saved_build
         self.folder.cleanup()
 
     def write(self, text, ci=None):
@@ -84,6 +93,16 @@ class TablesTest(Page):
                    record([claim("a/b", 0.97, 1.0, -0.04, -0.02, test="Gone.Test")]))
         validate.update()
         self.assertEqual(validate.check(), 1)
+
+    def test_only_a_build_of_the_slow_tests_can_list_the_tiers(self):
+        build = Path(self.folder.name) / "build"
+        self.assertFalse(validate.builds_the_tiers(build), "no build at all")
+        build.mkdir()
+        (build / "CTestTestfile.cmake").write_text("")
+        (build / "CMakeCache.txt").write_text("PLISSE_SLOW_TESTS:BOOL=OFF\n")
+        self.assertFalse(validate.builds_the_tiers(build), "the sanitizer build registers no tier")
+        (build / "CMakeCache.txt").write_text("PLISSE_SLOW_TESTS:BOOL=ON\n")
+        self.assertTrue(validate.builds_the_tiers(build))
 
     def test_a_partial_run_drops_the_rows_of_a_test_no_longer_in_the_tier(self):
         old = record([claim("a/b", 0.97, 1.0, -0.04, -0.02, test="Suite.Renamed"),
