@@ -52,7 +52,8 @@ void orient_generated_tets(Mesh& mesh, const std::string& generator) {
   }
 }
 
-void tag_boundary_edges(Mesh& mesh, const std::vector<EdgePlane>& planes) {
+void tag_boundary_edges(Mesh& mesh, const std::vector<EdgePlane>& planes,
+                        const std::string& others) {
   // Undirected side -> number of triangles using it.
   std::map<std::pair<int, int>, int> uses;
   auto key = [](int a, int b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
@@ -60,27 +61,33 @@ void tag_boundary_edges(Mesh& mesh, const std::vector<EdgePlane>& planes) {
     for (std::size_t i = 0; i < 3; ++i) ++uses[key(tri[i], tri[(i + 1) % 3])];
   // The plane of each boundary side, so that each plane's edges are consecutive (one Gmsh curve
   // per tag when written).
-  std::vector<std::vector<std::array<int, 2>>> in_plane(planes.size());
+  // in_plane[planes.size()]: the sides in none of them.
+  std::vector<std::vector<std::array<int, 2>>> in_plane(planes.size() + 1);
   for (const auto& tri : mesh.triangles)
     for (std::size_t i = 0; i < 3; ++i) {
       const int a = tri[i], b = tri[(i + 1) % 3];
       if (uses.at(key(a, b)) != 1) continue;
       const Vec3d& xa = mesh.nodes[static_cast<std::size_t>(a)];
       const Vec3d& xb = mesh.nodes[static_cast<std::size_t>(b)];
-      for (std::size_t p = 0; p < planes.size(); ++p)
-        if (xa[planes[p].axis] == planes[p].value && xb[planes[p].axis] == planes[p].value) {
-          in_plane[p].push_back({a, b});
-          break;
-        }
+      std::size_t p = 0;
+      while (p < planes.size() &&
+             !(xa[planes[p].axis] == planes[p].value && xb[planes[p].axis] == planes[p].value))
+        ++p;
+      in_plane[p].push_back({a, b});
     }
   mesh.edges.clear();
   mesh.edge_tags.clear();
-  for (std::size_t p = 0; p < planes.size(); ++p) {
-    for (const auto& name : planes[p].names) mesh.edge_tags[name];
+  for (std::size_t p = 0; p <= planes.size(); ++p) {
+    const std::vector<std::string> names =
+        p < planes.size()
+            ? planes[p].names
+            : (others.empty() ? std::vector<std::string>{} : std::vector<std::string>{others});
+    if (names.empty()) continue;
+    for (const auto& name : names) mesh.edge_tags[name];
     for (const auto& edge : in_plane[p]) {
       const int index = static_cast<int>(mesh.edges.size());
       mesh.edges.push_back(edge);
-      for (const auto& name : planes[p].names) mesh.edge_tags[name].push_back(index);
+      for (const auto& name : names) mesh.edge_tags[name].push_back(index);
     }
   }
 }

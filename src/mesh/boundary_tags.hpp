@@ -35,7 +35,9 @@ struct EdgePlane {
 /// of that plane's tags (the first plane that holds it), stored once, as its triangle runs
 /// through it: plane by plane in the order of `planes`, each plane's edges in the order of the
 /// triangles and their sides. Every plane's names get a tag, empty if no edge lies in it.
-/// Precondition: generators put the nodes of such planes exactly on them.
-void tag_boundary_edges(Mesh& mesh, const std::vector<EdgePlane>& planes);
+/// Precondition: generators put the nodes of such planes exactly on them. With `others` given,
+/// the boundary sides in none of the planes follow, as the edges of that tag (a disc's rim).
+void tag_boundary_edges(Mesh& mesh, const std::vector<EdgePlane>& planes,
+                        const std::string& others = "");
 
 }  // namespace plisse

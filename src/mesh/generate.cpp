@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "mesh/boundary_tags.hpp"
 #include "mesh/box_mesh.hpp"
+#include "mesh/disc_surface.hpp"
 #include "mesh/layered_shell.hpp"
 #include "mesh/shell_surface.hpp"
 #include "mesh/spheroid_surface.hpp"
@@ -48,6 +49,9 @@ MeshOption integer_option(std::string key, int Spec::*member, Range range, std::
 PoleRefinement pole_refinement(const Spec& spec) {
   return {spec.pole_element_size, spec.pole_radius};
 }
+
+/// A disc's refinement along its rim (size 0: none), by the pole's rule.
+PoleRefinement rim_refinement(const Spec& spec) { return {spec.rim_element_size, spec.rim_width}; }
 
 MeshOption symmetry_option() {
   return MeshOption{
@@ -164,6 +168,25 @@ const std::vector<MeshKind>& mesh_kinds() {
           MeshOption{"symmetry", "-", "part meshed: full | half (z >= 0)", nullptr, nullptr,
                      &Spec::symmetry, Range::any()},
           order}});
+    // A flat round panel (an airbag's), in the plane y = 0 with y its axis as the airbag's: the
+    // mid-surface of a shell only.
+    k.push_back(
+        {"disc",
+         "flat round panel x^2 + z^2 <= radius^2 in the plane y = 0, shell mid-surface only "
+         "(element: shell), facing +y; faces inner (-1, towards -y) and outer (+1), edge tags "
+         "rim and sym_x/sym_z on the cut planes",
+         {real_option("radius", &Spec::radius, "mm", size, "radius of the panel"),
+          real_option("thickness", &Spec::thickness, "mm", size, thickness_help),
+          real_option("element_size", &Spec::element_size, "mm", size,
+                      "target element edge (<= radius)"),
+          real_option("rim_element_size", &Spec::rim_element_size, "mm", Range::closed(0.0, 1e6),
+                      "element edge within rim_width of the rim, growing by a fifth of the "
+                      "distance beyond it up to element_size; 0: no refinement"),
+          real_option("rim_width", &Spec::rim_width, "mm", Range::closed(0.0, 1e6),
+                      "distance from the rim meshed at rim_element_size"),
+          MeshOption{"symmetry", "-",
+                     "part meshed: full | half (z >= 0) | quarter (x >= 0, z >= 0)", nullptr,
+                     nullptr, &Spec::symmetry, Range::any()}}});
     return k;
   }();
   return kinds;
@@ -232,6 +255,9 @@ double estimate_n_shell_triangles(const MeshGenerationSpec& spec) {
   if (spec.kind == "airbag")
     return estimate_spheroid_triangles(spec.radius, std::min(spec.radius, spec.height / 2.0),
                                        spec.element_size, spec.symmetry, pole_refinement(spec));
+  if (spec.kind == "disc")
+    return estimate_disc_triangles(spec.radius, spec.element_size, spec.symmetry,
+                                   rim_refinement(spec));
   return 0.0;
 }
 
@@ -246,10 +272,14 @@ void validate_spec(const MeshGenerationSpec& spec, bool shell) {
     for (const auto& k : mesh_kinds()) known += (known.empty() ? "" : ", ") + k.name;
     reject("generate", "unknown mesh kind '" + spec.kind + "' (known: " + known + ")");
   }
+  if (!shell && spec.kind == "disc")
+    reject("generate",
+           "the disc is generated as a shell's mid-surface only: give `element: shell` (or "
+           "`plisse mesh disc --element shell`); a solid panel can be read from a Gmsh file");
   if (shell && spec.kind == "cube")
     reject("generate",
            "the cube is a solid and has no mid-surface: shell meshes are generated for sheet, "
-           "spherical-shell, airbag and tube");
+           "spherical-shell, airbag, tube and disc");
   for (const auto& option : kind->options) {
     if (shell && option.integer == &Spec::layers) continue;
     std::optional<std::string> violation;
@@ -268,6 +298,22 @@ void validate_spec(const MeshGenerationSpec& spec, bool shell) {
                                       " mm (got " + number(spec.pole_element_size) + ")");
     if (spec.pole_radius > 0.0 && spec.pole_element_size == 0.0)
       reject("pole_radius", "needs pole_element_size > 0 (the size within that radius)");
+  }
+  if (spec.kind == "disc") {
+    if (spec.symmetry == Symmetry::octant)
+      reject("symmetry",
+             "a flat panel is meshed full, half (z >= 0) or quarter (x >= 0, z >= 0), not octant");
+    if (spec.element_size > spec.radius)
+      reject("element_size", "must be <= radius = " + number(spec.radius) + " mm (got " +
+                                 number(spec.element_size) + ")");
+    if (spec.rim_element_size > spec.element_size)
+      reject("rim_element_size", "must be <= element_size = " + number(spec.element_size) +
+                                     " mm (got " + number(spec.rim_element_size) + ")");
+    if (spec.rim_width > 0.0 && spec.rim_element_size == 0.0)
+      reject("rim_width", "needs rim_element_size > 0 (the size within that distance)");
+    if (spec.rim_width > spec.radius)
+      reject("rim_width", "must be <= radius = " + number(spec.radius) + " mm (got " +
+                              number(spec.rim_width) + ")");
   }
   if (spec.kind == "spherical-shell" && spec.element_size > spec.inner_radius)
     reject("element_size", "must be <= inner_radius = " + number(spec.inner_radius) + " mm (got " +
@@ -342,6 +388,26 @@ Mesh spheroid_shell_surface(SurfaceTriangulation surface, Symmetry symmetry) {
     if (planes[static_cast<std::size_t>(axis)])
       edge_planes.push_back({{std::string("sym_") + "xyz"[axis]}, axis, 0.0});
   tag_boundary_edges(mesh, edge_planes);
+  return mesh;
+}
+
+/// The disc's mid-surface (triangles facing +y, mesh_disc_surface) with its tags: the faces inner
+/// (towards -y, where an airbag's gas is) and outer, the edges on the cut planes and the rim.
+Mesh disc_shell_surface(SurfaceTriangulation surface, Symmetry symmetry) {
+  Mesh mesh;
+  mesh.nodes = std::move(surface.nodes);
+  mesh.triangles = std::move(surface.triangles);
+  std::vector<int> all(mesh.triangles.size());
+  for (std::size_t t = 0; t < all.size(); ++t) all[t] = static_cast<int>(t);
+  mesh.surface_tags["inner"] = all;
+  mesh.surface_tags["outer"] = all;
+  mesh.shell_face_side = {{"inner", -1}, {"outer", +1}};
+  const auto planes = cut_planes(symmetry);
+  std::vector<EdgePlane> edge_planes;
+  for (int axis : {0, 2})
+    if (planes[static_cast<std::size_t>(axis)])
+      edge_planes.push_back({{std::string("sym_") + "xyz"[axis]}, axis, 0.0});
+  tag_boundary_edges(mesh, edge_planes, "rim");
   return mesh;
 }
 
@@ -428,6 +494,10 @@ Mesh generate_shell_surface(const MeshGenerationSpec& spec) {
     mesh = make_rectangle_surface(
         spec.length, spec.width, 0.5 * spec.thickness,
         {sheet_cells(spec.length, spec.element_size), sheet_cells(spec.width, spec.element_size)});
+  } else if (spec.kind == "disc") {
+    mesh = disc_shell_surface(
+        mesh_disc_surface(spec.radius, spec.element_size, spec.symmetry, rim_refinement(spec)),
+        spec.symmetry);
   } else if (spec.kind == "tube") {
     mesh = make_tube_surface(spec.radius, spec.length, spec.element_size,
                              spec.symmetry == Symmetry::half, tube_stations_of(spec));

@@ -1,6 +1,6 @@
 #pragma once
 /// Generated meshes (through the Gmsh API): cube, spherical shell, airbag, sheet, tube; and the
-/// mid-surfaces of all but the cube as shells.
+/// mid-surfaces of all but the cube as shells, and a flat circular panel (disc) as a shell only.
 ///
 /// The options of each kind are declared once in `mesh_kinds()` (key, unit, range, help, default);
 /// the case-file parser (`mesh:` section) and `plisse mesh KIND --key value` both read that table,
@@ -22,14 +22,14 @@ enum class Symmetry { full, half, quarter, octant };
 
 /// All generator inputs. Which members a kind uses is declared in `mesh_kinds()`.
 struct MeshGenerationSpec {
-  std::string kind;  ///< "cube" | "spherical-shell" | "airbag" | "sheet" | "tube"
+  std::string kind;  ///< "cube" | "spherical-shell" | "airbag" | "sheet" | "tube" | "disc"
   // cube: [0, edge]^3
   double edge = 5.0;  ///< [mm]
   int divisions = 4;  ///< element divisions per edge
   // spherical-shell: inner radius, wall thickness
   double inner_radius = 10.0;  ///< [mm]
   // airbag: oblate closed shell, equatorial radius and total height of the mid-surface;
-  // tube: mid-surface radius (radius) and length (length)
+  // tube: mid-surface radius (radius) and length (length); disc: its radius
   double radius = 50.0;  ///< [mm]
   double height = 20.0;  ///< [mm]
   // sheet: [0, length] x [0, width] x [0, thickness]
@@ -44,6 +44,9 @@ struct MeshGenerationSpec {
   // shell and airbag: finer elements about the +y pole (0 = none; docs/meshes.md)
   double pole_element_size = 0.0;  ///< edge at the pole [mm]
   double pole_radius = 0.0;        ///< distance from the pole meshed at pole_element_size [mm]
+  // disc: finer elements along the rim (0 = none; the pole's rule, PoleRefinement)
+  double rim_element_size = 0.0;  ///< edge at the rim [mm]
+  double rim_width = 0.0;         ///< distance from the rim meshed at rim_element_size [mm]
   // tube: cells along the axis graded from the end x = 0 (0 = uniform; tube_stations)
   double end_element_size = 0.0;  ///< cell length at x = 0 [mm]
   double end_length = 0.0;        ///< distance from x = 0 over which it grows to element_size [mm]

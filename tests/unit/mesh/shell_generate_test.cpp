@@ -366,6 +366,120 @@ std::string refusal(const MeshGenerationSpec& spec, std::string& key) {
   return "";
 }
 
+class DiscShellSurface : public ::testing::TestWithParam<Symmetry> {};
+
+// The flat panel of an airbag: every node in the plane y = 0, every triangle facing +y, the rim's
+// nodes on the circle to round-off, the area of the inscribed polygon short of the disc's (kept
+// part of pi R^2) by the O(h^2) of its chords, the rim's edges covering the kept arc.
+TEST_P(DiscShellSurface, FlatFacingUpWithItsRimOnTheCircle) {
+  MeshGenerationSpec spec;
+  spec.kind = "disc";
+  spec.radius = 30.0;
+  spec.thickness = 0.2;
+  spec.element_size = 2.0;
+  spec.symmetry = GetParam();
+  const Mesh mesh = generate_shell_surface(spec);
+  for (const auto& x : mesh.nodes) {
+    EXPECT_EQ(x.y(), 0.0);
+    EXPECT_LE(std::hypot(x.x(), x.z()), 30.0 * (1.0 + 1e-15));
+  }
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    EXPECT_GT(area_vector(mesh, t).y(), 0.0) << "triangle " << t;
+  const double exact = kept_fraction(spec.symmetry) * std::numbers::pi * 30.0 * 30.0;
+  const double deficit = 1.0 - total_area(mesh) / exact;
+  EXPECT_GT(deficit, 0.0);
+  EXPECT_LT(deficit, 2e-3);  // a chord of 2 on radius 30: (h/R)^2 / 12 of the area near the rim
+  auto tags = cut_edge_tags(spec.symmetry);
+  tags["rim"] = {1, 0.0};  // in the panel's plane
+  expect_shell_conventions(mesh, 0.2, {"inner", "outer"}, tags);
+  double rim = 0.0;
+  for (int e : mesh.edge_tags.at("rim")) {
+    for (int n : mesh.edges[static_cast<std::size_t>(e)]) {
+      const Vec3d& x = mesh.nodes[static_cast<std::size_t>(n)];
+      EXPECT_NEAR(std::hypot(x.x(), x.z()), 30.0, 1e-12 * 30.0);
+    }
+    rim += edge_length(mesh, e);
+  }
+  const double arc = kept_fraction(spec.symmetry) * 2.0 * std::numbers::pi * 30.0;
+  EXPECT_GT(rim, arc * (1.0 - 1e-3));
+  EXPECT_LT(rim, arc);
+  const double estimate = estimate_n_shell_triangles(spec);
+  EXPECT_NEAR(static_cast<double>(mesh.triangles.size()) / estimate, 1.0, 0.3);
+  std::cout << "disc " << to_string(spec.symmetry) << ": " << mesh.triangles.size()
+            << " triangles (estimate " << estimate << "), area deficit " << deficit << "\n";
+}
+
+INSTANTIATE_TEST_SUITE_P(Symmetries, DiscShellSurface,
+                         ::testing::Values(Symmetry::full, Symmetry::half, Symmetry::quarter),
+                         [](const auto& info) { return to_string(info.param); });
+
+TEST(GenerateShellSurface, RimRefinementMakesSmallTrianglesAlongTheRim) {
+  MeshGenerationSpec spec;
+  spec.kind = "disc";
+  spec.radius = 100.0;
+  spec.thickness = 0.2;
+  spec.element_size = 10.0;
+  spec.symmetry = Symmetry::quarter;
+  const Mesh plain = generate_shell_surface(spec);
+  spec.rim_element_size = 2.0;
+  spec.rim_width = 5.0;
+  const Mesh refined = generate_shell_surface(spec);
+  double longest_rim = 0.0;
+  for (int e : refined.edge_tags.at("rim"))
+    longest_rim = std::max(longest_rim, edge_length(refined, e));
+  EXPECT_LT(longest_rim, 1.2 * 2.0) << "the rim's edges are rim_element_size";
+  double longest_centre = 0.0;  // the middle keeps element_size
+  for (std::size_t t = 0; t < refined.triangles.size(); ++t) {
+    if (centroid(refined, t).norm() > 30.0) continue;
+    const auto& n = refined.triangles[t];
+    for (std::size_t i = 0; i < 3; ++i)
+      longest_centre =
+          std::max(longest_centre, (refined.nodes[static_cast<std::size_t>(n[i])] -
+                                    refined.nodes[static_cast<std::size_t>(n[(i + 1) % 3])])
+                                       .norm());
+  }
+  EXPECT_GT(longest_centre, 0.7 * 10.0);
+  EXPECT_GT(refined.triangles.size(), plain.triangles.size());
+  EXPECT_NEAR(static_cast<double>(refined.triangles.size()) / estimate_n_shell_triangles(spec), 1.0,
+              0.3);
+  std::cout << "rim: " << plain.triangles.size() << " -> " << refined.triangles.size()
+            << " triangles, longest rim edge " << longest_rim << "\n";
+}
+
+TEST(GenerateShellSurface, TheDiscIsAShellOnlyAndRefusesItsBadOptions) {
+  std::string key;
+  MeshGenerationSpec spec;
+  spec.kind = "disc";
+  spec.radius = 50.0;
+  spec.element_size = 5.0;
+  try {
+    generate_mesh(spec);
+    ADD_FAILURE() << "a solid disc was generated";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.rule().find("shell's mid-surface only"), std::string::npos) << e.rule();
+    EXPECT_EQ(e.place().key, "mesh.generate");
+  }
+  spec.symmetry = Symmetry::octant;
+  EXPECT_NE(refusal(spec, key).find("not octant"), std::string::npos);
+  EXPECT_EQ(key, "mesh.symmetry");
+  spec.symmetry = Symmetry::quarter;
+  spec.rim_width = 5.0;
+  EXPECT_NE(refusal(spec, key).find("needs rim_element_size > 0"), std::string::npos);
+  EXPECT_EQ(key, "mesh.rim_width");
+  spec.rim_element_size = 6.0;
+  EXPECT_NE(refusal(spec, key).find("must be <= element_size = 5 mm"), std::string::npos);
+  EXPECT_EQ(key, "mesh.rim_element_size");
+  spec.rim_element_size = 1.0;
+  spec.rim_width = 60.0;
+  EXPECT_NE(refusal(spec, key).find("must be <= radius = 50 mm"), std::string::npos);
+  EXPECT_EQ(key, "mesh.rim_width");
+  spec.rim_width = 5.0;
+  spec.element_size = 60.0;
+  spec.rim_element_size = 1.0;
+  EXPECT_NE(refusal(spec, key).find("must be <= radius = 50 mm"), std::string::npos);
+  EXPECT_EQ(key, "mesh.element_size");
+}
+
 TEST(GenerateShellSurface, RefusesTheCubeSecondOrderAndTooManyTriangles) {
   std::string key;
   MeshGenerationSpec spec;
