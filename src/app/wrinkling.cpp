@@ -1,10 +1,12 @@
 #include "app/wrinkling.hpp"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <set>
+#include <utility>
 
 #include "analysis/surface_columns.hpp"
 #include "core/error.hpp"
@@ -153,6 +155,24 @@ std::vector<HeldPlane> shell_symmetry_planes(const Case& c, const Mesh& mesh) {
   return planes;
 }
 
+/// The components a shell's `displacement` conditions prescribe, as planes their nodes stay in:
+/// a seam held on a mid-plane (`value: [~, 0, ~]`) stays on it under a random imperfection,
+/// which would otherwise lift it along the flat wall's normal, off the plane that closes a
+/// cavity. (Fully held edges move with the wall, as a solid's supports do.)
+std::vector<HeldPlane> shell_prescribed_planes(const Case& c, const Mesh& mesh) {
+  std::vector<HeldPlane> planes;
+  for (const TermEntry& entry : c.terms) {
+    if (entry.kind->word != "displacement" || !entry.kind->constrain) continue;
+    std::array<std::vector<int>, 3> held;
+    for (const ConstrainedComponent& cc : collect_constraints({entry}, mesh))
+      held[static_cast<std::size_t>(cc.component)].push_back(cc.node);
+    for (int k = 0; k < 3; ++k)
+      if (!held[static_cast<std::size_t>(k)].empty())
+        planes.push_back({held[static_cast<std::size_t>(k)], Vec3d::Unit(k)});
+  }
+  return planes;
+}
+
 /// The sides of a shell's clamped and symmetry edges (Mesh::side_mirrors), from the reference
 /// positions the model starts from, and the sides where it meets a rigid region, which are
 /// clamped to it (clamp_to_rigid: a rigid region only translates).
@@ -192,11 +212,12 @@ Mesh load_perturbed_mesh(const Case& c) {
         throw InputError(imperfection_place(c),
                          "a random imperfection moves the wall along the normals of the surface '" +
                              tag + "' (output.wrinkles.surface), which the mesh does not have");
-      if (mesh.is_shell())
+      if (mesh.is_shell()) {
+        std::vector<HeldPlane> held = shell_symmetry_planes(c, mesh);
+        for (HeldPlane& plane : shell_prescribed_planes(c, mesh)) held.push_back(std::move(plane));
         field = compute_random_imperfection(mesh, tagged_triangles(mesh, tag), amplitude,
-                                            static_cast<std::uint64_t>(st.seed), {},
-                                            shell_symmetry_planes(c, mesh));
-      else
+                                            static_cast<std::uint64_t>(st.seed), {}, held);
+      } else
         field = compute_random_imperfection(mesh, tagged_triangles(mesh, tag), amplitude,
                                             static_cast<std::uint64_t>(st.seed),
                                             mirror_surfaces(c.terms));

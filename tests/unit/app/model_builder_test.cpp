@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -435,6 +436,37 @@ TEST(ModelBuilder, AShellRegionOnASurfaceTagHasItsOwnThicknessDensityAndMaterial
   const double weight = 9810.0 * (3.0e-9 * seam_area * 1.5 + 1.0e-9 * rest_area * 0.5);
   EXPECT_NEAR(total.z(), weight, 1e-13 * weight);
   std::filesystem::remove_all(dir);
+}
+
+// An airbag's panel: a quarter disc whose rim a `displacement` condition holds on the plane
+// y = 0 (the seam on the bag's mid-plane, `value: [~, 0, ~]`). A random imperfection of 0.1 t moves
+// the flat panel along its normal y, but not the rim: its nodes keep y = 0 (else the cavity under
+// the panel would not be closed by that plane), while the other nodes move by up to 0.1 t.
+TEST(ModelBuilder, ARandomImperfectionKeepsAShellEdgeOnThePlaneADisplacementConditionHolds) {
+  const std::string text =
+      "element: shell\n"
+      "mesh: {generate: disc, radius: 30.0, thickness: 0.2, element_size: 3.0, symmetry: quarter}\n"
+      "material: {model: neo-hookean, c1: 1.0}\n"
+      "boundary:\n"
+      "  - {type: symmetry, surface: sym_x}\n"
+      "  - {type: symmetry, surface: sym_z}\n"
+      "  - {type: displacement, surface: rim, value: [~, 0, ~]}\n"
+      "cavities:\n  - {name: gas, surface: inner, control: volume, volume_change: 100.0}\n"
+      "solver: {stability: {imperfection: 0.1, seed: 3}}\n";
+  const Case c = parse_case_string(text, "c.yaml");
+  const Mesh mesh = load_perturbed_mesh(c);
+  std::set<int> rim;
+  for (int e : mesh.edge_tags.at("rim"))
+    for (int n : mesh.edges[static_cast<std::size_t>(e)]) rim.insert(n);
+  ASSERT_FALSE(rim.empty());
+  double largest = 0.0;
+  for (int n = 0; n < mesh.n_nodes(); ++n) {
+    const double y = mesh.nodes[static_cast<std::size_t>(n)].y();
+    if (rim.count(n) != 0) EXPECT_EQ(y, 0.0) << "rim node " << n;
+    largest = std::max(largest, std::abs(y));
+  }
+  EXPECT_NEAR(largest, 0.1 * 0.2, 1e-12) << "the imperfection's amplitude, off the rim";
+  EXPECT_EQ(build_model_parts(c, mesh).terms.empty(), false);
 }
 
 // A die on the same sheet meets the shell's face half the thickness of its candidate triangles
