@@ -371,9 +371,12 @@ void validate_spec(const MeshGenerationSpec& spec, bool shell) {
   }
 }
 
-/// The mid-surface `surface` (outward triangles, from mesh_spheroid_surface) of a spheroid shell
-/// cut by `symmetry`, with its tags.
-Mesh spheroid_shell_surface(SurfaceTriangulation surface, Symmetry symmetry) {
+/// The mid-surface `surface` of a spheroid shell (outward triangles, mesh_spheroid_surface) or of
+/// a disc (facing +y, mesh_disc_surface) cut by `symmetry`, with its tags: the faces inner (-1)
+/// and outer (+1), the edges on the cut planes, and the rest of the boundary as `others` (the
+/// disc's rim) when given.
+Mesh faced_shell_surface(SurfaceTriangulation surface, Symmetry symmetry,
+                         const std::string& others = "") {
   Mesh mesh;
   mesh.nodes = std::move(surface.nodes);
   mesh.triangles = std::move(surface.triangles);
@@ -387,27 +390,7 @@ Mesh spheroid_shell_surface(SurfaceTriangulation surface, Symmetry symmetry) {
   for (int axis = 0; axis < 3; ++axis)
     if (planes[static_cast<std::size_t>(axis)])
       edge_planes.push_back({{std::string("sym_") + "xyz"[axis]}, axis, 0.0});
-  tag_boundary_edges(mesh, edge_planes);
-  return mesh;
-}
-
-/// The disc's mid-surface (triangles facing +y, mesh_disc_surface) with its tags: the faces inner
-/// (towards -y, where an airbag's gas is) and outer, the edges on the cut planes and the rim.
-Mesh disc_shell_surface(SurfaceTriangulation surface, Symmetry symmetry) {
-  Mesh mesh;
-  mesh.nodes = std::move(surface.nodes);
-  mesh.triangles = std::move(surface.triangles);
-  std::vector<int> all(mesh.triangles.size());
-  for (std::size_t t = 0; t < all.size(); ++t) all[t] = static_cast<int>(t);
-  mesh.surface_tags["inner"] = all;
-  mesh.surface_tags["outer"] = all;
-  mesh.shell_face_side = {{"inner", -1}, {"outer", +1}};
-  const auto planes = cut_planes(symmetry);
-  std::vector<EdgePlane> edge_planes;
-  for (int axis : {0, 2})
-    if (planes[static_cast<std::size_t>(axis)])
-      edge_planes.push_back({{std::string("sym_") + "xyz"[axis]}, axis, 0.0});
-  tag_boundary_edges(mesh, edge_planes, "rim");
+  tag_boundary_edges(mesh, edge_planes, others);
   return mesh;
 }
 
@@ -495,9 +478,9 @@ Mesh generate_shell_surface(const MeshGenerationSpec& spec) {
         spec.length, spec.width, 0.5 * spec.thickness,
         {sheet_cells(spec.length, spec.element_size), sheet_cells(spec.width, spec.element_size)});
   } else if (spec.kind == "disc") {
-    mesh = disc_shell_surface(
+    mesh = faced_shell_surface(
         mesh_disc_surface(spec.radius, spec.element_size, spec.symmetry, rim_refinement(spec)),
-        spec.symmetry);
+        spec.symmetry, "rim");
   } else if (spec.kind == "tube") {
     mesh = make_tube_surface(spec.radius, spec.length, spec.element_size,
                              spec.symmetry == Symmetry::half, tube_stations_of(spec));
@@ -506,7 +489,7 @@ Mesh generate_shell_surface(const MeshGenerationSpec& spec) {
     const bool sphere = spec.kind == "spherical-shell";
     const double a = sphere ? spec.inner_radius + 0.5 * spec.thickness : spec.radius;
     const double c = sphere ? a : spec.height / 2.0;
-    mesh = spheroid_shell_surface(
+    mesh = faced_shell_surface(
         mesh_spheroid_surface(a, c, spec.element_size, spec.symmetry, pole_refinement(spec)),
         spec.symmetry);
   }
