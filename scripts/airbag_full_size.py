@@ -1,0 +1,191 @@
+"""A driver airbag at full size, from runs of examples/airbag-full-size.yaml
+(docs/studies/airbag-full-size.md).
+
+Usage:
+  scripts/airbag-full-size --summary RUN [RUN ...]   the table of the study page, one row a run
+  scripts/airbag-full-size --figures DIR RUN [...]   the study's figures, into DIR
+
+The bag is two flat round panels of radius r joined at their rims; the case models one quarter of
+one panel. Its inextensible limit is Paulsen's Mylar balloon (Paulsen 1994, "What is the shape of
+a Mylar balloon?", Amer. Math. Monthly 101(10), 953-958): the profile z(x) of the upper panel with
+z' = -x^2 / sqrt(a^4 - x^4), whose meridian keeps the panel's radius r as its length, so that
+  r = a I0,  I0 = int_0^1 du / sqrt(1 - u^4) = Gamma(1/4)^2 / (4 sqrt(2 pi)) = 1.31103,
+  half height h = a int_0^1 u^2 du / sqrt(1 - u^4) = (pi / 4) a / I0,
+  volume V = 2 pi a^3 int_0^1 u^4 du / sqrt(1 - u^4) = (2 pi / 3) I0 a^3.
+
+The seam's folds, from the last written step: the rim nodes' distance from the axis against their
+angle over the quarter; a fold is a maximum of that distance that rises at least FOLD_PROMINENCE
+(in wall thicknesses) above the minima on both sides; their number over the full circle is four
+times the quarter's, the wavelength the mean rim's circumference over that count, and the depth
+the largest rise of a fold over its neighbouring minima. The large folds are those that rise at
+least LARGE_FOLD of the deepest: the seam's few deep folds among its fine crimps.
+"""
+import argparse
+import math
+import os
+import sys
+
+import numpy as np
+
+from plisse_study import figures, runs
+
+FOLD_PROMINENCE = 1.0  # wall thicknesses
+LARGE_FOLD = 0.2  # a large fold rises at least this share of the deepest one
+
+
+def paulsen(r):
+    """(a, h, V) of the Mylar balloon made of two discs of radius r: rim radius, half height,
+    volume of the whole bag."""
+    i0 = math.gamma(0.25) ** 2 / (4.0 * math.sqrt(2.0 * math.pi))
+    a = r / i0
+    return a, math.pi / 4.0 * a / i0, 2.0 * math.pi / 3.0 * i0 * a**3
+
+
+def paulsen_profile(r, n=400):
+    """(x, z) of the upper panel's profile: z(x) = int_x^a u^2 du / sqrt(a^4 - u^4), by the
+    substitution u = a (1 - s^2) that removes the root's singularity at the rim."""
+    a, h, _ = paulsen(r)
+    x = a * (1.0 - np.linspace(0.0, 1.0, n) ** 2)
+    z = np.empty_like(x)
+    for k, xk in enumerate(x):
+        smax = math.sqrt(1.0 - xk / a)
+        s = np.linspace(0.0, smax, 400)
+        u = 1.0 - s**2
+        f = u**2 * 2.0 * s / np.sqrt(np.maximum((1.0 - u) * (1.0 + u) * (1.0 + u**2), 1e-300))
+        f[0] = 2.0 * 1.0 / math.sqrt(2.0 * 2.0)  # the limit s -> 0: 2 s / (s sqrt(4)) = 1
+        z[k] = a * np.trapz(f, s)
+    return x, z
+
+
+def panel(run):
+    """(radius, thickness) of the run's panel, from summary.json's `--set` overrides or the case."""
+    summary = runs.read_summary(run, required=True)
+    sets = runs.set_values(summary)
+    return float(sets.get("mesh.radius", 350.0)), float(sets.get("mesh.thickness", 0.35))
+
+
+def seam(path, radius, thickness):
+    """(angle [deg], distance from the axis [mm]) of the rim's nodes at the step file `path`, by
+    angle, and the folds: (count over the full circle, wavelength [mm], depth [mm], mean radius)."""
+    mesh = runs.read_raw_vtu(path)
+    X = mesh.points
+    x = X + mesh.point_data["displacement"]
+    on_rim = np.abs(np.hypot(X[:, 0], X[:, 2]) - radius) < 1e-6 * radius
+    angle = np.degrees(np.arctan2(X[on_rim, 2], X[on_rim, 0]))
+    order = np.argsort(angle)
+    angle = angle[order]
+    r = np.hypot(x[on_rim, 0], x[on_rim, 2])[order]
+    peaks, depths = folds(r, FOLD_PROMINENCE * thickness)
+    count = 4 * len(peaks)
+    mean = float(np.mean(r))
+    wavelength = 2.0 * math.pi * mean / count if count else float("nan")
+    deepest = max(depths, default=0.0)
+    large = 4 * sum(1 for d in depths if d >= LARGE_FOLD * deepest)
+    return angle, r, (count, wavelength, deepest, mean, large)
+
+
+def folds(r, prominence):
+    """Indices of the maxima of r that rise at least `prominence` above the lowest value between
+    them and the next higher point (or the end) on each side, and those rises."""
+    peaks, rises = [], []
+    n = len(r)
+    for i in range(1, n - 1):
+        if not (r[i] > r[i - 1] and r[i] >= r[i + 1]):
+            continue
+        left = i
+        low_left = r[i]
+        while left > 0 and r[left - 1] <= r[i]:
+            left -= 1
+            low_left = min(low_left, r[left])
+        right = i
+        low_right = r[i]
+        while right < n - 1 and r[right + 1] <= r[i]:
+            right += 1
+            low_right = min(low_right, r[right])
+        rise = r[i] - max(low_left, low_right)
+        if rise >= prominence:
+            peaks.append(i)
+            rises.append(float(rise))
+    return peaks, rises
+
+
+def summary_row(run):
+    radius, thickness = panel(run)
+    s = runs.read_summary(run, required=True)
+    h = runs.read_history(run, required=True)
+    a, half, volume = paulsen(radius)
+    last = len(h["time"]) - 1
+    _, _, (count, wavelength, depth, mean, large) = seam(runs.last_vtu(run), radius, thickness)
+    bag = 2.0 * h["full_volume:gas"][last]  # the quarter's mirrors make half the bag
+    return {"run": runs.run_name(run), "unknowns": s.get("free_dofs"), "steps": s.get("steps"),
+            "wall [s]": (s.get("wall_time") or {}).get("total"), "peak [MiB]": s.get("peak_memory_mib"),
+            "p [kPa]": 1e3 * h["pressure:gas"][last], "V / V_P": bag / volume,
+            "crown / h_P": (h["uy:crown"][last]) / half, "seam / a_P": mean / a,
+            "folds": count, "wavelength [mm]": wavelength, "depth [mm]": depth,
+            "large folds": large}
+
+
+def print_summary(paths):
+    rows = [summary_row(run) for run in paths]
+    keys = list(rows[0])
+    print("| " + " | ".join(keys) + " |")
+    print("|" + "---|" * len(keys))
+    for row in rows:
+        print("| " + " | ".join(f"{v:.4g}" if isinstance(v, float) else str(v)
+                                for v in row.values()) + " |")
+
+
+def draw(folder, paths):
+    import matplotlib.pyplot as plt
+
+    os.makedirs(folder, exist_ok=True)
+    fig, (pv, profile, rim) = plt.subplots(1, 3, figsize=(14, 4.2))
+    for run in paths:
+        radius, thickness = panel(run)
+        h = runs.read_history(run, required=True)
+        name = runs.run_name(run)
+        pv.plot(2e-6 * np.asarray(h["full_volume:gas"]), 1e3 * np.asarray(h["pressure:gas"]),
+                label=name)
+        mesh = runs.read_raw_vtu(runs.last_vtu(run))
+        x = mesh.points + mesh.point_data["displacement"]
+        profile.plot(np.hypot(x[:, 0], x[:, 2]), x[:, 1], ".", ms=1, label=name)
+        angle, r, (count, _, _, _, large) = seam(runs.last_vtu(run), radius, thickness)
+        rim.plot(angle, r, label=f"{name}: {count} folds, {large} large")
+    a, half, volume = paulsen(radius)
+    pv.axvline(1e-6 * volume, color="k", ls=":", label="Paulsen's volume")
+    pv.set_xlabel("volume of the whole bag [L]")
+    pv.set_ylabel("gas pressure [kPa]")
+    pv.set_title("pressure against volume (the damped path)")
+    px, pz = paulsen_profile(radius)
+    profile.plot(px, pz, "k-", label="Paulsen 1994 (inextensible)")
+    profile.set_aspect("equal")
+    profile.set_xlabel("distance from the axis [mm]")
+    profile.set_ylabel("height above the seam [mm]")
+    profile.set_title("the panel at the end")
+    rim.axhline(a, color="k", ls=":", label="Paulsen's rim radius")
+    rim.set_xlabel("angle about the axis [deg]")
+    rim.set_ylabel("seam's distance from the axis [mm]")
+    rim.set_title("the seam's folds (a quarter)")
+    for ax in (pv, profile, rim):
+        ax.legend(fontsize=7)
+    figures.save(fig, os.path.join(folder, "airbag-full-size.png"))
+    print(f"wrote {os.path.join(folder, 'airbag-full-size.png')}")
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    mode = parser.add_mutually_exclusive_group(required=True)
+    mode.add_argument("--summary", nargs="+", metavar="RUN")
+    mode.add_argument("--figures", nargs="+", metavar=("DIR", "RUN"))
+    args = parser.parse_args(argv)
+    if args.summary:
+        print_summary(args.summary)
+    else:
+        if len(args.figures) < 2:
+            parser.error("--figures DIR RUN [RUN ...]")
+        draw(args.figures[0], args.figures[1:])
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,47 @@
+"""Unit tests of scripts/airbag_full_size.py: Paulsen's Mylar balloon against its own profile
+integrated independently, and the seam's fold count on synthetic seams."""
+import math
+import sys
+import unittest
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
+import airbag_full_size as bag  # noqa: E402
+
+
+class PaulsenTest(unittest.TestCase):
+    def test_the_closed_forms_agree_with_the_profile(self):
+        a, h, volume = bag.paulsen(350.0)
+        self.assertAlmostEqual(350.0 / a, 1.3110287771, places=9)  # Paulsen's r / a
+        self.assertAlmostEqual(h / a, 0.5990701174, places=9)
+        x, z = bag.paulsen_profile(350.0, n=2000)
+        self.assertAlmostEqual(z[-1], h, delta=1e-3 * h)  # the crown, at x = 0
+        self.assertEqual(z[0], 0.0)  # the rim
+        # The meridian's length is the disc's radius, and the volume 2 pi int x z dx, twice.
+        length = np.sum(np.hypot(np.diff(x), np.diff(z)))
+        self.assertAlmostEqual(length / 350.0, 1.0, delta=2e-3)
+        order = np.argsort(x)
+        both = 2.0 * 2.0 * math.pi * np.trapz(x[order] * z[order], x[order])
+        self.assertAlmostEqual(both / volume, 1.0, delta=2e-3)
+
+
+class FoldsTest(unittest.TestCase):
+    def test_counts_the_maxima_that_rise_above_their_neighbours(self):
+        angle = np.linspace(0.0, 0.5 * math.pi, 401)
+        r = 270.0 + 2.0 * np.cos(12 * angle)  # 3 interior maxima in the quarter, 4 mm deep
+        peaks, rises = bag.folds(r, 0.35)
+        self.assertEqual(len(peaks), 2)  # the ends are not maxima: 2 interior crests at 30, 60 deg
+        for rise in rises:
+            self.assertAlmostEqual(rise, 4.0, delta=1e-3)
+
+    def test_a_ripple_below_the_prominence_is_no_fold(self):
+        angle = np.linspace(0.0, 0.5 * math.pi, 401)
+        r = 270.0 + 0.1 * np.cos(40 * angle) - 10.0 * np.exp(-((angle - 0.7) / 0.05) ** 2)
+        peaks, rises = bag.folds(r, 0.35)
+        self.assertEqual(len(peaks), 0)  # the deep fold is a minimum; the ripple is 0.2 mm
+
+
+if __name__ == "__main__":
+    unittest.main()
