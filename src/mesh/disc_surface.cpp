@@ -15,17 +15,6 @@
 #include "mesh/gmsh_session.hpp"
 
 namespace plisse {
-namespace {
-
-/// The azimuth the kept part spans about y.
-double kept_azimuth(Symmetry symmetry) {
-  return symmetry == Symmetry::full   ? 2.0 * std::numbers::pi
-         : symmetry == Symmetry::half ? std::numbers::pi
-                                      : 0.5 * std::numbers::pi;
-}
-
-}  // namespace
-
 double estimate_disc_triangles(double radius, double h, Symmetry symmetry,
                                const PoleRefinement& rim) {
   constexpr int kSteps = 20000;
@@ -34,7 +23,7 @@ double estimate_disc_triangles(double radius, double h, Symmetry symmetry,
   for (int i = 0; i < kSteps; ++i) {
     const double r = (i + 0.5) * dr;
     const double s = rim.size_at(radius - r, h);
-    n += kept_azimuth(symmetry) * r * dr / (std::sqrt(3.0) / 4.0 * s * s);
+    n += 2.0 * std::numbers::pi * kept_fraction(symmetry) * r * dr / (std::sqrt(3.0) / 4.0 * s * s);
   }
   return n;
 }
@@ -50,7 +39,7 @@ SurfaceTriangulation mesh_disc_surface(double radius, double h, Symmetry symmetr
     gmsh::model::add("disc");
     // The sector in the x-y plane (angle from +x towards +y), turned a quarter about +x so that
     // +y goes to +z: the kept part x >= 0, z >= 0 of a quarter, z >= 0 of a half.
-    const double sweep = kept_azimuth(symmetry);
+    const double sweep = 2.0 * std::numbers::pi * kept_fraction(symmetry);
     int surface_tag = 0;
     if (symmetry == Symmetry::full) {
       surface_tag = gmsh::model::occ::addDisk(0.0, 0.0, 0.0, radius, radius);
@@ -99,20 +88,8 @@ SurfaceTriangulation mesh_disc_surface(double radius, double h, Symmetry symmetr
     gmsh::model::mesh::generate(2);
     session.check_internal("disc meshing");
 
-    std::vector<std::size_t> node_tags, element_tags, element_nodes;
-    std::vector<double> coords, parametric;
-    gmsh::model::mesh::getNodes(node_tags, coords, parametric, 2, surface_tag,
-                                /*includeBoundary=*/true, false);
     std::unordered_map<std::size_t, int> index;
-    for (std::size_t i = 0; i < node_tags.size(); ++i) {
-      if (!index.emplace(node_tags[i], static_cast<int>(surface.nodes.size())).second) continue;
-      surface.nodes.emplace_back(coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]);
-    }
-    gmsh::model::mesh::getElementsByType(2, element_tags, element_nodes, surface_tag);
-    for (std::size_t e = 0; e < element_tags.size(); ++e)
-      surface.triangles.push_back({index.at(element_nodes[3 * e]),
-                                   index.at(element_nodes[3 * e + 1]),
-                                   index.at(element_nodes[3 * e + 2])});
+    append_gmsh_triangles(surface_tag, surface, index);
     session.check_internal("disc mesh");
   } catch (const Error&) {
     throw;

@@ -193,6 +193,22 @@ double kept_fraction(Symmetry symmetry) {
   return 1.0;
 }
 
+void append_gmsh_triangles(int surface_tag, SurfaceTriangulation& surface,
+                           std::unordered_map<std::size_t, int>& index) {
+  std::vector<std::size_t> node_tags, element_tags, element_nodes;
+  std::vector<double> coords, parametric;
+  gmsh::model::mesh::getNodes(node_tags, coords, parametric, 2, surface_tag,
+                              /*includeBoundary=*/true, false);
+  for (std::size_t i = 0; i < node_tags.size(); ++i) {
+    if (!index.emplace(node_tags[i], static_cast<int>(surface.nodes.size())).second) continue;
+    surface.nodes.emplace_back(coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]);
+  }
+  gmsh::model::mesh::getElementsByType(2, element_tags, element_nodes, surface_tag);
+  for (std::size_t e = 0; e < element_tags.size(); ++e)
+    surface.triangles.push_back({index.at(element_nodes[3 * e]), index.at(element_nodes[3 * e + 1]),
+                                 index.at(element_nodes[3 * e + 2])});
+}
+
 SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetry symmetry,
                                            const PoleRefinement& pole) {
   PLISSE_CHECK(a > 0.0 && b > 0.0 && h > 0.0, "mesh_spheroid_surface: sizes must be positive");
@@ -256,21 +272,7 @@ SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetr
     gmsh::vectorpair surfaces;
     gmsh::model::getEntities(surfaces, 2);
     std::unordered_map<std::size_t, int> index;
-    for (const auto& [dim, tag] : surfaces) {
-      std::vector<std::size_t> node_tags, element_tags, element_nodes;
-      std::vector<double> coords, parametric;
-      gmsh::model::mesh::getNodes(node_tags, coords, parametric, 2, tag, /*includeBoundary=*/true,
-                                  false);
-      for (std::size_t i = 0; i < node_tags.size(); ++i) {
-        if (!index.emplace(node_tags[i], static_cast<int>(surface.nodes.size())).second) continue;
-        surface.nodes.emplace_back(coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]);
-      }
-      gmsh::model::mesh::getElementsByType(2, element_tags, element_nodes, tag);
-      for (std::size_t e = 0; e < element_tags.size(); ++e)
-        surface.triangles.push_back({index.at(element_nodes[3 * e]),
-                                     index.at(element_nodes[3 * e + 1]),
-                                     index.at(element_nodes[3 * e + 2])});
-    }
+    for (const auto& [dim, tag] : surfaces) append_gmsh_triangles(tag, surface, index);
     session.check_internal("spheroid surface mesh");
   } catch (const Error&) {
     throw;

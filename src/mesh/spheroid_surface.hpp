@@ -2,7 +2,9 @@
 /// Triangulation of a (partial) sphere or oblate spheroid with Gmsh (shell and airbag generators).
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <functional>
+#include <unordered_map>
 
 #include "mesh/generate.hpp"
 #include "mesh/layered_shell.hpp"
@@ -40,6 +42,13 @@ struct PoleRefinement {
 /// that point. Throws Error if Gmsh fails.
 SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetry symmetry,
                                            const PoleRefinement& pole = {});
+
+/// Appends the nodes and 3-node triangles Gmsh meshed on its surface entity `surface_tag` (its
+/// boundary's nodes included) to `surface`; `index` maps Gmsh node tags to the nodes already
+/// appended, so that entities glued along a curve share its nodes. Call inside a GmshSession,
+/// after meshing.
+void append_gmsh_triangles(int surface_tag, SurfaceTriangulation& surface,
+                           std::unordered_map<std::size_t, int>& index);
 
 /// Orients the triangles of `surface` along the surface normal `normal(p)` (Gmsh orients each
 /// OpenCASCADE face on its own), then repairs triangles whose three corners lie on one cut plane
