@@ -462,7 +462,9 @@ TEST(ModelBuilder, ARandomImperfectionKeepsAShellEdgeOnThePlaneADisplacementCond
   double largest = 0.0;
   for (int n = 0; n < mesh.n_nodes(); ++n) {
     const double y = mesh.nodes[static_cast<std::size_t>(n)].y();
-    if (rim.count(n) != 0) EXPECT_EQ(y, 0.0) << "rim node " << n;
+    if (rim.count(n) != 0) {
+      EXPECT_EQ(y, 0.0) << "rim node " << n;
+    }
     largest = std::max(largest, std::abs(y));
   }
   EXPECT_NEAR(largest, 0.1 * 0.2, 1e-12) << "the imperfection's amplitude, off the rim";
