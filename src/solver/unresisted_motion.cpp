@@ -19,9 +19,11 @@ constexpr double kUnresisted = 1e-10;
 /// Destroys the PETSc objects it holds on every way out.
 struct Owned {
   Mat K = nullptr;
+  Vec Kv = nullptr;
   std::vector<Vec> v, y;
   ~Owned() {
     MatDestroy(&K);
+    VecDestroy(&Kv);
     for (Vec& x : v) VecDestroy(&x);
     for (Vec& x : y) VecDestroy(&x);
   }
@@ -87,9 +89,17 @@ std::string unresisted_rigid_motion(MixedModel& model) {
       W.col(static_cast<Eigen::Index>(j)) =
           span.eigenvectors().col(seen[j]) / std::sqrt(span.eigenvalues()[seen[j]]);
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> resisted(W.transpose() * B * W);
-    const double weakest = std::sqrt(std::max(resisted.eigenvalues()[0], 0.0));
-    if (weakest > kUnresisted * norm_K) continue;
     const Eigen::VectorXd c = W * resisted.eigenvectors().col(0);
+    // |K v| / |v| of the weakest combination v = sum c_i v_i, from the vectors themselves: the
+    // Gram matrix's eigenvalue is a square, whose round-off leaves its root uncertain by about
+    // 1e-8 of the largest |K v_i|, too coarse for kUnresisted.
+    if (o.Kv == nullptr) o.Kv = model.create_vector();
+    PLISSE_PETSC(VecSet(o.Kv, 0.0));
+    for (int i = 0; i < n; ++i) PLISSE_PETSC(VecAXPY(o.Kv, c[i], o.y[static_cast<std::size_t>(i)]));
+    PetscReal norm_Kv = 0.0;
+    PLISSE_PETSC(VecNorm(o.Kv, NORM_2, &norm_Kv));
+    const double weakest = norm_Kv / std::sqrt(c.dot(A * c));
+    if (!(weakest <= kUnresisted * norm_K)) continue;
     RigidMotion motion{Vec3d::Zero(), Vec3d::Zero(), piece.centre};
     for (int i = 0; i < n; ++i) {
       motion.translation += c[i] * piece.motions[static_cast<std::size_t>(i)].translation;
