@@ -92,11 +92,13 @@ TEST(SolverFailure, AnInadmissibleShellTriangleIsNamedAsSuch) {
 // A tolerance below what round-off lets Newton reach: the homogeneous cube converges to the
 // round-off floor of its residual (about 1e-15 of its start) and the line search then finds no
 // lower one. The failure says so and what to change, not that the step was too large (the
-// message for a line search that keeps shortening full steps from the start).
+// message for a line search that keeps shortening full steps from the start). The tolerance,
+// 1e-17, is below double precision's relative resolution (1.1e-16): an rtol of 1e-15 lies at the
+// floor itself, which some machines' BLAS kernels reached on this cube and others did not.
 TEST(SolverFailure, AToleranceBelowTheRoundOffFloorIsNamedAsSuch) {
   const CaseRun r = run_example(
       "round-off-floor", "cube-tension-neo-hookean.yaml",
-      "--set solver.newton.rtol=1e-15 --set solver.newton.atol=0 --set solver.min_step=0.5");
+      "--set solver.newton.rtol=1e-17 --set solver.newton.atol=0 --set solver.min_step=0.5");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.log.find("round-off floor of this problem lies above its tolerance"),
             std::string::npos)
