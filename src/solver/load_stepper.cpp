@@ -228,16 +228,23 @@ bool LoadStepper::switch_branch(StepInfo& info, SteppingResult& result, const Lo
     NewtonResult newton;
     const std::string failure = solve_step(newton, result);
     if (!failure.empty()) {
+      // Near the inflection of the residual along the mode (S10) Newton's first step is huge
+      // and it can wander off; from farther out it converges.
       model_.restore_converged();
+      const bool again =
+          attempt + 1 < kAmplitudeTries && !newton.out_of_memory && !(interrupt_ && interrupt_());
       std::snprintf(line, sizeof line,
-                    "step %d: branch switching with amplitude %.4g mm failed (%s); keeping "
-                    "the unperturbed state",
-                    info.step, a, failure.c_str());
+                    "step %d: branch switching with amplitude %.4g mm failed (%s)%s", info.step, a,
+                    failure.c_str(),
+                    again ? "; trying a larger amplitude" : "; keeping the unperturbed state");
       log("  " + std::string(line));
-      return true;
+      if (!again) return true;
+      continue;
     }
+    // Fallen back: within half the first amplitude of the unperturbed state. Not half of `a`:
+    // from a larger amplitude Newton may land on a buckled state nearer than a/2 (S10).
     const double moved = max_nodal_distance(model_.state(), unperturbed, n_nodes);
-    if (moved < 0.5 * a) {
+    if (moved < 0.5 * stability_.perturbation_mm) {
       model_.restore_converged();
       std::snprintf(line, sizeof line,
                     "step %d: the re-solve from amplitude %.4g mm fell back onto the "

@@ -21,12 +21,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <iostream>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include "mesh/generate.hpp"
+#include "output/json_file.hpp"
 #include "support/run_plisse.hpp"
 #include "verification/wrinkling/sheet_profile.hpp"
 
@@ -107,6 +109,65 @@ TEST(TensionWrinklingShellRegression, ShellSheetWrinklesAtTheSolidsOnsetWithTheS
   EXPECT_GE(at_ten->crests, 5);
   EXPECT_GE(at_ten->wavelength, kWavelengthLow);
   EXPECT_LE(at_ten->wavelength, kWavelengthHigh);
+}
+
+// The branch switch tries its larger amplitudes when Newton fails from the first one
+// (docs/theory/stability.md, S10). On shell triangles of 0.3 mm (15 t) and the case's own steps
+// (the bench's path, the clamp's 60 % ramp over t in [0, 1], stopped here at 6 %), the check finds
+// the bifurcation at step 12 (t = 0.0584, 3.5 %), and Newton from 0.1 t along the mode does not
+// converge in its 20 iterations: near the inflection of the residual along the mode its first step
+// is long. Before the larger amplitudes were tried after such a failure, the run stayed on the
+// flat, unstable branch up to 20 % strain, without wrinkles. The switched state is the one the
+// smaller and larger amplitudes reach where they converge (measured: max |du| 0.0130 mm from
+// 0.001, 0.004 and 0.006 mm; with 0.032 mm after the failures at 0.002 and 0.008 mm), nearer the
+// flat state than half the amplitude that reached it: a switch, not a fall-back (S10's bar is half
+// the first amplitude). The sheet is then stable and wrinkled across its width.
+TEST(TensionWrinklingShellRegression, AFailedBranchSwitchTriesTheLargerAmplitudes) {
+  const auto dir = test::scratch_directory("sheet-tension-shell-switch");
+  const std::string log = dir.string() + ".log";
+  const std::string options =
+      " --set mesh.element_size=0.3 --set boundary[0].ramp=[0,1] --set solver.end_time=0.1"
+      " --set solver.steps=192 --set solver.max_step=0.083334";
+  const int status = test::run_plisse("run " + std::string(PLISSE_SOURCE_DIR) +
+                                          "/validation/sheet-tension-wrinkling-shell.yaml -o " +
+                                          dir.string() + options,
+                                      log);
+  ASSERT_EQ(status, 0) << "see " << log;
+
+  // The setup: the first amplitude fails at the first instability.
+  int failed = 0;
+  std::ifstream in(log);
+  for (std::string line; std::getline(in, line);) {
+    if (line.find("branch switching with amplitude 0.002 mm failed") != std::string::npos) {
+      EXPECT_NE(line.find("trying a larger amplitude"), std::string::npos) << line;
+      ++failed;
+    }
+  }
+  ASSERT_GE(failed, 1) << "Newton from the first amplitude converged: this mesh no longer tests "
+                          "the retry (see "
+                       << log << ")";
+
+  const nlohmann::json summary = read_json_file(dir / "summary.json");
+  const nlohmann::json& first = summary.at("stability").at("instabilities").at(0);
+  EXPECT_EQ(first.at("step").get<int>(), 12);
+  EXPECT_TRUE(first.at("branch_switched").get<bool>()) << "see " << log;
+  EXPECT_GT(first.at("perturbation_mm").get<double>(), 0.1 * kThickness);
+
+  MeshGenerationSpec spec;
+  spec.kind = "sheet";
+  spec.length = kLength / 2;
+  spec.width = 10.0;
+  spec.thickness = kThickness;
+  spec.element_size = 0.3;
+  const std::vector<test::SheetProfile> steps =
+      test::measure_sheet_run(dir, generate_shell_surface(spec), 1e-4 * kThickness);
+  ASSERT_FALSE(steps.empty());
+  test::print_sheet_steps(std::cout, steps, kLength, kThickness);
+  const test::SheetProfile& last = steps.back();
+  EXPECT_NEAR(last.strain, 0.06, 0.005);
+  EXPECT_GE(last.crests, 5) << "the sheet stayed flat";
+  EXPECT_GT(last.amplitude, 0.1 * kThickness);
+  EXPECT_EQ(summary.at("stability").at("stable_at_end").get<bool>(), true);
 }
 
 }  // namespace
