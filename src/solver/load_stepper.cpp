@@ -231,8 +231,8 @@ bool LoadStepper::switch_branch(StepInfo& info, SteppingResult& result, const Lo
       // Near the inflection of the residual along the mode (S10) Newton's first step is huge
       // and it can wander off; from farther out it converges.
       model_.restore_converged();
-      const bool again =
-          attempt + 1 < kAmplitudeTries && !newton.out_of_memory && !(interrupt_ && interrupt_());
+      const bool again = attempt + 1 < kAmplitudeTries && !newton.out_of_memory &&
+                         !newton.interrupted && !(interrupt_ && interrupt_());
       std::snprintf(line, sizeof line,
                     "step %d: branch switching with amplitude %.4g mm failed (%s)%s", info.step, a,
                     failure.c_str(),
