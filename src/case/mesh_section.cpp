@@ -74,7 +74,7 @@ std::string mesh_options_markdown() {
       if (o.real) fallback = schema::doc_number(defaults.*o.real);
       if (o.integer) type = "integer", fallback = std::to_string(defaults.*o.integer);
       if (o.symmetry) {
-        type = schema::doc_choice({"full", "half", "quarter", "octant"});
+        type = schema::doc_choice(o.symmetries);
         fallback = "`" + to_string(defaults.*o.symmetry) + "`";
       }
       const std::string range = o.symmetry ? "" : Schema<MeshSection>::range_text(o.range);

@@ -53,16 +53,23 @@ PoleRefinement pole_refinement(const Spec& spec) {
 /// A disc's refinement along its rim (size 0: none), by the pole's rule.
 PoleRefinement rim_refinement(const Spec& spec) { return {spec.rim_element_size, spec.rim_width}; }
 
-MeshOption symmetry_option() {
-  return MeshOption{
-      "symmetry",
-      "-",
-      "part meshed: full | half (z >= 0) | quarter (x >= 0, z >= 0) | octant (x, y, z >= 0)",
-      nullptr,
-      nullptr,
-      &Spec::symmetry,
-      Range::any()};
+/// The symmetry option of a kind that meshes the parts `kept` (of full, half, quarter, octant,
+/// in that order), with its help.
+MeshOption symmetry_option(std::vector<std::string> kept) {
+  static const std::vector<std::pair<std::string, std::string>> parts = {
+      {"full", "full"},
+      {"half", "half (z >= 0)"},
+      {"quarter", "quarter (x >= 0, z >= 0)"},
+      {"octant", "octant (x, y, z >= 0)"}};
+  std::string help = "part meshed:";
+  for (const auto& [name, text] : parts)
+    if (std::find(kept.begin(), kept.end(), name) != kept.end())
+      help += (help.back() == ':' ? " " : " | ") + text;
+  return MeshOption{"symmetry",      "-",          help,           nullptr, nullptr,
+                    &Spec::symmetry, Range::any(), std::move(kept)};
 }
+
+MeshOption symmetry_option() { return symmetry_option({"full", "half", "quarter", "octant"}); }
 
 std::string number(double v) {
   std::ostringstream out;
@@ -165,9 +172,7 @@ const std::vector<MeshKind>& mesh_kinds() {
           real_option("end_length", &Spec::end_length, "mm", Range::closed(0.0, 1e6),
                       "distance from x = 0 over which the cells grow from end_element_size to "
                       "element_size"),
-          MeshOption{"symmetry", "-", "part meshed: full | half (z >= 0)", nullptr, nullptr,
-                     &Spec::symmetry, Range::any()},
-          order}});
+          symmetry_option({"full", "half"}), order}});
     // A flat round panel (an airbag's), in the plane y = 0 with y its axis as the airbag's: the
     // mid-surface of a shell only.
     k.push_back(
@@ -184,9 +189,7 @@ const std::vector<MeshKind>& mesh_kinds() {
                       "distance beyond it up to element_size; 0: no refinement"),
           real_option("rim_width", &Spec::rim_width, "mm", Range::closed(0.0, 1e6),
                       "distance from the rim meshed at rim_element_size"),
-          MeshOption{"symmetry", "-",
-                     "part meshed: full | half (z >= 0) | quarter (x >= 0, z >= 0)", nullptr,
-                     nullptr, &Spec::symmetry, Range::any()}}});
+          symmetry_option({"full", "half", "quarter"})}});
     return k;
   }();
   return kinds;

@@ -63,6 +63,9 @@ struct MeshOption {
   int MeshGenerationSpec::*integer = nullptr;
   Symmetry MeshGenerationSpec::*symmetry = nullptr;
   Range range = Range::any();  ///< for real and integer options
+  /// For the symmetry option: the parts the kind can mesh ("full", "half", ...), in that order;
+  /// validate_mesh_spec refuses the others.
+  std::vector<std::string> symmetries = {};
 };
 
 struct MeshKind {
