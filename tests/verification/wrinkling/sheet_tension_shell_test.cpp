@@ -21,6 +21,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <numbers>
@@ -40,6 +41,27 @@ constexpr double kFinalStrain = 0.12;  ///< nominal strain at the end of the run
 constexpr double kOnsetLow = 0.025, kOnsetHigh = 0.04;
 // The study's converged shell wavelength at 10 %, 3.30 mm (0.25 and 0.125 mm), within 3 %.
 constexpr double kWavelengthLow = 0.97 * 3.298, kWavelengthHigh = 1.03 * 3.302;
+
+// Runs validation/sheet-tension-wrinkling-shell.yaml into `dir` with the --set `options`; the
+// log is dir.log. Returns plisse's exit status.
+int run_shell_sheet(const std::filesystem::path& dir, const std::string& options) {
+  return test::run_plisse("run " + std::string(PLISSE_SOURCE_DIR) +
+                              "/validation/sheet-tension-wrinkling-shell.yaml -o " + dir.string() +
+                              options,
+                          dir.string() + ".log");
+}
+
+// The profile of every written step of the run in `dir`, on the case's quarter sheet meshed as
+// shell triangles of `h` [mm] (the run's own mesh, generated again).
+std::vector<test::SheetProfile> shell_sheet_steps(const std::filesystem::path& dir, double h) {
+  MeshGenerationSpec spec;
+  spec.kind = "sheet";
+  spec.length = kLength / 2;
+  spec.width = 10.0;
+  spec.thickness = kThickness;
+  spec.element_size = h;
+  return test::measure_sheet_run(dir, generate_shell_surface(spec), 1e-4 * kThickness);
+}
 
 // The measure on a shell's mesh, all of whose nodes lie in the mid-surface z = t/2: the synthetic
 // pattern of sheet_tension_slow_test.cpp, w = A cos(2 pi y / lambda) exp(-(y / 5.5)^2) on the
@@ -73,20 +95,9 @@ TEST(TensionWrinklingShellRegression, ShellSheetWrinklesAtTheSolidsOnsetWithTheS
   const std::string options =
       " --set boundary[0].value=[-3.0,0,0] --set solver.steps=384"
       " --set solver.max_step=0.041666666666666664 --set output.every=1";
-  const int status = test::run_plisse("run " + std::string(PLISSE_SOURCE_DIR) +
-                                          "/validation/sheet-tension-wrinkling-shell.yaml -o " +
-                                          dir.string() + options,
-                                      dir.string() + ".log");
-  ASSERT_EQ(status, 0) << "see " << dir.string() << ".log";
+  ASSERT_EQ(run_shell_sheet(dir, options), 0) << "see " << dir.string() << ".log";
 
-  MeshGenerationSpec spec;
-  spec.kind = "sheet";
-  spec.length = kLength / 2;
-  spec.width = 10.0;
-  spec.thickness = kThickness;
-  spec.element_size = 0.5;
-  const std::vector<test::SheetProfile> steps =
-      test::measure_sheet_run(dir, generate_shell_surface(spec), 1e-4 * kThickness);
+  const std::vector<test::SheetProfile> steps = shell_sheet_steps(dir, 0.5);
   // The log's "new instability" step: the strain is kFinalStrain t.
   const double onset = kFinalStrain * test::first_instability_time(dir.string() + ".log");
   ASSERT_GE(steps.size(), 20u);
@@ -128,11 +139,7 @@ TEST(TensionWrinklingShellRegression, AFailedBranchSwitchTriesTheLargerAmplitude
   const std::string options =
       " --set mesh.element_size=0.3 --set boundary[0].ramp=[0,1] --set solver.end_time=0.1"
       " --set solver.steps=192 --set solver.max_step=0.083334";
-  const int status = test::run_plisse("run " + std::string(PLISSE_SOURCE_DIR) +
-                                          "/validation/sheet-tension-wrinkling-shell.yaml -o " +
-                                          dir.string() + options,
-                                      log);
-  ASSERT_EQ(status, 0) << "see " << log;
+  ASSERT_EQ(run_shell_sheet(dir, options), 0) << "see " << log;
 
   // The setup: the first amplitude fails at the first instability.
   int failed = 0;
@@ -153,14 +160,7 @@ TEST(TensionWrinklingShellRegression, AFailedBranchSwitchTriesTheLargerAmplitude
   EXPECT_TRUE(first.at("branch_switched").get<bool>()) << "see " << log;
   EXPECT_GT(first.at("perturbation_mm").get<double>(), 0.1 * kThickness);
 
-  MeshGenerationSpec spec;
-  spec.kind = "sheet";
-  spec.length = kLength / 2;
-  spec.width = 10.0;
-  spec.thickness = kThickness;
-  spec.element_size = 0.3;
-  const std::vector<test::SheetProfile> steps =
-      test::measure_sheet_run(dir, generate_shell_surface(spec), 1e-4 * kThickness);
+  const std::vector<test::SheetProfile> steps = shell_sheet_steps(dir, 0.3);
   ASSERT_FALSE(steps.empty());
   test::print_sheet_steps(std::cout, steps, kLength, kThickness);
   const test::SheetProfile& last = steps.back();
