@@ -93,7 +93,8 @@ Schema<StabilitySettings> stability_schema() {
   s.boolean("branch_switch", &StabilitySettings::branch_switch,
             "perturb along the critical mode when stability is lost");
   s.integer("modes", &StabilitySettings::modes, Range::at_least(1),
-            "eigenmodes computed at an instability");
+            "eigenmodes computed at an instability (the lowest; more are searched when the "
+            "nearest zero miss the negative ones)");
   s.real("imperfection", &StabilitySettings::imperfection, Range::non_negative(), "–",
          "imperfection amplitude / wall thickness");
   s.choice<std::string>("imperfection_kind", &StabilitySettings::imperfection_kind,

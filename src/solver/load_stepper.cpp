@@ -30,6 +30,9 @@ class LogStage {
 /// Branch switching re-solves from u + a φ1 with a, 4a, 16a, 64a while Newton falls back onto
 /// the unperturbed (unstable) equilibrium (stability.md, S10).
 constexpr int kAmplitudeTries = 4;
+/// The most eigenpairs an instability's search asks for when the nearest ones miss the negative
+/// eigenvalues the inertia counts.
+constexpr int kMostModes = 64;
 constexpr double kAmplitudeGrowth = 4.0;
 
 /// max over nodes of |u(x) - u(y)| [mm] (displacement components only).
@@ -191,6 +194,21 @@ std::string LoadStepper::report_instability(StepInfo& info, const Inertia& inert
     eigen.count = stability_.modes;
     const LogStage stage("Stability eigenmodes");
     info.modes = lowest_eigenmodes(model_, eigen);
+    // The pairs nearest 0 can all be positive while the inertia counts negative eigenvalues
+    // farther out (a thin wall has many soft modes): more pairs until the unstable ones are among
+    // them, then the lowest stability_.modes kept (stability.md, S9).
+    const int unstable = inertia.negative - expected;
+    const int most = std::min(model_.n_free(), kMostModes);
+    const auto negative = [&] {
+      return static_cast<int>(std::count_if(info.modes.begin(), info.modes.end(),
+                                            [](const Eigenmode& m) { return m.eigenvalue < 0.0; }));
+    };
+    while (negative() < unstable && eigen.count < most) {
+      eigen.count = std::min(2 * eigen.count, most);
+      info.modes = lowest_eigenmodes(model_, eigen);
+    }
+    if (info.modes.size() > static_cast<std::size_t>(stability_.modes))
+      info.modes.resize(static_cast<std::size_t>(stability_.modes));
     if (!info.modes.empty()) {
       std::snprintf(line, sizeof line, "%.6g", info.modes.front().eigenvalue);
       lowest = line;
