@@ -30,10 +30,10 @@ class LogStage {
 /// Branch switching re-solves from u + a φ1 with a, 4a, 16a, 64a while Newton falls back onto
 /// the unperturbed (unstable) equilibrium (stability.md, S10).
 constexpr int kAmplitudeTries = 4;
-/// The most eigenpairs an instability's search asks for when the nearest ones miss the negative
-/// eigenvalues the inertia counts.
-constexpr int kMostModes = 64;
 constexpr double kAmplitudeGrowth = 4.0;
+/// The most eigenpairs an instability's search asks for when the nearest ones miss the negative
+/// eigenvalues the inertia counts (stability.md, S7).
+constexpr int kMostModes = 64;
 
 /// max over nodes of |u(x) - u(y)| [mm] (displacement components only).
 double max_nodal_distance(const std::vector<double>& x, const std::vector<double>& y, int n_nodes) {
@@ -196,7 +196,7 @@ std::string LoadStepper::report_instability(StepInfo& info, const Inertia& inert
     info.modes = lowest_eigenmodes(model_, eigen);
     // The pairs nearest 0 can all be positive while the inertia counts negative eigenvalues
     // farther out (a thin wall has many soft modes): more pairs until the unstable ones are among
-    // them, then the lowest stability_.modes kept (stability.md, S9).
+    // them, then the lowest stability_.modes kept (stability.md, S7).
     const int unstable = inertia.negative - expected;
     const int most = std::min(model_.n_free(), kMostModes);
     const auto negative = [&] {
