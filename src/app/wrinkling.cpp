@@ -240,6 +240,7 @@ StabilityCheckSettings stability_check_settings(const Case& c) {
   o.branch_switch = st.branch_switch;
   o.modes = st.modes;
   o.stop_when_unstable = st.stop_when_unstable;
+  o.koiter_start = st.branch_start == "koiter";
   if (st.branch_switch) o.perturbation_mm = st.branch_amplitude * *c.mesh.wall_thickness();
   return o;
 }

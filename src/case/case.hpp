@@ -144,6 +144,9 @@ struct StabilitySettings {
   std::string imperfection_from;
   int imperfection_mode = 1;      ///< >= 1
   double branch_amplitude = 0.1;  ///< perturbation along the critical mode / wall thickness, > 0
+  /// Where a branch switch starts Newton: "koiter" (the asymptotic estimate, then the
+  /// perturbations if it does not switch) or "perturbation" (the perturbations only).
+  std::string branch_start = "koiter";
   /// End the run, completed, at the first step found unstable that a branch switch (when on) did
   /// not leave: the step before and this one bracket the buckling or collapse load.
   bool stop_when_unstable = false;

@@ -34,6 +34,7 @@ const Choices<StepControl> kStepControls{{"load", StepControl::load},
 const Choices<LinearSolverType> kLinearSolverTypes{{"direct", LinearSolverType::direct},
                                                    {"iterative", LinearSolverType::iterative}};
 const Choices<std::string> kImperfectionKinds{{"random", "random"}, {"mode", "mode"}};
+const Choices<std::string> kBranchStarts{{"koiter", "koiter"}, {"perturbation", "perturbation"}};
 
 /// `solver.newton.linear`: the iterative solver's keys do not apply to the direct one.
 Schema<LinearSolverSettings> linear_solver_schema() {
@@ -119,7 +120,15 @@ Schema<StabilitySettings> stability_schema() {
   s.integer("imperfection_mode", &StabilitySettings::imperfection_mode, Range::at_least(1),
             "which mode (`mode_N` field) of that run");
   s.real("branch_amplitude", &StabilitySettings::branch_amplitude, Range::positive(), "–",
-         "size of the perturbation along the critical mode at a branch switch / wall thickness");
+         "size of the perturbation along the critical mode at a branch switch / wall thickness; "
+         "also the difference step of Koiter's estimate and the least distance from the "
+         "unstable state that counts as a switch (half of it)");
+  s.choice<std::string>("branch_start", &StabilitySettings::branch_start, kBranchStarts,
+                        "where a branch switch starts Newton: koiter: Koiter's estimate of the "
+                        "buckled state from the critical mode and the second-order field "
+                        "(symmetric tangents), then the perturbations if it does not switch; "
+                        "perturbation: the state perturbed along the mode by 1, 4, 16 and 64 "
+                        "`branch_amplitude` (docs/theory/stability.md, S10)");
   s.boolean("stop_when_unstable", &StabilitySettings::stop_when_unstable,
             "end the run, completed, at the first step the check finds unstable and a branch "
             "switch (when on) does not leave: that step and the one before bracket the buckling "

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <new>
 
+#include "solver/branch_start.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/petsc_call.hpp"
 #include "solver/unresisted_motion.hpp"
@@ -231,25 +232,59 @@ std::string LoadStepper::report_instability(StepInfo& info, const Inertia& inert
 bool LoadStepper::switch_branch(StepInfo& info, SteppingResult& result, const Log& log,
                                 const std::string& lowest, int expected, Inertia& inertia,
                                 bool& switched) {
-  // (stability.md, S10): u += a φ1 on the displacement dofs (φ1 is zero on constrained ones),
-  // the same time solved again; the model's converged state is the unperturbed one.
+  // (stability.md, S10): Newton from a state near the buckled one, the same time solved again;
+  // the model's converged state is the unperturbed one. The starts: Koiter's estimate (S10a) when
+  // the tangent's factor is at hand, then u + a φ1 on the displacement dofs (φ1 is zero on
+  // constrained ones) with growing amplitudes.
   const std::vector<double>& phi = info.modes.front().state;
   const std::vector<double> unperturbed = model_.converged_state();
   const int n_nodes = model_.mesh().n_nodes();
   char line[320];
-  double a = stability_.perturbation_mm;
   newton_.allow_reuse(false);  // an unstable state (newton_solver.hpp, allow_reuse)
-  for (int attempt = 0; attempt < kAmplitudeTries; ++attempt, a *= kAmplitudeGrowth) {
+  struct Start {
+    double amplitude;
+    std::vector<double> state;  ///< empty: u + amplitude φ1
+  };
+  std::vector<Start> starts;
+  if (const Mat factor = stability_.koiter_start ? inertia_->factor() : nullptr) {
+    try {
+      BranchStart estimate =
+          asymptotic_branch_start(model_, factor, phi, stability_.perturbation_mm);
+      char what[64] = "no buckled state near";
+      if (estimate.amplitude != 0.0)
+        std::snprintf(what, sizeof what, "amplitude %.4g mm", estimate.amplitude);
+      std::snprintf(line, sizeof line,
+                    "step %d: Koiter's estimate along mode 1: %s (k = %.4g N, q = %.4g N/mm, "
+                    "c = %.4g N/mm^2)",
+                    info.step, what, estimate.k, estimate.q, estimate.c);
+      log("  " + std::string(line));
+      if (estimate.amplitude != 0.0)
+        starts.push_back({std::abs(estimate.amplitude), std::move(estimate.state)});
+    } catch (const Error& e) {
+      log("  step " + std::to_string(info.step) + ": Koiter's estimate failed (" + e.what() +
+          "); perturbing along the mode instead");
+    }
+  }
+  for (int i = 0; i < kAmplitudeTries; ++i)
+    starts.push_back({stability_.perturbation_mm * std::pow(kAmplitudeGrowth, i), {}});
+
+  const int n_starts = static_cast<int>(starts.size());
+  for (int attempt = 0; attempt < n_starts; ++attempt) {
+    const double a = starts[static_cast<std::size_t>(attempt)].amplitude;
     auto& x = model_.state();
-    for (int v = 0; v < n_nodes; ++v)
-      for (int k = 0; k < 3; ++k) x[DofMap::dof(v, k)] += a * phi[DofMap::dof(v, k)];
+    if (!starts[static_cast<std::size_t>(attempt)].state.empty()) {
+      x = starts[static_cast<std::size_t>(attempt)].state;
+    } else {
+      for (int v = 0; v < n_nodes; ++v)
+        for (int k = 0; k < 3; ++k) x[DofMap::dof(v, k)] += a * phi[DofMap::dof(v, k)];
+    }
     NewtonResult newton;
     const std::string failure = solve_step(newton, result);
     if (!failure.empty()) {
       // Near the inflection of the residual along the mode (S10) Newton's first step is huge
       // and it can wander off; from farther out it converges.
       model_.restore_converged();
-      const bool again = attempt + 1 < kAmplitudeTries && !newton.out_of_memory &&
+      const bool again = attempt + 1 < n_starts && !newton.out_of_memory &&
                          !newton.interrupted && !(interrupt_ && interrupt_());
       std::snprintf(line, sizeof line,
                     "step %d: branch switching with amplitude %.4g mm failed (%s)%s", info.step, a,
@@ -268,8 +303,8 @@ bool LoadStepper::switch_branch(StepInfo& info, SteppingResult& result, const Lo
                     "step %d: the re-solve from amplitude %.4g mm fell back onto the "
                     "unperturbed state (max |du| %.3g mm)%s",
                     info.step, a, moved,
-                    attempt + 1 < kAmplitudeTries ? "; trying a larger amplitude"
-                                                  : "; keeping the unperturbed state");
+                    attempt + 1 < n_starts ? "; trying a larger amplitude"
+                                           : "; keeping the unperturbed state");
       log("  " + std::string(line));
       continue;
     }

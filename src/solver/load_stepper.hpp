@@ -28,6 +28,9 @@ struct StabilityCheckSettings {
   int modes = 4;                 ///< eigenmodes computed at a new instability, >= 1
   double perturbation_mm = 0.0;  ///< amplitude a of u += a φ1 [mm] (relative amplitude x wall
                                  ///< thickness, computed by the caller), > 0 with branch_switch
+  /// Start the branch switch's Newton from Koiter's estimate before the perturbations
+  /// (stability.md, S10a); false: the perturbations only.
+  bool koiter_start = true;
   /// End the run, completed, at the first checked step that is unstable after any branch switch.
   bool stop_when_unstable = false;
 };

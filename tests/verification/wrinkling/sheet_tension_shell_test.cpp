@@ -122,52 +122,92 @@ TEST(TensionWrinklingShellRegression, ShellSheetWrinklesAtTheSolidsOnsetWithTheS
   EXPECT_LE(at_ten->wavelength, kWavelengthHigh);
 }
 
-// The branch switch tries its larger amplitudes when Newton fails from the first one
-// (docs/theory/stability.md, S10). On shell triangles of 0.3 mm (15 t) and the case's own steps
-// (the bench's path, the clamp's 60 % ramp over t in [0, 1], stopped here at 6 %), the check finds
-// the bifurcation at step 12 (t = 0.0584, 3.5 %), and Newton from 0.1 t along the mode does not
-// converge in its 20 iterations: near the inflection of the residual along the mode its first step
-// is long. Before the larger amplitudes were tried after such a failure, the run stayed on the
-// flat, unstable branch up to 20 % strain, without wrinkles. The switched state is the one the
-// smaller and larger amplitudes reach where they converge (measured: max |du| 0.0130 mm from
-// 0.001, 0.004 and 0.006 mm; with 0.032 mm after the failures at 0.002 and 0.008 mm), nearer the
-// flat state than half the amplitude that reached it: a switch, not a fall-back (S10's bar is half
-// the first amplitude). The sheet is then stable and wrinkled across its width.
-TEST(TensionWrinklingShellRegression, AFailedBranchSwitchTriesTheLargerAmplitudes) {
-  const auto dir = test::scratch_directory("sheet-tension-shell-switch");
-  const std::string log = dir.string() + ".log";
+// Two ways onto the wrinkled branch (docs/theory/stability.md, S10 and S10a), on shell triangles
+// of 0.3 mm (15 t) and the case's own steps (the bench's path, the clamp's 60 % ramp over t in
+// [0, 1], stopped here at 6 %); the check finds the bifurcation at step 12 (t = 0.0584, 3.5 %).
+//  - `branch_start: perturbation`: Newton from 0.1 t along the mode does not converge in its 20
+//    iterations (near the inflection of the residual along the mode its first step is long), and
+//    the larger amplitudes are tried. Before they were tried after such a failure, the run stayed
+//    on the flat, unstable branch up to 20 % strain, without wrinkles. The switched state is the
+//    one the smaller and larger amplitudes reach where they converge (measured: max |du|
+//    0.0130 mm from 0.001, 0.004 and 0.006 mm; with 0.032 mm after the failures at 0.002 and
+//    0.008 mm), nearer the flat state than half the amplitude that reached it: a switch, not a
+//    fall-back (S10's bar is half the first amplitude).
+//  - `branch_start: koiter` (the default): Newton starts from Koiter's estimate (measured:
+//    amplitude 0.01283 mm, within 2 % of the switched state's 0.01298 mm) and converges onto the
+//    same state in at most 3 iterations, without a failed solve. Without the second-order field the estimate along the mode alone is 0.0018 mm,
+//    below the inflection, and fails as 0.002 mm does.
+// Both runs are then stable and wrinkled across the width at 6 %, with the same crests and
+// amplitudes within 1e-4 (the same converged branch, to Newton's tolerance).
+TEST(TensionWrinklingShellRegression, KoitersEstimateAndTheLargerAmplitudesReachTheSameWrinkles) {
   const std::string options =
       " --set mesh.element_size=0.3 --set boundary[0].ramp=[0,1] --set solver.end_time=0.1"
       " --set solver.steps=192 --set solver.max_step=0.083334";
-  ASSERT_EQ(run_shell_sheet(dir, options), 0) << "see " << log;
+  const auto ladder = test::scratch_directory("sheet-tension-shell-switch");
+  const auto koiter = test::scratch_directory("sheet-tension-shell-koiter");
+  ASSERT_EQ(run_shell_sheet(ladder, options + " --set solver.stability.branch_start=perturbation"),
+            0)
+      << "see " << ladder.string() << ".log";
+  ASSERT_EQ(run_shell_sheet(koiter, options), 0) << "see " << koiter.string() << ".log";
 
-  // The setup: the first amplitude fails at the first instability.
-  int failed = 0;
-  std::ifstream in(log);
-  for (std::string line; std::getline(in, line);) {
-    if (line.find("branch switching with amplitude 0.002 mm failed") != std::string::npos) {
-      EXPECT_NE(line.find("trying a larger amplitude"), std::string::npos) << line;
-      ++failed;
-    }
+  // The lines of a log that contain `text`.
+  const auto lines_with = [](const std::filesystem::path& dir, const std::string& text) {
+    std::vector<std::string> found;
+    std::ifstream in(dir.string() + ".log");
+    for (std::string line; std::getline(in, line);)
+      if (line.find(text) != std::string::npos) found.push_back(line);
+    return found;
+  };
+  // The setup: without the estimate, the first amplitude fails at the first instability.
+  const auto failed = lines_with(ladder, "branch switching with amplitude 0.002 mm failed");
+  ASSERT_GE(failed.size(), 1u) << "Newton from the first amplitude converged: this mesh no longer "
+                                  "tests the retry (see "
+                               << ladder.string() << ".log)";
+  for (const std::string& line : failed)
+    EXPECT_NE(line.find("trying a larger amplitude"), std::string::npos) << line;
+  EXPECT_TRUE(lines_with(ladder, "Koiter's estimate").empty());
+  // With it: one estimate, no failed or fallen-back solve, a switch in at most 3 iterations.
+  EXPECT_EQ(lines_with(koiter, "Koiter's estimate along mode 1: amplitude").size(), 1u);
+  EXPECT_TRUE(lines_with(koiter, "failed").empty());
+  EXPECT_TRUE(lines_with(koiter, "fell back").empty());
+  const auto switched = lines_with(koiter, "switched branch along mode 1");
+  ASSERT_EQ(switched.size(), 1u);
+  const auto at = switched[0].find(" Newton iterations");
+  ASSERT_NE(at, std::string::npos) << switched[0];
+  EXPECT_LE(std::stoi(switched[0].substr(switched[0].rfind(' ', at - 1) + 1)), 3) << switched[0];
+  // The estimate's amplitude against the switched state's distance from the flat one.
+  const auto number_after = [](const std::string& line, const std::string& key) {
+    const auto k = line.find(key);
+    return k == std::string::npos ? -1.0 : std::stod(line.substr(k + key.size()));
+  };
+  const double estimate = number_after(
+      lines_with(koiter, "Koiter's estimate along mode 1: amplitude").at(0), "amplitude ");
+  const double moved = number_after(switched[0], "max |du| ");
+  std::cout << "Koiter's estimate " << estimate << " mm, switched state " << moved
+            << " mm from the flat one\n";
+  EXPECT_NEAR(estimate / moved, 1.0, 0.02);
+
+  std::vector<test::SheetProfile> last;
+  for (const auto& dir : {ladder, koiter}) {
+    const nlohmann::json summary = read_json_file(dir / "summary.json");
+    const nlohmann::json& first = summary.at("stability").at("instabilities").at(0);
+    EXPECT_EQ(first.at("step").get<int>(), 12) << dir;
+    EXPECT_TRUE(first.at("branch_switched").get<bool>()) << dir;
+    EXPECT_GT(first.at("perturbation_mm").get<double>(), 0.1 * kThickness) << dir;
+    EXPECT_EQ(summary.at("stability").at("stable_at_end").get<bool>(), true) << dir;
+    const std::vector<test::SheetProfile> steps = shell_sheet_steps(dir, 0.3);
+    ASSERT_FALSE(steps.empty());
+    test::print_sheet_steps(std::cout, steps, kLength, kThickness);
+    last.push_back(steps.back());
+    EXPECT_NEAR(last.back().strain, 0.06, 0.005);
+    EXPECT_GE(last.back().crests, 5) << "the sheet stayed flat: " << dir;
+    EXPECT_GT(last.back().amplitude, 0.1 * kThickness) << dir;
   }
-  ASSERT_GE(failed, 1) << "Newton from the first amplitude converged: this mesh no longer tests "
-                          "the retry (see "
-                       << log << ")";
-
-  const nlohmann::json summary = read_json_file(dir / "summary.json");
-  const nlohmann::json& first = summary.at("stability").at("instabilities").at(0);
-  EXPECT_EQ(first.at("step").get<int>(), 12);
-  EXPECT_TRUE(first.at("branch_switched").get<bool>()) << "see " << log;
-  EXPECT_GT(first.at("perturbation_mm").get<double>(), 0.1 * kThickness);
-
-  const std::vector<test::SheetProfile> steps = shell_sheet_steps(dir, 0.3);
-  ASSERT_FALSE(steps.empty());
-  test::print_sheet_steps(std::cout, steps, kLength, kThickness);
-  const test::SheetProfile& last = steps.back();
-  EXPECT_NEAR(last.strain, 0.06, 0.005);
-  EXPECT_GE(last.crests, 5) << "the sheet stayed flat";
-  EXPECT_GT(last.amplitude, 0.1 * kThickness);
-  EXPECT_EQ(summary.at("stability").at("stable_at_end").get<bool>(), true);
+  const nlohmann::json estimated = read_json_file(koiter / "summary.json");
+  EXPECT_EQ(estimated.at("failed_newton_iterations").get<int>(), 0);
+  EXPECT_EQ(last[1].crests, last[0].crests);
+  EXPECT_NEAR(last[1].amplitude / last[0].amplitude, 1.0, 1e-4);
+  EXPECT_NEAR(last[1].wavelength / last[0].wavelength, 1.0, 1e-4);
 }
 
 }  // namespace
