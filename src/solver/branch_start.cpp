@@ -66,12 +66,11 @@ double nearest_root(double k, double q, double c) {
 
 }  // namespace
 
-BranchStart asymptotic_branch_start(MixedModel& model, Mat factor,
-                                    const std::vector<double>& mode, double h) {
+BranchStart asymptotic_branch_start(MixedModel& model, Mat factor, const std::vector<double>& mode,
+                                    double h) {
   PLISSE_CHECK(factor != nullptr, "the branch switch's estimate needs the tangent's factor");
-  PLISSE_CHECK(mode.size() == model.state().size(), "the mode has " << mode.size()
-                                                                    << " entries, the state "
-                                                                    << model.state().size());
+  PLISSE_CHECK(mode.size() == model.state().size(),
+               "the mode has " << mode.size() << " entries, the state " << model.state().size());
   PLISSE_CHECK(h > 0.0, "the branch switch's difference step must be positive, not " << h);
   FreeVectors vectors(model);
   const Vec x0 = vectors.make(), phi = vectors.make(), x = vectors.make(), f = vectors.make();

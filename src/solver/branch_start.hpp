@@ -32,7 +32,7 @@ struct BranchStart {
 /// (InertiaCheck::factor), `h` [mm] the difference step (a fraction of the buckled amplitude;
 /// S10a). Throws plisse::Error when an assembly fails (an inverted element at a trial state).
 /// Collective; the model is back at its last converged state (restore_converged) on return.
-BranchStart asymptotic_branch_start(MixedModel& model, Mat factor,
-                                    const std::vector<double>& mode, double h);
+BranchStart asymptotic_branch_start(MixedModel& model, Mat factor, const std::vector<double>& mode,
+                                    double h);
 
 }  // namespace plisse

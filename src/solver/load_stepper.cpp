@@ -243,7 +243,7 @@ bool LoadStepper::switch_branch(StepInfo& info, SteppingResult& result, const Lo
   newton_.allow_reuse(false);  // an unstable state (newton_solver.hpp, allow_reuse)
   struct Start {
     double amplitude;
-    std::vector<double> state;  ///< empty: u + amplitude φ1
+    std::vector<double> state;  ///< Koiter's estimate; empty: u + amplitude φ1
   };
   std::vector<Start> starts;
   if (const Mat factor = stability_.koiter_start ? inertia_->factor() : nullptr) {
@@ -270,10 +270,15 @@ bool LoadStepper::switch_branch(StepInfo& info, SteppingResult& result, const Lo
 
   const int n_starts = static_cast<int>(starts.size());
   for (int attempt = 0; attempt < n_starts; ++attempt) {
-    const double a = starts[static_cast<std::size_t>(attempt)].amplitude;
+    const Start& start = starts[static_cast<std::size_t>(attempt)];
+    const double a = start.amplitude;
+    const bool estimated = !start.state.empty();
+    const char* next = attempt + 1 >= n_starts ? "; keeping the unperturbed state"
+                       : estimated             ? "; perturbing along the mode instead"
+                                               : "; trying a larger amplitude";
     auto& x = model_.state();
-    if (!starts[static_cast<std::size_t>(attempt)].state.empty()) {
-      x = starts[static_cast<std::size_t>(attempt)].state;
+    if (estimated) {
+      x = start.state;
     } else {
       for (int v = 0; v < n_nodes; ++v)
         for (int k = 0; k < 3; ++k) x[DofMap::dof(v, k)] += a * phi[DofMap::dof(v, k)];
@@ -284,12 +289,11 @@ bool LoadStepper::switch_branch(StepInfo& info, SteppingResult& result, const Lo
       // Near the inflection of the residual along the mode (S10) Newton's first step is huge
       // and it can wander off; from farther out it converges.
       model_.restore_converged();
-      const bool again = attempt + 1 < n_starts && !newton.out_of_memory &&
-                         !newton.interrupted && !(interrupt_ && interrupt_());
-      std::snprintf(line, sizeof line,
-                    "step %d: branch switching with amplitude %.4g mm failed (%s)%s", info.step, a,
-                    failure.c_str(),
-                    again ? "; trying a larger amplitude" : "; keeping the unperturbed state");
+      const bool again = attempt + 1 < n_starts && !newton.out_of_memory && !newton.interrupted &&
+                         !(interrupt_ && interrupt_());
+      std::snprintf(line, sizeof line, "step %d: branch switching %s %.4g mm failed (%s)%s",
+                    info.step, estimated ? "from Koiter's estimate, amplitude" : "with amplitude",
+                    a, failure.c_str(), again ? next : "; keeping the unperturbed state");
       log("  " + std::string(line));
       if (!again) return true;
       continue;
@@ -300,11 +304,10 @@ bool LoadStepper::switch_branch(StepInfo& info, SteppingResult& result, const Lo
     if (moved < 0.5 * stability_.perturbation_mm) {
       model_.restore_converged();
       std::snprintf(line, sizeof line,
-                    "step %d: the re-solve from amplitude %.4g mm fell back onto the "
+                    "step %d: the re-solve from %s %.4g mm fell back onto the "
                     "unperturbed state (max |du| %.3g mm)%s",
-                    info.step, a, moved,
-                    attempt + 1 < n_starts ? "; trying a larger amplitude"
-                                           : "; keeping the unperturbed state");
+                    info.step, estimated ? "Koiter's estimate, amplitude" : "amplitude", a, moved,
+                    next);
       log("  " + std::string(line));
       continue;
     }
@@ -320,11 +323,12 @@ bool LoadStepper::switch_branch(StepInfo& info, SteppingResult& result, const Lo
     info.reference_norm = newton.reference_norm;
     info.residual_history = newton.residual_history;
     std::snprintf(line, sizeof line,
-                  "step %d: switched branch along mode 1 (eigenvalue %s): amplitude %.4g mm, "
+                  "step %d: switched branch along mode 1 (eigenvalue %s): %samplitude %.4g mm, "
                   "%d extra negative pivot(s) before, max |du| %.4g mm, %d Newton "
                   "iterations; now %d negative pivots",
-                  info.step, lowest.c_str(), a, info.unstable_negative_pivots - expected, moved,
-                  newton.iterations, checked ? inertia.negative : -1);
+                  info.step, lowest.c_str(), estimated ? "Koiter's estimate, " : "", a,
+                  info.unstable_negative_pivots - expected, moved, newton.iterations,
+                  checked ? inertia.negative : -1);
     log("  " + std::string(line));
     return checked;
   }

@@ -42,9 +42,9 @@ double max_nodal_distance(const MixedModel& model, const std::vector<double>& x,
 
 struct EstimateCheck {
   BranchStart start;
-  double k_mode = 0.0;     ///< λ Φ·MΦ [N]
-  double buckled = 0.0;    ///< max nodal |x_b - u| [mm]
-  double error = 0.0;      ///< max nodal |x_b - x_estimate| / buckled
+  double k_mode = 0.0;   ///< λ Φ·MΦ [N]
+  double buckled = 0.0;  ///< max nodal |x_b - u| [mm]
+  double error = 0.0;    ///< max nodal |x_b - x_estimate| / buckled
   int newton_iterations = -1;
   int negative_after = -1, stable_count = -1;
 };
@@ -63,7 +63,8 @@ EstimateCheck check_at(const test::StripSpec& spec, double strain) {
   const std::vector<double> volumes = lumped_nodal_volumes(model.mesh());
   double phi_m_phi = 0.0;
   for (int v = 0; v < model.mesh().n_nodes(); ++v)
-    for (int k = 0; k < 3; ++k) phi_m_phi += volumes[v] * std::pow(modes[0].state[DofMap::dof(v, k)], 2);
+    for (int k = 0; k < 3; ++k)
+      phi_m_phi += volumes[v] * std::pow(modes[0].state[DofMap::dof(v, k)], 2);
   out.k_mode = modes[0].eigenvalue * phi_m_phi;
   out.start = asymptotic_branch_start(model, check.factor(), modes[0].state, 0.01 * spec.thickness);
   EXPECT_EQ(model.state(), u) << "the estimate did not restore the converged state";

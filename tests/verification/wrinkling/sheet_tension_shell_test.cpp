@@ -135,8 +135,8 @@ TEST(TensionWrinklingShellRegression, ShellSheetWrinklesAtTheSolidsOnsetWithTheS
 //    fall-back (S10's bar is half the first amplitude).
 //  - `branch_start: koiter` (the default): Newton starts from Koiter's estimate (measured:
 //    amplitude 0.01283 mm, within 2 % of the switched state's 0.01298 mm) and converges onto the
-//    same state in at most 3 iterations, without a failed solve. Without the second-order field the estimate along the mode alone is 0.0018 mm,
-//    below the inflection, and fails as 0.002 mm does.
+//    same state in at most 3 iterations, without a failed solve. Without the second-order field the
+//    estimate along the mode alone is 0.0018 mm, below the inflection, and fails as 0.002 mm does.
 // Both runs are then stable and wrinkled across the width at 6 %, with the same crests and
 // amplitudes within 1e-4 (the same converged branch, to Newton's tolerance).
 TEST(TensionWrinklingShellRegression, KoitersEstimateAndTheLargerAmplitudesReachTheSameWrinkles) {
