@@ -1,9 +1,11 @@
 #include "output/vtu_writer.hpp"
 
-#include <zlib.h>
+#include <libdeflate.h>
 
 #include <algorithm>
 #include <bit>
+#include <memory>
+#include <new>
 #include <set>
 #include <string_view>
 #include <utility>
@@ -23,9 +25,11 @@ static_assert(sizeof(Vec3d) == 3 * sizeof(double), "Vec3d must be 3 packed doubl
 /// Uncompressed bytes per zlib block. VTK's own writer uses 32 KiB; larger blocks deflate a
 /// little better, and readers take the size from each array's header.
 constexpr std::uint64_t kZlibBlockBytes = std::uint64_t{1} << 20;
-/// zlib's fastest level: on plisse's fields (doubles) the higher levels save a few per cent more
-/// for several times the time.
-constexpr int kZlibLevel = Z_BEST_SPEED;
+/// The fastest level: on plisse's fields (doubles) the higher levels save a few per cent more for
+/// several times the time. libdeflate writes the same zlib streams as zlib's compress2, 2.6 times
+/// faster at level 1 on a shell's step file (18.8 against 48.6 ms for 3.2 MB, 0.748 against
+/// 0.741 of the size).
+constexpr int kZlibLevel = 1;
 
 /// For each VTK edge slot of a 10-node tetrahedron, the Gmsh edge slot holding that node.
 /// Gmsh's edges 01, 12, 20, 30, 32, 31 become VTK's 01, 12, 20, 03, 13, 23: the last two swap
@@ -84,14 +88,17 @@ std::string zlib_encoded(const void* data, std::uint64_t n_bytes) {
   const std::uint64_t n_blocks = (n_bytes + kZlibBlockBytes - 1) / kZlibBlockBytes;
   std::vector<std::uint64_t> header = {n_blocks, kZlibBlockBytes, n_bytes % kZlibBlockBytes};
   std::string blocks;
-  std::vector<unsigned char> out(compressBound(static_cast<uLong>(kZlibBlockBytes)));
+  const std::unique_ptr<libdeflate_compressor, decltype(&libdeflate_free_compressor)> compressor(
+      libdeflate_alloc_compressor(kZlibLevel), &libdeflate_free_compressor);
+  if (!compressor) throw std::bad_alloc();
+  std::vector<unsigned char> out(
+      libdeflate_zlib_compress_bound(compressor.get(), static_cast<std::size_t>(kZlibBlockBytes)));
   for (std::uint64_t b = 0; b < n_blocks; ++b) {
     const std::uint64_t first = b * kZlibBlockBytes;
     const std::uint64_t size = std::min<std::uint64_t>(kZlibBlockBytes, n_bytes - first);
-    uLongf out_size = static_cast<uLongf>(out.size());
-    const int status =
-        compress2(out.data(), &out_size, bytes + first, static_cast<uLong>(size), kZlibLevel);
-    PLISSE_CHECK(status == Z_OK, "VTU: zlib compression failed (status " << status << ")");
+    const std::size_t out_size = libdeflate_zlib_compress(
+        compressor.get(), bytes + first, static_cast<std::size_t>(size), out.data(), out.size());
+    PLISSE_CHECK(out_size > 0, "VTU: compression failed (a block of " << size << " bytes)");
     header.push_back(out_size);
     blocks.append(reinterpret_cast<const char*>(out.data()), out_size);
   }
