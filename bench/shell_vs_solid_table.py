@@ -11,7 +11,9 @@ for the run behind the docs) are a dict:
   end_strain: the nominal strain the runs stop at; strains: those the wavelength is read at;
   cases: a list, one per pairing of meshes, of {h, shell_h, pairs}: the solid's in-plane element
   size h, the shell's shell_h (the same when absent, as in runs before it could differ), and
-  pairs, which holds one {"shell": RUN, "solid": RUN} per repeat in the order they ran; a RUN is {unknowns, steps, newton, factorisations, peak,
+  pairs, which holds one {"shell": RUN, "solid": RUN} per repeat in the order they ran (cases of
+  one h with several shell_h share the solid's runs: each repeat ran every shell mesh, then the
+  solid once); a RUN is {unknowns, steps, newton, factorisations, peak,
   wall, wavelength, cerda_mahadevan}: unknowns, converged steps, Newton iterations,
   factorisations, peak memory [MiB], wall time of the whole process [s], and per strain of
   `strains` ("0.05", "0.1", ...) the measured wavelength and Cerda & Mahadevan's [mm] (a strain without wrinkles around
@@ -132,13 +134,23 @@ def verdict(case, strains):
             f"than the solid's), and {ratio:.1f} times faster (the median ratio).")
 
 
+def shared_solids(results):
+    """The sentence saying that pairings of one solid mesh share its runs ('' when none do)."""
+    solids = [case["h"] for case in results["cases"]]
+    if len(set(solids)) == len(solids):
+        return ""
+    return (" Pairings of one solid mesh share its runs: each repeat ran every shell mesh, then "
+            "the solid once.")
+
+
 def render_block(results):
     """The lines between the markers, ending in a newline, from the measurements alone."""
     strains = results["strains"]
     lines = [
         f"{peer_table.made_by(results)}: {peer_table.pairs_of_runs(results)} per pairing of "
         "meshes, the shell then the solid, one core each, to "
-        f"{percent(results['end_strain'])} strain; h, each run's in-plane element size. Wall "
+        f"{percent(results['end_strain'])} strain; h, each run's in-plane element size."
+        f"{shared_solids(results)} Wall "
         "time and ratio: median (smallest–largest) over the pairs; peak memory: the largest; the "
         "wavelength λ [mm] and its ratio to λ_CM (in brackets) at each strain, '–' where the run "
         "had no wrinkles there, and the largest distance from λ_CM over those strains."
