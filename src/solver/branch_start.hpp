@@ -12,9 +12,9 @@ namespace plisse {
 
 /// The estimate of a buckled state near the unstable equilibrium u along the mode φ.
 struct BranchStart {
-  /// The one-mode residual g(s) = Φ · R(u + s Φ + s² V) ≈ g0 + k s + q s² + c s³ (S10a), Φ the
-  /// mode's free vector [mm] (displacement scaled as Eigenmode::state) and V the second-order
-  /// field: k [N], q [N/mm], c [N/mm²].
+  /// The one-mode residual g(s) = Φ · R(u + s Φ + s² V) [N] ≈ g0 + k s + q s² + c s³ (S10a),
+  /// s [mm], Φ the mode's free vector (scaled as Eigenmode::state: largest nodal displacement 1)
+  /// and V the second-order field [1/mm]: k [N/mm], q [N/mm²], c [N/mm³].
   double k = 0.0, q = 0.0, c = 0.0;
   /// The root of k + q s + c s² nearest 0 [mm]: the mode's largest nodal amplitude in the
   /// buckled state; 0 when there is none (k >= 0, or no real root: a subcritical or transcritical

@@ -254,8 +254,8 @@ bool LoadStepper::switch_branch(StepInfo& info, SteppingResult& result, const Lo
       if (estimate.amplitude != 0.0)
         std::snprintf(what, sizeof what, "amplitude %.4g mm", estimate.amplitude);
       std::snprintf(line, sizeof line,
-                    "step %d: Koiter's estimate along mode 1: %s (k = %.4g N, q = %.4g N/mm, "
-                    "c = %.4g N/mm^2)",
+                    "step %d: Koiter's estimate along mode 1: %s (k = %.4g N/mm, q = %.4g N/mm^2, "
+                    "c = %.4g N/mm^3)",
                     info.step, what, estimate.k, estimate.q, estimate.c);
       log("  " + std::string(line));
       if (estimate.amplitude != 0.0)

@@ -42,7 +42,7 @@ double max_nodal_distance(const MixedModel& model, const std::vector<double>& x,
 
 struct EstimateCheck {
   BranchStart start;
-  double k_mode = 0.0;   ///< λ Φ·MΦ [N]
+  double k_mode = 0.0;   ///< λ Φ·MΦ [N/mm]
   double buckled = 0.0;  ///< max nodal |x_b - u| [mm]
   double error = 0.0;    ///< max nodal |x_b - x_estimate| / buckled
   int newton_iterations = -1;
@@ -95,7 +95,7 @@ TEST(BranchStart, KoitersEstimateOfTheBuckledStripErrsLikeTheDistanceFromTheCrit
   for (const double delta : {0.2, 0.1, 0.05}) {
     const EstimateCheck c = check_at(spec, (1.0 + delta) * critical);
     std::printf(
-        "delta %.3f: k %.6e N (lambda Phi.M Phi %.6e), q %.3e N/mm, c %.5e N/mm^2, amplitude "
+        "delta %.3f: k %.6e N/mm (lambda Phi.M Phi %.6e), q %.3e N/mm^2, c %.5e N/mm^3, amplitude "
         "%.5f mm; buckled state %.5f mm away, estimate off by %.3e of it; Newton %d "
         "iterations\n",
         delta, c.start.k, c.k_mode, c.start.q, c.start.c, c.start.amplitude, c.buckled, c.error,
