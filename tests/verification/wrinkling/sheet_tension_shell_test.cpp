@@ -165,6 +165,8 @@ TEST(TensionWrinklingShellRegression, KoitersEstimateAndTheLargerAmplitudesReach
                                << ladder.string() << ".log)";
   for (const std::string& line : failed)
     EXPECT_NE(line.find("trying a larger amplitude"), std::string::npos) << line;
+  EXPECT_GE(lines_with(ladder, "branch switching with amplitude 0.008 mm failed").size(), 1u)
+      << "the second perturbation (0.4 t) switched: stability.md S10a says it fails";
   EXPECT_TRUE(lines_with(ladder, "Koiter's estimate").empty());
   // With it: one estimate, no failed or fallen-back solve, a switch in at most 3 iterations.
   EXPECT_EQ(lines_with(koiter, "Koiter's estimate along mode 1: amplitude").size(), 1u);
