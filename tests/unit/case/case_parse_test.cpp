@@ -137,6 +137,7 @@ TEST(CaseParse, CompleteCaseHasEveryValue) {
   EXPECT_EQ(std::filesystem::path(s.stability.imperfection_from).filename(), "buckle");
   EXPECT_EQ(s.stability.imperfection_mode, 2);
   EXPECT_EQ(s.stability.branch_amplitude, 0.2);
+  EXPECT_EQ(s.stability.branch_start, "perturbation");
   EXPECT_EQ(s.petsc_options, "-ksp_type preonly -pc_type lu");
 
   EXPECT_EQ(c.output.every, 2);
