@@ -1,5 +1,8 @@
 #include "solver/dof_map.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/error.hpp"
 
 namespace plisse {
@@ -27,6 +30,16 @@ DofMap::DofMap(int n_nodes, int n_global, const std::vector<ConstrainedComponent
     for (int c = 0; c < kPerNode; ++c) number(dof(v, c));
   }
   for (int d = kPerNode * n_nodes; d < n_dofs(); ++d) number(d);
+}
+
+double max_nodal_distance(const std::vector<double>& x, const std::vector<double>& y, int n_nodes) {
+  double d = 0.0;
+  for (int v = 0; v < n_nodes; ++v) {
+    double s = 0.0;
+    for (int k = 0; k < 3; ++k) s += std::pow(x[DofMap::dof(v, k)] - y[DofMap::dof(v, k)], 2);
+    d = std::max(d, std::sqrt(s));
+  }
+  return d;
 }
 
 }  // namespace plisse

@@ -43,4 +43,8 @@ class DofMap {
   int n_free_pressure_ = 0;
 };
 
+/// The largest distance between two full states' displacements over the nodes 0 .. n_nodes - 1:
+/// max over nodes of |u(x) - u(y)| [mm] (the pressures and global unknowns left out).
+double max_nodal_distance(const std::vector<double>& x, const std::vector<double>& y, int n_nodes);
+
 }  // namespace plisse

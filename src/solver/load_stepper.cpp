@@ -35,17 +35,6 @@ constexpr double kAmplitudeGrowth = 4.0;
 /// The most eigenpairs an instability's search asks for when the nearest ones miss the negative
 /// eigenvalues the inertia counts (stability.md, S7).
 constexpr int kMostModes = 64;
-
-/// max over nodes of |u(x) - u(y)| [mm] (displacement components only).
-double max_nodal_distance(const std::vector<double>& x, const std::vector<double>& y, int n_nodes) {
-  double d = 0.0;
-  for (int v = 0; v < n_nodes; ++v) {
-    double s = 0.0;
-    for (int k = 0; k < 3; ++k) s += std::pow(x[DofMap::dof(v, k)] - y[DofMap::dof(v, k)], 2);
-    d = std::max(d, std::sqrt(s));
-  }
-  return d;
-}
 }  // namespace
 
 std::string LoadStepper::describe_failure(const NewtonResult& newton) const {

@@ -28,18 +28,6 @@
 namespace plisse {
 namespace {
 
-/// max over nodes of |x - y| [mm] over the displacement components.
-double max_nodal_distance(const MixedModel& model, const std::vector<double>& x,
-                          const std::vector<double>& y) {
-  double d = 0.0;
-  for (int v = 0; v < model.mesh().n_nodes(); ++v) {
-    double s = 0.0;
-    for (int k = 0; k < 3; ++k) s += std::pow(x[DofMap::dof(v, k)] - y[DofMap::dof(v, k)], 2);
-    d = std::max(d, std::sqrt(s));
-  }
-  return d;
-}
-
 struct EstimateCheck {
   BranchStart start;
   double k_mode = 0.0;   ///< λ Φ·MΦ [N/mm]
@@ -78,8 +66,9 @@ EstimateCheck check_at(const test::StripSpec& spec, double strain) {
   const NewtonResult result = newton.solve();
   EXPECT_TRUE(result.converged) << result.reason;
   out.newton_iterations = result.iterations;
-  out.buckled = max_nodal_distance(model, model.state(), u);
-  out.error = max_nodal_distance(model, model.state(), out.start.state) / out.buckled;
+  const int n_nodes = model.mesh().n_nodes();
+  out.buckled = max_nodal_distance(model.state(), u, n_nodes);
+  out.error = max_nodal_distance(model.state(), out.start.state, n_nodes) / out.buckled;
   out.negative_after = check.compute().negative;
   return out;
 }
