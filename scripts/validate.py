@@ -2,6 +2,8 @@
 
 Usage: scripts/validate [--tier ci|full] [-R REGEX] [-j N]   run a tier's tests, record, update
        scripts/validate --tier ci --share K/N [-j N]        run the K-th of N shares of the tier
+       scripts/validate --tier ci --share K/N --then-others MINUTES
+                                                            and the others that fit in MINUTES
        scripts/validate --check                             the pages agree with the records
        scripts/validate --update                            rewrite the pages from the records
 
@@ -20,7 +22,9 @@ page lies outside a generated block (a number no command produces). A run with -
 of the tests it did not run, and so does a run of a share: --share K/N splits the tier's tests
 into N shares of about equal cost (each test weighs its last recorded time times the processors it
 takes, the costliest placed first, each in the share that weighs least so far) and runs the K-th;
-CI runs one share a day, so that N days cover the tier. Exit status: 0 when every test passed and every claim held, 1
+CI runs the day's share and then the others while they fit in its limit (--then-others: each
+other share's recorded cost at the pace the first ran, with a quarter to spare), so that N days
+cover the tier at the least and a fast machine covers it in each run. Exit status: 0 when every test passed and every claim held, 1
 otherwise (the record and the tables are written either way, a failed row marked so), 2 for bad
 usage.
 """
@@ -279,16 +283,62 @@ def merged(old, tests, claims, current):
     return {**kept, **tests}, [c for c in old["claims"] if c["test"] in kept] + claims
 
 
+def planned_shares(build, tier, n):
+    """(the tier's tests split into n shares, each share's recorded cost [processor-seconds]),
+    from the record as it is now."""
+    record = read_record(tier) or {"tests": {}}
+    seconds = {name: t["seconds"] for name, t in record["tests"].items()}
+    tests = tier_tests(build, tier)
+    split = shares(tests, seconds, n)
+    known = [seconds[t] for t in tests if t in seconds]
+    default = sum(known) / len(known) if known else 1.0
+    return split, [sum(seconds.get(t, default) * tests[t] for t in share) for share in split]
+
+
+def regex_of(tests):
+    """The anchored regex of exactly `tests`."""
+    return "^(" + "|".join(re.escape(t) for t in sorted(tests)) + ")$"
+
+
 def share_regex(build, tier, share):
     """The anchored regex of the tests of share K of N (share: (K, N))."""
     k, n = share
-    record = read_record(tier) or {"tests": {}}
-    seconds = {name: t["seconds"] for name, t in record["tests"].items()}
-    chosen = shares(tier_tests(build, tier), seconds, n)[k - 1]
+    chosen = planned_shares(build, tier, n)[0][k - 1]
     if not chosen:
         fail(f"share {k}/{n} of tier {tier} holds no test (the tier has fewer than {n})", 2)
     print(f"validate: share {k} of {n} of tier {tier}: {', '.join(sorted(chosen))}")
-    return "^(" + "|".join(re.escape(t) for t in sorted(chosen)) + ")$"
+    return regex_of(chosen)
+
+
+# The margin an estimate of a share's time must leave within --then-others's minutes.
+THEN_OTHERS_MARGIN = 1.25
+
+
+def run_then_others(tier, jobs, share, minutes):
+    """Share K of N, then each other share in turn (K+1, ..., N, 1, ..., K-1) that is expected to
+    end within `minutes` of the start: its recorded cost at the pace share K ran at (wall seconds
+    per recorded processor-second), times THEN_OTHERS_MARGIN. The shares are planned from the
+    record before any of them runs. Returns 1 when any run failed, else 0."""
+    k, n = share
+    build = Path(os.environ.get("PLISSE_BUILD_DIR", ROOT / "build"))
+    subprocess.run([str(ROOT / "scripts" / "build")], check=True)
+    plan, costs = planned_shares(build, tier, n)
+    start = time.monotonic()
+    status = run(tier, None, jobs, share)
+    pace = (time.monotonic() - start) / max(costs[k - 1], 1e-9)
+    for other in [(k + i) % n or n for i in range(1, n)]:
+        if not plan[other - 1]:
+            continue
+        expected = pace * costs[other - 1] * THEN_OTHERS_MARGIN
+        left = minutes * 60 - (time.monotonic() - start)
+        if expected > left:
+            print(f"validate: share {other} of {n} left out: expected {expected / 60:.1f} "
+                  f"minutes with its margin, {left / 60:.1f} of {minutes:g} left")
+            continue
+        print(f"validate: share {other} of {n} too (expected {expected / 60:.1f} minutes with "
+              f"its margin, {left / 60:.1f} left): {', '.join(sorted(plan[other - 1]))}")
+        status = max(status, run(tier, regex_of(plan[other - 1]), jobs))
+    return status
 
 
 def run(tier, regex, jobs, share=None):
@@ -358,6 +408,9 @@ def main():
     ap.add_argument("-R", dest="regex", help="run only the tests that match (ctest -R)")
     ap.add_argument("--share", metavar="K/N",
                     help="run the K-th of N shares of the tier's tests, of about equal cost")
+    ap.add_argument("--then-others", metavar="MINUTES", type=float,
+                    help="with --share: then run the other shares that are expected to end "
+                         "within MINUTES of the start, at the pace the first one ran")
     ap.add_argument("-j", dest="jobs", type=int, default=os.cpu_count() or 1)
     ap.add_argument("--check", action="store_true", help="compare the pages with the records")
     ap.add_argument("--update", action="store_true", help="rewrite the pages from the records")
@@ -377,6 +430,12 @@ def main():
         if args.regex:
             fail("--share and -R select tests each: give one")
         share = (int(m[1]), int(m[2]))
+    if args.then_others is not None:
+        if not share:
+            fail("--then-others goes with --share")
+        if not args.then_others > 0:
+            fail(f"--then-others takes minutes > 0, not {args.then_others:g}")
+        return run_then_others(args.tier, args.jobs, share, args.then_others)
     return run(args.tier, args.regex, args.jobs, share)
 
 

@@ -190,6 +190,65 @@ class SharesTest(unittest.TestCase):
         self.assertEqual(validate.shares(tests, seconds, 3), validate.shares(reverse, seconds, 3))
 
 
+class ThenOthersTest(unittest.TestCase):
+    """--share K/N --then-others MINUTES: the day's share, then the others that fit."""
+
+    def plan(self, costs, first_takes, others_take=None):
+        """Runs run_then_others on share 1 of len(costs), with shares of the recorded `costs`
+        [processor-seconds], a first share that takes `first_takes` wall seconds and others that
+        take `others_take` (default: their cost at the first one's pace); returns the regexes
+        run after the first and the exit status."""
+        clock = [0.0]
+        pace = first_takes / costs[0]
+        plan = [[f"T.s{i}"] for i in range(len(costs))]
+        ran = []
+
+        def fake_run(tier, regex, jobs, share=None):
+            if share:
+                clock[0] += first_takes
+            else:
+                ran.append(regex)
+                index = int(regex[len("^(T\\.s"):-2])
+                clock[0] += others_take if others_take is not None else costs[index] * pace
+            return 1 if regex == "^(T\\.s2)$" else 0
+
+        saved = (validate.run, validate.planned_shares, validate.subprocess.run,
+                 validate.time.monotonic)
+        validate.run = fake_run
+        validate.planned_shares = lambda build, tier, n: (plan, costs)
+        validate.subprocess.run = lambda *a, **k: None
+        validate.time.monotonic = lambda: clock[0]
+        try:
+            status = validate.run_then_others("ci", 2, (1, len(costs)), 15)
+        finally:
+            (validate.run, validate.planned_shares, validate.subprocess.run,
+             validate.time.monotonic) = saved
+        return ran, status
+
+    def test_the_other_share_runs_when_it_fits_with_its_margin(self):
+        # 300 s for a share of cost 600: the other one (600) expected 300 s, 375 with the margin,
+        # within the 600 s left of 15 minutes.
+        self.assertEqual(self.plan([600.0, 600.0], 300.0), (["^(T\\.s1)$"], 0))
+
+    def test_the_other_share_is_left_out_when_its_margin_does_not_fit(self):
+        # 400 s for the first: the other expects 400 s, 500 with the margin, and 500 are left:
+        # it runs. After 401 s it expects 501.25 with 499 left and is left out.
+        self.assertEqual(self.plan([600.0, 600.0], 400.0)[0], ["^(T\\.s1)$"])
+        self.assertEqual(self.plan([600.0, 600.0], 401.0)[0], [])
+
+    def test_the_pace_scales_each_shares_own_cost(self):
+        # The first share (cost 100) took 100 s: the second (cost 500) expects 500 s, 625 with
+        # its margin, within the 800 s left: it runs and ends at 600 s. The third (cost 300)
+        # then expects 375 s with 300 left and is left out.
+        ran, _ = self.plan([100.0, 500.0, 300.0], 100.0)
+        self.assertEqual(ran, ["^(T\\.s1)$"])
+
+    def test_a_failing_other_share_fails_the_whole(self):
+        ran, status = self.plan([100.0, 100.0, 100.0], 60.0)
+        self.assertEqual(ran, ["^(T\\.s1)$", "^(T\\.s2)$"])
+        self.assertEqual(status, 1)
+
+
 class NumbersTest(unittest.TestCase):
     def test_numbers_keep_four_digits_and_small_ones_an_exponent(self):
         self.assertEqual(validate.number(0.93512), "0.9351")
