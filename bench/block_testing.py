@@ -1,6 +1,6 @@
 """What the unit tests of bench/'s generated blocks share: the first line of a block rendered from
 measurements marked as taken with uncommitted changes and on a loaded machine, a page with two
-blocks rewritten by one table's update, and the checks of a paired benchmark's table."""
+blocks rewritten by one table's update, and the checks every benchmark's block gets."""
 import copy
 import tempfile
 from pathlib import Path
@@ -39,11 +39,11 @@ def update_beside_the_peers(update_file, markers, measurements, peer_table):
     return peer_table.read_block(text, markers), peer_table.read_block(text), text, refused
 
 
-class PairedTableChecks:
-    """The checks of the block of a paired benchmark (bench/shell-vs-solid, bench/indented-shell),
-    mixed into a unittest.TestCase that sets: `table` (its table module), `measurements` and
-    `expected` (fixed measurements and the block they make) and `record` (the name of the
-    benchmark's measurements under docs/performance/)."""
+class BlockChecks:
+    """The checks of the generated block of a benchmark of bench/ (bench/shell-vs-solid,
+    bench/e2e-shell, ...), mixed into a unittest.TestCase that sets: `table` (its table module),
+    `measurements` and `expected` (fixed measurements and the block they make) and `record` (the
+    name of the benchmark's measurements under docs/performance/)."""
 
     def test_block_from_fixed_measurements(self):
         self.assertEqual(self.table.render_block(self.measurements), self.expected)

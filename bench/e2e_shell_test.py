@@ -15,8 +15,6 @@ sys.path.insert(0, str(HERE))
 import block_testing  # noqa: E402
 import e2e_shell_table as table  # noqa: E402
 
-ROOT = HERE.parent
-
 
 def run(size, h, linear, ranks, repeat, unknowns, assembly, factorisation, solve, wall, peak,
         peak_rank, nonzeros=0, entries=0, gmres=(), linear_solve=None, final=None):
@@ -96,9 +94,8 @@ of the 1-rank direct run of its size and repeat.
 """
 
 
-class E2eShellTable(unittest.TestCase):
-    def test_block_from_fixed_measurements(self):
-        self.assertEqual(table.render_block(MEASUREMENTS), EXPECTED)
+class E2eShellTable(block_testing.BlockChecks, unittest.TestCase):
+    table, measurements, expected, record = table, MEASUREMENTS, EXPECTED, "e2e-shell"
 
     def test_speed_ups_are_taken_within_each_repeat(self):
         ups = table.speed_ups(MEASUREMENTS, ("S", "direct", 2), table.iteration_time)
@@ -131,25 +128,6 @@ class E2eShellTable(unittest.TestCase):
         other = {"final": {"step": 3.0, "residual_norm": 9e-12, "newton_iterations": 4.0,
                            "volume": 100.0 * (1 - 2e-7), "zero": 0.0}}
         self.assertAlmostEqual(table.largest_difference(other, reference), 2e-7, delta=1e-15)
-
-    def test_uncommitted_changes_and_load_are_said(self):
-        first = block_testing.provenance_line(table.render_block, MEASUREMENTS)
-        self.assertIn("at commit abc1234 with uncommitted changes on", first)
-        self.assertIn("load average of 0.9 when the run began and 1.1 when it ended", first)
-
-    def test_update_leaves_the_other_blocks_alone(self):
-        block, peers, _, refused = block_testing.update_beside_the_peers(
-            table.update_file, table.MARKERS, MEASUREMENTS, table.peer_table)
-        self.assertEqual(block, table.render_block(MEASUREMENTS))
-        self.assertEqual(peers, "the peers' block\n")
-        self.assertEqual(refused, "# Title\n\nno block here\n")
-
-    def test_docs_hold_what_the_last_run_wrote(self):
-        page = (ROOT / "docs" / "performance.md").read_text(encoding="utf-8")
-        record = ROOT / "docs" / "performance" / "e2e-shell.json"
-        self.assertTrue(record.exists(), "run bench/e2e-shell ... --update docs/performance.md")
-        self.assertEqual(table.peer_table.read_block(page, table.MARKERS),
-                         table.render_block(table.load(record)))
 
 
 if __name__ == "__main__":

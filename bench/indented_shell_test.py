@@ -55,7 +55,7 @@ does with 6 mm, and is 9.6 times faster (the median ratio).
 """
 
 
-class IndentedShellTable(block_testing.PairedTableChecks, unittest.TestCase):
+class IndentedShellTable(block_testing.BlockChecks, unittest.TestCase):
     table = table
     measurements = MEASUREMENTS
     expected = EXPECTED

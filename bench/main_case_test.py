@@ -15,8 +15,6 @@ sys.path.insert(0, str(HERE))
 import block_testing  # noqa: E402
 import main_case_table as table  # noqa: E402
 
-ROOT = HERE.parent
-
 
 def run(wall, newton, factorisations, krylov, reused, assembly, factorisation, solve, stability,
         peak, force):
@@ -78,9 +76,8 @@ over the run (the largest: force_y:punch 5.0e-05, volume 0.0e+00).
 """
 
 
-class MainCaseTable(unittest.TestCase):
-    def test_block_from_fixed_measurements(self):
-        self.assertEqual(table.render_block(MEASUREMENTS), EXPECTED)
+class MainCaseTable(block_testing.BlockChecks, unittest.TestCase):
+    table, measurements, expected, record = table, MEASUREMENTS, EXPECTED, "main-case"
 
     def test_the_ratio_is_taken_within_each_pair(self):
         self.assertEqual([round(r, 6) for r in table.ratios(MEASUREMENTS)], [0.5, 0.5, 0.575])
@@ -100,25 +97,6 @@ class MainCaseTable(unittest.TestCase):
         self.assertIn("| | now (commit abc1234) |\n|---|---|\n", block)
         self.assertIn(", 3 runs, one core each", block)
         self.assertNotIn("faster", block)
-
-    def test_uncommitted_changes_and_load_are_said(self):
-        first = block_testing.provenance_line(table.render_block, MEASUREMENTS)
-        self.assertIn("at commit abc1234 with uncommitted changes on", first)
-        self.assertIn("load average of 0.9 when the run began and 1.1 when it ended", first)
-
-    def test_update_leaves_the_other_blocks_alone(self):
-        block, peers, _, refused = block_testing.update_beside_the_peers(
-            table.update_file, table.MARKERS, MEASUREMENTS, table.peer_table)
-        self.assertEqual(block, EXPECTED)
-        self.assertEqual(peers, "the peers' block\n")
-        self.assertEqual(refused, "# Title\n\nno block here\n")
-
-    def test_docs_hold_what_the_last_run_wrote(self):
-        page = (ROOT / "docs" / "performance.md").read_text(encoding="utf-8")
-        record = ROOT / "docs" / "performance" / "main-case.json"
-        self.assertTrue(record.exists(), "run bench/main-case ... --update docs/performance.md")
-        self.assertEqual(table.peer_table.read_block(page, table.MARKERS),
-                         table.render_block(table.load(record)))
 
 
 if __name__ == "__main__":

@@ -59,7 +59,7 @@ faster (the median ratio).
 """
 
 
-class ShellVsSolidTable(block_testing.PairedTableChecks, unittest.TestCase):
+class ShellVsSolidTable(block_testing.BlockChecks, unittest.TestCase):
     table = table
     measurements = MEASUREMENTS
     expected = EXPECTED

@@ -14,8 +14,6 @@ sys.path.insert(0, str(HERE))
 import block_testing  # noqa: E402
 import threads_table as table  # noqa: E402
 
-ROOT = HERE.parent
-
 
 def run(setting, wall, cpu):
     return {"setting": setting, "wall": wall, "cpu": cpu,
@@ -51,9 +49,8 @@ No setting is faster than plisse's own choice (every median wall time is 1 or mo
 """
 
 
-class ThreadsTable(unittest.TestCase):
-    def test_block_from_fixed_measurements(self):
-        self.assertEqual(table.render_block(MEASUREMENTS), EXPECTED)
+class ThreadsTable(block_testing.BlockChecks, unittest.TestCase):
+    table, measurements, expected, record = table, MEASUREMENTS, EXPECTED, "threads"
 
     def test_the_ratios_are_taken_within_each_round(self):
         self.assertEqual([round(r, 6) for r in table.ratios(MEASUREMENTS, 1, "wall")],
@@ -64,25 +61,6 @@ class ThreadsTable(unittest.TestCase):
         m["rounds"][2][2]["wall"] = 20.0  # 2/2: 0.9, 1.1, 0.8 -> median 0.9
         self.assertIn("Faster than plisse's own choice (median wall time below 1): 2/2.",
                       table.render_block(m))
-
-    def test_uncommitted_changes_and_load_are_said(self):
-        first = block_testing.provenance_line(table.render_block, MEASUREMENTS)
-        self.assertIn("at commit abc1234 with uncommitted changes on", first)
-        self.assertIn("load average of 0.9 when the run began and 1.1 when it ended", first)
-
-    def test_update_leaves_the_other_blocks_alone(self):
-        block, peers, _, refused = block_testing.update_beside_the_peers(
-            table.update_file, table.MARKERS, MEASUREMENTS, table.peer_table)
-        self.assertEqual(block, EXPECTED)
-        self.assertEqual(peers, "the peers' block\n")
-        self.assertEqual(refused, "# Title\n\nno block here\n")
-
-    def test_docs_hold_what_the_last_run_wrote(self):
-        page = (ROOT / "docs" / "performance.md").read_text(encoding="utf-8")
-        record = ROOT / "docs" / "performance" / "threads.json"
-        self.assertTrue(record.exists(), "run bench/threads --update docs/performance.md")
-        self.assertEqual(table.peer_table.read_block(page, table.MARKERS),
-                         table.render_block(table.load(record)))
 
 
 if __name__ == "__main__":
