@@ -326,6 +326,7 @@ def run_then_others(tier, jobs, share, minutes):
     start = time.monotonic()
     status = run(tier, None, jobs, share)
     pace = (time.monotonic() - start) / max(costs[k - 1], 1e-9)
+    ran = list(plan[k - 1])
     for other in [(k + i) % n or n for i in range(1, n)]:
         if not plan[other - 1]:
             continue
@@ -338,7 +339,22 @@ def run_then_others(tier, jobs, share, minutes):
         print(f"validate: share {other} of {n} too (expected {expected / 60:.1f} minutes with "
               f"its margin, {left / 60:.1f} left): {', '.join(sorted(plan[other - 1]))}")
         status = max(status, run(tier, regex_of(plan[other - 1]), jobs))
+        ran += plan[other - 1]
+    if len(ran) > len(plan[k - 1]):  # the record says what the runs did together
+        whole = len(ran) == sum(len(p) for p in plan)
+        record = joined_record(read_record(tier), f"scripts/validate --tier {tier} --share {k}/{n} "
+                               f"--then-others {minutes:g}", time.monotonic() - start,
+                               None if whole else regex_of(ran))
+        record_path(tier).write_text(json.dumps(record, indent=1) + "\n")
+        update()
     return status
+
+
+def joined_record(record, command, seconds, regex):
+    """The record of the last of several runs of --then-others, made the record of them all: their
+    command and wall time, and the tests they ran (`regex`, or None for the whole tier)."""
+    return {**record, "command": command, "seconds": round(seconds, 1), "regex": regex,
+            "share": None}
 
 
 def run(tier, regex, jobs, share=None):

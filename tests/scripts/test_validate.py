@@ -212,23 +212,43 @@ class ThenOthersTest(unittest.TestCase):
                 clock[0] += others_take if others_take is not None else costs[index] * pace
             return 1 if regex == "^(T\\.s2)$" else 0
 
-        saved = (validate.run, validate.planned_shares, validate.subprocess.run,
-                 validate.time.monotonic)
+        names = ("run", "planned_shares", "read_record", "record_path", "update")
+        saved = [getattr(validate, name) for name in names] + [validate.subprocess.run,
+                                                               validate.time.monotonic]
+        tmp = tempfile.TemporaryDirectory()
+        self.joined = Path(tmp.name) / "ci.json"  # the record the runs leave together
         validate.run = fake_run
         validate.planned_shares = lambda build, tier, n: (plan, costs)
+        validate.read_record = lambda tier: record([])
+        validate.record_path = lambda tier: self.joined
+        validate.update = lambda: None
         validate.subprocess.run = lambda *a, **k: None
         validate.time.monotonic = lambda: clock[0]
         try:
             status = validate.run_then_others("ci", 2, (1, len(costs)), 15)
         finally:
-            (validate.run, validate.planned_shares, validate.subprocess.run,
-             validate.time.monotonic) = saved
+            for name, value in zip(names, saved):
+                setattr(validate, name, value)
+            validate.subprocess.run, validate.time.monotonic = saved[-2:]
+            tmp_record = json.loads(self.joined.read_text()) if self.joined.exists() else None
+            tmp.cleanup()
+        self.joined = tmp_record
         return ran, status
 
     def test_the_other_share_runs_when_it_fits_with_its_margin(self):
         # 300 s for a share of cost 600: the other one (600) expected 300 s, 375 with the margin,
-        # within the 600 s left of 15 minutes.
+        # within the 600 s left of 15 minutes. The record then holds both runs as the whole tier.
         self.assertEqual(self.plan([600.0, 600.0], 300.0), (["^(T\\.s1)$"], 0))
+        self.assertEqual((self.joined["command"], self.joined["regex"], self.joined["seconds"]),
+                         ("scripts/validate --tier ci --share 1/2 --then-others 15", None, 600.0))
+
+    def test_a_share_alone_leaves_its_own_record(self):
+        self.assertEqual(self.plan([600.0, 600.0], 401.0), ([], 0))
+        self.assertIsNone(self.joined)
+
+    def test_some_of_three_shares_record_the_tests_they_ran(self):
+        self.plan([100.0, 500.0, 300.0], 100.0)
+        self.assertEqual(self.joined["regex"], "^(T\\.s0|T\\.s1)$")
 
     def test_the_other_share_is_left_out_when_its_margin_does_not_fit(self):
         # 400 s for the first: the other expects 400 s, 500 with the margin, and 500 are left:
@@ -247,6 +267,20 @@ class ThenOthersTest(unittest.TestCase):
         ran, status = self.plan([100.0, 100.0, 100.0], 60.0)
         self.assertEqual(ran, ["^(T\\.s1)$", "^(T\\.s2)$"])
         self.assertEqual(status, 1)
+
+
+class JoinedRecordTest(unittest.TestCase):
+    def test_the_runs_together_read_as_the_whole_tier(self):
+        last = record([claim("r", 1.0, 1.0, -0.1, 0.1)])
+        last.update(regex="^(T\\.b)$", share=None, seconds=300.0)
+        joined = validate.joined_record(last, "scripts/validate --tier ci --share 1/2 "
+                                        "--then-others 15", 612.34, None)
+        self.assertEqual((joined["regex"], joined["share"], joined["seconds"]), (None, None, 612.3))
+        self.assertEqual(joined["claims"], last["claims"])
+        text = validate.block_text("ci", joined)
+        self.assertIn("`scripts/validate --tier ci --share 1/2 --then-others 15` at commit abc1234",
+                      text)
+        self.assertIn("1 test in 10.2 minutes", text)
 
 
 class NumbersTest(unittest.TestCase):
