@@ -47,8 +47,8 @@ TIERS = ("ci", "full")
 PAGES = [ROOT / "docs" / "validation.md"]
 RECORDS = ROOT / "docs" / "validation"
 TIER_TITLE = {
-    "ci": "CI tier: the meshes CI runs, half the tier each day (the studies' own where CI "
-          "can afford them)",
+    "ci": "CI tier: the meshes CI runs, the whole tier when it fits in 15 minutes, else half "
+          "of it each day (the studies' own where CI can afford them)",
     "full": "Full tier: the studies' meshes where CI runs coarser ones",
 }
 
