@@ -3,6 +3,7 @@ measurements: the command, the commit and whether the measured sources had uncom
 the date, the machine's cores and its load average when the run began (and, appended by the
 caller, when it ended); where the measurements behind a page's block are kept; and one run of
 plisse timed from outside."""
+import csv
 import datetime
 import json
 import os
@@ -48,3 +49,40 @@ def run_plisse(plisse, case, options, out, log):
                        env=env, stdout=f, stderr=subprocess.STDOUT, check=True)
     wall = time.monotonic() - start
     return wall, json.loads((Path(out) / "summary.json").read_text(encoding="utf-8"))
+
+
+def refuse_without_block(program, page, table):
+    """Exits with status 2, before anything runs, when `page` (--update's file; None: no update)
+    cannot be read or lacks the block of `table` (a bench table module: its MARKERS and
+    peer_table)."""
+    if page is None:
+        return
+    try:
+        table.peer_table.block_span(Path(page).read_text(encoding="utf-8"), table.MARKERS)
+    except (OSError, table.peer_table.BlockError) as error:
+        print(f"{program}: --update {page}: {error}", file=sys.stderr)
+        sys.exit(2)
+
+
+def update_page(program, page, table, results):
+    """Rewrites the block of `table` in `page` from `results` and keeps them beside it (record_of);
+    `program` is the bench's name, e.g. "thin-shell"."""
+    table.update_file(page, results)
+    record = record_of(page, program)
+    record.parent.mkdir(exist_ok=True)
+    record.write_text(json.dumps(results, indent=1) + "\n")
+    print(f"{program}: rewrote the block of {page}; measurements in {record}", file=sys.stderr)
+
+
+def numeric_history(path):
+    """{column: [value of each row]} of the numeric columns of a history.csv."""
+    with open(path, encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    columns = {}
+    for row in rows:
+        for key, value in row.items():
+            try:
+                columns.setdefault(key, []).append(float(value))
+            except (TypeError, ValueError):
+                pass
+    return columns
