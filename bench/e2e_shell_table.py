@@ -56,11 +56,6 @@ def median(runs, value):
     return statistics.median(value(r) for r in runs)
 
 
-def spread(values, digits):
-    """'median (smallest–largest)', or the value alone when there is one."""
-    return (f"{values[0]:.{digits}f}" if len(values) == 1 else peer_table.spread(values, digits))
-
-
 def millions(n):
     return f"{n / 1e6:.3g}"
 
@@ -130,7 +125,8 @@ def row(results, key, runs):
     else:
         per_it = speed_ups(results, key, iteration_time)
         whole = speed_ups(results, key, lambda r: r["wall"])
-        speed = f"{spread(per_it, 2)} / {spread(whole, 2)}" if per_it else ""
+        speed = (f"{peer_table.spread_or_value(per_it, 2)} / "
+                 f"{peer_table.spread_or_value(whole, 2)}" if per_it else "")
     peak = f"{max(r['peak'] for r in runs):.0f}"
     if ranks > 1:
         peak += f" / {max(r['peak_rank'] for r in runs):.0f}"
@@ -146,7 +142,7 @@ def row(results, key, runs):
              millions(first["factor_entries"]) if direct else "–",
              f"{first['factor_entries'] / first['tangent_nonzeros']:.1f}"
              if direct and first["tangent_nonzeros"] else "–",
-             spread([r["wall"] for r in runs], 1), peak, speed)
+             peer_table.spread_or_value([r["wall"] for r in runs], 1), peak, speed)
     return "| " + " | ".join(cells) + " |"
 
 

@@ -62,11 +62,6 @@ def cell(runs, key, digits, how):
     return f"{value:.{digits}f}"
 
 
-def wall_cell(runs):
-    walls = [r["wall"] for r in runs]
-    return f"{walls[0]:.1f}" if len(walls) == 1 else peer_table.spread(walls, 1)
-
-
 def ratios(results):
     """[today's wall time / the earlier commit's] over the pairs."""
     return [pair["now"]["wall"] / pair["against"]["wall"] for pair in results["runs"]]
@@ -105,7 +100,8 @@ def render_block(results):
         "",
         "| | " + " | ".join(column_name(results, p) for p in names) + " |",
         "|---|" + "---|" * len(names),
-        "| wall time [s] | " + " | ".join(wall_cell(runs[p]) for p in names) + " |",
+        "| wall time [s] | " + " | ".join(
+            peer_table.spread_or_value([r["wall"] for r in runs[p]], 1) for p in names) + " |",
     ]
     for label, key, digits, how in ROWS:
         lines.append(f"| {label} | " + " | ".join(cell(runs[p], key, digits, how)

@@ -29,10 +29,6 @@ def ratios(results, index, key):
     return [r[index][key] / r[0][key] for r in results["rounds"]]
 
 
-def ratio_cell(values):
-    return f"{values[0]:.2f}" if len(values) == 1 else peer_table.spread(values, 2)
-
-
 def setting_cells(run):
     """(element-loop threads, BLAS threads) as the table names them."""
     if run["setting"] is None:
@@ -65,8 +61,8 @@ def render_block(results):
             wall = (f"1 ({statistics.median(r['wall'] for r in default):.1f} s)")
             cpu = (f"1 ({statistics.median(r['cpu'] for r in default):.1f} s)")
         else:
-            wall = ratio_cell(ratios(results, index, "wall"))
-            cpu = ratio_cell(ratios(results, index, "cpu"))
+            wall = peer_table.spread_or_value(ratios(results, index, "wall"), 2)
+            cpu = peer_table.spread_or_value(ratios(results, index, "cpu"), 2)
         lines.append(f"| {assembly} | {blas} | {wall} | {cpu} |")
     faster = [run for index, run in enumerate(rounds[0]) if index > 0
               and statistics.median(ratios(results, index, "wall")) < 1]

@@ -49,6 +49,11 @@ def spread(values, digits):
             f"({min(values):.{digits}f}–{max(values):.{digits}f})")
 
 
+def spread_or_value(values, digits):
+    """spread(values, digits), or the value alone when there is one."""
+    return f"{values[0]:.{digits}f}" if len(values) == 1 else spread(values, digits)
+
+
 def table_rows(case):
     """The two rows (plisse, then DOLFINx) of one mesh size and element."""
     pairs = case["pairs"]
