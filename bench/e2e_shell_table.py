@@ -89,8 +89,7 @@ def speed_ups(results, key, value):
             if r["repeat"] in reference]
 
 
-# History columns that describe the solve rather than the state it reached.
-SOLVER_COLUMNS = ("step", "newton_iterations", "residual_norm")
+SOLVER_COLUMNS = peer_table.SOLVER_COLUMNS
 
 
 def largest_difference(run, reference):

@@ -49,6 +49,11 @@ def spread(values, digits):
             f"({min(values):.{digits}f}–{max(values):.{digits}f})")
 
 
+# The columns of a history.csv that describe the solve rather than the state it reached, left out
+# where the benches compare two runs' states.
+SOLVER_COLUMNS = ("step", "newton_iterations", "residual_norm")
+
+
 def spread_or_value(values, digits):
     """spread(values, digits), or the value alone when there is one."""
     return f"{values[0]:.{digits}f}" if len(values) == 1 else spread(values, digits)
