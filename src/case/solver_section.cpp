@@ -66,6 +66,13 @@ Schema<NewtonSettings> newton_schema() {
          "change times mu/h, docs/theory/mixed_up.md, X1)");
   s.integer("max_iterations", &NewtonSettings::max_iterations, Range::at_least(1),
             "Newton iterations per step before the step counts as failed");
+  s.integer("stall_iterations", &NewtonSettings::stall_iterations, Range::at_least(0),
+            "a step counts as failed after this many Newton iterations in a row that each cut "
+            "the residual by less than 1 − stall_ratio, before max_iterations: a stalled "
+            "solve is cut back at once instead of spending a factorisation per iteration left "
+            "(docs/case-file.md, \"Stalled steps\"); 0: only max_iterations ends a step");
+  s.real("stall_ratio", &NewtonSettings::stall_ratio, kOpenUnit, "–",
+         "an iteration stalls when it leaves ‖R‖ above stall_ratio times the one before");
   s.choice<LineSearch>("line_search", &NewtonSettings::line_search, kLineSearches,
                        "PETSc SNES line search: bt backtracks on the residual norm, basic "
                        "takes full steps, l2 and cp minimise along the step (cp suits "

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/petsc_call.hpp"
+#include "solver/stall_watch.hpp"
 
 namespace plisse {
 namespace {
@@ -214,6 +215,7 @@ NewtonResult ArcLengthSolver::correct(double arc, double& t) {
 
 NewtonResult ArcLengthSolver::correct(double arc, double& t, NewtonResult& result) {
   result.reference_norm = reference_;
+  StallWatch stall(settings_);
   for (int k = 0;; ++k) {
     // Beyond [0, end_time] the ramps hold their end values and dR/dt = 0: the caller lands on the
     // bound by load control (A8).
@@ -237,6 +239,10 @@ NewtonResult ArcLengthSolver::correct(double arc, double& t, NewtonResult& resul
     if (result.residual_norm <= std::max(settings_.atol, settings_.rtol * reference_)) {
       result.converged = true;
       result.reason = "converged";
+      return result;
+    }
+    if (stall.stalled(result.residual_norm)) {
+      result.reason = stall.describe();
       return result;
     }
     if (k >= settings_.max_iterations) {

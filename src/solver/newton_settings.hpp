@@ -28,6 +28,11 @@ struct NewtonSettings {
   double rtol = 1e-8;       ///< relative residual tolerance, in (0, 1)
   double atol = 1e-10;      ///< absolute residual tolerance [N], >= 0
   int max_iterations = 25;  ///< >= 1
+  /// A solve is given up (the step then is cut back) after this many iterations in a row that
+  /// each leave ||R|| above stall_ratio times the one before (solver/stall_watch.hpp); 0: only
+  /// max_iterations ends a solve. >= 0.
+  int stall_iterations = 0;
+  double stall_ratio = 0.9;  ///< in (0, 1)
   LineSearch line_search = LineSearch::bt;
   /// Direct solver only: before factorising anew, iterate x -= F^-1 R(x) with the freshest
   /// factorisation already at hand (the last Newton tangent, or the stability check's tangent of

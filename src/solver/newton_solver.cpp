@@ -96,7 +96,8 @@ void check_petsc_options(const NewtonSettings& settings) {
   SNESDestroy(&snes);
 }
 
-NewtonSolver::NewtonSolver(MixedModel& model, const NewtonSettings& settings) : model_(model) {
+NewtonSolver::NewtonSolver(MixedModel& model, const NewtonSettings& settings)
+    : model_(model), stall_(settings) {
   // The event log splits the linear-solver time into factorisation and triangular solves.
   PetscBool logging = PETSC_FALSE;
   PLISSE_PETSC(PetscLogIsActive(&logging));
@@ -187,6 +188,12 @@ PetscErrorCode NewtonSolver::converged(SNES snes, PetscInt it, PetscReal xnorm, 
     PetscCall(SNESGetLineSearch(snes, &line_search));
     PetscCall(SNESLineSearchGetLambda(line_search, &lambda));
     if (lambda < kShortStep) ++self->short_steps_;
+  }
+  // A solve that crept for stall_iterations in a row is given up; the stepper cuts back. PETSc
+  // 3.18 has no user reason: DIVERGED_DTOL ends it, and `stalled_` says why.
+  if (self->stall_.stalled(fnorm) && *reason == SNES_CONVERGED_ITERATING) {
+    self->stalled_ = true;
+    *reason = SNES_DIVERGED_DTOL;
   }
   // The next iteration keeps the factor when this one cut ||R|| tenfold (newton_solver.hpp).
   self->chord_next_ = self->chord_enabled_ && self->reuse_allowed_ && it > 0 &&
@@ -400,6 +407,7 @@ PetscErrorCode NewtonSolver::snes_solve() {
   // Every SNES solve starts with a fresh tangent; converged() lets later iterations keep it.
   chord_next_ = false;
   previous_fnorm_ = 0.0;
+  stall_.restart();
   if (chord_enabled_) PLISSE_PETSC(SNESSetLagJacobian(snes_, 1));
   return SNESSolve(snes_, nullptr, x_);
 }
@@ -420,6 +428,7 @@ NewtonResult NewtonSolver::run() {
   jacobians_ = 0;
   chord_iterations_ = 0;
   short_steps_ = 0;
+  stalled_ = false;
   model_.get_free(x_);
   // The tangent's sparsity grew (contact pairs): a new matrix, which the factorisation analyses
   // anew; a factor of the old pattern is not reused.
@@ -509,7 +518,9 @@ void NewtonSolver::read_snes_outcome(NewtonResult& result, int earlier_iteration
   result.reused_solves += chord_iterations_;
   result.residual_norm = result.residual_history.empty() ? 0.0 : result.residual_history.back();
   if (!result.out_of_memory) {  // else its reason says how much memory was asked for
-    result.reason = interrupted_ ? "interrupted" : SNESConvergedReasons[reason];
+    result.reason = interrupted_ ? "interrupted"
+                    : stalled_   ? stall_.describe()
+                                 : SNESConvergedReasons[reason];
     if (reason > 0 && !residual_test)
       result.reason +=
           " without plisse's residual test (a PETSc option such as -snes_type ksponly "

@@ -12,6 +12,7 @@
 
 #include "output/history_writer.hpp"
 #include "output/json_file.hpp"
+#include "output/pvd_writer.hpp"
 #include "output/vtu_reader.hpp"
 #include "support/run_case.hpp"
 #include "support/run_plisse.hpp"
@@ -295,6 +296,58 @@ TEST(SolverFailure, ALineSearchThatShortensEveryStepIsNamedWithItsRemedy) {
   EXPECT_EQ(cp["steps"].get<int>(), 1);
   EXPECT_EQ(cp["cutbacks"].get<int>(), 0);
   EXPECT_LE(cp["newton_iterations"].get<int>(), 4);
+}
+
+// Requirement: solver.newton.stall_iterations gives a creeping Newton solve up early, and the
+// run ends where it ends without it. The strip under its weight with bt (the test above) creeps:
+// each attempt spends all 25 iterations, each cutting the residual by a few percent, before the
+// step is cut back. With stall_iterations: 3 every failed attempt ends after 3 iterations and says
+// why; the run takes fewer Newton iterations in all (each one a factorisation) and its last state
+// is the plain run's within what two solves to rtol 1e-8 may differ by (1e-6 of the largest
+// displacement; the two differed by 1.3e-7 of it).
+TEST(SolverFailure, AStalledSolveIsGivenUpEarlyAndTheRunEndsInTheSameState) {
+  const auto with = [](int stall) {
+    const CaseRun run = run_yaml(
+        "stall-" + std::to_string(stall),
+        strip_under_its_weight("2.5", "{steps: 1, newton: {line_search: bt, stall_iterations: " +
+                                          std::to_string(stall) + "}}"));
+    EXPECT_EQ(run.status, 0) << run.log;
+    return run;
+  };
+  const CaseRun plain = with(0), stalled = with(3);
+  EXPECT_EQ(plain.log.find("stalled"), std::string::npos) << plain.log;
+  EXPECT_NE(plain.log.find("failed after 25 iterations"), std::string::npos) << plain.log;
+  // Every failed attempt of the stalled run ended after 3 iterations, and there was one.
+  const std::string expected =
+      "failed after 3 iterations: Newton did not converge (stalled: 3 iterations in a row";
+  int attempts = 0;
+  for (std::size_t at = stalled.log.find("failed after "); at != std::string::npos;
+       at = stalled.log.find("failed after ", at + 1)) {
+    ++attempts;
+    EXPECT_EQ(stalled.log.compare(at, expected.size(), expected), 0)
+        << stalled.log.substr(at, 200);
+  }
+  EXPECT_GT(attempts, 0) << stalled.log;
+  const auto summary = [](const CaseRun& r) {
+    return read_json_file(r.dir / "run" / "summary.json");
+  };
+  const int plain_iterations = summary(plain)["newton_iterations"].get<int>();
+  const int stalled_iterations = summary(stalled)["newton_iterations"].get<int>();
+  EXPECT_LT(2 * stalled_iterations, plain_iterations)
+      << stalled_iterations << " against " << plain_iterations;
+  const auto last_displacement = [](const CaseRun& r) {
+    const auto run = r.dir / "run";
+    return read_vtu_point_field(run / read_pvd(run / "solution.pvd").back().file, "displacement");
+  };
+  const VtuField a = last_displacement(plain), b = last_displacement(stalled);
+  ASSERT_EQ(a.values.size(), b.values.size());
+  double largest = 0.0, difference = 0.0;
+  for (std::size_t i = 0; i < a.values.size(); ++i) {
+    largest = std::max(largest, std::abs(a.values[i]));
+    difference = std::max(difference, std::abs(a.values[i] - b.values[i]));
+  }
+  EXPECT_GT(largest, 0.1);  // the tip sags 0.13 mm
+  EXPECT_LT(difference, 1e-6 * largest);
 }
 
 // Requirement: a run in which no step converges from the start does not call the start a limit
