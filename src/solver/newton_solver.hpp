@@ -197,8 +197,8 @@ class NewtonSolver {
   bool chord_next_ = false;      ///< the coming SNES iteration keeps the factor
   double previous_fnorm_ = 0.0;  ///< ||R|| at the last SNES iteration
   int chord_iterations_ = 0;     ///< SNES iterations in the current solve that kept the factor
-  StallWatch stall_;      ///< gives a stalled solve up (converged())
-  bool stalled_ = false;  ///< the current solve was given up by stall_
+  StallWatch stall_;             ///< gives a stalled solve up (converged())
+  bool stalled_ = false;         ///< the current solve was given up by stall_
   int short_steps_ = 0;  ///< SNES iterations in the current solve whose line search cut the step
                          ///< below half (failure_hint)
   bool backtracking_ = false;  ///< the line search is bt (NewtonSettings::line_search)

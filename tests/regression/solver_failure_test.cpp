@@ -7,8 +7,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "output/history_writer.hpp"
 #include "output/json_file.hpp"
@@ -324,8 +326,7 @@ TEST(SolverFailure, AStalledSolveIsGivenUpEarlyAndTheRunEndsInTheSameState) {
   for (std::size_t at = stalled.log.find("failed after "); at != std::string::npos;
        at = stalled.log.find("failed after ", at + 1)) {
     ++attempts;
-    EXPECT_EQ(stalled.log.compare(at, expected.size(), expected), 0)
-        << stalled.log.substr(at, 200);
+    EXPECT_EQ(stalled.log.compare(at, expected.size(), expected), 0) << stalled.log.substr(at, 200);
   }
   EXPECT_GT(attempts, 0) << stalled.log;
   const auto summary = [](const CaseRun& r) {
@@ -348,6 +349,50 @@ TEST(SolverFailure, AStalledSolveIsGivenUpEarlyAndTheRunEndsInTheSameState) {
   }
   EXPECT_GT(largest, 0.1);  // the tip sags 0.13 mm
   EXPECT_LT(difference, 1e-6 * largest);
+}
+
+// Requirement: the arc-length corrector gives a stalled solve up as load stepping does. The shell
+// balloon with arc length, its corrector's tolerance 1e-17 (solver.newton.rtol, below double
+// precision's resolution: it cannot be met) while load-controlled Newton keeps 1e-10 (PETSc's
+// -snes_rtol, which only SNES reads): the first step converges, and every arc of the second
+// reaches the residual's round-off floor and creeps there. Without stall_iterations each arc
+// spends all 25 iterations; with 3, each ends a few iterations after reaching the floor and says
+// why.
+TEST(SolverFailure, TheArcLengthCorrectorGivesAStalledSolveUpEarly) {
+  const auto arcs = [](int stall) {
+    const CaseRun r = run_example(
+        "arc-stall-" + std::to_string(stall), "shell-balloon-arc-length.yaml",
+        "--set solver.newton.rtol=1e-17 --set solver.newton.atol=0 --set solver.min_step=0.01 "
+        "--set solver.newton.stall_iterations=" +
+            std::to_string(stall) + " --petsc '-snes_rtol 1e-10'");
+    EXPECT_EQ(r.status, 1) << r.log;
+    // "failed after N iterations: ..." of each arc cut back (the log's warnings)
+    std::vector<std::string> attempts;
+    std::istringstream lines(r.log);
+    for (std::string line; std::getline(lines, line);) {
+      const std::size_t failed = line.find("failed after ");
+      if (line.rfind("warning:", 0) == 0 && line.find(": arc ") != std::string::npos &&
+          failed != std::string::npos)
+        attempts.push_back(line.substr(failed));
+    }
+    return attempts;
+  };
+  const auto plain = arcs(0), stalled = arcs(3);
+  ASSERT_FALSE(plain.empty());
+  ASSERT_FALSE(stalled.empty());
+  for (const std::string& a : plain)
+    EXPECT_EQ(a.rfind("failed after 25 iterations: Newton did not converge (no convergence in 25 "
+                      "iterations",
+                      0),
+              0u)
+        << a;
+  for (const std::string& a : stalled) {
+    int iterations = 0;
+    ASSERT_EQ(std::sscanf(a.c_str(), "failed after %d iterations", &iterations), 1) << a;
+    EXPECT_LT(iterations, 15) << a;
+    EXPECT_NE(a.find("Newton did not converge (stalled: 3 iterations in a row"), std::string::npos)
+        << a;
+  }
 }
 
 // Requirement: a run in which no step converges from the start does not call the start a limit
