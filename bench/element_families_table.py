@@ -93,6 +93,11 @@ def strip_verdict(strip):
     return lines
 
 
+def times(ratio):
+    """A ratio as the block says it: whole from 10 up, else with one decimal."""
+    return f"{ratio:.0f}" if ratio >= 10 else f"{ratio:.1f}"
+
+
 def versus_best_mini(table_rows, error, describe):
     """The cheapest Taylor-Hood row at least as accurate as MINI's most accurate one (by
     |error(row)|), against it; `describe(row)` says a row's accuracy in words."""
@@ -109,9 +114,9 @@ def versus_best_mini(table_rows, error, describe):
     rival = min(rivals, key=lambda r: r["unknowns"])
     return [f"{head}, the cheapest Taylor–Hood mesh at least as accurate has "
             f"{grouped(rival['unknowns'])} unknowns ({describe(rival)}): "
-            f"**{best['unknowns'] / rival['unknowns']:.0f} times fewer, "
-            f"{best['wall'] / rival['wall']:.0f} times less time and "
-            f"{best['memory'] / rival['memory']:.0f} times less memory**."]
+            f"**{times(best['unknowns'] / rival['unknowns'])} times fewer, "
+            f"{times(best['wall'] / rival['wall'])} times less time and "
+            f"{times(best['memory'] / rival['memory'])} times less memory**."]
 
 
 def render_block(results):

@@ -32,10 +32,10 @@ def sphere(element, size, layers, unknowns, error, wall, memory):
 # 1.013, not within 2 %) and 1.030 (1.68 %: within), so the cheapest within 2 % is the second.
 # MINI's most accurate is the 4-layer mesh (12.3 % above); both Taylor-Hood meshes are closer, the
 # cheapest has 500 unknowns: 8000 / 500 = 16 times fewer, wall medians 42 / 1 = 42, memory medians
-# 410 / 50 = 8.2 -> 8.
+# 410 / 50 = 8.2 (one decimal below 10).
 # The sphere: MINI's most accurate mesh has the error 5.0e-3 (30 000 unknowns, wall 11 s, 320 MiB);
 # the Taylor-Hood meshes have 1.0e-2 (less accurate) and 1.5e-3 (6 000 unknowns, 1.5 s, 150 MiB):
-# 5 times fewer unknowns, 7.3 -> 7 times less time, 2.1 -> 2 times less memory.
+# 5.0 times fewer unknowns, 7.3 times less time, 2.1 times less memory.
 ROUND_1 = {
     "strip": [strip("mini", 2, 0.5, 1000, 1.513, 2.0, 100.0),
               strip("mini", 4, 0.25, 8000, 1.138, 40.0, 400.0),
@@ -76,7 +76,7 @@ rows: it comes within 2 % at about 10 layers.
 The cheapest Taylor–Hood mesh within 2 % has 2 000 unknowns (2 layers of cells 0.5 t).
 Against MINI's most accurate mesh (8 000 unknowns, ε_cr 1.138 of beam theory), the cheapest \
 Taylor–Hood mesh at least as accurate has 500 unknowns (ε_cr 1.050 of beam theory): **16 times \
-fewer, 42 times less time and 8 times less memory**.
+fewer, 42 times less time and 8.2 times less memory**.
 
 **Thick sphere** (`plisse run examples/sphere-inflation.yaml --set element=ELEMENT --set \
 mesh.element_size=SIZE --set mesh.layers=LAYERS`):
@@ -89,8 +89,8 @@ mesh.element_size=SIZE --set mesh.layers=LAYERS`):
 | Taylor–Hood | 1.5 | 2 | 6 000 | 1.5e-03 | 1.5 (1.5–1.5) | 150 |
 
 Against MINI's most accurate mesh (30 000 unknowns, error 5.0e-03), the cheapest Taylor–Hood mesh \
-at least as accurate has 6 000 unknowns (error 1.5e-03): **5 times fewer, 7 times less time and 2 \
-times less memory**.
+at least as accurate has 6 000 unknowns (error 1.5e-03): **5.0 times fewer, 7.3 times less time and \
+2.1 times less memory**.
 """
 
 
