@@ -54,8 +54,10 @@ TEST(CaseErrors, UnknownKeysListTheAllowedOnesAndSuggestTypos) {
   EXPECT_INPUT_ERROR(
       nested, "case.yaml", 4, 24, "solver.newton.max_iteratons",
       "unknown key 'max_iteratons' in 'solver.newton' (did you mean 'max_iterations'?)");
-  EXPECT_NE(nested.rule().find("allowed keys: rtol, atol, max_iterations, line_search"),
-            std::string::npos);
+  EXPECT_NE(nested.rule().find("allowed keys: rtol, atol, max_iterations, stall_iterations, "
+                               "stall_ratio, line_search"),
+            std::string::npos)
+      << nested.rule();
 
   // No suggestion when nothing is close.
   const InputError far = case_error(kMinimalCase + "output: {colour: red}\n");
