@@ -14,8 +14,9 @@ namespace {
 /// rate the factor's ten or so solves to rtol 1e-8 cost less than two factorisations.
 constexpr double kReuseContraction = 0.1;
 /// A Newton step the line search cut below this fraction is a short step; a failed solve of at
-/// least kCrawlIterations iterations, three quarters of them short under bt, says why and what
-/// to change (read_snes_outcome): its full steps kept raising the residual.
+/// least kCrawlIterations iterations (or fewer, given up as stalled), three quarters of them short
+/// under bt, says why and what to change (read_snes_outcome): its full steps kept raising the
+/// residual.
 constexpr double kShortStep = 0.5;
 constexpr int kCrawlIterations = 4;
 /// A failed solve whose residual fell this far below ||R(x_0)|| has converged as far as round-off
@@ -539,7 +540,8 @@ void NewtonSolver::read_snes_outcome(NewtonResult& result, int earlier_iteration
                     "solver.newton.rtol or atol accepts the state",
                     reference_norm_, lowest, target);
       result.reason += floor;
-    } else if (!result.converged && !interrupted_ && backtracking_ && its >= kCrawlIterations &&
+    } else if (!result.converged && !interrupted_ && backtracking_ &&
+               (its >= kCrawlIterations || stalled_) &&
                4 * short_steps_ >= 3 * static_cast<int>(its))
       result.reason += "; the line search shortened " + std::to_string(short_steps_) + " of " +
                        std::to_string(its) +
