@@ -37,12 +37,18 @@ def record_of(page, name):
     return Path(page).with_suffix("") / f"{name}.json"
 
 
+def one_core_env():
+    """This process's environment with one element-loop and one BLAS thread, for a run timed on
+    one core."""
+    return dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1")
+
+
 def run_plisse(plisse, case, options, out, log):
     """Runs `plisse run --overwrite CASE OPTIONS -o OUT` (plisse: the executable) on one core
     (OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1), what it prints into the file `log`; returns the
     wall time of the whole process [s] and its summary.json. Raises
     subprocess.CalledProcessError when the run fails."""
-    env = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1")
+    env = one_core_env()
     start = time.monotonic()
     with open(log, "w", encoding="utf-8") as f:
         subprocess.run([str(plisse), "run", "--overwrite", str(case), *options, "-o", str(out)],
