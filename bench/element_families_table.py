@@ -89,7 +89,8 @@ def strip_verdict(strip):
         lines.append(f"The cheapest Taylor–Hood mesh within {100 * STRIP_WITHIN:.0f} % has "
                      f"{grouped(cheapest['unknowns'])} unknowns "
                      f"({cheapest['layers']} layers of cells {cheapest['size']:g} t).")
-    lines += versus_best_mini(strip, strip_excess, lambda r: f"ε_cr {r['ratio']:.3f} of beam theory")
+    lines += versus_best_mini(strip, strip_excess,
+                              lambda r: f"ε_cr {r['ratio']:.3f} of beam theory")
     return lines
 
 
