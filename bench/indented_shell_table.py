@@ -103,10 +103,7 @@ def render_block(results):
     return "\n".join(lines) + "\n"
 
 
-def update_file(path, results):
-    """Rewrites the block of the file at `path`; leaves it untouched and raises
-    peer_table.BlockError when its markers are wrong."""
-    peer_table.write_block(path, render_block(results), MARKERS)
+update_file = peer_table.block_updater(render_block, MARKERS)
 
 
 load = peer_table.load  # the measurements from a JSON file of bench/indented-shell

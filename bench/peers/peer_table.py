@@ -163,10 +163,16 @@ def write_block(path, inner, markers):
             f.write(updated)
 
 
-def update_file(path, results):
-    """Rewrites the block of the file at `path` from the measurements; leaves the file untouched
-    and raises BlockError when its markers are wrong."""
-    write_block(path, render_block(results), (BEGIN, END))
+def block_updater(render, markers):
+    """The update_file(path, results) of a bench's table module: rewrites the block between
+    `markers` of the file at `path` with render(results); leaves the file untouched and raises
+    BlockError when its markers are wrong."""
+    def update_file(path, results):
+        write_block(path, render(results), markers)
+    return update_file
+
+
+update_file = block_updater(render_block, (BEGIN, END))
 
 
 def load(path):
