@@ -92,3 +92,10 @@ def numeric_history(path):
             except (TypeError, ValueError):
                 pass
     return columns
+
+
+def final_and_largest(path):
+    """(the last row, the largest magnitude of each column) of a history.csv's numeric columns."""
+    numeric = numeric_history(path)
+    return ({k: v[-1] for k, v in numeric.items()},
+            {k: max(abs(x) for x in v) for k, v in numeric.items()})
