@@ -6,9 +6,10 @@ Units: times in s, memory in MiB; the differences have none.
 
 A set of variants (SETS, by name) is a dict:
   what: the sentence the block opens with, after its provenance;
-  groups: a list of {label, case, set: [KEY=VALUE, ...], variants: [{label, set, petsc}]}: each
-    group's case is run with the group's overrides and each variant's, `--petsc` its options; the
-    group's first variant is the reference of the others' final states.
+  groups: a list of {label, case, set: [KEY=VALUE, ...], ranks (optional, default 1), variants:
+    [{label, set, petsc}]}: each group's case is run on its MPI ranks (`plisse run -n RANKS`) with
+    the group's overrides and each variant's, `--petsc` its options; the group's first variant is
+    the reference of the others' final states.
 The measurements (bench/variants writes them as JSON, docs/performance/variants-NAME.json for the
 run behind the docs) are a dict:
   command, commit, local_changes, date, cores, load_average: as bench/peers/peer_table.py's;
@@ -64,6 +65,20 @@ SETS = {
                  {"label": "full rank", "set": FULL_NEWTON, "petsc": ""},
                  {"label": "ε = 1e-8", "set": FULL_NEWTON, "petsc": BLR.format(eps="1e-8")},
                  {"label": "ε = 1e-5", "set": FULL_NEWTON, "petsc": BLR.format(eps="1e-5")}]},
+        ]},
+    "mumps-ranks": {
+        "what": "MUMPS's options on two MPI ranks (`--petsc`: `-mat_mumps_icntl_13 1`, no "
+                "ScaLAPACK for the root front; `-mat_mumps_icntl_7 5`, METIS ordering instead of "
+                "the default) against its defaults, with full Newton "
+                "(`solver.newton.reuse_factor=false`)",
+        "groups": [
+            {"label": "shell M, 0.75 mm, on 2 ranks", "case": "bench/cases/shell-pressure.yaml",
+             "set": ["mesh.element_size=0.75"], "ranks": 2,
+             "variants": [
+                 {"label": "MUMPS's defaults", "set": FULL_NEWTON, "petsc": ""},
+                 {"label": "no ScaLAPACK root", "set": FULL_NEWTON,
+                  "petsc": "-mat_mumps_icntl_13 1"},
+                 {"label": "METIS ordering", "set": FULL_NEWTON, "petsc": "-mat_mumps_icntl_7 5"}]},
         ]},
 }
 
@@ -139,7 +154,7 @@ def render_block(results):
     n = results["repeats"]
     lines = [
         f"{peer_table.made_by(results)}: {SETS[results['name']]['what']}. Each variant a whole "
-        f"`plisse run` on one core (`OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1`), {n} "
+        f"`plisse run`, one core per rank (`OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1`), {n} "
         f"round{'s' if n > 1 else ''} of every run in turn; wall and CPU time (the process's user "
         "+ system) as median (smallest–largest), the wall time also relative to the group's first "
         "variant's median; the counts and the factorisation's time are the first round's. The last "

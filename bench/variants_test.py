@@ -49,7 +49,7 @@ def measurements():
 
 EXPECTED = f"""\
 Made by `bench/variants blr --repeat 2` at commit abc1234 on 2024-01-02: \
-{table.SETS['blr']['what']}. Each variant a whole `plisse run` on one core \
+{table.SETS['blr']['what']}. Each variant a whole `plisse run`, one core per rank \
 (`OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1`), 2 rounds of every run in turn; wall and CPU time \
 (the process's user + system) as median (smallest–largest), the wall time also relative to the \
 group's first variant's median; the counts and the factorisation's time are the first round's. \
