@@ -18,7 +18,8 @@ angle over the quarter; a fold is a maximum of that distance that rises at least
 (in wall thicknesses) above the minima on both sides; their number over the full circle is four
 times the quarter's, the wavelength the mean rim's circumference over that count, and the depth
 the largest rise of a fold over its neighbouring minima. The large folds are those that rise at
-least LARGE_FOLD of the deepest: the seam's few deep folds among its fine crimps.
+least LARGE_FOLD of the deepest: the seam's few deep folds among its fine crimps; their mean rise
+is the large folds' depth, which depends less on the one deepest fold than the depth does.
 """
 import argparse
 import math
@@ -66,7 +67,8 @@ def panel(run):
 
 def seam(path, radius, thickness):
     """(angle [deg], distance from the axis [mm]) of the rim's nodes at the step file `path`, by
-    angle, and the folds: (count over the full circle, wavelength [mm], depth [mm], mean radius)."""
+    angle, and the folds: (count over the full circle, wavelength [mm], depth [mm], mean radius
+    [mm], count of the large folds over the full circle, the large folds' depth [mm])."""
     mesh = runs.read_raw_vtu(path)
     X = mesh.points
     x = X + mesh.point_data["displacement"]
@@ -79,9 +81,15 @@ def seam(path, radius, thickness):
     count = 4 * len(peaks)
     mean = float(np.mean(r))
     wavelength = 2.0 * math.pi * mean / count if count else float("nan")
-    deepest = max(depths, default=0.0)
-    large = 4 * sum(1 for d in depths if d >= LARGE_FOLD * deepest)
-    return angle, r, (count, wavelength, deepest, mean, large)
+    deepest, large = large_folds(depths)
+    large_depth = float(np.mean(large)) if large else 0.0
+    return angle, r, (count, wavelength, deepest, mean, 4 * len(large), large_depth)
+
+
+def large_folds(rises):
+    """(the deepest rise, the rises of the large folds: at least LARGE_FOLD of the deepest)."""
+    deepest = max(rises, default=0.0)
+    return deepest, [d for d in rises if d >= LARGE_FOLD * deepest]
 
 
 def folds(r, prominence):
@@ -115,14 +123,15 @@ def summary_row(run):
     h = runs.read_history(run, required=True)
     a, half, volume = paulsen(radius)
     last = len(h["time"]) - 1
-    _, _, (count, wavelength, depth, mean, large) = seam(runs.last_vtu(run), radius, thickness)
+    _, _, (count, wavelength, depth, mean, large, large_depth) = seam(runs.last_vtu(run), radius,
+                                                                      thickness)
     bag = 2.0 * h["full_volume:gas"][last]  # the quarter's mirrors make half the bag
     return {"run": runs.run_name(run), "unknowns": s.get("free_dofs"), "steps": s.get("steps"),
             "wall [s]": (s.get("wall_time") or {}).get("total"), "peak [MiB]": s.get("peak_memory_mib"),
             "p [kPa]": 1e3 * h["pressure:gas"][last], "V / V_P": bag / volume,
             "crown / h_P": (h["uy:crown"][last]) / half, "seam / a_P": mean / a,
             "folds": count, "wavelength [mm]": wavelength, "depth [mm]": depth,
-            "large folds": large}
+            "large folds": large, "large folds' depth [mm]": large_depth}
 
 
 def print_summary(paths):
@@ -149,7 +158,7 @@ def draw(folder, paths):
         mesh = runs.read_raw_vtu(runs.last_vtu(run))
         x = mesh.points + mesh.point_data["displacement"]
         profile.plot(np.hypot(x[:, 0], x[:, 2]), x[:, 1], ".", ms=1, label=name)
-        angle, r, (count, _, _, _, large) = seam(runs.last_vtu(run), radius, thickness)
+        angle, r, (count, _, _, _, large, _) = seam(runs.last_vtu(run), radius, thickness)
         rim.plot(angle, r, label=f"{name}: {count} folds, {large} large")
     a, half, volume = paulsen(radius)
     pv.axvline(1e-6 * volume, color="k", ls=":", label="Paulsen's volume")

@@ -1,5 +1,5 @@
 """Unit tests of scripts/airbag_full_size.py: Paulsen's Mylar balloon against its own profile
-integrated independently, and the seam's fold count on synthetic seams."""
+integrated independently, and the seam's fold count and large folds on synthetic seams."""
 import math
 import sys
 import unittest
@@ -41,6 +41,14 @@ class FoldsTest(unittest.TestCase):
         r = 270.0 + 0.1 * np.cos(40 * angle) - 10.0 * np.exp(-((angle - 0.7) / 0.05) ** 2)
         peaks, rises = bag.folds(r, 0.35)
         self.assertEqual(len(peaks), 0)  # the deep fold is a minimum; the ripple is 0.2 mm
+
+    def test_the_large_folds_are_those_within_a_fifth_of_the_deepest(self):
+        # 20 mm deepest: a fifth is 4 mm, so 4.0 counts and 3.9 does not; their mean is
+        # (20 + 10 + 4) / 3.
+        deepest, large = bag.large_folds([3.9, 20.0, 1.0, 10.0, 4.0])
+        self.assertEqual(deepest, 20.0)
+        self.assertEqual(large, [20.0, 10.0, 4.0])
+        self.assertEqual(bag.large_folds([]), (0.0, []))
 
 
 if __name__ == "__main__":
