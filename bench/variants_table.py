@@ -135,13 +135,16 @@ def variant_row(group_label, variant, reference):
     per_factorisation = (f"{first['factorisation'] / first['factorisations']:.3f}"
                          if first["factorisations"] else "–")
     if variant is reference:
-        versus = "reference"
-        wall_ratio = "1"
+        versus, wall_ratio = "reference", "1"
     else:
-        found = final_differences(first, reference["runs"][0])[:SHOWN_DIFFERENCES]
-        versus = ", then ".join(f"{d:.1e} ({column})" for d, column in found) or "no shared column"
         wall_ratio = (ratio_cell(walls, [r["wall"] for r in reference["runs"]])
                       if all(completed(r) for r in reference["runs"]) else "–")
+        if "final" not in reference["runs"][0]:
+            versus = "no reference: the first variant wrote no history"
+        else:
+            found = final_differences(first, reference["runs"][0])[:SHOWN_DIFFERENCES]
+            versus = (", then ".join(f"{d:.1e} ({column})" for d, column in found)
+                      or "no shared column")
     return (f"| {group_label} | {variant['label']} | {grouped(first['unknowns'])} | "
             f"{first['steps']} | {first['newton']} | {first['factorisations']} | "
             f"{first['cutbacks']} | {per_factorisation} | "
@@ -155,8 +158,8 @@ def render_block(results):
     lines = [
         f"{peer_table.made_by(results)}: {SETS[results['name']]['what']}. Each variant a whole "
         f"`plisse run`, one core per rank (`OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1`), {n} "
-        f"round{'s' if n > 1 else ''} of every run in turn; wall and CPU time (the process's user "
-        "+ system) as median (smallest–largest), the wall time also relative to the group's first "
+        f"round{'s' if n > 1 else ''} of every run in turn; wall and CPU time (user + system of "
+        "the run's processes) as median (smallest–largest), the wall time also relative to the group's first "
         "variant's median; the counts and the factorisation's time are the first round's. The last "
         "column: the two largest differences of the final history row from the first variant's, "
         "each column's relative to its largest magnitude over the first variant's run (the "

@@ -51,7 +51,7 @@ EXPECTED = f"""\
 Made by `bench/variants blr --repeat 2` at commit abc1234 on 2024-01-02: \
 {table.SETS['blr']['what']}. Each variant a whole `plisse run`, one core per rank \
 (`OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1`), 2 rounds of every run in turn; wall and CPU time \
-(the process's user + system) as median (smallest–largest), the wall time also relative to the \
+(user + system of the run's processes) as median (smallest–largest), the wall time also relative to the \
 group's first variant's median; the counts and the factorisation's time are the first round's. \
 The last column: the two largest differences of the final history row from the first variant's, \
 each column's relative to its largest magnitude over the first variant's run (the solver's columns \
@@ -104,6 +104,15 @@ class VariantsTable(unittest.TestCase):
         rows = table.render_block(m).splitlines()
         self.assertIn("did not finish (exit status 0, 2)", rows[-3])
         self.assertIn("| 13.8 (13.2–14.3) | – |", rows[-2])
+
+    def test_a_reference_without_history_is_said(self):
+        m = copy.deepcopy(measurements())
+        m["groups"][0]["variants"][0]["runs"][0] = {"status": 0, "wall": 1.0, "cpu": 1.0,
+                                                    "unknowns": 1, "steps": 0, "newton": 0,
+                                                    "factorisations": 0, "cutbacks": 0,
+                                                    "factorisation": 0.0, "peak": 1.0}
+        rows = table.render_block(m).splitlines()
+        self.assertIn("| no reference: the first variant wrote no history |", rows[-2])
 
     def test_docs_hold_what_the_last_run_of_each_set_wrote(self):
         text = (ROOT / "docs" / "performance.md").read_text(encoding="utf-8")
