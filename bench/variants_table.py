@@ -57,7 +57,8 @@ SETS = {
     "blr": {
         "what": "MUMPS's block low-rank factorisation (`--petsc \"-mat_mumps_icntl_35 2 "
                 "-mat_mumps_cntl_7 ε\"`: low-rank factors and solve, dropping tolerance ε) against "
-                "the full-rank factorisation, with full Newton (`solver.newton.reuse_factor=false`)",
+                "the full-rank factorisation, with full Newton "
+                "(`solver.newton.reuse_factor=false`)",
         "groups": [
             {"label": "shell M, 0.75 mm", "case": "bench/cases/shell-pressure.yaml",
              "set": ["mesh.element_size=0.75"],
@@ -159,11 +160,12 @@ def render_block(results):
         f"{peer_table.made_by(results)}: {SETS[results['name']]['what']}. Each variant a whole "
         f"`plisse run`, one core per rank (`OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1`), {n} "
         f"round{'s' if n > 1 else ''} of every run in turn; wall and CPU time (user + system of "
-        "the run's processes) as median (smallest–largest), the wall time also relative to the group's first "
-        "variant's median; the counts and the factorisation's time are the first round's. The last "
-        "column: the two largest differences of the final history row from the first variant's, "
-        "each column's relative to its largest magnitude over the first variant's run (the "
-        f"solver's columns and the contacts' penetrations left out).{peer_table.machine_load(results)}",
+        "the run's processes) as median (smallest–largest), the wall time also relative to the "
+        "group's first variant's median; the counts and the factorisation's time are the first "
+        "round's. The last column: the two largest differences of the final history row from the "
+        "first variant's, each column's relative to its largest magnitude over the first "
+        "variant's run (the solver's columns and the contacts' penetrations left out)."
+        f"{peer_table.machine_load(results)}",
         "",
         "| case | variant | unknowns | steps | Newton iterations | factorisations | cut-backs "
         "| per factorisation [s] | wall [s] | wall / first | CPU [s] | final state against the "

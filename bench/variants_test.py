@@ -32,10 +32,13 @@ def run(wall, cpu, newton, factorisations, factorisation, final, status=0, cutba
 # 12 factorisations in 6 s (0.500 s each). ε = 1e-8: 13.2 and 14.3 s, relative to 11 s 1.20 and
 # 1.30 (median 1.25); 12 factorisations in 9 s (0.750 each); its final force 10.02 against 10.0,
 # 0.02 / 10 = 2.0e-3 of the force's largest value, and its volume 200.1 against 200, 0.1 / 200 =
-# 5.0e-4: the force's first, then the volume's. ε = 1e-5: the second round did not finish (exit status 1).
+# 5.0e-4: the force's first, then the volume's. ε = 1e-5: the second round did not finish (exit
+# status 1).
 def measurements():
-    ref = [run(10.0, 9.5, 12, 12, 6.0, (10.0, 200.0)), run(12.0, 11.5, 12, 12, 6.0, (10.0, 200.0))]
-    blr8 = [run(13.2, 13.0, 12, 12, 9.0, (10.02, 200.1)), run(14.3, 14.0, 12, 12, 9.0, (10.02, 200.1))]
+    ref = [run(10.0, 9.5, 12, 12, 6.0, (10.0, 200.0)),
+           run(12.0, 11.5, 12, 12, 6.0, (10.0, 200.0))]
+    blr8 = [run(13.2, 13.0, 12, 12, 9.0, (10.02, 200.1)),
+            run(14.3, 14.0, 12, 12, 9.0, (10.02, 200.1))]
     blr5 = [run(15.0, 15.0, 13, 13, 9.1, (10.0, 200.0)), {"status": 1, "wall": 3.0, "cpu": 2.9}]
     return {"command": "bench/variants blr --repeat 2", "commit": "abc1234",
             "local_changes": False, "date": "2024-01-02", "cores": 2, "name": "blr",
@@ -51,11 +54,12 @@ EXPECTED = f"""\
 Made by `bench/variants blr --repeat 2` at commit abc1234 on 2024-01-02: \
 {table.SETS['blr']['what']}. Each variant a whole `plisse run`, one core per rank \
 (`OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1`), 2 rounds of every run in turn; wall and CPU time \
-(user + system of the run's processes) as median (smallest–largest), the wall time also relative to the \
-group's first variant's median; the counts and the factorisation's time are the first round's. \
-The last column: the two largest differences of the final history row from the first variant's, \
-each column's relative to its largest magnitude over the first variant's run (the solver's columns \
-and the contacts' penetrations left out). The machine (2 cores) had a load average of 0.2 when the run began and 0.4 when it ended.
+(user + system of the run's processes) as median (smallest–largest), the wall time also relative \
+to the group's first variant's median; the counts and the factorisation's time are the first \
+round's. The last column: the two largest differences of the final history row from the first \
+variant's, each column's relative to its largest magnitude over the first variant's run (the \
+solver's columns and the contacts' penetrations left out). The machine (2 cores) had a load \
+average of 0.2 when the run began and 0.4 when it ended.
 
 | case | variant | unknowns | steps | Newton iterations | factorisations | cut-backs \
 | per factorisation [s] | wall [s] | wall / first | CPU [s] | final state against the first |

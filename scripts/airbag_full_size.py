@@ -127,7 +127,8 @@ def summary_row(run):
                                                                       thickness)
     bag = 2.0 * h["full_volume:gas"][last]  # the quarter's mirrors make half the bag
     return {"run": runs.run_name(run), "unknowns": s.get("free_dofs"), "steps": s.get("steps"),
-            "wall [s]": (s.get("wall_time") or {}).get("total"), "peak [MiB]": s.get("peak_memory_mib"),
+            "wall [s]": (s.get("wall_time") or {}).get("total"),
+            "peak [MiB]": s.get("peak_memory_mib"),
             "p [kPa]": 1e3 * h["pressure:gas"][last], "V / V_P": bag / volume,
             "crown / h_P": (h["uy:crown"][last]) / half, "seam / a_P": mean / a,
             "folds": count, "wavelength [mm]": wavelength, "depth [mm]": depth,
