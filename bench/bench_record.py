@@ -80,6 +80,20 @@ def update_page(program, page, table, results):
     print(f"{program}: rewrote the block of {page}; measurements in {record}", file=sys.stderr)
 
 
+def run_or_load(program, args, table, measure):
+    """The end of a bench's main(): refuses --update's page (args.update) without the block of
+    `table` before anything runs, takes the measurements from --from-json's file (args.from_json)
+    or from measure(), then rewrites the page's block and keeps the measurements beside it
+    (update_page), or prints the block. `table`: the bench's table module (MARKERS, peer_table,
+    load, render_block, update_file)."""
+    refuse_without_block(program, args.update, table)
+    results = table.load(args.from_json) if args.from_json else measure()
+    if args.update:
+        update_page(program, args.update, table, results)
+    else:
+        print(table.render_block(results), end="")
+
+
 def numeric_history(path):
     """{column: [value of each row]} of the numeric columns of a history.csv."""
     with open(path, encoding="utf-8") as f:

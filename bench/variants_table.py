@@ -180,14 +180,28 @@ def render_block(results):
     return "\n".join(lines) + "\n"
 
 
+class SetMismatch(ValueError):
+    """Measurements of another set of variants than the one asked for."""
+
+
 class Page:
-    """The table module's interface bench_record expects (MARKERS, peer_table, update_file), for
-    the block of one set of variants."""
+    """The table module's interface bench_record expects (MARKERS, peer_table, load, render_block,
+    update_file), for the block of one set of variants."""
 
     def __init__(self, name):
+        self.name = name
         self.MARKERS = markers(name)
         self.peer_table = peer_table
+        self.render_block = render_block
         self.update_file = peer_table.block_updater(render_block, self.MARKERS)
+
+    def load(self, path):
+        """The measurements in the JSON file `path`; raises SetMismatch when they are another
+        set's."""
+        results = load(path)
+        if results.get("name") != self.name:
+            raise SetMismatch(f"{path} holds the set {results.get('name')!r}, not {self.name!r}")
+        return results
 
 
 load = peer_table.load  # the measurements from a JSON file of bench/variants
