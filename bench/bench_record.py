@@ -7,6 +7,7 @@ import csv
 import datetime
 import json
 import os
+import resource
 import shlex
 import subprocess
 import sys
@@ -43,17 +44,28 @@ def one_core_env():
     return dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1")
 
 
+def children_cpu():
+    """The CPU time [s] of this process's finished children so far, user and system."""
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def timed_run(command, log, cwd=None, check=True):
+    """Runs `command` on one core (one_core_env), what it prints into the file `log`; returns its
+    exit status, its wall time [s] and its CPU time [s]. With `check`, raises
+    subprocess.CalledProcessError when it fails."""
+    cpu, start = children_cpu(), time.monotonic()
+    with open(log, "w", encoding="utf-8") as f:
+        status = subprocess.run([str(c) for c in command], env=one_core_env(), cwd=cwd, stdout=f,
+                                stderr=subprocess.STDOUT, check=check).returncode
+    return status, time.monotonic() - start, children_cpu() - cpu
+
+
 def run_plisse(plisse, case, options, out, log):
     """Runs `plisse run --overwrite CASE OPTIONS -o OUT` (plisse: the executable) on one core
-    (OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1), what it prints into the file `log`; returns the
-    wall time of the whole process [s] and its summary.json. Raises
+    (timed_run); returns the wall time of the whole process [s] and its summary.json. Raises
     subprocess.CalledProcessError when the run fails."""
-    env = one_core_env()
-    start = time.monotonic()
-    with open(log, "w", encoding="utf-8") as f:
-        subprocess.run([str(plisse), "run", "--overwrite", str(case), *options, "-o", str(out)],
-                       env=env, stdout=f, stderr=subprocess.STDOUT, check=True)
-    wall = time.monotonic() - start
+    _, wall, _ = timed_run([plisse, "run", "--overwrite", case, *options, "-o", out], log)
     return wall, json.loads((Path(out) / "summary.json").read_text(encoding="utf-8"))
 
 
@@ -95,17 +107,18 @@ def run_or_load(program, args, table, measure):
 
 
 def numeric_history(path):
-    """{column: [value of each row]} of the numeric columns of a history.csv."""
+    """{column: [value of each row]} of the numeric columns of a history.csv: those whose every
+    row holds a number."""
     with open(path, encoding="utf-8") as f:
         rows = list(csv.DictReader(f))
-    columns = {}
+    columns, text = {}, set()
     for row in rows:
         for key, value in row.items():
             try:
                 columns.setdefault(key, []).append(float(value))
             except (TypeError, ValueError):
-                pass
-    return columns
+                text.add(key)
+    return {k: v for k, v in columns.items() if k not in text}
 
 
 def final_and_largest(path):
