@@ -10,6 +10,7 @@
 #include <optional>
 #include <set>
 
+#include "app/wrinkling.hpp"
 #include "mesh/bounding_box.hpp"
 #include "mesh/topology.hpp"
 #include "physics/body_force.hpp"
@@ -298,7 +299,7 @@ ModelParts build_model_parts(const Case& c, const Mesh& mesh) {
       // The contact penalties' default scale (contact.md, D11): the case's `material`.
       [&parts] { return shear_modulus(parts.materials.materials.front()); },
       [&] { return element_densities(c, mesh); }, [&] { return default_die_candidates(c, mesh); },
-      [&] { return case_caps(c, mesh); }};
+      [&] { return case_caps(c, mesh); }, imperfection_amplitude(c)};
   auto& terms = parts.terms;
   for (const TermSection& section : term_sections())
     for (const TermEntry* entry : c.terms_in(section.key))

@@ -192,6 +192,11 @@ void hold_shell_slopes(const Case& c, Mesh& mesh) {
 
 }  // namespace
 
+double imperfection_amplitude(const Case& c) {
+  const double relative = c.solver.stability.imperfection;
+  return relative > 0.0 ? relative * *c.mesh.wall_thickness() : 0.0;
+}
+
 Mesh load_perturbed_mesh(const Case& c) {
   Mesh mesh = load_case_mesh(c);
   check_case_against_mesh(c, mesh);
@@ -201,7 +206,7 @@ Mesh load_perturbed_mesh(const Case& c) {
     hold_shell_slopes(c, mesh);
     return mesh;
   }
-  const double amplitude = st.imperfection * *c.mesh.wall_thickness();
+  const double amplitude = imperfection_amplitude(c);
   std::vector<Vec3d> field;
   try {
     if (st.imperfection_kind == "mode") {

@@ -27,6 +27,11 @@ namespace plisse::app {
 /// InputError at its key.
 Mesh load_perturbed_mesh(const Case& c);
 
+/// The largest distance [mm] load_perturbed_mesh's imperfection moves a node: the relative
+/// amplitude solver.stability.imperfection × the wall's thickness (imperfections.md, I1-I2); 0
+/// without an imperfection.
+double imperfection_amplitude(const Case& c);
+
 /// solver.stability mapped to the stepper's options (the perturbation in mm: branch_amplitude x
 /// wall thickness).
 StabilityCheckSettings stability_check_settings(const Case& c);

@@ -23,7 +23,7 @@ std::string describe_node(const Mesh& mesh, int node) {
 
 CavityTerm::CavityTerm(const Cavity& cavity, const Mesh& mesh,
                        const std::vector<ConstrainedComponent>& constraints, int mirror_planes,
-                       const std::vector<CapNodes>& caps)
+                       const std::vector<CapNodes>& caps, double imperfection)
     : mesh_(mesh), cavity_(cavity), faces_(outward_faces(mesh, cavity.surface.name)) {
   const InputPlace& place = cavity.surface.place;
   WallClosure closure = close_over_caps(mesh, faces_, caps);
@@ -53,27 +53,37 @@ CavityTerm::CavityTerm(const Cavity& cavity, const Mesh& mesh,
     const Vec3d& X0 = mesh.nodes[f.nodes[0]];
     area += 0.5 * (mesh.nodes[f.nodes[1]] - X0).cross(mesh.nodes[f.nodes[2]] - X0).norm();
   }
-  const bool flat = std::abs(reference_volume_) <= kFlatVolumeTolerance * area * std::sqrt(area);
-  if (flat) reference_volume_ = 0.0;
-  if (reference_volume_ < 0.0) {
+  const double round_off = kFlatVolumeTolerance * area * std::sqrt(area);
+  if (std::abs(reference_volume_) <= round_off) reference_volume_ = 0.0;
+  // An imperfection of a flat wall moves each node at most `imperfection` along any direction,
+  // so the volume it encloses by at most imperfection × A, of either sign: such a wall starts
+  // flat too, and keeps the V0 it has, which the volume's ramp starts from (C8).
+  const bool flat = std::abs(reference_volume_) <= round_off + imperfection * area;
+  if (reference_volume_ < 0.0 && !flat) {
     std::ostringstream rule;
     rule << "surface '" << cavity.surface.name << "' of cavity '" << cavity.name
          << "' encloses the volume " << reference_volume_
          << " mm^3, which is negative: a cavity lies on the side of its wall away from the "
             "body (e.g. a balloon's 'inner' surface, not 'outer')";
+    if (imperfection > 0.0)
+      rule << "; more than the imperfection of " << imperfection << " mm can take from a flat "
+           << "wall of " << area << " mm^2";
     throw InputError(place, rule.str());
   }
+  const std::string starts_flat =
+      "cavity '" + cavity.name + "' starts flat (its wall '" + cavity.surface.name +
+      (reference_volume_ == 0.0 ? "' encloses no volume)"
+                                : "' encloses no volume but what its imperfection makes)");
   if (flat && cavity.control == CavityControl::gas && cavity.reservoir_volume == 0.0)
-    throw InputError(place, "cavity '" + cavity.name + "' starts flat (its wall '" +
-                                cavity.surface.name +
-                                "' encloses no volume), so an ideal gas in it has no initial "
-                                "amount: use `control: volume` with `volume` or `volume_change`, "
-                                "or give the gas a `reservoir_volume` to start in");
+    throw InputError(place, starts_flat +
+                                ", so an ideal gas in it has no initial amount: use `control: "
+                                "volume` with `volume` or `volume_change`, or give the gas a "
+                                "`reservoir_volume` to start in");
   if (flat && cavity.control == CavityControl::volume && cavity.target == VolumeTarget::ratio)
     throw InputError(cavity.target_place.line > 0 ? cavity.target_place : place,
-                     "cavity '" + cavity.name + "' starts flat (its wall '" + cavity.surface.name +
-                         "' encloses no volume), so a volume ratio has nothing to multiply: "
-                         "give `volume` (mm^3) or `volume_change` (mm^3) instead");
+                     starts_flat +
+                         ", so a volume ratio has nothing to multiply: give `volume` (mm^3) or "
+                         "`volume_change` (mm^3) instead");
   if (cavity.control == CavityControl::volume && !(final_volume() > 0.0)) {
     std::ostringstream rule;
     rule << "cavity '" << cavity.name << "': the volume at the end of the ramp, V0 + "

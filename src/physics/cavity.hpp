@@ -23,21 +23,23 @@ namespace plisse {
 /// rigid reservoir's (C9).
 /// History columns `pressure:<name>` (p_c) and `volume:<name>` (V, C1).
 /// A cavity whose reference volume is below this fraction of A^{3/2} (A the wall's area) starts
-/// flat: V0 = 0 (cavities.md, C8).
+/// flat: V0 = 0, round-off of the wall's size (cavities.md, C8).
 inline constexpr double kFlatVolumeTolerance = 1e-12;
 
 class CavityTerm : public ModelTerm {
  public:
   /// Borrows `mesh`. The wall's rims that one of `caps` ties are closed by that cap (C14), so the
-  /// gas pushes on the cap too. Throws InputError at `cavity.surface.place` when the surface
-  /// breaks the closure rule (C2: an open edge that no symmetry plane or cap closes) or encloses a
-  /// negative volume, and when a wall that starts flat (V0 below
-  /// kFlatVolumeTolerance A^{3/2}, A its area) has gas or a volume ratio, or the prescribed
-  /// final volume is not positive. `constraints` decide symmetric(); `mirror_planes` (the
-  /// model's, dirichlet.hpp) scale `full_volume:<name>`.
+  /// gas pushes on the cap too. `imperfection` [mm] is the largest distance the case's
+  /// imperfection moved a node of `mesh` (0: none): a wall that lay flat before it encloses at
+  /// most that distance times its area, of either sign. Throws InputError at
+  /// `cavity.surface.place` when the surface breaks the closure rule (C2: an open edge that no
+  /// symmetry plane or cap closes) or encloses a negative volume beyond that, and when a wall
+  /// that starts flat (|V0| below kFlatVolumeTolerance A^{3/2} + imperfection A, A its area) has
+  /// gas or a volume ratio, or the prescribed final volume is not positive. `constraints` decide
+  /// symmetric(); `mirror_planes` (the model's, dirichlet.hpp) scale `full_volume:<name>`.
   CavityTerm(const Cavity& cavity, const Mesh& mesh,
              const std::vector<ConstrainedComponent>& constraints, int mirror_planes,
-             const std::vector<CapNodes>& caps = {});
+             const std::vector<CapNodes>& caps = {}, double imperfection = 0.0);
 
   int n_global_unknowns() const override { return 1; }
   void set_first_global_dof(int dof) override { pressure_dof_ = dof; }

@@ -98,7 +98,8 @@ TermKind cavity_kind() {
     check.surface(cavity.surface);
   };
   d.make = [](const Cavity& cavity, const TermContext& c) -> std::unique_ptr<ModelTerm> {
-    return std::make_unique<CavityTerm>(cavity, c.mesh, c.constraints, c.mirrors, c.caps());
+    return std::make_unique<CavityTerm>(cavity, c.mesh, c.constraints, c.mirrors, c.caps(),
+                                        c.imperfection);
   };
   d.history = {
       {"pressure:<cavity>", "MPa", "`cavities[]`",

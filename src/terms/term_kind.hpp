@@ -88,6 +88,10 @@ struct TermContext {
   /// The case's caps and the nodes each ties (condition_nodes of its `surface`), in the order of
   /// `caps:`: what a cavity or a pressure closes its rims with (cavities.md, C14).
   std::function<std::vector<CapNodes>()> caps;
+  /// The largest distance [mm] the case's imperfection moved a node of `mesh`
+  /// (solver.stability.imperfection × the wall's thickness; 0 without one): how far from flat a
+  /// cavity's wall that lay flat may start (cavities.md, C8).
+  double imperfection = 0.0;
 };
 
 /// A ramp of an entry that `plisse check` compares with solver.end_time, and what it moves

@@ -206,6 +206,57 @@ TEST(FlatCavity, TakesAnAbsoluteVolumeOrAVolumeChangeAlongItsRamp) {
   EXPECT_DOUBLE_EQ(absolute.fluid_volume(0.0, 1.0), 2.5);
 }
 
+TEST(FlatCavity, AnImperfectionOfAFlatWallLeavesItFlatWithTheVolumeItHas) {
+  // The bottom z = 0 of the cube with its middle node moved off the plane by d, to the side that
+  // makes its volume negative: what a random imperfection of amplitude d does to a flat bag's
+  // panel. |V0| <= d A (A = 4 mm^2 the wall's area) whatever the sign (C8).
+  Mesh cube = unit_cube();
+  int middle = -1;
+  for (int n = 0; n < cube.n_nodes(); ++n)
+    if (cube.nodes[n].isApprox(Vec3d(1.0, 1.0, 0.0))) middle = n;
+  ASSERT_GE(middle, 0);
+  const double d = 0.01;
+  const auto volume_with = [&](double dz) {
+    Mesh moved = cube;
+    moved.nodes[middle].z() = dz;
+    return cavity_volume(moved, outward_faces(moved, "bottom"), zero_state(moved));
+  };
+  const double dz = volume_with(d) < 0.0 ? d : -d;
+  cube.nodes[middle].z() = dz;
+  const double V0 = volume_with(dz);
+  ASSERT_LT(V0, 0.0);
+  ASSERT_LE(-V0, d * 4.0);  // the bound the rule rests on
+  Cavity c = cavity_on("bottom");
+  c.target = VolumeTarget::change;
+  c.volume_change = 3.0;
+  // Without an imperfection the wall is on the wrong side; with one too small to explain V0, too.
+  for (const double imperfection : {0.0, -V0 / 8.0}) {
+    try {
+      CavityTerm term(c, cube, {}, 0, {}, imperfection);
+      FAIL() << "a negative volume was accepted with an imperfection of " << imperfection;
+    } catch (const InputError& e) {
+      EXPECT_NE(e.rule().find("which is negative"), std::string::npos) << e.rule();
+      EXPECT_EQ(e.rule().find("more than the imperfection") != std::string::npos,
+                imperfection > 0.0)
+          << e.rule();
+    }
+  }
+  // With the imperfection that made it: flat, starting from the V0 it has.
+  const CavityTerm term(c, cube, {}, 0, {}, d);
+  EXPECT_EQ(term.reference_volume(), V0);
+  EXPECT_DOUBLE_EQ(term.final_volume(), V0 + 3.0);
+  EXPECT_EQ(term.fluid_volume(0.0, 0.0), V0);
+  // A gas in it has (almost) no amount, as in a wall that is flat to round-off.
+  c.control = CavityControl::gas;
+  try {
+    CavityTerm gas(c, cube, {}, 0, {}, d);
+    FAIL() << "a gas in an imperfect flat cavity was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.rule().find("but what its imperfection makes"), std::string::npos) << e.rule();
+    EXPECT_NE(e.rule().find("no initial amount"), std::string::npos) << e.rule();
+  }
+}
+
 TEST(CavityVolume, AFinalVolumeBelowZeroIsRefused) {
   const Mesh mesh = shell(Symmetry::octant);
   Cavity c = cavity_on("inner");
