@@ -8,6 +8,7 @@
 #include <functional>
 #include <map>
 #include <numbers>
+#include <numeric>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -199,7 +200,15 @@ void append_gmsh_triangles(int surface_tag, SurfaceTriangulation& surface,
   std::vector<double> coords, parametric;
   gmsh::model::mesh::getNodes(node_tags, coords, parametric, 2, surface_tag,
                               /*includeBoundary=*/true, false);
-  for (std::size_t i = 0; i < node_tags.size(); ++i) {
+  // Gmsh lists the boundary's nodes in an order that changes from one process to the next (the
+  // corner points of a quarter disc came in different orders in two runs of one case), and the
+  // node order is the order of every sum of the assembly: taken by increasing Gmsh tag, which
+  // Gmsh assigns as it meshes, the same case always gets the same mesh.
+  std::vector<std::size_t> order(node_tags.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return node_tags[a] < node_tags[b]; });
+  for (const std::size_t i : order) {
     if (!index.emplace(node_tags[i], static_cast<int>(surface.nodes.size())).second) continue;
     surface.nodes.emplace_back(coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]);
   }

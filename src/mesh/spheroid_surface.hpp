@@ -43,10 +43,10 @@ struct PoleRefinement {
 SurfaceTriangulation mesh_spheroid_surface(double a, double b, double h, Symmetry symmetry,
                                            const PoleRefinement& pole = {});
 
-/// Appends the nodes and 3-node triangles Gmsh meshed on its surface entity `surface_tag` (its
-/// boundary's nodes included) to `surface`; `index` maps Gmsh node tags to the nodes already
-/// appended, so that entities glued along a curve share its nodes. Call inside a GmshSession,
-/// after meshing.
+/// Appends the nodes (its boundary's included, by increasing Gmsh tag: the same order in every
+/// process) and 3-node triangles Gmsh meshed on its surface entity `surface_tag` to `surface`;
+/// `index` maps Gmsh node tags to the nodes already appended, so that entities glued along a curve
+/// share its nodes. Call inside a GmshSession, after meshing.
 void append_gmsh_triangles(int surface_tag, SurfaceTriangulation& surface,
                            std::unordered_map<std::size_t, int>& index);
 

@@ -650,6 +650,18 @@ VtuField read_vtu_point_field(const std::filesystem::path& path, const std::stri
   return read_field(file, parsed, Section::point_data, name);
 }
 
+VtuField read_vtu_points(const std::filesystem::path& path) {
+  if (is_pvtu(path))
+    throw Error("PVTU '" + path.string() +
+                "': points are read from one piece (.vtu), not from a .pvtu");
+  VtuFile file(path);
+  const ParsedVtu parsed = parse(file);
+  // parse() found exactly one array in <Points> and checked it: Float64, 3 components.
+  const auto it = std::find_if(parsed.arrays.begin(), parsed.arrays.end(),
+                               [](const ArrayDecl& a) { return a.section == Section::points; });
+  return {"Points", 3, read_values(file, parsed, *it)};
+}
+
 VtuField read_vtu_cell_field(const std::filesystem::path& path, const std::string& name) {
   if (is_pvtu(path))
     throw Error("PVTU '" + path.string() +

@@ -67,6 +67,11 @@ std::uint64_t read_vtu_point_count(const std::filesystem::path& path);
 /// that name (the message lists the point fields there are).
 VtuField read_vtu_point_field(const std::filesystem::path& path, const std::string& name);
 
+/// The points of the VTU `path` (3 values per point: the reference positions the run's step
+/// files are written at, an imperfection included). Serial files only, as read_vtu_cell_field.
+/// Throws plisse::Error as read_vtu_summary.
+VtuField read_vtu_points(const std::filesystem::path& path);
+
 /// The cell field `name` of the VTU `path`: n_components values per cell, cell-major, as written
 /// (e.g. cauchy_stress: xx, yy, zz, xy, yz, xz per tetrahedron). Serial files only: a .pvtu's
 /// pieces carry no global cell numbering, so a .pvtu is refused. Throws plisse::Error as

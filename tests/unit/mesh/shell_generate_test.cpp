@@ -446,6 +446,32 @@ TEST(GenerateShellSurface, RimRefinementMakesSmallTrianglesAlongTheRim) {
             << " triangles, longest rim edge " << longest_rim << "\n";
 }
 
+// The node order is the order of every sum of the assembly, so it must not change between
+// processes: Gmsh lists a surface's boundary nodes in an order that did (the quarter disc's three
+// corners came last, in different orders, in two runs of one case). The generator takes them by
+// increasing Gmsh tag, which puts the corner points, meshed first, first: the centre, then
+// (r, 0, 0) and (0, 0, r). Generating the same disc again gives the same nodes and triangles.
+TEST(GenerateShellSurface, TheDiscsNodesComeInGmshsTagOrderEveryTime) {
+  MeshGenerationSpec spec;
+  spec.kind = "disc";
+  spec.radius = 350.0;
+  spec.thickness = 0.35;
+  spec.element_size = 40.0;
+  spec.rim_element_size = 20.0;
+  spec.rim_width = 40.0;
+  spec.symmetry = Symmetry::quarter;
+  const Mesh mesh = generate_shell_surface(spec);
+  ASSERT_GE(mesh.nodes.size(), 3u);
+  EXPECT_LT(mesh.nodes[0].norm(), 1e-9);
+  EXPECT_LT((mesh.nodes[1] - Vec3d(350.0, 0.0, 0.0)).norm(), 1e-9);
+  EXPECT_LT((mesh.nodes[2] - Vec3d(0.0, 0.0, 350.0)).norm(), 1e-9);
+  for (int k = 0; k < 3; ++k) {
+    const Mesh again = generate_shell_surface(spec);
+    EXPECT_EQ(again.nodes, mesh.nodes);
+    EXPECT_EQ(again.triangles, mesh.triangles);
+  }
+}
+
 TEST(GenerateShellSurface, TheDiscIsAShellOnlyAndRefusesItsBadOptions) {
   std::string key;
   MeshGenerationSpec spec;

@@ -67,7 +67,7 @@ std::string error_of(const std::filesystem::path& path, const std::string& field
   return "";
 }
 
-TEST(VtuReader, RoundTripIsBitExactForEveryPointFieldRawOrCompressed) {
+TEST(VtuReader, RoundTripIsBitExactForThePointsAndEveryPointFieldRawOrCompressed) {
   for (const VtuCompression compression : kCompressions) {
     SCOPED_TRACE(name(compression));
     ScratchDir dir;
@@ -77,6 +77,12 @@ TEST(VtuReader, RoundTripIsBitExactForEveryPointFieldRawOrCompressed) {
     EXPECT_EQ(summary.n_points, 5u);
     EXPECT_EQ(summary.n_cells, 2u);
     EXPECT_EQ(read_vtu_point_count(dir / "a.vtu"), 5u);
+    const VtuField points = read_vtu_points(dir / "a.vtu");
+    EXPECT_EQ(points.n_components, 3);
+    ASSERT_EQ(points.values.size(), 15u);
+    for (std::size_t i = 0; i < 5; ++i)
+      EXPECT_EQ(Vec3d(points.values[3 * i], points.values[3 * i + 1], points.values[3 * i + 2]),
+                s.points[i]);
     ASSERT_EQ(summary.point_fields.size(), s.point_fields.size());
     ASSERT_EQ(summary.cell_fields.size(), 1u);
     EXPECT_EQ(summary.cell_fields[0].name, "J");
