@@ -10,10 +10,13 @@
 //    (4 sqrt(2 pi)), by no more than the fabric's stretch and the extra volume explain (3 % and
 //    6 %);
 //  - the working pressure at that volume between 20 and 50 kPa (a driver airbag's);
-//  - the two meshes: the seam's radius and the crown within 1 %, the pressure within 5 %; the
-//    seam's folds (count over the full circle, the deepest) within 25 %; the large folds (those
-//    rising at least a fifth of the deepest, as scripts/airbag-full-size counts them) in count
-//    within 25 % and in mean depth within 10 %.
+//  - the two meshes: the seam's radius and the crown within 1 %, the pressure within 5 %, the
+//    seam's folds' count over the full circle within 25 %.
+// The folds' depths (the deepest, and the large folds' count and mean depth: those rising at
+// least a fifth of the deepest, as scripts/airbag-full-size counts them) are printed, not
+// asserted: they follow the path through the folding's snaps, which round-off decides. The same
+// finer mesh with its nodes in another order gave a deepest fold of 24.8 and of 30.6 mm, 16 and
+// 12 large folds (docs/studies/airbag-full-size.md, "The seam's folds").
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -195,10 +198,6 @@ TEST(AirbagFullSizeSlow, InflatesFromFlatToPaulsensShapeAndFoldsItsSeam) {
   EXPECT_NEAR(b.crown / a.crown, 1.0, 0.01) << "the crown on the two meshes";
   EXPECT_NEAR(b.pressure / a.pressure, 1.0, 0.05) << "the pressure on the two meshes";
   EXPECT_NEAR(static_cast<double>(b.folds) / a.folds, 1.0, 0.25) << "the folds' count";
-  EXPECT_NEAR(b.depth / a.depth, 1.0, 0.25) << "the deepest fold";
-  EXPECT_NEAR(static_cast<double>(b.large_folds) / a.large_folds, 1.0, 0.25)
-      << "the large folds' count";
-  EXPECT_NEAR(b.large_depth / a.large_depth, 1.0, 0.10) << "the large folds' mean depth";
 }
 
 }  // namespace
