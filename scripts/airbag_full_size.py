@@ -3,6 +3,8 @@
 
 Usage:
   scripts/airbag-full-size --summary RUN [RUN ...]   the table of the study page, one row a run
+  scripts/airbag-full-size --ensemble RUN [RUN ...]  runs of several seeds, one row a mesh: the
+                                                     median and the range of the seam's folds
   scripts/airbag-full-size --figures DIR RUN [...]   the study's figures, into DIR
 
 The bag is two flat round panels of radius r joined at their rims; the case models one quarter of
@@ -19,7 +21,9 @@ angle over the quarter; a fold is a maximum of that distance that rises at least
 times the quarter's, the wavelength the mean rim's circumference over that count, and the depth
 the largest rise of a fold over its neighbouring minima. The large folds are those that rise at
 least LARGE_FOLD of the deepest: the seam's few deep folds among its fine crimps; their mean rise
-is the large folds' depth, which depends less on the one deepest fold than the depth does.
+is the large folds' depth, which depends less on the one deepest fold than the depth does. The
+folds' total depth is the sum of all the folds' rises over the full circle: the length the seam's
+folds store radially, whichever folds store it.
 """
 import argparse
 import math
@@ -67,8 +71,9 @@ def panel(run):
 
 def seam(path, radius, thickness):
     """(angle [deg], distance from the axis [mm]) of the rim's nodes at the step file `path`, by
-    angle, and the folds: (count over the full circle, wavelength [mm], depth [mm], mean radius
-    [mm], count of the large folds over the full circle, the large folds' depth [mm])."""
+    angle, and the folds: their count over the full circle, wavelength [mm], depth [mm] (the
+    deepest rise), the mean radius [mm], the count of the large folds over the full circle, the
+    large folds' mean depth [mm] and the folds' total depth over the full circle [mm]."""
     mesh = runs.read_raw_vtu(path)
     X = mesh.points
     x = X + mesh.point_data["displacement"]
@@ -82,8 +87,10 @@ def seam(path, radius, thickness):
     mean = float(np.mean(r))
     wavelength = 2.0 * math.pi * mean / count if count else float("nan")
     deepest, large = large_folds(depths)
-    large_depth = float(np.mean(large)) if large else 0.0
-    return angle, r, (count, wavelength, deepest, mean, 4 * len(large), large_depth)
+    return angle, r, {"folds": count, "wavelength": wavelength, "depth": deepest, "mean": mean,
+                      "large folds": 4 * len(large),
+                      "large depth": float(np.mean(large)) if large else 0.0,
+                      "total depth": 4.0 * float(np.sum(depths))}
 
 
 def large_folds(rises):
@@ -123,16 +130,16 @@ def summary_row(run):
     h = runs.read_history(run, required=True)
     a, half, volume = paulsen(radius)
     last = len(h["time"]) - 1
-    _, _, (count, wavelength, depth, mean, large, large_depth) = seam(runs.last_vtu(run), radius,
-                                                                      thickness)
+    _, _, f = seam(runs.last_vtu(run), radius, thickness)
     bag = 2.0 * h["full_volume:gas"][last]  # the quarter's mirrors make half the bag
     return {"run": runs.run_name(run), "unknowns": s.get("free_dofs"), "steps": s.get("steps"),
             "wall [s]": (s.get("wall_time") or {}).get("total"),
             "peak [MiB]": s.get("peak_memory_mib"),
             "p [kPa]": 1e3 * h["pressure:gas"][last], "V / V_P": bag / volume,
-            "crown / h_P": (h["uy:crown"][last]) / half, "seam / a_P": mean / a,
-            "folds": count, "wavelength [mm]": wavelength, "depth [mm]": depth,
-            "large folds": large, "large folds' depth [mm]": large_depth}
+            "crown / h_P": (h["uy:crown"][last]) / half, "seam / a_P": f["mean"] / a,
+            "folds": f["folds"], "wavelength [mm]": f["wavelength"], "depth [mm]": f["depth"],
+            "large folds": f["large folds"], "large folds' depth [mm]": f["large depth"],
+            "total depth [mm]": f["total depth"]}
 
 
 def print_summary(paths):
@@ -143,6 +150,56 @@ def print_summary(paths):
     for row in rows:
         print("| " + " | ".join(f"{v:.4g}" if isinstance(v, float) else str(v)
                                 for v in row.values()) + " |")
+
+
+ENSEMBLE_KEYS = ("folds", "depth [mm]", "large folds", "large folds' depth [mm]",
+                 "total depth [mm]")
+
+
+def seed(run):
+    """The seed of the run's imperfection: its `--set solver.stability.seed`, or the example's 1."""
+    return int(runs.set_values(runs.read_summary(run, required=True)).get(
+        "solver.stability.seed", 1))
+
+
+def ensemble(rows):
+    """One row a mesh (the runs of equal unknowns): its runs' seeds, and the median, the least and
+    the largest of each of ENSEMBLE_KEYS over them; then the spread (largest over least, less 1)
+    of each over the seeds of a mesh and the ratio of the meshes' medians (the later mesh over the
+    first)."""
+    meshes = {}
+    for row in rows:
+        meshes.setdefault(row["unknowns"], []).append(row)
+    table = []
+    for unknowns, group in meshes.items():
+        out = {"unknowns": unknowns, "seeds": ",".join(str(r["seed"]) for r in group)}
+        for key in ENSEMBLE_KEYS:
+            values = np.array([r[key] for r in group], dtype=float)
+            out[key] = (float(np.median(values)), float(values.min()), float(values.max()))
+        table.append(out)
+    return table
+
+
+def print_ensemble(paths):
+    rows = []
+    for run in paths:
+        row = summary_row(run)
+        row["seed"] = seed(run)
+        rows.append(row)
+    table = ensemble(rows)
+    print("| unknowns | seeds | " + " | ".join(ENSEMBLE_KEYS) + " |")
+    print("|" + "---|" * (2 + len(ENSEMBLE_KEYS)))
+    for out in table:
+        cells = [f"{m:.4g} [{lo:.4g}, {hi:.4g}]" for m, lo, hi in (out[k] for k in ENSEMBLE_KEYS)]
+        print(f"| {out['unknowns']} | {out['seeds']} | " + " | ".join(cells) + " |")
+    print()
+    for out in table:
+        spread = ", ".join(f"{k} {out[k][2] / out[k][1] - 1.0:+.1%}" if out[k][1] > 0 else f"{k} -"
+                           for k in ENSEMBLE_KEYS)
+        print(f"over the seeds of {out['unknowns']} unknowns (largest / least - 1): {spread}")
+    for out in table[1:]:
+        ratio = ", ".join(f"{k} {out[k][0] / table[0][k][0] - 1.0:+.1%}" for k in ENSEMBLE_KEYS)
+        print(f"medians, {out['unknowns']} against {table[0]['unknowns']} unknowns: {ratio}")
 
 
 def draw(folder, paths):
@@ -159,8 +216,8 @@ def draw(folder, paths):
         mesh = runs.read_raw_vtu(runs.last_vtu(run))
         x = mesh.points + mesh.point_data["displacement"]
         profile.plot(np.hypot(x[:, 0], x[:, 2]), x[:, 1], ".", ms=1, label=name)
-        angle, r, (count, _, _, _, large, _) = seam(runs.last_vtu(run), radius, thickness)
-        rim.plot(angle, r, label=f"{name}: {count} folds, {large} large")
+        angle, r, f = seam(runs.last_vtu(run), radius, thickness)
+        rim.plot(angle, r, label=f"{name}: {f['folds']} folds, {f['large folds']} large")
     a, half, volume = paulsen(radius)
     pv.axvline(1e-6 * volume, color="k", ls=":", label="Paulsen's volume")
     pv.set_xlabel("volume of the whole bag [L]")
@@ -186,10 +243,13 @@ def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     mode = parser.add_mutually_exclusive_group(required=True)
     mode.add_argument("--summary", nargs="+", metavar="RUN")
+    mode.add_argument("--ensemble", nargs="+", metavar="RUN")
     mode.add_argument("--figures", nargs="+", metavar=("DIR", "RUN"))
     args = parser.parse_args(argv)
     if args.summary:
         print_summary(args.summary)
+    elif args.ensemble:
+        print_ensemble(args.ensemble)
     else:
         if len(args.figures) < 2:
             parser.error("--figures DIR RUN [RUN ...]")

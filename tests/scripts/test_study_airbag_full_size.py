@@ -1,5 +1,6 @@
 """Unit tests of scripts/airbag_full_size.py: Paulsen's Mylar balloon against its own profile
-integrated independently, and the seam's fold count and large folds on synthetic seams."""
+integrated independently, the seam's fold count, large folds and total depth on synthetic seams,
+and the table over seeds."""
 import math
 import sys
 import unittest
@@ -49,6 +50,29 @@ class FoldsTest(unittest.TestCase):
         self.assertEqual(deepest, 20.0)
         self.assertEqual(large, [20.0, 10.0, 4.0])
         self.assertEqual(bag.large_folds([]), (0.0, []))
+
+    def test_the_total_depth_sums_every_folds_rise_over_the_full_circle(self):
+        # Three crests in the quarter between minima at 270: rises 4, 9 and 1 mm, the middle one
+        # between the other two; the full circle has four such quarters: 4 (4 + 9 + 1) = 56 mm.
+        r = np.array([270.0, 274.0, 270.0, 279.0, 270.0, 271.0, 270.0])
+        peaks, rises = bag.folds(r, 0.35)
+        self.assertEqual(sorted(rises), [1.0, 4.0, 9.0])
+        self.assertAlmostEqual(4.0 * sum(rises), 56.0, places=12)
+
+
+class EnsembleTest(unittest.TestCase):
+    def test_one_row_a_mesh_with_the_median_and_the_range_over_its_seeds(self):
+        def row(unknowns, seed, folds, total):
+            return {"unknowns": unknowns, "seed": seed, "folds": folds, "depth [mm]": 20.0,
+                    "large folds": 16, "large folds' depth [mm]": 12.0, "total depth [mm]": total}
+
+        table = bag.ensemble([row(100, 1, 60, 330.0), row(200, 1, 64, 354.0),
+                              row(100, 2, 56, 334.0), row(100, 3, 48, 333.0)])
+        self.assertEqual([t["unknowns"] for t in table], [100, 200])
+        self.assertEqual(table[0]["seeds"], "1,2,3")
+        self.assertEqual(table[0]["folds"], (56.0, 48.0, 60.0))
+        self.assertEqual(table[0]["total depth [mm]"], (333.0, 330.0, 334.0))
+        self.assertEqual(table[1]["total depth [mm]"], (354.0, 354.0, 354.0))
 
 
 if __name__ == "__main__":
