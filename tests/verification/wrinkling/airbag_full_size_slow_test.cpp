@@ -142,9 +142,8 @@ Bag inflate(const BagMesh& m) {
             << " unknowns, pressure " << 1e3 * result.pressure << " kPa, crown " << result.crown
             << " mm, seam " << result.seam << " mm, " << result.folds << " folds, deepest "
             << result.depth << " mm, " << result.large_folds << " large of mean depth "
-            << result.large_depth << " mm, total depth " << result.total_depth
-            << " mm, dissipated " << result.dissipated << " of strain energy "
-            << result.strain_energy << " mJ\n";
+            << result.large_depth << " mm, total depth " << result.total_depth << " mm, dissipated "
+            << result.dissipated << " of strain energy " << result.strain_energy << " mJ\n";
   result.ran = true;
   return result;
 }
