@@ -3,6 +3,8 @@
 /// its history.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -30,6 +32,13 @@ inline std::size_t history_column(const HistoryTable& h, const std::string& name
     if (h.columns[i] == name) return i;
   ADD_FAILURE() << "no column " << name;
   return 0;
+}
+
+/// The row of `h` whose column `c_time` is `time` (within 1e-9: step files and history rows carry
+/// the same value), or h.rows.end().
+inline auto history_row_at(const HistoryTable& h, std::size_t c_time, double time) {
+  return std::find_if(h.rows.begin(), h.rows.end(),
+                      [&](const auto& r) { return std::abs(r[c_time] - time) < 1e-9; });
 }
 
 }  // namespace plisse::test

@@ -121,9 +121,7 @@ Beam bend(const Wall& w) {
   double r_after_pressure = 0.0;
   for (const PvdEntry& entry : read_pvd(dir / "solution.pvd")) {
     if (entry.file == RunDirectory::step_file_name(0)) continue;
-    const auto row = std::find_if(history.rows.begin(), history.rows.end(), [&](const auto& r) {
-      return std::abs(r[c_time] - entry.time) < 1e-9;
-    });
+    const auto row = test::history_row_at(history, c_time, entry.time);
     EXPECT_NE(row, history.rows.end());
     if (row == history.rows.end()) return result;
     const auto vtu = dir / entry.file;
@@ -199,9 +197,7 @@ Beam bend(const Wall& w) {
                                            .value("instabilities", nlohmann::json::array());
   if (!instabilities.empty()) {
     const double t_first = instabilities.front().value("time", -1.0);
-    const auto row = std::find_if(history.rows.begin(), history.rows.end(), [&](const auto& r) {
-      return std::abs(r[c_time] - t_first) < 1e-9;
-    });
+    const auto row = test::history_row_at(history, c_time, t_first);
     EXPECT_NE(row, history.rows.end()) << "no history row at the first instability";
     if (row == history.rows.end() || row == history.rows.begin()) return result;
     first = static_cast<std::size_t>(row - history.rows.begin());

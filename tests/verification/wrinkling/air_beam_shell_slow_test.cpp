@@ -117,9 +117,7 @@ ShellBeam bend(const Wall& w) {
   std::vector<Step> steps;
   for (const PvdEntry& entry : read_pvd(dir / "solution.pvd")) {
     if (entry.file == RunDirectory::step_file_name(0)) continue;
-    const auto row = std::find_if(history.rows.begin(), history.rows.end(), [&](const auto& r) {
-      return std::abs(r[c_time] - entry.time) < 1e-9;
-    });
+    const auto row = test::history_row_at(history, c_time, entry.time);
     EXPECT_NE(row, history.rows.end());
     if (row == history.rows.end()) return result;
     const auto vtu = dir / entry.file;
