@@ -163,15 +163,13 @@ def seed(run):
 
 
 def ensemble(rows):
-    """One row a mesh (the runs of equal unknowns): its runs' seeds, and the median, the least and
-    the largest of each of ENSEMBLE_KEYS over them; then the spread (largest over least, less 1)
-    of each over the seeds of a mesh and the ratio of the meshes' medians (the later mesh over the
-    first)."""
+    """One row a mesh (the runs of equal unknowns, coarsest first): its runs' seeds, and the
+    median, the least and the largest of each of ENSEMBLE_KEYS over them."""
     meshes = {}
     for row in rows:
         meshes.setdefault(row["unknowns"], []).append(row)
     table = []
-    for unknowns, group in meshes.items():
+    for unknowns, group in sorted(meshes.items()):
         out = {"unknowns": unknowns, "seeds": ",".join(str(r["seed"]) for r in group)}
         for key in ENSEMBLE_KEYS:
             values = np.array([r[key] for r in group], dtype=float)
@@ -197,9 +195,17 @@ def print_ensemble(paths):
         spread = ", ".join(f"{k} {out[k][2] / out[k][1] - 1.0:+.1%}" if out[k][1] > 0 else f"{k} -"
                            for k in ENSEMBLE_KEYS)
         print(f"over the seeds of {out['unknowns']} unknowns (largest / least - 1): {spread}")
-    for out in table[1:]:
-        ratio = ", ".join(f"{k} {out[k][0] / table[0][k][0] - 1.0:+.1%}" for k in ENSEMBLE_KEYS)
-        print(f"medians, {out['unknowns']} against {table[0]['unknowns']} unknowns: {ratio}")
+    for coarse, fine, change in mesh_steps(table):
+        ratio = ", ".join(f"{k} {change[k]:+.1%}" for k in ENSEMBLE_KEYS)
+        print(f"medians, {fine} against {coarse} unknowns: {ratio}")
+
+
+def mesh_steps(table):
+    """From each mesh of `ensemble`'s table to the next finer: the two meshes' unknowns and the
+    relative change of each of ENSEMBLE_KEYS' medians (the finer over the coarser, less 1)."""
+    return [(coarse["unknowns"], fine["unknowns"],
+             {k: fine[k][0] / coarse[k][0] - 1.0 for k in ENSEMBLE_KEYS})
+            for coarse, fine in zip(table, table[1:])]
 
 
 def draw(folder, paths):

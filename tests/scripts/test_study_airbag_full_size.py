@@ -74,6 +74,20 @@ class EnsembleTest(unittest.TestCase):
         self.assertEqual(table[0]["total depth [mm]"], (333.0, 330.0, 334.0))
         self.assertEqual(table[1]["total depth [mm]"], (354.0, 354.0, 354.0))
 
+    def test_each_mesh_against_the_next_coarser_one(self):
+        def row(unknowns, seed, depth):
+            return {"unknowns": unknowns, "seed": seed, "folds": 60, "depth [mm]": depth,
+                    "large folds": 16, "large folds' depth [mm]": 12.0, "total depth [mm]": 330.0}
+
+        # Given finest first: the table still runs coarsest first, and the steps compare
+        # neighbours (30 -> 33 is +10 %), not each mesh with the first (20 -> 33 would be +65 %).
+        table = bag.ensemble([row(300, 1, 33.0), row(100, 1, 20.0), row(200, 1, 30.0)])
+        steps = bag.mesh_steps(table)
+        self.assertEqual([(c, f) for c, f, _ in steps], [(100, 200), (200, 300)])
+        self.assertAlmostEqual(steps[0][2]["depth [mm]"], 0.5, places=12)
+        self.assertAlmostEqual(steps[1][2]["depth [mm]"], 0.1, places=12)
+        self.assertEqual(steps[1][2]["total depth [mm]"], 0.0)
+
 
 if __name__ == "__main__":
     unittest.main()
