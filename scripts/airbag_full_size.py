@@ -23,7 +23,9 @@ the largest rise of a fold over its neighbouring minima. The large folds are tho
 least LARGE_FOLD of the deepest: the seam's few deep folds among its fine crimps; their mean rise
 is the large folds' depth, which depends less on the one deepest fold than the depth does. The
 folds' total depth is the sum of all the folds' rises over the full circle: the length the seam's
-folds store radially, whichever folds store it.
+folds store radially, whichever folds store it. The seam's reach is its largest less its least
+distance from the axis: how far in the deepest fold pulls the seam, measured from the seam's
+outermost point rather than from the fold's neighbouring minima.
 """
 import argparse
 import math
@@ -73,7 +75,8 @@ def seam(path, radius, thickness):
     """(angle [deg], distance from the axis [mm]) of the rim's nodes at the step file `path`, by
     angle, and the folds: their count over the full circle, wavelength [mm], depth [mm] (the
     deepest rise), the mean radius [mm], the count of the large folds over the full circle, the
-    large folds' mean depth [mm] and the folds' total depth over the full circle [mm]."""
+    large folds' mean depth [mm], the folds' total depth over the full circle [mm] and the seam's
+    reach [mm] (its largest less its least distance from the axis)."""
     mesh = runs.read_raw_vtu(path)
     X = mesh.points
     x = X + mesh.point_data["displacement"]
@@ -90,7 +93,8 @@ def seam(path, radius, thickness):
     return angle, r, {"folds": count, "wavelength": wavelength, "depth": deepest, "mean": mean,
                       "large folds": 4 * len(large),
                       "large depth": float(np.mean(large)) if large else 0.0,
-                      "total depth": 4.0 * float(np.sum(depths))}
+                      "total depth": 4.0 * float(np.sum(depths)),
+                      "reach": float(np.max(r) - np.min(r))}
 
 
 def large_folds(rises):
@@ -139,7 +143,7 @@ def summary_row(run):
             "crown / h_P": (h["uy:crown"][last]) / half, "seam / a_P": f["mean"] / a,
             "folds": f["folds"], "wavelength [mm]": f["wavelength"], "depth [mm]": f["depth"],
             "large folds": f["large folds"], "large folds' depth [mm]": f["large depth"],
-            "total depth [mm]": f["total depth"]}
+            "total depth [mm]": f["total depth"], "reach [mm]": f["reach"]}
 
 
 def print_summary(paths):
@@ -153,7 +157,7 @@ def print_summary(paths):
 
 
 ENSEMBLE_KEYS = ("folds", "depth [mm]", "large folds", "large folds' depth [mm]",
-                 "total depth [mm]")
+                 "total depth [mm]", "reach [mm]")
 
 
 def seed(run):

@@ -64,7 +64,8 @@ class EnsembleTest(unittest.TestCase):
     def test_one_row_a_mesh_with_the_median_and_the_range_over_its_seeds(self):
         def row(unknowns, seed, folds, total):
             return {"unknowns": unknowns, "seed": seed, "folds": folds, "depth [mm]": 20.0,
-                    "large folds": 16, "large folds' depth [mm]": 12.0, "total depth [mm]": total}
+                    "large folds": 16, "large folds' depth [mm]": 12.0, "total depth [mm]": total,
+                    "reach [mm]": 35.0}
 
         table = bag.ensemble([row(100, 1, 60, 330.0), row(200, 1, 64, 354.0),
                               row(100, 2, 56, 334.0), row(100, 3, 48, 333.0)])
@@ -77,7 +78,8 @@ class EnsembleTest(unittest.TestCase):
     def test_each_mesh_against_the_next_coarser_one(self):
         def row(unknowns, seed, depth):
             return {"unknowns": unknowns, "seed": seed, "folds": 60, "depth [mm]": depth,
-                    "large folds": 16, "large folds' depth [mm]": 12.0, "total depth [mm]": 330.0}
+                    "large folds": 16, "large folds' depth [mm]": 12.0, "total depth [mm]": 330.0,
+                    "reach [mm]": 35.0}
 
         # Given finest first: the table still runs coarsest first, and the steps compare
         # neighbours (30 -> 33 is +10 %), not each mesh with the first (20 -> 33 would be +65 %).
