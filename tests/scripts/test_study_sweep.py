@@ -14,8 +14,10 @@ from plisse_study import sweep
 
 # The fake plisse: appends its arguments to calls.txt beside it, makes the -o directory with a
 # summary.json, prints two lines, and exits with $FAKE_STATUS. With $FAKE_WAIT it keeps running
-# until SIGTERM, then exits 143 as plisse does when interrupted.
+# until SIGTERM, then exits 143 as plisse does when interrupted; its handler is in place before it
+# prints its first line.
 FAKE = """#!/bin/sh
+[ -n "$FAKE_WAIT" ] && trap 'echo "interrupted"; exit 143' TERM
 echo "$@" >> "$(dirname "$0")/calls.txt"
 out=""; prev=""
 for a in "$@"; do [ "$prev" = "-o" ] && out="$a"; prev="$a"; done
@@ -23,7 +25,6 @@ mkdir -p "$out"
 echo "plisse: starting"
 echo ""
 if [ -n "$FAKE_WAIT" ]; then
-  trap 'echo "interrupted"; exit 143' TERM
   while :; do sleep 0.02; done
 fi
 echo '{"completed": true}' > "$out/summary.json"
@@ -111,12 +112,19 @@ class SweepTest(unittest.TestCase):
     def test_stop_rule_and_time_limit(self):
         os.environ["FAKE_WAIT"] = "1"
         asked = []
+        run = os.path.join(self.tmp.name, "stopped")
 
         def stop():
+            # Not before the fake has printed, and so set its handler: on a loaded machine the
+            # second poll can come before the shell has read its first line.
             asked.append(1)
-            return len(asked) >= 2
+            try:
+                with open(run + ".out") as f:
+                    started = "plisse: starting" in f.read()
+            except FileNotFoundError:
+                started = False
+            return len(asked) >= 2 and started
 
-        run = os.path.join(self.tmp.name, "stopped")
         outcome, _ = self.quiet(sweep.run_case, self.case, run, [], plisse=self.plisse,
                                 transcript=run + ".out", stop=stop, poll=0.05, check=True)
         self.assertTrue(outcome.stopped)
